@@ -1,0 +1,80 @@
+// The relative position of an ellipsoid and an elliptic paraboloid (math.md sections 3-6; paper
+// Theorem 1 with the corrections of math.md section 3), decided exactly, with its evidence.
+//
+// Every decision is the sign of a polynomial in the input entries (section 4 of math.md). classify()
+// evaluates them first in interval arithmetic and certifies what it can; only the signs the filter
+// cannot certify (exact zeros: tangencies, special roots, rho = 1) go to exact GMP integers, and only
+// Disc(f) = 0 or a defective Sturm-Habicht sequence goes to exact factorisation (roots.hpp).
+// classify_exact() skips the filter; the two return identical positions on every input.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "relpos/pencil.hpp"
+#include "relpos/quadric.hpp"
+#include "relpos/roots.hpp"
+
+namespace relpos {
+
+enum class Position {
+  I,   ///< the ellipsoid is interior to the paraboloid
+  TI,  ///< tangent from inside
+  C,   ///< the surfaces cross (non-tangent contact)
+  TE,  ///< tangent from outside
+  E,   ///< exterior
+  Unclassified,  ///< not covered by the theory (not small) or outside the table (a finding)
+};
+std::string to_string(Position p);
+
+/// Which arithmetic settled the answer.
+enum class Stage {
+  Interval,       ///< all signs certified by interval arithmetic
+  ExactSigns,     ///< exact integer signs of the same polynomials
+  ExactRoots,     ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
+};
+std::string to_string(Stage s);
+
+/// How much evidence to assemble. Minimal is what the fast path needs; Full adds the exact
+/// coefficients of f and s, deg f~, the multiple roots and rho itself.
+enum class Evidence { Minimal, Full };
+
+struct Classification {
+  Position position = Position::Unclassified;
+  bool small = false;               ///< rho <= 1 (the paper's smallness hypothesis holds)
+  int rho_vs_one = 0;               ///< sign of rho - 1
+  std::optional<bool> contact;      ///< do the surfaces meet? empty when not decidable (not small)
+  std::string rule;                 ///< the rule that decided, in one sentence
+  std::string finding;              ///< set when the root pattern is outside the table
+  Stage stage = Stage::Interval;
+
+  // Root evidence (always filled).
+  int sign_disc_f = 0;              ///< sign of Disc(f)
+  int sign_disc_ftilde = 0;         ///< sign of Disc(f~); equals sign_disc_f when f is square-free
+  int real_roots = 0;               ///< distinct real roots of f
+  int negative_roots = 0;           ///< distinct negative roots
+  int positive_roots = 0;           ///< distinct positive roots
+  int nonreal_roots = 0;            ///< non-real roots, with multiplicity
+
+  // Full evidence (Evidence::Full).
+  bool has_full_evidence = false;
+  Quartic<Rational> f;              ///< det(lambda P + E) for the sign-normalized matrices
+  Quadratic<Rational> s;            ///< det(lambda A + M)
+  int degree_ftilde = 4;            ///< degree of f~ = f / gcd(f, s)
+  std::vector<RealRoot> roots;      ///< distinct real roots of f with multiplicities (Full only)
+  std::optional<Rational> rho;      ///< rho exactly, when it is rational
+  double rho_approx = 0;            ///< rho to double precision (for display)
+};
+
+/// Adaptive exact classification (interval filter, then exact integers).
+Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence = Evidence::Full);
+
+/// Exact classification without the filter (reference path for tests and benchmarks).
+Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence = Evidence::Full);
+
+/// Independent tangency check (math.md section 3, for tests): lambda0 a real root of f; true iff
+/// the kernel of lambda0 P + E contains a real X != 0 with X^T E X = 0. lambda0 must be rational.
+bool kernel_has_common_point(const Ellipsoid& e, const Paraboloid& p, const Rational& lambda0);
+
+}  // namespace relpos

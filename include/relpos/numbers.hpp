@@ -1,0 +1,38 @@
+// Exact number types and exact parsing.
+//
+// relpos decides with exact rationals: every input entry becomes a CGAL::Gmpq (GMP) without
+// rounding. A double is a dyadic rational and is taken as exactly that value; a decimal string
+// such as "0.712045" is 712045/10^6, never the nearest double.
+#pragma once
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Gmpz.h>
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace relpos {
+
+using Integer = CGAL::Gmpz;
+using Rational = CGAL::Gmpq;
+
+/// Limits enforced by the parser (a clear error instead of a hang on hostile input).
+inline constexpr std::size_t kMaxNumberChars = 10000;  ///< characters in one number
+inline constexpr long kMaxDecimalExponent = 4000;      ///< |e| in "1.5e-7"-style exponents
+
+/// Parse an exact rational from text: integers ("-3"), fractions ("p/q"), decimals ("0.712045",
+/// "-.5", "1.5e-7", "2E+10"). Throws relpos::InputError naming the text on anything else.
+Rational parse_rational(std::string_view text);
+
+/// The exact value of a finite double. Throws relpos::InputError on NaN or infinity.
+Rational exact_rational(double value);
+
+/// Shortest exact text of a rational: "3", "-7/2".
+std::string to_string(const Rational& q);
+std::string to_string(const Integer& z);
+
+/// Decimal approximation of q with `digits` significant digits (rounded to nearest).
+std::string to_decimal(const Rational& q, int digits);
+
+}  // namespace relpos

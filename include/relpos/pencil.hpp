@@ -1,0 +1,67 @@
+// The pencil lambda P + E and its two polynomials (math.md section 2; paper eq. (1)):
+//   characteristic polynomial  f(lambda) = det(lambda P + E)   (quartic, f4 = det P, f0 = det E),
+//   special polynomial         s(lambda) = det(lambda A + M)   (A, M the 3x3 blocks; quadratic,
+//                                                               because rank A = 2).
+// Both are written once, generic over the number type NT (double, intervals, MPFR, GMP integers):
+// only ring operations are used, so an integer instantiation is exact and an interval one encloses.
+#pragma once
+
+#include <array>
+
+namespace relpos {
+
+/// Coefficients of a polynomial, index = power of lambda.
+template <class NT>
+using Quartic = std::array<NT, 5>;
+template <class NT>
+using Quadratic = std::array<NT, 3>;
+
+namespace detail {
+
+/// 2x2 minor of the matrix of linear polynomials m0 + lambda m1 on rows (r0, r1), columns (c0, c1):
+/// a quadratic in lambda.
+template <class NT, class M>
+Quadratic<NT> linear_minor2(const M& m0, const M& m1, int r0, int r1, int c0, int c1) {
+  const NT &a0 = m0(r0, c0), &b0 = m0(r0, c1), &c0_ = m0(r1, c0), &d0 = m0(r1, c1);
+  const NT &a1 = m1(r0, c0), &b1 = m1(r0, c1), &c1_ = m1(r1, c0), &d1 = m1(r1, c1);
+  return {a0 * d0 - b0 * c0_, a0 * d1 + a1 * d0 - b0 * c1_ - b1 * c0_, a1 * d1 - b1 * c1_};
+}
+
+}  // namespace detail
+
+/// f(lambda) = det(lambda P + E) for 4x4 matrices accessed as m(i, j).
+/// Laplace expansion along the first two rows: det = sum over column pairs of
+/// sign * minor(rows 0,1) * complementary minor(rows 2,3); each minor is a quadratic in lambda.
+template <class NT, class M>
+Quartic<NT> characteristic_polynomial(const M& p, const M& e) {
+  static constexpr int kPairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  static constexpr int kSign[6] = {1, -1, 1, 1, -1, 1};
+  Quartic<NT> f{NT(0), NT(0), NT(0), NT(0), NT(0)};
+  for (int k = 0; k < 6; ++k) {
+    const int* top = kPairs[k];
+    const int* bot = kPairs[5 - k];  // complementary columns
+    Quadratic<NT> u = detail::linear_minor2<NT>(e, p, 0, 1, top[0], top[1]);
+    Quadratic<NT> v = detail::linear_minor2<NT>(e, p, 2, 3, bot[0], bot[1]);
+    Quartic<NT> uv{u[0] * v[0], u[0] * v[1] + u[1] * v[0], u[0] * v[2] + u[1] * v[1] + u[2] * v[0],
+                   u[1] * v[2] + u[2] * v[1], u[2] * v[2]};
+    for (int i = 0; i < 5; ++i) f[i] = kSign[k] > 0 ? f[i] + uv[i] : f[i] - uv[i];
+  }
+  return f;
+}
+
+/// s(lambda) = det(lambda A + M) with A, M the leading 3x3 blocks of P, E. The lambda^3 coefficient
+/// is det A = 0 for an elliptic paraboloid and is not returned.
+template <class NT, class M>
+Quadratic<NT> special_polynomial(const M& p, const M& e) {
+  Quadratic<NT> s{NT(0), NT(0), NT(0)};
+  for (int j = 0; j < 3; ++j) {
+    const int c0 = j == 0 ? 1 : 0, c1 = j == 2 ? 1 : 2;
+    Quadratic<NT> m = detail::linear_minor2<NT>(e, p, 1, 2, c0, c1);
+    const NT &x0 = e(0, j), &x1 = p(0, j);  // entry (0, j) = x0 + lambda x1
+    Quadratic<NT> t{x0 * m[0], x0 * m[1] + x1 * m[0], x0 * m[2] + x1 * m[1]};  // lambda^3 term dropped
+    for (int i = 0; i < 3; ++i) s[i] = (j == 1) ? s[i] - t[i] : s[i] + t[i];
+  }
+  return s;
+}
+
+}  // namespace relpos

@@ -1,0 +1,56 @@
+// Exact root structure of the characteristic polynomial, for the cases the Sturm-Habicht signs
+// cannot settle (Disc(f) = 0 or a defective sequence), and certified root approximations for
+// reports. Everything here is exact polynomial arithmetic over Z (CGAL Polynomial, gcd, square-free
+// factorisation, the real-root isolation of CGAL's Algebraic_kernel_d_1); no root is computed in
+// floating point.
+//
+// The multiplicity rule (math.md section 3): with f~ = f / gcd(f, s),
+//   tangency  <=>  mult_f(l0) - mult_s(l0) >= 2 for some real l0  <=>  f~ has a multiple real root.
+// A multiple root of f that is not multiple in f~ is a "special" root of s (paper Remark 2,
+// Theorem 5: -a^2, -b^2 in the normal frame) and is not a tangency.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "relpos/numbers.hpp"
+#include "relpos/pencil.hpp"
+
+namespace relpos {
+
+/// One distinct real root of f with certified information.
+struct RealRoot {
+  int sign = 0;                      ///< -1 or +1 (0 is never a root)
+  int multiplicity_f = 1;            ///< multiplicity as a root of f
+  int multiplicity_s = 0;            ///< multiplicity as a root of s (0, 1 or 2)
+  std::optional<Rational> exact;     ///< the root itself when it is rational
+  Rational lower, upper;             ///< isolating interval: the root is the only root of f in it
+  bool tangency() const { return multiplicity_f - multiplicity_s >= 2; }
+};
+
+/// Everything exact about the roots of f and of f~ = f / gcd(f, s).
+struct RootStructure {
+  std::vector<RealRoot> real_roots;  ///< distinct real roots, increasing
+  int nonreal = 0;                   ///< number of non-real roots of f, with multiplicity
+  int nonreal_multiple = 0;          ///< non-real roots of f of multiplicity >= 2 (never seen in theory)
+  int degree_ftilde = 4;
+  int sign_disc_f = 0;
+  int sign_disc_ftilde = 0;
+  int negative() const;
+  int positive() const;
+};
+
+/// Exact root structure of f (integer coefficients, f(0) != 0) relative to s.
+RootStructure exact_root_structure(const Quartic<Integer>& f, const Quadratic<Integer>& s);
+
+/// Certified decimal approximations of the real roots of f: each string has `digits` significant
+/// digits and the true root lies within one unit of the last digit (the isolating interval is
+/// refined until it is that narrow).
+std::vector<std::string> real_root_decimals(const Quartic<Integer>& f, int digits);
+
+/// Exact sign of Disc(g) for a polynomial over Z of degree 1..4 (via Res(g, g')); used for f~.
+int sign_of_discriminant(const std::vector<Integer>& coefficients);
+
+}  // namespace relpos

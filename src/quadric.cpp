@@ -1,0 +1,308 @@
+#include "relpos/quadric.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "relpos/error.hpp"
+
+namespace relpos {
+namespace {
+
+int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+
+/// Determinant of the principal submatrix of q on the given index set (Laplace, n <= 4).
+Rational principal_minor(const Matrix4& q, const int* idx, int n) {
+  if (n == 0) return Rational(1);
+  if (n == 1) return q(idx[0], idx[0]);
+  Rational det(0);
+  // expand along the first row of the submatrix
+  for (int c = 0; c < n; ++c) {
+    int rows[3], cols[3], k = 0;
+    for (int j = 0; j < n; ++j)
+      if (j != c) cols[k++] = idx[j];
+    for (int i = 1; i < n; ++i) rows[i - 1] = idx[i];
+    // minor on rows x cols (not principal in general): small explicit cases
+    Rational m;
+    if (n == 2) {
+      m = q(rows[0], cols[0]);
+    } else if (n == 3) {
+      m = q(rows[0], cols[0]) * q(rows[1], cols[1]) - q(rows[0], cols[1]) * q(rows[1], cols[0]);
+    } else {
+      m = q(rows[0], cols[0]) * (q(rows[1], cols[1]) * q(rows[2], cols[2]) - q(rows[1], cols[2]) * q(rows[2], cols[1])) -
+          q(rows[0], cols[1]) * (q(rows[1], cols[0]) * q(rows[2], cols[2]) - q(rows[1], cols[2]) * q(rows[2], cols[0])) +
+          q(rows[0], cols[2]) * (q(rows[1], cols[0]) * q(rows[2], cols[1]) - q(rows[1], cols[1]) * q(rows[2], cols[0]));
+    }
+    Rational term = q(idx[0], idx[c]) * m;
+    det += (c % 2 == 0) ? term : -term;
+  }
+  return det;
+}
+
+/// Inertia (positive, negative) of the leading n x n block of a symmetric matrix. The characteristic
+/// polynomial of a real symmetric matrix has only real roots, so Descartes' rule of signs counts its
+/// positive and negative roots exactly. det(xI - S) = sum_k (-1)^k E_k x^(n-k), E_k the sum of the
+/// k x k principal minors.
+std::pair<int, int> inertia(const Matrix4& q, int n) {
+  std::array<Rational, 5> e{};  // E_0..E_n
+  for (int mask = 0; mask < (1 << n); ++mask) {
+    int idx[4], k = 0;
+    for (int i = 0; i < n; ++i)
+      if (mask & (1 << i)) idx[k++] = i;
+    e[static_cast<std::size_t>(k)] += principal_minor(q, idx, k);
+  }
+  auto variations = [&](bool negate_x) {
+    int count = 0, last = 0;
+    for (int k = 0; k <= n; ++k) {
+      // coefficient of x^(n-k): (-1)^k E_k; evaluated at -x it gains (-1)^(n-k)
+      int s = sgn(e[static_cast<std::size_t>(k)]) * ((k % 2) ? -1 : 1);
+      if (negate_x && ((n - k) % 2)) s = -s;
+      if (s == 0) continue;
+      if (last != 0 && s != last) ++count;
+      last = s;
+    }
+    return count;
+  };
+  return {variations(false), variations(true)};
+}
+
+Rational det4(const Matrix4& q) {
+  static const int all[4] = {0, 1, 2, 3};
+  return principal_minor(q, all, 4);
+}
+
+Matrix4 negated(const Matrix4& q) {
+  Matrix4 r;
+  for (std::size_t i = 0; i < 16; ++i) r.a[i] = -q.a[i];
+  return r;
+}
+
+void require_symmetric(const Matrix4& q) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (q(i, j) != q(j, i))
+        throw InputError("matrix is not symmetric: entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) +
+                         ") = " + to_string(q(i, j)) + " but entry (" + std::to_string(j + 1) + "," +
+                         std::to_string(i + 1) + ") = " + to_string(q(j, i)));
+}
+
+Matrix3 inverse3(const Matrix3& m, const char* what) {
+  Matrix3 c;  // cofactor transpose
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+      c(i, j) = m(r0, c0) * m(r1, c1) - m(r0, c1) * m(r1, c0);
+    }
+  Rational det = m(0, 0) * c(0, 0) + m(0, 1) * c(1, 0) + m(0, 2) * c(2, 0);
+  if (det == 0) throw InputError(std::string(what) + " is singular (determinant 0)");
+  for (auto& x : c.a) x /= det;
+  return c;
+}
+
+/// Q_world = H^-T Q_local H^-1 for the affine map x = L u + t (H = [[L, t], [0, 1]]).
+Matrix4 push_forward(const Matrix4& local, const Matrix3& l, const Vector3& t, const char* what) {
+  Matrix3 li = inverse3(l, what);
+  Matrix4 hi;  // H^-1 = [[L^-1, -L^-1 t], [0, 1]]
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) hi(i, j) = li(i, j);
+    hi(i, 3) = -(li(i, 0) * t[0] + li(i, 1) * t[1] + li(i, 2) * t[2]);
+  }
+  hi(3, 3) = Rational(1);
+  Matrix4 tmp, out;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      Rational s(0);
+      for (int k = 0; k < 4; ++k) s += local(i, k) * hi(k, j);
+      tmp(i, j) = s;
+    }
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      Rational s(0);
+      for (int k = 0; k < 4; ++k) s += hi(k, i) * tmp(k, j);
+      out(i, j) = s;
+    }
+  return out;
+}
+
+Matrix3 check_orthogonal(const Matrix3& r) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      Rational s(0);
+      for (int k = 0; k < 3; ++k) s += r(k, i) * r(k, j);
+      if (s != Rational(i == j ? 1 : 0))
+        throw InputError(
+            "rotation matrix is not exactly orthogonal (R^T R != I); give the rotation as a quaternion, "
+            "which is exact for any rational components, or use the linear-map form");
+    }
+  return r;
+}
+
+std::string found(QuadricKind k) {
+  std::string s = to_string(k);
+  const char* article = (s[0] == 'a' || s[0] == 'e' || s[0] == 'i' || s[0] == 'o' || s[0] == 'u') ? "an " : "a ";
+  return article + s;
+}
+
+}  // namespace
+
+std::string to_string(QuadricKind kind) {
+  switch (kind) {
+    case QuadricKind::Ellipsoid: return "ellipsoid";
+    case QuadricKind::ImaginaryEllipsoid: return "imaginary ellipsoid (no real point)";
+    case QuadricKind::Point: return "single point (degenerate ellipsoid, det = 0)";
+    case QuadricKind::HyperboloidOneSheet: return "hyperboloid of one sheet";
+    case QuadricKind::HyperboloidTwoSheets: return "hyperboloid of two sheets";
+    case QuadricKind::Cone: return "cone";
+    case QuadricKind::EllipticParaboloid: return "elliptic paraboloid";
+    case QuadricKind::HyperbolicParaboloid: return "hyperbolic paraboloid";
+    case QuadricKind::EllipticCylinder: return "elliptic cylinder";
+    case QuadricKind::ImaginaryEllipticCylinder: return "imaginary elliptic cylinder (no real point)";
+    case QuadricKind::Line: return "line (pair of imaginary planes)";
+    case QuadricKind::HyperbolicCylinder: return "hyperbolic cylinder";
+    case QuadricKind::IntersectingPlanes: return "pair of intersecting planes";
+    case QuadricKind::ParabolicCylinder: return "parabolic cylinder";
+    case QuadricKind::ParallelPlanes: return "pair of parallel planes";
+    case QuadricKind::ImaginaryParallelPlanes: return "pair of imaginary parallel planes (no real point)";
+    case QuadricKind::DoublePlane: return "double plane";
+    case QuadricKind::NotQuadratic: return "equation without quadratic terms (a plane or nothing)";
+  }
+  return "unknown quadric";
+}
+
+QuadricKind classify_quadric(const Matrix4& q) {
+  require_symmetric(q);
+  auto [p3, n3] = inertia(q, 3);
+  auto [p4, n4] = inertia(q, 4);
+  if (p3 < n3) {  // orientation does not change the type: normalize to p3 >= n3
+    std::swap(p3, n3);
+    std::swap(p4, n4);
+  }
+  const int rank4 = p4 + n4;
+  const int s = sgn(det4(q));
+  if (p3 == 3) return s < 0 ? QuadricKind::Ellipsoid : (s > 0 ? QuadricKind::ImaginaryEllipsoid : QuadricKind::Point);
+  if (p3 == 2 && n3 == 1)
+    return s > 0 ? QuadricKind::HyperboloidOneSheet : (s < 0 ? QuadricKind::HyperboloidTwoSheets : QuadricKind::Cone);
+  if (p3 == 2 && n3 == 0) {
+    if (rank4 == 4) return QuadricKind::EllipticParaboloid;
+    if (rank4 == 3) return (n4 == 1 || p4 == 1) ? QuadricKind::EllipticCylinder : QuadricKind::ImaginaryEllipticCylinder;
+    return QuadricKind::Line;
+  }
+  if (p3 == 1 && n3 == 1) {
+    if (rank4 == 4) return QuadricKind::HyperbolicParaboloid;
+    if (rank4 == 3) return QuadricKind::HyperbolicCylinder;
+    return QuadricKind::IntersectingPlanes;
+  }
+  if (p3 == 1) {
+    if (rank4 == 3) return QuadricKind::ParabolicCylinder;
+    if (rank4 == 2) return (p4 == 1 && n4 == 1) ? QuadricKind::ParallelPlanes : QuadricKind::ImaginaryParallelPlanes;
+    return QuadricKind::DoublePlane;
+  }
+  return QuadricKind::NotQuadratic;
+}
+
+Matrix4 matrix_from_coefficients(const Coefficients10& c) {
+  const Rational half(1, 2);
+  Matrix4 m;
+  m(0, 0) = c[0];
+  m(1, 1) = c[1];
+  m(2, 2) = c[2];
+  m(3, 3) = c[9];
+  m(0, 1) = m(1, 0) = c[3] * half;
+  m(0, 2) = m(2, 0) = c[4] * half;
+  m(1, 2) = m(2, 1) = c[5] * half;
+  m(0, 3) = m(3, 0) = c[6] * half;
+  m(1, 3) = m(3, 1) = c[7] * half;
+  m(2, 3) = m(3, 2) = c[8] * half;
+  return m;
+}
+
+Matrix3 rotation_from_quaternion(const Quaternion& q) {
+  const Rational &w = q[0], &x = q[1], &y = q[2], &z = q[3];
+  Rational n = w * w + x * x + y * y + z * z;
+  if (n == 0) throw InputError("rotation quaternion is zero");
+  Matrix3 r;
+  r(0, 0) = w * w + x * x - y * y - z * z;
+  r(0, 1) = 2 * (x * y - w * z);
+  r(0, 2) = 2 * (x * z + w * y);
+  r(1, 0) = 2 * (x * y + w * z);
+  r(1, 1) = w * w - x * x + y * y - z * z;
+  r(1, 2) = 2 * (y * z - w * x);
+  r(2, 0) = 2 * (x * z - w * y);
+  r(2, 1) = 2 * (y * z + w * x);
+  r(2, 2) = w * w - x * x - y * y + z * z;
+  for (auto& v : r.a) v /= n;
+  return r;
+}
+
+Ellipsoid Ellipsoid::from_matrix(const Matrix4& e) {
+  QuadricKind k = classify_quadric(e);
+  if (k == QuadricKind::EllipticParaboloid)
+    throw InputError("not an ellipsoid: the matrix describes an elliptic paraboloid (ellipsoid and paraboloid swapped?)");
+  if (k != QuadricKind::Ellipsoid) throw InputError("not an ellipsoid: the matrix describes " + found(k));
+  // Q3 is definite; make it positive definite (interior X^T E X < 0).
+  return Ellipsoid(e(0, 0) > 0 ? e : negated(e));
+}
+
+Ellipsoid Ellipsoid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
+
+Ellipsoid Ellipsoid::sphere(const Vector3& c, const Rational& r) {
+  if (r <= 0) throw InputError("sphere radius must be positive, got " + to_string(r));
+  Matrix4 m;
+  for (int i = 0; i < 3; ++i) {
+    m(i, i) = Rational(1);
+    m(i, 3) = m(3, i) = -c[static_cast<std::size_t>(i)];
+  }
+  m(3, 3) = c[0] * c[0] + c[1] * c[1] + c[2] * c[2] - r * r;
+  return Ellipsoid(m);
+}
+
+Ellipsoid Ellipsoid::from_axes(const Vector3& c, const Vector3& ax, const Quaternion& q) {
+  return from_axes(c, ax, rotation_from_quaternion(q));
+}
+
+Ellipsoid Ellipsoid::from_axes(const Vector3& c, const Vector3& ax, const Matrix3& rot) {
+  for (const auto& a : ax)
+    if (a <= 0) throw InputError("ellipsoid semi-axes must be positive, got " + to_string(a));
+  check_orthogonal(rot);
+  Matrix3 l;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) l(i, j) = rot(i, j) * ax[static_cast<std::size_t>(j)];
+  return from_map(c, l);
+}
+
+Ellipsoid Ellipsoid::from_map(const Vector3& c, const Matrix3& l) {
+  Matrix4 unit;  // x^2 + y^2 + z^2 - 1
+  unit(0, 0) = unit(1, 1) = unit(2, 2) = Rational(1);
+  unit(3, 3) = Rational(-1);
+  return from_matrix(push_forward(unit, l, c, "ellipsoid linear map"));
+}
+
+Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
+  QuadricKind k = classify_quadric(p);
+  if (k == QuadricKind::Ellipsoid)
+    throw InputError("not an elliptic paraboloid: the matrix describes an ellipsoid (ellipsoid and paraboloid swapped?)");
+  if (k != QuadricKind::EllipticParaboloid)
+    throw InputError("not an elliptic paraboloid: the matrix describes " + found(k));
+  // Q3 is semidefinite of rank 2; its trace has the sign of its non-zero eigenvalues.
+  return Paraboloid(p(0, 0) + p(1, 1) + p(2, 2) > 0 ? p : negated(p));
+}
+
+Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
+
+Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Rational& b, const Quaternion& q) {
+  if (a <= 0 || b <= 0)
+    throw InputError("paraboloid parameters a, b must be positive, got a = " + to_string(a) + ", b = " + to_string(b));
+  Matrix4 local;
+  local(0, 0) = Rational(1) / (a * a);
+  local(1, 1) = Rational(1) / (b * b);
+  local(2, 3) = local(3, 2) = Rational(-1, 2);
+  return from_matrix(push_forward(local, rotation_from_quaternion(q), v, "paraboloid rotation"));
+}
+
+Paraboloid Paraboloid::from_map(const Matrix3& l, const Vector3& t) {
+  Matrix4 local;  // x^2 + y^2 - z
+  local(0, 0) = local(1, 1) = Rational(1);
+  local(2, 3) = local(3, 2) = Rational(-1, 2);
+  return from_matrix(push_forward(local, l, t, "paraboloid linear map"));
+}
+
+}  // namespace relpos

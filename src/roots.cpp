@@ -1,0 +1,141 @@
+#include "relpos/roots.hpp"
+
+#include <CGAL/Algebraic_kernel_d_1.h>
+#include <CGAL/Polynomial.h>
+#include <CGAL/Polynomial_traits_d.h>
+#include <gmp.h>
+
+#include <algorithm>
+#include <utility>
+
+namespace relpos {
+namespace {
+
+using Poly = CGAL::Polynomial<Integer>;
+using AK = CGAL::Algebraic_kernel_d_1<Integer>;
+using Root = AK::Algebraic_real_1;
+
+template <std::size_t N>
+Poly make_poly(const std::array<Integer, N>& c) {
+  return Poly(c.begin(), c.end());
+}
+
+int sgn(const Integer& z) { return z > 0 ? 1 : (z < 0 ? -1 : 0); }
+
+/// Rational roots of the square-free factors of degree 1 and 2 (the only factors that can carry a
+/// multiple root of a quartic); a quadratic has rational roots iff its discriminant is a square.
+std::vector<Rational> small_factor_rational_roots(const Poly& f) {
+  std::vector<std::pair<Poly, int>> factors;
+  CGAL::square_free_factorize(f, std::back_inserter(factors));
+  std::vector<Rational> out;
+  for (const auto& [g, m] : factors) {
+    (void)m;
+    if (g.degree() == 1) {
+      out.emplace_back(-g[0], g[1]);
+    } else if (g.degree() == 2) {
+      Integer d = g[1] * g[1] - 4 * g[2] * g[0];
+      if (d >= 0 && mpz_perfect_square_p(d.mpz())) {
+        Integer r;
+        mpz_sqrt(r.mpz(), d.mpz());
+        out.emplace_back(-g[1] - r, 2 * g[2]);
+        out.emplace_back(-g[1] + r, 2 * g[2]);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+int RootStructure::negative() const {
+  return static_cast<int>(std::count_if(real_roots.begin(), real_roots.end(), [](const RealRoot& r) { return r.sign < 0; }));
+}
+int RootStructure::positive() const {
+  return static_cast<int>(std::count_if(real_roots.begin(), real_roots.end(), [](const RealRoot& r) { return r.sign > 0; }));
+}
+
+int sign_of_discriminant(const std::vector<Integer>& c) {
+  Poly g(c.begin(), c.end());
+  const int n = g.degree();
+  if (n < 1) return 0;
+  if (n == 1) return 1;
+  // Res(g, g') = (-1)^(n(n-1)/2) lc(g) Disc(g)
+  Integer res = CGAL::resultant(g, CGAL::differentiate(g));
+  int s = sgn(res) * sgn(g.lcoeff());
+  if ((n * (n - 1) / 2) % 2) s = -s;
+  return s;
+}
+
+RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
+  const Poly f = make_poly(fc), s = make_poly(sc);
+  const Poly g = CGAL::gcd(f, s);
+  const Poly ft = CGAL::integral_division_up_to_constant_factor(f, g);
+
+  RootStructure rs;
+  rs.degree_ftilde = ft.degree();
+  rs.sign_disc_f = sign_of_discriminant(std::vector<Integer>(fc.begin(), fc.end()));
+  {
+    std::vector<Integer> c;
+    for (int i = 0; i <= ft.degree(); ++i) c.push_back(ft[i]);
+    rs.sign_disc_ftilde = sign_of_discriminant(c);
+  }
+
+  AK ak;
+  std::vector<std::pair<Root, AK::Multiplicity_type>> roots;
+  ak.solve_1_object()(f, std::back_inserter(roots));  // distinct real roots, increasing, with multiplicity
+  const Poly ds = CGAL::differentiate(s);
+  const std::vector<Rational> rationals = small_factor_rational_roots(f);
+  int real_with_mult = 0;
+  long bits = 64;
+  for (const auto& [root, mult] : roots) {
+    RealRoot r;
+    r.sign = static_cast<int>(ak.sign_at_1_object()(Poly(CGAL::shift(Poly(Integer(1)), 1)), root));
+    r.multiplicity_f = static_cast<int>(mult);
+    if (s.degree() >= 0 && ak.is_zero_at_1_object()(s, root))
+      r.multiplicity_s = ak.is_zero_at_1_object()(ds, root) ? 2 : 1;
+    for (const Rational& q : rationals)
+      if (ak.compare_1_object()(root, Root(q)) == CGAL::EQUAL) r.exact = q;
+    real_with_mult += r.multiplicity_f;
+    rs.real_roots.push_back(std::move(r));
+  }
+  // Isolating intervals: refine until the intervals of neighbouring roots are disjoint.
+  for (;; bits *= 2) {
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+      auto iv = ak.approximate_absolute_1_object()(roots[i].first, static_cast<int>(bits));
+      rs.real_roots[i].lower = iv.first;
+      rs.real_roots[i].upper = iv.second;
+    }
+    bool disjoint = true;
+    for (std::size_t i = 1; i < roots.size(); ++i)
+      if (!(rs.real_roots[i - 1].upper < rs.real_roots[i].lower)) disjoint = false;
+    if (disjoint || bits > 4096) break;
+  }
+  rs.nonreal = 4 - real_with_mult;
+  // Non-real roots of multiplicity >= 2: look at the square-free factors of multiplicity >= 2.
+  std::vector<std::pair<Poly, int>> factors;
+  CGAL::square_free_factorize(f, std::back_inserter(factors));
+  for (const auto& [h, m] : factors) {
+    if (m < 2) continue;
+    std::vector<std::pair<Root, AK::Multiplicity_type>> hr;
+    ak.solve_1_object()(h, std::back_inserter(hr));
+    rs.nonreal_multiple += (h.degree() - static_cast<int>(hr.size())) * m;
+  }
+  return rs;
+}
+
+std::vector<std::string> real_root_decimals(const Quartic<Integer>& fc, int digits) {
+  const Poly f = make_poly(fc);
+  AK ak;
+  std::vector<std::pair<Root, AK::Multiplicity_type>> roots;
+  ak.solve_1_object()(f, std::back_inserter(roots));
+  std::vector<std::string> out;
+  const int bits = static_cast<int>(digits * 3.33) + 8;
+  for (const auto& r : roots) {
+    auto iv = ak.approximate_relative_1_object()(r.first, bits);
+    Rational mid = (iv.first + iv.second) / 2;
+    out.push_back(to_decimal(mid, digits));
+  }
+  return out;
+}
+
+}  // namespace relpos
