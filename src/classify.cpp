@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "relpos/smallness.hpp"
+#include "relpos/static_filter.hpp"
 #include "relpos/sturm.hpp"
 
 namespace relpos {
@@ -24,6 +25,7 @@ std::string to_string(Position p) {
 
 std::string to_string(Stage s) {
   switch (s) {
+    case Stage::StaticDouble: return "static-double";
     case Stage::Interval: return "interval";
     case Stage::ExactSigns: return "exact-signs";
     case Stage::ExactRoots: return "exact-roots";
@@ -157,15 +159,22 @@ std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, co
   return {pi, ei};
 }
 
-/// Decision from certified Sturm-Habicht signs (Disc(f) != 0, so f and f~ are square-free).
+/// The signs of every decision quantity, evaluated in NT (intervals or exact integers).
 template <class NT>
-bool decide_from_signs(const Quartic<NT>& f, const Quadratic<NT>& s, Classification& out) {
+DecisionSigns signs_in(const Quartic<NT>& f, const Quadratic<NT>& s) {
   SturmHabicht<NT> sh(f);
-  auto disc = detail::certain_sign(CGAL::sign(sh.discriminant()));
+  SmallnessQuantities<NT> q(f, s);
+  return DecisionSigns{signs_of(f, sh), sign_of(q.vertex), sign_of(q.graeffe)};
+}
+
+/// Decision from certified signs when Disc(f) != 0 (then f and f~ are square-free). False when a
+/// needed sign is uncertain, Disc(f) = 0 or the Sturm-Habicht sequence is defective.
+bool decide_from_signs(const DecisionSigns& d, Classification& out) {
+  auto disc = detail::certain(d.quartic.g0);
   if (!disc || *disc == 0) return false;
-  auto counts = count_roots(f, sh);
+  auto counts = count_roots(d.quartic);
   if (!counts) return false;
-  auto rho = compare_rho_with_one(f, s);
+  auto rho = compare_rho_with_one(d.vertex, d.graeffe);
   if (!rho) return false;
   Facts x;
   x.real = counts->real;
@@ -209,15 +218,20 @@ void fill_full_evidence(const Quartic<Integer>& fi, const Quadratic<Integer>& si
 }
 
 Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, bool use_filter) {
+  // The whole filter -> exact policy: each stage certifies what it can, the next one runs only if
+  // a needed sign is still uncertain. All stages evaluate the same generic formulas.
   Classification out;
-  if (use_filter) {
-    CGAL::Protect_FPU_rounding<true> guard;  // intervals need rounding towards +inf
-    const MatrixOf<Interval> pi = to_intervals(p.matrix()), ei = to_intervals(e.matrix());
-    const auto f = characteristic_polynomial<Interval>(pi, ei);
-    const auto s = special_polynomial<Interval>(pi, ei);
-    if (decide_from_signs(f, s, out)) out.stage = Stage::Interval;
+  bool decided = false;
+  if (use_filter && e.doubles() && p.doubles()) {  // stage 1: doubles with static error bounds
+    decided = decide_from_signs(static_filter_signs(*p.doubles(), *e.doubles()), out);
+    if (decided) out.stage = Stage::StaticDouble;
   }
-  bool decided = use_filter && !out.rule.empty();
+  if (use_filter && !decided) {  // stage 2: interval arithmetic
+    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false> needs rounding towards +inf
+    const MatrixOf<Interval> pi = to_intervals(p.matrix()), ei = to_intervals(e.matrix());
+    decided = decide_from_signs(signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)), out);
+    if (decided) out.stage = Stage::Interval;
+  }
   Integer scale;
   auto [pz, ez] = to_integers(p.matrix(), e.matrix(), scale);
   Quartic<Integer> fz;
@@ -226,12 +240,12 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     fz = characteristic_polynomial<Integer>(pz, ez);
     sz = special_polynomial<Integer>(pz, ez);
   }
-  if (!decided && decide_from_signs(fz, sz, out)) {
+  if (!decided && decide_from_signs(signs_in(fz, sz), out)) {  // stage 3: exact integer signs
     out.stage = Stage::ExactSigns;
     decided = true;
   }
   if (!decided) {
-    // Disc(f) = 0 or a defective Sturm-Habicht sequence: exact factorisation.
+    // Stage 4: Disc(f) = 0 or a defective Sturm-Habicht sequence: exact factorisation.
     RootStructure rs = exact_root_structure(fz, sz);
     Facts x;
     x.real = static_cast<int>(rs.real_roots.size());

@@ -1,6 +1,7 @@
 #include "relpos/quadric.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "relpos/error.hpp"
@@ -143,6 +144,15 @@ std::string found(QuadricKind k) {
 }
 
 }  // namespace
+
+std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m) {
+  DoubleMatrix4 d;
+  for (std::size_t i = 0; i < 16; ++i) {
+    d[i] = CGAL::to_double(m.a[i]);
+    if (!std::isfinite(d[i]) || Rational(d[i]) != m.a[i]) return std::nullopt;
+  }
+  return d;
+}
 
 std::string to_string(QuadricKind kind) {
   switch (kind) {

@@ -2,7 +2,7 @@
 // Theorem 1 with the corrections of math.md section 3), decided exactly, with its evidence.
 //
 // Every decision is the sign of a polynomial in the input entries (section 4 of math.md). classify()
-// evaluates them first in interval arithmetic and certifies what it can; only the signs the filter
+// evaluates them first in doubles with static error bounds (static_filter.hpp), then in interval arithmetic and certifies what it can; only the signs the filter
 // cannot certify (exact zeros: tangencies, special roots, rho = 1) go to exact GMP integers, and only
 // Disc(f) = 0 or a defective Sturm-Habicht sequence goes to exact factorisation (roots.hpp).
 // classify_exact() skips the filter; the two return identical positions on every input.
@@ -30,6 +30,7 @@ std::string to_string(Position p);
 
 /// Which arithmetic settled the answer.
 enum class Stage {
+  StaticDouble,   ///< double arithmetic with static error bounds (inputs that are exact doubles)
   Interval,       ///< all signs certified by interval arithmetic
   ExactSigns,     ///< exact integer signs of the same polynomials
   ExactRoots,     ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)

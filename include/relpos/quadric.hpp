@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "relpos/numbers.hpp"
@@ -35,6 +36,12 @@ using Vector3 = std::array<Rational, 3>;
 using Quaternion = std::array<Rational, 4>;
 /// Coefficients of A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J, in that order.
 using Coefficients10 = std::array<Rational, 10>;
+
+/// Row-major 4x4 matrix of doubles.
+using DoubleMatrix4 = std::array<double, 16>;
+
+/// The entries as doubles if each one is exactly representable, else nullopt.
+std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m);
 
 /// Exact affine type of a real quadric surface.
 enum class QuadricKind {
@@ -87,10 +94,13 @@ class Ellipsoid {
   static Ellipsoid from_map(const Vector3& centre, const Matrix3& linear);
 
   const Matrix4& matrix() const { return m_; }
+  /// The matrix as doubles when every entry is exactly a double (enables the static filter).
+  const std::optional<DoubleMatrix4>& doubles() const { return d_; }
 
  private:
-  explicit Ellipsoid(Matrix4 m) : m_(std::move(m)) {}
+  explicit Ellipsoid(Matrix4 m) : m_(std::move(m)), d_(exact_doubles(m_)) {}
   Matrix4 m_;
+  std::optional<DoubleMatrix4> d_;
 };
 
 /// A validated elliptic paraboloid, sign-normalized: A = Q3 positive semidefinite of rank 2, det P < 0.
@@ -106,10 +116,13 @@ class Paraboloid {
   static Paraboloid from_map(const Matrix3& linear, const Vector3& translation);
 
   const Matrix4& matrix() const { return m_; }
+  /// The matrix as doubles when every entry is exactly a double (enables the static filter).
+  const std::optional<DoubleMatrix4>& doubles() const { return d_; }
 
  private:
-  explicit Paraboloid(Matrix4 m) : m_(std::move(m)) {}
+  explicit Paraboloid(Matrix4 m) : m_(std::move(m)), d_(exact_doubles(m_)) {}
   Matrix4 m_;
+  std::optional<DoubleMatrix4> d_;
 };
 
 }  // namespace relpos

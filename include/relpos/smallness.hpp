@@ -39,17 +39,21 @@ struct SmallnessQuantities {
   }
 };
 
-/// Comparison of rho with 1: -1 (rho < 1), 0 (rho = 1), +1 (rho > 1); nullopt if NT cannot certify.
-/// The ellipsoid is small iff the result is <= 0.
+/// Comparison of rho with 1 from the signs of the two quantities: -1 (rho < 1), 0 (rho = 1),
+/// +1 (rho > 1); nullopt if a needed sign is uncertain. The ellipsoid is small iff the result is <= 0.
+inline std::optional<int> compare_rho_with_one(const USign& vertex, const USign& graeffe) {
+  auto v = detail::certain(vertex);
+  if (!v) return std::nullopt;
+  if (*v < 0) return 1;
+  auto g = detail::certain(graeffe);
+  if (!g) return std::nullopt;
+  return -*g;
+}
+
 template <class NT>
 std::optional<int> compare_rho_with_one(const Quartic<NT>& f, const Quadratic<NT>& s) {
   SmallnessQuantities<NT> q(f, s);
-  auto v = detail::certain_sign(CGAL::sign(q.vertex));
-  if (!v) return std::nullopt;
-  if (*v < 0) return 1;
-  auto g = detail::certain_sign(CGAL::sign(q.graeffe));
-  if (!g) return std::nullopt;
-  return -*g;
+  return compare_rho_with_one(sign_of(q.vertex), sign_of(q.graeffe));
 }
 
 }  // namespace relpos

@@ -1,12 +1,15 @@
 // Root counting for the characteristic quartic from the signs of its Sturm-Habicht sequence
 // (math.md section 3: "count real, negative and positive roots with Sturm (or Sturm-Habicht)
-// sequences"). Generic over the number type; the sequence itself is generated and verified by
-// tools/gen_sturm_habicht.py (include/relpos/detail/sturm_habicht_quartic.hpp).
+// sequences"). The sequence is generated and verified by tools/gen_sturm_habicht.py
+// (include/relpos/detail/sturm_habicht_quartic.hpp) and evaluated generically over NT.
 //
 // For a non-defective sequence (all principal coefficients non-zero) each StHa_j is a positive
 // multiple of the classical Sturm sequence, so the number of distinct real roots in (a, b) is
 // Var(a) - Var(b) (Sturm's theorem), with Var the number of sign changes ignoring zeros. We evaluate
 // at -inf, 0 and +inf; 0 is never a root of f because f(0) = det E < 0 (paper Lemma 3).
+//
+// Counting works on *signs* (QuarticSigns), so every stage -- static double filter, intervals, exact
+// integers, the float baselines -- feeds the same counting code.
 #pragma once
 
 #include <CGAL/Uncertain.h>
@@ -21,6 +24,20 @@
 
 namespace relpos {
 
+using USign = CGAL::Uncertain<CGAL::Sign>;
+
+/// Sign of a number of any type relpos instantiates: certain for exact and floating types,
+/// possibly uncertain for intervals.
+template <class T>
+USign sign_of(const T& x) {
+  return USign(CGAL::sign(x));
+}
+#ifdef __SIZEOF_FLOAT128__
+inline USign sign_of(const __float128& x) {
+  return USign(x > 0 ? CGAL::POSITIVE : (x < 0 ? CGAL::NEGATIVE : CGAL::ZERO));
+}
+#endif
+
 /// Distinct real roots of a quartic and how many are negative / positive (0 is excluded by the caller).
 struct RootCounts {
   int real = 0;
@@ -28,8 +45,8 @@ struct RootCounts {
   int positive = 0;
 };
 
-/// The decision quantities of the quartic: the principal Sturm-Habicht coefficients and the values
-/// of the sequence at 0, as numbers of type NT (Disc(f) is g0).
+/// The decision quantities of the quartic: g_j of the Sturm-Habicht sequence (StHa_j = positive *
+/// f4^k_j * g_j), evaluated in NT. Disc(f) is g0[0].
 template <class NT>
 struct SturmHabicht {
   NT g2[3], g1[2], g0[1];
@@ -38,6 +55,22 @@ struct SturmHabicht {
   }
   const NT& discriminant() const { return g0[0]; }
 };
+
+/// Signs of f's coefficients and of the g_j: everything root counting looks at.
+struct QuarticSigns {
+  USign f[5];
+  USign g2[3], g1[2], g0;
+};
+
+template <class NT>
+QuarticSigns signs_of(const Quartic<NT>& f, const SturmHabicht<NT>& sh) {
+  QuarticSigns s;
+  for (int i = 0; i < 5; ++i) s.f[i] = sign_of(f[i]);
+  for (int i = 0; i < 3; ++i) s.g2[i] = sign_of(sh.g2[i]);
+  for (int i = 0; i < 2; ++i) s.g1[i] = sign_of(sh.g1[i]);
+  s.g0 = sign_of(sh.g0[0]);
+  return s;
+}
 
 namespace detail {
 
@@ -52,36 +85,27 @@ inline int variations(const int* s, int n) {
   return v;
 }
 
-/// A certain sign as an int, or nullopt if NT could not certify it.
-template <class S>
-std::optional<int> certain_sign(const S& s) {
+/// A certain sign as an int, or nullopt if it is uncertain.
+inline std::optional<int> certain(const USign& s) {
   if (!CGAL::is_certain(s)) return std::nullopt;
   return static_cast<int>(CGAL::get_certain(s));
 }
 
 }  // namespace detail
 
-/// Root counts from the Sturm-Habicht signs, or nullopt when a needed sign is uncertain (NT =
-/// interval) or the sequence is defective (an exact zero principal coefficient; the caller then uses
-/// exact factorisation, see roots.hpp). Requires f(0) != 0.
-template <class NT>
-std::optional<RootCounts> count_roots(const Quartic<NT>& f, const SturmHabicht<NT>& sh) {
-  using detail::certain_sign;
-  auto s4 = certain_sign(CGAL::sign(f[4]));
-  auto s2 = certain_sign(CGAL::sign(sh.g2[0]));
-  auto s1 = certain_sign(CGAL::sign(sh.g1[0]));
-  auto s0 = certain_sign(CGAL::sign(sh.g0[0]));
+/// Root counts from the Sturm-Habicht signs, or nullopt when a needed sign is uncertain or the
+/// sequence is defective (an exact zero principal coefficient; the caller then uses exact
+/// factorisation, see roots.hpp). Requires f(0) != 0.
+inline std::optional<RootCounts> count_roots(const QuarticSigns& q) {
+  using detail::certain;
+  auto s4 = certain(q.f[4]), s2 = certain(q.g2[0]), s1 = certain(q.g1[0]), s0 = certain(q.g0);
   if (!s4 || !s2 || !s1 || !s0 || *s4 == 0 || *s2 == 0 || *s1 == 0 || *s0 == 0) return std::nullopt;
-  // StHa_j = (positive) * f4^k_j * g_j
-  auto lift = [&](int s, int k) { return (k % 2 && *s4 < 0) ? -s : s; };
+  auto lift = [&](int s, int k) { return (k % 2 && *s4 < 0) ? -s : s; };  // StHa_j = f4^k_j * g_j
   const int p[5] = {*s4, *s4, lift(*s2, detail::kStHaF4Power2), lift(*s1, detail::kStHaF4Power1),
                     lift(*s0, detail::kStHaF4Power0)};
   int at_minus_inf[5];
-  for (int j = 0; j < 5; ++j) at_minus_inf[j] = ((4 - j) % 2) ? -p[j] : p[j];  // degree of StHa is 4-j
-  auto v0 = certain_sign(CGAL::sign(f[0]));
-  auto v1 = certain_sign(CGAL::sign(f[1]));
-  auto v2 = certain_sign(CGAL::sign(sh.g2[2]));
-  auto v3 = certain_sign(CGAL::sign(sh.g1[1]));
+  for (int j = 0; j < 5; ++j) at_minus_inf[j] = ((4 - j) % 2) ? -p[j] : p[j];  // deg StHa = 4 - j
+  auto v0 = certain(q.f[0]), v1 = certain(q.f[1]), v2 = certain(q.g2[2]), v3 = certain(q.g1[1]);
   if (!v0 || !v1 || !v2 || !v3 || *v0 == 0) return std::nullopt;
   const int at_zero[5] = {*v0, *v1, lift(*v2, detail::kStHaF4Power2), lift(*v3, detail::kStHaF4Power1), p[4]};
   RootCounts c;
@@ -89,6 +113,11 @@ std::optional<RootCounts> count_roots(const Quartic<NT>& f, const SturmHabicht<N
   c.positive = detail::variations(at_zero, 5) - detail::variations(p, 5);
   c.negative = c.real - c.positive;
   return c;
+}
+
+template <class NT>
+std::optional<RootCounts> count_roots(const Quartic<NT>& f, const SturmHabicht<NT>& sh) {
+  return count_roots(signs_of(f, sh));
 }
 
 }  // namespace relpos

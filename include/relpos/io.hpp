@@ -1,0 +1,64 @@
+// Input and output of relpos in JSON: exact parsing of quadric descriptions and rendering of a
+// Classification as a JSON object or as a human-readable report (doc/cli.md describes the formats).
+//
+// Exactness: JSON numbers are never read through a double. parse_json_exact() keeps the decimal
+// text of every non-integer JSON number (0.1 is 1/10, not the nearest double), and every leaf is
+// converted with relpos::parse_rational. Strings are accepted wherever a number is ("p/q", "-3",
+// "1.5e-7"); booleans, null, NaN and infinities are rejected with the path of the field.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+
+#include "relpos/classify.hpp"
+#include "relpos/numbers.hpp"
+#include "relpos/quadric.hpp"
+
+namespace relpos::io {
+
+/// Parse JSON text, keeping every floating-point JSON number as a string holding its original text
+/// (integers stay integers: they are exact). Throws relpos::InputError ("invalid JSON: ...") on
+/// malformed text. Object keys keep their order.
+nlohmann::ordered_json parse_json_exact(std::string_view text);
+
+/// An exact number from a JSON value (integer, string as above, or a float kept as text by
+/// parse_json_exact). `path` names the field in error messages, e.g. "ellipsoid.matrix[2][3]".
+/// Throws InputError "<path>: expected a number, got true" and the like.
+Rational rational_from_json(const nlohmann::ordered_json& value, const std::string& path);
+
+/// Quadric descriptions (doc/cli.md, "Quadric formats"). `role` prefixes every message and names
+/// the field paths ("ellipsoid", "paraboloid"). Library errors (not an ellipsoid, singular map,
+/// ...) are rethrown as InputError "<role>: <message>".
+///   ellipsoid:  4x4 array | {"matrix"} | {"coefficients"} | {"sphere": {"center", "radius"}}
+///               | {"center", "axes", "rotation" | "rotation_matrix"} | {"center", "map"}
+///   paraboloid: 4x4 array | {"matrix"} | {"coefficients"} | {"vertex", "a", "b", "rotation"}
+///               | {"map", "translation"}
+/// Parse from a value obtained with parse_json_exact (a value from the ordinary parser would have
+/// its floats rounded to doubles; those are then taken as the exact dyadic value of the double).
+Ellipsoid ellipsoid_from_json(const nlohmann::ordered_json& value, const std::string& role = "ellipsoid");
+Paraboloid paraboloid_from_json(const nlohmann::ordered_json& value, const std::string& role = "paraboloid");
+
+/// One sentence saying what a position means ("the ellipsoid lies inside the paraboloid ...").
+std::string position_meaning(Position p);
+
+/// "<1", "=1", ">1".
+std::string rho_vs_one_text(int sign);
+
+/// Options for rendering.
+struct RenderOptions {
+  int digits = 12;  ///< significant digits of root and rho approximations
+};
+
+/// The JSON report of one classification (without "id"): position, small, contact, rho_vs_one, rho,
+/// rho_approx, rule, finding (if any), stage, disc_sign, disc_ftilde_sign, roots, and with full
+/// evidence degree_ftilde, f, s and multiple_roots. Key order is stable.
+nlohmann::ordered_json classification_to_json(const Classification& c, const RenderOptions& options = {});
+
+/// A multi-line human-readable report (ends with a newline).
+std::string classification_to_text(const Classification& c, const RenderOptions& options = {});
+
+/// A polynomial with exact coefficients (index = power) as text: "3*l^4 - 1/2*l^2 + 7".
+std::string polynomial_to_text(const Rational* coefficients, int size, const std::string& variable = "l");
+
+}  // namespace relpos::io

@@ -1,0 +1,33 @@
+// Stage 1 of classify(): the decision signs in plain double arithmetic, certified by static error
+// bounds (the CGAL static-filter / Shewchuk "fast" stage; math.md section 4).
+//
+// Both matrices must hold exact doubles (Ellipsoid::doubles(), Paraboloid::doubles()). Each matrix
+// is scaled by a power of two so its largest entry lies in [1/2, 1) -- exact, and a positive scaling
+// changes no decision -- then f and s are evaluated by the same generic code as every other stage.
+// Their error bounds are not typed in: they are derived at start-up by running that generic code on
+// CGAL's Static_filter_error number type (bound and error propagation for |entries| <= 1). The
+// quartic is then balanced by lambda -> 2^b mu (exact), f and s are scaled by powers of two into
+// [-1, 1], and the Sturm-Habicht and smallness quantities get the bound A + R * eps, where eps is the
+// coefficient error and A, R are again derived from the same formulas on Static_filter_error
+// (sound for eps <= eps0 because the propagated error is a polynomial in eps with non-negative
+// coefficients). A sign is certain only when |value| exceeds its bound; everything else is left
+// uncertain for the interval and exact stages. Compile with -frounding-math and no FP contraction.
+#pragma once
+
+#include "relpos/quadric.hpp"
+#include "relpos/sturm.hpp"
+
+namespace relpos {
+
+/// Every sign the decision uses (root counting and smallness).
+struct DecisionSigns {
+  QuarticSigns quartic;
+  USign vertex = USign::indeterminate();
+  USign graeffe = USign::indeterminate();
+};
+
+/// Certified signs from double arithmetic; uncertain where the static bound does not separate the
+/// value from zero (or the input is out of the filter's range).
+DecisionSigns static_filter_signs(const DoubleMatrix4& p, const DoubleMatrix4& e);
+
+}  // namespace relpos

@@ -1,0 +1,488 @@
+#include "relpos/io.hpp"
+
+#include <gmp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <initializer_list>
+#include <utility>
+#include <vector>
+
+#include "relpos/error.hpp"
+#include "relpos/roots.hpp"
+
+namespace relpos::io {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// The DOM builder of nlohmann::json, except that a floating-point number is stored as a string
+/// holding its original text (the lexer hands the text to the SAX callback), so that no number is
+/// ever rounded to a double.
+class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
+ public:
+  using Base = nlohmann::detail::json_sax_dom_parser<Json>;
+  explicit ExactSax(Json& root) : Base(root, /*allow_exceptions=*/true) {}
+  bool number_float(Json::number_float_t /*rounded*/, const Json::string_t& text) {
+    Json::string_t copy = text;
+    return Base::string(copy);
+  }
+};
+
+/// "[json.exception.parse_error.101] parse error at ..." -> "parse error at ...".
+std::string strip_exception_prefix(const std::string& what) {
+  if (!what.empty() && what[0] == '[') {
+    auto close = what.find("] ");
+    if (close != std::string::npos) return what.substr(close + 2);
+  }
+  return what;
+}
+
+std::string shorten(const std::string& s, std::size_t limit = 40) {
+  if (s.size() <= limit) return s;
+  return s.substr(0, limit) + "...";
+}
+
+/// What a JSON value is, for messages: "true", "null", "an array of 3 elements", "a string "x"".
+std::string describe(const Json& v) {
+  switch (v.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::boolean: return v.get<bool>() ? "true" : "false";
+    case Json::value_t::string: return "a string \"" + shorten(v.get_ref<const std::string&>()) + "\"";
+    case Json::value_t::array: {
+      const auto n = v.size();
+      return "an array of " + std::to_string(n) + (n == 1 ? " element" : " elements");
+    }
+    case Json::value_t::object: return "an object";
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float: return "a number";
+    case Json::value_t::binary:
+    case Json::value_t::discarded: break;
+  }
+  return "an unsupported value";
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& message) { throw InputError(path + ": " + message); }
+
+std::string index_path(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+std::string key_path(const std::string& path, const std::string& key) { return path + "." + key; }
+
+/// An array of exactly n entries (fails naming the path otherwise).
+const Json& array_of(const Json& v, std::size_t n, const std::string& path, const char* what) {
+  if (!v.is_array() || v.size() != n)
+    fail(path, std::string("expected ") + what + ", got " + describe(v));
+  return v;
+}
+
+template <std::size_t N>
+std::array<Rational, N> vector_of(const Json& v, const std::string& path, const char* what) {
+  array_of(v, N, path, what);
+  std::array<Rational, N> out;
+  for (std::size_t i = 0; i < N; ++i) out[i] = rational_from_json(v[i], index_path(path, i));
+  return out;
+}
+
+Vector3 vector3(const Json& v, const std::string& path) { return vector_of<3>(v, path, "an array of 3 numbers"); }
+
+Matrix4 matrix4(const Json& v, const std::string& path) {
+  array_of(v, 4, path, "a 4x4 array (4 rows of 4 numbers)");
+  Matrix4 m;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::string row = index_path(path, i);
+    array_of(v[i], 4, row, "a row of 4 numbers");
+    for (std::size_t j = 0; j < 4; ++j)
+      m(static_cast<int>(i), static_cast<int>(j)) = rational_from_json(v[i][j], index_path(row, j));
+  }
+  return m;
+}
+
+Matrix3 matrix3(const Json& v, const std::string& path) {
+  array_of(v, 3, path, "a 3x3 array (3 rows of 3 numbers)");
+  Matrix3 m;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::string row = index_path(path, i);
+    array_of(v[i], 3, row, "a row of 3 numbers");
+    for (std::size_t j = 0; j < 3; ++j)
+      m(static_cast<int>(i), static_cast<int>(j)) = rational_from_json(v[i][j], index_path(row, j));
+  }
+  return m;
+}
+
+Coefficients10 coefficients10(const Json& v, const std::string& path) {
+  return vector_of<10>(v, path, "an array of 10 coefficients [A,B,C,D,E,F,G,H,I,J]");
+}
+
+Quaternion quaternion(const Json& v, const std::string& path) {
+  return vector_of<4>(v, path, "a quaternion [w,x,y,z]");
+}
+
+/// Every key of the object must be one of `allowed`.
+void check_keys(const Json& obj, std::initializer_list<const char*> allowed, const std::string& path) {
+  for (const auto& item : obj.items()) {
+    bool ok = false;
+    for (const char* a : allowed) ok = ok || item.key() == a;
+    if (ok) continue;
+    std::string list;
+    for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + "\"" + a + "\"";
+    fail(path, "unknown key \"" + shorten(item.key()) + "\" (this form takes " + list + ")");
+  }
+}
+
+const Json& required(const Json& obj, const char* key, const std::string& path) {
+  auto it = obj.find(key);
+  if (it == obj.end()) fail(key_path(path, key), "missing");
+  return *it;
+}
+
+/// "center", or its spelling "centre"; the key actually used goes into the path.
+std::pair<const Json*, std::string> center_field(const Json& obj, const std::string& path) {
+  const bool us = obj.contains("center"), uk = obj.contains("centre");
+  if (us && uk) fail(path, "both \"center\" and \"centre\" given");
+  if (uk) return {&obj["centre"], key_path(path, "centre")};
+  if (us) return {&obj["center"], key_path(path, "center")};
+  fail(key_path(path, "center"), "missing");
+}
+
+std::string key_list(const Json& obj) {
+  if (obj.empty()) return "an empty object";
+  std::string list;
+  for (const auto& item : obj.items()) list += std::string(list.empty() ? "" : ", ") + "\"" + shorten(item.key()) + "\"";
+  return "keys " + list;
+}
+
+/// Run a library factory, prefixing its InputError with the role.
+template <class F>
+auto with_role(const std::string& role, F&& make) -> decltype(make()) {
+  try {
+    return make();
+  } catch (const InputError& e) {
+    throw InputError(role + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+Json parse_json_exact(std::string_view text) {
+  Json root;
+  ExactSax sax(root);
+  try {
+    Json::sax_parse(text.begin(), text.end(), &sax);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("invalid JSON: " + strip_exception_prefix(e.what()));
+  }
+  return root;
+}
+
+Rational rational_from_json(const Json& v, const std::string& path) {
+  switch (v.type()) {
+    case Json::value_t::number_integer: return parse_rational(std::to_string(v.get<Json::number_integer_t>()));
+    case Json::value_t::number_unsigned: return parse_rational(std::to_string(v.get<Json::number_unsigned_t>()));
+    case Json::value_t::number_float:
+      // Only from a document not built by parse_json_exact: the double is all that is left.
+      try {
+        return exact_rational(v.get<double>());
+      } catch (const InputError& e) {
+        fail(path, e.what());
+      }
+    case Json::value_t::string:
+      try {
+        return parse_rational(v.get_ref<const std::string&>());
+      } catch (const InputError& e) {
+        fail(path, e.what());
+      }
+    default: fail(path, "expected a number, got " + describe(v));
+  }
+}
+
+Ellipsoid ellipsoid_from_json(const Json& v, const std::string& role) {
+  if (v.is_array()) {
+    Matrix4 m = matrix4(v, role);
+    return with_role(role, [&] { return Ellipsoid::from_matrix(m); });
+  }
+  if (!v.is_object())
+    fail(role, "expected a 4x4 array or an object describing an ellipsoid, got " + describe(v));
+  if (v.contains("matrix")) {
+    check_keys(v, {"matrix"}, role);
+    Matrix4 m = matrix4(v["matrix"], key_path(role, "matrix"));
+    return with_role(role, [&] { return Ellipsoid::from_matrix(m); });
+  }
+  if (v.contains("coefficients")) {
+    check_keys(v, {"coefficients"}, role);
+    Coefficients10 c = coefficients10(v["coefficients"], key_path(role, "coefficients"));
+    return with_role(role, [&] { return Ellipsoid::from_coefficients(c); });
+  }
+  if (v.contains("sphere")) {
+    check_keys(v, {"sphere"}, role);
+    const std::string path = key_path(role, "sphere");
+    const Json& s = v["sphere"];
+    if (!s.is_object()) fail(path, "expected an object {\"center\": [x,y,z], \"radius\": r}, got " + describe(s));
+    check_keys(s, {"center", "centre", "radius"}, path);
+    auto [cj, cpath] = center_field(s, path);
+    Vector3 c = vector3(*cj, cpath);
+    Rational r = rational_from_json(required(s, "radius", path), key_path(path, "radius"));
+    return with_role(role, [&] { return Ellipsoid::sphere(c, r); });
+  }
+  if (v.contains("axes")) {
+    check_keys(v, {"center", "centre", "axes", "rotation", "rotation_matrix"}, role);
+    auto [cj, cpath] = center_field(v, role);
+    Vector3 c = vector3(*cj, cpath);
+    Vector3 axes = vector3(v["axes"], key_path(role, "axes"));
+    if (v.contains("rotation") && v.contains("rotation_matrix"))
+      fail(role, "give either \"rotation\" (a quaternion) or \"rotation_matrix\", not both");
+    if (v.contains("rotation_matrix")) {
+      Matrix3 r = matrix3(v["rotation_matrix"], key_path(role, "rotation_matrix"));
+      return with_role(role, [&] { return Ellipsoid::from_axes(c, axes, r); });
+    }
+    Quaternion q{Rational(1), Rational(0), Rational(0), Rational(0)};
+    if (v.contains("rotation")) q = quaternion(v["rotation"], key_path(role, "rotation"));
+    return with_role(role, [&] { return Ellipsoid::from_axes(c, axes, q); });
+  }
+  if (v.contains("map")) {
+    check_keys(v, {"center", "centre", "map"}, role);
+    auto [cj, cpath] = center_field(v, role);
+    Vector3 c = vector3(*cj, cpath);
+    Matrix3 l = matrix3(v["map"], key_path(role, "map"));
+    return with_role(role, [&] { return Ellipsoid::from_map(c, l); });
+  }
+  fail(role,
+       "no recognized ellipsoid form in " + key_list(v) +
+           " (expected a 4x4 array or an object with \"matrix\", \"coefficients\", \"sphere\", \"axes\" or \"map\")");
+}
+
+Paraboloid paraboloid_from_json(const Json& v, const std::string& role) {
+  if (v.is_array()) {
+    Matrix4 m = matrix4(v, role);
+    return with_role(role, [&] { return Paraboloid::from_matrix(m); });
+  }
+  if (!v.is_object())
+    fail(role, "expected a 4x4 array or an object describing an elliptic paraboloid, got " + describe(v));
+  if (v.contains("matrix")) {
+    check_keys(v, {"matrix"}, role);
+    Matrix4 m = matrix4(v["matrix"], key_path(role, "matrix"));
+    return with_role(role, [&] { return Paraboloid::from_matrix(m); });
+  }
+  if (v.contains("coefficients")) {
+    check_keys(v, {"coefficients"}, role);
+    Coefficients10 c = coefficients10(v["coefficients"], key_path(role, "coefficients"));
+    return with_role(role, [&] { return Paraboloid::from_coefficients(c); });
+  }
+  if (v.contains("vertex") || v.contains("a") || v.contains("b")) {
+    check_keys(v, {"vertex", "a", "b", "rotation"}, role);
+    Vector3 vertex = vector3(required(v, "vertex", role), key_path(role, "vertex"));
+    Rational a = rational_from_json(required(v, "a", role), key_path(role, "a"));
+    Rational b = rational_from_json(required(v, "b", role), key_path(role, "b"));
+    Quaternion q{Rational(1), Rational(0), Rational(0), Rational(0)};
+    if (v.contains("rotation")) q = quaternion(v["rotation"], key_path(role, "rotation"));
+    return with_role(role, [&] { return Paraboloid::standard(vertex, a, b, q); });
+  }
+  if (v.contains("map") || v.contains("translation")) {
+    check_keys(v, {"map", "translation"}, role);
+    Matrix3 t = matrix3(required(v, "map", role), key_path(role, "map"));
+    Vector3 tr = vector3(required(v, "translation", role), key_path(role, "translation"));
+    return with_role(role, [&] { return Paraboloid::from_map(t, tr); });
+  }
+  fail(role, "no recognized paraboloid form in " + key_list(v) +
+                 " (expected a 4x4 array or an object with \"matrix\", \"coefficients\", \"vertex\"/\"a\"/\"b\" or "
+                 "\"map\"/\"translation\")");
+}
+
+// ------------------------------------------------------------------------------------------------
+// Rendering
+
+std::string position_meaning(Position p) {
+  switch (p) {
+    case Position::I: return "the ellipsoid lies inside the paraboloid, with no common point";
+    case Position::TI: return "the ellipsoid lies inside the paraboloid and touches it (tangent from inside)";
+    case Position::C: return "the surfaces cross: they meet, and not only tangentially";
+    case Position::TE: return "the ellipsoid lies outside the paraboloid and touches it (tangent from outside)";
+    case Position::E: return "the ellipsoid lies outside the paraboloid, with no common point";
+    case Position::Unclassified:
+      return "not classified: the pair is outside the theory (the ellipsoid is not small) or its root pattern is "
+             "outside the table";
+  }
+  return "?";
+}
+
+std::string rho_vs_one_text(int sign) { return sign < 0 ? "<1" : sign == 0 ? "=1" : ">1"; }
+
+namespace {
+
+std::string stage_meaning(Stage s) {
+  switch (s) {
+    case Stage::Interval: return "all signs certified by interval arithmetic";
+    case Stage::ExactSigns: return "exact integer signs";
+    case Stage::ExactRoots: return "exact factorisation of f (Disc(f) = 0 or a defective Sturm-Habicht sequence)";
+  }
+  return "?";
+}
+
+/// f scaled by the positive lcm of its denominators: same roots, integer coefficients.
+Quartic<Integer> integer_quartic(const Quartic<Rational>& f) {
+  Integer l(1);
+  for (const auto& q : f) mpz_lcm(l.mpz(), l.mpz(), q.denominator().mpz());
+  Quartic<Integer> out;
+  for (std::size_t i = 0; i < 5; ++i) out[i] = f[i].numerator() * (l / f[i].denominator());
+  return out;
+}
+
+/// One certified decimal per entry of c.roots (exact roots are rounded exactly).
+std::vector<std::string> root_decimals(const Classification& c, int digits, bool only_multiple) {
+  std::vector<std::string> out(c.roots.size());
+  bool need_isolation = false;
+  for (const auto& r : c.roots)
+    if (!r.exact && (!only_multiple || r.multiplicity_f >= 2)) need_isolation = true;
+  std::vector<std::string> iso;
+  if (need_isolation) iso = real_root_decimals(integer_quartic(c.f), digits);
+  for (std::size_t i = 0; i < c.roots.size(); ++i) {
+    const auto& r = c.roots[i];
+    if (r.exact)
+      out[i] = to_decimal(*r.exact, digits);
+    else if (iso.size() == c.roots.size())
+      out[i] = iso[i];
+    else  // should not happen: fall back on the midpoint of the isolating interval
+      out[i] = to_decimal((r.lower + r.upper) / 2, digits);
+  }
+  return out;
+}
+
+std::string double_text(double x, int digits) {
+  if (!std::isfinite(x)) return std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits < 1 ? 1 : (digits > 15 ? 15 : digits), x);
+  return buf;
+}
+
+std::string count_text(int n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+std::string polynomial_to_text(const Rational* c, int size, const std::string& var) {
+  std::string out;
+  for (int k = size - 1; k >= 0; --k) {
+    const Rational& q = c[k];
+    if (q == 0) continue;
+    const bool neg = q < 0;
+    const Rational a = neg ? -q : q;
+    if (out.empty())
+      out += neg ? "-" : "";
+    else
+      out += neg ? " - " : " + ";
+    std::string mono = k == 0 ? "" : (k == 1 ? var : var + "^" + std::to_string(k));
+    if (k == 0)
+      out += to_string(a);
+    else if (a == 1)
+      out += mono;
+    else
+      out += to_string(a) + "*" + mono;
+  }
+  return out.empty() ? "0" : out;
+}
+
+Json classification_to_json(const Classification& c, const RenderOptions& options) {
+  Json j;
+  j["position"] = to_string(c.position);
+  j["small"] = c.small;
+  j["contact"] = c.contact ? Json(*c.contact) : Json(nullptr);
+  j["rho_vs_one"] = rho_vs_one_text(c.rho_vs_one);
+  j["rho"] = c.rho ? Json(to_string(*c.rho)) : Json(nullptr);
+  j["rho_approx"] = c.has_full_evidence && std::isfinite(c.rho_approx) ? Json(c.rho_approx) : Json(nullptr);
+  j["rule"] = c.rule;
+  if (!c.finding.empty()) j["finding"] = c.finding;
+  j["stage"] = to_string(c.stage);
+  j["disc_sign"] = c.sign_disc_f;
+  j["disc_ftilde_sign"] = c.sign_disc_ftilde;
+  if (c.has_full_evidence) j["degree_ftilde"] = c.degree_ftilde;
+  j["roots"] = Json{{"real", c.real_roots},
+                    {"negative", c.negative_roots},
+                    {"positive", c.positive_roots},
+                    {"nonreal", c.nonreal_roots}};
+  if (!c.has_full_evidence) return j;
+  Json f = Json::array(), s = Json::array();
+  for (const auto& q : c.f) f.push_back(to_string(q));
+  for (const auto& q : c.s) s.push_back(to_string(q));
+  j["f"] = std::move(f);
+  j["s"] = std::move(s);
+  Json multiple = Json::array();
+  const auto approx = root_decimals(c, options.digits, /*only_multiple=*/true);
+  for (std::size_t i = 0; i < c.roots.size(); ++i) {
+    const auto& r = c.roots[i];
+    if (r.multiplicity_f < 2) continue;
+    Json m;
+    m["value"] = r.exact ? Json(to_string(*r.exact)) : Json(nullptr);
+    m["interval"] = Json::array({to_string(r.lower), to_string(r.upper)});
+    m["approx"] = approx[i];
+    m["multiplicity_f"] = r.multiplicity_f;
+    m["multiplicity_s"] = r.multiplicity_s;
+    m["tangency"] = r.tangency();
+    multiple.push_back(std::move(m));
+  }
+  j["multiple_roots"] = std::move(multiple);
+  return j;
+}
+
+std::string classification_to_text(const Classification& c, const RenderOptions& options) {
+  std::string t;
+  auto line = [&](const std::string& label, const std::string& text) {
+    t += label;
+    if (label.size() < 10) t += std::string(10 - label.size(), ' ');
+    t += text + "\n";
+  };
+  line("position:", to_string(c.position) + " - " + position_meaning(c.position));
+  line("rule:", c.rule);
+  if (!c.finding.empty()) line("finding:", c.finding);
+
+  std::string small = c.small ? "yes (the paper's smallness hypothesis holds): rho " : "no (outside the theory): rho ";
+  small += c.rho_vs_one < 0 ? "< 1" : c.rho_vs_one == 0 ? "= 1" : "> 1";
+  if (c.rho)
+    small += ", rho = " + to_string(*c.rho) + " ~ " + to_decimal(*c.rho, options.digits);
+  else if (c.has_full_evidence)
+    small += ", rho ~ " + double_text(c.rho_approx, options.digits) + " (irrational; double precision)";
+  line("small:", small);
+  line("contact:", c.contact ? (*c.contact ? "yes" : "no") : "undecided (not small)");
+  line("stage:", to_string(c.stage) + " (" + stage_meaning(c.stage) + ")");
+
+  if (c.has_full_evidence) {
+    t += "\n";
+    line("f(l) =", polynomial_to_text(c.f.data(), 5) + "   [f(l) = det(l P + E)]");
+    line("s(l) =", polynomial_to_text(c.s.data(), 3) + "   [s(l) = det(l A + M)]");
+  }
+  auto sign_text = [](int s) { return s < 0 ? std::string("negative") : s == 0 ? "zero" : "positive"; };
+  std::string disc = "Disc(f) " + sign_text(c.sign_disc_f) + ", Disc(f~) " + sign_text(c.sign_disc_ftilde);
+  if (c.has_full_evidence) disc += ", deg f~ = " + std::to_string(c.degree_ftilde) + "  (f~ = f / gcd(f, s))";
+  line("", disc);
+
+  t += "\nreal roots of f: " + count_text(c.real_roots, "distinct root", "distinct roots") + " (" +
+       std::to_string(c.negative_roots) + " negative, " + std::to_string(c.positive_roots) + " positive)";
+  if (c.has_full_evidence && !c.roots.empty()) {
+    t += ", certified to " + std::to_string(options.digits) + " significant digits:\n";
+    const auto approx = root_decimals(c, options.digits, /*only_multiple=*/false);
+    std::size_t width = 0;
+    for (const auto& a : approx) width = std::max(width, a.size());
+    for (std::size_t i = 0; i < c.roots.size(); ++i) {
+      const auto& r = c.roots[i];
+      std::string row = "  l = " + approx[i] + std::string(width - approx[i].size(), ' ');
+      if (r.exact) row += "  (exactly " + to_string(*r.exact) + ")";
+      row += "  ";
+      if (r.multiplicity_f == 1) {
+        row += "simple";
+        if (r.multiplicity_s > 0) row += "; also a root of s";
+      } else {
+        row += "multiplicity " + std::to_string(r.multiplicity_f) + " in f, " + std::to_string(r.multiplicity_s) +
+               " in s: ";
+        row += r.tangency() ? "tangency (a multiple root of f~)"
+                            : "special root of s (not a tangency; simple or absent in f~)";
+      }
+      t += row + "\n";
+    }
+  } else {
+    t += "\n";
+  }
+  t += "non-real roots of f: " + std::to_string(c.nonreal_roots) + " (with multiplicity)\n";
+  return t;
+}
+
+}  // namespace relpos::io

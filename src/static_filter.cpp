@@ -1,0 +1,147 @@
+#include "relpos/static_filter.hpp"
+
+#include <CGAL/Filtered_kernel/internal/Static_filters/Static_filter_error.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "relpos/smallness.hpp"
+
+namespace relpos {
+namespace {
+
+using Sfe = CGAL::internal::Static_filter_error;
+
+template <class NT>
+struct Mat {
+  std::array<NT, 16> a;
+  const NT& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+};
+
+/// Largest coefficient error the second-stage bounds are derived for (relative to coefficients
+/// scaled into [-1, 1]).
+constexpr double kEps0 = 0x1p-20;
+
+/// Error-bound constants, derived once from the generic formulas themselves.
+struct Bounds {
+  double f[5], s[3];           // absolute errors of f_i, s_i for entries in [-1, 1]
+  double a[8], r[8];           // quantity q: error <= a[q] + r[q] * eps   (q: g2[0..2], g1[0..1], g0, vertex, graeffe)
+};
+
+void second_stage(const Sfe& in, double out[8]) {
+  Quartic<Sfe> f;
+  Quadratic<Sfe> s;
+  for (auto& c : f) c = in;
+  for (auto& c : s) c = in;
+  SturmHabicht<Sfe> sh(f);
+  SmallnessQuantities<Sfe> sq(f, s);
+  const Sfe q[8] = {sh.g2[0], sh.g2[1], sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
+  for (int i = 0; i < 8; ++i) out[i] = q[i].error();
+}
+
+const Bounds& bounds() {
+  static const Bounds b = [] {
+    Bounds r{};
+    Mat<Sfe> one;
+    for (auto& x : one.a) x = Sfe(1.0, 0.0, 1);
+    const auto f = characteristic_polynomial<Sfe>(one, one);
+    const auto s = special_polynomial<Sfe>(one, one);
+    for (int i = 0; i < 5; ++i) r.f[i] = f[static_cast<std::size_t>(i)].error();
+    for (int i = 0; i < 3; ++i) r.s[i] = s[static_cast<std::size_t>(i)].error();
+    double exact_in[8], noisy_in[8];
+    second_stage(Sfe(1.0, 0.0, 1), exact_in);
+    second_stage(Sfe(1.0, kEps0, 1), noisy_in);
+    for (int i = 0; i < 8; ++i) {
+      r.a[i] = exact_in[i];
+      r.r[i] = (noisy_in[i] - exact_in[i]) / kEps0 * (1 + 0x1p-30);  // round the ratio up
+    }
+    return r;
+  }();
+  return b;
+}
+
+/// Sign of v certified by |v| > bound (with slack for the rounding of the bound itself and for
+/// underflow, whose absolute error is below 2^-1074 per operation).
+USign certified(double v, double bound) {
+  const double b = bound * (1 + 0x1p-40) + 1e-300;
+  if (v > b) return USign(CGAL::POSITIVE);
+  if (v < -b) return USign(CGAL::NEGATIVE);
+  return USign::indeterminate();  // also for NaN
+}
+
+/// Scale a matrix so its largest entry is in [1/2, 1); false if an entry would lose bits (subnormal)
+/// or the input is not finite.
+bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
+  double mx = 0;
+  for (double x : in) mx = std::max(mx, std::fabs(x));
+  if (!(mx > 0) || !std::isfinite(mx)) return false;
+  const int k = -std::ilogb(mx) - 1;
+  for (std::size_t i = 0; i < 16; ++i) {
+    out.a[i] = std::ldexp(in[i], k);
+    if (in[i] != 0 && std::fabs(out.a[i]) < DBL_MIN) return false;
+  }
+  return true;
+}
+
+DecisionSigns uncertain() { return DecisionSigns{}; }
+
+}  // namespace
+
+DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4& ein) {
+  const Bounds& b = bounds();
+  Mat<double> p, e;
+  if (!normalize(pin, p) || !normalize(ein, e)) return uncertain();
+  auto f = characteristic_polynomial<double>(p, e);
+  auto s = special_polynomial<double>(p, e);
+  double ef[5], es[3];
+  for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
+  for (int i = 0; i < 3; ++i) es[i] = b.s[i];
+  // Balance the quartic: lambda = 2^t mu with |f4| 2^(4t) ~ |f0|. f_i, s_i gain 2^(t i): exact.
+  if (f[0] == 0 || f[4] == 0) return uncertain();
+  const int t = (std::ilogb(f[0]) - std::ilogb(f[4])) / 4;
+  for (int i = 0; i < 5; ++i) {
+    f[static_cast<std::size_t>(i)] = std::ldexp(f[static_cast<std::size_t>(i)], t * i);
+    ef[i] = std::ldexp(ef[i], t * i);
+  }
+  for (int i = 0; i < 3; ++i) {
+    s[static_cast<std::size_t>(i)] = std::ldexp(s[static_cast<std::size_t>(i)], t * i);
+    es[i] = std::ldexp(es[i], t * i);
+  }
+  // Bring f and s into [-1, 1] (separately: every quantity is homogeneous in f and in s).
+  auto scale_into_unit = [](double* v, double* err, int n) {
+    double mx = 0;
+    for (int i = 0; i < n; ++i) mx = std::max(mx, std::fabs(v[i]) + err[i]);
+    if (!(mx > 0) || !std::isfinite(mx)) return false;
+    const int k = -std::ilogb(mx) - 1;
+    for (int i = 0; i < n; ++i) {
+      v[i] = std::ldexp(v[i], k);
+      err[i] = std::ldexp(err[i], k);
+    }
+    return true;
+  };
+  if (!scale_into_unit(f.data(), ef, 5) || !scale_into_unit(s.data(), es, 3)) return uncertain();
+
+  DecisionSigns out;
+  for (int i = 0; i < 5; ++i) out.quartic.f[i] = certified(f[static_cast<std::size_t>(i)], ef[i]);
+  double eps = 0;
+  for (int i = 0; i < 5; ++i) eps = std::max(eps, ef[i]);
+  for (int i = 0; i < 3; ++i) eps = std::max(eps, es[i]);
+  if (!(eps <= kEps0)) return out;  // coefficients too inaccurate for the second stage
+  SturmHabicht<double> sh(f);
+  SmallnessQuantities<double> sq(f, s);
+  const double q[8] = {sh.g2[0], sh.g2[1], sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
+  USign c[8];
+  for (int i = 0; i < 8; ++i) c[i] = certified(q[i], b.a[i] + b.r[i] * eps);
+  out.quartic.g2[0] = c[0];
+  out.quartic.g2[1] = c[1];
+  out.quartic.g2[2] = c[2];
+  out.quartic.g1[0] = c[3];
+  out.quartic.g1[1] = c[4];
+  out.quartic.g0 = c[5];
+  out.vertex = c[6];
+  out.graeffe = c[7];
+  return out;
+}
+
+}  // namespace relpos
