@@ -23,6 +23,30 @@ std::string to_string(Position p) {
   return "unclassified";
 }
 
+std::string describe(Rule r) {
+  switch (r) {
+    case Rule::None: return "";
+    case Rule::NonRealPairCrossing:
+      return "f has a pair of non-real roots and f~ no multiple root (Disc(f~) < 0): crossing contact";
+    case Rule::NegativeMultipleRoot:
+      return "f~ has a negative multiple root (Disc(f~) = 0) and all roots of f are real and negative: tangent "
+             "from inside";
+    case Rule::PositiveMultipleRoot:
+      return "f~ has a positive multiple root (lambda3 = lambda4 > 0): tangent from outside";
+    case Rule::AllRootsNegative:
+      return "f~ is square-free (Disc(f~) > 0) and all roots of f are real and negative: interior";
+    case Rule::TwoPositiveRoots: return "f has two distinct positive roots (0 < lambda3 < lambda4): separated";
+    case Rule::NotSmallContact:
+      return "not small; f has non-real roots, so the surfaces meet (Finsler-Calabi), but the type of contact "
+             "needs the full arrangement classification";
+    case Rule::NotSmallUnknown:
+      return "not small and no positive roots certify separation: interior, tangency from inside and "
+             "two-component intersections are beyond the paper's theorem";
+    case Rule::Finding: return "root pattern outside the classification table (reported, not guessed)";
+  }
+  return "";
+}
+
 std::string to_string(Stage s) {
   switch (s) {
     case Stage::StaticDouble: return "static-double";
@@ -35,80 +59,38 @@ std::string to_string(Stage s) {
 
 namespace {
 
-/// The root facts the decision needs, however they were obtained.
-struct Facts {
-  int real = 0, negative = 0, positive = 0, nonreal = 0;
-  int tangent_negative = 0, tangent_positive = 0;  ///< distinct multiple roots of f~, by sign
-  int nonreal_multiple = 0;
-};
-
-std::string pattern(const Facts& x) {
-  return std::to_string(x.real) + " distinct real roots (" + std::to_string(x.negative) + " negative, " +
-         std::to_string(x.positive) + " positive), " + std::to_string(x.nonreal) + " non-real, " +
-         std::to_string(x.tangent_negative + x.tangent_positive) + " multiple root(s) of f~";
+std::string pattern(const Verdict& x) {
+  return std::to_string(x.real_roots) + " distinct real roots (" + std::to_string(x.negative_roots) + " negative, " +
+         std::to_string(x.positive_roots) + " positive), " + std::to_string(x.nonreal_roots) + " non-real, " +
+         std::to_string(x.tangent_negative + x.tangent_positive) + " multiple root(s) of f~" +
+         (x.nonreal_multiple ? ", a multiple non-real root" : "");
 }
 
-/// The classification table (math.md sections 3 and 6), written once for every stage.
-void decide(const Facts& x, int rho_vs_one, Classification& out) {
-  out.small = rho_vs_one <= 0;
-  out.rho_vs_one = rho_vs_one;
-  const int tangencies = x.tangent_negative + x.tangent_positive;
-  auto finding = [&](const std::string& why) {
-    out.position = Position::Unclassified;
-    out.finding = why + ": " + pattern(x);
-    out.rule = "root pattern outside the classification table (reported, not guessed)";
+/// The classification table (math.md sections 3 and 6), written once for every stage. Reads the
+/// root facts of v and its rho comparison; writes position, contact and rule.
+void decide(Verdict& v) {
+  v.small = v.rho_vs_one <= 0;
+  const int tangencies = v.tangent_negative + v.tangent_positive;
+  auto set = [&](Position pos, int contact, Rule rule) {
+    v.position = pos;
+    v.contact = static_cast<signed char>(contact);
+    v.rule = rule;
   };
-  if (x.nonreal_multiple > 0) return finding("f has a multiple non-real root");
-
-  // Valid for any size (math.md section 6, Wang-Wang-Kim through a projective map).
-  if (tangencies == 1 && x.tangent_positive == 1) {
-    if (x.nonreal != 0) return finding("positive multiple root together with non-real roots");
-    out.position = Position::TE;
-    out.contact = true;
-    out.rule = "f~ has a positive multiple root (lambda3 = lambda4 > 0): tangent from outside";
-    return;
-  }
-  if (tangencies == 0 && x.nonreal == 0 && x.positive == 2) {
-    out.position = Position::E;
-    out.contact = false;
-    out.rule = "f has two distinct positive roots (0 < lambda3 < lambda4): separated";
-    return;
-  }
-  if (!out.small) {
-    out.position = Position::Unclassified;
-    if (x.nonreal > 0) {
-      out.contact = true;
-      out.rule = "not small; f has non-real roots, so the surfaces meet (Finsler-Calabi), but the type of "
-                 "contact needs the full arrangement classification";
-    } else {
-      out.contact.reset();
-      out.rule = "not small and no positive roots certify separation: interior, tangency from inside and "
-                 "two-component intersections are beyond the paper's theorem";
-    }
-    return;
-  }
+  if (v.nonreal_multiple > 0) return set(Position::Unclassified, -1, Rule::Finding);
+  // Valid for any size (math.md section 6: Wang-Wang-Kim through a projective map).
+  if (tangencies == 1 && v.tangent_positive == 1)
+    return v.nonreal_roots ? set(Position::Unclassified, 1, Rule::Finding) : set(Position::TE, 1, Rule::PositiveMultipleRoot);
+  if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
+  if (!v.small)
+    return v.nonreal_roots > 0 ? set(Position::Unclassified, 1, Rule::NotSmallContact)
+                               : set(Position::Unclassified, -1, Rule::NotSmallUnknown);
   // Small: the table of math.md section 3.
-  if (tangencies == 0 && x.nonreal == 2) {
-    if (x.positive != 0) return finding("non-real pair together with positive real roots");
-    out.position = Position::C;
-    out.contact = true;
-    out.rule = "f has a pair of non-real roots and f~ no multiple root (Disc(f~) < 0): crossing contact";
-    return;
-  }
-  if (tangencies == 1 && x.tangent_negative == 1 && x.nonreal == 0 && x.positive == 0) {
-    out.position = Position::TI;
-    out.contact = true;
-    out.rule = "f~ has a negative multiple root (Disc(f~) = 0), all roots of f real and negative: tangent "
-               "from inside";
-    return;
-  }
-  if (tangencies == 0 && x.nonreal == 0 && x.positive == 0) {
-    out.position = Position::I;
-    out.contact = false;
-    out.rule = "f~ is square-free (Disc(f~) > 0) and all roots of f are real and negative: interior";
-    return;
-  }
-  finding("small pair with a root pattern the theorem excludes");
+  if (tangencies == 0 && v.nonreal_roots == 2)
+    return v.positive_roots ? set(Position::Unclassified, 1, Rule::Finding) : set(Position::C, 1, Rule::NonRealPairCrossing);
+  if (tangencies == 1 && v.tangent_negative == 1 && v.nonreal_roots == 0 && v.positive_roots == 0)
+    return set(Position::TI, 1, Rule::NegativeMultipleRoot);
+  if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 0) return set(Position::I, 0, Rule::AllRootsNegative);
+  set(Position::Unclassified, -1, Rule::Finding);
 }
 
 /// Matrix view with entries converted to NT, for the generic pencil code.
@@ -169,25 +151,70 @@ DecisionSigns signs_in(const Quartic<NT>& f, const Quadratic<NT>& s) {
 
 /// Decision from certified signs when Disc(f) != 0 (then f and f~ are square-free). False when a
 /// needed sign is uncertain, Disc(f) = 0 or the Sturm-Habicht sequence is defective.
-bool decide_from_signs(const DecisionSigns& d, Classification& out) {
+bool decide_from_signs(const DecisionSigns& d, Verdict& v) {
   auto disc = detail::certain(d.quartic.g0);
   if (!disc || *disc == 0) return false;
   auto counts = count_roots(d.quartic);
   if (!counts) return false;
   auto rho = compare_rho_with_one(d.vertex, d.graeffe);
   if (!rho) return false;
-  Facts x;
-  x.real = counts->real;
-  x.negative = counts->negative;
-  x.positive = counts->positive;
-  x.nonreal = 4 - counts->real;
-  out.sign_disc_f = out.sign_disc_ftilde = *disc;  // Disc(f) = Disc(f~) * (positive) when f is square-free
-  out.real_roots = x.real;
-  out.negative_roots = x.negative;
-  out.positive_roots = x.positive;
-  out.nonreal_roots = x.nonreal;
-  decide(x, *rho, out);
+  v.real_roots = static_cast<signed char>(counts->real);
+  v.negative_roots = static_cast<signed char>(counts->negative);
+  v.positive_roots = static_cast<signed char>(counts->positive);
+  v.nonreal_roots = static_cast<signed char>(4 - counts->real);
+  v.sign_disc_f = v.sign_disc_ftilde = static_cast<signed char>(*disc);  // Disc(f) = Disc(f~) * positive
+  v.rho_vs_one = static_cast<signed char>(*rho);
+  decide(v);
   return true;
+}
+
+/// Exact data of a pair, computed only when an exact stage runs or full evidence is asked for.
+struct ExactData {
+  Integer scale;
+  Quartic<Integer> f;
+  Quadratic<Integer> s;
+  std::optional<RootStructure> roots;
+  ExactData(const Ellipsoid& e, const Paraboloid& p) {
+    auto [pz, ez] = to_integers(p.matrix(), e.matrix(), scale);
+    f = characteristic_polynomial<Integer>(pz, ez);
+    s = special_polynomial<Integer>(pz, ez);
+  }
+};
+
+/// The whole filter -> exact policy in one place: each stage certifies what it can, the next one
+/// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
+Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact) {
+  Verdict v;
+  if (use_filter && e.doubles() && p.doubles()) {  // stage 1: doubles with static error bounds
+    v.stage = Stage::StaticDouble;
+    if (decide_from_signs(static_filter_signs(*p.doubles(), *e.doubles()), v)) return v;
+  }
+  if (use_filter) {  // stage 2: interval arithmetic
+    v.stage = Stage::Interval;
+    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false> needs rounding towards +inf
+    const MatrixOf<Interval> pi = to_intervals(p.matrix()), ei = to_intervals(e.matrix());
+    if (decide_from_signs(signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)), v))
+      return v;
+  }
+  if (!exact) exact.emplace(e, p);
+  v.stage = Stage::ExactSigns;  // stage 3: exact integer signs of the same polynomials
+  if (decide_from_signs(signs_in(exact->f, exact->s), v)) return v;
+  // Stage 4: Disc(f) = 0 or a defective Sturm-Habicht sequence: exact gcd and factorisation.
+  v.stage = Stage::ExactRoots;
+  exact->roots = exact_root_structure(exact->f, exact->s);
+  const RootStructure& rs = *exact->roots;
+  v.real_roots = static_cast<signed char>(rs.real_roots.size());
+  v.negative_roots = static_cast<signed char>(rs.negative());
+  v.positive_roots = static_cast<signed char>(rs.positive());
+  v.nonreal_roots = static_cast<signed char>(rs.nonreal);
+  v.nonreal_multiple = static_cast<signed char>(rs.nonreal_multiple);
+  for (const auto& r : rs.real_roots)
+    if (r.tangency()) ++(r.sign < 0 ? v.tangent_negative : v.tangent_positive);
+  v.sign_disc_f = static_cast<signed char>(rs.sign_disc_f);
+  v.sign_disc_ftilde = static_cast<signed char>(rs.sign_disc_ftilde);
+  v.rho_vs_one = static_cast<signed char>(*compare_rho_with_one(exact->f, exact->s));  // exact: certain
+  decide(v);
+  return v;
 }
 
 void fill_full_evidence(const Quartic<Integer>& fi, const Quadratic<Integer>& si, const Integer& scale,
@@ -218,60 +245,37 @@ void fill_full_evidence(const Quartic<Integer>& fi, const Quadratic<Integer>& si
 }
 
 Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, bool use_filter) {
-  // The whole filter -> exact policy: each stage certifies what it can, the next one runs only if
-  // a needed sign is still uncertain. All stages evaluate the same generic formulas.
+  std::optional<ExactData> exact;
+  const Verdict v = run_stages(e, p, use_filter, exact);
   Classification out;
-  bool decided = false;
-  if (use_filter && e.doubles() && p.doubles()) {  // stage 1: doubles with static error bounds
-    decided = decide_from_signs(static_filter_signs(*p.doubles(), *e.doubles()), out);
-    if (decided) out.stage = Stage::StaticDouble;
+  out.position = v.position;
+  out.small = v.small;
+  out.rho_vs_one = v.rho_vs_one;
+  if (v.contact >= 0) out.contact = v.contact == 1;
+  out.rule_id = v.rule;
+  out.rule = describe(v.rule);
+  if (v.rule == Rule::Finding) out.finding = pattern(v);
+  out.stage = v.stage;
+  out.sign_disc_f = v.sign_disc_f;
+  out.sign_disc_ftilde = v.sign_disc_ftilde;
+  out.real_roots = v.real_roots;
+  out.negative_roots = v.negative_roots;
+  out.positive_roots = v.positive_roots;
+  out.nonreal_roots = v.nonreal_roots;
+  if (evidence == Evidence::Full) {
+    if (!exact) exact.emplace(e, p);
+    if (!exact->roots) exact->roots = exact_root_structure(exact->f, exact->s);
+    fill_full_evidence(exact->f, exact->s, exact->scale, out, &*exact->roots);
   }
-  if (use_filter && !decided) {  // stage 2: interval arithmetic
-    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false> needs rounding towards +inf
-    const MatrixOf<Interval> pi = to_intervals(p.matrix()), ei = to_intervals(e.matrix());
-    decided = decide_from_signs(signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)), out);
-    if (decided) out.stage = Stage::Interval;
-  }
-  Integer scale;
-  auto [pz, ez] = to_integers(p.matrix(), e.matrix(), scale);
-  Quartic<Integer> fz;
-  Quadratic<Integer> sz;
-  if (!decided || evidence == Evidence::Full) {
-    fz = characteristic_polynomial<Integer>(pz, ez);
-    sz = special_polynomial<Integer>(pz, ez);
-  }
-  if (!decided && decide_from_signs(signs_in(fz, sz), out)) {  // stage 3: exact integer signs
-    out.stage = Stage::ExactSigns;
-    decided = true;
-  }
-  if (!decided) {
-    // Stage 4: Disc(f) = 0 or a defective Sturm-Habicht sequence: exact factorisation.
-    RootStructure rs = exact_root_structure(fz, sz);
-    Facts x;
-    x.real = static_cast<int>(rs.real_roots.size());
-    x.negative = rs.negative();
-    x.positive = rs.positive();
-    x.nonreal = rs.nonreal;
-    x.nonreal_multiple = rs.nonreal_multiple;
-    for (const auto& r : rs.real_roots)
-      if (r.tangency()) (r.sign < 0 ? x.tangent_negative : x.tangent_positive)++;
-    out.sign_disc_f = rs.sign_disc_f;
-    out.sign_disc_ftilde = rs.sign_disc_ftilde;
-    out.real_roots = x.real;
-    out.negative_roots = x.negative;
-    out.positive_roots = x.positive;
-    out.nonreal_roots = x.nonreal;
-    auto rho = compare_rho_with_one(fz, sz);  // exact: always certain
-    decide(x, *rho, out);
-    out.stage = Stage::ExactRoots;
-    if (evidence == Evidence::Full) fill_full_evidence(fz, sz, scale, out, &rs);
-    return out;
-  }
-  if (evidence == Evidence::Full) fill_full_evidence(fz, sz, scale, out, nullptr);
   return out;
 }
 
 }  // namespace
+
+Verdict decide_position(const Ellipsoid& e, const Paraboloid& p) {
+  std::optional<ExactData> exact;
+  return run_stages(e, p, true, exact);
+}
 
 Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
   return classify_impl(e, p, evidence, true);

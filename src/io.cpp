@@ -22,7 +22,7 @@ using Json = nlohmann::ordered_json;
 class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
  public:
   using Base = nlohmann::detail::json_sax_dom_parser<Json>;
-  explicit ExactSax(Json& root) : Base(root, /*allow_exceptions=*/true) {}
+  explicit ExactSax(Json& document) : Base(document, /*allow_exceptions=*/true) {}
   bool number_float(Json::number_float_t /*rounded*/, const Json::string_t& text) {
     Json::string_t copy = text;
     return Base::string(copy);
@@ -311,6 +311,7 @@ namespace {
 
 std::string stage_meaning(Stage s) {
   switch (s) {
+    case Stage::StaticDouble: return "all signs certified in double arithmetic with static error bounds";
     case Stage::Interval: return "all signs certified by interval arithmetic";
     case Stage::ExactSigns: return "exact integer signs";
     case Stage::ExactRoots: return "exact factorisation of f (Disc(f) = 0 or a defective Sturm-Habicht sequence)";

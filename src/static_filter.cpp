@@ -76,9 +76,9 @@ bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
   double mx = 0;
   for (double x : in) mx = std::max(mx, std::fabs(x));
   if (!(mx > 0) || !std::isfinite(mx)) return false;
-  const int k = -std::ilogb(mx) - 1;
+  const double scale = std::ldexp(1.0, -std::ilogb(mx) - 1);  // multiplying by it is exact
   for (std::size_t i = 0; i < 16; ++i) {
-    out.a[i] = std::ldexp(in[i], k);
+    out.a[i] = in[i] * scale;
     if (in[i] != 0 && std::fabs(out.a[i]) < DBL_MIN) return false;
   }
   return true;
@@ -99,24 +99,26 @@ DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4&
   for (int i = 0; i < 3; ++i) es[i] = b.s[i];
   // Balance the quartic: lambda = 2^t mu with |f4| 2^(4t) ~ |f0|. f_i, s_i gain 2^(t i): exact.
   if (f[0] == 0 || f[4] == 0) return uncertain();
-  const int t = (std::ilogb(f[0]) - std::ilogb(f[4])) / 4;
-  for (int i = 0; i < 5; ++i) {
-    f[static_cast<std::size_t>(i)] = std::ldexp(f[static_cast<std::size_t>(i)], t * i);
-    ef[i] = std::ldexp(ef[i], t * i);
-  }
-  for (int i = 0; i < 3; ++i) {
-    s[static_cast<std::size_t>(i)] = std::ldexp(s[static_cast<std::size_t>(i)], t * i);
-    es[i] = std::ldexp(es[i], t * i);
+  // (Multiplications by powers of two, not std::ldexp: same exact result, a fraction of the cost.)
+  const double step = std::ldexp(1.0, (std::ilogb(f[0]) - std::ilogb(f[4])) / 4);
+  double w = 1;
+  for (int i = 0; i < 5; ++i, w *= step) {
+    f[static_cast<std::size_t>(i)] *= w;
+    ef[i] *= w;
+    if (i < 3) {
+      s[static_cast<std::size_t>(i)] *= w;
+      es[i] *= w;
+    }
   }
   // Bring f and s into [-1, 1] (separately: every quantity is homogeneous in f and in s).
   auto scale_into_unit = [](double* v, double* err, int n) {
     double mx = 0;
     for (int i = 0; i < n; ++i) mx = std::max(mx, std::fabs(v[i]) + err[i]);
     if (!(mx > 0) || !std::isfinite(mx)) return false;
-    const int k = -std::ilogb(mx) - 1;
+    const double scale = std::ldexp(1.0, -std::ilogb(mx) - 1);
     for (int i = 0; i < n; ++i) {
-      v[i] = std::ldexp(v[i], k);
-      err[i] = std::ldexp(err[i], k);
+      v[i] *= scale;
+      err[i] *= scale;
     }
     return true;
   };

@@ -37,6 +37,37 @@ enum class Stage {
 };
 std::string to_string(Stage s);
 
+/// The rule that decided (describe() gives the sentence).
+enum class Rule : unsigned char {
+  None,
+  NonRealPairCrossing,     ///< C: a non-real pair, f~ square-free
+  NegativeMultipleRoot,    ///< TI: f~ has a negative multiple root, all roots real and negative
+  PositiveMultipleRoot,    ///< TE: f~ has a positive multiple root (any size)
+  AllRootsNegative,        ///< I: f~ square-free, all roots real and negative
+  TwoPositiveRoots,        ///< E: two distinct positive roots (any size)
+  NotSmallContact,         ///< not small, non-real roots: the surfaces meet, type unknown
+  NotSmallUnknown,         ///< not small, no certificate
+  Finding,                 ///< root pattern outside the table
+};
+std::string describe(Rule r);
+
+/// The answer without the evidence strings and exact coefficients: what the hot path computes.
+/// No heap allocation unless an exact stage runs.
+struct Verdict {
+  Position position = Position::Unclassified;
+  Stage stage = Stage::StaticDouble;
+  Rule rule = Rule::None;
+  bool small = false;
+  signed char rho_vs_one = 0;
+  signed char contact = -1;  ///< 1 yes, 0 no, -1 not decidable
+  signed char sign_disc_f = 0, sign_disc_ftilde = 0;
+  signed char real_roots = 0, negative_roots = 0, positive_roots = 0, nonreal_roots = 0;
+  signed char tangent_negative = 0, tangent_positive = 0, nonreal_multiple = 0;
+};
+
+/// Adaptive exact verdict (static double filter, intervals, exact integers, exact roots).
+Verdict decide_position(const Ellipsoid& e, const Paraboloid& p);
+
 /// How much evidence to assemble. Minimal is what the fast path needs; Full adds the exact
 /// coefficients of f and s, deg f~, the multiple roots and rho itself.
 enum class Evidence { Minimal, Full };
@@ -46,6 +77,7 @@ struct Classification {
   bool small = false;               ///< rho <= 1 (the paper's smallness hypothesis holds)
   int rho_vs_one = 0;               ///< sign of rho - 1
   std::optional<bool> contact;      ///< do the surfaces meet? empty when not decidable (not small)
+  Rule rule_id = Rule::None;
   std::string rule;                 ///< the rule that decided, in one sentence
   std::string finding;              ///< set when the root pattern is outside the table
   Stage stage = Stage::Interval;
