@@ -113,6 +113,19 @@ long balancing_exponent(const Matrix4& m) {
   return -static_cast<long>(e);
 }
 
+/// Same, from a matrix of exact doubles (no rational arithmetic): a point interval times a power
+/// of two encloses the scaled entry even if the product underflows.
+MatrixOf<Interval> to_intervals(const DoubleMatrix4& m) {
+  double mx = 0;
+  for (double x : m) mx = std::max(mx, std::fabs(x));
+  int e = 0;
+  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
+  const Interval scale(std::ldexp(1.0, -e));
+  MatrixOf<Interval> out;
+  for (std::size_t i = 0; i < 16; ++i) out.a[i] = Interval(m[i]) * scale;
+  return out;
+}
+
 MatrixOf<Interval> to_intervals(const Matrix4& m) {
   const long k = balancing_exponent(m);
   MatrixOf<Interval> out;
@@ -192,7 +205,9 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   if (use_filter) {  // stage 2: interval arithmetic
     v.stage = Stage::Interval;
     CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false> needs rounding towards +inf
-    const MatrixOf<Interval> pi = to_intervals(p.matrix()), ei = to_intervals(e.matrix());
+    const bool dbl = e.doubles() && p.doubles();
+    const MatrixOf<Interval> pi = dbl ? to_intervals(*p.doubles()) : to_intervals(p.matrix());
+    const MatrixOf<Interval> ei = dbl ? to_intervals(*e.doubles()) : to_intervals(e.matrix());
     if (decide_from_signs(signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)), v))
       return v;
   }
@@ -201,17 +216,31 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   if (decide_from_signs(signs_in(exact->f, exact->s), v)) return v;
   // Stage 4: Disc(f) = 0 or a defective Sturm-Habicht sequence: exact gcd and factorisation.
   v.stage = Stage::ExactRoots;
-  exact->roots = exact_root_structure(exact->f, exact->s);
-  const RootStructure& rs = *exact->roots;
-  v.real_roots = static_cast<signed char>(rs.real_roots.size());
-  v.negative_roots = static_cast<signed char>(rs.negative());
-  v.positive_roots = static_cast<signed char>(rs.positive());
-  v.nonreal_roots = static_cast<signed char>(rs.nonreal);
-  v.nonreal_multiple = static_cast<signed char>(rs.nonreal_multiple);
-  for (const auto& r : rs.real_roots)
-    if (r.tangency()) ++(r.sign < 0 ? v.tangent_negative : v.tangent_positive);
-  v.sign_disc_f = static_cast<signed char>(rs.sign_disc_f);
-  v.sign_disc_ftilde = static_cast<signed char>(rs.sign_disc_ftilde);
+  RootFacts x;
+  if (auto facts = exact_root_facts(exact->f, exact->s)) {
+    x = *facts;  // closed forms on the degree <= 2 square-free factors
+  } else {       // square-free f with a defective sequence: isolate the roots
+    exact->roots = exact_root_structure(exact->f, exact->s);
+    const RootStructure& rs = *exact->roots;
+    x.real = static_cast<int>(rs.real_roots.size());
+    x.negative = rs.negative();
+    x.positive = rs.positive();
+    x.nonreal = rs.nonreal;
+    x.nonreal_multiple = rs.nonreal_multiple;
+    for (const auto& r : rs.real_roots)
+      if (r.tangency()) ++(r.sign < 0 ? x.tangent_negative : x.tangent_positive);
+    x.sign_disc_f = rs.sign_disc_f;
+    x.sign_disc_ftilde = rs.sign_disc_ftilde;
+  }
+  v.real_roots = static_cast<signed char>(x.real);
+  v.negative_roots = static_cast<signed char>(x.negative);
+  v.positive_roots = static_cast<signed char>(x.positive);
+  v.nonreal_roots = static_cast<signed char>(x.nonreal);
+  v.nonreal_multiple = static_cast<signed char>(x.nonreal_multiple);
+  v.tangent_negative = static_cast<signed char>(x.tangent_negative);
+  v.tangent_positive = static_cast<signed char>(x.tangent_positive);
+  v.sign_disc_f = static_cast<signed char>(x.sign_disc_f);
+  v.sign_disc_ftilde = static_cast<signed char>(x.sign_disc_ftilde);
   v.rho_vs_one = static_cast<signed char>(*compare_rho_with_one(exact->f, exact->s));  // exact: certain
   decide(v);
   return v;

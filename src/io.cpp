@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <initializer_list>
 #include <utility>
 #include <vector>
@@ -27,6 +28,24 @@ class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
     Json::string_t copy = text;
     return Base::string(copy);
   }
+  // Nesting is limited: copying and printing a JSON value recurse, so a line of 100000 '[' would
+  // otherwise overflow the stack when its "id" is echoed.
+  bool start_object(std::size_t n) { return enter() && Base::start_object(n); }
+  bool end_object() { return leave() && Base::end_object(); }
+  bool start_array(std::size_t n) { return enter() && Base::start_array(n); }
+  bool end_array() { return leave() && Base::end_array(); }
+
+ private:
+  bool enter() {
+    if (++depth_ > kMaxJsonDepth)
+      throw InputError("invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    return true;
+  }
+  bool leave() {
+    --depth_;
+    return true;
+  }
+  std::size_t depth_ = 0;
 };
 
 /// "[json.exception.parse_error.101] parse error at ..." -> "parse error at ...".
@@ -46,19 +65,25 @@ std::string shorten(const std::string& s, std::size_t limit = 40) {
 /// What a JSON value is, for messages: "true", "null", "an array of 3 elements", "a string "x"".
 std::string describe(const Json& v) {
   switch (v.type()) {
-    case Json::value_t::null: return "null";
-    case Json::value_t::boolean: return v.get<bool>() ? "true" : "false";
-    case Json::value_t::string: return "a string \"" + shorten(v.get_ref<const std::string&>()) + "\"";
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::boolean:
+      return v.get<bool>() ? "true" : "false";
+    case Json::value_t::string:
+      return "a string \"" + shorten(v.get_ref<const std::string&>()) + "\"";
     case Json::value_t::array: {
       const auto n = v.size();
       return "an array of " + std::to_string(n) + (n == 1 ? " element" : " elements");
     }
-    case Json::value_t::object: return "an object";
+    case Json::value_t::object:
+      return "an object";
     case Json::value_t::number_integer:
     case Json::value_t::number_unsigned:
-    case Json::value_t::number_float: return "a number";
+    case Json::value_t::number_float:
+      return "a number";
     case Json::value_t::binary:
-    case Json::value_t::discarded: break;
+    case Json::value_t::discarded:
+      break;
   }
   return "an unsupported value";
 }
@@ -71,8 +96,7 @@ std::string key_path(const std::string& path, const std::string& key) { return p
 
 /// An array of exactly n entries (fails naming the path otherwise).
 const Json& array_of(const Json& v, std::size_t n, const std::string& path, const char* what) {
-  if (!v.is_array() || v.size() != n)
-    fail(path, std::string("expected ") + what + ", got " + describe(v));
+  if (!v.is_array() || v.size() != n) fail(path, std::string("expected ") + what + ", got " + describe(v));
   return v;
 }
 
@@ -148,8 +172,78 @@ std::pair<const Json*, std::string> center_field(const Json& obj, const std::str
 std::string key_list(const Json& obj) {
   if (obj.empty()) return "an empty object";
   std::string list;
-  for (const auto& item : obj.items()) list += std::string(list.empty() ? "" : ", ") + "\"" + shorten(item.key()) + "\"";
+  for (const auto& item : obj.items())
+    list += std::string(list.empty() ? "" : ", ") + "\"" + shorten(item.key()) + "\"";
   return "keys " + list;
+}
+
+/// Length of a JSON number token (RFC 8259 grammar) at the start of s, or 0 if there is none.
+std::size_t json_number_length(std::string_view s) {
+  std::size_t i = 0;
+  auto digits = [&] {
+    const std::size_t start = i;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+    return i - start;
+  };
+  if (i < s.size() && s[i] == '-') ++i;
+  if (i < s.size() && s[i] == '0')
+    ++i;
+  else if (digits() == 0)
+    return 0;
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    if (digits() == 0) return 0;
+  }
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    if (digits() == 0) return 0;
+  }
+  if (i < s.size() && std::string_view("0123456789.eE+-").find(s[i]) != std::string_view::npos) return 0;
+  return i;
+}
+
+/// The text with every well-formed JSON number outside strings turned into a string holding it.
+/// Malformed tokens are left alone for the parser to report.
+std::string quote_numbers(std::string_view text) {
+  std::string out;
+  out.reserve(text.size() + 16);
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size();) {
+    const char ch = text[i];
+    if (in_string) {
+      out += ch;
+      if (ch == '\\' && i + 1 < text.size()) {
+        out += text[i + 1];
+        i += 2;
+        continue;
+      }
+      if (ch == '"') in_string = false;
+      ++i;
+      continue;
+    }
+    if (ch == '"') {
+      in_string = true;
+      out += ch;
+      ++i;
+      continue;
+    }
+    if (ch == '-' || (ch >= '0' && ch <= '9')) {
+      const std::string_view token = text.substr(i, json_number_length(text.substr(i)));
+      if (!token.empty()) {
+        // Floats and integers too long for 64 bits become strings; other integers stay as they are.
+        const bool quote = token.find_first_of(".eE") != std::string_view::npos || token.size() > 18;
+        if (quote) out += '"';
+        out += token;
+        if (quote) out += '"';
+        i += token.size();
+        continue;
+      }
+    }
+    out += ch;
+    ++i;
+  }
+  return out;
 }
 
 /// Run a library factory, prefixing its InputError with the role.
@@ -166,19 +260,35 @@ auto with_role(const std::string& role, F&& make) -> decltype(make()) {
 
 Json parse_json_exact(std::string_view text) {
   Json root;
-  ExactSax sax(root);
   try {
+    ExactSax sax(root);
     Json::sax_parse(text.begin(), text.end(), &sax);
+    return root;
+  } catch (const nlohmann::json::out_of_range& e) {
+    // "number overflow" (406): a number beyond the range of a double, which nlohmann checks before
+    // handing us the text. Quote the number tokens and parse again; they are exact all the same.
+    if (e.id != 406) throw InputError("invalid JSON: " + strip_exception_prefix(e.what()));
   } catch (const nlohmann::json::exception& e) {
     throw InputError("invalid JSON: " + strip_exception_prefix(e.what()));
+  }
+  const std::string quoted = quote_numbers(text);
+  root = Json();
+  try {
+    ExactSax sax(root);
+    Json::sax_parse(quoted.begin(), quoted.end(), &sax);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("invalid JSON: " + strip_exception_prefix(e.what()) +
+                     " (columns counted after quoting the numbers beyond double range)");
   }
   return root;
 }
 
 Rational rational_from_json(const Json& v, const std::string& path) {
   switch (v.type()) {
-    case Json::value_t::number_integer: return parse_rational(std::to_string(v.get<Json::number_integer_t>()));
-    case Json::value_t::number_unsigned: return parse_rational(std::to_string(v.get<Json::number_unsigned_t>()));
+    case Json::value_t::number_integer:
+      return parse_rational(std::to_string(v.get<Json::number_integer_t>()));
+    case Json::value_t::number_unsigned:
+      return parse_rational(std::to_string(v.get<Json::number_unsigned_t>()));
     case Json::value_t::number_float:
       // Only from a document not built by parse_json_exact: the double is all that is left.
       try {
@@ -192,7 +302,8 @@ Rational rational_from_json(const Json& v, const std::string& path) {
       } catch (const InputError& e) {
         fail(path, e.what());
       }
-    default: fail(path, "expected a number, got " + describe(v));
+    default:
+      fail(path, "expected a number, got " + describe(v));
   }
 }
 
@@ -201,8 +312,7 @@ Ellipsoid ellipsoid_from_json(const Json& v, const std::string& role) {
     Matrix4 m = matrix4(v, role);
     return with_role(role, [&] { return Ellipsoid::from_matrix(m); });
   }
-  if (!v.is_object())
-    fail(role, "expected a 4x4 array or an object describing an ellipsoid, got " + describe(v));
+  if (!v.is_object()) fail(role, "expected a 4x4 array or an object describing an ellipsoid, got " + describe(v));
   if (v.contains("matrix")) {
     check_keys(v, {"matrix"}, role);
     Matrix4 m = matrix4(v["matrix"], key_path(role, "matrix"));
@@ -293,11 +403,16 @@ Paraboloid paraboloid_from_json(const Json& v, const std::string& role) {
 
 std::string position_meaning(Position p) {
   switch (p) {
-    case Position::I: return "the ellipsoid lies inside the paraboloid, with no common point";
-    case Position::TI: return "the ellipsoid lies inside the paraboloid and touches it (tangent from inside)";
-    case Position::C: return "the surfaces cross: they meet, and not only tangentially";
-    case Position::TE: return "the ellipsoid lies outside the paraboloid and touches it (tangent from outside)";
-    case Position::E: return "the ellipsoid lies outside the paraboloid, with no common point";
+    case Position::I:
+      return "the ellipsoid lies inside the paraboloid, with no common point";
+    case Position::TI:
+      return "the ellipsoid lies inside the paraboloid and touches it (tangent from inside)";
+    case Position::C:
+      return "the surfaces cross: they meet, and not only tangentially";
+    case Position::TE:
+      return "the ellipsoid lies outside the paraboloid and touches it (tangent from outside)";
+    case Position::E:
+      return "the ellipsoid lies outside the paraboloid, with no common point";
     case Position::Unclassified:
       return "not classified: the pair is outside the theory (the ellipsoid is not small) or its root pattern is "
              "outside the table";
@@ -311,10 +426,14 @@ namespace {
 
 std::string stage_meaning(Stage s) {
   switch (s) {
-    case Stage::StaticDouble: return "all signs certified in double arithmetic with static error bounds";
-    case Stage::Interval: return "all signs certified by interval arithmetic";
-    case Stage::ExactSigns: return "exact integer signs";
-    case Stage::ExactRoots: return "exact factorisation of f (Disc(f) = 0 or a defective Sturm-Habicht sequence)";
+    case Stage::StaticDouble:
+      return "all signs certified in double arithmetic with static error bounds";
+    case Stage::Interval:
+      return "all signs certified by interval arithmetic";
+    case Stage::ExactSigns:
+      return "exact integer signs";
+    case Stage::ExactRoots:
+      return "exact factorisation of f: Disc(f) = 0 or a defective Sturm-Habicht sequence";
   }
   return "?";
 }
@@ -390,7 +509,9 @@ Json classification_to_json(const Classification& c, const RenderOptions& option
   j["contact"] = c.contact ? Json(*c.contact) : Json(nullptr);
   j["rho_vs_one"] = rho_vs_one_text(c.rho_vs_one);
   j["rho"] = c.rho ? Json(to_string(*c.rho)) : Json(nullptr);
-  j["rho_approx"] = c.has_full_evidence && std::isfinite(c.rho_approx) ? Json(c.rho_approx) : Json(nullptr);
+  // From the exact rho when there is one: nearest double (CGAL's to_double of a Gmpq truncates).
+  const double rho_approx = c.rho ? std::strtod(to_decimal(*c.rho, 40).c_str(), nullptr) : c.rho_approx;
+  j["rho_approx"] = c.has_full_evidence && std::isfinite(rho_approx) ? Json(rho_approx) : Json(nullptr);
   j["rule"] = c.rule;
   if (!c.finding.empty()) j["finding"] = c.finding;
   j["stage"] = to_string(c.stage);
@@ -436,27 +557,32 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
   line("rule:", c.rule);
   if (!c.finding.empty()) line("finding:", c.finding);
 
-  std::string small = c.small ? "yes (the paper's smallness hypothesis holds): rho " : "no (outside the theory): rho ";
-  small += c.rho_vs_one < 0 ? "< 1" : c.rho_vs_one == 0 ? "= 1" : "> 1";
-  if (c.rho)
-    small += ", rho = " + to_string(*c.rho) + " ~ " + to_decimal(*c.rho, options.digits);
-  else if (c.has_full_evidence)
-    small += ", rho ~ " + double_text(c.rho_approx, options.digits) + " (irrational; double precision)";
+  std::string small =
+      c.small ? "yes (the paper's smallness hypothesis holds): " : "no (the smallness hypothesis fails): ";
+  const std::string compare = std::string("rho ") + (c.rho_vs_one < 0 ? "< 1" : c.rho_vs_one == 0 ? "= 1" : "> 1");
+  if (c.rho) {
+    const std::string exact = to_string(*c.rho), approx = to_decimal(*c.rho, options.digits);
+    small += "rho = " + exact + (approx == exact ? "" : " ~ " + approx);
+  } else if (c.has_full_evidence) {
+    small += compare + ", rho ~ " + double_text(c.rho_approx, options.digits) + " (irrational; double precision)";
+  } else {
+    small += compare;
+  }
   line("small:", small);
   line("contact:", c.contact ? (*c.contact ? "yes" : "no") : "undecided (not small)");
   line("stage:", to_string(c.stage) + " (" + stage_meaning(c.stage) + ")");
 
+  t += "\n";
   if (c.has_full_evidence) {
-    t += "\n";
-    line("f(l) =", polynomial_to_text(c.f.data(), 5) + "   [f(l) = det(l P + E)]");
-    line("s(l) =", polynomial_to_text(c.s.data(), 3) + "   [s(l) = det(l A + M)]");
+    t += "f(l) = det(l P + E) = " + polynomial_to_text(c.f.data(), 5) + "\n";
+    t += "s(l) = det(l A + M) = " + polynomial_to_text(c.s.data(), 3) + "\n";
   }
-  auto sign_text = [](int s) { return s < 0 ? std::string("negative") : s == 0 ? "zero" : "positive"; };
-  std::string disc = "Disc(f) " + sign_text(c.sign_disc_f) + ", Disc(f~) " + sign_text(c.sign_disc_ftilde);
-  if (c.has_full_evidence) disc += ", deg f~ = " + std::to_string(c.degree_ftilde) + "  (f~ = f / gcd(f, s))";
-  line("", disc);
+  auto sign_text = [](int s) { return s < 0 ? std::string("< 0") : s == 0 ? "= 0" : "> 0"; };
+  t += "Disc(f) " + sign_text(c.sign_disc_f) + ", Disc(f~) " + sign_text(c.sign_disc_ftilde);
+  if (c.has_full_evidence) t += ", deg f~ = " + std::to_string(c.degree_ftilde);
+  t += "   (f~ = f / gcd(f, s))\n";
 
-  t += "\nreal roots of f: " + count_text(c.real_roots, "distinct root", "distinct roots") + " (" +
+  t += "real roots of f: " + count_text(c.real_roots, "distinct root", "distinct roots") + " (" +
        std::to_string(c.negative_roots) + " negative, " + std::to_string(c.positive_roots) + " positive)";
   if (c.has_full_evidence && !c.roots.empty()) {
     t += ", certified to " + std::to_string(options.digits) + " significant digits:\n";
@@ -466,7 +592,7 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
     for (std::size_t i = 0; i < c.roots.size(); ++i) {
       const auto& r = c.roots[i];
       std::string row = "  l = " + approx[i] + std::string(width - approx[i].size(), ' ');
-      if (r.exact) row += "  (exactly " + to_string(*r.exact) + ")";
+      if (r.exact && to_string(*r.exact) != approx[i]) row += "  (exactly " + to_string(*r.exact) + ")";
       row += "  ";
       if (r.multiplicity_f == 1) {
         row += "simple";

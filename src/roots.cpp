@@ -123,6 +123,73 @@ RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<I
   return rs;
 }
 
+namespace {
+
+/// Distinct real roots of a square-free integer polynomial of degree 1 or 2, by sign.
+struct SmallCount {
+  int negative = 0, positive = 0;
+};
+SmallCount count_small(const Poly& h) {
+  SmallCount c;
+  if (h.degree() == 1) {
+    (sgn(h[0]) * sgn(h[1]) > 0 ? c.negative : c.positive) = 1;  // root -h0/h1
+    return c;
+  }
+  // degree 2, square-free: two real roots iff the discriminant is positive; then Descartes' rule of
+  // signs is exact (0 is not a root because f(0) != 0).
+  if (h[1] * h[1] - 4 * h[2] * h[0] <= 0) return c;
+  const int s2 = sgn(h[2]), s1 = sgn(h[1]), s0 = sgn(h[0]);
+  int variations = 0, last = s2;
+  for (int x : {s1, s0}) {
+    if (x == 0) continue;
+    if (x != last) ++variations;
+    last = x;
+  }
+  c.positive = variations;
+  c.negative = 2 - variations;
+  return c;
+}
+
+}  // namespace
+
+std::optional<RootFacts> exact_root_facts(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
+  const Poly f = make_poly(fc), s = make_poly(sc);
+  std::vector<std::pair<Poly, int>> factors;
+  CGAL::square_free_factorize(f, std::back_inserter(factors));
+  RootFacts r;
+  bool multiple = false;
+  for (const auto& [h, m] : factors) {
+    if (h.degree() > 2) return std::nullopt;  // square-free quartic: not this function's case
+    if (h.degree() < 1) continue;
+    multiple = multiple || m >= 2;
+    const SmallCount c = count_small(h);
+    r.negative += c.negative;
+    r.positive += c.positive;
+    const int nonreal = h.degree() - c.negative - c.positive;
+    r.nonreal += nonreal * m;
+    if (m >= 2) r.nonreal_multiple += nonreal * m;
+  }
+  if (!multiple) return std::nullopt;
+  r.real = r.negative + r.positive;
+  r.sign_disc_f = 0;
+  const Poly ft = CGAL::integral_division_up_to_constant_factor(f, CGAL::gcd(f, s));
+  r.degree_ftilde = ft.degree();
+  std::vector<std::pair<Poly, int>> tfactors;
+  CGAL::square_free_factorize(ft, std::back_inserter(tfactors));
+  bool ft_multiple = false;
+  for (const auto& [h, m] : tfactors) {
+    if (m < 2 || h.degree() < 1) continue;
+    ft_multiple = true;
+    const SmallCount c = count_small(h);  // deg h <= 2 because m >= 2 and deg f~ <= 4
+    r.tangent_negative += c.negative;
+    r.tangent_positive += c.positive;
+  }
+  // For a square-free real polynomial, sign Disc = (-1)^(number of non-real conjugate pairs); f~
+  // keeps f's non-real roots (s has only real roots).
+  r.sign_disc_ftilde = ft_multiple ? 0 : ((r.nonreal / 2) % 2 ? -1 : 1);
+  return r;
+}
+
 std::vector<std::string> real_root_decimals(const Quartic<Integer>& fc, int digits) {
   const Poly f = make_poly(fc);
   AK ak;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "relpos/smallness.hpp"
 
@@ -70,13 +72,28 @@ USign certified(double v, double bound) {
   return USign::indeterminate();  // also for NaN
 }
 
+// Exponent arithmetic on the bits of the double (std::ilogb / std::ldexp are out-of-line libm
+// calls that cost as much as the whole pencil). Valid for normal numbers; callers check ranges.
+inline int exponent_of(double x) {  // floor(log2 |x|) for a normal, non-zero x
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  return static_cast<int>((b >> 52) & 0x7ff) - 1023;
+}
+inline double power_of_two(int k) {  // 2^k, for -1022 <= k <= 1023
+  const std::uint64_t b = static_cast<std::uint64_t>(k + 1023) << 52;
+  double x;
+  std::memcpy(&x, &b, sizeof x);
+  return x;
+}
+inline bool normal_range(double x) { return x >= DBL_MIN && x <= DBL_MAX; }
+
 /// Scale a matrix so its largest entry is in [1/2, 1); false if an entry would lose bits (subnormal)
 /// or the input is not finite.
 bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
   double mx = 0;
   for (double x : in) mx = std::max(mx, std::fabs(x));
-  if (!(mx > 0) || !std::isfinite(mx)) return false;
-  const double scale = std::ldexp(1.0, -std::ilogb(mx) - 1);  // multiplying by it is exact
+  if (!normal_range(mx)) return false;
+  const double scale = power_of_two(-exponent_of(mx) - 1);  // multiplying by it is exact
   for (std::size_t i = 0; i < 16; ++i) {
     out.a[i] = in[i] * scale;
     if (in[i] != 0 && std::fabs(out.a[i]) < DBL_MIN) return false;
@@ -85,6 +102,8 @@ bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
 }
 
 DecisionSigns uncertain() { return DecisionSigns{}; }
+
+
 
 }  // namespace
 
@@ -98,9 +117,8 @@ DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4&
   for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
   for (int i = 0; i < 3; ++i) es[i] = b.s[i];
   // Balance the quartic: lambda = 2^t mu with |f4| 2^(4t) ~ |f0|. f_i, s_i gain 2^(t i): exact.
-  if (f[0] == 0 || f[4] == 0) return uncertain();
-  // (Multiplications by powers of two, not std::ldexp: same exact result, a fraction of the cost.)
-  const double step = std::ldexp(1.0, (std::ilogb(f[0]) - std::ilogb(f[4])) / 4);
+  if (!normal_range(std::fabs(f[0])) || !normal_range(std::fabs(f[4]))) return uncertain();
+  const double step = power_of_two((exponent_of(f[0]) - exponent_of(f[4])) / 4);
   double w = 1;
   for (int i = 0; i < 5; ++i, w *= step) {
     f[static_cast<std::size_t>(i)] *= w;
@@ -114,8 +132,8 @@ DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4&
   auto scale_into_unit = [](double* v, double* err, int n) {
     double mx = 0;
     for (int i = 0; i < n; ++i) mx = std::max(mx, std::fabs(v[i]) + err[i]);
-    if (!(mx > 0) || !std::isfinite(mx)) return false;
-    const double scale = std::ldexp(1.0, -std::ilogb(mx) - 1);
+    if (!normal_range(mx)) return false;
+    const double scale = power_of_two(-exponent_of(mx) - 1);
     for (int i = 0; i < n; ++i) {
       v[i] *= scale;
       err[i] *= scale;

@@ -7,6 +7,7 @@
 // "1.5e-7"); booleans, null, NaN and infinities are rejected with the path of the field.
 #pragma once
 
+#include <cstddef>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -17,9 +18,13 @@
 
 namespace relpos::io {
 
+/// Deepest nesting of arrays and objects that parse_json_exact accepts.
+inline constexpr std::size_t kMaxJsonDepth = 256;
+
 /// Parse JSON text, keeping every floating-point JSON number as a string holding its original text
-/// (integers stay integers: they are exact). Throws relpos::InputError ("invalid JSON: ...") on
-/// malformed text. Object keys keep their order.
+/// (integers stay integers: they are exact; numbers beyond the range of a double are kept as text
+/// too). Throws relpos::InputError ("invalid JSON: ...") on malformed text or nesting deeper than
+/// kMaxJsonDepth. Object keys keep their order.
 nlohmann::ordered_json parse_json_exact(std::string_view text);
 
 /// An exact number from a JSON value (integer, string as above, or a float kept as text by

@@ -42,6 +42,23 @@ struct RootStructure {
   int positive() const;
 };
 
+/// The facts the classification needs, without isolating any root.
+struct RootFacts {
+  int real = 0, negative = 0, positive = 0;  ///< distinct real roots of f
+  int nonreal = 0;                           ///< non-real roots of f, with multiplicity
+  int nonreal_multiple = 0;                  ///< non-real roots of multiplicity >= 2
+  int tangent_negative = 0, tangent_positive = 0;  ///< distinct multiple real roots of f~, by sign
+  int sign_disc_f = 0, sign_disc_ftilde = 0;
+  int degree_ftilde = 4;
+};
+
+/// Root facts from exact gcd(f, s) and square-free factorisations when Disc(f) = 0. Then every
+/// square-free factor of the quartic f has degree <= 2 (4 = d1 + 2 d2 + 3 d3 + 4 d4 with some
+/// d_k > 0, k >= 2, forces d1 <= 2), so each factor's real roots and their signs have closed forms
+/// (discriminant; Descartes' rule, exact for real-rooted factors). nullopt when f is square-free
+/// (defective Sturm-Habicht sequence with Disc(f) != 0): use exact_root_structure() then.
+std::optional<RootFacts> exact_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s);
+
 /// Exact root structure of f (integer coefficients, f(0) != 0) relative to s.
 RootStructure exact_root_structure(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 

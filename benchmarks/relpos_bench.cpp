@@ -1,0 +1,511 @@
+// relpos_bench: time per classification (median over batches) and misclassification rate against
+// the exact answer, for float baselines built from the library's own generic formulas and for the
+// adaptive exact classifier (doc/performance.md).
+//
+//   relpos_bench [--seed N] [--out DIR] [--quick]
+//
+// Writes DIR/results.csv, DIR/stages.csv and DIR/summary.json.
+#include <CGAL/Gmpfr.h>
+#include <CGAL/Interval_nt.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "relpos/classify.hpp"
+#include "relpos/error.hpp"
+#include "relpos/pencil.hpp"
+#include "relpos/quadric.hpp"
+#include "relpos/smallness.hpp"
+#include "relpos/sturm.hpp"
+
+using namespace relpos;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Float baselines: the library's generic formulas instantiated with NT, and a naive decision table.
+
+template <class NT>
+struct Mat {
+  std::array<NT, 16> a;
+  const NT& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+};
+
+template <class T>
+USign usign(const T& x) {
+  return relpos::sign_of(x);
+}
+inline USign usign(const long double& x) {
+  return USign(x > 0 ? CGAL::POSITIVE : (x < 0 ? CGAL::NEGATIVE : CGAL::ZERO));
+}
+
+/// What a user would write on top of the float signs. nullopt = undecided (a zero / uncertain sign
+/// where the table needs a strict one).
+std::optional<Position> naive_table(const QuarticSigns& q, const USign& vertex, const USign& graeffe) {
+  auto rho = compare_rho_with_one(vertex, graeffe);
+  if (!rho) return std::nullopt;
+  const bool small = *rho <= 0;
+  auto disc = detail::certain(q.g0);
+  if (!disc) return std::nullopt;
+  if (*disc == 0) {
+    // Disc(f) == 0 exactly: a tangency. The sign of the multiple root is unknown to a float code;
+    // count with the discriminant taken positive and call it TE if a positive root shows up.
+    QuarticSigns q2 = q;
+    q2.g0 = USign(CGAL::POSITIVE);
+    auto c = count_roots(q2);
+    if (!c) return std::nullopt;
+    if (c->positive > 0) return Position::TE;
+    return small ? Position::TI : Position::Unclassified;
+  }
+  auto c = count_roots(q);
+  if (!c) return std::nullopt;
+  const int nonreal = 4 - c->real;
+  if (nonreal == 0 && c->positive == 2) return Position::E;
+  if (!small) return Position::Unclassified;
+  if (nonreal == 2 && c->positive == 0) return Position::C;
+  if (nonreal == 0 && c->positive == 0) return Position::I;
+  return Position::Unclassified;
+}
+
+template <class NT, class Conv>
+std::optional<Position> float_classify(const std::array<double, 16>& pd, const std::array<double, 16>& ed, Conv conv) {
+  Mat<NT> P, E;
+  for (std::size_t i = 0; i < 16; ++i) {
+    P.a[i] = conv(pd[i]);
+    E.a[i] = conv(ed[i]);
+  }
+  const Quartic<NT> f = characteristic_polynomial<NT>(P, E);
+  const Quadratic<NT> s = special_polynomial<NT>(P, E);
+  SturmHabicht<NT> sh(f);
+  SmallnessQuantities<NT> sq(f, s);
+  QuarticSigns q;
+  for (int i = 0; i < 5; ++i) q.f[i] = usign(f[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < 3; ++i) q.g2[i] = usign(sh.g2[i]);
+  for (int i = 0; i < 2; ++i) q.g1[i] = usign(sh.g1[i]);
+  q.g0 = usign(sh.g0[0]);
+  return naive_table(q, usign(sq.vertex), usign(sq.graeffe));
+}
+
+using Interval = CGAL::Interval_nt<false>;
+
+// ---------------------------------------------------------------------------------------------
+// Inputs.
+
+struct Pair {
+  Ellipsoid e;
+  Paraboloid p;
+  std::array<double, 16> ed{}, pd{};                // nearest doubles (what a float user sees)
+  std::array<double, 16> elo{}, ehi{}, plo{}, phi{};  // enclosures of the exact entries
+  Position truth = Position::Unclassified;
+  bool exact_doubles = false;
+  Pair(Ellipsoid e_, Paraboloid p_) : e(std::move(e_)), p(std::move(p_)) {
+    for (std::size_t i = 0; i < 16; ++i) {
+      ed[i] = CGAL::to_double(e.matrix().a[i]);
+      pd[i] = CGAL::to_double(p.matrix().a[i]);
+      auto ie = CGAL::to_interval(e.matrix().a[i]);
+      auto ip = CGAL::to_interval(p.matrix().a[i]);
+      elo[i] = ie.first, ehi[i] = ie.second, plo[i] = ip.first, phi[i] = ip.second;
+    }
+    exact_doubles = e.doubles().has_value() && p.doubles().has_value();
+  }
+};
+
+Rational Q(double x) { return Rational(x); }
+
+std::vector<Pair> family_a(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> u11(-1, 1), uc(-2, 2), uk(0.1, 2), uab(0.3, 2);
+  std::vector<Pair> out;
+  int attempts = 0;
+  while (static_cast<int>(out.size()) < n && attempts < 20 * n) {
+    ++attempts;
+    double L[3][3], M[3][3], c[3], Mc[3];
+    for (auto& r : L)
+      for (auto& x : r) x = u11(rng);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        M[i][j] = 0;
+        for (int k = 0; k < 3; ++k) M[i][j] += L[i][k] * L[j][k];
+        if (i == j) M[i][j] += 0.05;
+      }
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < j; ++i) M[j][i] = M[i][j];  // exact symmetry
+    for (double& x : c) x = uc(rng);
+    const double k = uk(rng);
+    double cMc = 0;
+    for (int i = 0; i < 3; ++i) {
+      Mc[i] = 0;
+      for (int j = 0; j < 3; ++j) Mc[i] += M[i][j] * c[j];
+      cMc += c[i] * Mc[i];
+    }
+    Matrix4 E, P;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) E(i, j) = Q(M[i][j]);
+      E(i, 3) = E(3, i) = Q(-Mc[i]);
+    }
+    E(3, 3) = Q(cMc - k);
+    const double alpha = uab(rng), beta = uab(rng), uu = u11(rng), vv = u11(rng), w = uc(rng);
+    P(0, 0) = Q(alpha);
+    P(1, 1) = Q(beta);
+    P(0, 3) = P(3, 0) = Q(uu * alpha);
+    P(1, 3) = P(3, 1) = Q(vv * beta);
+    P(2, 3) = P(3, 2) = Q(-0.5);
+    P(3, 3) = Q(w);
+    try {
+      out.emplace_back(Ellipsoid::from_matrix(E), Paraboloid::from_matrix(P));
+    } catch (const std::exception&) {
+    }
+  }
+  return out;
+}
+
+/// A tangent configuration: paraboloid, sphere centre and radius, and the (unnormalised) inward
+/// normal direction along which (c) moves the centre.
+struct Config {
+  Matrix4 P;
+  Vector3 centre;
+  Rational r;
+  Vector3 dir;
+  bool sym = false;  ///< sphere on the axis of a paraboloid of revolution: Disc(f) = 0 for every shift
+};
+
+Matrix4 axis_paraboloid(const Rational& ia, const Rational& ib) {
+  Matrix4 P;
+  P(0, 0) = ia;
+  P(1, 1) = ib;
+  P(2, 3) = P(3, 2) = Rational(-1, 2);
+  return P;
+}
+
+std::vector<Config> tangent_configs() {
+  std::vector<Config> cs;
+  const Rational inv[4] = {Rational(1), Rational(1, 2), Rational(1, 4), Rational(2)};
+  // On the axis of z = ia x^2 + ib y^2: vertex curvature radius 1/(2 max(ia, ib)).
+  for (const auto& ia : inv)
+    for (const auto& ib : inv) {
+      const Rational rmin = Rational(1) / (2 * std::max(ia, ib));
+      Matrix4 P = axis_paraboloid(ia, ib);
+      for (int k : {1, 2, 3}) {  // TI: centre (0, 0, r), r <= rmin (small)
+        Rational r = rmin / Rational(1 << k);
+        cs.push_back({P, {Rational(0), Rational(0), r}, r, {Rational(0), Rational(0), Rational(1)}, ia == ib});
+      }
+      for (const Rational& r : {Rational(1, 4), Rational(1), Rational(4)})  // TE: centre (0, 0, -r)
+        cs.push_back({P, {Rational(0), Rational(0), -r}, r, {Rational(0), Rational(0), Rational(1)}, ia == ib});
+    }
+  // Off the axis of z = x^2 + y^2: point (x, y, x^2 + y^2), inward normal n = (-2x, -2y, 1) with
+  // |n| = m rational; r = m 2^-k keeps the centre point +- (r/m) n dyadic.
+  struct Pt { int x, y, m; };
+  const Pt pts[4] = {{1, 1, 3}, {2, 4, 9}, {4, 2, 9}, {6, 6, 17}};
+  Matrix4 P = axis_paraboloid(Rational(1), Rational(1));
+  for (const Pt& q : pts)
+    for (int sx : {1, -1})
+      for (int sy : {1, -1}) {
+        const Rational x(sx * q.x), y(sy * q.y), z(q.x * q.x + q.y * q.y);
+        const Vector3 n{-2 * x, -2 * y, Rational(1)};
+        int k = 0;
+        while (Rational(q.m, 1 << k) > Rational(1, 2)) ++k;  // TI needs r <= 1/2
+        for (int side : {1, -1}) {
+          const Rational r = side > 0 ? Rational(q.m, 1 << k) : Rational(q.m, 8);
+          const Rational t = side * r / q.m;
+          cs.push_back({P, {x + t * n[0], y + t * n[1], z + t * n[2]}, r, n, false});
+        }
+      }
+  return cs;
+}
+
+std::vector<Pair> family_b(const std::vector<Config>& cs) {
+  std::vector<Pair> out;
+  for (const auto& c : cs) out.emplace_back(Ellipsoid::sphere(c.centre, c.r), Paraboloid::from_matrix(c.P));
+  return out;
+}
+
+std::vector<Pair> family_c(const std::vector<Config>& cs, int k, bool sym) {
+  std::vector<Pair> out;
+  const Rational delta = Rational(1) / Rational(CGAL::Gmpz(1) << k);
+  for (const auto& c : cs)
+    if (c.sym == sym)
+    for (int side : {1, -1}) {
+      Vector3 ctr{c.centre[0] + side * delta * c.dir[0], c.centre[1] + side * delta * c.dir[1],
+                  c.centre[2] + side * delta * c.dir[2]};
+      out.emplace_back(Ellipsoid::sphere(ctr, c.r), Paraboloid::from_matrix(c.P));
+    }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Measurement.
+
+struct Answer {
+  std::optional<Position> pos;
+  int stage = -1;
+};
+
+struct Result {
+  double median_ns = 0;
+  double error_rate = 0;        // wrong or undecided
+  double decided_fraction = 0;  // answered at all
+  double wrong_decided = 0;     // answered and wrong (fraction of all pairs)
+  int n = 0;
+  int batches = 0;
+  std::array<int, 4> stages{};
+};
+
+volatile int g_sink = 0;
+
+template <class F>
+Result measure(const std::vector<Pair>& v, F method, double budget_s, const std::string& label) {
+  Result res;
+  res.n = static_cast<int>(v.size());
+  if (v.empty()) return res;
+  // First pass: answers (and a time estimate).
+  int wrong = 0, undecided = 0;
+  auto t0 = Clock::now();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    Answer a = method(v[i]);
+    if (a.stage >= 0 && a.stage < 4) ++res.stages[static_cast<std::size_t>(a.stage)];
+    if (!a.pos) ++undecided;
+    else if (*a.pos != v[i].truth) {
+      ++wrong;
+      if (label == "adaptive") {
+        std::cerr << "CRITICAL: adaptive misclassified pair " << i << ": got " << to_string(*a.pos) << ", exact "
+                  << to_string(v[i].truth) << "\n  E =";
+        for (auto& q : v[i].e.matrix().a) std::cerr << " " << to_string(q);
+        std::cerr << "\n  P =";
+        for (auto& q : v[i].p.matrix().a) std::cerr << " " << to_string(q);
+        std::cerr << "\n";
+      }
+    }
+  }
+  const double first = std::chrono::duration<double>(Clock::now() - t0).count();
+  res.error_rate = double(wrong + undecided) / v.size();
+  res.decided_fraction = double(v.size() - undecided) / v.size();
+  res.wrong_decided = double(wrong) / v.size();
+  // Batches of >= ~2 ms (inner repetitions of the whole family); median of ns per classification.
+  const int inner = std::max(1, static_cast<int>(std::ceil(2e-3 / std::max(first, 1e-9))));
+  const double per_batch = first * inner;
+  int nb = static_cast<int>(budget_s / std::max(per_batch, 1e-9));
+  nb = std::clamp(nb, 5, 31);
+  std::vector<double> times;
+  for (int b = 0; b < nb; ++b) {
+    int acc = 0;
+    auto s = Clock::now();
+    for (int r = 0; r < inner; ++r)
+      for (const auto& pr : v) {
+        Answer a = method(pr);
+        acc += a.pos ? static_cast<int>(*a.pos) : 7;
+      }
+    const double ns = std::chrono::duration<double, std::nano>(Clock::now() - s).count();
+    g_sink = g_sink + acc;
+    times.push_back(ns / (double(inner) * v.size()));
+  }
+  std::sort(times.begin(), times.end());
+  res.median_ns = times[times.size() / 2];
+  res.batches = nb;
+  return res;
+}
+
+struct Method {
+  std::string name;
+  std::function<Answer(const Pair&)> run;
+};
+
+std::vector<Method> methods() {
+  std::vector<Method> ms;
+  ms.push_back({"naive-double", [](const Pair& x) {
+                  return Answer{float_classify<double>(x.pd, x.ed, [](double d) { return d; })};
+                }});
+  ms.push_back({"long-double", [](const Pair& x) {
+                  return Answer{float_classify<long double>(x.pd, x.ed, [](double d) { return (long double)d; })};
+                }});
+#ifdef __SIZEOF_FLOAT128__
+  ms.push_back({"float128", [](const Pair& x) {
+                  return Answer{float_classify<__float128>(x.pd, x.ed, [](double d) { return (__float128)d; })};
+                }});
+#endif
+  ms.push_back({"mpfr-256", [](const Pair& x) {
+                  return Answer{float_classify<CGAL::Gmpfr>(x.pd, x.ed, [](double d) { return CGAL::Gmpfr(d, 256); })};
+                }});
+  ms.push_back({"interval", [](const Pair& x) {
+                  CGAL::Protect_FPU_rounding<true> guard;
+                  Mat<Interval> P, E;
+                  for (std::size_t i = 0; i < 16; ++i) {
+                    P.a[i] = Interval(x.plo[i], x.phi[i]);
+                    E.a[i] = Interval(x.elo[i], x.ehi[i]);
+                  }
+                  const auto f = characteristic_polynomial<Interval>(P, E);
+                  const auto s = special_polynomial<Interval>(P, E);
+                  SturmHabicht<Interval> sh(f);
+                  SmallnessQuantities<Interval> sq(f, s);
+                  return Answer{naive_table(signs_of(f, sh), sign_of(sq.vertex), sign_of(sq.graeffe))};
+                }});
+  ms.push_back({"exact", [](const Pair& x) {
+                  return Answer{classify_exact(x.e, x.p, Evidence::Minimal).position};
+                }});
+  ms.push_back({"adaptive", [](const Pair& x) {
+                  Verdict v = decide_position(x.e, x.p);
+                  return Answer{v.position, static_cast<int>(v.stage)};
+                }});
+  return ms;
+}
+
+struct Row {
+  std::string family;
+  std::string eps;  // nominal eps for (c), "" otherwise
+  int k = 0;
+  std::string method;
+  Result r;
+  int exact_double_inputs = 0;
+};
+
+std::string fmt(double x, int prec = 6) {
+  std::ostringstream o;
+  o.precision(prec);
+  o << x;
+  return o.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  unsigned long seed = 20240601;
+  std::string out_dir = "benchmarks/results";
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--seed" && i + 1 < argc) seed = std::stoul(argv[++i]);
+    else if (a == "--out" && i + 1 < argc) out_dir = argv[++i];
+    else if (a == "--quick") quick = true;
+    else {
+      std::cerr << "usage: relpos_bench [--seed N] [--out DIR] [--quick]\n";
+      return 2;
+    }
+  }
+  CGAL::Gmpfr::set_default_precision(256);  // constants NT(0), NT(2) in the generic code too
+  {
+    // Check that MPFR arithmetic keeps 256 bits.
+    CGAL::Gmpfr a(1.0 / 3.0, 256), b(0.1, 256);
+    CGAL::Gmpfr c = a * b - CGAL::Gmpfr(2) * a;
+    if (c.get_precision() != 256) {
+      std::cerr << "MPFR precision dropped to " << c.get_precision() << "\n";
+      return 1;
+    }
+  }
+
+  std::mt19937_64 rng(seed);
+  const int na = quick ? 300 : 2000;
+  struct Fam {
+    std::string family, eps;
+    int k;
+    std::vector<Pair> pairs;
+  };
+  std::vector<Fam> fams;
+  fams.push_back({"a", "", 0, family_a(rng, na)});
+  const auto cfgs = tangent_configs();
+  fams.push_back({"b", "", 0, family_b(cfgs)});
+  for (int e = 2; e <= 40; e += 2) {
+    const int k = static_cast<int>(std::lround(e * std::log2(10.0)));
+    fams.push_back({"c", "1e-" + std::to_string(e), k, family_c(cfgs, k, false)});
+    fams.push_back({"c-sym", "1e-" + std::to_string(e), k, family_c(cfgs, k, true)});
+  }
+  // Ground truth.
+  for (auto& f : fams)
+    for (auto& p : f.pairs) p.truth = classify_exact(p.e, p.p, Evidence::Minimal).position;
+  for (auto& f : fams) {
+    int hist[6] = {0, 0, 0, 0, 0, 0};
+    int exact = 0;
+    for (auto& p : f.pairs) ++hist[static_cast<int>(p.truth)], exact += p.exact_doubles;
+    std::cerr << "family " << f.family << (f.eps.empty() ? "" : " eps=" + f.eps) << ": n=" << f.pairs.size()
+              << " exact-double inputs=" << exact << "  I/TI/C/TE/E/U = " << hist[0] << "/" << hist[1] << "/" << hist[2]
+              << "/" << hist[3] << "/" << hist[4] << "/" << hist[5] << "\n";
+  }
+
+  const double budget = quick ? 0.05 : 0.25;
+  std::vector<Row> rows;
+  bool adaptive_wrong = false;
+  for (const auto& m : methods()) {
+    for (const auto& f : fams) {
+      Row row{f.family, f.eps, f.k, m.name, measure(f.pairs, m.run, f.eps.empty() ? budget : budget / 4, m.name), 0};
+      for (auto& p : f.pairs) row.exact_double_inputs += p.exact_doubles;
+      if (m.name == "adaptive" && row.r.wrong_decided > 0) adaptive_wrong = true;
+      std::fprintf(stderr, "%-13s %-2s %-6s median %10.1f ns  err %.4f  decided %.4f  (%d batches)\n", m.name.c_str(),
+                   f.family.c_str(), f.eps.c_str(), row.r.median_ns, row.r.error_rate, row.r.decided_fraction,
+                   row.r.batches);
+      rows.push_back(row);
+    }
+  }
+
+  {
+    std::ofstream csv(out_dir + "/results.csv");
+    csv << "family,eps,method,median_ns,error_rate,decided_fraction,n,wrong_decided_rate,delta_log2,exact_double_inputs\n";
+    for (const auto& r : rows)
+      csv << r.family << "," << r.eps << "," << r.method << "," << fmt(r.r.median_ns) << "," << fmt(r.r.error_rate) << ","
+          << fmt(r.r.decided_fraction) << "," << r.r.n << "," << fmt(r.r.wrong_decided) << "," << (r.k ? -r.k : 0) << ","
+          << r.exact_double_inputs << "\n";
+  }
+  {
+    std::ofstream csv(out_dir + "/stages.csv");
+    csv << "family,eps,n,static_double,interval,exact_signs,exact_roots\n";
+    for (const auto& r : rows)
+      if (r.method == "adaptive")
+        csv << r.family << "," << r.eps << "," << r.r.n << "," << r.r.stages[0] << "," << r.r.stages[1] << ","
+            << r.r.stages[2] << "," << r.r.stages[3] << "\n";
+  }
+  auto find = [&](const std::string& fam, const std::string& m) -> const Row* {
+    for (const auto& r : rows)
+      if (r.family == fam && r.method == m) return &r;
+    return nullptr;
+  };
+  {
+    const Row* ad_a = find("a", "adaptive");
+    const Row* nd_a = find("a", "naive-double");
+    const Row* ad_b = find("b", "adaptive");
+    std::ofstream js(out_dir + "/summary.json");
+    js << "{\n  \"seed\": " << seed << ",\n";
+    js << "  \"adaptive_over_naive_double_family_a\": " << fmt(ad_a->r.median_ns / nd_a->r.median_ns) << ",\n";
+    js << "  \"adaptive_median_family_b_us\": " << fmt(ad_b->r.median_ns / 1000.0) << ",\n";
+    js << "  \"bar_a_met\": " << ((ad_a->r.median_ns <= 1.5 * nd_a->r.median_ns && ad_a->r.error_rate == 0) ? "true" : "false")
+       << ",\n";
+    js << "  \"bar_b_met\": " << (ad_b->r.median_ns <= 2000.0 ? "true" : "false") << ",\n";
+    js << "  \"adaptive_misclassifications\": " << (adaptive_wrong ? "true" : "false") << ",\n";
+    js << "  \"families\": {\n";
+    bool firstf = true;
+    for (const auto& f : fams) {
+      if (!f.eps.empty()) continue;
+      js << (firstf ? "" : ",\n") << "    \"" << f.family << "\": {";
+      firstf = false;
+      bool firstm = true;
+      for (const auto& r : rows)
+        if (r.family == f.family) {
+          js << (firstm ? "" : ", ") << "\"" << r.method << "\": {\"median_ns\": " << fmt(r.r.median_ns)
+             << ", \"error_rate\": " << fmt(r.r.error_rate) << ", \"decided_fraction\": " << fmt(r.r.decided_fraction)
+             << ", \"n\": " << r.r.n;
+          if (r.method == "adaptive")
+            js << ", \"stage_fractions\": {\"static_double\": " << fmt(double(r.r.stages[0]) / r.r.n)
+               << ", \"interval\": " << fmt(double(r.r.stages[1]) / r.r.n)
+               << ", \"exact_signs\": " << fmt(double(r.r.stages[2]) / r.r.n)
+               << ", \"exact_roots\": " << fmt(double(r.r.stages[3]) / r.r.n) << "}";
+          js << "}";
+          firstm = false;
+        }
+      js << "}";
+    }
+    js << "\n  }\n}\n";
+  }
+  if (adaptive_wrong) {
+    std::cerr << "CRITICAL: the adaptive method misclassified at least one pair (see above)\n";
+    return 3;
+  }
+  return 0;
+}

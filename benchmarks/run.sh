@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Build and run the relpos benchmark, then draw the charts (doc/performance.md).
+#
+#   benchmarks/run.sh            # full run (~1-2 minutes on 2 cores), seed 20240601
+#   benchmarks/run.sh --quick    # smaller family (a), fewer batches
+#
+# Outputs: benchmarks/results/{results.csv,stages.csv,summary.json,*.png}.
+# Plotting needs matplotlib for /usr/bin/python3 (Debian python3-matplotlib, benchmark-only
+# dependency); it is installed with apt-get when missing and apt-get is usable.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="$ROOT/build-bench"
+OUT="$ROOT/benchmarks/results"
+SEED="${RELPOS_BENCH_SEED:-20240601}"
+
+cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DRELPOS_BUILD_BENCHMARKS=ON -DRELPOS_BUILD_TESTS=OFF >/dev/null
+cmake --build "$BUILD" -j2 --target relpos_bench
+mkdir -p "$OUT"
+"$BUILD/benchmarks/relpos_bench" --seed "$SEED" --out "$OUT" "$@" 2>&1 | tee "$OUT/log.txt"
+
+PY=/usr/bin/python3
+if ! "$PY" -c 'import matplotlib' 2>/dev/null; then
+  if command -v apt-get >/dev/null && [ "$(id -u)" = 0 ]; then
+    apt-get install -y python3-matplotlib >/dev/null
+  else
+    echo "matplotlib missing for $PY: install python3-matplotlib to draw the charts" >&2
+    exit 1
+  fi
+fi
+"$PY" "$ROOT/benchmarks/plot.py" "$OUT"

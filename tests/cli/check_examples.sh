@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# Check `relpos batch examples/mixed.jsonl` against the expectations encoded in the input.
+#
+# Usage: tests/cli/check_examples.sh PATH/TO/relpos REPO_ROOT
+#
+# The expected answer of each input line comes from, in this order:
+#   1. its "id", when it is a string starting with I-, TI-, C-, TE-, E-, U- (unclassified) or ERR-;
+#   2. its "comment", when it reads "expect: POS" (POS one of I, TI, C, TE, E, U, ERR);
+#   3. an error, when the line is blank, is not valid JSON or is not a JSON object.
+# A line with none of these is itself a failure (every example must state its answer).
+# The output must have exactly one line per input line, in order: the output id must be the input
+# id, or the 1-based line number when the input has none (or cannot be read).
+# Exits 0 when everything matches, 1 on any mismatch, 2 on a usage error or a failed run.
+set -u
+
+if [ $# -ne 2 ]; then
+  echo "usage: $0 PATH/TO/relpos REPO_ROOT" >&2
+  exit 2
+fi
+relpos=$1
+root=$2
+input="$root/examples/mixed.jsonl"
+if [ ! -x "$relpos" ]; then
+  echo "check_examples: '$relpos' is not an executable" >&2
+  exit 2
+fi
+if [ ! -r "$input" ]; then
+  echo "check_examples: cannot read '$input'" >&2
+  exit 2
+fi
+
+output=$(mktemp)
+trap 'rm -f "$output"' EXIT
+"$relpos" batch "$input" >"$output"
+rc=$?
+if [ $rc -ne 0 ]; then
+  echo "check_examples: relpos batch exited with status $rc (expected 0)" >&2
+  exit 1
+fi
+
+python3 - "$input" "$output" <<'PY'
+import json
+import sys
+
+input_path, output_path = sys.argv[1], sys.argv[2]
+with open(input_path, encoding="utf-8") as f:
+    inputs = f.read().split("\n")
+if inputs and inputs[-1] == "":
+    inputs.pop()  # the newline that ends the last line
+with open(output_path, encoding="utf-8") as f:
+    outputs = f.read().split("\n")
+if outputs and outputs[-1] == "":
+    outputs.pop()
+
+PREFIXES = {"I": "I", "TI": "TI", "C": "C", "TE": "TE", "E": "E", "U": "unclassified", "ERR": "error"}
+
+
+def reject_constant(name):
+    raise ValueError("not JSON: " + name)  # Python would accept NaN and Infinity
+
+
+def expectation(line):
+    """(expected answer, expected output id or None for the line number)."""
+    if line.strip() == "":
+        return "error", None
+    try:
+        doc = json.loads(line, parse_constant=reject_constant)
+    except ValueError:
+        return "error", None
+    if not isinstance(doc, dict):
+        return "error", None
+    has_id = "id" in doc
+    ident = doc.get("id")
+    if isinstance(ident, str) and "-" in ident and ident.split("-", 1)[0] in PREFIXES:
+        return PREFIXES[ident.split("-", 1)[0]], (ident,)
+    comment = doc.get("comment")
+    if isinstance(comment, str) and comment.startswith("expect: ") and comment[8:] in PREFIXES:
+        return PREFIXES[comment[8:]], ((ident,) if has_id else None)
+    return None, ((ident,) if has_id else None)
+
+
+passed = failed = 0
+problems = []
+if len(outputs) != len(inputs):
+    problems.append(f"line count: {len(inputs)} input lines but {len(outputs)} output lines")
+for number, line in enumerate(inputs, 1):
+    expected, ident = expectation(line)
+    want_id = ident[0] if ident is not None else number
+    if number > len(outputs):
+        failed += 1
+        problems.append(f"line {number}: no output line")
+        continue
+    try:
+        answer = json.loads(outputs[number - 1])
+    except ValueError as e:
+        failed += 1
+        problems.append(f"line {number}: output is not JSON ({e}): {outputs[number - 1][:80]}")
+        continue
+    if not isinstance(answer, dict) or "id" not in answer:
+        failed += 1
+        problems.append(f"line {number}: output has no id: {outputs[number - 1][:80]}")
+        continue
+    if answer["id"] != want_id:
+        failed += 1
+        problems.append(f"line {number}: out of order: output id {json.dumps(answer['id'])}, "
+                        f"expected {json.dumps(want_id)}")
+        continue
+    got = "error" if "error" in answer else answer.get("position")
+    if expected is None:
+        failed += 1
+        problems.append(f"line {number}: the example states no expected answer (id {json.dumps(want_id)})")
+    elif got != expected:
+        failed += 1
+        detail = answer.get("error") or answer.get("rule", "")
+        problems.append(f"line {number} ({json.dumps(want_id)}): expected {expected}, got {got} ({detail})")
+    else:
+        passed += 1
+
+for p in problems:
+    print("FAIL " + p)
+print(f"examples: {passed} passed, {failed} failed")
+sys.exit(0 if failed == 0 and not problems else 1)
+PY
