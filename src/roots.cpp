@@ -22,27 +22,27 @@ Poly make_poly(const std::array<Integer, N>& c) {
 
 int sgn(const Integer& z) { return z > 0 ? 1 : (z < 0 ? -1 : 0); }
 
-/// Rational roots of the square-free factors of degree 1 and 2 (the only factors that can carry a
-/// multiple root of a quartic); a quadratic has rational roots iff its discriminant is a square.
-std::vector<Rational> small_factor_rational_roots(const Poly& f) {
-  std::vector<std::pair<Poly, int>> factors;
-  CGAL::square_free_factorize(f, std::back_inserter(factors));
-  std::vector<Rational> out;
-  for (const auto& [g, m] : factors) {
-    (void)m;
-    if (g.degree() == 1) {
-      out.emplace_back(-g[0], g[1]);
-    } else if (g.degree() == 2) {
-      Integer d = g[1] * g[1] - 4 * g[2] * g[0];
-      if (d >= 0 && mpz_perfect_square_p(d.mpz())) {
-        Integer r;
-        mpz_sqrt(r.mpz(), d.mpz());
-        out.emplace_back(-g[1] - r, 2 * g[2]);
-        out.emplace_back(-g[1] + r, 2 * g[2]);
-      }
-    }
-  }
-  return out;
+Rational evaluate(const Quartic<Integer>& f, const Rational& x) {
+  Rational v(0);
+  for (int i = 4; i >= 0; --i) v = v * x + Rational(f[static_cast<std::size_t>(i)]);
+  return v;
+}
+
+/// The root itself if it is rational. A rational root p/q (lowest terms) of an integer polynomial has
+/// q | lc(f), so root * lc(f) is an integer: refine the isolating interval below width 1/|lc(f)|,
+/// take the only candidate m/lc(f) in it and test f(m/lc(f)) = 0 exactly.
+std::optional<Rational> rational_value(const AK& ak, const Root& root, const Quartic<Integer>& f) {
+  Integer lc = f[4] < 0 ? Integer(-f[4]) : f[4];
+  const int bits = static_cast<int>(mpz_sizeinbase(lc.mpz(), 2)) + 4;
+  auto iv = ak.approximate_absolute_1_object()(root, bits);
+  const Rational scaled = (iv.first + iv.second) / 2 * Rational(lc);
+  Integer m;  // nearest integer to scaled
+  const Rational shifted = scaled + Rational(1, 2);
+  mpz_fdiv_q(m.mpz(), shifted.numerator().mpz(), shifted.denominator().mpz());
+  const Rational candidate(m, lc);
+  if (candidate < iv.first || candidate > iv.second) return std::nullopt;
+  if (evaluate(f, candidate) != 0) return std::nullopt;
+  return candidate;
 }
 
 }  // namespace
@@ -84,7 +84,6 @@ RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<I
   std::vector<std::pair<Root, AK::Multiplicity_type>> roots;
   ak.solve_1_object()(f, std::back_inserter(roots));  // distinct real roots, increasing, with multiplicity
   const Poly ds = CGAL::differentiate(s);
-  const std::vector<Rational> rationals = small_factor_rational_roots(f);
   int real_with_mult = 0;
   long bits = 64;
   for (const auto& [root, mult] : roots) {
@@ -93,8 +92,7 @@ RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<I
     r.multiplicity_f = static_cast<int>(mult);
     if (s.degree() >= 0 && ak.is_zero_at_1_object()(s, root))
       r.multiplicity_s = ak.is_zero_at_1_object()(ds, root) ? 2 : 1;
-    for (const Rational& q : rationals)
-      if (ak.compare_1_object()(root, Root(q)) == CGAL::EQUAL) r.exact = q;
+    r.exact = rational_value(ak, root, fc);
     real_with_mult += r.multiplicity_f;
     rs.real_roots.push_back(std::move(r));
   }

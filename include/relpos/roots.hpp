@@ -27,6 +27,9 @@ struct RealRoot {
   int multiplicity_s = 0;            ///< multiplicity as a root of s (0, 1 or 2)
   std::optional<Rational> exact;     ///< the root itself when it is rational
   Rational lower, upper;             ///< isolating interval: the root is the only root of f in it
+  /// The multiplicity rule of math.md section 3. It characterises tangency for *small* pairs; for a
+  /// pair that is not small a root can be a tangency with a smaller excess (e.g. contact along a
+  /// circle), so outside smallness read it only as "multiple in f~".
   bool tangency() const { return multiplicity_f - multiplicity_s >= 2; }
 };
 

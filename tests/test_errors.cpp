@@ -1,0 +1,161 @@
+// Every input that is not an ellipsoid / elliptic paraboloid pair gets relpos::InputError with a
+// message that names what was found (math.md section 1).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "support/construct.hpp"
+#include "support/printers.hpp"
+
+#include <relpos/classify.hpp>
+#include <relpos/error.hpp>
+#include <relpos/numbers.hpp>
+#include <relpos/quadric.hpp>
+
+using namespace rt;
+using Catch::Matchers::Contains;
+using relpos::Ellipsoid;
+using relpos::InputError;
+using relpos::Paraboloid;
+
+namespace {
+
+struct Bad {
+  const char* equation;
+  Matrix4 m;
+  const char* name;  ///< what the message must say
+};
+
+Matrix4 with_linear(Matrix4 m, int i, const Rational& v) {
+  set_sym(m, i, 3, v / 2);
+  return m;
+}
+
+/// Quadrics that are neither an ellipsoid nor an elliptic paraboloid, with the name of their type.
+std::vector<Bad> bad_quadrics() {
+  const Rational one(1), zero(0), m1(-1);
+  return {
+      {"hyperboloid of one sheet x^2+y^2-z^2=1", diag4(one, one, m1, m1), "hyperboloid of one sheet"},
+      {"hyperboloid of two sheets x^2+y^2-z^2=-1", diag4(one, one, m1, one), "hyperboloid of two sheets"},
+      {"cone x^2+y^2=z^2", diag4(one, one, m1, zero), "cone"},
+      {"elliptic cylinder x^2+2y^2=1", diag4(one, Q(2), zero, m1), "elliptic cylinder"},
+      {"hyperbolic cylinder x^2-y^2=1", diag4(one, m1, zero, m1), "hyperbolic cylinder"},
+      {"parabolic cylinder x^2=z", with_linear(diag4(one, zero, zero, zero), 2, m1), "parabolic cylinder"},
+      {"imaginary ellipsoid x^2+y^2+z^2=-1", diag4(one, one, one, one), "imaginary ellipsoid"},
+      {"point x^2+y^2+z^2=0", diag4(one, one, one, zero), "point"},
+      {"hyperbolic paraboloid x^2-y^2=z", with_linear(diag4(one, m1, zero, zero), 2, m1), "hyperbolic paraboloid"},
+      {"imaginary elliptic cylinder x^2+y^2=-1", diag4(one, one, zero, one), "imaginary elliptic cylinder"},
+      {"line x^2+y^2=0", diag4(one, one, zero, zero), "line"},
+      {"intersecting planes x^2=y^2", diag4(one, m1, zero, zero), "intersecting planes"},
+      {"parallel planes x^2=1", diag4(one, zero, zero, m1), "parallel planes"},
+      {"imaginary parallel planes x^2=-1", diag4(one, zero, zero, one), "imaginary parallel planes"},
+      {"double plane x^2=0", diag4(one, zero, zero, zero), "double plane"},
+      {"plane z=0", with_linear(Matrix4{}, 2, one), "plane"},
+      {"zero matrix", Matrix4{}, "without quadratic terms"},
+  };
+}
+
+}  // namespace
+
+TEST_CASE("non-ellipsoids are rejected with their type named", "[errors][quadric]") {
+  for (const auto& b : bad_quadrics()) {
+    CAPTURE(b.equation);
+    CHECK_THROWS_AS(Ellipsoid::from_matrix(b.m), InputError);
+    CHECK_THROWS_WITH(Ellipsoid::from_matrix(b.m), Contains(b.name));
+    CHECK_THROWS_WITH(Ellipsoid::from_matrix(scaled(b.m, Q(-2))), Contains(b.name));
+    CHECK_THROWS_WITH(Ellipsoid::from_matrix(b.m), Contains("not an ellipsoid"));
+  }
+}
+
+TEST_CASE("non-paraboloids are rejected with their type named", "[errors][quadric]") {
+  for (const auto& b : bad_quadrics()) {
+    CAPTURE(b.equation);
+    CHECK_THROWS_AS(Paraboloid::from_matrix(b.m), InputError);
+    CHECK_THROWS_WITH(Paraboloid::from_matrix(b.m), Contains(b.name));
+    CHECK_THROWS_WITH(Paraboloid::from_matrix(scaled(b.m, Q(-3))), Contains(b.name));
+    CHECK_THROWS_WITH(Paraboloid::from_matrix(b.m), Contains("not an elliptic paraboloid"));
+  }
+}
+
+TEST_CASE("the type is named after any affine congruence too", "[errors][quadric][random]") {
+  const std::uint64_t seed = 0xE770;
+  Rng g(seed);
+  CAPTURE(seed);
+  for (int round = 0; round < 5; ++round)
+    for (const auto& b : bad_quadrics()) {
+      CAPTURE(round, b.equation);
+      const Matrix4 m = scaled(congruence(b.m, random_congruence(g).h), g.nonzero_rational(-5, 5, 3));
+      CHECK_THROWS_WITH(Ellipsoid::from_matrix(m), Contains(b.name));
+      CHECK_THROWS_WITH(Paraboloid::from_matrix(m), Contains(b.name));
+    }
+}
+
+TEST_CASE("paraboloid and ellipsoid swapped", "[errors][quadric]") {
+  const Matrix4 p = paraboloid_matrix(Q(1), Q(2));
+  const Matrix4 e = sphere_matrix({Q(0), Q(0), Q(1)}, Q(1, 2));
+  CHECK_THROWS_AS(Ellipsoid::from_matrix(p), InputError);
+  CHECK_THROWS_WITH(Ellipsoid::from_matrix(p), Contains("swapped") && Contains("elliptic paraboloid"));
+  CHECK_THROWS_AS(Paraboloid::from_matrix(e), InputError);
+  CHECK_THROWS_WITH(Paraboloid::from_matrix(e), Contains("swapped") && Contains("ellipsoid"));
+  // Also through the coefficient constructors and after congruences.
+  relpos::Coefficients10 pc{Q(1), Q(1, 4), Q(0), Q(0), Q(0), Q(0), Q(0), Q(0), Q(-1), Q(0)};
+  CHECK_THROWS_WITH(Ellipsoid::from_coefficients(pc), Contains("swapped"));
+  Rng g(0xE771);
+  for (int i = 0; i < 10; ++i) {
+    const Matrix4 h = random_congruence(g).h;
+    CHECK_THROWS_WITH(Ellipsoid::from_matrix(congruence(p, h)), Contains("swapped"));
+    CHECK_THROWS_WITH(Paraboloid::from_matrix(congruence(e, h)), Contains("swapped"));
+  }
+}
+
+TEST_CASE("rank-deficient matrices are rejected", "[errors][quadric][random]") {
+  // B^T D B with D = diag(d1, d2, d3, 0) has rank <= 3 whatever B: never an ellipsoid (det = 0)
+  // nor an elliptic paraboloid (det != 0 required).
+  Rng g(0xE772);
+  for (int i = 0; i < 40; ++i) {
+    Matrix4 b;
+    for (auto& v : b.a) v = g.rational(-4, 4, 2);
+    const Matrix4 d = diag4(g.rational(-3, 3, 1), g.rational(-3, 3, 1), g.rational(-3, 3, 1), Q(0));
+    const Matrix4 m = congruence(d, b);
+    CAPTURE(i);
+    REQUIRE(det4(m) == 0);
+    CHECK_THROWS_AS(Ellipsoid::from_matrix(m), InputError);
+    CHECK_THROWS_AS(Paraboloid::from_matrix(m), InputError);
+  }
+}
+
+TEST_CASE("non-symmetric matrices are rejected", "[errors][quadric]") {
+  Matrix4 e = sphere_matrix({Q(0), Q(0), Q(0)}, Q(1));
+  e(0, 1) = Q(1, 3);  // e(1, 0) stays 0
+  CHECK_THROWS_AS(Ellipsoid::from_matrix(e), InputError);
+  CHECK_THROWS_WITH(Ellipsoid::from_matrix(e), Contains("not symmetric"));
+  CHECK_THROWS_WITH(relpos::classify_quadric(e), Contains("not symmetric"));
+  Matrix4 p = paraboloid_matrix(Q(1), Q(1));
+  p(3, 2) = Q(1, 2);  // p(2, 3) = -1/2
+  CHECK_THROWS_AS(Paraboloid::from_matrix(p), InputError);
+  CHECK_THROWS_WITH(Paraboloid::from_matrix(p), Contains("not symmetric"));
+}
+
+TEST_CASE("non-finite doubles and malformed number text", "[errors][numbers]") {
+  CHECK_THROWS_AS(relpos::exact_rational(std::numeric_limits<double>::quiet_NaN()), InputError);
+  CHECK_THROWS_AS(relpos::exact_rational(std::numeric_limits<double>::infinity()), InputError);
+  CHECK_THROWS_AS(relpos::exact_rational(-std::numeric_limits<double>::infinity()), InputError);
+  for (const char* bad : {"1.2.3", "1/0", "", "abc", "1e", "0x10"}) {
+    CAPTURE(bad);
+    CHECK_THROWS_AS(relpos::parse_rational(bad), InputError);
+    if (*bad) CHECK_THROWS_WITH(relpos::parse_rational(bad), Contains(bad));
+  }
+}
+
+TEST_CASE("InputError is the one exception type and an std::invalid_argument", "[errors]") {
+  try {
+    Ellipsoid::from_matrix(diag4(Q(1), Q(1), Q(-1), Q(-1)));
+    FAIL("no exception");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("hyperboloid of one sheet") != std::string::npos);
+    CHECK(dynamic_cast<const InputError*>(&e) != nullptr);
+  }
+}

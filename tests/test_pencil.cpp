@@ -1,0 +1,397 @@
+// pencil.hpp, sturm.hpp, smallness.hpp, roots.hpp: the polynomials and the exact tools that read them.
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "support/construct.hpp"
+#include "support/printers.hpp"
+
+#include <relpos/classify.hpp>
+#include <relpos/pencil.hpp>
+#include <relpos/roots.hpp>
+#include <relpos/smallness.hpp>
+#include <relpos/sturm.hpp>
+
+using namespace rt;
+using relpos::characteristic_polynomial;
+using relpos::special_polynomial;
+
+namespace {
+
+Quartic<Integer> to_integer(const Quartic<Rational>& f) {
+  // Only for polynomials with integer coefficients.
+  Quartic<Integer> out;
+  for (std::size_t i = 0; i < 5; ++i) {
+    REQUIRE(f[i].denominator() == 1);
+    out[i] = f[i].numerator();
+  }
+  return out;
+}
+
+Quadratic<Integer> to_integer(const Quadratic<Rational>& s) {
+  Quadratic<Integer> out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    REQUIRE(s[i].denominator() == 1);
+    out[i] = s[i].numerator();
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("characteristic_polynomial is the paper's closed form (eq. 4) for spheres", "[pencil]") {
+  const std::uint64_t seed = 0xF00D;
+  Rng g(seed);
+  CAPTURE(seed);
+  for (int i = 0; i < 150; ++i) {
+    const Rational a = g.positive_rational(9, 4), b = g.positive_rational(9, 4), r = g.positive_rational(9, 4);
+    const Vector3 c{g.rational(-9, 9, 4), g.rational(-9, 9, 4), g.rational(-9, 9, 4)};
+    CAPTURE(relpos::to_string(a), relpos::to_string(b), relpos::to_string(r));
+    const Matrix4 e = sphere_matrix(c, r), p = paraboloid_matrix(a, b);
+    const Quartic<Rational> f = characteristic_polynomial<Rational>(p, e);
+    const Quartic<Rational> want = paper_f(a, b, c, r);
+    for (std::size_t k = 0; k < 5; ++k) CHECK(f[k] == want[k]);
+    CHECK(f[4] == det4(p));  // leading coefficient det P
+    CHECK(f[0] == det4(e));  // constant term det E = -r^2
+    CHECK(f[0] == -r * r);
+    // At a few rational lambdas, f is det(lambda P + E) computed by elimination.
+    for (long num : {-3L, -1L, 2L}) {
+      const Rational l = Q(num, 2);
+      Matrix4 pencil;
+      for (std::size_t k = 0; k < 16; ++k) pencil.a[k] = l * p.a[k] + e.a[k];
+      CHECK(eval(f, l) == det4(pencil));
+    }
+    const Quadratic<Rational> s = special_polynomial<Rational>(p, e);
+    const Quadratic<Rational> ws = paper_s(a, b);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(s[k] == ws[k]);
+    CHECK(eval(s, -a * a) == 0);
+    CHECK(eval(s, -b * b) == 0);
+  }
+}
+
+TEST_CASE("f and s are congruence invariants: f_H = det(H)^2 f, s_H = det(L)^2 s", "[pencil][random]") {
+  const std::uint64_t seed = 0xBEEF01;
+  Rng g(seed);
+  CAPTURE(seed);
+  for (int i = 0; i < 100; ++i) {
+    CAPTURE(i);
+    // Arbitrary symmetric matrices: the identity holds for any pencil.
+    Matrix4 e, p;
+    for (int r = 0; r < 4; ++r)
+      for (int c = r; c < 4; ++c) {
+        set_sym(e, r, c, g.rational(-6, 6, 3));
+        set_sym(p, r, c, g.rational(-6, 6, 3));
+      }
+    Congruence h = random_congruence(g);
+    const auto f = characteristic_polynomial<Rational>(p, e);
+    const auto fh = characteristic_polynomial<Rational>(congruence(p, h.h), congruence(e, h.h));
+    for (std::size_t k = 0; k < 5; ++k) CHECK(fh[k] == h.det * h.det * f[k]);
+    // s drops the cubic term det A, so compare on matrices whose A has rank 2 (paraboloids).
+    const Matrix4 par = paraboloid_matrix(g.positive_rational(5, 3), g.positive_rational(5, 3));
+    const auto s = special_polynomial<Rational>(par, e);
+    const auto sh = special_polynomial<Rational>(congruence(par, h.h), congruence(e, h.h));
+    for (std::size_t k = 0; k < 3; ++k) CHECK(sh[k] == h.det * h.det * s[k]);
+  }
+}
+
+TEST_CASE("the generic pencil code gives the same polynomial over Z, Q and doubles", "[pencil]") {
+  // Integer matrices: the Integer and double instantiations must agree exactly (small values).
+  Rng g(31337);
+  for (int i = 0; i < 30; ++i) {
+    std::array<Integer, 16> ei{}, pi{};
+    std::array<double, 16> ed{}, pd{};
+    Matrix4 eq, pq;
+    for (int r = 0; r < 4; ++r)
+      for (int c = r; c < 4; ++c) {
+        long x = g.uniform(-9, 9), y = g.uniform(-9, 9);
+        for (auto idx : {4 * r + c, 4 * c + r}) {
+          const auto k = static_cast<std::size_t>(idx);
+          ei[k] = Integer(x);
+          pi[k] = Integer(y);
+          ed[k] = static_cast<double>(x);
+          pd[k] = static_cast<double>(y);
+        }
+        set_sym(eq, r, c, Q(x));
+        set_sym(pq, r, c, Q(y));
+      }
+    struct MI {
+      std::array<Integer, 16> a;
+      const Integer& operator()(int r, int c) const { return a[static_cast<std::size_t>(4 * r + c)]; }
+    };
+    struct MD {
+      std::array<double, 16> a;
+      const double& operator()(int r, int c) const { return a[static_cast<std::size_t>(4 * r + c)]; }
+    };
+    const auto fz = characteristic_polynomial<Integer>(MI{pi}, MI{ei});
+    const auto fd = characteristic_polynomial<double>(MD{pd}, MD{ed});
+    const auto fq = characteristic_polynomial<Rational>(pq, eq);
+    for (std::size_t k = 0; k < 5; ++k) {
+      CHECK(Rational(fz[k]) == fq[k]);
+      CHECK(Rational(fd[k]) == fq[k]);  // all values are small integers: exact in double
+    }
+  }
+}
+
+TEST_CASE("Sturm-Habicht root counts on quartics with known roots", "[sturm]") {
+  struct Known {
+    std::array<Rational, 4> roots;
+    int real, negative, positive;
+  };
+  const std::vector<Known> known = {
+      {{Q(-1), Q(-2), Q(-3), Q(-4)}, 4, 4, 0},
+      {{Q(-1), Q(-2), Q(3), Q(5)}, 4, 2, 2},
+      {{Q(1, 3), Q(2), Q(-7, 2), Q(9)}, 4, 1, 3},
+      {{Q(1), Q(2), Q(3), Q(4)}, 4, 0, 4},
+  };
+  for (const auto& k : known)
+    for (int lead : {1, -3}) {
+      const Quartic<Rational> f = quartic_from_roots(Q(lead), k.roots);
+      relpos::SturmHabicht<Rational> sh(f);
+      auto c = relpos::count_roots(f, sh);
+      REQUIRE(c.has_value());
+      CHECK(c->real == k.real);
+      CHECK(c->negative == k.negative);
+      CHECK(c->positive == k.positive);
+      CHECK(sh.discriminant() > 0);
+    }
+  // Non-real roots: (l^2 + 1)(l + 1)(l - 2): 2 real; (l^2 + 1)(l^2 + 4): none;
+  // (l^2 - 2l + 5)(l + 3)(l + 5/2): 2 real negative.
+  auto times = [](const std::array<Rational, 3>& p, const std::array<Rational, 3>& q) {
+    Quartic<Rational> f{};
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) f[i + j] += p[i] * q[j];
+    return f;
+  };
+  struct KnownPoly {
+    Quartic<Rational> f;
+    int real, negative, positive, disc_sign;
+  };
+  const std::vector<KnownPoly> polys = {
+      {times({Q(1), Q(0), Q(1)}, {Q(-2), Q(-1), Q(1)}), 2, 1, 1, -1},
+      {times({Q(1), Q(0), Q(1)}, {Q(4), Q(0), Q(1)}), 0, 0, 0, 1},
+      {times({Q(5), Q(-2), Q(1)}, {Q(15, 2), Q(11, 2), Q(1)}), 2, 2, 0, -1},
+  };
+  for (const auto& k : polys) {
+    relpos::SturmHabicht<Rational> sh(k.f);
+    auto c = relpos::count_roots(k.f, sh);
+    REQUIRE(c.has_value());
+    CHECK(c->real == k.real);
+    CHECK(c->negative == k.negative);
+    CHECK(c->positive == k.positive);
+    CHECK(sgn(sh.discriminant()) == k.disc_sign);
+  }
+  // A double root makes the sequence defective (Disc = 0): no answer, the caller goes exact.
+  const Quartic<Rational> dbl = quartic_from_roots(Q(1), {Q(-1), Q(-1), Q(2), Q(3)});
+  relpos::SturmHabicht<Rational> sh(dbl);
+  CHECK(sh.discriminant() == 0);
+  CHECK_FALSE(relpos::count_roots(dbl, sh).has_value());
+}
+
+TEST_CASE("the Sturm-Habicht g0 is the discriminant of f", "[sturm][random]") {
+  Rng g(8080);
+  for (int i = 0; i < 200; ++i) {
+    Quartic<Rational> f{g.nonzero_rational(-9, 9, 3), g.rational(-9, 9, 3), g.rational(-9, 9, 3), g.rational(-9, 9, 3),
+                        g.nonzero_rational(-9, 9, 3)};
+    relpos::SturmHabicht<Rational> sh(f);
+    CHECK(sh.discriminant() == quartic_discriminant(f));
+  }
+  // And the 16-term formula itself: Disc = a^6 prod (ri - rj)^2.
+  const std::array<Rational, 4> r{Q(-1), Q(2), Q(1, 2), Q(5)};
+  Rational prod(1);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = i + 1; j < 4; ++j) prod *= (r[i] - r[j]) * (r[i] - r[j]);
+  CHECK(quartic_discriminant(quartic_from_roots(Q(3), r)) == pow_q(Q(3), 6) * prod);
+}
+
+TEST_CASE("compare_rho_with_one: rho = 4 r^2 / min(a,b)^4 against 1", "[smallness]") {
+  struct Case {
+    Rational a, b, r;
+    int want;
+  };
+  const std::vector<Case> cases = {
+      {Q(1), Q(2), Q(1, 4), -1}, {Q(1), Q(2), Q(1, 2), 0},   {Q(1), Q(2), Q(3, 4), 1},  {Q(2), Q(1), Q(1, 2), 0},
+      {Q(2), Q(1), Q(1, 2) + Q(1, 1000000), 1},              {Q(2), Q(1), Q(1, 2) - Q(1, 1000000), -1},
+      {Q(1), Q(1), Q(1, 2), 0}, {Q(1), Q(1), Q(2), 1},       {Q(6, 5), Q(3, 2), Q(1, 4), -1},
+      {Q(6, 5), Q(3, 2), Q(18, 25), 0},                      {Q(3, 2), Q(6, 5), Q(18, 25), 0},
+  };
+  Rng g(11);
+  for (const auto& k : cases) {
+    CAPTURE(relpos::to_string(k.a), relpos::to_string(k.b), relpos::to_string(k.r));
+    for (int rep = 0; rep < 5; ++rep) {
+      const Vector3 c{g.rational(-5, 5, 2), g.rational(-5, 5, 2), g.rational(-5, 5, 2)};
+      const auto f = paper_f(k.a, k.b, c, k.r);
+      const auto s = paper_s(k.a, k.b);
+      auto cmp = relpos::compare_rho_with_one(f, s);
+      REQUIRE(cmp.has_value());
+      CHECK(*cmp == k.want);
+      // Independent of positive rescalings of the pencil (lambda -> t lambda, f -> u f, s -> v s).
+      const Rational t = g.positive_rational(9, 7), u = g.positive_rational(9, 7), v = g.positive_rational(9, 7);
+      Quartic<Rational> f2;
+      Quadratic<Rational> s2;
+      for (int i = 0; i < 5; ++i) f2[static_cast<std::size_t>(i)] = u * pow_q(t, i) * f[static_cast<std::size_t>(i)];
+      for (int i = 0; i < 3; ++i) s2[static_cast<std::size_t>(i)] = v * pow_q(t, i) * s[static_cast<std::size_t>(i)];
+      auto cmp2 = relpos::compare_rho_with_one(f2, s2);
+      REQUIRE(cmp2.has_value());
+      CHECK(*cmp2 == k.want);
+    }
+  }
+}
+
+TEST_CASE("exact_root_structure on polynomials with known factorizations", "[roots]") {
+  using relpos::exact_root_structure;
+  SECTION("generic: four simple roots, none shared with s") {
+    const auto f = to_integer(quartic_from_roots(Q(-2), {Q(-5), Q(-1), Q(3), Q(7)}));
+    const auto s = to_integer(Quadratic<Rational>{Q(6), Q(5), Q(1)});  // (l + 2)(l + 3)
+    auto rs = exact_root_structure(f, s);
+    REQUIRE(rs.real_roots.size() == 4);
+    CHECK(rs.nonreal == 0);
+    CHECK(rs.degree_ftilde == 4);
+    CHECK(rs.sign_disc_f == 1);
+    CHECK(rs.sign_disc_ftilde == 1);
+    CHECK(rs.negative() == 2);
+    CHECK(rs.positive() == 2);
+    const Rational want[4] = {Q(-5), Q(-1), Q(3), Q(7)};
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& r = rs.real_roots[i];
+      CHECK(r.multiplicity_f == 1);
+      CHECK(r.multiplicity_s == 0);
+      CHECK(r.lower <= want[i]);
+      CHECK(want[i] <= r.upper);
+      CHECK(!r.tangency());
+      CHECK(r.sign == sgn(want[i]));
+    }
+  }
+  SECTION("the Section 3 crossing: (l + 4)^2 (48 l^2 - 13 l + 3), s with root -4") {
+    // a = 1, b = 2: s = (1 + l)(1 + l/4) ~ (l + 1)(l + 4).
+    // expand (l^2 + 8 l + 16)(48 l^2 - 13 l + 3)
+    const Rational p[3] = {Q(16), Q(8), Q(1)}, q[3] = {Q(3), Q(-13), Q(48)};
+    Quartic<Rational> f{};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) f[static_cast<std::size_t>(i + j)] += p[i] * q[j];
+    auto rs = exact_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(4), Q(5), Q(1)}));
+    CHECK(rs.degree_ftilde == 3);
+    CHECK(rs.sign_disc_f == 0);
+    CHECK(rs.sign_disc_ftilde == -1);  // f~ = (l + 4)(48 l^2 - 13 l + 3): a non-real pair
+    CHECK(rs.nonreal == 2);
+    CHECK(rs.nonreal_multiple == 0);
+    REQUIRE(rs.real_roots.size() == 1);
+    CHECK(rs.real_roots[0].multiplicity_f == 2);
+    CHECK(rs.real_roots[0].multiplicity_s == 1);
+    REQUIRE(rs.real_roots[0].exact.has_value());
+    CHECK(*rs.real_roots[0].exact == -4);
+    CHECK_FALSE(rs.real_roots[0].tangency());
+  }
+  SECTION("quadruple root shared with a double root of s: tangency (4 - 2 >= 2)") {
+    const auto f = to_integer(quartic_from_roots(Q(-1), {Q(-1), Q(-1), Q(-1), Q(-1)}));
+    auto rs = exact_root_structure(f, to_integer(Quadratic<Rational>{Q(1), Q(2), Q(1)}));
+    REQUIRE(rs.real_roots.size() == 1);
+    CHECK(rs.real_roots[0].multiplicity_f == 4);
+    CHECK(rs.real_roots[0].multiplicity_s == 2);
+    CHECK(rs.real_roots[0].tangency());
+    CHECK(rs.degree_ftilde == 2);
+    CHECK(rs.sign_disc_ftilde == 0);
+  }
+  SECTION("double pair of non-real roots is reported") {
+    // (l^2 + 1)^2
+    const Quartic<Integer> f{Integer(1), Integer(0), Integer(2), Integer(0), Integer(1)};
+    auto rs = exact_root_structure(f, to_integer(Quadratic<Rational>{Q(2), Q(3), Q(1)}));
+    CHECK(rs.real_roots.empty());
+    CHECK(rs.nonreal == 4);
+    CHECK(rs.nonreal_multiple > 0);
+    CHECK(rs.sign_disc_f == 0);
+  }
+  SECTION("irrational simple roots: isolating intervals are disjoint, increasing and bracket a sign change") {
+    // (l^2 - 2)(l^2 - 6 l + 7): roots -sqrt2, sqrt2, 3 - sqrt2, 3 + sqrt2.
+    Quartic<Rational> f{};
+    const Rational p[3] = {Q(-2), Q(0), Q(1)}, q[3] = {Q(7), Q(-6), Q(1)};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) f[static_cast<std::size_t>(i + j)] += p[i] * q[j];
+    auto rs = exact_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(1), Q(3), Q(1)}));
+    REQUIRE(rs.real_roots.size() == 4);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& r = rs.real_roots[i];
+      CHECK_FALSE(r.exact.has_value());
+      CHECK(r.lower < r.upper);
+      CHECK(eval(f, r.lower) * eval(f, r.upper) < 0);
+      if (i > 0) CHECK(rs.real_roots[i - 1].upper < r.lower);
+    }
+    // 3 - sqrt2 = 1.5857... lies in the third interval.
+    CHECK(rs.real_roots[2].lower < Q(15858, 10000));
+    CHECK(rs.real_roots[2].upper > Q(15857, 10000));
+  }
+}
+
+TEST_CASE("RealRoot::exact is set for every rational root, simple ones included", "[roots][bug]") {
+  // roots.hpp documents RealRoot::exact as "the root itself when it is rational". A square-free
+  // quartic that splits over Q has four rational simple roots.
+  const auto f = to_integer(quartic_from_roots(Q(-2), {Q(-5), Q(-1), Q(3), Q(7)}));
+  const auto s = to_integer(Quadratic<Rational>{Q(6), Q(5), Q(1)});
+  auto rs = relpos::exact_root_structure(f, s);
+  REQUIRE(rs.real_roots.size() == 4);
+  const Rational want[4] = {Q(-5), Q(-1), Q(3), Q(7)};
+  for (std::size_t i = 0; i < 4; ++i) {
+    CAPTURE(i);
+    REQUIRE(rs.real_roots[i].exact.has_value());
+    CHECK(*rs.real_roots[i].exact == want[i]);
+  }
+}
+
+TEST_CASE("Classification::roots gives the rational simple roots -a^2, -b^2 exactly", "[roots][bug]") {
+  // Sphere centred (0, 0, 1), r = 1/4, paraboloid x^2 + y^2/4 = z: by eq. (4)
+  // f = -(l + 1)(l + 4)(l^2 + 4 l + 1/4) / 16, so -1 and -4 are rational (simple) roots of f.
+  const auto e = relpos::Ellipsoid::sphere({Q(0), Q(0), Q(1)}, Q(1, 4));
+  const auto p = relpos::Paraboloid::standard({Q(0), Q(0), Q(0)}, Q(1), Q(2));
+  const relpos::Classification c = relpos::classify(e, p);
+  REQUIRE(c.position == relpos::Position::I);
+  int found = 0;
+  for (const auto& r : c.roots)
+    for (const Rational& x : {Q(-1), Q(-4)})
+      if (r.lower <= x && x <= r.upper) {
+        CAPTURE(relpos::to_string(x));
+        ++found;
+        REQUIRE(r.exact.has_value());
+        CHECK(*r.exact == x);
+      }
+  CHECK(found == 2);
+}
+
+TEST_CASE("sign_of_discriminant for degrees 1 to 4", "[roots]") {
+  using relpos::sign_of_discriminant;
+  CHECK(sign_of_discriminant({Integer(3), Integer(2)}) == 1);
+  CHECK(sign_of_discriminant({Integer(2), Integer(-3), Integer(1)}) == 1);   // (l-1)(l-2)
+  CHECK(sign_of_discriminant({Integer(1), Integer(0), Integer(1)}) == -1);   // l^2 + 1
+  CHECK(sign_of_discriminant({Integer(1), Integer(-2), Integer(1)}) == 0);   // (l-1)^2
+  CHECK(sign_of_discriminant({Integer(-2), Integer(0), Integer(-1)}) == -1);  // -(l^2 + 2)
+  CHECK(sign_of_discriminant({Integer(-6), Integer(11), Integer(-6), Integer(1)}) == 1);  // (l-1)(l-2)(l-3)
+  CHECK(sign_of_discriminant({Integer(-1), Integer(1), Integer(-1), Integer(1)}) == -1);  // (l-1)(l^2+1)
+  CHECK(sign_of_discriminant({Integer(0), Integer(0), Integer(1), Integer(1)}) == 0);     // l^2 (l+1)
+  Rng g(2718);
+  for (int i = 0; i < 100; ++i) {
+    Quartic<Rational> f{Q(g.uniform(-20, 20)), Q(g.uniform(-20, 20)), Q(g.uniform(-20, 20)), Q(g.uniform(-20, 20)),
+                        Q(g.uniform(1, 20) * (g.chance(50) ? 1 : -1))};
+    CHECK(sign_of_discriminant({f[0].numerator(), f[1].numerator(), f[2].numerator(), f[3].numerator(), f[4].numerator()}) ==
+          sgn(quartic_discriminant(f)));
+  }
+}
+
+TEST_CASE("real_root_decimals: certified digits", "[roots]") {
+  // (l^2 - 2)(l + 3)(l - 1/2) * 2: -3, -1.41421356..., 0.5, 1.41421356...
+  Quartic<Rational> f{};
+  const Rational p[3] = {Q(-2), Q(0), Q(1)}, q[3] = {Q(-3), Q(5), Q(2)};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) f[static_cast<std::size_t>(i + j)] += p[i] * q[j];
+  auto d = relpos::real_root_decimals(to_integer(f), 8);
+  REQUIRE(d.size() == 4);
+  // Each decimal is within one unit of its 8th significant digit (10^-7 here) of the true root.
+  const Rational unit(1, 10000000);
+  CHECK(rabs(relpos::parse_rational(d[0]) + 3) <= unit * 10);
+  CHECK(rabs(relpos::parse_rational(d[2]) - Q(1, 2)) <= unit);
+  for (std::size_t i : {std::size_t(1), std::size_t(3)}) {
+    const Rational x = rabs(relpos::parse_rational(d[i]));  // sqrt 2 = 1.41421356...
+    CAPTURE(d[i]);
+    CHECK((x - unit) * (x - unit) < 2);
+    CHECK(2 < (x + unit) * (x + unit));
+  }
+  CHECK(relpos::parse_rational(d[1]) < 0);
+  CHECK(relpos::parse_rational(d[3]) > 0);
+}
