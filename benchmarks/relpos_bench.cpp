@@ -107,7 +107,7 @@ using Interval = CGAL::Interval_nt<false>;
 struct Pair {
   Ellipsoid e;
   Paraboloid p;
-  std::array<double, 16> ed{}, pd{};                // nearest doubles (what a float user sees)
+  std::array<double, 16> ed{}, pd{};                  // nearest doubles (what a float user sees)
   std::array<double, 16> elo{}, ehi{}, plo{}, phi{};  // enclosures of the exact entries
   Position truth = Position::Unclassified;
   bool exact_doubles = false;
@@ -206,7 +206,9 @@ std::vector<Config> tangent_configs() {
     }
   // Off the axis of z = x^2 + y^2: point (x, y, x^2 + y^2), inward normal n = (-2x, -2y, 1) with
   // |n| = m rational; r = m 2^-k keeps the centre point +- (r/m) n dyadic.
-  struct Pt { int x, y, m; };
+  struct Pt {
+    int x, y, m;
+  };
   const Pt pts[4] = {{1, 1, 3}, {2, 4, 9}, {4, 2, 9}, {6, 6, 17}};
   Matrix4 P = axis_paraboloid(Rational(1), Rational(1));
   for (const Pt& q : pts)
@@ -236,11 +238,11 @@ std::vector<Pair> family_c(const std::vector<Config>& cs, int k, bool sym) {
   const Rational delta = Rational(1) / Rational(CGAL::Gmpz(1) << k);
   for (const auto& c : cs)
     if (c.sym == sym)
-    for (int side : {1, -1}) {
-      Vector3 ctr{c.centre[0] + side * delta * c.dir[0], c.centre[1] + side * delta * c.dir[1],
-                  c.centre[2] + side * delta * c.dir[2]};
-      out.emplace_back(Ellipsoid::sphere(ctr, c.r), Paraboloid::from_matrix(c.P));
-    }
+      for (int side : {1, -1}) {
+        Vector3 ctr{c.centre[0] + side * delta * c.dir[0], c.centre[1] + side * delta * c.dir[1],
+                    c.centre[2] + side * delta * c.dir[2]};
+        out.emplace_back(Ellipsoid::sphere(ctr, c.r), Paraboloid::from_matrix(c.P));
+      }
   return out;
 }
 
@@ -275,7 +277,8 @@ Result measure(const std::vector<Pair>& v, F method, double budget_s, const std:
   for (std::size_t i = 0; i < v.size(); ++i) {
     Answer a = method(v[i]);
     if (a.stage >= 0 && a.stage < 4) ++res.stages[static_cast<std::size_t>(a.stage)];
-    if (!a.pos) ++undecided;
+    if (!a.pos)
+      ++undecided;
     else if (*a.pos != v[i].truth) {
       ++wrong;
       if (label == "adaptive") {
@@ -323,9 +326,8 @@ struct Method {
 
 std::vector<Method> methods() {
   std::vector<Method> ms;
-  ms.push_back({"naive-double", [](const Pair& x) {
-                  return Answer{float_classify<double>(x.pd, x.ed, [](double d) { return d; })};
-                }});
+  ms.push_back({"naive-double",
+                [](const Pair& x) { return Answer{float_classify<double>(x.pd, x.ed, [](double d) { return d; })}; }});
   ms.push_back({"long-double", [](const Pair& x) {
                   return Answer{float_classify<long double>(x.pd, x.ed, [](double d) { return (long double)d; })};
                 }});
@@ -350,9 +352,7 @@ std::vector<Method> methods() {
                   SmallnessQuantities<Interval> sq(f, s);
                   return Answer{naive_table(signs_of(f, sh), sign_of(sq.vertex), sign_of(sq.graeffe))};
                 }});
-  ms.push_back({"exact", [](const Pair& x) {
-                  return Answer{classify_exact(x.e, x.p, Evidence::Minimal).position};
-                }});
+  ms.push_back({"exact", [](const Pair& x) { return Answer{classify_exact(x.e, x.p, Evidence::Minimal).position}; }});
   ms.push_back({"adaptive", [](const Pair& x) {
                   Verdict v = decide_position(x.e, x.p);
                   return Answer{v.position, static_cast<int>(v.stage)};
@@ -384,9 +384,12 @@ int main(int argc, char** argv) {
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    if (a == "--seed" && i + 1 < argc) seed = std::stoul(argv[++i]);
-    else if (a == "--out" && i + 1 < argc) out_dir = argv[++i];
-    else if (a == "--quick") quick = true;
+    if (a == "--seed" && i + 1 < argc)
+      seed = std::stoul(argv[++i]);
+    else if (a == "--out" && i + 1 < argc)
+      out_dir = argv[++i];
+    else if (a == "--quick")
+      quick = true;
     else {
       std::cerr << "usage: relpos_bench [--seed N] [--out DIR] [--quick]\n";
       return 2;
@@ -448,11 +451,12 @@ int main(int argc, char** argv) {
 
   {
     std::ofstream csv(out_dir + "/results.csv");
-    csv << "family,eps,method,median_ns,error_rate,decided_fraction,n,wrong_decided_rate,delta_log2,exact_double_inputs\n";
+    csv << "family,eps,method,median_ns,error_rate,decided_fraction,n,wrong_decided_rate,delta_log2,exact_double_"
+           "inputs\n";
     for (const auto& r : rows)
-      csv << r.family << "," << r.eps << "," << r.method << "," << fmt(r.r.median_ns) << "," << fmt(r.r.error_rate) << ","
-          << fmt(r.r.decided_fraction) << "," << r.r.n << "," << fmt(r.r.wrong_decided) << "," << (r.k ? -r.k : 0) << ","
-          << r.exact_double_inputs << "\n";
+      csv << r.family << "," << r.eps << "," << r.method << "," << fmt(r.r.median_ns) << "," << fmt(r.r.error_rate)
+          << "," << fmt(r.r.decided_fraction) << "," << r.r.n << "," << fmt(r.r.wrong_decided) << ","
+          << (r.k ? -r.k : 0) << "," << r.exact_double_inputs << "\n";
   }
   {
     std::ofstream csv(out_dir + "/stages.csv");
@@ -475,8 +479,8 @@ int main(int argc, char** argv) {
     js << "{\n  \"seed\": " << seed << ",\n";
     js << "  \"adaptive_over_naive_double_family_a\": " << fmt(ad_a->r.median_ns / nd_a->r.median_ns) << ",\n";
     js << "  \"adaptive_median_family_b_us\": " << fmt(ad_b->r.median_ns / 1000.0) << ",\n";
-    js << "  \"bar_a_met\": " << ((ad_a->r.median_ns <= 1.5 * nd_a->r.median_ns && ad_a->r.error_rate == 0) ? "true" : "false")
-       << ",\n";
+    js << "  \"bar_a_met\": "
+       << ((ad_a->r.median_ns <= 1.5 * nd_a->r.median_ns && ad_a->r.error_rate == 0) ? "true" : "false") << ",\n";
     js << "  \"bar_b_met\": " << (ad_b->r.median_ns <= 2000.0 ? "true" : "false") << ",\n";
     js << "  \"adaptive_misclassifications\": " << (adaptive_wrong ? "true" : "false") << ",\n";
     js << "  \"families\": {\n";

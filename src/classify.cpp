@@ -13,19 +13,26 @@ namespace relpos {
 
 std::string to_string(Position p) {
   switch (p) {
-    case Position::I: return "I";
-    case Position::TI: return "TI";
-    case Position::C: return "C";
-    case Position::TE: return "TE";
-    case Position::E: return "E";
-    case Position::Unclassified: return "unclassified";
+    case Position::I:
+      return "I";
+    case Position::TI:
+      return "TI";
+    case Position::C:
+      return "C";
+    case Position::TE:
+      return "TE";
+    case Position::E:
+      return "E";
+    case Position::Unclassified:
+      return "unclassified";
   }
   return "unclassified";
 }
 
 std::string describe(Rule r) {
   switch (r) {
-    case Rule::None: return "";
+    case Rule::None:
+      return "";
     case Rule::NonRealPairCrossing:
       return "f has a pair of non-real roots and f~ no multiple root (Disc(f~) < 0): crossing contact";
     case Rule::NegativeMultipleRoot:
@@ -35,24 +42,30 @@ std::string describe(Rule r) {
       return "f~ has a positive multiple root (lambda3 = lambda4 > 0): tangent from outside";
     case Rule::AllRootsNegative:
       return "f~ is square-free (Disc(f~) > 0) and all roots of f are real and negative: interior";
-    case Rule::TwoPositiveRoots: return "f has two distinct positive roots (0 < lambda3 < lambda4): separated";
+    case Rule::TwoPositiveRoots:
+      return "f has two distinct positive roots (0 < lambda3 < lambda4): separated";
     case Rule::NotSmallContact:
       return "not small; f has non-real roots, so the surfaces meet (Finsler-Calabi), but the type of contact "
              "needs the full arrangement classification";
     case Rule::NotSmallUnknown:
       return "not small and no positive roots certify separation: interior, tangency from inside and "
              "two-component intersections are beyond the paper's theorem";
-    case Rule::Finding: return "root pattern outside the classification table (reported, not guessed)";
+    case Rule::Finding:
+      return "root pattern outside the classification table (reported, not guessed)";
   }
   return "";
 }
 
 std::string to_string(Stage s) {
   switch (s) {
-    case Stage::StaticDouble: return "static-double";
-    case Stage::Interval: return "interval";
-    case Stage::ExactSigns: return "exact-signs";
-    case Stage::ExactRoots: return "exact-roots";
+    case Stage::StaticDouble:
+      return "static-double";
+    case Stage::Interval:
+      return "interval";
+    case Stage::ExactSigns:
+      return "exact-signs";
+    case Stage::ExactRoots:
+      return "exact-roots";
   }
   return "?";
 }
@@ -79,17 +92,21 @@ void decide(Verdict& v) {
   if (v.nonreal_multiple > 0) return set(Position::Unclassified, -1, Rule::Finding);
   // Valid for any size (math.md section 6: Wang-Wang-Kim through a projective map).
   if (tangencies == 1 && v.tangent_positive == 1)
-    return v.nonreal_roots ? set(Position::Unclassified, 1, Rule::Finding) : set(Position::TE, 1, Rule::PositiveMultipleRoot);
-  if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
+    return v.nonreal_roots ? set(Position::Unclassified, 1, Rule::Finding)
+                           : set(Position::TE, 1, Rule::PositiveMultipleRoot);
+  if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 2)
+    return set(Position::E, 0, Rule::TwoPositiveRoots);
   if (!v.small)
     return v.nonreal_roots > 0 ? set(Position::Unclassified, 1, Rule::NotSmallContact)
                                : set(Position::Unclassified, -1, Rule::NotSmallUnknown);
   // Small: the table of math.md section 3.
   if (tangencies == 0 && v.nonreal_roots == 2)
-    return v.positive_roots ? set(Position::Unclassified, 1, Rule::Finding) : set(Position::C, 1, Rule::NonRealPairCrossing);
+    return v.positive_roots ? set(Position::Unclassified, 1, Rule::Finding)
+                            : set(Position::C, 1, Rule::NonRealPairCrossing);
   if (tangencies == 1 && v.tangent_negative == 1 && v.nonreal_roots == 0 && v.positive_roots == 0)
     return set(Position::TI, 1, Rule::NegativeMultipleRoot);
-  if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 0) return set(Position::I, 0, Rule::AllRootsNegative);
+  if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 0)
+    return set(Position::I, 0, Rule::AllRootsNegative);
   set(Position::Unclassified, -1, Rule::Finding);
 }
 
@@ -132,8 +149,10 @@ MatrixOf<Interval> to_intervals(const Matrix4& m) {
   for (std::size_t i = 0; i < 16; ++i) {
     // Gmpq is reference-counted: write only into a fresh object, never into a shared one.
     Rational q;
-    if (k >= 0) mpq_mul_2exp(q.mpq(), m.a[i].mpq(), static_cast<mp_bitcnt_t>(k));
-    else mpq_div_2exp(q.mpq(), m.a[i].mpq(), static_cast<mp_bitcnt_t>(-k));
+    if (k >= 0)
+      mpq_mul_2exp(q.mpq(), m.a[i].mpq(), static_cast<mp_bitcnt_t>(k));
+    else
+      mpq_div_2exp(q.mpq(), m.a[i].mpq(), static_cast<mp_bitcnt_t>(-k));
     out.a[i] = Interval(CGAL::to_interval(q));
   }
   return out;
@@ -208,7 +227,8 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
     const bool dbl = e.doubles() && p.doubles();
     const MatrixOf<Interval> pi = dbl ? to_intervals(*p.doubles()) : to_intervals(p.matrix());
     const MatrixOf<Interval> ei = dbl ? to_intervals(*e.doubles()) : to_intervals(e.matrix());
-    if (decide_from_signs(signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)), v))
+    if (decide_from_signs(signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)),
+                          v))
       return v;
   }
   if (!exact) exact.emplace(e, p);
@@ -357,15 +377,16 @@ bool kernel_has_common_point(const Ellipsoid& e, const Paraboloid& p, const Rati
     for (std::size_t j = 0; j < n; ++j) {
       Rational acc(0);
       for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) acc += basis[i][static_cast<std::size_t>(a)] * e.matrix()(a, b) * basis[j][static_cast<std::size_t>(b)];
+        for (int b = 0; b < 4; ++b)
+          acc += basis[i][static_cast<std::size_t>(a)] * e.matrix()(a, b) * basis[j][static_cast<std::size_t>(b)];
       g[i * n + j] = acc;
     }
   // Definite iff all leading principal minors alternate properly (Sylvester); n <= 3 in practice.
   auto minor = [&](std::size_t m) {
     if (m == 1) return g[0];
     if (m == 2) return g[0] * g[n + 1] - g[1] * g[n];
-    return g[0] * (g[n + 1] * g[2 * n + 2] - g[n + 2] * g[2 * n + 1]) - g[1] * (g[n] * g[2 * n + 2] - g[n + 2] * g[2 * n]) +
-           g[2] * (g[n] * g[2 * n + 1] - g[n + 1] * g[2 * n]);
+    return g[0] * (g[n + 1] * g[2 * n + 2] - g[n + 2] * g[2 * n + 1]) -
+           g[1] * (g[n] * g[2 * n + 2] - g[n + 2] * g[2 * n]) + g[2] * (g[n] * g[2 * n + 1] - g[n + 1] * g[2 * n]);
   };
   if (n > 3) return true;  // E restricted to all of R^4 is indefinite (ellipsoid has real points)
   bool pos_def = true, neg_def = true;

@@ -140,8 +140,10 @@ std::string to_decimal(const Rational& q, int digits) {
            static_cast<long>(mpz_sizeinbase(a.denominator().mpz(), 10)) - digits + 1;
   auto scaled = [&](long ex) {
     Rational t = a;
-    if (ex >= 0) t /= Rational(power_of_ten(static_cast<unsigned long>(ex)));
-    else t *= Rational(power_of_ten(static_cast<unsigned long>(-ex)));
+    if (ex >= 0)
+      t /= Rational(power_of_ten(static_cast<unsigned long>(ex)));
+    else
+      t *= Rational(power_of_ten(static_cast<unsigned long>(-ex)));
     return t;
   };
   Integer lo = power_of_ten(static_cast<unsigned long>(digits - 1));

@@ -29,8 +29,10 @@ Rational principal_minor(const Matrix4& q, const int* idx, int n) {
     } else if (n == 3) {
       m = q(rows[0], cols[0]) * q(rows[1], cols[1]) - q(rows[0], cols[1]) * q(rows[1], cols[0]);
     } else {
-      m = q(rows[0], cols[0]) * (q(rows[1], cols[1]) * q(rows[2], cols[2]) - q(rows[1], cols[2]) * q(rows[2], cols[1])) -
-          q(rows[0], cols[1]) * (q(rows[1], cols[0]) * q(rows[2], cols[2]) - q(rows[1], cols[2]) * q(rows[2], cols[0])) +
+      m = q(rows[0], cols[0]) *
+              (q(rows[1], cols[1]) * q(rows[2], cols[2]) - q(rows[1], cols[2]) * q(rows[2], cols[1])) -
+          q(rows[0], cols[1]) *
+              (q(rows[1], cols[0]) * q(rows[2], cols[2]) - q(rows[1], cols[2]) * q(rows[2], cols[0])) +
           q(rows[0], cols[2]) * (q(rows[1], cols[0]) * q(rows[2], cols[1]) - q(rows[1], cols[1]) * q(rows[2], cols[0]));
     }
     Rational term = q(idx[0], idx[c]) * m;
@@ -156,24 +158,42 @@ std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m) {
 
 std::string to_string(QuadricKind kind) {
   switch (kind) {
-    case QuadricKind::Ellipsoid: return "ellipsoid";
-    case QuadricKind::ImaginaryEllipsoid: return "imaginary ellipsoid (no real point)";
-    case QuadricKind::Point: return "single point (degenerate ellipsoid, det = 0)";
-    case QuadricKind::HyperboloidOneSheet: return "hyperboloid of one sheet";
-    case QuadricKind::HyperboloidTwoSheets: return "hyperboloid of two sheets";
-    case QuadricKind::Cone: return "cone";
-    case QuadricKind::EllipticParaboloid: return "elliptic paraboloid";
-    case QuadricKind::HyperbolicParaboloid: return "hyperbolic paraboloid";
-    case QuadricKind::EllipticCylinder: return "elliptic cylinder";
-    case QuadricKind::ImaginaryEllipticCylinder: return "imaginary elliptic cylinder (no real point)";
-    case QuadricKind::Line: return "line (pair of imaginary planes)";
-    case QuadricKind::HyperbolicCylinder: return "hyperbolic cylinder";
-    case QuadricKind::IntersectingPlanes: return "pair of intersecting planes";
-    case QuadricKind::ParabolicCylinder: return "parabolic cylinder";
-    case QuadricKind::ParallelPlanes: return "pair of parallel planes";
-    case QuadricKind::ImaginaryParallelPlanes: return "pair of imaginary parallel planes (no real point)";
-    case QuadricKind::DoublePlane: return "double plane";
-    case QuadricKind::NotQuadratic: return "equation without quadratic terms (a plane or nothing)";
+    case QuadricKind::Ellipsoid:
+      return "ellipsoid";
+    case QuadricKind::ImaginaryEllipsoid:
+      return "imaginary ellipsoid (no real point)";
+    case QuadricKind::Point:
+      return "single point (degenerate ellipsoid, det = 0)";
+    case QuadricKind::HyperboloidOneSheet:
+      return "hyperboloid of one sheet";
+    case QuadricKind::HyperboloidTwoSheets:
+      return "hyperboloid of two sheets";
+    case QuadricKind::Cone:
+      return "cone";
+    case QuadricKind::EllipticParaboloid:
+      return "elliptic paraboloid";
+    case QuadricKind::HyperbolicParaboloid:
+      return "hyperbolic paraboloid";
+    case QuadricKind::EllipticCylinder:
+      return "elliptic cylinder";
+    case QuadricKind::ImaginaryEllipticCylinder:
+      return "imaginary elliptic cylinder (no real point)";
+    case QuadricKind::Line:
+      return "line (pair of imaginary planes)";
+    case QuadricKind::HyperbolicCylinder:
+      return "hyperbolic cylinder";
+    case QuadricKind::IntersectingPlanes:
+      return "pair of intersecting planes";
+    case QuadricKind::ParabolicCylinder:
+      return "parabolic cylinder";
+    case QuadricKind::ParallelPlanes:
+      return "pair of parallel planes";
+    case QuadricKind::ImaginaryParallelPlanes:
+      return "pair of imaginary parallel planes (no real point)";
+    case QuadricKind::DoublePlane:
+      return "double plane";
+    case QuadricKind::NotQuadratic:
+      return "equation without quadratic terms (a plane or nothing)";
   }
   return "unknown quadric";
 }
@@ -193,7 +213,8 @@ QuadricKind classify_quadric(const Matrix4& q) {
     return s > 0 ? QuadricKind::HyperboloidOneSheet : (s < 0 ? QuadricKind::HyperboloidTwoSheets : QuadricKind::Cone);
   if (p3 == 2 && n3 == 0) {
     if (rank4 == 4) return QuadricKind::EllipticParaboloid;
-    if (rank4 == 3) return (n4 == 1 || p4 == 1) ? QuadricKind::EllipticCylinder : QuadricKind::ImaginaryEllipticCylinder;
+    if (rank4 == 3)
+      return (n4 == 1 || p4 == 1) ? QuadricKind::EllipticCylinder : QuadricKind::ImaginaryEllipticCylinder;
     return QuadricKind::Line;
   }
   if (p3 == 1 && n3 == 1) {
@@ -246,7 +267,8 @@ Matrix3 rotation_from_quaternion(const Quaternion& q) {
 Ellipsoid Ellipsoid::from_matrix(const Matrix4& e) {
   QuadricKind k = classify_quadric(e);
   if (k == QuadricKind::EllipticParaboloid)
-    throw InputError("not an ellipsoid: the matrix describes an elliptic paraboloid (ellipsoid and paraboloid swapped?)");
+    throw InputError(
+        "not an ellipsoid: the matrix describes an elliptic paraboloid (ellipsoid and paraboloid swapped?)");
   if (k != QuadricKind::Ellipsoid) throw InputError("not an ellipsoid: the matrix describes " + found(k));
   // Q3 is definite; make it positive definite (interior X^T E X < 0).
   return Ellipsoid(e(0, 0) > 0 ? e : negated(e));
@@ -289,7 +311,8 @@ Ellipsoid Ellipsoid::from_map(const Vector3& c, const Matrix3& l) {
 Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
   QuadricKind k = classify_quadric(p);
   if (k == QuadricKind::Ellipsoid)
-    throw InputError("not an elliptic paraboloid: the matrix describes an ellipsoid (ellipsoid and paraboloid swapped?)");
+    throw InputError(
+        "not an elliptic paraboloid: the matrix describes an ellipsoid (ellipsoid and paraboloid swapped?)");
   if (k != QuadricKind::EllipticParaboloid)
     throw InputError("not an elliptic paraboloid: the matrix describes " + found(k));
   // Q3 is semidefinite of rank 2; its trace has the sign of its non-zero eigenvalues.

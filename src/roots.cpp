@@ -48,10 +48,12 @@ std::optional<Rational> rational_value(const AK& ak, const Root& root, const Qua
 }  // namespace
 
 int RootStructure::negative() const {
-  return static_cast<int>(std::count_if(real_roots.begin(), real_roots.end(), [](const RealRoot& r) { return r.sign < 0; }));
+  return static_cast<int>(
+      std::count_if(real_roots.begin(), real_roots.end(), [](const RealRoot& r) { return r.sign < 0; }));
 }
 int RootStructure::positive() const {
-  return static_cast<int>(std::count_if(real_roots.begin(), real_roots.end(), [](const RealRoot& r) { return r.sign > 0; }));
+  return static_cast<int>(
+      std::count_if(real_roots.begin(), real_roots.end(), [](const RealRoot& r) { return r.sign > 0; }));
 }
 
 int sign_of_discriminant(const std::vector<Integer>& c) {

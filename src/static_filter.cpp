@@ -27,8 +27,8 @@ constexpr double kEps0 = 0x1p-20;
 
 /// Error-bound constants, derived once from the generic formulas themselves.
 struct Bounds {
-  double f[5], s[3];           // absolute errors of f_i, s_i for entries in [-1, 1]
-  double a[8], r[8];           // quantity q: error <= a[q] + r[q] * eps   (q: g2[0..2], g1[0..1], g0, vertex, graeffe)
+  double f[5], s[3];  // absolute errors of f_i, s_i for entries in [-1, 1]
+  double a[8], r[8];  // quantity q: error <= a[q] + r[q] * eps   (q: g2[0..2], g1[0..1], g0, vertex, graeffe)
 };
 
 void second_stage(const Sfe& in, double out[8]) {
@@ -102,8 +102,6 @@ bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
 }
 
 DecisionSigns uncertain() { return DecisionSigns{}; }
-
-
 
 }  // namespace
 

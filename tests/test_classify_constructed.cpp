@@ -3,7 +3,6 @@
 // evidence the construction determines, and cross-checks classify_exact(), Evidence::Minimal, the
 // kernel tangency test and the paper's Table 2.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <vector>
 
@@ -578,7 +577,7 @@ TEST_CASE("extreme magnitudes: rescaling E and P by huge or tiny factors changes
     return e < 0 ? Rational(1) / p : p;
   };
   const std::vector<std::pair<Rational, Rational>> factors = {
-      {power(10, 300), Rational(1)},   {Rational(1), power(10, -300)}, {power(10, 400), power(10, -400)},
+      {power(10, 300), Rational(1)},    {Rational(1), power(10, -300)}, {power(10, 400), power(10, -400)},
       {power(2, 1100), power(2, 1100)}, {power(2, -1100), Rational(1)}, {power(10, -350), power(10, 350)},
       {power(10, 20), power(10, -20)},
   };

@@ -1,19 +1,17 @@
 // Every input that is not an ellipsoid / elliptic paraboloid pair gets relpos::InputError with a
 // message that names what was found (math.md section 1).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
+#include <relpos/classify.hpp>
+#include <relpos/error.hpp>
+#include <relpos/numbers.hpp>
+#include <relpos/quadric.hpp>
 #include <string>
 #include <vector>
 
 #include "support/construct.hpp"
 #include "support/printers.hpp"
-
-#include <relpos/classify.hpp>
-#include <relpos/error.hpp>
-#include <relpos/numbers.hpp>
-#include <relpos/quadric.hpp>
 
 using namespace rt;
 using Catch::Matchers::Contains;

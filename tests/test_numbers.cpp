@@ -1,22 +1,20 @@
 // numbers.hpp: exact parsing, exact doubles, printing and decimal rounding.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
+#include <relpos/error.hpp>
+#include <relpos/numbers.hpp>
 #include <string>
 
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 
-#include <relpos/error.hpp>
-#include <relpos/numbers.hpp>
-
 using relpos::exact_rational;
 using relpos::InputError;
+using relpos::Integer;
 using relpos::parse_rational;
 using relpos::Rational;
 using relpos::to_decimal;
-using relpos::Integer;
 using rt::Q;
 
 namespace {
@@ -45,7 +43,7 @@ TEST_CASE("parse_rational: fractions", "[numbers][parse]") {
   CHECK(parse_rational("1/2") == Q(1, 2));
   CHECK(parse_rational("-1/2") == Q(-1, 2));
   CHECK(parse_rational("+3/4") == Q(3, 4));
-  CHECK(parse_rational("6/4") == Q(3, 2));    // canonicalized
+  CHECK(parse_rational("6/4") == Q(3, 2));  // canonicalized
   CHECK(parse_rational("-10/5") == Q(-2));
   CHECK(parse_rational("0/7") == Q(0));
   CHECK(parse_rational("92281/129600") == Q(92281, 129600));
@@ -76,9 +74,9 @@ TEST_CASE("parse_rational: decimals and exponents are exact", "[numbers][parse]"
 
 TEST_CASE("parse_rational: malformed text throws InputError naming the text", "[numbers][parse][errors]") {
   using Catch::Matchers::Contains;
-  for (const char* bad : {"1.2.3", "1/0", "", "   ", "abc", "1e", "0x10", "1/2/3", "--1", "+-1", "1e+", ".", "e5", "1 2",
-                          "1/", "/2", "1.5/2", "nan", "NaN", "inf", "-inf", "Infinity", "1,5", "1e1.5", "½", "1/0.5",
-                          "0x1p3", "1ee2", "12a"}) {
+  for (const char* bad : {"1.2.3", "1/0",      "",    "   ",   "abc", "1e",    "0x10",  "1/2/3", "--1", "+-1",
+                          "1e+",   ".",        "e5",  "1 2",   "1/",  "/2",    "1.5/2", "nan",   "NaN", "inf",
+                          "-inf",  "Infinity", "1,5", "1e1.5", "½",   "1/0.5", "0x1p3", "1ee2",  "12a"}) {
     CAPTURE(bad);
     CHECK_THROWS_AS(parse_rational(bad), InputError);
   }
@@ -94,7 +92,7 @@ TEST_CASE("parse_rational: hostile sizes give a clear error, not a hang", "[numb
   CHECK_THROWS_AS(parse_rational("1e999999999"), InputError);
   CHECK_THROWS_AS(parse_rational("1e-999999999"), InputError);
   CHECK_THROWS_AS(parse_rational("1e4001"), InputError);  // beyond kMaxDecimalExponent
-  CHECK(parse_rational("1e4000") == pow10(4000));          // at the limit
+  CHECK(parse_rational("1e4000") == pow10(4000));         // at the limit
   CHECK_THROWS_AS(parse_rational(std::string(relpos::kMaxNumberChars + 1, '7')), InputError);
   CHECK(parse_rational(std::string(relpos::kMaxNumberChars, '0')) == 0);
 }
@@ -152,13 +150,13 @@ TEST_CASE("to_decimal: rounding to significant digits", "[numbers][print]") {
   CHECK(to_decimal(Q(1, 3), 5) == "0.33333");
   CHECK(to_decimal(Q(2, 3), 3) == "0.667");
   CHECK(to_decimal(Q(-2, 3), 3) == "-0.667");
-  CHECK(to_decimal(Q(1, 2), 5) == "0.5");       // no trailing zeros
+  CHECK(to_decimal(Q(1, 2), 5) == "0.5");  // no trailing zeros
   CHECK(to_decimal(Q(1), 6) == "1");
   CHECK(to_decimal(Q(0), 4) == "0");
-  CHECK(to_decimal(Q(1, 8), 2) == "0.13");     // half rounds up
-  CHECK(to_decimal(Q(-1, 8), 2) == "-0.13");   // symmetric in the sign
+  CHECK(to_decimal(Q(1, 8), 2) == "0.13");    // half rounds up
+  CHECK(to_decimal(Q(-1, 8), 2) == "-0.13");  // symmetric in the sign
   CHECK(to_decimal(Q(5, 2), 1) == "3");
-  CHECK(to_decimal(Q(249, 25), 2) == "10");    // 9.96: rounding carries into a new digit
+  CHECK(to_decimal(Q(249, 25), 2) == "10");  // 9.96: rounding carries into a new digit
   CHECK(to_decimal(Q(999, 1000), 2) == "1");
   CHECK(to_decimal(Q(1, 1000), 3) == "0.001");
   CHECK(to_decimal(Q(314159, 100000), 3) == "3.14");

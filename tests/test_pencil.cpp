@@ -1,16 +1,14 @@
 // pencil.hpp, sturm.hpp, smallness.hpp, roots.hpp: the polynomials and the exact tools that read them.
 #include <catch2/catch.hpp>
-
-#include <vector>
-
-#include "support/construct.hpp"
-#include "support/printers.hpp"
-
 #include <relpos/classify.hpp>
 #include <relpos/pencil.hpp>
 #include <relpos/roots.hpp>
 #include <relpos/smallness.hpp>
 #include <relpos/sturm.hpp>
+#include <vector>
+
+#include "support/construct.hpp"
+#include "support/printers.hpp"
 
 using namespace rt;
 using relpos::characteristic_polynomial;
@@ -209,10 +207,17 @@ TEST_CASE("compare_rho_with_one: rho = 4 r^2 / min(a,b)^4 against 1", "[smallnes
     int want;
   };
   const std::vector<Case> cases = {
-      {Q(1), Q(2), Q(1, 4), -1}, {Q(1), Q(2), Q(1, 2), 0},   {Q(1), Q(2), Q(3, 4), 1},  {Q(2), Q(1), Q(1, 2), 0},
-      {Q(2), Q(1), Q(1, 2) + Q(1, 1000000), 1},              {Q(2), Q(1), Q(1, 2) - Q(1, 1000000), -1},
-      {Q(1), Q(1), Q(1, 2), 0}, {Q(1), Q(1), Q(2), 1},       {Q(6, 5), Q(3, 2), Q(1, 4), -1},
-      {Q(6, 5), Q(3, 2), Q(18, 25), 0},                      {Q(3, 2), Q(6, 5), Q(18, 25), 0},
+      {Q(1), Q(2), Q(1, 4), -1},
+      {Q(1), Q(2), Q(1, 2), 0},
+      {Q(1), Q(2), Q(3, 4), 1},
+      {Q(2), Q(1), Q(1, 2), 0},
+      {Q(2), Q(1), Q(1, 2) + Q(1, 1000000), 1},
+      {Q(2), Q(1), Q(1, 2) - Q(1, 1000000), -1},
+      {Q(1), Q(1), Q(1, 2), 0},
+      {Q(1), Q(1), Q(2), 1},
+      {Q(6, 5), Q(3, 2), Q(1, 4), -1},
+      {Q(6, 5), Q(3, 2), Q(18, 25), 0},
+      {Q(3, 2), Q(6, 5), Q(18, 25), 0},
   };
   Rng g(11);
   for (const auto& k : cases) {
@@ -358,10 +363,10 @@ TEST_CASE("Classification::roots gives the rational simple roots -a^2, -b^2 exac
 TEST_CASE("sign_of_discriminant for degrees 1 to 4", "[roots]") {
   using relpos::sign_of_discriminant;
   CHECK(sign_of_discriminant({Integer(3), Integer(2)}) == 1);
-  CHECK(sign_of_discriminant({Integer(2), Integer(-3), Integer(1)}) == 1);   // (l-1)(l-2)
-  CHECK(sign_of_discriminant({Integer(1), Integer(0), Integer(1)}) == -1);   // l^2 + 1
-  CHECK(sign_of_discriminant({Integer(1), Integer(-2), Integer(1)}) == 0);   // (l-1)^2
-  CHECK(sign_of_discriminant({Integer(-2), Integer(0), Integer(-1)}) == -1);  // -(l^2 + 2)
+  CHECK(sign_of_discriminant({Integer(2), Integer(-3), Integer(1)}) == 1);                // (l-1)(l-2)
+  CHECK(sign_of_discriminant({Integer(1), Integer(0), Integer(1)}) == -1);                // l^2 + 1
+  CHECK(sign_of_discriminant({Integer(1), Integer(-2), Integer(1)}) == 0);                // (l-1)^2
+  CHECK(sign_of_discriminant({Integer(-2), Integer(0), Integer(-1)}) == -1);              // -(l^2 + 2)
   CHECK(sign_of_discriminant({Integer(-6), Integer(11), Integer(-6), Integer(1)}) == 1);  // (l-1)(l-2)(l-3)
   CHECK(sign_of_discriminant({Integer(-1), Integer(1), Integer(-1), Integer(1)}) == -1);  // (l-1)(l^2+1)
   CHECK(sign_of_discriminant({Integer(0), Integer(0), Integer(1), Integer(1)}) == 0);     // l^2 (l+1)
@@ -369,8 +374,8 @@ TEST_CASE("sign_of_discriminant for degrees 1 to 4", "[roots]") {
   for (int i = 0; i < 100; ++i) {
     Quartic<Rational> f{Q(g.uniform(-20, 20)), Q(g.uniform(-20, 20)), Q(g.uniform(-20, 20)), Q(g.uniform(-20, 20)),
                         Q(g.uniform(1, 20) * (g.chance(50) ? 1 : -1))};
-    CHECK(sign_of_discriminant({f[0].numerator(), f[1].numerator(), f[2].numerator(), f[3].numerator(), f[4].numerator()}) ==
-          sgn(quartic_discriminant(f)));
+    CHECK(sign_of_discriminant({f[0].numerator(), f[1].numerator(), f[2].numerator(), f[3].numerator(),
+                                f[4].numerator()}) == sgn(quartic_discriminant(f)));
   }
 }
 

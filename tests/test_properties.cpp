@@ -4,7 +4,6 @@
 // Table 2 where it applies, and the position wherever an independent argument fixes it (centre on
 // the axis; a point of the cup inside the ball; a separating tangent plane; the side of the centre).
 #include <catch2/catch.hpp>
-
 #include <vector>
 
 #include "support/checks.hpp"
@@ -30,10 +29,13 @@ Config random_small_config(Rng& g) {
   k.c = {Q(g.uniform(-8, 8), 4), Q(g.uniform(-8, 8), 4), Q(g.uniform(-8, 8), 4)};
   k.r = Q(g.uniform(1, 12), 8);
   const long kind = g.uniform(0, 99);
-  if (kind < 15) k.c[0] = 0;
-  else if (kind < 30) k.c[1] = 0;
-  else if (kind < 45) k.c[0] = k.c[1] = 0;  // on the axis
-  else if (kind < 55) {                      // on the axis, tangent at the vertex
+  if (kind < 15)
+    k.c[0] = 0;
+  else if (kind < 30)
+    k.c[1] = 0;
+  else if (kind < 45)
+    k.c[0] = k.c[1] = 0;  // on the axis
+  else if (kind < 55) {   // on the axis, tangent at the vertex
     k.c[0] = k.c[1] = 0;
     k.c[2] = g.chance(50) ? k.r : -k.r;
   } else if (kind < 62) {  // centre on the surface
@@ -126,7 +128,8 @@ TEST_CASE("random small configurations: exact algebra, classify == classify_exac
   CHECK(g_table2_checks - table2_before > 500);
 }
 
-TEST_CASE("random general ellipsoids: the answer is invariant under congruences and rescalings", "[properties][random]") {
+TEST_CASE("random general ellipsoids: the answer is invariant under congruences and rescalings",
+          "[properties][random]") {
   // Metamorphic: whatever the answer, Q -> k H^T Q H (same H) must not change it.
   const std::uint64_t seed = 0xA11CE;
   Rng g(seed);
@@ -136,8 +139,9 @@ TEST_CASE("random general ellipsoids: the answer is invariant under congruences 
     const Vector3 c{g.rational(-6, 6, 2), g.rational(-6, 6, 2), g.rational(-3, 6, 2)};
     const Vector3 axes{g.positive_rational(4, 4), g.positive_rational(4, 4), g.positive_rational(4, 4)};
     const Ellipsoid e = Ellipsoid::from_axes(c, axes, random_quaternion(g));
-    const Paraboloid p = Paraboloid::standard({g.rational(-2, 2, 2), g.rational(-2, 2, 2), g.rational(-2, 2, 2)},
-                                              g.positive_rational(4, 2), g.positive_rational(4, 2), random_quaternion(g));
+    const Paraboloid p =
+        Paraboloid::standard({g.rational(-2, 2, 2), g.rational(-2, 2, 2), g.rational(-2, 2, 2)},
+                             g.positive_rational(4, 2), g.positive_rational(4, 2), random_quaternion(g));
     const Classification c0 = relpos::classify(e, p);
     check_same(c0, relpos::classify_exact(e, p));
     check_kernel(e, p, c0);

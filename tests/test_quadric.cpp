@@ -1,14 +1,12 @@
 // quadric.hpp: exact affine types, constructors, sign normalization, affine invariance of the type.
 #include <catch2/catch.hpp>
-
+#include <relpos/error.hpp>
+#include <relpos/quadric.hpp>
 #include <string>
 #include <vector>
 
 #include "support/construct.hpp"
 #include "support/printers.hpp"
-
-#include <relpos/error.hpp>
-#include <relpos/quadric.hpp>
 
 using relpos::classify_quadric;
 using relpos::Ellipsoid;
@@ -157,7 +155,8 @@ TEST_CASE("Ellipsoid constructors agree with hand-built matrices", "[quadric]") 
   CHECK(Ellipsoid::from_map(c, diag3(r, r, -r)).matrix() == scaled(want, 1 / (r * r)));
   // Axis-aligned ellipsoid (x/2)^2 + (y/3)^2 + (z/5)^2 = 1.
   Matrix4 axes = diag4(Q(1, 4), Q(1, 9), Q(1, 25), Q(-1));
-  CHECK(Ellipsoid::from_axes({Q(0), Q(0), Q(0)}, {Q(2), Q(3), Q(5)}, Quaternion{Q(1), Q(0), Q(0), Q(0)}).matrix() == axes);
+  CHECK(Ellipsoid::from_axes({Q(0), Q(0), Q(0)}, {Q(2), Q(3), Q(5)}, Quaternion{Q(1), Q(0), Q(0), Q(0)}).matrix() ==
+        axes);
   CHECK(Ellipsoid::from_map({Q(0), Q(0), Q(0)}, diag3(Q(2), Q(3), Q(5))).matrix() == axes);
 }
 
@@ -196,7 +195,8 @@ TEST_CASE("Paraboloid constructors agree with hand-built matrices", "[quadric]")
       Rational s(0);
       for (int i2 = 0; i2 < 4; ++i2)
         for (int j = 0; j < 4; ++j)
-          s += (i2 < 3 ? x[static_cast<std::size_t>(i2)] : Rational(1)) * p(i2, j) * (j < 3 ? x[static_cast<std::size_t>(j)] : Rational(1));
+          s += (i2 < 3 ? x[static_cast<std::size_t>(i2)] : Rational(1)) * p(i2, j) *
+               (j < 3 ? x[static_cast<std::size_t>(j)] : Rational(1));
       return s;
     };
     CHECK(value(v) == 0);
@@ -222,7 +222,8 @@ TEST_CASE("constructor arguments are validated", "[quadric][errors]") {
   CHECK_THROWS_AS(Ellipsoid::from_map(c, diag3(Q(1), Q(0), Q(1))), InputError);
   Matrix3 not_orthogonal = identity3();
   not_orthogonal(0, 1) = Q(1, 1000);
-  CHECK_THROWS_WITH(Ellipsoid::from_axes(c, {Q(1), Q(1), Q(1)}, not_orthogonal), Catch::Matchers::Contains("orthogonal"));
+  CHECK_THROWS_WITH(Ellipsoid::from_axes(c, {Q(1), Q(1), Q(1)}, not_orthogonal),
+                    Catch::Matchers::Contains("orthogonal"));
   CHECK_THROWS_AS(Paraboloid::standard(c, Q(0), Q(1)), InputError);
   CHECK_THROWS_AS(Paraboloid::standard(c, Q(1), Q(-1)), InputError);
   CHECK_THROWS_AS(Paraboloid::standard(c, Q(1), Q(1), {Q(0), Q(0), Q(0), Q(0)}), InputError);

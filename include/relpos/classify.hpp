@@ -2,10 +2,10 @@
 // Theorem 1 with the corrections of math.md section 3), decided exactly, with its evidence.
 //
 // Every decision is the sign of a polynomial in the input entries (section 4 of math.md). classify()
-// evaluates them first in doubles with static error bounds (static_filter.hpp), then in interval arithmetic and certifies what it can; only the signs the filter
-// cannot certify (exact zeros: tangencies, special roots, rho = 1) go to exact GMP integers, and only
-// Disc(f) = 0 or a defective Sturm-Habicht sequence goes to exact factorisation (roots.hpp).
-// classify_exact() skips the filter; the two return identical positions on every input.
+// evaluates them first in doubles with static error bounds (static_filter.hpp), then in interval arithmetic and
+// certifies what it can; only the signs the filter cannot certify (exact zeros: tangencies, special roots, rho = 1) go
+// to exact GMP integers, and only Disc(f) = 0 or a defective Sturm-Habicht sequence goes to exact factorisation
+// (roots.hpp). classify_exact() skips the filter; the two return identical positions on every input.
 #pragma once
 
 #include <optional>
@@ -19,35 +19,35 @@
 namespace relpos {
 
 enum class Position {
-  I,   ///< the ellipsoid is interior to the paraboloid
-  TI,  ///< tangent from inside
-  C,   ///< the surfaces cross (non-tangent contact)
-  TE,  ///< tangent from outside
-  E,   ///< exterior
+  I,             ///< the ellipsoid is interior to the paraboloid
+  TI,            ///< tangent from inside
+  C,             ///< the surfaces cross (non-tangent contact)
+  TE,            ///< tangent from outside
+  E,             ///< exterior
   Unclassified,  ///< not covered by the theory (not small) or outside the table (a finding)
 };
 std::string to_string(Position p);
 
 /// Which arithmetic settled the answer.
 enum class Stage {
-  StaticDouble,   ///< double arithmetic with static error bounds (inputs that are exact doubles)
-  Interval,       ///< all signs certified by interval arithmetic
-  ExactSigns,     ///< exact integer signs of the same polynomials
-  ExactRoots,     ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
+  StaticDouble,  ///< double arithmetic with static error bounds (inputs that are exact doubles)
+  Interval,      ///< all signs certified by interval arithmetic
+  ExactSigns,    ///< exact integer signs of the same polynomials
+  ExactRoots,    ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
 };
 std::string to_string(Stage s);
 
 /// The rule that decided (describe() gives the sentence).
 enum class Rule : unsigned char {
   None,
-  NonRealPairCrossing,     ///< C: a non-real pair, f~ square-free
-  NegativeMultipleRoot,    ///< TI: f~ has a negative multiple root, all roots real and negative
-  PositiveMultipleRoot,    ///< TE: f~ has a positive multiple root (any size)
-  AllRootsNegative,        ///< I: f~ square-free, all roots real and negative
-  TwoPositiveRoots,        ///< E: two distinct positive roots (any size)
-  NotSmallContact,         ///< not small, non-real roots: the surfaces meet, type unknown
-  NotSmallUnknown,         ///< not small, no certificate
-  Finding,                 ///< root pattern outside the table
+  NonRealPairCrossing,   ///< C: a non-real pair, f~ square-free
+  NegativeMultipleRoot,  ///< TI: f~ has a negative multiple root, all roots real and negative
+  PositiveMultipleRoot,  ///< TE: f~ has a positive multiple root (any size)
+  AllRootsNegative,      ///< I: f~ square-free, all roots real and negative
+  TwoPositiveRoots,      ///< E: two distinct positive roots (any size)
+  NotSmallContact,       ///< not small, non-real roots: the surfaces meet, type unknown
+  NotSmallUnknown,       ///< not small, no certificate
+  Finding,               ///< root pattern outside the table
 };
 std::string describe(Rule r);
 
@@ -74,30 +74,30 @@ enum class Evidence { Minimal, Full };
 
 struct Classification {
   Position position = Position::Unclassified;
-  bool small = false;               ///< rho <= 1 (the paper's smallness hypothesis holds)
-  int rho_vs_one = 0;               ///< sign of rho - 1
-  std::optional<bool> contact;      ///< do the surfaces meet? empty when not decidable (not small)
+  bool small = false;           ///< rho <= 1 (the paper's smallness hypothesis holds)
+  int rho_vs_one = 0;           ///< sign of rho - 1
+  std::optional<bool> contact;  ///< do the surfaces meet? empty when not decidable (not small)
   Rule rule_id = Rule::None;
-  std::string rule;                 ///< the rule that decided, in one sentence
-  std::string finding;              ///< set when the root pattern is outside the table
+  std::string rule;     ///< the rule that decided, in one sentence
+  std::string finding;  ///< set when the root pattern is outside the table
   Stage stage = Stage::Interval;
 
   // Root evidence (always filled).
-  int sign_disc_f = 0;              ///< sign of Disc(f)
-  int sign_disc_ftilde = 0;         ///< sign of Disc(f~); equals sign_disc_f when f is square-free
-  int real_roots = 0;               ///< distinct real roots of f
-  int negative_roots = 0;           ///< distinct negative roots
-  int positive_roots = 0;           ///< distinct positive roots
-  int nonreal_roots = 0;            ///< non-real roots, with multiplicity
+  int sign_disc_f = 0;       ///< sign of Disc(f)
+  int sign_disc_ftilde = 0;  ///< sign of Disc(f~); equals sign_disc_f when f is square-free
+  int real_roots = 0;        ///< distinct real roots of f
+  int negative_roots = 0;    ///< distinct negative roots
+  int positive_roots = 0;    ///< distinct positive roots
+  int nonreal_roots = 0;     ///< non-real roots, with multiplicity
 
   // Full evidence (Evidence::Full).
   bool has_full_evidence = false;
-  Quartic<Rational> f;              ///< det(lambda P + E) for the sign-normalized matrices
-  Quadratic<Rational> s;            ///< det(lambda A + M)
-  int degree_ftilde = 4;            ///< degree of f~ = f / gcd(f, s)
-  std::vector<RealRoot> roots;      ///< distinct real roots of f with multiplicities (Full only)
-  std::optional<Rational> rho;      ///< rho exactly, when it is rational
-  double rho_approx = 0;            ///< rho to double precision (for display)
+  Quartic<Rational> f;          ///< det(lambda P + E) for the sign-normalized matrices
+  Quadratic<Rational> s;        ///< det(lambda A + M)
+  int degree_ftilde = 4;        ///< degree of f~ = f / gcd(f, s)
+  std::vector<RealRoot> roots;  ///< distinct real roots of f with multiplicities (Full only)
+  std::optional<Rational> rho;  ///< rho exactly, when it is rational
+  double rho_approx = 0;        ///< rho to double precision (for display)
 };
 
 /// Adaptive exact classification (interval filter, then exact integers).

@@ -57,7 +57,7 @@ Quadratic<NT> special_polynomial(const M& p, const M& e) {
   for (int j = 0; j < 3; ++j) {
     const int c0 = j == 0 ? 1 : 0, c1 = j == 2 ? 1 : 2;
     Quadratic<NT> m = detail::linear_minor2<NT>(e, p, 1, 2, c0, c1);
-    const NT &x0 = e(0, j), &x1 = p(0, j);  // entry (0, j) = x0 + lambda x1
+    const NT &x0 = e(0, j), &x1 = p(0, j);                                     // entry (0, j) = x0 + lambda x1
     Quadratic<NT> t{x0 * m[0], x0 * m[1] + x1 * m[0], x0 * m[2] + x1 * m[1]};  // lambda^3 term dropped
     for (int i = 0; i < 3; ++i) s[i] = (j == 1) ? s[i] - t[i] : s[i] + t[i];
   }

@@ -22,11 +22,11 @@ namespace relpos {
 
 /// One distinct real root of f with certified information.
 struct RealRoot {
-  int sign = 0;                      ///< -1 or +1 (0 is never a root)
-  int multiplicity_f = 1;            ///< multiplicity as a root of f
-  int multiplicity_s = 0;            ///< multiplicity as a root of s (0, 1 or 2)
-  std::optional<Rational> exact;     ///< the root itself when it is rational
-  Rational lower, upper;             ///< isolating interval: the root is the only root of f in it
+  int sign = 0;                   ///< -1 or +1 (0 is never a root)
+  int multiplicity_f = 1;         ///< multiplicity as a root of f
+  int multiplicity_s = 0;         ///< multiplicity as a root of s (0, 1 or 2)
+  std::optional<Rational> exact;  ///< the root itself when it is rational
+  Rational lower, upper;          ///< isolating interval: the root is the only root of f in it
   /// The multiplicity rule of math.md section 3. It characterises tangency for *small* pairs; for a
   /// pair that is not small a root can be a tangency with a smaller excess (e.g. contact along a
   /// circle), so outside smallness read it only as "multiple in f~".
@@ -47,9 +47,9 @@ struct RootStructure {
 
 /// The facts the classification needs, without isolating any root.
 struct RootFacts {
-  int real = 0, negative = 0, positive = 0;  ///< distinct real roots of f
-  int nonreal = 0;                           ///< non-real roots of f, with multiplicity
-  int nonreal_multiple = 0;                  ///< non-real roots of multiplicity >= 2
+  int real = 0, negative = 0, positive = 0;        ///< distinct real roots of f
+  int nonreal = 0;                                 ///< non-real roots of f, with multiplicity
+  int nonreal_multiple = 0;                        ///< non-real roots of multiplicity >= 2
   int tangent_negative = 0, tangent_positive = 0;  ///< distinct multiple real roots of f~, by sign
   int sign_disc_f = 0, sign_disc_ftilde = 0;
   int degree_ftilde = 4;

@@ -5,13 +5,11 @@
 #pragma once
 
 #include <catch2/catch.hpp>
-
+#include <relpos/classify.hpp>
 #include <vector>
 
 #include "support/construct.hpp"
 #include "support/printers.hpp"
-
-#include <relpos/classify.hpp>
 
 namespace rt {
 
@@ -66,9 +64,9 @@ struct Expect {
   bool truth_known = true;                  ///< false: only the algebra (f, s, rho) is known
   bool small = true;
   Rational rho;
-  Quartic<Rational> f;            ///< det(l P + E) of the sign-normalized input, by construction
+  Quartic<Rational> f;  ///< det(l P + E) of the sign-normalized input, by construction
   Quadratic<Rational> s;
-  std::array<Rational, 2> s_roots;  ///< the (rational) roots of s
+  std::array<Rational, 2> s_roots;     ///< the (rational) roots of s
   bool expect_interval_stage = false;  ///< generic, well-conditioned: the filter must decide
 };
 
@@ -128,7 +126,8 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   CHECK(c.rho_vs_one == sgn(x.rho - 1));
   if (x.truth_known && c.contact.has_value()) CHECK(*c.contact == truth_has_contact(x.truth));
   // Beyond smallness only separation and outer tangency are ever claimed (math.md section 6).
-  if (!x.small) CHECK((c.position == Position::TE || c.position == Position::E || c.position == Position::Unclassified));
+  if (!x.small)
+    CHECK((c.position == Position::TE || c.position == Position::E || c.position == Position::Unclassified));
   if (want != Position::Unclassified) {
     REQUIRE(c.contact.has_value());
     CHECK(c.finding.empty());

@@ -7,15 +7,14 @@
 // z = x^2/a^2 + y^2/b^2 with vertex at the origin.
 #pragma once
 
-#include <relpos/classify.hpp>
-#include <relpos/numbers.hpp>
-#include <relpos/pencil.hpp>
-#include <relpos/quadric.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <random>
+#include <relpos/classify.hpp>
+#include <relpos/numbers.hpp>
+#include <relpos/pencil.hpp>
+#include <relpos/quadric.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -235,9 +234,9 @@ inline Rational quartic_discriminant(const Quartic<Rational>& f) {
   const Rational &a = f[4], &b = f[3], &c = f[2], &d = f[1], &e = f[0];
   return 256 * a * a * a * e * e * e - 192 * a * a * b * d * e * e - 128 * a * a * c * c * e * e +
          144 * a * a * c * d * d * e - 27 * a * a * d * d * d * d + 144 * a * b * b * c * e * e -
-         6 * a * b * b * d * d * e - 80 * a * b * c * c * d * e + 18 * a * b * c * d * d * d + 16 * a * c * c * c * c * e -
-         4 * a * c * c * c * d * d - 27 * b * b * b * b * e * e + 18 * b * b * b * c * d * e - 4 * b * b * b * d * d * d -
-         4 * b * b * c * c * c * e + b * b * c * c * d * d;
+         6 * a * b * b * d * d * e - 80 * a * b * c * c * d * e + 18 * a * b * c * d * d * d +
+         16 * a * c * c * c * c * e - 4 * a * c * c * c * d * d - 27 * b * b * b * b * e * e +
+         18 * b * b * b * c * d * e - 4 * b * b * b * d * d * d - 4 * b * b * c * c * c * e + b * b * c * c * d * d;
 }
 
 /// Monic quartic with the given four roots (times lead).
@@ -349,8 +348,9 @@ struct Config {
 };
 
 inline std::string describe(const Config& k) {
-  return k.name + ": a=" + relpos::to_string(k.a) + " b=" + relpos::to_string(k.b) + " c=(" + relpos::to_string(k.c[0]) +
-         ", " + relpos::to_string(k.c[1]) + ", " + relpos::to_string(k.c[2]) + ") r=" + relpos::to_string(k.r);
+  return k.name + ": a=" + relpos::to_string(k.a) + " b=" + relpos::to_string(k.b) + " c=(" +
+         relpos::to_string(k.c[0]) + ", " + relpos::to_string(k.c[1]) + ", " + relpos::to_string(k.c[2]) +
+         ") r=" + relpos::to_string(k.r);
 }
 
 /// A point of z = x^2/a^2 + y^2/b^2 whose gradient n = (u, v, -1) has rational length m:
@@ -359,12 +359,10 @@ inline std::string describe(const Config& k) {
 struct TangentPoint {
   Rational a, b;
   Vector3 x0;
-  Vector3 n;  ///< (u, v, -1)
+  Vector3 n;   ///< (u, v, -1)
   Rational m;  ///< |n|, rational
   /// x0 + d n/|n| (d > 0: outside the cup, d < 0: inside).
-  Vector3 along(const Rational& d) const {
-    return {x0[0] + d * n[0] / m, x0[1] + d * n[1] / m, x0[2] + d * n[2] / m};
-  }
+  Vector3 along(const Rational& d) const { return {x0[0] + d * n[0] / m, x0[1] + d * n[1] / m, x0[2] + d * n[2] / m}; }
 };
 
 inline TangentPoint tangent_point(const Rational& a, const Rational& b, const Rational& s, const Rational& t) {
@@ -413,11 +411,12 @@ inline std::vector<Config> tangency_family(const TangentPoint& tp, const Rationa
   out.push_back({"C: centre moved out across x0", tp.a, tp.b, tp.along(-shrink), r, Position::C});
   // Slide the TI sphere along the tangent plane by eps w, w = (v, -u, 0) (or (1, 0, 0)),
   // eps |w| < r/2 so that the new centre stays in the open ball of the TI sphere (inside the cup).
-  Vector3 w = (tp.n[0] == 0 && tp.n[1] == 0) ? V(Rational(1), Rational(0), Rational(0)) : V(tp.n[1], -tp.n[0], Rational(0));
+  Vector3 w =
+      (tp.n[0] == 0 && tp.n[1] == 0) ? V(Rational(1), Rational(0), Rational(0)) : V(tp.n[1], -tp.n[0], Rational(0));
   const Rational eps = r * Q(j, 16) / (rabs(w[0]) + rabs(w[1]) + 1);
   Vector3 c = tp.along(-r);
-  out.push_back({"C: TI sphere slid along the tangent plane", tp.a, tp.b, V(c[0] + eps * w[0], c[1] + eps * w[1], c[2]), r,
-                 Position::C});
+  out.push_back({"C: TI sphere slid along the tangent plane", tp.a, tp.b, V(c[0] + eps * w[0], c[1] + eps * w[1], c[2]),
+                 r, Position::C});
   return out;
 }
 
@@ -501,14 +500,18 @@ inline Transformed transform(const Matrix4& e, const Matrix4& p, Rng& g, bool ri
 inline Quartic<Rational> transformed_f(const Quartic<Rational>& f, const Transformed& t) {
   Quartic<Rational> out;
   const Rational q = t.kp / t.ke;
-  for (int i = 0; i < 5; ++i) out[static_cast<std::size_t>(i)] = t.det_h * t.det_h * pow_q(t.ke, 4) * pow_q(q, i) * f[static_cast<std::size_t>(i)];
+  for (int i = 0; i < 5; ++i)
+    out[static_cast<std::size_t>(i)] =
+        t.det_h * t.det_h * pow_q(t.ke, 4) * pow_q(q, i) * f[static_cast<std::size_t>(i)];
   return out;
 }
 
 inline Quadratic<Rational> transformed_s(const Quadratic<Rational>& s, const Transformed& t) {
   Quadratic<Rational> out;
   const Rational q = t.kp / t.ke;
-  for (int i = 0; i < 3; ++i) out[static_cast<std::size_t>(i)] = t.det_h * t.det_h * pow_q(t.ke, 3) * pow_q(q, i) * s[static_cast<std::size_t>(i)];
+  for (int i = 0; i < 3; ++i)
+    out[static_cast<std::size_t>(i)] =
+        t.det_h * t.det_h * pow_q(t.ke, 3) * pow_q(q, i) * s[static_cast<std::size_t>(i)];
   return out;
 }
 
