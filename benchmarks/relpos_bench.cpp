@@ -261,7 +261,7 @@ struct Result {
   double wrong_decided = 0;     // answered and wrong (fraction of all pairs)
   int n = 0;
   int batches = 0;
-  std::array<int, 4> stages{};
+  std::array<int, 5> stages{};
 };
 
 volatile int g_sink = 0;
@@ -276,7 +276,7 @@ Result measure(const std::vector<Pair>& v, F method, double budget_s, const std:
   auto t0 = Clock::now();
   for (std::size_t i = 0; i < v.size(); ++i) {
     Answer a = method(v[i]);
-    if (a.stage >= 0 && a.stage < 4) ++res.stages[static_cast<std::size_t>(a.stage)];
+    if (a.stage >= 0 && a.stage < 5) ++res.stages[static_cast<std::size_t>(a.stage)];
     if (!a.pos)
       ++undecided;
     else if (*a.pos != v[i].truth) {
@@ -460,11 +460,11 @@ int main(int argc, char** argv) {
   }
   {
     std::ofstream csv(out_dir + "/stages.csv");
-    csv << "family,eps,n,static_double,interval,exact_signs,exact_roots\n";
+    csv << "family,eps,n,static_double,multiple_root_witness,interval,exact_signs,exact_roots\n";
     for (const auto& r : rows)
       if (r.method == "adaptive")
         csv << r.family << "," << r.eps << "," << r.r.n << "," << r.r.stages[0] << "," << r.r.stages[1] << ","
-            << r.r.stages[2] << "," << r.r.stages[3] << "\n";
+            << r.r.stages[2] << "," << r.r.stages[3] << "," << r.r.stages[4] << "\n";
   }
   auto find = [&](const std::string& fam, const std::string& m) -> const Row* {
     for (const auto& r : rows)
@@ -497,9 +497,10 @@ int main(int argc, char** argv) {
              << ", \"n\": " << r.r.n;
           if (r.method == "adaptive")
             js << ", \"stage_fractions\": {\"static_double\": " << fmt(double(r.r.stages[0]) / r.r.n)
-               << ", \"interval\": " << fmt(double(r.r.stages[1]) / r.r.n)
-               << ", \"exact_signs\": " << fmt(double(r.r.stages[2]) / r.r.n)
-               << ", \"exact_roots\": " << fmt(double(r.r.stages[3]) / r.r.n) << "}";
+               << ", \"multiple_root_witness\": " << fmt(double(r.r.stages[1]) / r.r.n)
+               << ", \"interval\": " << fmt(double(r.r.stages[2]) / r.r.n)
+               << ", \"exact_signs\": " << fmt(double(r.r.stages[3]) / r.r.n)
+               << ", \"exact_roots\": " << fmt(double(r.r.stages[4]) / r.r.n) << "}";
           js << "}";
           firstm = false;
         }

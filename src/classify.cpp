@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "relpos/multiple_roots.hpp"
 #include "relpos/smallness.hpp"
 #include "relpos/static_filter.hpp"
 #include "relpos/sturm.hpp"
@@ -60,6 +61,8 @@ std::string to_string(Stage s) {
   switch (s) {
     case Stage::StaticDouble:
       return "static-double";
+    case Stage::MultipleRootWitness:
+      return "multiple-root-witness";
     case Stage::Interval:
       return "interval";
     case Stage::ExactSigns:
@@ -200,6 +203,37 @@ bool decide_from_signs(const DecisionSigns& d, Verdict& v) {
   return true;
 }
 
+/// Decision from exact root facts (Disc(f) = 0 or a defective sequence) and the rho comparison.
+void decide_from_facts(const RootFacts& x, int rho_vs_one, Verdict& v) {
+  v.real_roots = static_cast<signed char>(x.real);
+  v.negative_roots = static_cast<signed char>(x.negative);
+  v.positive_roots = static_cast<signed char>(x.positive);
+  v.nonreal_roots = static_cast<signed char>(x.nonreal);
+  v.nonreal_multiple = static_cast<signed char>(x.nonreal_multiple);
+  v.tangent_negative = static_cast<signed char>(x.tangent_negative);
+  v.tangent_positive = static_cast<signed char>(x.tangent_positive);
+  v.sign_disc_f = static_cast<signed char>(x.sign_disc_f);
+  v.sign_disc_ftilde = static_cast<signed char>(x.sign_disc_ftilde);
+  v.rho_vs_one = static_cast<signed char>(rho_vs_one);
+  decide(v);
+}
+
+/// Stage 1b: the static filter left Disc(f) uncertain on exact-double input. If f has rational
+/// multiple roots, exhibit them on machine integers (multiple_roots.hpp): that certifies Disc(f) = 0
+/// and gives every root fact without GMP. rho comes from the static signs, or exactly from the same
+/// machine integers. False (nothing certified) when there is no such witness or a number overflows.
+bool decide_from_witness(const DoubleMatrix4& p, const DoubleMatrix4& e, const DecisionSigns& d, Verdict& v) {
+  const auto mp = machine_pencil(p, e);
+  if (!mp) return false;
+  const auto facts = rational_multiple_root_facts(mp->f, mp->s);
+  if (!facts) return false;
+  auto rho = compare_rho_with_one(d.vertex, d.graeffe);
+  if (!rho) rho = compare_rho_with_one(mp->f, mp->s);  // CheckedInt: uncertain only on overflow
+  if (!rho) return false;
+  decide_from_facts(*facts, *rho, v);
+  return true;
+}
+
 /// Exact data of a pair, computed only when an exact stage runs or full evidence is asked for.
 struct ExactData {
   Integer scale;
@@ -219,7 +253,13 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   Verdict v;
   if (use_filter && e.doubles() && p.doubles()) {  // stage 1: doubles with static error bounds
     v.stage = Stage::StaticDouble;
-    if (decide_from_signs(static_filter_signs(*p.doubles(), *e.doubles()), v)) return v;
+    const DecisionSigns d = static_filter_signs(*p.doubles(), *e.doubles());
+    if (decide_from_signs(d, v)) return v;
+    const auto disc = detail::certain(d.quartic.g0);
+    if (!disc || *disc == 0) {  // stage 1b: a witness of Disc(f) = 0 on machine integers
+      v.stage = Stage::MultipleRootWitness;
+      if (decide_from_witness(*p.doubles(), *e.doubles(), d, v)) return v;
+    }
   }
   if (use_filter) {  // stage 2: interval arithmetic
     v.stage = Stage::Interval;
@@ -252,17 +292,7 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
     x.sign_disc_f = rs.sign_disc_f;
     x.sign_disc_ftilde = rs.sign_disc_ftilde;
   }
-  v.real_roots = static_cast<signed char>(x.real);
-  v.negative_roots = static_cast<signed char>(x.negative);
-  v.positive_roots = static_cast<signed char>(x.positive);
-  v.nonreal_roots = static_cast<signed char>(x.nonreal);
-  v.nonreal_multiple = static_cast<signed char>(x.nonreal_multiple);
-  v.tangent_negative = static_cast<signed char>(x.tangent_negative);
-  v.tangent_positive = static_cast<signed char>(x.tangent_positive);
-  v.sign_disc_f = static_cast<signed char>(x.sign_disc_f);
-  v.sign_disc_ftilde = static_cast<signed char>(x.sign_disc_ftilde);
-  v.rho_vs_one = static_cast<signed char>(*compare_rho_with_one(exact->f, exact->s));  // exact: certain
-  decide(v);
+  decide_from_facts(x, *compare_rho_with_one(exact->f, exact->s), v);  // exact: certain
   return v;
 }
 

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "relpos/detail/small_factor.hpp"
+
 namespace relpos {
 namespace {
 
@@ -125,29 +127,13 @@ RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<I
 
 namespace {
 
+using detail::SmallCount;
+
 /// Distinct real roots of a square-free integer polynomial of degree 1 or 2, by sign.
-struct SmallCount {
-  int negative = 0, positive = 0;
-};
 SmallCount count_small(const Poly& h) {
-  SmallCount c;
-  if (h.degree() == 1) {
-    (sgn(h[0]) * sgn(h[1]) > 0 ? c.negative : c.positive) = 1;  // root -h0/h1
-    return c;
-  }
-  // degree 2, square-free: two real roots iff the discriminant is positive; then Descartes' rule of
-  // signs is exact (0 is not a root because f(0) != 0).
-  if (h[1] * h[1] - 4 * h[2] * h[0] <= 0) return c;
-  const int s2 = sgn(h[2]), s1 = sgn(h[1]), s0 = sgn(h[0]);
-  int variations = 0, last = s2;
-  for (int x : {s1, s0}) {
-    if (x == 0) continue;
-    if (x != last) ++variations;
-    last = x;
-  }
-  c.positive = variations;
-  c.negative = 2 - variations;
-  return c;
+  const int d = h.degree();
+  if (d == 1) return detail::count_small(1, 1, 0, sgn(h[1]), sgn(h[0]));
+  return detail::count_small(d, sgn(Integer(h[1] * h[1] - 4 * h[2] * h[0])), sgn(h[2]), sgn(h[1]), sgn(h[0]));
 }
 
 }  // namespace

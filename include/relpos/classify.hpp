@@ -2,10 +2,12 @@
 // Theorem 1 with the corrections of math.md section 3), decided exactly, with its evidence.
 //
 // Every decision is the sign of a polynomial in the input entries (section 4 of math.md). classify()
-// evaluates them first in doubles with static error bounds (static_filter.hpp), then in interval arithmetic and
-// certifies what it can; only the signs the filter cannot certify (exact zeros: tangencies, special roots, rho = 1) go
-// to exact GMP integers, and only Disc(f) = 0 or a defective Sturm-Habicht sequence goes to exact factorisation
-// (roots.hpp). classify_exact() skips the filter; the two return identical positions on every input.
+// evaluates them first in doubles with static error bounds (static_filter.hpp). When that leaves Disc(f)
+// uncertain on exact-double input it looks for a witness of Disc(f) = 0 -- exact rational multiple roots -- on
+// machine integers (multiple_roots.hpp). Then interval arithmetic certifies what it can; only the signs no filter
+// can certify (exact zeros: tangencies, special roots, rho = 1) go to exact GMP integers, and only Disc(f) = 0 or a
+// defective Sturm-Habicht sequence goes to exact factorisation (roots.hpp). classify_exact() skips the filter; the two
+// return identical positions on every input.
 #pragma once
 
 #include <optional>
@@ -30,10 +32,11 @@ std::string to_string(Position p);
 
 /// Which arithmetic settled the answer.
 enum class Stage {
-  StaticDouble,  ///< double arithmetic with static error bounds (inputs that are exact doubles)
-  Interval,      ///< all signs certified by interval arithmetic
-  ExactSigns,    ///< exact integer signs of the same polynomials
-  ExactRoots,    ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
+  StaticDouble,         ///< double arithmetic with static error bounds (inputs that are exact doubles)
+  MultipleRootWitness,  ///< Disc(f) = 0 certified by exact rational multiple roots, machine integers
+  Interval,             ///< all signs certified by interval arithmetic
+  ExactSigns,           ///< exact integer signs of the same polynomials
+  ExactRoots,           ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
 };
 std::string to_string(Stage s);
 

@@ -57,9 +57,14 @@ struct SturmHabicht {
 };
 
 /// Signs of f's coefficients and of the g_j: everything root counting looks at.
+/// Default: every sign uncertain (CGAL::Uncertain's own default is a *certain* zero, which would
+/// read as an exact zero to a caller that never filled the field).
 struct QuarticSigns {
-  USign f[5];
-  USign g2[3], g1[2], g0;
+  USign f[5] = {USign::indeterminate(), USign::indeterminate(), USign::indeterminate(), USign::indeterminate(),
+                USign::indeterminate()};
+  USign g2[3] = {USign::indeterminate(), USign::indeterminate(), USign::indeterminate()};
+  USign g1[2] = {USign::indeterminate(), USign::indeterminate()};
+  USign g0 = USign::indeterminate();
 };
 
 template <class NT>
