@@ -17,7 +17,7 @@ for r in rows:
         methods.append(r["method"])
 colors = dict(zip(methods, plt.cm.tab10.colors))
 
-# (1) median time per method per family ((c) rows pooled: median of the per-eps medians).
+# (1) per-pair median time per method per family ((c) rows pooled: median of the per-eps medians).
 fams = ["a", "b", "c", "c-sym"]
 labels = {"a": "(a) generic random", "b": "(b) exact tangencies", "c": "(c) near-tangent",
           "c-sym": "(c-sym) near-tangent, symmetric"}
@@ -26,7 +26,7 @@ def med(xs):
     return xs[len(xs) // 2] if xs else float("nan")
 t = defaultdict(list)
 for r in rows:
-    t[(r["family"], r["method"])].append(float(r["median_ns"]))
+    t[(r["family"], r["method"])].append(float(r["pair_median_ns"]))
 fig, ax = plt.subplots(figsize=(10, 5))
 w = 0.8 / len(methods)
 for i, m in enumerate(methods):
@@ -64,7 +64,7 @@ for m in methods:
     rs = [r for r in rows if r["method"] == m]
     n = sum(int(r["n"]) for r in rs)
     err = sum(float(r["error_rate"]) * int(r["n"]) for r in rs) / n
-    tm = sum(float(r["median_ns"]) * int(r["n"]) for r in rs) / n
+    tm = sum(float(r["median_ns"]) * int(r["n"]) for r in rs) / n  # family means
     ax.scatter([tm], [err], s=60, color=colors[m], label=m)
     ax.annotate(m, (tm, err), textcoords="offset points", xytext=(5, 5), fontsize=8)
 ax.set_xscale("log")

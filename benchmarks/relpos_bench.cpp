@@ -255,7 +255,8 @@ struct Answer {
 };
 
 struct Result {
-  double median_ns = 0;
+  double median_ns = 0;         // median over batches of the family-average time per classification
+  double pair_median_ns = 0;    // median over pairs of each pair's own time (the bars' measure)
   double error_rate = 0;        // wrong or undecided
   double decided_fraction = 0;  // answered at all
   double wrong_decided = 0;     // answered and wrong (fraction of all pairs)
@@ -316,6 +317,26 @@ Result measure(const std::vector<Pair>& v, F method, double budget_s, const std:
   std::sort(times.begin(), times.end());
   res.median_ns = times[times.size() / 2];
   res.batches = nb;
+  // Per pair: each pair's time is the best of 3 timed loops of `reps` calls (reps makes a loop last
+  // >= ~2 us, so the clock's resolution does not matter); the median is taken over pairs.
+  const int reps = std::max(1, static_cast<int>(std::ceil(2e-6 / std::max(first / v.size(), 1e-9))));
+  std::vector<double> per(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    double best = 1e300;
+    for (int trial = 0; trial < 3; ++trial) {
+      int acc = 0;
+      auto s = Clock::now();
+      for (int r = 0; r < reps; ++r) {
+        Answer a = method(v[i]);
+        acc += a.pos ? static_cast<int>(*a.pos) : 7;
+      }
+      best = std::min(best, std::chrono::duration<double, std::nano>(Clock::now() - s).count() / reps);
+      g_sink = g_sink + acc;
+    }
+    per[i] = best;
+  }
+  std::nth_element(per.begin(), per.begin() + static_cast<long>(per.size() / 2), per.end());
+  res.pair_median_ns = per[per.size() / 2];
   return res;
 }
 
@@ -442,9 +463,10 @@ int main(int argc, char** argv) {
       Row row{f.family, f.eps, f.k, m.name, measure(f.pairs, m.run, f.eps.empty() ? budget : budget / 4, m.name), 0};
       for (auto& p : f.pairs) row.exact_double_inputs += p.exact_doubles;
       if (m.name == "adaptive" && row.r.wrong_decided > 0) adaptive_wrong = true;
-      std::fprintf(stderr, "%-13s %-2s %-6s median %10.1f ns  err %.4f  decided %.4f  (%d batches)\n", m.name.c_str(),
-                   f.family.c_str(), f.eps.c_str(), row.r.median_ns, row.r.error_rate, row.r.decided_fraction,
-                   row.r.batches);
+      std::fprintf(
+          stderr, "%-13s %-2s %-6s pair median %10.1f ns  batch mean %10.1f ns  err %.4f  decided %.4f  (%d batches)\n",
+          m.name.c_str(), f.family.c_str(), f.eps.c_str(), row.r.pair_median_ns, row.r.median_ns, row.r.error_rate,
+          row.r.decided_fraction, row.r.batches);
       rows.push_back(row);
     }
   }
@@ -452,11 +474,11 @@ int main(int argc, char** argv) {
   {
     std::ofstream csv(out_dir + "/results.csv");
     csv << "family,eps,method,median_ns,error_rate,decided_fraction,n,wrong_decided_rate,delta_log2,exact_double_"
-           "inputs\n";
+           "inputs,pair_median_ns\n";
     for (const auto& r : rows)
       csv << r.family << "," << r.eps << "," << r.method << "," << fmt(r.r.median_ns) << "," << fmt(r.r.error_rate)
           << "," << fmt(r.r.decided_fraction) << "," << r.r.n << "," << fmt(r.r.wrong_decided) << ","
-          << (r.k ? -r.k : 0) << "," << r.exact_double_inputs << "\n";
+          << (r.k ? -r.k : 0) << "," << r.exact_double_inputs << "," << fmt(r.r.pair_median_ns) << "\n";
   }
   {
     std::ofstream csv(out_dir + "/stages.csv");
@@ -477,11 +499,14 @@ int main(int argc, char** argv) {
     const Row* ad_b = find("b", "adaptive");
     std::ofstream js(out_dir + "/summary.json");
     js << "{\n  \"seed\": " << seed << ",\n";
-    js << "  \"adaptive_over_naive_double_family_a\": " << fmt(ad_a->r.median_ns / nd_a->r.median_ns) << ",\n";
-    js << "  \"adaptive_median_family_b_us\": " << fmt(ad_b->r.median_ns / 1000.0) << ",\n";
-    js << "  \"bar_a_met\": "
-       << ((ad_a->r.median_ns <= 1.5 * nd_a->r.median_ns && ad_a->r.error_rate == 0) ? "true" : "false") << ",\n";
-    js << "  \"bar_b_met\": " << (ad_b->r.median_ns <= 2000.0 ? "true" : "false") << ",\n";
+    // The bars of issue 3 are per-pair medians; the batch means are reported alongside.
+    const double ratio_a = ad_a->r.pair_median_ns / nd_a->r.pair_median_ns;
+    js << "  \"adaptive_over_naive_double_family_a\": " << fmt(ratio_a) << ",\n";
+    js << "  \"adaptive_median_family_b_us\": " << fmt(ad_b->r.pair_median_ns / 1000.0) << ",\n";
+    js << "  \"batch_mean_ratio_family_a\": " << fmt(ad_a->r.median_ns / nd_a->r.median_ns) << ",\n";
+    js << "  \"batch_mean_family_b_us\": " << fmt(ad_b->r.median_ns / 1000.0) << ",\n";
+    js << "  \"bar_a_met\": " << ((ratio_a <= 1.5 && ad_a->r.error_rate == 0) ? "true" : "false") << ",\n";
+    js << "  \"bar_b_met\": " << (ad_b->r.pair_median_ns <= 2000.0 ? "true" : "false") << ",\n";
     js << "  \"adaptive_misclassifications\": " << (adaptive_wrong ? "true" : "false") << ",\n";
     js << "  \"families\": {\n";
     bool firstf = true;
@@ -492,9 +517,9 @@ int main(int argc, char** argv) {
       bool firstm = true;
       for (const auto& r : rows)
         if (r.family == f.family) {
-          js << (firstm ? "" : ", ") << "\"" << r.method << "\": {\"median_ns\": " << fmt(r.r.median_ns)
-             << ", \"error_rate\": " << fmt(r.r.error_rate) << ", \"decided_fraction\": " << fmt(r.r.decided_fraction)
-             << ", \"n\": " << r.r.n;
+          js << (firstm ? "" : ", ") << "\"" << r.method << "\": {\"pair_median_ns\": " << fmt(r.r.pair_median_ns)
+             << ", \"batch_mean_ns\": " << fmt(r.r.median_ns) << ", \"error_rate\": " << fmt(r.r.error_rate)
+             << ", \"decided_fraction\": " << fmt(r.r.decided_fraction) << ", \"n\": " << r.r.n;
           if (r.method == "adaptive")
             js << ", \"stage_fractions\": {\"static_double\": " << fmt(double(r.r.stages[0]) / r.r.n)
                << ", \"multiple_root_witness\": " << fmt(double(r.r.stages[1]) / r.r.n)

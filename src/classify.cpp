@@ -251,9 +251,11 @@ struct ExactData {
 /// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
 Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact) {
   Verdict v;
-  if (use_filter && e.doubles() && p.doubles()) {  // stage 1: doubles with static error bounds
-    v.stage = Stage::StaticDouble;
-    const DecisionSigns d = static_filter_signs(*p.doubles(), *e.doubles());
+  if (use_filter && e.doubles() && p.doubles()) {
+    v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
+    DecisionSigns d;                // uncertain unless the inputs are in the filter's range
+    if (e.filter_doubles() && p.filter_doubles())
+      d = static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles());
     if (decide_from_signs(d, v)) return v;
     const auto disc = detail::certain(d.quartic.g0);
     if (!disc || *disc == 0) {  // stage 1b: a witness of Disc(f) = 0 on machine integers

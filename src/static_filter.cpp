@@ -105,10 +105,32 @@ DecisionSigns uncertain() { return DecisionSigns{}; }
 
 }  // namespace
 
+std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m) {
+  if (!m) return std::nullopt;
+  Mat<double> out;
+  if (!normalize(*m, out)) return std::nullopt;
+  return out.a;
+}
+
 DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4& ein) {
-  const Bounds& b = bounds();
   Mat<double> p, e;
   if (!normalize(pin, p) || !normalize(ein, e)) return uncertain();
+  return static_filter_signs_normalized(p.a, e.a);
+}
+
+namespace {
+
+/// View of a normalized DoubleMatrix4 for the generic pencil code (no copy).
+struct View {
+  const DoubleMatrix4& a;
+  const double& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+};
+
+}  // namespace
+
+DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
+  const Bounds& b = bounds();
+  const View p{pn}, e{en};
   auto f = characteristic_polynomial<double>(p, e);
   auto s = special_polynomial<double>(p, e);
   double ef[5], es[3];

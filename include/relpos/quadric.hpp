@@ -43,6 +43,11 @@ using DoubleMatrix4 = std::array<double, 16>;
 /// The entries as doubles if each one is exactly representable, else nullopt.
 std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m);
 
+/// m times the power of two that brings its largest entry into [1/2, 1) (exact), or nullopt if a
+/// non-zero entry would become subnormal or m is zero or not finite: the input range of the static
+/// filter (static_filter.hpp). A positive scaling changes no decision (math.md section 1).
+std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m);
+
 /// Exact affine type of a real quadric surface.
 enum class QuadricKind {
   Ellipsoid,
@@ -96,11 +101,14 @@ class Ellipsoid {
   const Matrix4& matrix() const { return m_; }
   /// The matrix as doubles when every entry is exactly a double (enables the static filter).
   const std::optional<DoubleMatrix4>& doubles() const { return d_; }
+  /// doubles(), power-of-two normalized once for the static filter (cached: a quadric is usually
+  /// classified against many others).
+  const std::optional<DoubleMatrix4>& filter_doubles() const { return n_; }
 
  private:
-  explicit Ellipsoid(Matrix4 m) : m_(std::move(m)), d_(exact_doubles(m_)) {}
+  explicit Ellipsoid(Matrix4 m) : m_(std::move(m)), d_(exact_doubles(m_)), n_(power_of_two_normalized(d_)) {}
   Matrix4 m_;
-  std::optional<DoubleMatrix4> d_;
+  std::optional<DoubleMatrix4> d_, n_;
 };
 
 /// A validated elliptic paraboloid, sign-normalized: A = Q3 positive semidefinite of rank 2, det P < 0.
@@ -118,11 +126,14 @@ class Paraboloid {
   const Matrix4& matrix() const { return m_; }
   /// The matrix as doubles when every entry is exactly a double (enables the static filter).
   const std::optional<DoubleMatrix4>& doubles() const { return d_; }
+  /// doubles(), power-of-two normalized once for the static filter (cached: a quadric is usually
+  /// classified against many others).
+  const std::optional<DoubleMatrix4>& filter_doubles() const { return n_; }
 
  private:
-  explicit Paraboloid(Matrix4 m) : m_(std::move(m)), d_(exact_doubles(m_)) {}
+  explicit Paraboloid(Matrix4 m) : m_(std::move(m)), d_(exact_doubles(m_)), n_(power_of_two_normalized(d_)) {}
   Matrix4 m_;
-  std::optional<DoubleMatrix4> d_;
+  std::optional<DoubleMatrix4> d_, n_;
 };
 
 }  // namespace relpos

@@ -30,4 +30,8 @@ struct DecisionSigns {
 /// value from zero (or the input is out of the filter's range).
 DecisionSigns static_filter_signs(const DoubleMatrix4& p, const DoubleMatrix4& e);
 
+/// The same for matrices already normalized by power_of_two_normalized() (quadric.hpp), e.g.
+/// Ellipsoid::filter_doubles(): the hot path of classify().
+DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e);
+
 }  // namespace relpos
