@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "float_baseline.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/pencil.hpp"
@@ -35,69 +36,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-// ---------------------------------------------------------------------------------------------
-// Float baselines: the library's generic formulas instantiated with NT, and a naive decision table.
-
-template <class NT>
-struct Mat {
-  std::array<NT, 16> a;
-  const NT& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
-};
-
-template <class T>
-USign usign(const T& x) {
-  return relpos::sign_of(x);
-}
-inline USign usign(const long double& x) {
-  return USign(x > 0 ? CGAL::POSITIVE : (x < 0 ? CGAL::NEGATIVE : CGAL::ZERO));
-}
-
-/// What a user would write on top of the float signs. nullopt = undecided (a zero / uncertain sign
-/// where the table needs a strict one).
-std::optional<Position> naive_table(const QuarticSigns& q, const USign& vertex, const USign& graeffe) {
-  auto rho = compare_rho_with_one(vertex, graeffe);
-  if (!rho) return std::nullopt;
-  const bool small = *rho <= 0;
-  auto disc = detail::certain(q.g0);
-  if (!disc) return std::nullopt;
-  if (*disc == 0) {
-    // Disc(f) == 0 exactly: a tangency. The sign of the multiple root is unknown to a float code;
-    // count with the discriminant taken positive and call it TE if a positive root shows up.
-    QuarticSigns q2 = q;
-    q2.g0 = USign(CGAL::POSITIVE);
-    auto c = count_roots(q2);
-    if (!c) return std::nullopt;
-    if (c->positive > 0) return Position::TE;
-    return small ? Position::TI : Position::Unclassified;
-  }
-  auto c = count_roots(q);
-  if (!c) return std::nullopt;
-  const int nonreal = 4 - c->real;
-  if (nonreal == 0 && c->positive == 2) return Position::E;
-  if (!small) return Position::Unclassified;
-  if (nonreal == 2 && c->positive == 0) return Position::C;
-  if (nonreal == 0 && c->positive == 0) return Position::I;
-  return Position::Unclassified;
-}
-
-template <class NT, class Conv>
-std::optional<Position> float_classify(const std::array<double, 16>& pd, const std::array<double, 16>& ed, Conv conv) {
-  Mat<NT> P, E;
-  for (std::size_t i = 0; i < 16; ++i) {
-    P.a[i] = conv(pd[i]);
-    E.a[i] = conv(ed[i]);
-  }
-  const Quartic<NT> f = characteristic_polynomial<NT>(P, E);
-  const Quadratic<NT> s = special_polynomial<NT>(P, E);
-  SturmHabicht<NT> sh(f);
-  SmallnessQuantities<NT> sq(f, s);
-  QuarticSigns q;
-  for (int i = 0; i < 5; ++i) q.f[i] = usign(f[static_cast<std::size_t>(i)]);
-  for (int i = 0; i < 3; ++i) q.g2[i] = usign(sh.g2[i]);
-  for (int i = 0; i < 2; ++i) q.g1[i] = usign(sh.g1[i]);
-  q.g0 = usign(sh.g0[0]);
-  return naive_table(q, usign(sq.vertex), usign(sq.graeffe));
-}
+using namespace bench;
 
 using Interval = CGAL::Interval_nt<false>;
 
@@ -347,11 +286,8 @@ struct Method {
 
 std::vector<Method> methods() {
   std::vector<Method> ms;
-  ms.push_back({"naive-double",
-                [](const Pair& x) { return Answer{float_classify<double>(x.pd, x.ed, [](double d) { return d; })}; }});
-  ms.push_back({"long-double", [](const Pair& x) {
-                  return Answer{float_classify<long double>(x.pd, x.ed, [](double d) { return (long double)d; })};
-                }});
+  ms.push_back({"naive-double", [](const Pair& x) { return Answer{naive_double(x.pd, x.ed)}; }});
+  ms.push_back({"long-double", [](const Pair& x) { return Answer{naive_long_double(x.pd, x.ed)}; }});
 #ifdef __SIZEOF_FLOAT128__
   ms.push_back({"float128", [](const Pair& x) {
                   return Answer{float_classify<__float128>(x.pd, x.ed, [](double d) { return (__float128)d; })};

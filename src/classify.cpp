@@ -186,7 +186,7 @@ DecisionSigns signs_in(const Quartic<NT>& f, const Quadratic<NT>& s) {
 
 /// Decision from certified signs when Disc(f) != 0 (then f and f~ are square-free). False when a
 /// needed sign is uncertain, Disc(f) = 0 or the Sturm-Habicht sequence is defective.
-bool decide_from_signs(const DecisionSigns& d, Verdict& v) {
+bool decide_from_signs_slow(const DecisionSigns& d, Verdict& v) {
   auto disc = detail::certain(d.quartic.g0);
   if (!disc || *disc == 0) return false;
   auto counts = count_roots(d.quartic);
@@ -200,6 +200,53 @@ bool decide_from_signs(const DecisionSigns& d, Verdict& v) {
   v.sign_disc_f = v.sign_disc_ftilde = static_cast<signed char>(*disc);  // Disc(f) = Disc(f~) * positive
   v.rho_vs_one = static_cast<signed char>(*rho);
   decide(v);
+  return true;
+}
+
+/// The eight signs root counting reads (count_roots): every one certain and non-zero is the common
+/// case, and then the whole decision is a function of 8 sign bits and rho's 3 outcomes. This table
+/// holds that function, *generated* at start-up by running decide_from_signs_slow() -- the one
+/// written decision -- on every combination, so nothing is decided twice; the hot path becomes a
+/// few compares and one lookup instead of a chain of data-dependent (hence mispredicted) branches.
+struct SignTable {
+  Verdict v[256][3];  // [sign bits][rho_vs_one + 1]
+  SignTable() {
+    auto sg = [](int bit) { return USign(bit ? CGAL::POSITIVE : CGAL::NEGATIVE); };
+    for (int bits = 0; bits < 256; ++bits)
+      for (int rho = -1; rho <= 1; ++rho) {
+        DecisionSigns d;
+        QuarticSigns& q = d.quartic;
+        q.f[4] = sg(bits & 1), q.g2[0] = sg(bits & 2), q.g1[0] = sg(bits & 4), q.g0 = sg(bits & 8);
+        q.f[0] = sg(bits & 16), q.f[1] = sg(bits & 32), q.g2[2] = sg(bits & 64), q.g1[1] = sg(bits & 128);
+        // rho < 1: vertex >= 0 and graeffe > 0; rho = 1: graeffe = 0; rho > 1: vertex < 0.
+        d.vertex = USign(rho > 0 ? CGAL::NEGATIVE : CGAL::POSITIVE);
+        d.graeffe = USign(rho < 0 ? CGAL::POSITIVE : CGAL::ZERO);
+        Verdict x;
+        decide_from_signs_slow(d, x);  // always decides: every needed sign is certain and non-zero
+        v[bits][rho + 1] = x;
+      }
+  }
+};
+
+/// 1 for a certain positive sign, 0 for a certain negative one, -1 otherwise (zero or uncertain).
+inline int sign_bit(const USign& s) {
+  const int lo = s.inf(), hi = s.sup();
+  return (lo == hi && lo != 0) ? (lo > 0) : -1;
+}
+
+bool decide_from_signs(const DecisionSigns& d, Verdict& v) {
+  static const SignTable table;
+  const QuarticSigns& q = d.quartic;
+  const int b[8] = {sign_bit(q.f[4]), sign_bit(q.g2[0]), sign_bit(q.g1[0]), sign_bit(q.g0),
+                    sign_bit(q.f[0]), sign_bit(q.f[1]),  sign_bit(q.g2[2]), sign_bit(q.g1[1])};
+  const auto rho = compare_rho_with_one(d.vertex, d.graeffe);
+  if ((b[0] | b[1] | b[2] | b[3] | b[4] | b[5] | b[6] | b[7]) < 0 || !rho)
+    return decide_from_signs_slow(d, v);  // a zero or uncertain sign: the general path decides or fails
+  int bits = 0;
+  for (int i = 0; i < 8; ++i) bits |= b[i] << i;
+  const Stage stage = v.stage;
+  v = table.v[bits][*rho + 1];
+  v.stage = stage;
   return true;
 }
 

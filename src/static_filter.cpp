@@ -65,11 +65,13 @@ const Bounds& bounds() {
 
 /// Sign of v certified by |v| > bound (with slack for the rounding of the bound itself and for
 /// underflow, whose absolute error is below 2^-1074 per operation).
+/// Branch-free: the signs of random inputs are unpredictable, and 13 mispredicted branches per
+/// pair cost as much as the arithmetic. Certain positive is [+, +], certain negative [-, -],
+/// uncertain (also NaN) the interval [-, +].
 USign certified(double v, double bound) {
   const double b = bound * (1 + 0x1p-40) + 1e-300;
-  if (v > b) return USign(CGAL::POSITIVE);
-  if (v < -b) return USign(CGAL::NEGATIVE);
-  return USign::indeterminate();  // also for NaN
+  const int pos = v > b, neg = v < -b;
+  return USign(static_cast<CGAL::Sign>(2 * pos - 1), static_cast<CGAL::Sign>(1 - 2 * neg));
 }
 
 // Exponent arithmetic on the bits of the double (std::ilogb / std::ldexp are out-of-line libm
