@@ -279,6 +279,38 @@ Result measure(const std::vector<Pair>& v, F method, double budget_s, const std:
   return res;
 }
 
+/// Per-pair medians of two methods timed back to back on each pair (alternating, best of 3 loops
+/// each), so that both see the same machine load: the ratio the bars are stated in.
+template <class F, class G>
+std::pair<double, double> measure_paired(const std::vector<Pair>& v, F first, G second) {
+  std::vector<double> a(v.size()), b(v.size());
+  auto time_one = [](auto& method, const Pair& x, int reps) {
+    int acc = 0;
+    auto s = Clock::now();
+    for (int r = 0; r < reps; ++r) {
+      Answer ans = method(x);
+      acc += ans.pos ? static_cast<int>(*ans.pos) : 7;
+    }
+    g_sink = g_sink + acc;
+    return std::chrono::duration<double, std::nano>(Clock::now() - s).count() / reps;
+  };
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const double est = std::max(time_one(first, v[i], 1), time_one(second, v[i], 1));
+    const int reps = std::max(1, static_cast<int>(std::ceil(2000.0 / std::max(est, 1.0))));
+    double ba = 1e300, bb = 1e300;
+    for (int trial = 0; trial < 3; ++trial) {
+      ba = std::min(ba, time_one(first, v[i], reps));
+      bb = std::min(bb, time_one(second, v[i], reps));
+    }
+    a[i] = ba, b[i] = bb;
+  }
+  auto median = [](std::vector<double>& x) {
+    std::nth_element(x.begin(), x.begin() + static_cast<long>(x.size() / 2), x.end());
+    return x[x.size() / 2];
+  };
+  return {median(a), median(b)};
+}
+
 struct Method {
   std::string name;
   std::function<Answer(const Pair&)> run;
@@ -429,20 +461,36 @@ int main(int argc, char** argv) {
       if (r.family == fam && r.method == m) return &r;
     return nullptr;
   };
+  // The bars: naive double and adaptive timed back to back on each pair (same machine load).
+  const auto ms = methods();
+  auto method_named = [&](const std::string& name) {
+    for (const auto& m : ms)
+      if (m.name == name) return m.run;
+    return ms.front().run;
+  };
+  const auto paired_a = measure_paired(fams[0].pairs, method_named("naive-double"), method_named("adaptive"));
+  const auto paired_b = measure_paired(fams[1].pairs, method_named("naive-double"), method_named("adaptive"));
+  std::fprintf(stderr, "paired (a): naive-double %.1f ns, adaptive %.1f ns, ratio %.3f\n", paired_a.first,
+               paired_a.second, paired_a.second / paired_a.first);
+  std::fprintf(stderr, "paired (b): naive-double %.1f ns, adaptive %.1f ns\n", paired_b.first, paired_b.second);
   {
     const Row* ad_a = find("a", "adaptive");
     const Row* nd_a = find("a", "naive-double");
     const Row* ad_b = find("b", "adaptive");
     std::ofstream js(out_dir + "/summary.json");
     js << "{\n  \"seed\": " << seed << ",\n";
-    // The bars of issue 3 are per-pair medians; the batch means are reported alongside.
-    const double ratio_a = ad_a->r.pair_median_ns / nd_a->r.pair_median_ns;
+    // The bars of issue 3 are per-pair medians, naive and adaptive timed back to back on each pair;
+    // the per-method medians (measured minutes apart) and batch means are reported alongside.
+    const double ratio_a = paired_a.second / paired_a.first;
     js << "  \"adaptive_over_naive_double_family_a\": " << fmt(ratio_a) << ",\n";
-    js << "  \"adaptive_median_family_b_us\": " << fmt(ad_b->r.pair_median_ns / 1000.0) << ",\n";
+    js << "  \"paired_naive_double_family_a_ns\": " << fmt(paired_a.first) << ",\n";
+    js << "  \"paired_adaptive_family_a_ns\": " << fmt(paired_a.second) << ",\n";
+    js << "  \"adaptive_median_family_b_us\": " << fmt(paired_b.second / 1000.0) << ",\n";
+    js << "  \"separate_runs_ratio_family_a\": " << fmt(ad_a->r.pair_median_ns / nd_a->r.pair_median_ns) << ",\n";
     js << "  \"batch_mean_ratio_family_a\": " << fmt(ad_a->r.median_ns / nd_a->r.median_ns) << ",\n";
     js << "  \"batch_mean_family_b_us\": " << fmt(ad_b->r.median_ns / 1000.0) << ",\n";
     js << "  \"bar_a_met\": " << ((ratio_a <= 1.5 && ad_a->r.error_rate == 0) ? "true" : "false") << ",\n";
-    js << "  \"bar_b_met\": " << (ad_b->r.pair_median_ns <= 2000.0 ? "true" : "false") << ",\n";
+    js << "  \"bar_b_met\": " << (paired_b.second <= 2000.0 && ad_b->r.error_rate == 0 ? "true" : "false") << ",\n";
     js << "  \"adaptive_misclassifications\": " << (adaptive_wrong ? "true" : "false") << ",\n";
     js << "  \"families\": {\n";
     bool firstf = true;
