@@ -137,6 +137,7 @@ struct Scene::Frame {
   SymmetricEntries<Fast> fp, fadj_a;
   Fast fdet_p, flambda_max, frho_factor;
   std::array<int, kTested> sphere_counts{}, general_counts{};
+  bool diagonal_a = false;  ///< A diagonal: the certificates skip its zero entries
   void compute_counts();
 
   explicit Frame(const Paraboloid& par) {
@@ -156,6 +157,7 @@ struct Scene::Frame {
     const Rational det = characteristic_polynomial<Rational>(v, v)[4];
     const Rational tr = pe.q00 + pe.q11 + pe.q22, s2 = adj.q00 + adj.q11 + adj.q22;
     p = bounded(pe);
+    diagonal_a = CGAL::is_zero(pe.q01) && CGAL::is_zero(pe.q02) && CGAL::is_zero(pe.q12);
     adj_a = bounded(adj);
     det_p = bounded(det);
     // The two irrational constants, enclosed by intervals once per paraboloid. A >= 0 has the
@@ -200,8 +202,9 @@ USign usign(int s) { return s == 0 ? USign::indeterminate() : USign(s > 0 ? CGAL
 /// certified sign of the Tested quantity i (0 when uncertain).
 template <class NT, class Sign>
 std::optional<SceneVerdict> certify_sphere(const SymmetricEntries<NT>& x, const SymmetricEntries<NT>& p,
-                                           const NT& lambda_max, const NT& rho_factor, Sign sign) {
-  const SphereQuantities<NT> q(x, p);
+                                           bool diagonal_a, const NT& lambda_max, const NT& rho_factor, Sign sign) {
+  const SphereQuantities<NT> q =
+      diagonal_a ? SphereQuantities<NT>(x, p, typename SphereQuantities<NT>::DiagonalA{}) : SphereQuantities<NT>(x, p);
   if (sign(q.Pnp, kPn) > 0 && sign(q.outside_gap(), kOutsideGap) > 0) return kOutside;
   if (!(sign(q.inside_t(lambda_max), kInsideT) < 0 && sign(q.inside_gap(lambda_max), kInsideGap) > 0))
     return std::nullopt;
@@ -213,8 +216,10 @@ std::optional<SceneVerdict> certify_sphere(const SymmetricEntries<NT>& x, const 
 /// The certificates for a general ellipsoid.
 template <class NT, class Sign>
 std::optional<SceneVerdict> certify_general(const SymmetricEntries<NT>& x, const SymmetricEntries<NT>& p,
-                                            const SymmetricEntries<NT>& adj_a, const NT& det_p, Sign sign) {
-  const ContainmentQuantities<NT> q(x, p, adj_a);
+                                            bool diagonal_a, const SymmetricEntries<NT>& adj_a, const NT& det_p,
+                                            Sign sign) {
+  using Q = ContainmentQuantities<NT>;
+  const Q q = diagonal_a ? Q(x, p, adj_a, typename Q::DiagonalA{}) : Q(x, p, adj_a);
   if (sign(q.Pn, kPn) > 0 && sign(q.outside_gap(), kOutsideGap) > 0) return kOutside;
   if (!(sign(q.inside_t(), kInsideT) < 0 && sign(q.inside_gap(), kInsideGap) > 0)) return std::nullopt;
   // rho against 1 with the core's two smallness polynomials (smallness.hpp), f0 = det E = -K,
@@ -239,8 +244,8 @@ struct CountProbe {
 void Scene::Frame::compute_counts() {
   const RB one(1);  // any exact input: the counts do not depend on the values
   const SymmetricEntries<RB> x{one, one, one, one, one, one, one, one, one, one};
-  certify_sphere(x, p, lambda_max, rho_factor, CountProbe{&sphere_counts});
-  certify_general(x, p, adj_a, det_p, CountProbe{&general_counts});
+  certify_sphere(x, p, diagonal_a, lambda_max, rho_factor, CountProbe{&sphere_counts});
+  certify_general(x, p, diagonal_a, adj_a, det_p, CountProbe{&general_counts});
 }
 
 namespace {
@@ -271,10 +276,10 @@ double scale_for(double mx) {
     if (s == 1) {  // the hot path: exact inputs, counts known
       const SymmetricEntries<Fast> fx = entries<Fast>([&](int i, int j) { return Fast(m[4 * i + j]); });
       if (sphere)
-        return certify_sphere(fx, f.fp, f.flambda_max, f.frho_factor, [&](const Fast& v, int i) {
+        return certify_sphere(fx, f.fp, f.diagonal_a, f.flambda_max, f.frho_factor, [&](const Fast& v, int i) {
           return RB::certain_sign(v.v, v.a, f.sphere_counts[static_cast<std::size_t>(i)]);
         });
-      return certify_general(fx, f.fp, f.fadj_a, f.fdet_p, [&](const Fast& v, int i) {
+      return certify_general(fx, f.fp, f.diagonal_a, f.fadj_a, f.fdet_p, [&](const Fast& v, int i) {
         return RB::certain_sign(v.v, v.a, f.general_counts[static_cast<std::size_t>(i)]);
       });
     }
@@ -307,8 +312,8 @@ double scale_for(double mx) {
       return RB::enclosing(y - r, y + r);
     });
   }
-  if (sphere) return certify_sphere(x, f.p, f.lambda_max, f.rho_factor, tracked_sign);
-  return certify_general(x, f.p, f.adj_a, f.det_p, tracked_sign);
+  if (sphere) return certify_sphere(x, f.p, f.diagonal_a, f.lambda_max, f.rho_factor, tracked_sign);
+  return certify_general(x, f.p, f.diagonal_a, f.adj_a, f.det_p, tracked_sign);
 }
 
 }  // namespace

@@ -3,6 +3,9 @@
 // certificate polynomials are what math.md says they are (cross-checked in exact arithmetic against
 // the pencil code), and 1, 2, 3 threads give identical answers and consistent counts.
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <relpos/running_bound.hpp>
 #include <relpos/scene.hpp>
 #include <vector>
 
@@ -204,6 +207,40 @@ TEST_CASE("scene: the certificate polynomials are det M, -det E, D^2 P(c), s(l) 
   }
 }
 
+TEST_CASE("scene: the diagonal-A variants equal the general quantities (exact)") {
+  const std::uint64_t seed = 0x5CE7E007;
+  Rng g(seed);
+  CAPTURE(seed);
+  auto ent = [](const Matrix4& m) {
+    return relpos::SymmetricEntries<Rational>{m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2),
+                                              m(1, 2), m(0, 3), m(1, 3), m(2, 3), m(3, 3)};
+  };
+  for (int trial = 0; trial < 40; ++trial) {
+    // An axis-aligned paraboloid (any vertex, any of the three axes): A diagonal.
+    Matrix4 pm = paraboloid_matrix(g.positive_rational(4, 3), g.positive_rational(4, 3));
+    const Vector3 v{g.rational(-3, 3, 2), g.rational(-3, 3, 2), g.rational(-3, 3, 2)};
+    pm = congruence(pm, affine_matrix(identity3(), {-v[0], -v[1], -v[2]}));
+    const Matrix4 em = trial % 2 ? random_dyadic_ellipsoid(g).matrix() : sphere_matrix(v, g.positive_rational(4, 3));
+    relpos::SymmetricEntries<Rational> adj{
+        pm(1, 1) * pm(2, 2), pm(0, 0) * pm(2, 2), pm(0, 0) * pm(1, 1), Q(0), Q(0), Q(0), Q(0), Q(0), Q(0), Q(0)};
+    using CQ = relpos::ContainmentQuantities<Rational>;
+    const CQ a(ent(em), ent(pm), adj), b(ent(em), ent(pm), adj, CQ::DiagonalA{});
+    CHECK(a.D == b.D);
+    CHECK(a.K == b.K);
+    CHECK(a.Pn == b.Pn);
+    CHECK(a.W == b.W);
+    CHECK(a.S1 == b.S1);
+    CHECK(a.S2 == b.S2);
+    if (trial % 2 == 0) {
+      using SQ = relpos::SphereQuantities<Rational>;
+      const SQ c(ent(em), ent(pm)), d(ent(em), ent(pm), SQ::DiagonalA{});
+      CHECK(c.Kp == d.Kp);
+      CHECK(c.Pnp == d.Pnp);
+      CHECK(c.Wp == d.Wp);
+    }
+  }
+}
+
 TEST_CASE("scene: bodies with known answers, and the early-outs never fire on contact") {
   const std::uint64_t seed = 0x5CE7E002;
   Rng g(seed);
@@ -345,6 +382,118 @@ TEST_CASE("scene: a few thousand mixed bodies equal classify_exact; 1, 2, 3 thre
     CHECK(plain.counts.count(SceneStage::InsideCertificate) == 0);
     CHECK(plain.counts.count(SceneStage::OutsideCertificate) == 0);
   }
+}
+
+namespace {
+
+/// |value - exact| <= error_bound, and a certain sign is the exact sign.
+void check_bound(const relpos::RunningBound& x, const Rational& exact, const std::string& what) {
+  INFO(what << ": value " << x.value() << ", bound " << x.error_bound() << ", exact ~ " << CGAL::to_double(exact));
+  const Rational err = rabs(relpos::exact_rational(x.value()) - exact);
+  CHECK(err <= relpos::exact_rational(x.error_bound()));
+  if (x.sign() != 0) CHECK(x.sign() == sgn(exact));
+}
+
+/// A random double: mantissa of `bits` bits, exponent in [lo, hi], either sign.
+double random_double(Rng& g, int bits, int lo, int hi) {
+  const double m = static_cast<double>(g.uniform(1, (1L << bits) - 1)) / static_cast<double>(1L << bits);
+  return (g.chance(50) ? -1 : 1) * std::ldexp(m, static_cast<int>(g.uniform(lo, hi)));
+}
+
+}  // namespace
+
+TEST_CASE("scene: RunningBound bounds the rounding error of the certificate programs (exact cross-check)") {
+  const std::uint64_t seed = 0x5CE7E005;
+  Rng g(seed);
+  CAPTURE(seed);
+  using RB = relpos::RunningBound;
+  // Cancellation and underflow on purpose: x*y - z with z = fl(x*y) +- a few ulps; products of
+  // 2^-600-sized numbers (the exact product underflows); sums of terms of very different size.
+  for (int i = 0; i < 2000; ++i) {
+    const double x = random_double(g, 53, -30, 30), y = random_double(g, 53, -30, 30);
+    const double z = std::nextafter(x * y, g.chance(50) ? 1e300 : -1e300);
+    check_bound(RB(x) * RB(y) - RB(z),
+                relpos::exact_rational(x) * relpos::exact_rational(y) - relpos::exact_rational(z), "x y - z");
+    const double u = random_double(g, 30, -620, -560), v = random_double(g, 30, -620, -560);
+    const double w = random_double(g, 30, -1100, -1030);
+    check_bound(RB(u) * RB(v) + RB(w) - RB(u) * RB(-v),
+                2 * relpos::exact_rational(u) * relpos::exact_rational(v) + relpos::exact_rational(w), "underflow");
+    check_bound((RB(x) + RB(u)) * (RB(y) - RB(u)) - RB(x) * RB(y),
+                (relpos::exact_rational(x) + relpos::exact_rational(u)) *
+                        (relpos::exact_rational(y) - relpos::exact_rational(u)) -
+                    relpos::exact_rational(x) * relpos::exact_rational(y),
+                "tiny difference");
+  }
+  // The certificate programs themselves, on random entries of random magnitudes (the scene filter
+  // scales E to at most 2^40; here up to 2^60 and down to 2^-60), against the exact values.
+  for (int i = 0; i < 300; ++i) {
+    const int e_lo = static_cast<int>(g.uniform(-60, 0)), e_hi = e_lo + static_cast<int>(g.uniform(0, 60));
+    auto rd = [&] { return g.chance(15) ? 0.0 : random_double(g, static_cast<int>(g.uniform(1, 53)), e_lo, e_hi); };
+    double ev[10], pv[10], av[10];
+    for (double& v : ev) v = rd();
+    for (double& v : pv) v = random_double(g, 20, -8, 0);
+    for (double& v : av) v = random_double(g, 20, -8, 0);
+    auto as_rb = [](const double* v) {
+      return relpos::SymmetricEntries<RB>{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9]};
+    };
+    auto as_q = [](const double* v) {
+      auto q = [](double d) { return relpos::exact_rational(d); };
+      return relpos::SymmetricEntries<Rational>{q(v[0]), q(v[1]), q(v[2]), q(v[3]), q(v[4]),
+                                                q(v[5]), q(v[6]), q(v[7]), q(v[8]), q(v[9])};
+    };
+    const relpos::ContainmentQuantities<RB> fq(as_rb(ev), as_rb(pv), as_rb(av));
+    const relpos::ContainmentQuantities<Rational> eq(as_q(ev), as_q(pv), as_q(av));
+    check_bound(fq.Pn, eq.Pn, "Pn");
+    check_bound(fq.K, eq.K, "K");
+    check_bound(fq.outside_gap(), eq.outside_gap(), "outside gap");
+    check_bound(fq.inside_t(), eq.inside_t(), "inside t");
+    check_bound(fq.inside_gap(), eq.inside_gap(), "inside gap");
+    const relpos::SphereQuantities<RB> fs(as_rb(ev), as_rb(pv));
+    const relpos::SphereQuantities<Rational> es(as_q(ev), as_q(pv));
+    check_bound(fs.outside_gap(), es.outside_gap(), "sphere outside gap");
+    check_bound(fs.inside_gap(RB(pv[0])), es.inside_gap(relpos::exact_rational(pv[0])), "sphere inside gap");
+  }
+  // An enclosure: the true value anywhere in [lo, hi].
+  for (int i = 0; i < 200; ++i) {
+    const double lo = random_double(g, 53, -20, 20), hi = std::nextafter(std::nextafter(lo, 1e300), 1e300);
+    const RB x = RB::enclosing(lo, hi) * RB(3) - RB(lo) * RB(3);
+    for (const double t : {lo, hi})
+      check_bound(x, relpos::exact_rational(t) * 3 - relpos::exact_rational(lo) * 3, "enclosure");
+  }
+  CHECK(RB::enclosing(1, 0).sign() == 0);
+  CHECK(RB::enclosing(0, std::numeric_limits<double>::infinity()).sign() == 0);
+}
+
+TEST_CASE("scene: transformed configurations (general path, non-dyadic inputs) keep their answers") {
+  // Q -> k H^T Q H with the same random affine H for both surfaces preserves the position
+  // (math.md section 1); a non-rigid H turns every sphere into a general ellipsoid with rational,
+  // non-dyadic entries, so this exercises the general certificates and the rational loader.
+  const std::uint64_t seed = 0x5CE7E006;
+  Rng g(seed);
+  CAPTURE(seed);
+  int fired = 0, total = 0;
+  for (const auto& ab : {std::pair<Rational, Rational>{Q(1), Q(2)}, {Q(6, 5), Q(3, 2)}}) {
+    std::vector<Config> configs;
+    for (int f = 0; f < 6; ++f) {
+      auto [s, t] = random_st(g, false);
+      const TangentPoint tp = tangent_point(ab.first, ab.second, s, t);
+      for (const Config& k : tangency_family(tp, random_tangent_radius(g, ab.first, ab.second), g.uniform(1, 7)))
+        configs.push_back(k);
+    }
+    configs.push_back({"deep inside", ab.first, ab.second, V(Q(0), Q(0), Q(3)), Q(1, 8), Position::I});
+    configs.push_back({"far outside", ab.first, ab.second, V(Q(3), Q(0), Q(0)), Q(1, 4), Position::E});
+    for (const Config& k : configs) {
+      const Transformed t = transform(k.e(), k.p(), g);
+      const Scene scene(Paraboloid::from_matrix(t.p));
+      const Body b{describe(k) + " (transformed)", Ellipsoid::from_matrix(t.e), true, k.expected};
+      const SceneVerdict v = scene.classify(b.e);
+      check_against_exact(scene, b, v);
+      ++total;
+      fired += v.stage == SceneStage::InsideCertificate || v.stage == SceneStage::OutsideCertificate;
+    }
+  }
+  INFO(fired << " of " << total << " settled by an early-out");
+  CHECK(fired > 0);
 }
 
 TEST_CASE("scene: empty scenes, more threads than chunks, progress counter") {

@@ -85,6 +85,26 @@ struct ContainmentQuantities {
     S2 = adj_a.q00 * e.q00 + adj_a.q11 * e.q11 + adj_a.q22 * e.q22 +
          NT(2) * (adj_a.q01 * e.q01 + adj_a.q02 * e.q02 + adj_a.q12 * e.q12);
   }
+  /// The same when A (hence adj(A)) is diagonal: the products with zero entries left out.
+  struct DiagonalA {};
+  ContainmentQuantities(const SymmetricEntries<NT>& e, const SymmetricEntries<NT>& p, const SymmetricEntries<NT>& adj_a,
+                        DiagonalA) {
+    const NT a00 = e.q11 * e.q22 - e.q12 * e.q12, a11 = e.q00 * e.q22 - e.q02 * e.q02,
+             a22 = e.q00 * e.q11 - e.q01 * e.q01;
+    const NT a01 = e.q02 * e.q12 - e.q01 * e.q22, a02 = e.q01 * e.q12 - e.q02 * e.q11,
+             a12 = e.q01 * e.q02 - e.q00 * e.q12;
+    D = e.q00 * a00 + e.q01 * a01 + e.q02 * a02;
+    const NT y0 = a00 * e.q0 + a01 * e.q1 + a02 * e.q2, y1 = a01 * e.q0 + a11 * e.q1 + a12 * e.q2,
+             y2 = a02 * e.q0 + a12 * e.q1 + a22 * e.q2;
+    K = e.q0 * y0 + e.q1 * y1 + e.q2 * y2 - e.q33 * D;
+    const NT ay0 = p.q00 * y0, ay1 = p.q11 * y1, ay2 = p.q22 * y2;
+    Pn = (y0 * ay0 + y1 * ay1 + y2 * ay2) - NT(2) * D * (p.q0 * y0 + p.q1 * y1 + p.q2 * y2) + D * D * p.q33;
+    const NT w0 = D * p.q0 - ay0, w1 = D * p.q1 - ay1, w2 = D * p.q2 - ay2;
+    W = w0 * (a00 * w0 + a01 * w1 + a02 * w2) + w1 * (a01 * w0 + a11 * w1 + a12 * w2) +
+        w2 * (a02 * w0 + a12 * w1 + a22 * w2);
+    S1 = a00 * p.q00 + a11 * p.q11 + a22 * p.q22;
+    S2 = adj_a.q00 * e.q00 + adj_a.q11 * e.q11 + adj_a.q22 * e.q22;
+  }
   NT inside_t() const { return Pn + K * S1; }
   /// Must be > 0 (with inside_t() < 0) for the inside certificate.
   NT inside_gap() const {
@@ -106,6 +126,17 @@ struct SphereQuantities {
     Kp = e.q0 * e.q0 + e.q1 * e.q1 + e.q2 * e.q2 - m * e.q33;
     const NT ae0 = p.q00 * e.q0 + p.q01 * e.q1 + p.q02 * e.q2, ae1 = p.q01 * e.q0 + p.q11 * e.q1 + p.q12 * e.q2,
              ae2 = p.q02 * e.q0 + p.q12 * e.q1 + p.q22 * e.q2;
+    Pnp =
+        (e.q0 * ae0 + e.q1 * ae1 + e.q2 * ae2) - NT(2) * m * (p.q0 * e.q0 + p.q1 * e.q1 + p.q2 * e.q2) + m * m * p.q33;
+    const NT w0 = m * p.q0 - ae0, w1 = m * p.q1 - ae1, w2 = m * p.q2 - ae2;
+    Wp = w0 * w0 + w1 * w1 + w2 * w2;
+  }
+  /// The same quantities when A is diagonal (a paraboloid whose axes are the coordinate axes, the
+  /// usual container): the products with its zero entries left out.
+  struct DiagonalA {};
+  SphereQuantities(const SymmetricEntries<NT>& e, const SymmetricEntries<NT>& p, DiagonalA) : m(e.q00) {
+    Kp = e.q0 * e.q0 + e.q1 * e.q1 + e.q2 * e.q2 - m * e.q33;
+    const NT ae0 = p.q00 * e.q0, ae1 = p.q11 * e.q1, ae2 = p.q22 * e.q2;
     Pnp =
         (e.q0 * ae0 + e.q1 * ae1 + e.q2 * ae2) - NT(2) * m * (p.q0 * e.q0 + p.q1 * e.q1 + p.q2 * e.q2) + m * m * p.q33;
     const NT w0 = m * p.q0 - ae0, w1 = m * p.q1 - ae1, w2 = m * p.q2 - ae2;
