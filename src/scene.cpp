@@ -320,10 +320,17 @@ double scale_for(double mx) {
 
 Scene::Scene(const Paraboloid& p) : p_(p), frame_(std::make_shared<const Frame>(p)) {}
 
-std::optional<SceneVerdict> Scene::early_out(const Ellipsoid& e) const { return early_out_filter(*frame_, e); }
+// The filter's error bounds, like the core's static filter, assume rounding to nearest. A caller may
+// be inside a CGAL interval block (rounding upward): then switch to nearest for the call.
+std::optional<SceneVerdict> Scene::early_out(const Ellipsoid& e) const {
+  if (CGAL::FPU_get_cw() == CGAL_FE_TONEAREST) return early_out_filter(*frame_, e);
+  CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+  return early_out_filter(*frame_, e);
+}
 
 SceneVerdict Scene::classify(const Ellipsoid& e) const {
-  if (auto v = early_out(e)) return *v;
+  CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+  if (auto v = early_out_filter(*frame_, e)) return *v;
   return scene_verdict(decide_position(e, p_));
 }
 
@@ -352,6 +359,7 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
         if (c >= chunks) break;
         const std::size_t lo = c * chunk, hi = std::min(count, lo + chunk);
         pending.clear();
+        CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);  // threads inherit the caller's mode
         if (options.early_outs) {
           for (std::size_t i = lo; i < hi; ++i) {
             if (auto v = early_out_filter(frame, bodies[i]))

@@ -2,6 +2,8 @@
 // rule, contact), the early-outs never fire on a body with contact or of uncertified smallness, the
 // certificate polynomials are what math.md says they are (cross-checked in exact arithmetic against
 // the pencil code), and 1, 2, 3 threads give identical answers and consistent counts.
+#include <CGAL/FPU.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -516,4 +518,18 @@ TEST_CASE("scene: empty scenes, more threads than chunks, progress counter") {
   CHECK(r.verdicts[1].position == Position::E);
   CHECK(r.verdicts[2].position == Position::TI);
   CHECK(r.verdicts[2].stage == SceneStage::ExactRoots);
+  // Called from inside a CGAL interval block (rounding upward): the same answers, and the caller's
+  // rounding mode is restored.
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    const relpos::SceneResult u = scene.classify(es, o);
+    for (std::size_t i = 0; i < es.size(); ++i) {
+      CHECK(u.verdicts[i].position == r.verdicts[i].position);
+      CHECK(u.verdicts[i].stage == r.verdicts[i].stage);
+      CHECK(scene.classify(es[i]).position == r.verdicts[i].position);
+      CHECK(scene.early_out(es[i]).has_value() == (i < 2));
+    }
+    CHECK(CGAL::FPU_get_cw() == CGAL_FE_UPWARD);
+  }
+  CHECK(CGAL::FPU_get_cw() == CGAL_FE_TONEAREST);
 }

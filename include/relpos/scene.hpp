@@ -214,8 +214,10 @@ struct SceneResult {
   double seconds = 0;    ///< wall-clock time of the classification
 };
 
-/// One paraboloid, prepared once (interval enclosures of its entries, adj(A), det P, an upper bound
-/// of lambda_max(A)), against any number of ellipsoids. Thread-safe: every method is const.
+/// One paraboloid, prepared once (power-of-two scaling, adj(A), det P, enclosures of lambda_max(A)
+/// and of the sphere smallness constant, the operation counts of the certificate programs), against
+/// any number of ellipsoids. Thread-safe: every method is const. Every method runs its arithmetic in
+/// rounding to nearest whatever the caller's rounding mode (switching and restoring if needed).
 class Scene {
  public:
   explicit Scene(const Paraboloid& p);
