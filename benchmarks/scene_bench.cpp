@@ -41,6 +41,14 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+std::string json_list(const std::vector<double>& v) {
+  std::ostringstream o;
+  o << "[";
+  for (std::size_t i = 0; i < v.size(); ++i) o << (i ? ", " : "") << v[i];
+  o << "]";
+  return o.str();
+}
+
 double quantile(std::vector<double>& sorted, double q) {
   if (sorted.empty()) return 0;
   return sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(q * static_cast<double>(sorted.size())))];
@@ -299,16 +307,46 @@ int main(int argc, char** argv) {
   }
 
   // The bar: the scene's mean cost per body on one thread against the median cost of one
-  // decide_position call. The per-call median is robust to a busy machine (a preempted call is an
-  // outlier); the scene's wall time is not, so its CPU time is compared as well.
-  const Run& one = runs.front();
-  const double per_body_1 = one.seconds * 1e9 / static_cast<double>(n);
-  const double per_body_1_cpu = one.cpu_seconds * 1e9 / static_cast<double>(n);
+  // decide_position call on the same bodies. On a shared machine both drift with the load, so they
+  // are measured in alternation, R rounds (a systematic sample of at most 200000 pairs per round,
+  // each call timed; the whole scene on one thread, its CPU time and its wall time), and the ratio
+  // is taken per round; the report gives the median round and the range.
+  std::vector<double> ratio_cpu, ratio_wall, round_median, round_cpu, round_wall;
+  {
+    const std::size_t stride = std::max<std::size_t>(1, n / 200000);
+    for (int r = 0; r < std::max(repeat, 5); ++r) {
+      std::vector<double> ns;
+      for (std::size_t i = 0; i < n; i += stride) {
+        const auto s = Clock::now();
+        const Verdict v = decide_position(bodies[i], p);
+        ns.push_back(std::chrono::duration<double, std::nano>(Clock::now() - s).count() - timer_ns);
+        if (v.position != pair_verdict[i].position) std::abort();
+      }
+      SceneOptions o;
+      o.threads = 1;
+      const double c0 = cpu_seconds(false);
+      const SceneResult res = scene.classify(bodies, o);
+      const double cpu = (cpu_seconds(false) - c0) * 1e9 / static_cast<double>(n);
+      const double wall_ns = res.seconds * 1e9 / static_cast<double>(n);
+      round_median.push_back(median(ns));
+      round_cpu.push_back(cpu);
+      round_wall.push_back(wall_ns);
+      ratio_cpu.push_back(cpu / median(ns));
+      ratio_wall.push_back(wall_ns / median(ns));
+      std::printf(
+          "bar round %d: per-pair median %.0f ns; scene on 1 thread %.0f ns CPU, %.0f ns wall per body: "
+          "ratio %.2f CPU, %.2f wall\n",
+          r + 1, median(ns), cpu, wall_ns, cpu / median(ns), wall_ns / median(ns));
+    }
+  }
+  const double bar_cpu = median(ratio_cpu), bar_wall = median(ratio_wall);
   std::printf(
-      "BAR: scene per-body cost on 1 thread %.0f ns wall, %.0f ns CPU vs per-pair decide_position median %.0f ns: "
-      "ratio %.2f wall, %.2f CPU (%s)\n",
-      per_body_1, per_body_1_cpu, pair_median, per_body_1 / pair_median, per_body_1_cpu / pair_median,
-      per_body_1_cpu <= pair_median ? "met" : "NOT met");
+      "BAR: scene per-body cost on 1 thread / per-pair decide_position median: %.2f CPU (rounds %.2f..%.2f), "
+      "%.2f wall (rounds %.2f..%.2f): %s\n",
+      bar_cpu, *std::min_element(ratio_cpu.begin(), ratio_cpu.end()),
+      *std::max_element(ratio_cpu.begin(), ratio_cpu.end()), bar_wall,
+      *std::min_element(ratio_wall.begin(), ratio_wall.end()), *std::max_element(ratio_wall.begin(), ratio_wall.end()),
+      bar_cpu <= 1 ? "met" : "NOT met");
 
   if (!out_dir.empty()) {
     std::ostringstream js;
@@ -337,8 +375,10 @@ int main(int argc, char** argv) {
     js << "},\n  \"runs_agree\": " << (runs_agree ? "true" : "false") << ", \"differences_vs_pairs\": " << vs_pairs
        << ",\n  \"verified\": " << (verify ? "true" : "false") << ", \"verify_seconds\": " << verify_s
        << ", \"mismatches_vs_classify_exact\": " << mismatches
-       << ",\n  \"bar_ratio_1_thread_wall\": " << per_body_1 / pair_median
-       << ", \"bar_ratio_1_thread_cpu\": " << per_body_1_cpu / pair_median << "\n}\n";
+       << ",\n  \"bar_rounds\": {\"pair_median_ns\": " << json_list(round_median)
+       << ", \"scene_cpu_ns_per_body\": " << json_list(round_cpu)
+       << ", \"scene_wall_ns_per_body\": " << json_list(round_wall) << "},\n  \"bar_ratio_cpu\": " << bar_cpu
+       << ", \"bar_ratio_wall\": " << bar_wall << "\n}\n";
     const std::string name = wall_given ? "/scene-wall-" + std::to_string(wall).substr(0, 6) + ".json" : "/scene.json";
     std::ofstream f(out_dir + name);
     f << js.str();
@@ -347,5 +387,5 @@ int main(int argc, char** argv) {
       return 3;
     }
   }
-  return (mismatches == 0 && vs_pairs == 0 && runs_agree) ? 0 : 1;
+  return (mismatches == 0 && vs_pairs == 0 && runs_agree) ? 0 : 1;  // the bar is reported, not enforced
 }
