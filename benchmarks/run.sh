@@ -3,6 +3,7 @@
 #
 #   benchmarks/run.sh            # full run (~1-2 minutes on 2 cores), seed 20240601
 #   benchmarks/run.sh --quick    # smaller family (a), fewer batches
+#   benchmarks/run.sh --scene    # only the scene benchmark (scene_bench, 10^6 bodies)
 #
 # Outputs: benchmarks/results/{results.csv,stages.csv,summary.json,*.png}.
 # Plotting needs matplotlib for /usr/bin/python3 (Debian python3-matplotlib, benchmark-only
@@ -14,6 +15,14 @@ OUT="$ROOT/benchmarks/results"
 SEED="${RELPOS_BENCH_SEED:-20240601}"
 
 cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DRELPOS_BUILD_BENCHMARKS=ON -DRELPOS_BUILD_TESTS=OFF >/dev/null
+# benchmarks/run.sh --scene [N]: only the scene benchmark (N bodies, default 10^6; a few minutes,
+# about 3 GB of memory) -> benchmarks/results/scene.json and scene_log.txt (doc/performance.md).
+if [ "${1:-}" = "--scene" ]; then
+  cmake --build "$BUILD" -j2 --target scene_bench
+  mkdir -p "$OUT"
+  "$BUILD/benchmarks/scene_bench" --n "${2:-1000000}" --seed "$SEED" --out "$OUT" 2>&1 | tee "$OUT/scene_log.txt"
+  exit "${PIPESTATUS[0]}"
+fi
 cmake --build "$BUILD" -j2 --target relpos_bench
 mkdir -p "$OUT"
 "$BUILD/benchmarks/relpos_bench" --seed "$SEED" --out "$OUT" "$@" 2>&1 | tee "$OUT/log.txt"

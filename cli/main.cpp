@@ -2,6 +2,7 @@
 //
 //   relpos classify --ellipsoid Q --paraboloid Q [--digits N] [--json]
 //   relpos batch [FILE|-] [--digits N]
+//   relpos scene --paraboloid Q [FILE|-] ...   (cli/scene.cpp)
 //
 // Exit codes: 0 success (batch: every line answered, error lines included), 1 input error
 // (classify), 2 usage error, 3 I/O error, 4 internal error.
@@ -20,6 +21,9 @@
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
+
+/// `relpos scene` (cli/scene.cpp): exit code; handles its own usage errors.
+int run_scene_command(const std::vector<std::string>& args);
 
 #ifndef RELPOS_VERSION
 #define RELPOS_VERSION "unknown"
@@ -51,6 +55,7 @@ void print_main_help(std::ostream& os) {
         "Usage:\n"
         "  relpos classify --ellipsoid Q --paraboloid Q [--digits N] [--json]\n"
         "  relpos batch [FILE|-] [--digits N]\n"
+        "  relpos scene (--paraboloid Q | --standard-paraboloid A,B) [FILE|-] [options]\n"
         "  relpos --help | --version\n"
         "  relpos COMMAND --help\n"
         "\n"
@@ -398,6 +403,7 @@ int main(int argc, char** argv) {
     }
     if (command == "classify") return run_classify(args);
     if (command == "batch") return run_batch(args);
+    if (command == "scene") return run_scene_command(std::vector<std::string>(all.begin() + 1, all.end()));
     throw UsageError{(command.rfind("-", 0) == 0 ? "unknown option '" : "unknown command '") + command + "'"};
   } catch (const UsageError& u) {
     std::cerr << "relpos: " << u.message << "\nTry 'relpos --help'";
