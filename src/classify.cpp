@@ -3,7 +3,11 @@
 #include <CGAL/Interval_nt.h>
 #include <gmp.h>
 
+#include <cfenv>
 #include <cmath>
+#if defined(__SSE2_MATH__)
+#include <xmmintrin.h>
+#endif
 
 #include "relpos/multiple_roots.hpp"
 #include "relpos/smallness.hpp"
@@ -111,6 +115,15 @@ void decide(Verdict& v) {
   if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 0)
     return set(Position::I, 0, Rule::AllRootsNegative);
   set(Position::Unclassified, -1, Rule::Finding);
+}
+
+/// Is the FPU in round-to-nearest (the default)? One stmxcsr on x86-64 (SSE arithmetic), else fegetround.
+inline bool rounding_to_nearest() {
+#if defined(__SSE2_MATH__)
+  return (_mm_getcsr() & 0x6000u) == 0;  // MXCSR.RC, bits 13-14: 00 = to nearest
+#else
+  return std::fegetround() == FE_TONEAREST;
+#endif
 }
 
 /// Matrix view with entries converted to NT, for the generic pencil code.
@@ -301,7 +314,9 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   if (use_filter && e.doubles() && p.doubles()) {
     v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
     DecisionSigns d;                // uncertain unless the inputs are in the filter's range
-    if (e.filter_doubles() && p.filter_doubles())
+    // The static bounds assume round-to-nearest; a caller inside an upward-rounding block (CGAL
+    // interval code) gets the interval stage instead.
+    if (e.filter_doubles() && p.filter_doubles() && rounding_to_nearest())
       d = static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles());
     if (decide_from_signs(d, v)) return v;
     const auto disc = detail::certain(d.quartic.g0);

@@ -23,6 +23,8 @@ std::string to_string(SceneStage s) {
       return "outside-certificate";
     case SceneStage::StaticDouble:
       return "static-double";
+    case SceneStage::MultipleRootWitness:
+      return "multiple-root-witness";
     case SceneStage::Interval:
       return "interval";
     case SceneStage::ExactSigns:
@@ -41,6 +43,9 @@ SceneVerdict scene_verdict(const Verdict& v) {
   switch (v.stage) {
     case Stage::StaticDouble:
       out.stage = SceneStage::StaticDouble;
+      break;
+    case Stage::MultipleRootWitness:
+      out.stage = SceneStage::MultipleRootWitness;
       break;
     case Stage::Interval:
       out.stage = SceneStage::Interval;

@@ -304,3 +304,33 @@ TEST_CASE("machine_pencil equals the GMP pencil of the power-of-two scaled matri
     for (std::size_t i = 0; i < 3; ++i) CHECK(Rational(to_integer(mp->s[i])) == sq[i]);
   }
 }
+
+TEST_CASE("decide_position gives the same answers when called with the FPU rounding upwards", "[classify][rounding]") {
+  // The static filter's bounds assume round-to-nearest; inside CGAL interval code (rounding
+  // upwards) classify must notice and use the interval stage instead of a wrong static bound.
+  Rng g(seed_from_env(99));
+  std::vector<std::pair<Ellipsoid, Paraboloid>> pairs;
+  for (const auto& c : dyadic_cases()) pairs.emplace_back(Ellipsoid::from_matrix(c.e), Paraboloid::from_matrix(c.p));
+  for (int i = 0; i < 200; ++i) {  // generic pairs with exact-double entries
+    const Matrix4 h = dyadic_congruence(g);
+    const Rational r = Q(g.uniform(1, 16), 16);
+    const Vector3 c{Q(g.uniform(-32, 32), 8), Q(g.uniform(-32, 32), 8), Q(g.uniform(-32, 32), 8)};
+    pairs.emplace_back(Ellipsoid::from_matrix(congruence(sphere_matrix(c, r), h)),
+                       Paraboloid::from_matrix(congruence(paraboloid_matrix(Q(1), Q(2)), h)));
+  }
+  std::vector<Verdict> nearest;
+  for (const auto& [e, p] : pairs) nearest.push_back(relpos::decide_position(e, p));
+  std::vector<Verdict> upward;
+  {
+    CGAL::Protect_FPU_rounding<true> up;  // rounding towards +infinity
+    for (const auto& [e, p] : pairs) upward.push_back(relpos::decide_position(e, p));
+  }
+  int interval = 0;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    CAPTURE(i);
+    CHECK(upward[i].position == nearest[i].position);
+    CHECK(upward[i].stage != Stage::StaticDouble);
+    interval += upward[i].stage == Stage::Interval;
+  }
+  CHECK(interval > 100);
+}

@@ -517,7 +517,7 @@ TEST_CASE("scene: empty scenes, more threads than chunks, progress counter") {
   CHECK(r.verdicts[0].position == Position::I);
   CHECK(r.verdicts[1].position == Position::E);
   CHECK(r.verdicts[2].position == Position::TI);
-  CHECK(r.verdicts[2].stage == SceneStage::ExactRoots);
+  CHECK((r.verdicts[2].stage == SceneStage::MultipleRootWitness || r.verdicts[2].stage == SceneStage::ExactRoots));
   // Called from inside a CGAL interval block (rounding upward): the same answers, and the caller's
   // rounding mode is restored.
   {
