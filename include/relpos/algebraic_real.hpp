@@ -1,0 +1,59 @@
+// An exact real algebraic number given by a square-free integer polynomial and an isolating
+// interval: how relpos reports instants that are roots of polynomials in time (math.md section 7),
+// such as a first-contact time t* = sqrt(2).
+//
+// Nothing here is decided in floating point. Refinement bisects the isolating interval on the exact
+// sign of the polynomial at rational midpoints, and decimals() stops only when both ends of the
+// interval round to the same decimal string, which is then the correctly rounded value of the
+// number (rounding to nearest is monotone, so every point of the interval rounds the same way).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "relpos/numbers.hpp"
+
+namespace relpos {
+
+class AlgebraicReal {
+ public:
+  /// The rational q (its polynomial is den(q) t - num(q)).
+  static AlgebraicReal rational(const Rational& q);
+  /// The only root of the square-free integer polynomial `coefficients` (index = power of t) in
+  /// the open interval (lower, upper), where the polynomial has opposite non-zero signs at the ends.
+  /// Throws std::invalid_argument when the ends do not show a sign change.
+  static AlgebraicReal root(std::vector<Integer> coefficients, Rational lower, Rational upper);
+
+  bool is_rational() const { return exact_.has_value(); }
+  /// The value when it is rational (then lower() == upper() == value).
+  const std::optional<Rational>& exact() const { return exact_; }
+  /// Isolating interval: the number lies in [lower, upper], strictly inside when it is irrational.
+  const Rational& lower() const { return lower_; }
+  const Rational& upper() const { return upper_; }
+  /// Square-free defining polynomial, index = power of t (not necessarily the minimal polynomial).
+  const std::vector<Integer>& polynomial() const { return poly_; }
+
+  /// Bisect (exact signs) until upper - lower <= width (width > 0). No-op for a rational.
+  void refine(const Rational& width);
+  /// Correctly rounded decimal with `digits` significant digits (round to nearest, ties away from
+  /// zero; exact for a rational), in the format of relpos::to_decimal.
+  std::string decimals(int digits) const;
+  /// Nearest double of the value (for display and float baselines only).
+  double to_double() const;
+  /// Exact comparison with a rational: -1, 0, +1 for this <, =, > q.
+  int compare(const Rational& q) const;
+
+ private:
+  AlgebraicReal() = default;
+  int sign_at(const Rational& x) const;
+  std::vector<Integer> poly_;
+  std::optional<Rational> exact_;
+  Rational lower_, upper_;
+  int sign_lower_ = 0;  ///< sign of the polynomial at lower_ (irrational case)
+};
+
+/// Text of an integer polynomial in t, e.g. "t^2 - 2".
+std::string polynomial_text(const std::vector<Integer>& coefficients, const std::string& variable = "t");
+
+}  // namespace relpos

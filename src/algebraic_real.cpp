@@ -1,0 +1,134 @@
+#include "relpos/algebraic_real.hpp"
+
+#include <gmp.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace relpos {
+namespace {
+
+int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+
+/// 2^-n as a fresh rational (never written through a shared representation).
+Rational inverse_power_of_two(unsigned long n) {
+  Integer d;
+  mpz_setbit(d.mpz(), n);
+  return Rational(Integer(1), d);
+}
+
+/// Sign of p(x) for an integer polynomial and a rational x = a/b: the sign of the homogenised
+/// value sum p_i a^i b^(n-i) (b > 0), computed in integers.
+int sign_of_value(const std::vector<Integer>& p, const Rational& x) {
+  if (p.empty()) return 0;
+  const Integer a = x.numerator(), b = x.denominator();
+  Integer v = p.back(), bpow(1);
+  for (std::size_t k = p.size() - 1; k-- > 0;) {
+    bpow *= b;
+    v = v * a + p[k] * bpow;
+  }
+  return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+
+}  // namespace
+
+AlgebraicReal AlgebraicReal::rational(const Rational& q) {
+  AlgebraicReal r;
+  r.poly_ = {-q.numerator(), q.denominator()};
+  r.exact_ = q;
+  r.lower_ = r.upper_ = q;
+  return r;
+}
+
+AlgebraicReal AlgebraicReal::root(std::vector<Integer> coefficients, Rational lower, Rational upper) {
+  while (!coefficients.empty() && coefficients.back() == 0) coefficients.pop_back();
+  AlgebraicReal r;
+  r.poly_ = std::move(coefficients);
+  r.lower_ = std::move(lower);
+  r.upper_ = std::move(upper);
+  const int sl = r.sign_at(r.lower_), su = r.sign_at(r.upper_);
+  if (!(r.lower_ < r.upper_) || sl == 0 || su == 0 || sl == su)
+    throw std::invalid_argument("AlgebraicReal::root: the interval does not isolate a sign change");
+  r.sign_lower_ = sl;
+  return r;
+}
+
+int AlgebraicReal::sign_at(const Rational& x) const { return sign_of_value(poly_, x); }
+
+void AlgebraicReal::refine(const Rational& width) {
+  if (exact_) return;
+  // Bisection on exact signs; a midpoint that is a root makes the number rational.
+  while (upper_ - lower_ > width) {
+    Rational mid = (lower_ + upper_) / 2;
+    const int sm = sign_at(mid);
+    if (sm == 0) {
+      exact_ = mid;
+      lower_ = upper_ = mid;
+      return;
+    }
+    if (sm == sign_lower_)
+      lower_ = std::move(mid);
+    else
+      upper_ = std::move(mid);
+  }
+}
+
+std::string AlgebraicReal::decimals(int digits) const {
+  if (digits < 1) digits = 1;
+  if (exact_) return to_decimal(*exact_, digits);
+  AlgebraicReal copy = *this;
+  for (;;) {
+    if (copy.exact_) return to_decimal(*copy.exact_, digits);
+    std::string lo = to_decimal(copy.lower_, digits), hi = to_decimal(copy.upper_, digits);
+    if (lo == hi) return lo;
+    // Halve the width at least ~4 times per round: the loop ends because the number is irrational
+    // here, so it is not a rounding boundary, and a small enough interval avoids every boundary.
+    copy.refine((copy.upper_ - copy.lower_) / 16);
+  }
+}
+
+double AlgebraicReal::to_double() const {
+  if (exact_) return CGAL::to_double(*exact_);
+  AlgebraicReal copy = *this;
+  const Rational mag = copy.upper_ > 0 ? copy.upper_ : -copy.lower_;
+  // Relative width 2^-60 is far below double precision; absolute floor for numbers near 0.
+  Rational w = mag * inverse_power_of_two(60);
+  if (w == 0) w = inverse_power_of_two(60);
+  copy.refine(w);
+  if (copy.exact_) return CGAL::to_double(*copy.exact_);
+  return CGAL::to_double((copy.lower_ + copy.upper_) / 2);
+}
+
+int AlgebraicReal::compare(const Rational& q) const {
+  if (exact_) return sgn(*exact_ - q);
+  if (q <= lower_) return 1;
+  if (q >= upper_) return -1;
+  // q inside the isolating interval: the root is on the side where the sign changes.
+  const int sq = sign_at(q);
+  if (sq == 0) return 0;              // cannot happen for an irrational root, kept for safety
+  return sq == sign_lower_ ? 1 : -1;  // same sign as at lower: the root lies right of q
+}
+
+std::string polynomial_text(const std::vector<Integer>& c, const std::string& variable) {
+  std::string out;
+  for (std::size_t k = c.size(); k-- > 0;) {
+    if (c[k] == 0) continue;
+    const bool neg = c[k] < 0;
+    const Integer mag = neg ? Integer(-c[k]) : c[k];
+    if (out.empty())
+      out += neg ? "-" : "";
+    else
+      out += neg ? " - " : " + ";
+    const bool one = mag == 1;
+    if (!one || k == 0) out += to_string(mag);
+    if (k > 0) {
+      if (!one) out += "*";
+      out += variable;
+      if (k > 1) out += "^" + std::to_string(k);
+    }
+  }
+  return out.empty() ? "0" : out;
+}
+
+}  // namespace relpos
