@@ -1,5 +1,8 @@
 #include "relpos/algebraic_real.hpp"
 
+#include <flint/fmpz.h>
+#include <flint/fmpz_poly.h>
+#include <flint/fmpz_poly_factor.h>
 #include <gmp.h>
 
 #include <cmath>
@@ -31,6 +34,40 @@ int sign_of_value(const std::vector<Integer>& p, const Rational& x) {
   return v > 0 ? 1 : (v < 0 ? -1 : 0);
 }
 
+/// The irreducible factors over Z of a non-zero integer polynomial (FLINT), each primitive with a
+/// positive leading coefficient (multiplicities dropped).
+std::vector<std::vector<Integer>> irreducible_factors(const std::vector<Integer>& p) {
+  fmpz_poly_t f;
+  fmpz_poly_init(f);
+  fmpz_t c;
+  fmpz_init(c);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    fmpz_set_mpz(c, p[i].mpz());
+    fmpz_poly_set_coeff_fmpz(f, static_cast<slong>(i), c);
+  }
+  fmpz_poly_factor_t fac;
+  fmpz_poly_factor_init(fac);
+  fmpz_poly_factor(fac, f);
+  std::vector<std::vector<Integer>> out;
+  for (slong k = 0; k < fac->num; ++k) {
+    const fmpz_poly_struct* g = fac->p + k;
+    std::vector<Integer> coeffs;
+    for (slong i = 0; i <= fmpz_poly_degree(g); ++i) {
+      fmpz_poly_get_coeff_fmpz(c, g, i);
+      Integer z;  // fresh object: written through its mpz_t
+      fmpz_get_mpz(z.mpz(), c);
+      coeffs.push_back(z);
+    }
+    if (!coeffs.empty() && coeffs.back() < 0)
+      for (auto& x : coeffs) x = -x;
+    out.push_back(std::move(coeffs));
+  }
+  fmpz_poly_factor_clear(fac);
+  fmpz_clear(c);
+  fmpz_poly_clear(f);
+  return out;
+}
+
 }  // namespace
 
 AlgebraicReal AlgebraicReal::rational(const Rational& q) {
@@ -50,8 +87,19 @@ AlgebraicReal AlgebraicReal::root(std::vector<Integer> coefficients, Rational lo
   const int sl = r.sign_at(r.lower_), su = r.sign_at(r.upper_);
   if (!(r.lower_ < r.upper_) || sl == 0 || su == 0 || sl == su)
     throw std::invalid_argument("AlgebraicReal::root: the interval does not isolate a sign change");
-  r.sign_lower_ = sl;
-  return r;
+  // Keep only the irreducible factor that vanishes at the number: the only factor with a root in
+  // (lower, upper) (the product is square-free with exactly one root there), hence the only one
+  // that changes sign between the ends. It is the minimal polynomial up to a constant.
+  for (auto& g : irreducible_factors(r.poly_)) {
+    if (g.size() < 2) continue;
+    const int gl = sign_of_value(g, r.lower_), gu = sign_of_value(g, r.upper_);
+    if (gl == 0 || gu == 0 || gl == gu) continue;
+    if (g.size() == 2) return rational(Rational(-g[0], g[1]));
+    r.poly_ = std::move(g);
+    r.sign_lower_ = gl;
+    return r;
+  }
+  throw std::logic_error("AlgebraicReal::root: no irreducible factor changes sign");
 }
 
 int AlgebraicReal::sign_at(const Rational& x) const { return sign_of_value(poly_, x); }

@@ -332,6 +332,7 @@ TEST_CASE("first contact at sqrt(2): a sphere rising along the axis of z = x^2 +
   CHECK(t.lower() * t.lower() < 2);
   CHECK(2 < t.upper() * t.upper());
   CHECK(vanishes_at_sqrt(t.polynomial(), Rational(2)));
+  CHECK(t.polynomial() == std::vector<Integer>{Integer(-2), Integer(0), Integer(1)});  // minimal polynomial
   CHECK(t.decimals(30) == sqrt2_decimals(30));
   check_sqrt_decimals(t, Rational(2), 60);
 

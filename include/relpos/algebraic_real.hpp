@@ -22,6 +22,8 @@ class AlgebraicReal {
   static AlgebraicReal rational(const Rational& q);
   /// The only root of the square-free integer polynomial `coefficients` (index = power of t) in
   /// the open interval (lower, upper), where the polynomial has opposite non-zero signs at the ends.
+  /// The polynomial is replaced by its irreducible factor that vanishes there (FLINT), so that
+  /// polynomial() is the minimal polynomial and a rational root becomes rational().
   /// Throws std::invalid_argument when the ends do not show a sign change.
   static AlgebraicReal root(std::vector<Integer> coefficients, Rational lower, Rational upper);
 
@@ -31,7 +33,8 @@ class AlgebraicReal {
   /// Isolating interval: the number lies in [lower, upper], strictly inside when it is irrational.
   const Rational& lower() const { return lower_; }
   const Rational& upper() const { return upper_; }
-  /// Square-free defining polynomial, index = power of t (not necessarily the minimal polynomial).
+  /// Defining polynomial, index = power of t: irreducible over Q, primitive, positive leading
+  /// coefficient (the minimal polynomial times an integer); den t - num for a rational.
   const std::vector<Integer>& polynomial() const { return poly_; }
 
   /// Bisect (exact signs) until upper - lower <= width (width > 0). No-op for a rational.
