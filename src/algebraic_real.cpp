@@ -34,41 +34,77 @@ int sign_of_value(const std::vector<Integer>& p, const Rational& x) {
   return v > 0 ? 1 : (v < 0 ? -1 : 0);
 }
 
-/// The irreducible factors over Z of a non-zero integer polynomial (FLINT), each primitive with a
-/// positive leading coefficient (multiplicities dropped).
-std::vector<std::vector<Integer>> irreducible_factors(const std::vector<Integer>& p) {
-  fmpz_poly_t f;
-  fmpz_poly_init(f);
+void to_flint(fmpz_poly_t f, const std::vector<Integer>& p) {
   fmpz_t c;
   fmpz_init(c);
   for (std::size_t i = 0; i < p.size(); ++i) {
     fmpz_set_mpz(c, p[i].mpz());
     fmpz_poly_set_coeff_fmpz(f, static_cast<slong>(i), c);
   }
+  fmpz_clear(c);
+}
+
+std::vector<Integer> from_flint(const fmpz_poly_t f) {
+  std::vector<Integer> out;
+  fmpz_t c;
+  fmpz_init(c);
+  for (slong i = 0; i <= fmpz_poly_degree(f); ++i) {
+    fmpz_poly_get_coeff_fmpz(c, f, i);
+    Integer z;  // fresh object: written through its mpz_t
+    fmpz_get_mpz(z.mpz(), c);
+    out.push_back(z);
+  }
+  fmpz_clear(c);
+  return out;
+}
+
+std::vector<std::vector<Integer>> flint_factors(const std::vector<Integer>& p) {
+  fmpz_poly_t f;
+  fmpz_poly_init(f);
+  to_flint(f, p);
   fmpz_poly_factor_t fac;
   fmpz_poly_factor_init(fac);
   fmpz_poly_factor(fac, f);
   std::vector<std::vector<Integer>> out;
   for (slong k = 0; k < fac->num; ++k) {
-    const fmpz_poly_struct* g = fac->p + k;
-    std::vector<Integer> coeffs;
-    for (slong i = 0; i <= fmpz_poly_degree(g); ++i) {
-      fmpz_poly_get_coeff_fmpz(c, g, i);
-      Integer z;  // fresh object: written through its mpz_t
-      fmpz_get_mpz(z.mpz(), c);
-      coeffs.push_back(z);
-    }
-    if (!coeffs.empty() && coeffs.back() < 0)
+    std::vector<Integer> coeffs = from_flint(fac->p + k);
+    if (coeffs.size() < 2) continue;  // a constant (FLINT keeps the content apart anyway)
+    if (coeffs.back() < 0)
       for (auto& x : coeffs) x = -x;
     out.push_back(std::move(coeffs));
   }
   fmpz_poly_factor_clear(fac);
-  fmpz_clear(c);
   fmpz_poly_clear(f);
   return out;
 }
 
 }  // namespace
+
+std::vector<std::vector<Integer>> irreducible_factors(const std::vector<Integer>& coefficients) {
+  for (const auto& c : coefficients)
+    if (c != 0) return flint_factors(coefficients);
+  throw std::invalid_argument("irreducible_factors: the zero polynomial");
+}
+
+std::vector<Integer> pseudo_remainder(const std::vector<Integer>& p, const std::vector<Integer>& m) {
+  if (m.size() < 2) throw std::invalid_argument("pseudo_remainder: constant divisor");
+  fmpz_poly_t a, b, r;
+  fmpz_poly_init(a);
+  fmpz_poly_init(b);
+  fmpz_poly_init(r);
+  to_flint(a, p);
+  to_flint(b, m);
+  std::vector<Integer> out;
+  if (!fmpz_poly_is_zero(a)) {
+    ulong d = 0;
+    fmpz_poly_pseudo_rem(r, &d, a, b);
+    out = from_flint(r);
+  }
+  fmpz_poly_clear(a);
+  fmpz_poly_clear(b);
+  fmpz_poly_clear(r);
+  return out;
+}
 
 AlgebraicReal AlgebraicReal::rational(const Rational& q) {
   AlgebraicReal r;
@@ -78,7 +114,7 @@ AlgebraicReal AlgebraicReal::rational(const Rational& q) {
   return r;
 }
 
-AlgebraicReal AlgebraicReal::root(std::vector<Integer> coefficients, Rational lower, Rational upper) {
+AlgebraicReal AlgebraicReal::root(std::vector<Integer> coefficients, Rational lower, Rational upper, bool irreducible) {
   while (!coefficients.empty() && coefficients.back() == 0) coefficients.pop_back();
   AlgebraicReal r;
   r.poly_ = std::move(coefficients);
@@ -87,10 +123,20 @@ AlgebraicReal AlgebraicReal::root(std::vector<Integer> coefficients, Rational lo
   const int sl = r.sign_at(r.lower_), su = r.sign_at(r.upper_);
   if (!(r.lower_ < r.upper_) || sl == 0 || su == 0 || sl == su)
     throw std::invalid_argument("AlgebraicReal::root: the interval does not isolate a sign change");
+  if (irreducible) {
+    if (r.poly_.size() == 2) return rational(Rational(-r.poly_[0], r.poly_[1]));
+    if (r.poly_.back() < 0) {
+      for (auto& x : r.poly_) x = -x;
+      r.sign_lower_ = -sl;
+    } else {
+      r.sign_lower_ = sl;
+    }
+    return r;
+  }
   // Keep only the irreducible factor that vanishes at the number: the only factor with a root in
   // (lower, upper) (the product is square-free with exactly one root there), hence the only one
   // that changes sign between the ends. It is the minimal polynomial up to a constant.
-  for (auto& g : irreducible_factors(r.poly_)) {
+  for (auto& g : flint_factors(r.poly_)) {
     if (g.size() < 2) continue;
     const int gl = sign_of_value(g, r.lower_), gu = sign_of_value(g, r.upper_);
     if (gl == 0 || gu == 0 || gl == gu) continue;

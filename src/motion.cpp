@@ -1,10 +1,14 @@
 #include "relpos/motion.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
+#include <CGAL/Interval_nt.h>
 #include <CGAL/Polynomial.h>
 #include <CGAL/Polynomial_traits_d.h>
 #include <gmp.h>
+#include <mpfi.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -35,7 +39,43 @@ Integer lcm(const Integer& l, const Integer& d) {
   return r;
 }
 
-/// The matrix times the lcm of all coefficient denominators: a positive multiple, same roots.
+/// gcd of the integer coefficients of several polynomials in t (0 for no non-zero coefficient).
+template <class Range>
+Integer integer_content(const Range& polys) {
+  Integer g(0);
+  for (const PolyZ& p : polys) {
+    if (CGAL::is_zero(p)) continue;
+    for (int i = 0; i <= p.degree(); ++i) {
+      Integer r;
+      mpz_gcd(r.mpz(), g.mpz(), p[i].mpz());
+      g = r;
+    }
+  }
+  return g;
+}
+
+/// p / c for a positive integer c dividing every coefficient (a positive multiple: signs, roots
+/// and ratios of polynomials divided by the same c are kept).
+PolyZ divide_exactly(const PolyZ& p, const Integer& c) {
+  if (CGAL::is_zero(p) || c == 1) return p;
+  std::vector<Integer> q;
+  for (int i = 0; i <= p.degree(); ++i) {
+    Integer r;
+    mpz_divexact(r.mpz(), p[i].mpz(), c.mpz());
+    q.push_back(r);
+  }
+  return PolyZ(q.begin(), q.end());
+}
+
+template <class Array>
+void make_primitive(Array& polys) {
+  const Integer g = integer_content(polys);
+  if (g > 1)
+    for (auto& p : polys) p = divide_exactly(p, g);
+}
+
+/// The matrix times the lcm of all coefficient denominators, divided by the integer content: a
+/// positive multiple, same roots.
 MatZ integer_matrix(const TimeMatrix4& e) {
   Integer l(1);
   for (const auto& p : e)
@@ -46,6 +86,7 @@ MatZ integer_matrix(const TimeMatrix4& e) {
     for (const auto& x : e[i]) c.push_back(x.numerator() * (l / x.denominator()));
     out.a[i] = c.empty() ? PolyZ(Integer(0)) : PolyZ(c.begin(), c.end());
   }
+  make_primitive(out.a);
   return out;
 }
 
@@ -54,6 +95,7 @@ MatZ integer_matrix(const Matrix4& p) {
   for (const auto& c : p.a) l = lcm(l, c.denominator());
   MatZ out;
   for (std::size_t i = 0; i < 16; ++i) out.a[i] = PolyZ(Integer(p.a[i].numerator() * (l / p.a[i].denominator())));
+  make_primitive(out.a);
   return out;
 }
 
@@ -76,6 +118,11 @@ struct MovingPencil {
     const MatZ ez = integer_matrix(moving_ellipsoid_matrix(e0, m));
     f = characteristic_polynomial<PolyZ>(pz, ez);
     s = special_polynomial<PolyZ>(pz, ez);
+    // f and s divided by their integer contents: positive constants, so every root in l, every
+    // multiplicity and the sign of every decision quantity (homogeneous in f and in s) is kept,
+    // and every polynomial derived below is much smaller.
+    make_primitive(f);
+    make_primitive(s);
     SturmHabicht<PolyZ> sh(f);
     for (int i = 0; i < 3; ++i) g2[i] = sh.g2[i];
     for (int i = 0; i < 2; ++i) g1[i] = sh.g1[i];
@@ -83,6 +130,15 @@ struct MovingPencil {
     SmallnessQuantities<PolyZ> q(f, s);
     vertex = q.vertex;
     graeffe = q.graeffe;
+    // Integer contents removed (positive factors): separately where only signs and zeros are read,
+    // jointly for the coefficients of one polynomial in l (its roots are read).
+    make_primitive(g2);
+    make_primitive(g1);
+    for (PolyZ* x : {&disc, &vertex, &graeffe}) {
+      std::array<PolyZ, 1> one{*x};
+      make_primitive(one);
+      *x = one[0];
+    }
     disc_zero = CGAL::is_zero(disc);
     if (!disc_zero) {
       // Disc f(., t) != 0: f square-free, its roots distinct and continuous, none crosses 0 (f(0) =
@@ -111,42 +167,130 @@ struct MovingPencil {
   }
 };
 
-int sgn_at(const AK& ak, const PolyZ& p, const Alg& a) { return static_cast<int>(ak.sign_at_1_object()(p, a)); }
+/// A candidate instant: a real zero of an event polynomial, with its minimal polynomial (an
+/// irreducible factor over Z, found with FLINT) and its value when that factor is linear.
+struct Candidate {
+  Alg t;
+  unsigned causes = 0;
+  std::optional<Rational> exact;
+  PolyZ minimal;
+  std::vector<Integer> minimal_coefficients;
+  /// The public exact form (minimal polynomial + isolating interval), built on first use; its
+  /// interval is refined by fast bisection on exact integer signs when a sign needs precision.
+  mutable std::optional<AlgebraicReal> instant;
+};
 
-/// The rational value of an algebraic real when it is rational. A rational root m/q (lowest terms)
-/// of an integer polynomial has q | lc, so x * lc is an integer: approximate x within 1/(16 lc),
-/// take the nearest candidate k/lc and test it exactly (as in roots.cpp).
-std::optional<Rational> rational_value(const AK& ak, const Alg& a) {
-  if (a.low() == a.high()) return a.low();
-  const PolyZ p = a.polynomial();
-  if (p.degree() == 1) return Rational(-p[0], p[1]);
-  const Integer lc = p.lcoeff() < 0 ? Integer(-p.lcoeff()) : p.lcoeff();
-  const int bits = static_cast<int>(mpz_sizeinbase(lc.mpz(), 2)) + 4;
-  const auto iv = ak.approximate_absolute_1_object()(a, bits);
-  const Rational shifted = (iv.first + iv.second) / 2 * Rational(lc) + Rational(1, 2);
-  Integer k;
-  mpz_fdiv_q(k.mpz(), shifted.numerator().mpz(), shifted.denominator().mpz());
-  const Rational candidate(k, lc);
-  if (candidate < iv.first || candidate > iv.second) return std::nullopt;
-  if (p.sign_at(candidate) != CGAL::ZERO) return std::nullopt;
-  return candidate;
+std::vector<Integer> coefficients_of(const PolyZ& p) {
+  std::vector<Integer> c;
+  if (CGAL::is_zero(p)) return c;
+  for (int i = 0; i <= p.degree(); ++i) c.push_back(p[i]);
+  return c;
 }
 
-/// The public exact form of an instant: rational, or square-free polynomial + isolating interval
-/// whose ends show a strict sign change.
-AlgebraicReal to_public(const AK& ak, const Alg& a) {
-  if (auto q = rational_value(ak, a)) return AlgebraicReal::rational(*q);
-  const PolyZ p = a.polynomial();
+Candidate make_candidate(const Alg& t, unsigned cause, std::optional<Rational> exact, std::vector<Integer> minimal) {
+  return Candidate{t, cause, std::move(exact), PolyZ(minimal.begin(), minimal.end()), std::move(minimal), {}};
+}
+
+/// The public exact form of an instant: rational, or minimal polynomial + isolating interval whose
+/// ends show a strict sign change (CGAL's interval refined until they do).
+AlgebraicReal& instant_of(const Candidate& z) {
+  if (z.instant) return *z.instant;
+  if (z.exact) return z.instant.emplace(AlgebraicReal::rational(*z.exact));
+  const PolyZ& p = z.minimal;
   for (int guard = 0; guard < 10000; ++guard) {
-    const CGAL::Sign sl = p.sign_at(a.low()), sh = p.sign_at(a.high());
-    if (sl != CGAL::ZERO && sh != CGAL::ZERO && sl != sh) {
-      std::vector<Integer> c;
-      for (int i = 0; i <= p.degree(); ++i) c.push_back(p[i]);
-      return AlgebraicReal::root(std::move(c), a.low(), a.high());
-    }
-    a.refine();
+    const CGAL::Sign sl = p.sign_at(z.t.low()), sh = p.sign_at(z.t.high());
+    if (sl != CGAL::ZERO && sh != CGAL::ZERO && sl != sh)
+      return z.instant.emplace(
+          AlgebraicReal::root(z.minimal_coefficients, z.t.low(), z.t.high(), /*irreducible=*/true));
+    z.t.refine();
   }
   throw std::logic_error("motion: could not isolate an irrational instant with a sign change");
+}
+
+/// Refine an instant's interval to a width below 2^-bits times max(1, |bounds|).
+void refine_to(AlgebraicReal& x, long bits) {
+  if (x.is_rational()) return;
+  Rational mag = CGAL::abs(x.lower()) > CGAL::abs(x.upper()) ? CGAL::abs(x.lower()) : CGAL::abs(x.upper());
+  if (mag < 1) mag = Rational(1);
+  Integer d;
+  mpz_setbit(d.mpz(), static_cast<mp_bitcnt_t>(bits));
+  x.refine(mag / Rational(d));
+}
+
+/// The sign of an integer polynomial over an interval in doubles with outward rounding, the
+/// coefficients scaled by one power of two into double range (a positive factor): +1 / -1 when the
+/// enclosure excludes 0, else 0.
+int double_sign_on(const std::vector<Integer>& c, const Rational& lo, const Rational& hi) {
+  long top = 0;
+  for (const auto& x : c) top = std::max(top, static_cast<long>(mpz_sizeinbase(x.mpz(), 2)));
+  using Interval = CGAL::Interval_nt<false>;
+  CGAL::Protect_FPU_rounding<true> guard;
+  auto coefficient = [&](const Integer& x) {
+    if (x == 0) return Interval(0);
+    // x = (d + e) 2^k with 0.5 <= |d| < 1 (truncated) and |e| < 2^-53: an exact enclosure.
+    long k = 0;
+    const double d = mpz_get_d_2exp(&k, x.mpz());
+    const long shift = k - top;
+    const double tiny = std::ldexp(1.0, -1000);
+    if (shift < -1000) return Interval(-tiny, tiny);  // |x 2^-top| < 2^-1000
+    const double u = std::ldexp(1.0, -53);
+    return Interval(std::ldexp(d - u, static_cast<int>(shift)), std::ldexp(d + u, static_cast<int>(shift)));
+  };
+  const Interval x(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second);
+  Interval v = coefficient(c.back());
+  for (std::size_t k = c.size() - 1; k-- > 0;) v = v * x + coefficient(c[k]);
+  return v.inf() > 0 ? 1 : (v.sup() < 0 ? -1 : 0);
+}
+
+/// The same in MPFI at `prec` bits (outward rounding everywhere).
+int mpfi_sign_on(const std::vector<Integer>& c, const Rational& lo, const Rational& hi, mpfr_prec_t prec) {
+  mpfi_t x, v;
+  mpfi_init2(x, prec);
+  mpfi_init2(v, prec);
+  mpfi_interv_q(x, lo.mpq(), hi.mpq());
+  mpfi_set_z(v, c.back().mpz());
+  for (std::size_t k = c.size() - 1; k-- > 0;) {
+    mpfi_mul(v, v, x);
+    mpfi_add_z(v, v, c[k].mpz());
+  }
+  const int sg = mpfi_is_strictly_pos(v) ? 1 : (mpfi_is_strictly_neg(v) ? -1 : 0);
+  mpfi_clear(x);
+  mpfi_clear(v);
+  return sg;
+}
+
+/// Exact sign of p(t*) at a candidate instant.
+///  1. Filters: interval evaluation of p over t*'s isolating interval, in doubles (after refining
+///     the interval to ~60 bits) and in MPFI at 256 and 1024 bits (interval refined to match). A
+///     certified non-zero enclosure decides; most signs read at an instant are not zero.
+///  2. Exact zero test: p reduced modulo the minimal polynomial m of t* (pseudo-remainder; lc(m) > 0
+///     keeps the sign); p(t*) = 0 iff the remainder is 0, since m is irreducible.
+///  3. A non-zero value is then signed by MPFI with doubling precision (this ends, the value not
+///     being 0), with CGAL's exact Sign_at_1 as the last resort.
+int sign_at(const AK& ak, const PolyZ& p, const Candidate& z) {
+  if (CGAL::is_zero(p)) return 0;
+  if (p.degree() == 0) return static_cast<int>(CGAL::sign(p[0]));
+  if (z.exact) return static_cast<int>(p.sign_at(*z.exact));
+  std::array<PolyZ, 1> one{p};
+  make_primitive(one);  // a positive factor: same sign, smaller numbers
+  const std::vector<Integer> pc = coefficients_of(one[0]);
+  AlgebraicReal& x = instant_of(z);
+  refine_to(x, 60);
+  if (x.is_rational()) return static_cast<int>(one[0].sign_at(*x.exact()));
+  if (const int sg = double_sign_on(pc, x.lower(), x.upper())) return sg;
+  for (long prec : {256L, 1024L}) {
+    refine_to(x, prec / 2);
+    if (const int sg = mpfi_sign_on(pc, x.lower(), x.upper(), prec)) return sg;
+  }
+  std::vector<Integer> r = pseudo_remainder(pc, z.minimal_coefficients);
+  while (!r.empty() && r.back() == 0) r.pop_back();
+  if (r.empty()) return 0;
+  if (r.size() == 1) return static_cast<int>(CGAL::sign(r[0]));
+  for (long prec = 2048; prec <= (1L << 18); prec *= 2) {
+    refine_to(x, prec / 2);
+    if (const int sg = mpfi_sign_on(pc, x.lower(), x.upper(), prec)) return sg;
+  }
+  return static_cast<int>(ak.sign_at_1_object()(PolyZ(r.begin(), r.end()), z.t));
 }
 
 Integer floor_of(const Rational& q) {
@@ -181,28 +325,35 @@ Rational rational_between(const Alg& a, const Alg& b) {
   return simplest_between(a.high(), Rational(b.low()));
 }
 
-/// A candidate instant (a real zero of an event polynomial) with its causes.
-struct Candidate {
-  Alg t;
-  unsigned causes = 0;
-};
-
 /// Merge the real zeros of p in [lo, hi] into the sorted list `out` (exact comparisons; a zero
-/// shared by several polynomials is kept once with all its causes).
+/// shared by several polynomials is kept once with all its causes). p is split into irreducible
+/// factors first: a linear factor gives a rational zero at once, and the others are isolated
+/// separately (smaller polynomials make every later sign evaluation at the zero cheaper).
 void add_zeros(const AK& ak, const PolyZ& p, unsigned cause, const Rational& lo, const Rational& hi,
                std::vector<Candidate>& out) {
   if (CGAL::is_zero(p) || p.degree() < 1) return;
-  const PolyZ sq = ak.make_square_free_1_object()(p);
-  std::vector<Alg> zeros;
-  ak.solve_1_object()(sq, true, lo, hi, std::back_inserter(zeros));
+  std::vector<Integer> coeffs;
+  for (int i = 0; i <= p.degree(); ++i) coeffs.push_back(p[i]);
+  std::vector<Candidate> zeros;
+  for (const auto& g : irreducible_factors(coeffs)) {
+    const PolyZ gz(g.begin(), g.end());
+    if (g.size() == 2) {
+      const Rational x(-g[0], g[1]);
+      if (lo <= x && x <= hi) zeros.push_back(make_candidate(Alg(x), cause, x, g));
+      continue;
+    }
+    std::vector<Alg> roots;
+    ak.solve_1_object()(gz, true, lo, hi, std::back_inserter(roots));
+    for (const Alg& z : roots) zeros.push_back(make_candidate(z, cause, std::nullopt, g));
+  }
   const auto cmp = ak.compare_1_object();
-  for (const Alg& z : zeros) {
+  for (Candidate& z : zeros) {
     std::size_t i = 0;
-    while (i < out.size() && cmp(out[i].t, z) == CGAL::SMALLER) ++i;
-    if (i < out.size() && cmp(out[i].t, z) == CGAL::EQUAL)
+    while (i < out.size() && cmp(out[i].t, z.t) == CGAL::SMALLER) ++i;
+    if (i < out.size() && cmp(out[i].t, z.t) == CGAL::EQUAL)
       out[i].causes |= cause;
     else
-      out.insert(out.begin() + static_cast<std::ptrdiff_t>(i), Candidate{z, cause});
+      out.insert(out.begin() + static_cast<std::ptrdiff_t>(i), std::move(z));
   }
 }
 
@@ -235,7 +386,7 @@ Position position_from(const RootFacts& x, int rho_vs_one) {
 struct InstantFacts {
   RootFacts roots;
   int j = 0;           ///< degree of gcd(f, df/dl) at t*
-  int rho_vs_one = 0;  ///< sign of rho(t*) - 1
+  int rho_vs_one = 0;  ///< sign of rho(t*) - 1 (see position_of)
   std::string how;
 };
 
@@ -249,13 +400,11 @@ const char* sign_word(int s) { return s < 0 ? "negative" : "positive"; }
 
 /// nullopt when f(., t*) is square-free and no neighbour is given (its root counts are then those
 /// of the neighbouring interval: no root merges at t*).
-std::optional<InstantFacts> facts_at(const MovingPencil& mp, const AK& ak, const Alg& a,
+std::optional<InstantFacts> facts_at(const MovingPencil& mp, const AK& ak, const Candidate& a,
                                      const Classification* neighbour) {
   InstantFacts out;
   RootFacts& x = out.roots;
-  auto at = [&](const PolyZ& p) { return sgn_at(ak, p, a); };
-  out.rho_vs_one = *compare_rho_with_one(USign(static_cast<CGAL::Sign>(at(mp.vertex))),
-                                         USign(static_cast<CGAL::Sign>(at(mp.graeffe))));
+  auto at = [&](const PolyZ& p) { return sign_at(ak, p, a); };
   const PolyZ &f0 = mp.f[0], &f3 = mp.f[3], &f4 = mp.f[4];
   const PolyZ &s0 = mp.s[0], &s1 = mp.s[1], &s2 = mp.s[2];
   // s(u/v) * v^2 and s'(u/v) * v: is the rational-in-t root u/v a root of s, and a double one?
@@ -264,7 +413,9 @@ std::optional<InstantFacts> facts_at(const MovingPencil& mp, const AK& ak, const
 
   // j = deg gcd(f, f') at t* = the first non-vanishing principal subresultant coefficient
   // (specialisation commutes with subresultants because f4 = det P is a non-zero constant).
-  if (at(mp.disc) != 0) {
+  // A zero of the discriminant polynomial (its minimal polynomial divides Disc f) needs no test.
+  const bool disc_zero_here = mp.disc_zero || ((a.causes & kCauseDiscriminant) && !a.exact);
+  if (!disc_zero_here && at(mp.disc) != 0) {
     out.j = 0;
     if (!neighbour) return std::nullopt;
     x.real = neighbour->real_roots;
@@ -373,6 +524,20 @@ std::optional<InstantFacts> facts_at(const MovingPencil& mp, const AK& ak, const
   return out;
 }
 
+/// The position at an instant from its root facts. With `report_smallness` false, smallness is
+/// evaluated only when the answer depends on it (E and TE do not; first contact needs no more).
+Position position_of(const MovingPencil& mp, const AK& ak, const Candidate& a, InstantFacts& facts,
+                     bool report_smallness) {
+  const Position if_small = position_from(facts.roots, -1), if_large = position_from(facts.roots, 1);
+  if (if_small == if_large && !report_smallness) {
+    facts.rho_vs_one = 0;  // not evaluated
+    return if_small;
+  }
+  facts.rho_vs_one = *compare_rho_with_one(USign(static_cast<CGAL::Sign>(sign_at(ak, mp.vertex, a))),
+                                           USign(static_cast<CGAL::Sign>(sign_at(ak, mp.graeffe, a))));
+  return position_from(facts.roots, facts.rho_vs_one);
+}
+
 /// Positions that a limit of configurations in position p can have (the contact set is closed,
 /// E, I and C are open conditions; an ellipsoid cannot lie both inside-or-on and outside-or-on).
 unsigned closure(Position p) {
@@ -439,19 +604,19 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
     if (cmp(z.t, a0) == CGAL::EQUAL) continue;  // t0 itself: classified above
     Position pos;
     std::string how;
-    if (auto q = rational_value(ak, z.t)) {
-      const Classification c = classify_at(e0, motion, p, *q);
+    if (z.exact) {
+      const Classification c = classify_at(e0, motion, p, *z.exact);
       pos = c.position;
       how = classify_how(c);
     } else {
-      auto facts = facts_at(mp, ak, z.t, nullptr);
+      auto facts = facts_at(mp, ak, z, nullptr);
       if (!facts) continue;  // no root merges: still E
-      pos = position_from(facts->roots, facts->rho_vs_one);
+      pos = position_of(mp, ak, z, *facts, false);
       how = facts->how;
     }
     if (pos != Position::E) {
       out.kind = FirstContact::Kind::Contact;
-      out.time = to_public(ak, z.t);
+      out.time = instant_of(z);
       out.position = pos;
       out.how = how;
       return out;
@@ -473,9 +638,9 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
   AK ak;
 
   // Candidate instants in [t0, t1], with t0 and t1 themselves.
-  std::vector<Candidate> cands{{Alg(t0), kCauseStart}};
+  std::vector<Candidate> cands{make_candidate(Alg(t0), kCauseStart, t0, {-t0.numerator(), t0.denominator()})};
   if (t1 > t0)
-    cands.push_back({Alg(t1), kCauseEnd});
+    cands.push_back(make_candidate(Alg(t1), kCauseEnd, t1, {-t1.numerator(), t1.denominator()}));
   else
     cands.front().causes |= kCauseEnd;
   for (const auto& [poly, cause] : mp.events) add_zeros(ak, poly, cause, t0, t1, cands);
@@ -494,7 +659,7 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
 
   for (std::size_t i = 0; i < cands.size(); ++i) {
     const Candidate& z = cands[i];
-    MotionInstant inst{to_public(ak, z.t), Position::Unclassified, false, z.causes, ""};
+    MotionInstant inst{instant_of(z), Position::Unclassified, false, z.causes, ""};
     if (inst.time.is_rational()) {
       const Classification c = classify_at(e0, motion, p, *inst.time.exact());
       inst.position = c.position;
@@ -502,8 +667,8 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
       inst.how = classify_how(c);
     } else {
       // Irrational instants are interior (t0, t1 are rational), so interval i-1 exists.
-      auto facts = facts_at(mp, ak, z.t, &interval_class[i - 1]);
-      inst.position = position_from(facts->roots, facts->rho_vs_one);
+      auto facts = facts_at(mp, ak, z, &interval_class[i - 1]);
+      inst.position = position_of(mp, ak, z, *facts, true);
       inst.small = facts->rho_vs_one <= 0;
       inst.how = "at the algebraic instant: " + facts->how;
     }
@@ -528,9 +693,9 @@ std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const Rig
                                                   const Rational& t) {
   const MovingPencil mp(e0, motion, p);
   AK ak;
-  auto facts = facts_at(mp, ak, Alg(t), nullptr);
+  auto facts = facts_at(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}), nullptr);
   if (!facts) return std::nullopt;
-  return position_from(facts->roots, facts->rho_vs_one);
+  return position_of(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}), *facts, true);
 }
 
 std::vector<PositionChange> Timeline::changes() const {

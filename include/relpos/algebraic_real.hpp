@@ -24,8 +24,10 @@ class AlgebraicReal {
   /// the open interval (lower, upper), where the polynomial has opposite non-zero signs at the ends.
   /// The polynomial is replaced by its irreducible factor that vanishes there (FLINT), so that
   /// polynomial() is the minimal polynomial and a rational root becomes rational().
-  /// Throws std::invalid_argument when the ends do not show a sign change.
-  static AlgebraicReal root(std::vector<Integer> coefficients, Rational lower, Rational upper);
+  /// Throws std::invalid_argument when the ends do not show a sign change. `irreducible`: the
+  /// caller guarantees that the polynomial is already irreducible over Q (no factorisation).
+  static AlgebraicReal root(std::vector<Integer> coefficients, Rational lower, Rational upper,
+                            bool irreducible = false);
 
   bool is_rational() const { return exact_.has_value(); }
   /// The value when it is rational (then lower() == upper() == value).
@@ -55,6 +57,14 @@ class AlgebraicReal {
   Rational lower_, upper_;
   int sign_lower_ = 0;  ///< sign of the polynomial at lower_ (irrational case)
 };
+
+/// The distinct irreducible factors over Z of a non-zero integer polynomial (FLINT), each primitive
+/// with a positive leading coefficient; constant factors are dropped.
+std::vector<std::vector<Integer>> irreducible_factors(const std::vector<Integer>& coefficients);
+
+/// The pseudo-remainder r of p by m (FLINT): lc(m)^k p = q m + r with deg r < deg m. When lc(m) > 0,
+/// r(a) has the sign of p(a) at every root a of m (empty vector: r = 0). m must be non-constant.
+std::vector<Integer> pseudo_remainder(const std::vector<Integer>& p, const std::vector<Integer>& m);
 
 /// Text of an integer polynomial in t, e.g. "t^2 - 2".
 std::string polynomial_text(const std::vector<Integer>& coefficients, const std::string& variable = "t");
