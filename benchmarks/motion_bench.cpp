@@ -322,6 +322,10 @@ int main(int argc, char** argv) {
     for (int i = 0; i < n; ++i) cases.push_back(grazing_case(rng, parse_rational(d)));
     results.push_back(run_family(std::string("near-graze-") + label, cases, false));
   }
+  for (const auto& r : results)
+    if (r.exact_checked)
+      std::printf("exact first contact against the constructed time (%s): %d of %d wrong\n", r.name.c_str(),
+                  r.exact_wrong, r.exact_checked);
   std::printf(
       "\nMedian CPU time per query (thread CPU clock, microseconds). missed: exact contact in [t0, t1],\n"
       "float none; false alarm: float contact, exact none; time off: both found contact but\n"
@@ -331,10 +335,6 @@ int main(int argc, char** argv) {
       " float K=64 median us | K=64 missed | K=64 false alarm | K=64 time off | float K=1024 median us |"
       " K=1024 missed | K=1024 false alarm | K=1024 time off "
       "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const auto& r : results)
-    if (r.exact_checked)
-      std::printf("exact first contact against the constructed time (%s): %d of %d wrong\n", r.name.c_str(),
-                  r.exact_wrong, r.exact_checked);
   for (const auto& r : results) {
     std::printf("| %s | %d | %d | %.0f | %s | %.1f | %d | %d | %d | %.1f | %d | %d | %d |\n", r.name.c_str(), r.n,
                 r.exact_contacts, r.exact_us,
