@@ -5,6 +5,7 @@
 #include <gmp.h>
 
 #include <catch2/catch.hpp>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <random>
@@ -25,6 +26,7 @@ using relpos::Position;
 using relpos::RigidMotion;
 using relpos::Timeline;
 using relpos::TimePolynomial;
+using relpos::Vector3;
 
 namespace {
 
@@ -563,4 +565,53 @@ TEST_CASE("a rotation can change smallness; spans without it are reported unclas
     if (!iv.small)
       CHECK((iv.position == Position::Unclassified || iv.position == Position::E || iv.position == Position::TE));
   check_against_sampling(tl, e0, m, p, 40, 21);
+}
+
+TEST_CASE("random paths: timelines agree with dense classification; both methods agree at rational instants",
+          "[motion][random]") {
+  // Random ellipsoids (small dyadic semi-axes, integer quaternions) on straight or parabolic paths
+  // through a random paraboloid, and a few turning bodies. No answer is known in advance: the
+  // timeline must agree with classify() everywhere it is sampled, first_contact with the timeline,
+  // and the subresultant method with classify() at every rational instant.
+  const std::uint64_t seed = 0x5EED1;
+  CAPTURE(seed);
+  std::mt19937_64 rng(seed);
+  auto dyadic = [&](int lo, int hi, int bits) {  // a random multiple of 2^-bits in [lo, hi]
+    std::uniform_int_distribution<long> d(static_cast<long>(lo) << bits, static_cast<long>(hi) << bits);
+    return Rational(d(rng), 1L << bits);
+  };
+  std::uniform_int_distribution<int> small(-2, 2);
+  int rational_instants = 0, irrational_instants = 0;
+  for (int k = 0; k < 12; ++k) {
+    CAPTURE(k);
+    const Rational z(0);
+    const Paraboloid p = Paraboloid::standard({z, z, z}, dyadic(1, 2, 2), dyadic(1, 2, 2));
+    relpos::Quaternion rot{Rational(1), Rational(small(rng)), Rational(small(rng)), Rational(small(rng))};
+    const Ellipsoid e0 = Ellipsoid::from_axes(
+        {z, z, z}, {dyadic(0, 1, 3) + q("1/8"), dyadic(0, 1, 3) + q("1/8"), dyadic(0, 1, 3) + q("1/8")}, rot);
+    RigidMotion m;
+    const Vector3 start{dyadic(-2, 2, 2), dyadic(-2, 2, 2), dyadic(-2, 0, 2)};
+    const Vector3 target{dyadic(-1, 1, 2), dyadic(-1, 1, 2), dyadic(1, 2, 2)};
+    for (std::size_t i = 0; i < 3; ++i) {
+      m.translation[i] = {start[i], target[i] - start[i]};
+      if (k % 3 == 1) m.translation[i].push_back(dyadic(-1, 1, 1));  // a parabolic path
+    }
+    if (k % 4 == 3)  // a body turning about its centre while it moves
+      m.rotation = std::array<TimePolynomial, 4>{poly({"1"}), poly({"0", "1"}), poly({}), poly({})};
+    const Timeline tl = relpos::timeline(e0, m, p, q("0"), q("1"));
+    check_against_sampling(tl, e0, m, p, 30, static_cast<unsigned>(seed + static_cast<unsigned>(k)));
+    check_first_contact_consistent(tl, relpos::first_contact(e0, m, p, q("0"), q("1")));
+    for (const auto& inst : tl.instants) {
+      if (!inst.time.is_rational()) {
+        ++irrational_instants;
+        continue;
+      }
+      ++rational_instants;
+      const Rational t = *inst.time.exact();
+      const auto sub = relpos::position_by_subresultants(e0, m, p, t);
+      if (sub) CHECK(*sub == relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).position);
+    }
+  }
+  CHECK(irrational_instants > 0);
+  CHECK(rational_instants >= 24);  // t0 and t1 of each path at least
 }
