@@ -3,6 +3,8 @@
 // relpos/io.hpp; this file adds the motion polynomials and the rendering of exact instants.
 #include "motion.hpp"
 
+#include <gmp.h>
+
 #include <exception>
 #include <iostream>
 #include <new>
@@ -207,8 +209,15 @@ std::string time_exact_text(const relpos::AlgebraicReal& t) {
   const int degree = static_cast<int>(t.polynomial().size()) - 1;
   const std::string poly = degree <= kMaxShownDegree ? relpos::polynomial_text(t.polynomial())
                                                      : "a square-free polynomial of degree " + std::to_string(degree);
-  return "the only root of " + poly + " in [" + relpos::to_string(t.lower()) + ", " + relpos::to_string(t.upper()) +
-         "]";
+  std::string interval = "[" + relpos::to_string(t.lower()) + ", " + relpos::to_string(t.upper()) + "]";
+  if (interval.size() > 60) {
+    // Long exact ends (after refinement) are in the JSON output; the report gives the width.
+    const relpos::Rational w = t.upper() - t.lower();
+    const long log2w = static_cast<long>(mpz_sizeinbase(w.numerator().mpz(), 2)) -
+                       static_cast<long>(mpz_sizeinbase(w.denominator().mpz(), 2));
+    interval = "an isolating interval of width about 2^" + std::to_string(log2w) + " (exact ends: --json)";
+  }
+  return "the only root of " + poly + " in " + interval;
 }
 
 const char* kind_name(relpos::FirstContact::Kind k) {

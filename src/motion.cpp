@@ -261,8 +261,8 @@ int mpfi_sign_on(const std::vector<Integer>& c, const Rational& lo, const Ration
 
 /// Exact sign of p(t*) at a candidate instant.
 ///  1. Filters: interval evaluation of p over t*'s isolating interval, in doubles (after refining
-///     the interval to ~60 bits) and in MPFI at 256 and 1024 bits (interval refined to match). A
-///     certified non-zero enclosure decides; most signs read at an instant are not zero.
+///     the interval to ~60 bits) and, for large polynomials, in MPFI at 256 and 1024 bits (interval
+///     refined to match). A certified non-zero enclosure decides; most signs read are not zero.
 ///  2. Exact zero test: p reduced modulo the minimal polynomial m of t* (pseudo-remainder; lc(m) > 0
 ///     keeps the sign); p(t*) = 0 iff the remainder is 0, since m is irreducible.
 ///  3. A non-zero value is then signed by MPFI with doubling precision (this ends, the value not
@@ -278,10 +278,17 @@ int sign_at(const AK& ak, const PolyZ& p, const Candidate& z) {
   refine_to(x, 60);
   if (x.is_rational()) return static_cast<int>(one[0].sign_at(*x.exact()));
   if (const int sg = double_sign_on(pc, x.lower(), x.upper())) return sg;
-  for (long prec : {256L, 1024L}) {
-    refine_to(x, prec / 2);
-    if (const int sg = mpfi_sign_on(pc, x.lower(), x.upper(), prec)) return sg;
-  }
+  // Small polynomials: the exact zero test is cheap, do it first. Large ones (the pseudo-remainder
+  // grows like lc(m)^(deg p)): try the multi-precision filters first.
+  std::size_t bits = 0;
+  for (const auto& c : pc) bits = std::max(bits, mpz_sizeinbase(c.mpz(), 2));
+  const std::size_t lc_bits = mpz_sizeinbase(z.minimal_coefficients.back().mpz(), 2);
+  const bool cheap_remainder = bits + pc.size() * lc_bits < 4096;
+  if (!cheap_remainder)
+    for (long prec : {256L, 1024L}) {
+      refine_to(x, prec / 2);
+      if (const int sg = mpfi_sign_on(pc, x.lower(), x.upper(), prec)) return sg;
+    }
   std::vector<Integer> r = pseudo_remainder(pc, z.minimal_coefficients);
   while (!r.empty() && r.back() == 0) r.pop_back();
   if (r.empty()) return 0;
