@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "motion.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
@@ -56,6 +57,7 @@ void print_main_help(std::ostream& os) {
         "  relpos classify --ellipsoid Q --paraboloid Q [--digits N] [--json]\n"
         "  relpos batch [FILE|-] [--digits N]\n"
         "  relpos scene (--paraboloid Q | --standard-paraboloid A,B) [FILE|-] [options]\n"
+        "  relpos motion (--ellipsoid Q | --sphere ..) (--paraboloid Q | ..) [--translation P3] [--rotation P4] ...\n"
         "  relpos --help | --version\n"
         "  relpos COMMAND --help\n"
         "\n"
@@ -404,6 +406,7 @@ int main(int argc, char** argv) {
     if (command == "classify") return run_classify(args);
     if (command == "batch") return run_batch(args);
     if (command == "scene") return run_scene_command(std::vector<std::string>(all.begin() + 1, all.end()));
+    if (command == "motion") return relpos_cli::run_motion(std::vector<std::string>(all.begin() + 1, all.end()));
     throw UsageError{(command.rfind("-", 0) == 0 ? "unknown option '" : "unknown command '") + command + "'"};
   } catch (const UsageError& u) {
     std::cerr << "relpos: " << u.message << "\nTry 'relpos --help'";

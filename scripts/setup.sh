@@ -7,7 +7,9 @@ BUILD_DIR=${1:-build}
 shift || true
 
 # python3: the example checker (tests/cli/check_examples.sh) compares JSON lines with it.
-PACKAGES=(g++ make cmake libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev catch2 nlohmann-json3-dev python3)
+# libflint-dev: irreducible factors of integer polynomials (minimal polynomials of motion instants).
+PACKAGES=(g++ make cmake libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev catch2 nlohmann-json3-dev python3
+          libflint-dev)
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

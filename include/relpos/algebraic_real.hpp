@@ -1,0 +1,72 @@
+// An exact real algebraic number given by a square-free integer polynomial and an isolating
+// interval: how relpos reports instants that are roots of polynomials in time (math.md section 7),
+// such as a first-contact time t* = sqrt(2).
+//
+// Nothing here is decided in floating point. Refinement bisects the isolating interval on the exact
+// sign of the polynomial at rational midpoints, and decimals() stops only when both ends of the
+// interval round to the same decimal string, which is then the correctly rounded value of the
+// number (rounding to nearest is monotone, so every point of the interval rounds the same way).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "relpos/numbers.hpp"
+
+namespace relpos {
+
+class AlgebraicReal {
+ public:
+  /// The rational q (its polynomial is den(q) t - num(q)).
+  static AlgebraicReal rational(const Rational& q);
+  /// The only root of the square-free integer polynomial `coefficients` (index = power of t) in
+  /// the open interval (lower, upper), where the polynomial has opposite non-zero signs at the ends.
+  /// The polynomial is replaced by its irreducible factor that vanishes there (FLINT), so that
+  /// polynomial() is the minimal polynomial and a rational root becomes rational().
+  /// Throws std::invalid_argument when the ends do not show a sign change. `irreducible`: the
+  /// caller guarantees that the polynomial is already irreducible over Q (no factorisation).
+  static AlgebraicReal root(std::vector<Integer> coefficients, Rational lower, Rational upper,
+                            bool irreducible = false);
+
+  bool is_rational() const { return exact_.has_value(); }
+  /// The value when it is rational (then lower() == upper() == value).
+  const std::optional<Rational>& exact() const { return exact_; }
+  /// Isolating interval: the number lies in [lower, upper], strictly inside when it is irrational.
+  const Rational& lower() const { return lower_; }
+  const Rational& upper() const { return upper_; }
+  /// Defining polynomial, index = power of t: irreducible over Q, primitive, positive leading
+  /// coefficient (the minimal polynomial times an integer); den t - num for a rational.
+  const std::vector<Integer>& polynomial() const { return poly_; }
+
+  /// Bisect (exact signs) until upper - lower <= width (width > 0). No-op for a rational.
+  void refine(const Rational& width);
+  /// Correctly rounded decimal with `digits` significant digits (round to nearest, ties away from
+  /// zero; exact for a rational), in the format of relpos::to_decimal.
+  std::string decimals(int digits) const;
+  /// Nearest double of the value (for display and float baselines only).
+  double to_double() const;
+  /// Exact comparison with a rational: -1, 0, +1 for this <, =, > q.
+  int compare(const Rational& q) const;
+
+ private:
+  AlgebraicReal() = default;
+  int sign_at(const Rational& x) const;
+  std::vector<Integer> poly_;
+  std::optional<Rational> exact_;
+  Rational lower_, upper_;
+  int sign_lower_ = 0;  ///< sign of the polynomial at lower_ (irrational case)
+};
+
+/// The distinct irreducible factors over Z of a non-zero integer polynomial (FLINT), each primitive
+/// with a positive leading coefficient; constant factors are dropped.
+std::vector<std::vector<Integer>> irreducible_factors(const std::vector<Integer>& coefficients);
+
+/// The pseudo-remainder r of p by m (FLINT): lc(m)^k p = q m + r with deg r < deg m. When lc(m) > 0,
+/// r(a) has the sign of p(a) at every root a of m (empty vector: r = 0). m must be non-constant.
+std::vector<Integer> pseudo_remainder(const std::vector<Integer>& p, const std::vector<Integer>& m);
+
+/// Text of an integer polynomial in t, e.g. "t^2 - 2".
+std::string polynomial_text(const std::vector<Integer>& coefficients, const std::string& variable = "t");
+
+}  // namespace relpos

@@ -1,0 +1,120 @@
+// Positions along a rigid polynomial motion (math.md section 7): the certified first-contact time
+// of an ellipsoid that starts exterior to a fixed paraboloid, and the full timeline of positions on
+// a time interval [t0, t1].
+//
+// With E(t) the moving ellipsoid (polynomial_motion.hpp), f(l, t) = det(l P + E(t)) and
+// s(l, t) = det(l A + M(t)) are polynomials in l and t. Between consecutive real zeros of the event
+// polynomials (Disc_l f, or when it vanishes identically the discriminant of the square-free part
+// of f and the resultants that track roots shared with s; the two smallness quantities) the root
+// structure of f relative to s, hence the position, is constant: it is classified exactly at one
+// rational time of each open interval. At a zero t* the position is decided exactly: with
+// relpos::classify when t* is rational, otherwise from the subresultants of f and df/dl at t* (the
+// merging root l*(t) = -S1_0(t) / S1_1(t) and its multiplicity in s), every sign being the sign of a
+// univariate integer polynomial at the algebraic number t*, decided by CGAL's algebraic kernel.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "relpos/algebraic_real.hpp"
+#include "relpos/classify.hpp"
+#include "relpos/polynomial_motion.hpp"
+
+namespace relpos {
+
+/// Why an instant of the timeline is there (bit flags).
+enum EventCause : unsigned {
+  kCauseStart = 1,         ///< t0
+  kCauseEnd = 2,           ///< t1
+  kCauseDiscriminant = 4,  ///< a root of f merges with another (Disc_l of f, or of its square-free part)
+  kCauseSpecialRoot =
+      8,  ///< a root of f meets a root of s, or the roots of s merge (only when Disc_l f = 0 identically)
+  kCauseSmallness = 16,  ///< rho(t) - 1 may change sign (a zero of a smallness quantity)
+};
+/// "start", "discriminant", ... for the set bits, in that order.
+std::vector<std::string> cause_names(unsigned causes);
+
+/// The position at one instant.
+struct MotionInstant {
+  AlgebraicReal time;
+  Position position = Position::Unclassified;
+  bool small = false;  ///< rho(t) <= 1 at that instant
+  unsigned causes = 0;
+  std::string how;  ///< how the position was decided, one sentence
+};
+
+/// The position on the open interval between two consecutive instants (constant there).
+struct MotionInterval {
+  Rational sample;  ///< the rational time inside the interval where it was classified
+  Position position = Position::Unclassified;
+  bool small = false;
+};
+
+/// An instant at which the position differs from the position just before or just after it.
+struct PositionChange {
+  AlgebraicReal time;
+  std::optional<Position> before;  ///< absent at t0
+  Position at = Position::Unclassified;
+  std::optional<Position> after;  ///< absent at t1
+};
+
+/// A maximal stretch of time with one position: [from, to], (from, to), [from, to), ...
+struct PositionSpan {
+  AlgebraicReal from, to;
+  bool from_closed = true, to_closed = true;
+  Position position = Position::Unclassified;
+};
+
+struct Timeline {
+  Rational t0, t1;
+  /// Increasing; instants.front() is t0 and instants.back() is t1 (a single instant if t0 == t1).
+  std::vector<MotionInstant> instants;
+  /// intervals[i] is the open interval between instants[i] and instants[i + 1].
+  std::vector<MotionInterval> intervals;
+  /// Disc_l f(l, t) vanishes for every t (e.g. along the axis of a circular paraboloid, where -a^2
+  /// stays a double root of f and of s; or a persistent tangency).
+  bool discriminant_identically_zero = false;
+  /// Degree in t of the polynomial whose real zeros are the candidate instants.
+  int event_degree = 0;
+
+  std::vector<PositionChange> changes() const;
+  /// Maximal spans of constant position, in order, covering [t0, t1].
+  std::vector<PositionSpan> spans() const;
+  /// The position at a rational time in [t0, t1], located exactly among the instants.
+  Position position_at(const Rational& t) const;
+};
+
+/// First contact of a body that starts exterior.
+struct FirstContact {
+  enum class Kind {
+    NotExteriorAtStart,  ///< the position at t0 is not E (contact at t0 is a result, not an error)
+    Contact,             ///< E at t0; `time` is the first t in (t0, t1] where the position is not E
+    None,                ///< E on all of [t0, t1]
+  };
+  Kind kind = Kind::None;
+  Position start_position = Position::Unclassified;  ///< the position at t0
+  std::optional<AlgebraicReal> time;                 ///< t0 for NotExteriorAtStart, t* for Contact
+  Position position = Position::Unclassified;        ///< the position at `time`
+  std::string how;                                   ///< how that position was decided
+};
+
+/// Certified first contact on [t0, t1]. Separation (E) and its end are decided for an ellipsoid of
+/// any size (math.md section 6), so this needs no smallness. Throws InputError on invalid input
+/// (t0 > t1, a quaternion that vanishes on [t0, t1]).
+FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
+                           const Rational& t1);
+
+/// Every change of position on [t0, t1], with the position on each open interval and at each
+/// instant. Positions I, TI and C are claimed only where the ellipsoid is small (rho(t) <= 1);
+/// elsewhere they are reported Unclassified, as relpos::classify does.
+Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
+                  const Rational& t1);
+
+/// For tests: the position at a rational time decided by the method used at irrational instants
+/// (subresultants of f and df/dl, math.md section 7) instead of classify(). nullopt when f(., t) is
+/// square-free there (that method then takes its root counts from a neighbouring interval).
+std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p,
+                                                  const Rational& t);
+
+}  // namespace relpos

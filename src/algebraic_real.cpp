@@ -1,0 +1,228 @@
+#include "relpos/algebraic_real.hpp"
+
+#include <flint/fmpz.h>
+#include <flint/fmpz_poly.h>
+#include <flint/fmpz_poly_factor.h>
+#include <gmp.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace relpos {
+namespace {
+
+int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+
+/// 2^-n as a fresh rational (never written through a shared representation).
+Rational inverse_power_of_two(unsigned long n) {
+  Integer d;
+  mpz_setbit(d.mpz(), n);
+  return Rational(Integer(1), d);
+}
+
+/// Sign of p(x) for an integer polynomial and a rational x = a/b: the sign of the homogenised
+/// value sum p_i a^i b^(n-i) (b > 0), computed in integers.
+int sign_of_value(const std::vector<Integer>& p, const Rational& x) {
+  if (p.empty()) return 0;
+  const Integer a = x.numerator(), b = x.denominator();
+  Integer v = p.back(), bpow(1);
+  for (std::size_t k = p.size() - 1; k-- > 0;) {
+    bpow *= b;
+    v = v * a + p[k] * bpow;
+  }
+  return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+
+void to_flint(fmpz_poly_t f, const std::vector<Integer>& p) {
+  fmpz_t c;
+  fmpz_init(c);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    fmpz_set_mpz(c, p[i].mpz());
+    fmpz_poly_set_coeff_fmpz(f, static_cast<slong>(i), c);
+  }
+  fmpz_clear(c);
+}
+
+std::vector<Integer> from_flint(const fmpz_poly_t f) {
+  std::vector<Integer> out;
+  fmpz_t c;
+  fmpz_init(c);
+  for (slong i = 0; i <= fmpz_poly_degree(f); ++i) {
+    fmpz_poly_get_coeff_fmpz(c, f, i);
+    Integer z;  // fresh object: written through its mpz_t
+    fmpz_get_mpz(z.mpz(), c);
+    out.push_back(z);
+  }
+  fmpz_clear(c);
+  return out;
+}
+
+std::vector<std::vector<Integer>> flint_factors(const std::vector<Integer>& p) {
+  fmpz_poly_t f;
+  fmpz_poly_init(f);
+  to_flint(f, p);
+  fmpz_poly_factor_t fac;
+  fmpz_poly_factor_init(fac);
+  fmpz_poly_factor(fac, f);
+  std::vector<std::vector<Integer>> out;
+  for (slong k = 0; k < fac->num; ++k) {
+    std::vector<Integer> coeffs = from_flint(fac->p + k);
+    if (coeffs.size() < 2) continue;  // a constant (FLINT keeps the content apart anyway)
+    if (coeffs.back() < 0)
+      for (auto& x : coeffs) x = -x;
+    out.push_back(std::move(coeffs));
+  }
+  fmpz_poly_factor_clear(fac);
+  fmpz_poly_clear(f);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<Integer>> irreducible_factors(const std::vector<Integer>& coefficients) {
+  for (const auto& c : coefficients)
+    if (c != 0) return flint_factors(coefficients);
+  throw std::invalid_argument("irreducible_factors: the zero polynomial");
+}
+
+std::vector<Integer> pseudo_remainder(const std::vector<Integer>& p, const std::vector<Integer>& m) {
+  if (m.size() < 2) throw std::invalid_argument("pseudo_remainder: constant divisor");
+  fmpz_poly_t a, b, r;
+  fmpz_poly_init(a);
+  fmpz_poly_init(b);
+  fmpz_poly_init(r);
+  to_flint(a, p);
+  to_flint(b, m);
+  std::vector<Integer> out;
+  if (!fmpz_poly_is_zero(a)) {
+    ulong d = 0;
+    fmpz_poly_pseudo_rem(r, &d, a, b);
+    out = from_flint(r);
+  }
+  fmpz_poly_clear(a);
+  fmpz_poly_clear(b);
+  fmpz_poly_clear(r);
+  return out;
+}
+
+AlgebraicReal AlgebraicReal::rational(const Rational& q) {
+  AlgebraicReal r;
+  r.poly_ = {-q.numerator(), q.denominator()};
+  r.exact_ = q;
+  r.lower_ = r.upper_ = q;
+  return r;
+}
+
+AlgebraicReal AlgebraicReal::root(std::vector<Integer> coefficients, Rational lower, Rational upper, bool irreducible) {
+  while (!coefficients.empty() && coefficients.back() == 0) coefficients.pop_back();
+  AlgebraicReal r;
+  r.poly_ = std::move(coefficients);
+  r.lower_ = std::move(lower);
+  r.upper_ = std::move(upper);
+  const int sl = r.sign_at(r.lower_), su = r.sign_at(r.upper_);
+  if (!(r.lower_ < r.upper_) || sl == 0 || su == 0 || sl == su)
+    throw std::invalid_argument("AlgebraicReal::root: the interval does not isolate a sign change");
+  if (irreducible) {
+    if (r.poly_.size() == 2) return rational(Rational(-r.poly_[0], r.poly_[1]));
+    if (r.poly_.back() < 0) {
+      for (auto& x : r.poly_) x = -x;
+      r.sign_lower_ = -sl;
+    } else {
+      r.sign_lower_ = sl;
+    }
+    return r;
+  }
+  // Keep only the irreducible factor that vanishes at the number: the only factor with a root in
+  // (lower, upper) (the product is square-free with exactly one root there), hence the only one
+  // that changes sign between the ends. It is the minimal polynomial up to a constant.
+  for (auto& g : flint_factors(r.poly_)) {
+    if (g.size() < 2) continue;
+    const int gl = sign_of_value(g, r.lower_), gu = sign_of_value(g, r.upper_);
+    if (gl == 0 || gu == 0 || gl == gu) continue;
+    if (g.size() == 2) return rational(Rational(-g[0], g[1]));
+    r.poly_ = std::move(g);
+    r.sign_lower_ = gl;
+    return r;
+  }
+  throw std::logic_error("AlgebraicReal::root: no irreducible factor changes sign");
+}
+
+int AlgebraicReal::sign_at(const Rational& x) const { return sign_of_value(poly_, x); }
+
+void AlgebraicReal::refine(const Rational& width) {
+  if (exact_) return;
+  // Bisection on exact signs; a midpoint that is a root makes the number rational.
+  while (upper_ - lower_ > width) {
+    Rational mid = (lower_ + upper_) / 2;
+    const int sm = sign_at(mid);
+    if (sm == 0) {
+      exact_ = mid;
+      lower_ = upper_ = mid;
+      return;
+    }
+    if (sm == sign_lower_)
+      lower_ = std::move(mid);
+    else
+      upper_ = std::move(mid);
+  }
+}
+
+std::string AlgebraicReal::decimals(int digits) const {
+  if (digits < 1) digits = 1;
+  if (exact_) return to_decimal(*exact_, digits);
+  AlgebraicReal copy = *this;
+  for (;;) {
+    if (copy.exact_) return to_decimal(*copy.exact_, digits);
+    std::string lo = to_decimal(copy.lower_, digits), hi = to_decimal(copy.upper_, digits);
+    if (lo == hi) return lo;
+    // Halve the width at least ~4 times per round: the loop ends because the number is irrational
+    // here, so it is not a rounding boundary, and a small enough interval avoids every boundary.
+    copy.refine((copy.upper_ - copy.lower_) / 16);
+  }
+}
+
+double AlgebraicReal::to_double() const {
+  if (exact_) return CGAL::to_double(*exact_);
+  AlgebraicReal copy = *this;
+  const Rational mag = copy.upper_ > 0 ? copy.upper_ : -copy.lower_;
+  // Relative width 2^-60 is far below double precision; absolute floor for numbers near 0.
+  Rational w = mag * inverse_power_of_two(60);
+  if (w == 0) w = inverse_power_of_two(60);
+  copy.refine(w);
+  if (copy.exact_) return CGAL::to_double(*copy.exact_);
+  return CGAL::to_double((copy.lower_ + copy.upper_) / 2);
+}
+
+int AlgebraicReal::compare(const Rational& q) const {
+  if (exact_) return sgn(*exact_ - q);
+  if (q <= lower_) return 1;
+  if (q >= upper_) return -1;
+  // q inside the isolating interval: the root is on the side where the sign changes.
+  const int sq = sign_at(q);
+  if (sq == 0) return 0;              // cannot happen for an irrational root, kept for safety
+  return sq == sign_lower_ ? 1 : -1;  // same sign as at lower: the root lies right of q
+}
+
+std::string polynomial_text(const std::vector<Integer>& c, const std::string& variable) {
+  std::string out;
+  for (std::size_t k = c.size(); k-- > 0;) {
+    if (c[k] == 0) continue;
+    const bool neg = c[k] < 0;
+    const Integer mag = neg ? Integer(-c[k]) : c[k];
+    if (out.empty())
+      out += neg ? "-" : "";
+    else
+      out += neg ? " - " : " + ";
+    const bool one = mag == 1;
+    if (!one || k == 0) out += to_string(mag);
+    if (k > 0) {
+      if (!one) out += "*";
+      out += variable;
+      if (k > 1) out += "^" + std::to_string(k);
+    }
+  }
+  return out.empty() ? "0" : out;
+}
+
+}  // namespace relpos

@@ -1,0 +1,748 @@
+#include "relpos/motion.hpp"
+
+#include <CGAL/Algebraic_kernel_d_1.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Polynomial.h>
+#include <CGAL/Polynomial_traits_d.h>
+#include <gmp.h>
+#include <mpfi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "relpos/error.hpp"
+#include "relpos/pencil.hpp"
+#include "relpos/roots.hpp"
+#include "relpos/smallness.hpp"
+#include "relpos/sturm.hpp"
+
+namespace relpos {
+namespace {
+
+using PolyZ = CGAL::Polynomial<Integer>;  // polynomials in t
+using BiZ = CGAL::Polynomial<PolyZ>;      // polynomials in l over Z[t] (l is the outer variable)
+using AK = CGAL::Algebraic_kernel_d_1<Integer>;
+using Alg = AK::Algebraic_real_1;
+
+/// Matrix view for the generic pencil code (pencil.hpp) with entries in Z[t].
+struct MatZ {
+  std::array<PolyZ, 16> a;
+  const PolyZ& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+};
+
+/// lcm of l and d, into a fresh object (Gmpz shares representations).
+Integer lcm(const Integer& l, const Integer& d) {
+  Integer r;
+  mpz_lcm(r.mpz(), l.mpz(), d.mpz());
+  return r;
+}
+
+/// gcd of the integer coefficients of several polynomials in t (0 for no non-zero coefficient).
+template <class Range>
+Integer integer_content(const Range& polys) {
+  Integer g(0);
+  for (const PolyZ& p : polys) {
+    if (CGAL::is_zero(p)) continue;
+    for (int i = 0; i <= p.degree(); ++i) {
+      Integer r;
+      mpz_gcd(r.mpz(), g.mpz(), p[i].mpz());
+      g = r;
+    }
+  }
+  return g;
+}
+
+/// p / c for a positive integer c dividing every coefficient (a positive multiple: signs, roots
+/// and ratios of polynomials divided by the same c are kept).
+PolyZ divide_exactly(const PolyZ& p, const Integer& c) {
+  if (CGAL::is_zero(p) || c == 1) return p;
+  std::vector<Integer> q;
+  for (int i = 0; i <= p.degree(); ++i) {
+    Integer r;
+    mpz_divexact(r.mpz(), p[i].mpz(), c.mpz());
+    q.push_back(r);
+  }
+  return PolyZ(q.begin(), q.end());
+}
+
+template <class Array>
+void make_primitive(Array& polys) {
+  const Integer g = integer_content(polys);
+  if (g > 1)
+    for (auto& p : polys) p = divide_exactly(p, g);
+}
+
+/// The matrix times the lcm of all coefficient denominators, divided by the integer content: a
+/// positive multiple, same roots.
+MatZ integer_matrix(const TimeMatrix4& e) {
+  Integer l(1);
+  for (const auto& p : e)
+    for (const auto& c : p) l = lcm(l, c.denominator());
+  MatZ out;
+  for (std::size_t i = 0; i < 16; ++i) {
+    std::vector<Integer> c;
+    for (const auto& x : e[i]) c.push_back(x.numerator() * (l / x.denominator()));
+    out.a[i] = c.empty() ? PolyZ(Integer(0)) : PolyZ(c.begin(), c.end());
+  }
+  make_primitive(out.a);
+  return out;
+}
+
+MatZ integer_matrix(const Matrix4& p) {
+  Integer l(1);
+  for (const auto& c : p.a) l = lcm(l, c.denominator());
+  MatZ out;
+  for (std::size_t i = 0; i < 16; ++i) out.a[i] = PolyZ(Integer(p.a[i].numerator() * (l / p.a[i].denominator())));
+  make_primitive(out.a);
+  return out;
+}
+
+/// The pencil of the moving pair with coefficients in Z[t] and the polynomials in t that decide
+/// (math.md section 7). f = det(l P + E(t)) and s = det(l A + M(t)) up to positive factors.
+struct MovingPencil {
+  Quartic<PolyZ> f;
+  Quadratic<PolyZ> s;
+  // Sturm-Habicht sequence of f in l (sturm.hpp): StHa_j = (non-zero constant) * g_j, so the
+  // principal coefficients g2[0], g1[0], disc are the principal subresultant coefficients of f and
+  // df/dl up to non-zero constants, and StHa_1 = g1[0] l + g1[1], StHa_2 = g2[0] l^2 + g2[1] l + g2[2].
+  PolyZ g2[3], g1[2], disc;
+  PolyZ vertex, graeffe;  // smallness quantities (smallness.hpp), polynomials in t
+  bool disc_zero = false;
+  PolyZ merge;  // real zeros contain every t where two roots of f meet (Disc f, or Disc of sqf(f))
+  std::vector<std::pair<PolyZ, unsigned>> events;  // every candidate instant, with its cause
+
+  MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p) {
+    const MatZ pz = integer_matrix(p.matrix());
+    const MatZ ez = integer_matrix(moving_ellipsoid_matrix(e0, m));
+    f = characteristic_polynomial<PolyZ>(pz, ez);
+    s = special_polynomial<PolyZ>(pz, ez);
+    // f and s divided by their integer contents: positive constants, so every root in l, every
+    // multiplicity and the sign of every decision quantity (homogeneous in f and in s) is kept,
+    // and every polynomial derived below is much smaller.
+    make_primitive(f);
+    make_primitive(s);
+    SturmHabicht<PolyZ> sh(f);
+    for (int i = 0; i < 3; ++i) g2[i] = sh.g2[i];
+    for (int i = 0; i < 2; ++i) g1[i] = sh.g1[i];
+    disc = sh.discriminant();
+    SmallnessQuantities<PolyZ> q(f, s);
+    vertex = q.vertex;
+    graeffe = q.graeffe;
+    // Integer contents removed (positive factors): separately where only signs and zeros are read,
+    // jointly for the coefficients of one polynomial in l (its roots are read).
+    make_primitive(g2);
+    make_primitive(g1);
+    for (PolyZ* x : {&disc, &vertex, &graeffe}) {
+      std::array<PolyZ, 1> one{*x};
+      make_primitive(one);
+      *x = one[0];
+    }
+    disc_zero = CGAL::is_zero(disc);
+    if (!disc_zero) {
+      // Disc f(., t) != 0: f square-free, its roots distinct and continuous, none crosses 0 (f(0) =
+      // det E < 0) and f4 = det P is constant: the root pattern, hence the position (f~ = f has no
+      // multiple root), can only change where Disc f = 0.
+      merge = disc;
+      events.emplace_back(disc, kCauseDiscriminant);
+    } else {
+      // Disc f = 0 for every t: f has a multiple factor over Q(t). Work with r = f / gcd(f, df/dl)
+      // (the square-free part, whose lc is constant because f4 is): away from the zeros of Disc r,
+      // Res(r / gcd(r, s), s) and Disc s, the roots of f keep their multiplicities in f and in s.
+      const BiZ bf(f.begin(), f.end()), bs(s.begin(), s.end());
+      const BiZ r = CGAL::integral_division_up_to_constant_factor(
+          bf, CGAL::gcd_up_to_constant_factor(bf, CGAL::differentiate(bf)));
+      merge = r.degree() >= 2 ? PolyZ(CGAL::resultant(r, CGAL::differentiate(r))) : PolyZ(Integer(1));
+      events.emplace_back(merge, kCauseDiscriminant);
+      const BiZ rhat = CGAL::integral_division_up_to_constant_factor(r, CGAL::gcd_up_to_constant_factor(r, bs));
+      if (rhat.degree() >= 1) events.emplace_back(PolyZ(CGAL::resultant(rhat, bs)), kCauseSpecialRoot);
+      const PolyZ ds = CGAL::resultant(bs, CGAL::differentiate(bs));
+      if (!CGAL::is_zero(ds)) events.emplace_back(ds, kCauseSpecialRoot);
+    }
+    // For a pure translation s and det E are constant, so both quantities are constants: rho does
+    // not change (math.md section 7). A rotation can change it.
+    events.emplace_back(vertex, kCauseSmallness);
+    events.emplace_back(graeffe, kCauseSmallness);
+  }
+};
+
+/// A candidate instant: a real zero of an event polynomial, with its minimal polynomial (an
+/// irreducible factor over Z, found with FLINT) and its value when that factor is linear.
+struct Candidate {
+  Alg t;
+  unsigned causes = 0;
+  std::optional<Rational> exact;
+  PolyZ minimal;
+  std::vector<Integer> minimal_coefficients;
+  /// The public exact form (minimal polynomial + isolating interval), built on first use; its
+  /// interval is refined by fast bisection on exact integer signs when a sign needs precision.
+  mutable std::optional<AlgebraicReal> instant;
+};
+
+std::vector<Integer> coefficients_of(const PolyZ& p) {
+  std::vector<Integer> c;
+  if (CGAL::is_zero(p)) return c;
+  for (int i = 0; i <= p.degree(); ++i) c.push_back(p[i]);
+  return c;
+}
+
+Candidate make_candidate(const Alg& t, unsigned cause, std::optional<Rational> exact, std::vector<Integer> minimal) {
+  return Candidate{t, cause, std::move(exact), PolyZ(minimal.begin(), minimal.end()), std::move(minimal), {}};
+}
+
+/// The public exact form of an instant: rational, or minimal polynomial + isolating interval whose
+/// ends show a strict sign change (CGAL's interval refined until they do).
+AlgebraicReal& instant_of(const Candidate& z) {
+  if (z.instant) return *z.instant;
+  if (z.exact) return z.instant.emplace(AlgebraicReal::rational(*z.exact));
+  const PolyZ& p = z.minimal;
+  for (int guard = 0; guard < 10000; ++guard) {
+    const CGAL::Sign sl = p.sign_at(z.t.low()), sh = p.sign_at(z.t.high());
+    if (sl != CGAL::ZERO && sh != CGAL::ZERO && sl != sh)
+      return z.instant.emplace(
+          AlgebraicReal::root(z.minimal_coefficients, z.t.low(), z.t.high(), /*irreducible=*/true));
+    z.t.refine();
+  }
+  throw std::logic_error("motion: could not isolate an irrational instant with a sign change");
+}
+
+/// Refine an instant's interval to a width below 2^-bits times max(1, |bounds|).
+void refine_to(AlgebraicReal& x, long bits) {
+  if (x.is_rational()) return;
+  Rational mag = CGAL::abs(x.lower()) > CGAL::abs(x.upper()) ? CGAL::abs(x.lower()) : CGAL::abs(x.upper());
+  if (mag < 1) mag = Rational(1);
+  Integer d;
+  mpz_setbit(d.mpz(), static_cast<mp_bitcnt_t>(bits));
+  x.refine(mag / Rational(d));
+}
+
+/// The sign of an integer polynomial over an interval in doubles with outward rounding, the
+/// coefficients scaled by one power of two into double range (a positive factor): +1 / -1 when the
+/// enclosure excludes 0, else 0.
+int double_sign_on(const std::vector<Integer>& c, const Rational& lo, const Rational& hi) {
+  long top = 0;
+  for (const auto& x : c) top = std::max(top, static_cast<long>(mpz_sizeinbase(x.mpz(), 2)));
+  using Interval = CGAL::Interval_nt<false>;
+  CGAL::Protect_FPU_rounding<true> guard;
+  auto coefficient = [&](const Integer& x) {
+    if (x == 0) return Interval(0);
+    // x = (d + e) 2^k with 0.5 <= |d| < 1 (truncated) and |e| < 2^-53: an exact enclosure.
+    long k = 0;
+    const double d = mpz_get_d_2exp(&k, x.mpz());
+    const long shift = k - top;
+    const double tiny = std::ldexp(1.0, -1000);
+    if (shift < -1000) return Interval(-tiny, tiny);  // |x 2^-top| < 2^-1000
+    const double u = std::ldexp(1.0, -53);
+    return Interval(std::ldexp(d - u, static_cast<int>(shift)), std::ldexp(d + u, static_cast<int>(shift)));
+  };
+  const Interval x(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second);
+  Interval v = coefficient(c.back());
+  for (std::size_t k = c.size() - 1; k-- > 0;) v = v * x + coefficient(c[k]);
+  return v.inf() > 0 ? 1 : (v.sup() < 0 ? -1 : 0);
+}
+
+/// The same in MPFI at `prec` bits (outward rounding everywhere).
+int mpfi_sign_on(const std::vector<Integer>& c, const Rational& lo, const Rational& hi, mpfr_prec_t prec) {
+  mpfi_t x, v;
+  mpfi_init2(x, prec);
+  mpfi_init2(v, prec);
+  mpfi_interv_q(x, lo.mpq(), hi.mpq());
+  mpfi_set_z(v, c.back().mpz());
+  for (std::size_t k = c.size() - 1; k-- > 0;) {
+    mpfi_mul(v, v, x);
+    mpfi_add_z(v, v, c[k].mpz());
+  }
+  const int sg = mpfi_is_strictly_pos(v) ? 1 : (mpfi_is_strictly_neg(v) ? -1 : 0);
+  mpfi_clear(x);
+  mpfi_clear(v);
+  return sg;
+}
+
+/// Exact sign of p(t*) at a candidate instant.
+///  1. Filters: interval evaluation of p over t*'s isolating interval, in doubles (after refining
+///     the interval to ~60 bits) and, for large polynomials, in MPFI at 256 and 1024 bits (interval
+///     refined to match). A certified non-zero enclosure decides; most signs read are not zero.
+///  2. Exact zero test: p reduced modulo the minimal polynomial m of t* (pseudo-remainder; lc(m) > 0
+///     keeps the sign); p(t*) = 0 iff the remainder is 0, since m is irreducible.
+///  3. A non-zero value is then signed by MPFI with doubling precision (this ends, the value not
+///     being 0), with CGAL's exact Sign_at_1 as the last resort.
+int sign_at(const AK& ak, const PolyZ& p, const Candidate& z) {
+  if (CGAL::is_zero(p)) return 0;
+  if (p.degree() == 0) return static_cast<int>(CGAL::sign(p[0]));
+  if (z.exact) return static_cast<int>(p.sign_at(*z.exact));
+  std::array<PolyZ, 1> one{p};
+  make_primitive(one);  // a positive factor: same sign, smaller numbers
+  const std::vector<Integer> pc = coefficients_of(one[0]);
+  AlgebraicReal& x = instant_of(z);
+  refine_to(x, 60);
+  if (x.is_rational()) return static_cast<int>(one[0].sign_at(*x.exact()));
+  if (const int sg = double_sign_on(pc, x.lower(), x.upper())) return sg;
+  // Small polynomials: the exact zero test is cheap, do it first. Large ones (the pseudo-remainder
+  // grows like lc(m)^(deg p)): try the multi-precision filters first.
+  std::size_t bits = 0;
+  for (const auto& c : pc) bits = std::max(bits, mpz_sizeinbase(c.mpz(), 2));
+  const std::size_t lc_bits = mpz_sizeinbase(z.minimal_coefficients.back().mpz(), 2);
+  const bool cheap_remainder = bits + pc.size() * lc_bits < 4096;
+  if (!cheap_remainder)
+    for (long prec : {256L, 1024L}) {
+      refine_to(x, prec / 2);
+      if (const int sg = mpfi_sign_on(pc, x.lower(), x.upper(), prec)) return sg;
+    }
+  std::vector<Integer> r = pseudo_remainder(pc, z.minimal_coefficients);
+  while (!r.empty() && r.back() == 0) r.pop_back();
+  if (r.empty()) return 0;
+  if (r.size() == 1) return static_cast<int>(CGAL::sign(r[0]));
+  for (long prec = 2048; prec <= (1L << 18); prec *= 2) {
+    refine_to(x, prec / 2);
+    if (const int sg = mpfi_sign_on(pc, x.lower(), x.upper(), prec)) return sg;
+  }
+  return static_cast<int>(ak.sign_at_1_object()(PolyZ(r.begin(), r.end()), z.t));
+}
+
+Integer floor_of(const Rational& q) {
+  Integer r;
+  mpz_fdiv_q(r.mpz(), q.numerator().mpz(), q.denominator().mpz());
+  return r;
+}
+
+/// The simplest rational (smallest denominator, then numerator) in the open interval (x, y), x < y;
+/// y empty means +infinity. Continued fractions (Stern-Brocot descent).
+Rational simplest_between(const Rational& x, const std::optional<Rational>& y) {
+  if (y && x < 0 && *y > 0) return Rational(0);
+  if (y && *y <= 0) return -simplest_between(-*y, Rational(-x));
+  const Integer n = floor_of(x);  // x >= 0 here
+  const Rational next(n + 1);
+  if (!y || next < *y) return next;
+  // (x, y) lies in [n, n + 1]: recurse on the reciprocals of the fractional parts.
+  const Rational lo = Rational(1) / (*y - Rational(n));
+  std::optional<Rational> hi;
+  if (x > Rational(n)) hi = Rational(1) / (x - Rational(n));
+  return Rational(n) + Rational(1) / simplest_between(lo, hi);
+}
+
+/// A simple rational strictly between two algebraic reals a < b (their isolating intervals are
+/// refined until disjoint). CGAL's Bound_between needs a big-float interval type; this does not.
+Rational rational_between(const Alg& a, const Alg& b) {
+  while (!(a.high() < b.low())) {
+    if (a.low() != a.high()) a.refine();
+    if (b.low() != b.high()) b.refine();
+  }
+  // a <= a.high() < b.low() <= b: any number strictly between the two ends will do.
+  return simplest_between(a.high(), Rational(b.low()));
+}
+
+/// Merge the real zeros of p in [lo, hi] into the sorted list `out` (exact comparisons; a zero
+/// shared by several polynomials is kept once with all its causes). p is split into irreducible
+/// factors first: a linear factor gives a rational zero at once, and the others are isolated
+/// separately (smaller polynomials make every later sign evaluation at the zero cheaper).
+void add_zeros(const AK& ak, const PolyZ& p, unsigned cause, const Rational& lo, const Rational& hi,
+               std::vector<Candidate>& out) {
+  if (CGAL::is_zero(p) || p.degree() < 1) return;
+  std::vector<Integer> coeffs;
+  for (int i = 0; i <= p.degree(); ++i) coeffs.push_back(p[i]);
+  std::vector<Candidate> zeros;
+  for (const auto& g : irreducible_factors(coeffs)) {
+    const PolyZ gz(g.begin(), g.end());
+    if (g.size() == 2) {
+      const Rational x(-g[0], g[1]);
+      if (lo <= x && x <= hi) zeros.push_back(make_candidate(Alg(x), cause, x, g));
+      continue;
+    }
+    std::vector<Alg> roots;
+    ak.solve_1_object()(gz, true, lo, hi, std::back_inserter(roots));
+    for (const Alg& z : roots) zeros.push_back(make_candidate(z, cause, std::nullopt, g));
+  }
+  const auto cmp = ak.compare_1_object();
+  for (Candidate& z : zeros) {
+    std::size_t i = 0;
+    while (i < out.size() && cmp(out[i].t, z.t) == CGAL::SMALLER) ++i;
+    if (i < out.size() && cmp(out[i].t, z.t) == CGAL::EQUAL)
+      out[i].causes |= cause;
+    else
+      out.insert(out.begin() + static_cast<std::ptrdiff_t>(i), std::move(z));
+  }
+}
+
+int total_degree(const std::vector<std::pair<PolyZ, unsigned>>& polys) {
+  int d = 0;
+  for (const auto& [p, cause] : polys)
+    if (!CGAL::is_zero(p) && p.degree() > 0) d += p.degree();
+  return d;
+}
+
+/// The classification table of math.md sections 3 and 6 applied to root facts (the same rules as
+/// classify(); tests compare the two at rational instants).
+Position position_from(const RootFacts& x, int rho_vs_one) {
+  const bool small = rho_vs_one <= 0;
+  const int tangencies = x.tangent_negative + x.tangent_positive;
+  if (x.nonreal_multiple > 0) return Position::Unclassified;  // a finding
+  // Any size (section 6): a positive multiple root of f~ is outer tangency, two distinct positive
+  // roots separation.
+  if (tangencies == 1 && x.tangent_positive == 1) return x.nonreal ? Position::Unclassified : Position::TE;
+  if (tangencies == 0 && x.nonreal == 0 && x.positive == 2) return Position::E;
+  if (!small) return Position::Unclassified;
+  if (tangencies == 0 && x.nonreal == 2) return x.positive ? Position::Unclassified : Position::C;
+  if (tangencies == 1 && x.tangent_negative == 1 && x.nonreal == 0 && x.positive == 0) return Position::TI;
+  if (tangencies == 0 && x.nonreal == 0 && x.positive == 0) return Position::I;
+  return Position::Unclassified;
+}
+
+/// Root facts of f(., t*) relative to s(., t*) at an instant t* (rational or algebraic), from signs
+/// of polynomials in t at t* (math.md section 7).
+struct InstantFacts {
+  RootFacts roots;
+  int j = 0;           ///< degree of gcd(f, df/dl) at t*
+  int rho_vs_one = 0;  ///< sign of rho(t*) - 1 (see position_of)
+  std::string how;
+};
+
+void count_root(RootFacts& x, int sign) { ++(sign < 0 ? x.negative : x.positive); }
+void count_tangency(RootFacts& x, int sign) { ++(sign < 0 ? x.tangent_negative : x.tangent_positive); }
+const char* sign_word(int s) { return s < 0 ? "negative" : "positive"; }
+
+[[noreturn]] void impossible(const std::string& what) {
+  throw std::logic_error("motion: impossible root configuration at an instant (" + what + ")");
+}
+
+/// nullopt when f(., t*) is square-free and no neighbour is given (its root counts are then those
+/// of the neighbouring interval: no root merges at t*).
+std::optional<InstantFacts> facts_at(const MovingPencil& mp, const AK& ak, const Candidate& a,
+                                     const Classification* neighbour) {
+  InstantFacts out;
+  RootFacts& x = out.roots;
+  auto at = [&](const PolyZ& p) { return sign_at(ak, p, a); };
+  const PolyZ &f0 = mp.f[0], &f3 = mp.f[3], &f4 = mp.f[4];
+  const PolyZ &s0 = mp.s[0], &s1 = mp.s[1], &s2 = mp.s[2];
+  // s(u/v) * v^2 and s'(u/v) * v: is the rational-in-t root u/v a root of s, and a double one?
+  auto s_at = [&](const PolyZ& u, const PolyZ& v) { return s2 * u * u + s1 * u * v + s0 * v * v; };
+  auto ds_at = [&](const PolyZ& u, const PolyZ& v) { return PolyZ(Integer(2)) * s2 * u + s1 * v; };
+
+  // j = deg gcd(f, f') at t* = the first non-vanishing principal subresultant coefficient
+  // (specialisation commutes with subresultants because f4 = det P is a non-zero constant).
+  // A zero of the discriminant polynomial (its minimal polynomial divides Disc f) needs no test.
+  const bool disc_zero_here = mp.disc_zero || ((a.causes & kCauseDiscriminant) && !a.exact);
+  if (!disc_zero_here && at(mp.disc) != 0) {
+    out.j = 0;
+    if (!neighbour) return std::nullopt;
+    x.real = neighbour->real_roots;
+    x.negative = neighbour->negative_roots;
+    x.positive = neighbour->positive_roots;
+    x.nonreal = neighbour->nonreal_roots;
+    x.sign_disc_f = x.sign_disc_ftilde = neighbour->sign_disc_f;
+    out.how = "f is square-free at t*: root counts of the neighbouring interval (no root merges at t*)";
+    return out;
+  }
+  x.sign_disc_f = 0;
+  if (at(mp.g1[0]) != 0) {
+    // One double root l* = -S1_0 / S1_1 (S1 = StHa_1); f = f4 (l - l*)^2 g with g = f4 l^2 + g1 l + g0,
+    // g1 = f3 + 2 f4 l*, g0 = f0 / l*^2 (compare coefficients of l^3 and l^0).
+    out.j = 1;
+    const PolyZ u = -mp.g1[1], v = mp.g1[0];
+    const int su = at(u), sv = at(v);
+    if (su == 0) impossible("double root at l = 0");
+    const int lam = su * sv;
+    const bool on_s = at(s_at(u, v)) == 0;
+    const PolyZ w = v * f3 + PolyZ(Integer(2)) * f4 * u;                           // v * g1
+    const PolyZ dg = w * w * u * u - PolyZ(Integer(4)) * f4 * f0 * v * v * v * v;  // Disc g * u^2 v^2
+    const int sg = at(dg);
+    if (sg == 0) impossible("j = 1 but g has a double root");
+    x.real = 1;
+    count_root(x, lam);
+    if (sg > 0) {
+      // g0 / g2 = f0 / (f4 l*^2) > 0: both roots of g have the sign of their sum -g1/g2, i.e. of g1.
+      const int sr = at(w) * sv;
+      x.real += 2;
+      count_root(x, sr);
+      count_root(x, sr);
+    } else {
+      x.nonreal = 2;
+    }
+    if (!on_s) count_tangency(x, lam);
+    out.how = std::string("Disc f = 0: one double root l* = -S1_0/S1_1 of f, ") + sign_word(lam) +
+              (on_s ? ", also a root of s (special root, not a tangency)" : ", not a root of s: a tangency");
+    x.sign_disc_ftilde = on_s ? (sg > 0 ? 1 : -1) : 0;
+    return out;
+  }
+  if (at(mp.g2[0]) != 0) {
+    out.j = 2;
+    const PolyZ &A = mp.g2[0], &B = mp.g2[1], &C = mp.g2[2];  // gcd(f, f') = A l^2 + B l + C at t*
+    const int sd = at(B * B - PolyZ(Integer(4)) * A * C);
+    if (sd == 0) {
+      // Triple root l* = -B/(2A); f = f4 (l - l*)^3 (l - mu), mu = -f3/f4 - 3 l*.
+      const PolyZ u = -B, v = PolyZ(Integer(2)) * A;
+      const int lam = at(u) * at(v);
+      const int mu = at(-f3 * v - PolyZ(Integer(3)) * f4 * u) * at(f4) * at(v);
+      if (lam == 0 || mu == 0) impossible("triple root or its cofactor at l = 0");
+      const int ms = at(s_at(u, v)) != 0 ? 0 : (at(ds_at(u, v)) != 0 ? 1 : 2);
+      x.real = 2;
+      count_root(x, lam);
+      count_root(x, mu);
+      if (3 - ms >= 2) count_tangency(x, lam);
+      out.how = std::string("Disc f = 0: a triple root of f, ") + sign_word(lam) + ", of multiplicity " +
+                std::to_string(ms) + " in s" + (3 - ms >= 2 ? ": a tangency" : ": not a tangency");
+      return out;
+    }
+    if (sd < 0) {
+      x.nonreal = 4;
+      x.nonreal_multiple = 4;
+      out.how = "Disc f = 0: f is the square of a quadratic with non-real roots (outside the table)";
+      return out;
+    }
+    // Two real double roots a != b, the roots of A l^2 + B l + C.
+    const int sp = at(C) * at(A), ss = -at(B) * at(A);
+    if (sp == 0) impossible("double root at l = 0");
+    int sa, sb;
+    if (sp > 0) {
+      if (ss == 0) impossible("two double roots of the same sign with sum 0");
+      sa = sb = ss;
+    } else {
+      sa = -1;
+      sb = 1;
+    }
+    x.real = 2;
+    count_root(x, sa);
+    count_root(x, sb);
+    // Res(A l^2 + B l + C, s) = (A s0 - C s2)^2 - (A s1 - B s2)(B s0 - C s1).
+    const PolyZ p1 = A * s0 - C * s2, p2 = A * s1 - B * s2, p3 = B * s0 - C * s1;
+    if (at(p1 * p1 - p2 * p3) != 0) {
+      count_tangency(x, sa);
+      count_tangency(x, sb);
+      out.how = "Disc f = 0: two real double roots of f, neither a root of s: two tangencies (outside the table)";
+    } else if (at(p2) == 0 && at(p1) == 0) {
+      out.how = "Disc f = 0: two real double roots of f, both roots of s (special roots, no tangency)";
+    } else {
+      // Exactly one is a root of s, hence negative; the other is the tangency.
+      if (sa > 0 && sb > 0) impossible("a positive root of s");
+      count_tangency(x, sa == sb ? -1 : 1);
+      out.how = std::string("Disc f = 0: two real double roots of f, one a root of s; the other, ") +
+                sign_word(sa == sb ? -1 : 1) + ", is a tangency";
+    }
+    return out;
+  }
+  // gcd(f, f') = f' at t*: f = f4 (l - l*)^4 with l* = -f3 / (4 f4); mult_s <= 2 so always a tangency.
+  out.j = 3;
+  const int lam = -at(f3) * at(f4);
+  if (lam == 0) impossible("quadruple root at l = 0");
+  x.real = 1;
+  count_root(x, lam);
+  count_tangency(x, lam);
+  out.how = std::string("Disc f = 0: a quadruple root of f, ") + sign_word(lam) + ": a tangency";
+  return out;
+}
+
+/// The position at an instant from its root facts. With `report_smallness` false, smallness is
+/// evaluated only when the answer depends on it (E and TE do not; first contact needs no more).
+Position position_of(const MovingPencil& mp, const AK& ak, const Candidate& a, InstantFacts& facts,
+                     bool report_smallness) {
+  const Position if_small = position_from(facts.roots, -1), if_large = position_from(facts.roots, 1);
+  if (if_small == if_large && !report_smallness) {
+    facts.rho_vs_one = 0;  // not evaluated
+    return if_small;
+  }
+  facts.rho_vs_one = *compare_rho_with_one(USign(static_cast<CGAL::Sign>(sign_at(ak, mp.vertex, a))),
+                                           USign(static_cast<CGAL::Sign>(sign_at(ak, mp.graeffe, a))));
+  return position_from(facts.roots, facts.rho_vs_one);
+}
+
+/// Positions that a limit of configurations in position p can have (the contact set is closed,
+/// E, I and C are open conditions; an ellipsoid cannot lie both inside-or-on and outside-or-on).
+unsigned closure(Position p) {
+  auto bit = [](Position q) { return 1u << static_cast<unsigned>(q); };
+  switch (p) {
+    case Position::E:
+      return bit(Position::E) | bit(Position::TE);
+    case Position::I:
+      return bit(Position::I) | bit(Position::TI);
+    case Position::C:
+      return bit(Position::C) | bit(Position::TI) | bit(Position::TE);
+    case Position::TE:
+      return bit(Position::TE);
+    case Position::TI:
+      return bit(Position::TI);
+    case Position::Unclassified:
+      break;
+  }
+  return ~0u;
+}
+
+Classification classify_at(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p, const Rational& t) {
+  return classify(placed_ellipsoid(e0, m, t), p, Evidence::Minimal);
+}
+
+std::string classify_how(const Classification& c) {
+  return "classified exactly at the rational instant (" + to_string(c.stage) + ")";
+}
+
+}  // namespace
+
+std::vector<std::string> cause_names(unsigned causes) {
+  std::vector<std::string> out;
+  if (causes & kCauseStart) out.emplace_back("start");
+  if (causes & kCauseEnd) out.emplace_back("end");
+  if (causes & kCauseDiscriminant) out.emplace_back("discriminant");
+  if (causes & kCauseSpecialRoot) out.emplace_back("special-root");
+  if (causes & kCauseSmallness) out.emplace_back("smallness");
+  return out;
+}
+
+FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
+                           const Rational& t1) {
+  validate_motion(motion, t0, t1);
+  FirstContact out;
+  const Classification c0 = classify_at(e0, motion, p, t0);
+  out.start_position = c0.position;
+  if (c0.position != Position::E) {
+    out.kind = FirstContact::Kind::NotExteriorAtStart;
+    out.time = AlgebraicReal::rational(t0);
+    out.position = c0.position;
+    out.how = classify_how(c0);
+    return out;
+  }
+  // Separation (two distinct positive roots) is open and is decided for any size; it can only end
+  // where two roots of f meet, i.e. at a real zero of `merge` (math.md section 7).
+  const MovingPencil mp(e0, motion, p);
+  AK ak;
+  std::vector<Candidate> zeros;
+  add_zeros(ak, mp.merge, kCauseDiscriminant, t0, t1, zeros);
+  const auto cmp = ak.compare_1_object();
+  const Alg a0(t0);
+  for (const Candidate& z : zeros) {
+    if (cmp(z.t, a0) == CGAL::EQUAL) continue;  // t0 itself: classified above
+    Position pos;
+    std::string how;
+    if (z.exact) {
+      const Classification c = classify_at(e0, motion, p, *z.exact);
+      pos = c.position;
+      how = classify_how(c);
+    } else {
+      auto facts = facts_at(mp, ak, z, nullptr);
+      if (!facts) continue;  // no root merges: still E
+      pos = position_of(mp, ak, z, *facts, false);
+      how = facts->how;
+    }
+    if (pos != Position::E) {
+      out.kind = FirstContact::Kind::Contact;
+      out.time = instant_of(z);
+      out.position = pos;
+      out.how = how;
+      return out;
+    }
+  }
+  out.kind = FirstContact::Kind::None;
+  return out;
+}
+
+Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
+                  const Rational& t1) {
+  validate_motion(motion, t0, t1);
+  Timeline out;
+  out.t0 = t0;
+  out.t1 = t1;
+  const MovingPencil mp(e0, motion, p);
+  out.discriminant_identically_zero = mp.disc_zero;
+  out.event_degree = total_degree(mp.events);
+  AK ak;
+
+  // Candidate instants in [t0, t1], with t0 and t1 themselves.
+  std::vector<Candidate> cands{make_candidate(Alg(t0), kCauseStart, t0, {-t0.numerator(), t0.denominator()})};
+  if (t1 > t0)
+    cands.push_back(make_candidate(Alg(t1), kCauseEnd, t1, {-t1.numerator(), t1.denominator()}));
+  else
+    cands.front().causes |= kCauseEnd;
+  for (const auto& [poly, cause] : mp.events) add_zeros(ak, poly, cause, t0, t1, cands);
+
+  // Open intervals: classified exactly at a rational sample strictly inside. The classifications
+  // are kept: their root counts serve the square-free instants.
+  std::vector<Classification> interval_class;
+  for (std::size_t i = 0; i + 1 < cands.size(); ++i) {
+    MotionInterval iv;
+    iv.sample = rational_between(cands[i].t, cands[i + 1].t);
+    interval_class.push_back(classify_at(e0, motion, p, iv.sample));
+    iv.position = interval_class.back().position;
+    iv.small = interval_class.back().small;
+    out.intervals.push_back(std::move(iv));
+  }
+
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    const Candidate& z = cands[i];
+    MotionInstant inst{instant_of(z), Position::Unclassified, false, z.causes, ""};
+    if (inst.time.is_rational()) {
+      const Classification c = classify_at(e0, motion, p, *inst.time.exact());
+      inst.position = c.position;
+      inst.small = c.small;
+      inst.how = classify_how(c);
+    } else {
+      // Irrational instants are interior (t0, t1 are rational), so interval i-1 exists.
+      auto facts = facts_at(mp, ak, z, &interval_class[i - 1]);
+      inst.position = position_of(mp, ak, z, *facts, true);
+      inst.small = facts->rho_vs_one <= 0;
+      inst.how = "at the algebraic instant: " + facts->how;
+    }
+    // Cross-check with the neighbours (closure of positions, see `closure`): a violation would mean
+    // a defect or a gap in the theory, so the instant is reported unclassified, never guessed.
+    if (inst.position != Position::Unclassified) {
+      const unsigned bit = 1u << static_cast<unsigned>(inst.position);
+      bool ok = true;
+      if (i > 0) ok = ok && (closure(out.intervals[i - 1].position) & bit);
+      if (i + 1 < cands.size()) ok = ok && (closure(out.intervals[i].position) & bit);
+      if (!ok) {
+        inst.how += " [inconsistent with the neighbouring intervals: reported unclassified]";
+        inst.position = Position::Unclassified;
+      }
+    }
+    out.instants.push_back(std::move(inst));
+  }
+  return out;
+}
+
+std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p,
+                                                  const Rational& t) {
+  const MovingPencil mp(e0, motion, p);
+  AK ak;
+  auto facts = facts_at(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}), nullptr);
+  if (!facts) return std::nullopt;
+  return position_of(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}), *facts, true);
+}
+
+std::vector<PositionChange> Timeline::changes() const {
+  std::vector<PositionChange> out;
+  for (std::size_t i = 0; i < instants.size(); ++i) {
+    PositionChange c{instants[i].time, std::nullopt, instants[i].position, std::nullopt};
+    if (i > 0) c.before = intervals[i - 1].position;
+    if (i < intervals.size()) c.after = intervals[i].position;
+    const bool changed = (c.before && *c.before != c.at) || (c.after && *c.after != c.at);
+    if (changed) out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<PositionSpan> Timeline::spans() const {
+  std::vector<PositionSpan> out;
+  auto extend = [&](const AlgebraicReal& from, bool from_closed, const AlgebraicReal& to, bool to_closed,
+                    Position pos) {
+    if (!out.empty() && out.back().position == pos) {
+      out.back().to = to;
+      out.back().to_closed = to_closed;
+    } else {
+      out.push_back(PositionSpan{from, to, from_closed, to_closed, pos});
+    }
+  };
+  for (std::size_t i = 0; i < instants.size(); ++i) {
+    extend(instants[i].time, true, instants[i].time, true, instants[i].position);
+    if (i < intervals.size()) extend(instants[i].time, false, instants[i + 1].time, false, intervals[i].position);
+  }
+  return out;
+}
+
+Position Timeline::position_at(const Rational& t) const {
+  if (t < t0 || t > t1) throw InputError("time " + to_string(t) + " is outside [t0, t1]");
+  for (std::size_t i = 0; i < instants.size(); ++i) {
+    const int c = instants[i].time.compare(t);
+    if (c == 0) return instants[i].position;
+    if (c > 0) return intervals[i - 1].position;  // i > 0 because instants[0] = t0 <= t
+  }
+  return instants.back().position;
+}
+
+}  // namespace relpos
