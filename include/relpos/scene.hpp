@@ -37,7 +37,7 @@
 namespace relpos {
 
 // ------------------------------------------------------------------------------------------------
-// The certificate polynomials, generic over the number type (intervals in the filter, exact
+// The certificate polynomials, generic over the number type (RunningBound in the filter, exact
 // rationals in the tests).
 // ------------------------------------------------------------------------------------------------
 
