@@ -415,6 +415,12 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
 
 }  // namespace
 
+Verdict decide_from_root_facts(const RootFacts& facts, int rho_vs_one) {
+  Verdict v;
+  decide_from_facts(facts, rho_vs_one, v);
+  return v;
+}
+
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p) {
   std::optional<ExactData> exact;
   return run_stages(e, p, true, exact);

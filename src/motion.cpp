@@ -373,20 +373,8 @@ int total_degree(const std::vector<std::pair<PolyZ, unsigned>>& polys) {
 
 /// The classification table of math.md sections 3 and 6 applied to root facts (the same rules as
 /// classify(); tests compare the two at rational instants).
-Position position_from(const RootFacts& x, int rho_vs_one) {
-  const bool small = rho_vs_one <= 0;
-  const int tangencies = x.tangent_negative + x.tangent_positive;
-  if (x.nonreal_multiple > 0) return Position::Unclassified;  // a finding
-  // Any size (section 6): a positive multiple root of f~ is outer tangency, two distinct positive
-  // roots separation.
-  if (tangencies == 1 && x.tangent_positive == 1) return x.nonreal ? Position::Unclassified : Position::TE;
-  if (tangencies == 0 && x.nonreal == 0 && x.positive == 2) return Position::E;
-  if (!small) return Position::Unclassified;
-  if (tangencies == 0 && x.nonreal == 2) return x.positive ? Position::Unclassified : Position::C;
-  if (tangencies == 1 && x.tangent_negative == 1 && x.nonreal == 0 && x.positive == 0) return Position::TI;
-  if (tangencies == 0 && x.nonreal == 0 && x.positive == 0) return Position::I;
-  return Position::Unclassified;
-}
+/// The core's one decision table (classify.hpp), on facts obtained at an instant.
+Position position_from(const RootFacts& x, int rho_vs_one) { return decide_from_root_facts(x, rho_vs_one).position; }
 
 /// Root facts of f(., t*) relative to s(., t*) at an instant t* (rational or algebraic), from signs
 /// of polynomials in t at t* (math.md section 7).

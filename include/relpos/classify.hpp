@@ -71,6 +71,11 @@ struct Verdict {
 /// Adaptive exact verdict (static double filter, intervals, exact integers, exact roots).
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p);
 
+/// The classification table itself (math.md sections 3 and 6), applied to exact root facts and the
+/// comparison of rho with 1: the one written decision, for callers that obtain the facts another
+/// way (the motion module at algebraic instants). Stage is left at its default.
+Verdict decide_from_root_facts(const RootFacts& facts, int rho_vs_one);
+
 /// How much evidence to assemble. Minimal is what the fast path needs; Full adds the exact
 /// coefficients of f and s, deg f~, the multiple roots and rho itself.
 enum class Evidence { Minimal, Full };
