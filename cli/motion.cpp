@@ -208,7 +208,7 @@ std::string time_exact_text(const relpos::AlgebraicReal& t) {
   if (t.is_rational()) return "exactly " + relpos::to_string(*t.exact());
   const int degree = static_cast<int>(t.polynomial().size()) - 1;
   const std::string poly = degree <= kMaxShownDegree ? relpos::polynomial_text(t.polynomial())
-                                                     : "a square-free polynomial of degree " + std::to_string(degree);
+                                                     : "an irreducible polynomial of degree " + std::to_string(degree);
   std::string interval = "[" + relpos::to_string(t.lower()) + ", " + relpos::to_string(t.upper()) + "]";
   if (interval.size() > 60) {
     // Long exact ends (after refinement) are in the JSON output; the report gives the width.

@@ -1,5 +1,5 @@
 // `relpos motion`: first contact and timeline of an ellipsoid moving by a polynomial rigid motion
-// relative to a fixed paraboloid (doc/cli.md, "relpos motion"; math.md section 7).
+// relative to a fixed paraboloid (doc/cli.md, "relpos motion"; math.md "Motion").
 #pragma once
 
 #include <string>

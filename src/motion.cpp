@@ -100,7 +100,7 @@ MatZ integer_matrix(const Matrix4& p) {
 }
 
 /// The pencil of the moving pair with coefficients in Z[t] and the polynomials in t that decide
-/// (math.md section 7). f = det(l P + E(t)) and s = det(l A + M(t)) up to positive factors.
+/// (math.md "Motion"). f = det(l P + E(t)) and s = det(l A + M(t)) up to positive factors.
 struct MovingPencil {
   Quartic<PolyZ> f;
   Quadratic<PolyZ> s;
@@ -161,7 +161,7 @@ struct MovingPencil {
       if (!CGAL::is_zero(ds)) events.emplace_back(ds, kCauseSpecialRoot);
     }
     // For a pure translation s and det E are constant, so both quantities are constants: rho does
-    // not change (math.md section 7). A rotation can change it.
+    // not change (math.md "Motion"). A rotation can change it.
     events.emplace_back(vertex, kCauseSmallness);
     events.emplace_back(graeffe, kCauseSmallness);
   }
@@ -377,7 +377,7 @@ int total_degree(const std::vector<std::pair<PolyZ, unsigned>>& polys) {
 Position position_from(const RootFacts& x, int rho_vs_one) { return decide_from_root_facts(x, rho_vs_one).position; }
 
 /// Root facts of f(., t*) relative to s(., t*) at an instant t* (rational or algebraic), from signs
-/// of polynomials in t at t* (math.md section 7).
+/// of polynomials in t at t* (math.md "Motion").
 struct InstantFacts {
   RootFacts roots;
   int j = 0;           ///< degree of gcd(f, df/dl) at t*
@@ -588,7 +588,7 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
     return out;
   }
   // Separation (two distinct positive roots) is open and is decided for any size; it can only end
-  // where two roots of f meet, i.e. at a real zero of `merge` (math.md section 7).
+  // where two roots of f meet, i.e. at a real zero of `merge` (math.md "Motion").
   const MovingPencil mp(e0, motion, p);
   AK ak;
   std::vector<Candidate> zeros;

@@ -1,5 +1,5 @@
 // motion.hpp, polynomial_motion.hpp, algebraic_real.hpp: positions along polynomial motions
-// (math.md section 7). Every expected instant is known by construction (see each case); every
+// (math.md "Motion"). Every expected instant is known by construction (see each case); every
 // timeline is cross-checked against relpos::classify at dense rational samples, and the method used
 // at irrational instants (subresultants) against classify at rational instants.
 #include <gmp.h>
@@ -304,7 +304,14 @@ TEST_CASE("rational first contact: a sphere moving horizontally through the wall
       CHECK((inst.causes & relpos::kCauseDiscriminant));
     }
   CHECK(saw_two);
-  for (const auto& inst : tl.instants) CHECK(!(inst.causes & relpos::kCauseSmallness));  // translation: rho constant
+  // A translation keeps det E and M, hence s and rho: no smallness instant, and the same exact rho
+  // (here 4 r^2 / a^4 = 1/4) wherever classify() looks.
+  for (const auto& inst : tl.instants) CHECK(!(inst.causes & relpos::kCauseSmallness));
+  for (const char* t : {"0", "1", "17/15", "2", "7/2"}) {
+    const auto c = relpos::classify(relpos::placed_ellipsoid(e0, m, q(t)), p);
+    REQUIRE(c.rho.has_value());
+    CHECK(*c.rho == q("1/4"));
+  }
   const auto changes = tl.changes();
   REQUIRE(changes.size() == 4);
   CHECK(*changes[0].before == Position::E);
@@ -577,7 +584,7 @@ TEST_CASE("random paths: timelines agree with dense classification; both methods
   CAPTURE(seed);
   std::mt19937_64 rng(seed);
   auto dyadic = [&](int lo, int hi, int bits) {  // a random multiple of 2^-bits in [lo, hi]
-    std::uniform_int_distribution<long> d(static_cast<long>(lo) << bits, static_cast<long>(hi) << bits);
+    std::uniform_int_distribution<long> d(static_cast<long>(lo) * (1L << bits), static_cast<long>(hi) * (1L << bits));
     return Rational(d(rng), 1L << bits);
   };
   std::uniform_int_distribution<int> small(-2, 2);

@@ -1,4 +1,4 @@
-// Positions along a rigid polynomial motion (math.md section 7): the certified first-contact time
+// Positions along a rigid polynomial motion (math.md "Motion"): the certified first-contact time
 // of an ellipsoid that starts exterior to a fixed paraboloid, and the full timeline of positions on
 // a time interval [t0, t1].
 //
@@ -112,7 +112,7 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
                   const Rational& t1);
 
 /// For tests: the position at a rational time decided by the method used at irrational instants
-/// (subresultants of f and df/dl, math.md section 7) instead of classify(). nullopt when f(., t) is
+/// (subresultants of f and df/dl, math.md "Motion") instead of classify(). nullopt when f(., t) is
 /// square-free there (that method then takes its root counts from a neighbouring interval).
 std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p,
                                                   const Rational& t);

@@ -1,4 +1,4 @@
-// Rigid motions whose matrices are polynomial in time (math.md section 7).
+// Rigid motions whose matrices are polynomial in time (math.md "Motion").
 //
 // The ellipsoid is given in a reference placement E0 (a validated Ellipsoid). At time t it is the
 // image of E0 under the rigid map
