@@ -272,6 +272,7 @@ int run_classify(Args& args) {
         throw relpos::InputError(std::string("paraboloid: ") + err.what());
       }
     }
+    relpos::io::check_pair_size(*e, *p);  // doc/cli.md, Limits
     const relpos::Classification c = relpos::classify(*e, *p, relpos::Evidence::Full);
     if (json)
       write_json_line(relpos::io::classification_to_json(c, options));
@@ -320,6 +321,7 @@ Json answer_line(const std::string& line, long line_number, const relpos::io::Re
     if (!doc.contains("paraboloid")) throw relpos::InputError("paraboloid: missing");
     const relpos::Ellipsoid e = relpos::io::ellipsoid_from_json(doc["ellipsoid"], "ellipsoid");
     const relpos::Paraboloid p = relpos::io::paraboloid_from_json(doc["paraboloid"], "paraboloid");
+    relpos::io::check_pair_size(e, p);  // doc/cli.md, Limits
     const relpos::Classification c = relpos::classify(e, p, relpos::Evidence::Full);
     Json out;
     out["id"] = id;

@@ -30,6 +30,14 @@ Integer power_of_ten(unsigned long e) {
   return z;
 }
 
+/// "nan", "inf", "infinity" in any case (the sign is already removed): what printf and other
+/// languages write for non-finite doubles.
+bool is_non_finite(std::string_view s) {
+  std::string lower;
+  for (char c : s) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower == "nan" || lower == "inf" || lower == "infinity";
+}
+
 [[noreturn]] void bad(std::string_view text, const char* why) {
   std::string shown(text.substr(0, 60));
   if (text.size() > 60) shown += "...";
@@ -84,8 +92,7 @@ Rational parse_rational(std::string_view text) {
   }
   if (ip.empty() && fp.empty()) bad(text, "no digits");
   if ((!ip.empty() && !all_digits(ip)) || (!fp.empty() && !all_digits(fp))) {
-    if (text == "nan" || text == "NaN" || text == "inf" || text == "-inf" || text == "Infinity")
-      bad(text, "not finite");
+    if (is_non_finite(s)) bad(text, "not finite");
     bad(text, "unexpected character");
   }
   long e10 = 0;
@@ -102,7 +109,7 @@ Rational parse_rational(std::string_view text) {
   }
   e10 -= static_cast<long>(fp.size());
   if (e10 > kMaxDecimalExponent || e10 < -kMaxDecimalExponent - static_cast<long>(kMaxNumberChars))
-    bad(text, "decimal exponent beyond the supported range of +-4000");
+    bad(text, "decimal exponent beyond the supported range: the exponent of the last digit must lie in [-14000, 4000]");
   std::string digits = std::string(ip) + std::string(fp);
   Integer m = parse_integer_digits(digits.empty() ? "0" : digits);
   if (neg) m = -m;

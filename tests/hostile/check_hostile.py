@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""Hostile input for the relpos CLI (doc/testing.md): `relpos batch` must exit 0 and answer every input
+line, in order, with the id preserved, an error message naming the problem or the expected position,
+and no run may hang.
+
+    check_hostile.py RELPOS_BINARY TESTS_HOSTILE_DIR
+
+Runs the checked-in corpus (hostile.jsonl with hostile.expect, written by make_corpus.py) and inputs
+generated here because they are large: 10^4-digit rationals, numbers beyond the 10000-character
+limit, a 5 MB line, a million-element matrix, 100000 nested brackets, an empty file, a file without
+a final newline, CR-only line ends, standard input. Then a few `relpos classify` error paths and
+their exit codes.
+"""
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+TIMEOUT = 120  # seconds per run; a hang fails the test
+failures = []
+
+
+def fail(msg):
+    failures.append(msg)
+    print("FAIL: " + msg)
+
+
+def run(args, stdin=None):
+    # `timeout` kills a hung relpos; the Python timeout is a second line of defence.
+    try:
+        p = subprocess.run(["timeout", str(TIMEOUT)] + args, input=stdin, capture_output=True, timeout=TIMEOUT + 30)
+    except subprocess.TimeoutExpired:
+        return None
+    return p
+
+
+def input_lines(data):
+    """The lines relpos sees: split at '\\n'; a last line without '\\n' counts."""
+    if not data:
+        return []
+    parts = data.split(b"\n")
+    if parts[-1] == b"":
+        parts.pop()
+    return parts
+
+
+def check_batch(relpos, name, data, expect, use_stdin=False):
+    """expect: one (id, kind, keyword) per input line."""
+    lines = input_lines(data)
+    if len(lines) != len(expect):
+        raise SystemExit("test bug: %s has %d lines but %d expectations" % (name, len(lines), len(expect)))
+    with tempfile.NamedTemporaryFile(suffix=".jsonl", delete=False) as f:
+        f.write(data)
+        path = f.name
+    try:
+        p = run([relpos, "batch", "-"], stdin=data) if use_stdin else run([relpos, "batch", path])
+    finally:
+        os.unlink(path)
+    if p is None or p.returncode == 124:
+        fail("%s: relpos batch did not finish within %d s" % (name, TIMEOUT))
+        return
+    if p.returncode != 0:
+        fail("%s: exit code %d (stderr: %s)" % (name, p.returncode, p.stderr[:300]))
+    out = p.stdout.decode("utf-8").split("\n")
+    if out and out[-1] == "":
+        out.pop()
+    if len(out) != len(lines):
+        fail("%s: %d input lines but %d output lines" % (name, len(lines), len(out)))
+        return
+    for n, (text, (want_id, kind, keyword)) in enumerate(zip(out, expect), start=1):
+        where = "%s line %d" % (name, n)
+        try:
+            obj = json.loads(text)
+        except ValueError as e:
+            fail("%s: output is not JSON (%s): %s" % (where, e, text[:200]))
+            continue
+        if not isinstance(obj, dict) or "id" not in obj:
+            fail("%s: output without id: %s" % (where, text[:200]))
+            continue
+        if obj["id"] != want_id:
+            fail("%s: id %r, expected %r" % (where, obj["id"], want_id))
+        if kind == "error":
+            msg = obj.get("error")
+            if not isinstance(msg, str) or keyword not in msg:
+                fail("%s: expected an error containing %r, got %s" % (where, keyword, text[:300]))
+        else:
+            if obj.get("position") != keyword:
+                fail("%s: expected position %r, got %s" % (where, keyword, text[:300]))
+
+
+def digits(rng, n):
+    return str(rng.randrange(1, 10)) + "".join(rng.choice("0123456789") for _ in range(n - 1))
+
+
+def main():
+    relpos, here = sys.argv[1], sys.argv[2]
+    rng = random.Random(20240611)
+
+    # 1. The checked-in corpus.
+    with open(os.path.join(here, "hostile.jsonl"), "rb") as f:
+        data = f.read()
+    expect = []
+    with open(os.path.join(here, "hostile.expect"), encoding="utf-8") as f:
+        for row in f.read().split("\n"):
+            if row:
+                id_text, kind, keyword = row.split("\t")
+                expect.append((json.loads(id_text), kind, keyword))
+    check_batch(relpos, "hostile.jsonl", data, expect)
+    check_batch(relpos, "hostile.jsonl on stdin", data, expect, use_stdin=True)
+
+    # 2. Generated inputs.
+    sphere = lambda r: '{"sphere": {"center": [0, 0, 1], "radius": %s}}' % r
+    para = '{"vertex": [0, 0, 0], "a": 1, "b": 2}'
+    pair = lambda i, e, p=para: '{"id": "%s", "ellipsoid": %s, "paraboloid": %s}' % (i, e, p)
+    ten4 = "1" + "0" * 4998  # "ten4/(4 ten4)" has 9999 characters
+    big = digits(rng, 9998)
+    gen = [
+        # A 10^4-character rational that reduces to 1/4: accepted, classified.
+        (pair("rational-1e4-chars", sphere('"%s/%s"' % (ten4, "4" + "0" * 4998))), "rational-1e4-chars", "position", "I"),
+        # A 10^4-digit rational that does not reduce: accepted by the parser, refused by the size limit.
+        (pair("rational-1e4-digits", sphere('"1/%s"' % big)), "rational-1e4-digits", "error", "numbers too large"),
+        (pair("integer-1e4-digits-json", '{"sphere": {"center": [0, 0, %s], "radius": 1}}' % digits(rng, 9999)),
+         "integer-1e4-digits-json", "error", "numbers too large"),
+        # One character over the limit, as a string and as a JSON number.
+        (pair("over-limit-string", sphere('"0.%s"' % ("0" * 9998 + "1"))), "over-limit-string", "error",
+         "longer than the 10000-character limit"),
+        (pair("over-limit-json", sphere("0.%s" % ("0" * 9998 + "1"))), "over-limit-json", "error",
+         "longer than the 10000-character limit"),
+        (pair("over-limit-fraction", sphere('"%s/%s"' % (digits(rng, 5000), digits(rng, 5001)))), "over-limit-fraction",
+         "error", "longer than the 10000-character limit"),
+        # 10^4 decimal places that reduce to something small: fine.
+        (pair("decimal-1e4-places", sphere('"0.25%s"' % ("0" * 9990))), "decimal-1e4-places", "position", "I"),
+        # Exponents at and beyond the parser's limits (e - digits after the point within [-14000, 4000]):
+        # accepted numbers this large or small then exceed the pair limit.
+        (pair("exponent-4000", sphere('"25e-4002"')), "exponent-4000", "error", "numbers too large"),
+        (pair("exponent-plus-4000", sphere('"1e4000"')), "exponent-plus-4000", "error", "numbers too large"),
+        (pair("exponent-plus-4001", sphere('"1e4001"')), "exponent-plus-4001", "error", "beyond the supported range"),
+        (pair("exponent-minus-14001", sphere('"1e-14001"')), "exponent-minus-14001", "error",
+         "beyond the supported range"),
+        # Very long lines.
+        ('{"id": "long-comment", "comment": "%s", "ellipsoid": %s, "paraboloid": %s}' % ("x" * 5000000, sphere('"1/4"'), para),
+         "long-comment", "position", "I"),
+        ('{"id": "million-row", "ellipsoid": {"matrix": [[%s]]}, "paraboloid": %s}' % (",".join(["0"] * 1000000), para),
+         "million-row", "error", "4x4"),
+        ("[" * 100000, None, "error", "nested deeper than 256"),
+        ('{"id": "deep-id", "id2": %s}' % ("[" * 100000 + "]" * 100000), None, "error", "nested deeper than 256"),
+        ("x" * 3000000, None, "error", "invalid JSON"),
+    ]
+    data = b""
+    expect = []
+    for n, (text, id_, kind, kw) in enumerate(gen, start=1):
+        data += text.encode() + b"\n"
+        expect.append((n if id_ is None else id_, kind, kw))
+    check_batch(relpos, "generated", data, expect)
+
+    ok = pair("ok", sphere('"1/4"'))
+    check_batch(relpos, "empty file", b"", [])
+    check_batch(relpos, "one newline", b"\n", [(1, "error", "empty line")])
+    check_batch(relpos, "no final newline", (ok + "\n" + ok).encode(), [("ok", "position", "I")] * 2)
+    check_batch(relpos, "CR-only line ends", (ok + "\r" + ok + "\r").encode(), [(1, "error", "invalid JSON")])
+    check_batch(relpos, "CRLF file", (ok + "\r\n\r\n" + ok + "\r\n").encode(),
+                [("ok", "position", "I"), (2, "error", "empty line"), ("ok", "position", "I")])
+    check_batch(relpos, "truncated final line", (ok + "\n" + ok[:-17]).encode(),
+                [("ok", "position", "I"), (2, "error", "invalid JSON")])
+
+    # 3. `relpos classify`: exit codes and messages (doc/cli.md, Exit codes).
+    def classify(args, code, keyword):
+        p = run([relpos] + args)
+        if p is None or p.returncode != code or keyword.encode() not in p.stderr:
+            fail("relpos %s: expected exit %d and %r on stderr, got %s" %
+                 (" ".join(a[:40] for a in args), code, keyword, None if p is None else (p.returncode, p.stderr[:300])))
+
+    classify(["classify", "--ellipsoid", "{", "--paraboloid", para], 1, "invalid JSON")
+    classify(["classify", "--sphere", "0,0,1,NaN", "--standard-paraboloid", "1,2"], 1, "not finite")
+    classify(["classify", "--sphere", "0,0,1", "--standard-paraboloid", "1,2"], 1, "expected 4 comma-separated")
+    classify(["classify", "--sphere", "0,0,1,1/%s" % big[:3000], "--standard-paraboloid", "1,2"], 1, "numbers too large")
+    classify(["classify", "--ellipsoid", '{"coefficients": [1,1,-1,0,0,0,0,0,0,-1]}', "--standard-paraboloid", "1,2"],
+             1, "hyperboloid of one sheet")
+    classify(["classify", "--sphere", "0,0,1,1"], 2, "missing the paraboloid")
+    classify(["classify", "--sphere", "0,0,1,1", "--standard-paraboloid", "1,2", "--digits", "0"], 2, "--digits")
+    classify(["batch", "/nonexistent/relpos-hostile.jsonl"], 3, "cannot open")
+    p = run([relpos, "classify", "--sphere", "0,0,1,x", "--standard-paraboloid", "1,2", "--json"])
+    if p is None or p.returncode != 1 or "error" not in json.loads(p.stdout.decode() or "{}"):
+        fail("relpos classify --json with a bad number: expected exit 1 and {\"error\": ...} on stdout")
+
+    if failures:
+        print("hostile input: %d failures" % len(failures))
+        return 1
+    print("hostile input: all checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
