@@ -202,7 +202,10 @@ Classification run_case(const Case& k, Rng& g) {
   const Verdict v = relpos::decide_position(e, p);
   CHECK(v.position == c.position);
   CHECK(v.small == c.small);
-  if (c.sign_disc_f == 0) CHECK(c.stage == relpos::Stage::ExactRoots);  // a zero is never certified by a filter
+  // A zero is never certified by a float filter, only by an exact stage (GMP roots or the exact
+  // multiple-root witness on machine integers).
+  if (c.sign_disc_f == 0)
+    CHECK((c.stage == relpos::Stage::ExactRoots || c.stage == relpos::Stage::MultipleRootWitness));
   ++stats().by_position[static_cast<int>(c.position)];
 
   check_independent(e, p, c);
