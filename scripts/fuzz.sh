@@ -10,7 +10,8 @@ cd "$(dirname "$0")/.."
 SECONDS_PER=${1:-60}
 
 # What the library needs (as in scripts/setup.sh) plus clang and its libFuzzer runtime.
-PACKAGES=(clang libclang-rt-14-dev make cmake libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev nlohmann-json3-dev)
+PACKAGES=(clang libclang-rt-14-dev make cmake libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev nlohmann-json3-dev
+          libflint-dev)
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
