@@ -412,7 +412,10 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
   expect(c.sign_disc_f == x.sign_disc_f && c.sign_disc_ftilde == x.sign_disc_ftilde,
          what + ": Disc signs differ from classify_exact");
   expect(relpos::classify(e, p, relpos::Evidence::Minimal).position == c.position, what + ": Minimal differs");
-  if (c.sign_disc_f == 0) expect(c.stage == relpos::Stage::ExactRoots, what + ": Disc(f) = 0 decided by a filter");
+  // A zero is certified only by an exact stage: GMP roots or the machine-integer multiple-root witness.
+  if (c.sign_disc_f == 0)
+    expect(c.stage == relpos::Stage::ExactRoots || c.stage == relpos::Stage::MultipleRootWitness,
+           what + ": Disc(f) = 0 decided by a filter");
   // Beyond smallness only E and TE are claimed (math.md section 6); contact only when certain.
   if (!c.small)
     expect(c.position == Position::E || c.position == Position::TE || c.position == Position::Unclassified,
