@@ -79,7 +79,11 @@ inline void check_numbers(const std::uint8_t* data, std::size_t size) {
     expect(std::strlen(e.what()) > 0, "parse_rational: empty error message");
   }
   if (parsed) {
-    expect(relpos::parse_rational(relpos::to_string(q)) == q, "to_string does not round-trip: " + text);
+    // The limits are on text, so another notation of an accepted value can exceed them:
+    // 2.2e-10883 is 18 characters, its fraction over 10000 (fuzz/regressions/numbers/README.md).
+    const std::string exact = relpos::to_string(q);
+    if (exact.size() <= relpos::kMaxNumberChars)
+      expect(relpos::parse_rational(exact) == q, "to_string does not round-trip: " + text);
     for (int digits : {1, 12, 40}) {
       const std::string d = relpos::to_decimal(q, digits);
       Rational back;
