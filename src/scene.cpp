@@ -15,24 +15,16 @@
 
 namespace relpos {
 
+// SceneStage is the two early-outs followed by the classifier's stages in the classifier's order,
+// so names and the mapping come from Stage itself.
+static_assert(static_cast<int>(SceneStage::StaticDouble) == 2 + static_cast<int>(Stage::StaticDouble) &&
+                  static_cast<int>(SceneStage::ExactRoots) == 2 + static_cast<int>(Stage::ExactRoots),
+              "SceneStage must list the classifier stages in the order of Stage, after the two early-outs");
+
 std::string to_string(SceneStage s) {
-  switch (s) {
-    case SceneStage::InsideCertificate:
-      return "inside-certificate";
-    case SceneStage::OutsideCertificate:
-      return "outside-certificate";
-    case SceneStage::StaticDouble:
-      return "static-double";
-    case SceneStage::MultipleRootWitness:
-      return "multiple-root-witness";
-    case SceneStage::Interval:
-      return "interval";
-    case SceneStage::ExactSigns:
-      return "exact-signs";
-    case SceneStage::ExactRoots:
-      return "exact-roots";
-  }
-  return "?";
+  if (s == SceneStage::InsideCertificate) return "inside-certificate";
+  if (s == SceneStage::OutsideCertificate) return "outside-certificate";
+  return to_string(static_cast<Stage>(static_cast<int>(s) - 2));
 }
 
 SceneVerdict scene_verdict(const Verdict& v) {
@@ -40,23 +32,7 @@ SceneVerdict scene_verdict(const Verdict& v) {
   out.position = v.position;
   out.rule = v.rule;
   out.contact = v.contact;
-  switch (v.stage) {
-    case Stage::StaticDouble:
-      out.stage = SceneStage::StaticDouble;
-      break;
-    case Stage::MultipleRootWitness:
-      out.stage = SceneStage::MultipleRootWitness;
-      break;
-    case Stage::Interval:
-      out.stage = SceneStage::Interval;
-      break;
-    case Stage::ExactSigns:
-      out.stage = SceneStage::ExactSigns;
-      break;
-    case Stage::ExactRoots:
-      out.stage = SceneStage::ExactRoots;
-      break;
-  }
+  out.stage = static_cast<SceneStage>(2 + static_cast<int>(v.stage));
   return out;
 }
 
