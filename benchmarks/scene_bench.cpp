@@ -193,16 +193,16 @@ int main(int argc, char** argv) {
   // Where the per-pair time goes: by the stage of decide_position that decided.
   std::ostringstream by_stage_json;
   {
-    std::vector<std::vector<double>> by(4);
+    std::vector<std::vector<double>> by(kStageCount);
     for (std::size_t i = 0; i < n; ++i) by[static_cast<std::size_t>(pair_verdict[i].stage)].push_back(pair_ns[i]);
-    const char* names[4] = {"static-double", "interval", "exact-signs", "exact-roots"};
-    for (std::size_t s = 0; s < 4; ++s) {
+    for (std::size_t s = 0; s < kStageCount; ++s) {
+      const std::string name = to_string(static_cast<Stage>(s));
       const double sum = std::accumulate(by[s].begin(), by[s].end(), 0.0);
       const double mean = by[s].empty() ? 0.0 : sum / static_cast<double>(by[s].size());
-      std::printf("  decided by %-13s %8zu pairs (%6.3f %%): median %8.0f ns, mean %8.0f ns, %5.1f %% of the time\n",
-                  names[s], by[s].size(), 100.0 * static_cast<double>(by[s].size()) / static_cast<double>(n),
+      std::printf("  decided by %-21s %8zu pairs (%6.3f %%): median %8.0f ns, mean %8.0f ns, %5.1f %% of the time\n",
+                  name.c_str(), by[s].size(), 100.0 * static_cast<double>(by[s].size()) / static_cast<double>(n),
                   median(by[s]), mean, 100.0 * sum / (pair_mean * static_cast<double>(n)));
-      by_stage_json << (s ? ", " : "") << "\"" << names[s] << "\": {\"pairs\": " << by[s].size()
+      by_stage_json << (s ? ", " : "") << "\"" << name << "\": {\"pairs\": " << by[s].size()
                     << ", \"median_ns\": " << median(by[s]) << ", \"mean_ns\": " << mean << "}";
     }
   }

@@ -10,6 +10,7 @@
 // return identical positions on every input.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +39,8 @@ enum class Stage {
   ExactSigns,           ///< exact integer signs of the same polynomials
   ExactRoots,           ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
 };
+/// Number of stages (tables indexed by Stage use this, so a new stage cannot be forgotten).
+inline constexpr std::size_t kStageCount = static_cast<std::size_t>(Stage::ExactRoots) + 1;
 std::string to_string(Stage s);
 
 /// The rule that decided (describe() gives the sentence).
