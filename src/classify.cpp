@@ -10,6 +10,7 @@
 #endif
 
 #include "relpos/multiple_roots.hpp"
+#include "relpos/semi_static_filter.hpp"
 #include "relpos/smallness.hpp"
 #include "relpos/static_filter.hpp"
 #include "relpos/sturm.hpp"
@@ -65,6 +66,8 @@ std::string to_string(Stage s) {
   switch (s) {
     case Stage::StaticDouble:
       return "static-double";
+    case Stage::SemiStaticDouble:
+      return "semi-static-double";
     case Stage::MultipleRootWitness:
       return "multiple-root-witness";
     case Stage::Interval:
@@ -263,6 +266,20 @@ bool decide_from_signs(const DecisionSigns& d, Verdict& v) {
   return true;
 }
 
+/// Keep every sign one filter certified: a sign certain in `more` replaces an uncertain one in `d`
+/// (two certified signs of the same quantity never disagree).
+void merge_certain(DecisionSigns& d, const DecisionSigns& more) {
+  auto take = [](USign& x, const USign& y) {
+    if (!CGAL::is_certain(x)) x = y;
+  };
+  for (int i = 0; i < 5; ++i) take(d.quartic.f[i], more.quartic.f[i]);
+  for (int i = 0; i < 3; ++i) take(d.quartic.g2[i], more.quartic.g2[i]);
+  for (int i = 0; i < 2; ++i) take(d.quartic.g1[i], more.quartic.g1[i]);
+  take(d.quartic.g0, more.quartic.g0);
+  take(d.vertex, more.vertex);
+  take(d.graeffe, more.graeffe);
+}
+
 /// Decision from exact root facts (Disc(f) = 0 or a defective sequence) and the rho comparison.
 void decide_from_facts(const RootFacts& x, int rho_vs_one, Verdict& v) {
   v.real_roots = static_cast<signed char>(x.real);
@@ -314,11 +331,16 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   if (use_filter && e.doubles() && p.doubles()) {
     v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
     DecisionSigns d;                // uncertain unless the inputs are in the filter's range
-    // The static bounds assume round-to-nearest; a caller inside an upward-rounding block (CGAL
+    // Both double stages assume round-to-nearest; a caller inside an upward-rounding block (CGAL
     // interval code) gets the interval stage instead.
-    if (e.filter_doubles() && p.filter_doubles() && rounding_to_nearest())
-      d = static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles());
+    const bool in_range = e.filter_doubles() && p.filter_doubles() && rounding_to_nearest();
+    if (in_range) d = static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles());
     if (decide_from_signs(d, v)) return v;
+    if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
+      v.stage = Stage::SemiStaticDouble;
+      merge_certain(d, semi_static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles()));
+      if (decide_from_signs(d, v)) return v;
+    }
     const auto disc = detail::certain(d.quartic.g0);
     if (!disc || *disc == 0) {  // stage 1b: a witness of Disc(f) = 0 on machine integers
       v.stage = Stage::MultipleRootWitness;

@@ -429,6 +429,8 @@ std::string stage_meaning(Stage s) {
   switch (s) {
     case Stage::StaticDouble:
       return "all signs certified in double arithmetic with static error bounds";
+    case Stage::SemiStaticDouble:
+      return "all signs certified in double arithmetic with error bounds from the operands' magnitudes";
     case Stage::MultipleRootWitness:
       return "Disc(f) = 0 certified by exact rational multiple roots of f (machine integers)";
     case Stage::Interval:

@@ -34,6 +34,7 @@ std::string to_string(Position p);
 /// Which arithmetic settled the answer.
 enum class Stage {
   StaticDouble,         ///< double arithmetic with static error bounds (inputs that are exact doubles)
+  SemiStaticDouble,     ///< double arithmetic with error bounds from the operands' magnitudes
   MultipleRootWitness,  ///< Disc(f) = 0 certified by exact rational multiple roots, machine integers
   Interval,             ///< all signs certified by interval arithmetic
   ExactSigns,           ///< exact integer signs of the same polynomials

@@ -159,14 +159,16 @@ enum class SceneStage : unsigned char {
   InsideCertificate,    ///< early-out: P < 0 on the ellipsoid (I, or unclassified when rho > 1)
   OutsideCertificate,   ///< early-out: P > 0 on the ellipsoid (E)
   StaticDouble,         ///< decide_position, stage 1
+  SemiStaticDouble,     ///< decide_position, stage 1'
   MultipleRootWitness,  ///< decide_position, stage 1b
   Interval,             ///< decide_position, stage 2
   ExactSigns,           ///< decide_position, stage 3
   ExactRoots,           ///< decide_position, stage 4
 };
-inline constexpr std::size_t kSceneStageCount = 7;
+inline constexpr std::size_t kSceneStageCount = 8;
 inline constexpr std::size_t kPositionCount = 6;  ///< I, TI, C, TE, E, Unclassified
-/// "inside-certificate", "outside-certificate", "static-double", "multiple-root-witness", "interval",
+/// "inside-certificate", "outside-certificate", "static-double", "semi-static-double",
+/// "multiple-root-witness", "interval",
 /// "exact-signs", "exact-roots".
 std::string to_string(SceneStage s);
 

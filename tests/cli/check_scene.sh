@@ -121,7 +121,7 @@ for (number, answer, ident), out in zip(expected, outputs):
         problems.append(f"line {number}: the error line names line {got.get('line')}")
     if "error" not in got:
         counts[position] = counts.get(position, 0) + 1
-        if got.get("stage") not in ("inside-certificate", "outside-certificate", "static-double", "multiple-root-witness", "interval",
+        if got.get("stage") not in ("inside-certificate", "outside-certificate", "static-double", "semi-static-double", "multiple-root-witness", "interval",
                                     "exact-signs", "exact-roots"):
             problems.append(f"line {number}: unknown stage {got.get('stage')}")
 with open(err_path, encoding="utf-8") as f:

@@ -1,0 +1,25 @@
+// Stage 1' of classify(): the decision signs in double arithmetic once more, now with an error
+// bound computed from the actual magnitudes of the operands (CGAL's "semi-static" filters,
+// Shewchuk's error bound from the permanent) instead of the a-priori bound of stage 1.
+//
+// Stage 1's bound is derived for the worst entries in [-1, 1], so it fails when a decision quantity
+// is small *relative to that worst case* although far from zero relative to its own terms -- e.g. a
+// small ellipsoid deep inside the cup, where the quartic's roots cluster around the special roots
+// of s and Disc(f) is tiny in absolute terms. The same generic formulas evaluated on RunningBound
+// (running_bound.hpp: value, magnitude program, operation count; round-to-nearest, no contraction)
+// certify most of these at about twice the cost of stage 1, without the rounding-mode switch and
+// the four-products-per-multiplication of interval arithmetic (stage 2).
+#pragma once
+
+#include "relpos/quadric.hpp"
+#include "relpos/static_filter.hpp"
+
+namespace relpos {
+
+/// Certified signs of every decision quantity (as static_filter_signs) for matrices normalized by
+/// power_of_two_normalized() (Ellipsoid::filter_doubles(), Paraboloid::filter_doubles()).
+/// Uncertain where the running bound does not separate a value from zero. Requires the rounding
+/// mode to be round-to-nearest (the caller checks it).
+DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e);
+
+}  // namespace relpos

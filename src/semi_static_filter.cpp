@@ -1,0 +1,136 @@
+#include "relpos/semi_static_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "relpos/running_bound.hpp"
+#include "relpos/smallness.hpp"
+
+namespace relpos {
+namespace {
+
+/// The value and magnitude lanes of RunningBound as one SSE register: a product is one mulpd, a sum
+/// one addpd, a difference one mulpd + addpd. The operation count, RunningBound's third component,
+/// does not depend on the values, so it is computed once (counts() below, by running the very same
+/// program on RunningBound) instead of on every pair. The magnitude floor of RunningBound is not
+/// needed: evaluate() refuses inputs whose non-zero magnitudes could underflow (see its guards), so
+/// every non-zero magnitude product stays above 2^-1000 and a value's underflow error, at most
+/// 2^-1075 < u 2^-1000, is absorbed by the count as in RunningBound.
+typedef double V2 __attribute__((vector_size(16)));  // {value, magnitude}
+
+struct Lanes {
+  V2 x;
+  Lanes(double c = 0) : x{c, std::fabs(c)} {}  // NOLINT: exact inputs and constants, like RunningBound
+  explicit Lanes(V2 y) : x(y) {}
+  double value() const { return x[0]; }
+  double magnitude() const { return x[1]; }
+  friend Lanes operator+(const Lanes& a, const Lanes& b) { return Lanes(a.x + b.x); }
+  friend Lanes operator-(const Lanes& a, const Lanes& b) {
+    const V2 flip = {-1.0, 1.0};  // negate the value lane only: magnitudes add
+    return Lanes(a.x + b.x * flip);
+  }
+  friend Lanes operator-(const Lanes& a) {
+    const V2 flip = {-1.0, 1.0};
+    return Lanes(a.x * flip);
+  }
+  friend Lanes operator*(const Lanes& a, const Lanes& b) { return Lanes(a.x * b.x); }
+  Lanes times_power_of_two(double two_k) const { return Lanes(x * two_k); }
+};
+
+template <class NT>
+struct View {
+  std::array<NT, 16> a;
+  explicit View(const DoubleMatrix4& m) {
+    for (std::size_t i = 0; i < 16; ++i) a[i] = NT(m[i]);  // exact inputs
+  }
+  const NT& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+};
+
+constexpr int kQuantities = 13;           // f0..f4, g2[0..2], g1[0..1], g0, vertex, graeffe
+constexpr double kEntryFloor = 0x1p-60;   // smallest non-zero |entry| accepted (degree 4: >= 2^-240)
+constexpr double kCoeffFloor = 0x1p-160;  // smallest non-zero scaled |f_i|, |s_i| (degree 6: >= 2^-960)
+
+/// The decision quantities in NT. Returns false (nothing certified) when a guard fails: an entry or
+/// a scaled coefficient of non-zero magnitude below its floor (the no-underflow argument above).
+/// The powers of two are data-dependent, but every scaling adds the same count whatever its value,
+/// so the counts stay value-independent.
+template <class NT>
+bool evaluate(const DoubleMatrix4& pn, const DoubleMatrix4& en, NT out[kQuantities]) {
+  for (const DoubleMatrix4* m : {&pn, &en})
+    for (double x : *m)
+      if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return false;
+  const View<NT> p(pn), e(en);
+  Quartic<NT> f = characteristic_polynomial<NT>(p, e);
+  Quadratic<NT> s = special_polynomial<NT>(p, e);
+  // Balance the quartic (lambda = 2^t mu, |f4| 2^(4t) ~ |f0|) and bring f and s near 1, by powers of
+  // two: every decision quantity is isobaric and homogeneous in f and in s, so its value and its
+  // magnitude scale alike; this only keeps the degree-6 products clear of under- and overflow.
+  double step = 1;
+  if (f[0].value() != 0 && f[4].value() != 0)
+    step = std::ldexp(1.0, (std::ilogb(f[0].value()) - std::ilogb(f[4].value())) / 4);
+  double w = 1;
+  for (std::size_t i = 0; i < 5; ++i, w *= step) {
+    f[i] = f[i].times_power_of_two(w);
+    if (i < 3) s[i] = s[i].times_power_of_two(w);
+  }
+  auto into_unit = [](NT* c, std::size_t n) {
+    double mx = 0;
+    for (std::size_t i = 0; i < n; ++i) mx = std::max(mx, c[i].magnitude());
+    const double k = (mx > 0 && std::isfinite(mx)) ? std::ldexp(1.0, -std::ilogb(mx) - 1) : 1.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      c[i] = c[i].times_power_of_two(k);
+      const double a = c[i].magnitude();
+      if (a != 0 && !(a >= kCoeffFloor && a <= 1)) return false;
+    }
+    return true;
+  };
+  if (!into_unit(f.data(), 5) || !into_unit(s.data(), 3)) return false;
+  const SturmHabicht<NT> sh(f);
+  const SmallnessQuantities<NT> sq(f, s);
+  const NT q[kQuantities] = {f[0],     f[1],     f[2],     f[3],     f[4],      sh.g2[0],  sh.g2[1],
+                             sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
+  std::copy(q, q + kQuantities, out);
+  return true;
+}
+
+/// Operation counts of the program, from RunningBound on any inputs that pass the guards.
+const std::array<int, kQuantities>& counts() {
+  static const std::array<int, kQuantities> c = [] {
+    DoubleMatrix4 one;
+    one.fill(0.5);
+    RunningBound q[kQuantities];
+    std::array<int, kQuantities> r{};
+    if (!evaluate(one, one, q)) {  // cannot happen for these inputs; if it did, certify nothing
+      r.fill(1 << 20);
+      return r;
+    }
+    for (int i = 0; i < kQuantities; ++i) r[static_cast<std::size_t>(i)] = q[i].count();
+    return r;
+  }();
+  return c;
+}
+
+USign certified(const Lanes& x, int count) {
+  const int s = RunningBound::certain_sign(x.value(), x.magnitude(), count);
+  return s > 0 ? USign(CGAL::POSITIVE) : s < 0 ? USign(CGAL::NEGATIVE) : USign::indeterminate();
+}
+
+}  // namespace
+
+DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
+  const std::array<int, kQuantities>& d = counts();
+  Lanes q[kQuantities];
+  DecisionSigns out;
+  if (!evaluate(pn, en, q)) return out;  // uncertain
+  USign c[kQuantities];
+  for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], d[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < 5; ++i) out.quartic.f[i] = c[i];
+  for (int i = 0; i < 3; ++i) out.quartic.g2[i] = c[5 + i];
+  for (int i = 0; i < 2; ++i) out.quartic.g1[i] = c[8 + i];
+  out.quartic.g0 = c[10];
+  out.vertex = c[11];
+  out.graeffe = c[12];
+  return out;
+}
+
+}  // namespace relpos
