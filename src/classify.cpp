@@ -178,7 +178,7 @@ MatrixOf<Interval> to_intervals(const Matrix4& m) {
 }
 
 /// Both matrices times the same positive integer (lcm of all denominators): f and s are scaled by
-/// positive constants and keep their roots.
+/// positive constants and keep their roots. The form of the reported evidence (exact f, s, roots).
 std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, const Matrix4& e, Integer& scale) {
   Integer l(1);
   for (const auto* m : {&p, &e})
@@ -190,6 +190,36 @@ std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, co
     ei.a[i] = e.a[i].numerator() * (l / e.a[i].denominator());
   }
   return {pi, ei};
+}
+
+/// The smallest integer form the *decisions* need (not the evidence: the roots move). With
+/// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive
+/// alpha, beta clearing the remaining denominators of D E D and D P D:
+///   det(lambda beta DPD + alpha DED) = t^2 alpha^4 f(beta lambda / alpha),
+///   det(lambda beta A + alpha M)     = alpha^3 s(beta lambda / alpha),
+/// so every root of f and s is multiplied by the same alpha / beta > 0: signs, multiplicities,
+/// common roots and rho (invariant under congruences and positive scalings, math.md section 1) are
+/// unchanged. A centre with 50-bit denominators then costs entries of about 100 bits, not the
+/// 200 to 400 bits of one common lcm, and every exact sign after it is that much cheaper.
+std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix4& p, const Matrix4& e) {
+  Integer t(1);
+  for (const auto* m : {&p, &e})
+    for (int i = 0; i < 3; ++i) mpz_lcm(t.mpz(), t.mpz(), (*m)(i, 3).denominator().mpz());
+  const Rational tq(t), t2(t * t);
+  auto form = [&](const Matrix4& m) {
+    Matrix4 c;
+    Integer l(1);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const Rational& x = m(i, j);
+        c(i, j) = (i == 3 && j == 3) ? x * t2 : (i == 3 || j == 3) ? x * tq : x;
+        mpz_lcm(l.mpz(), l.mpz(), c(i, j).denominator().mpz());
+      }
+    MatrixOf<Integer> out;
+    for (std::size_t i = 0; i < 16; ++i) out.a[i] = c.a[i].numerator() * (l / c.a[i].denominator());
+    return out;
+  };
+  return {form(p), form(e)};
 }
 
 /// The signs of every decision quantity, evaluated in NT (intervals or exact integers).
@@ -312,13 +342,13 @@ bool decide_from_witness(const DoubleMatrix4& p, const DoubleMatrix4& e, const D
 }
 
 /// Exact data of a pair, computed only when an exact stage runs or full evidence is asked for.
+/// f and s in the compact integer form (to_compact_integers): roots scaled by a positive constant,
+/// so only sign and multiplicity facts may be read from them.
 struct ExactData {
-  Integer scale;
   Quartic<Integer> f;
   Quadratic<Integer> s;
-  std::optional<RootStructure> roots;
   ExactData(const Ellipsoid& e, const Paraboloid& p) {
-    auto [pz, ez] = to_integers(p.matrix(), e.matrix(), scale);
+    auto [pz, ez] = to_compact_integers(p.matrix(), e.matrix());
     f = characteristic_polynomial<Integer>(pz, ez);
     s = special_polynomial<Integer>(pz, ez);
   }
@@ -366,8 +396,7 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   if (auto facts = exact_root_facts(exact->f, exact->s)) {
     x = *facts;  // closed forms on the degree <= 2 square-free factors
   } else {       // square-free f with a defective sequence: isolate the roots
-    exact->roots = exact_root_structure(exact->f, exact->s);
-    const RootStructure& rs = *exact->roots;
+    const RootStructure rs = exact_root_structure(exact->f, exact->s);  // counts only: roots are scaled
     x.real = static_cast<int>(rs.real_roots.size());
     x.negative = rs.negative();
     x.positive = rs.positive();
@@ -427,10 +456,13 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   out.negative_roots = v.negative_roots;
   out.positive_roots = v.positive_roots;
   out.nonreal_roots = v.nonreal_roots;
-  if (evidence == Evidence::Full) {
-    if (!exact) exact.emplace(e, p);
-    if (!exact->roots) exact->roots = exact_root_structure(exact->f, exact->s);
-    fill_full_evidence(exact->f, exact->s, exact->scale, out, &*exact->roots);
+  if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E): the common-lcm form
+    Integer scale;
+    const auto [pz, ez] = to_integers(p.matrix(), e.matrix(), scale);
+    const Quartic<Integer> f = characteristic_polynomial<Integer>(pz, ez);
+    const Quadratic<Integer> s = special_polynomial<Integer>(pz, ez);
+    const RootStructure rs = exact_root_structure(f, s);
+    fill_full_evidence(f, s, scale, out, &rs);
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "relpos/detail/small_factor.hpp"
+#include "relpos/detail/sturm_habicht_quartic.hpp"
 
 namespace relpos {
 namespace {
@@ -138,7 +139,68 @@ SmallCount count_small(const Poly& h) {
 
 }  // namespace
 
+std::optional<RootFacts> single_double_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s) {
+  if (CGAL::is_zero(f[4]) || CGAL::is_zero(f[0])) return std::nullopt;
+  Integer g2[3], g1[2], g0[1];
+  detail::sturm_habicht_quartic(f[0], f[1], f[2], f[3], f[4], g2, g1, g0);
+  // Subresultant theorem: deg gcd(f, f') is the first j with a non-zero principal coefficient
+  // (g0 = Disc(f), then g1[0]). Disc(f) = 0 and g1[0] != 0 make gcd(f, f') = StHa_1, linear: f has
+  // exactly one multiple root, double and rational, and the other two roots are simple.
+  if (!CGAL::is_zero(g0[0]) || CGAL::is_zero(g1[0])) return std::nullopt;
+  const Rational l0(-g1[1], g1[0]);
+  // h = f / (lambda - l0)^2 by two synthetic divisions over Q; both remainders are zero.
+  std::array<Rational, 5> c;
+  for (std::size_t i = 0; i < 5; ++i) c[i] = Rational(f[i]);
+  std::array<Rational, 3> h;
+  for (int pass = 0; pass < 2; ++pass) {
+    const int deg = 4 - pass;
+    std::array<Rational, 5> q{};
+    Rational carry(0);
+    for (int i = deg; i >= 1; --i) {
+      carry = c[static_cast<std::size_t>(i)] + carry * l0;
+      q[static_cast<std::size_t>(i - 1)] = carry;
+    }
+    if (!CGAL::is_zero(c[0] + carry * l0)) return std::nullopt;  // cannot happen (theorem above)
+    c = q;
+  }
+  for (std::size_t i = 0; i < 3; ++i) h[i] = c[i];
+  const Rational s0(s[0]), s1(s[1]), s2(s[2]);
+  // Multiplicity of l0 in s (s has degree 2, s2 = det M > 0).
+  int ms = 0;
+  if (CGAL::is_zero((s2 * l0 + s1) * l0 + s0)) ms = CGAL::is_zero(2 * s2 * l0 + s1) ? 2 : 1;
+  const int sign_l0 = CGAL::sign(l0);
+  RootFacts r;
+  (sign_l0 < 0 ? r.negative : r.positive) += 1;
+  const bool tangent = 2 - ms >= 2;  // math.md section 3: mult_f - mult_s >= 2
+  if (tangent) (sign_l0 < 0 ? r.tangent_negative : r.tangent_positive) += 1;
+  const int sign_disc_h = CGAL::sign(h[1] * h[1] - 4 * h[2] * h[0]);  // != 0: h is square-free
+  const SmallCount hc = detail::count_small(2, sign_disc_h, CGAL::sign(h[2]), CGAL::sign(h[1]), CGAL::sign(h[0]));
+  r.negative += hc.negative;
+  r.positive += hc.positive;
+  r.real = r.negative + r.positive;
+  r.nonreal = sign_disc_h < 0 ? 2 : 0;
+  r.sign_disc_f = 0;
+  // f~ keeps the non-real pair (s has real roots only); square-free unless tangent.
+  r.sign_disc_ftilde = tangent ? 0 : ((r.nonreal / 2) % 2 ? -1 : 1);
+  // deg f~ = 4 - deg gcd(f, s): min(2, ms) at l0, plus the roots h shares with s / (lambda - l0)^ms.
+  int shared = 0;
+  if (ms == 1) {  // s = s2 (lambda - l0)(lambda - m), m = -s1/s2 - l0
+    const Rational m = -s1 / s2 - l0;
+    shared = CGAL::is_zero((h[2] * m + h[1]) * m + h[0]) ? 1 : 0;
+  } else if (ms == 0) {  // Res(h, s) = 0 iff a common root; proportional iff both
+    const Rational u = h[2] * s0 - h[0] * s2, v = h[2] * s1 - h[1] * s2, w = h[1] * s0 - h[0] * s1;
+    if (CGAL::is_zero(u * u - v * w)) shared = (CGAL::is_zero(u) && CGAL::is_zero(v)) ? 2 : 1;
+  }
+  r.degree_ftilde = 4 - std::min(2, ms) - shared;
+  return r;
+}
+
 std::optional<RootFacts> exact_root_facts(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
+  if (auto r = single_double_root_facts(fc, sc)) return r;  // the common case, without gcds
+  return exact_root_facts_by_factorisation(fc, sc);
+}
+
+std::optional<RootFacts> exact_root_facts_by_factorisation(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
   const Poly f = make_poly(fc), s = make_poly(sc);
   std::vector<std::pair<Poly, int>> factors;
   CGAL::square_free_factorize(f, std::back_inserter(factors));

@@ -52,7 +52,12 @@ struct Fast {
   static Fast of(const RB& x) { return {x.value(), x.magnitude(), 0}; }
   friend Fast operator+(const Fast& x, const Fast& y) { return {x.v + y.v, x.a + y.a, 0}; }
   friend Fast operator-(const Fast& x, const Fast& y) { return {x.v - y.v, x.a + y.a, 0}; }
-  friend Fast operator*(const Fast& x, const Fast& y) { return {x.v * y.v, std::max(x.a * y.a, 0x1p-1022), 0}; }
+  friend Fast operator*(const Fast& x, const Fast& y) {
+    // As RunningBound: a zero magnitude is an exact zero and stays zero (flooring it would make the
+    // next products underflow, and every underflow costs a microcode assist).
+    const double m = x.a * y.a;
+    return {x.v * y.v, (x.a == 0 || y.a == 0) ? 0.0 : std::max(m, 0x1p-1022), 0};
+  }
   friend Fast operator-(const Fast& x) { return {-x.v, x.a, 0}; }
 };
 

@@ -62,6 +62,15 @@ struct RootFacts {
 /// (defective Sturm-Habicht sequence with Disc(f) != 0): use exact_root_structure() then.
 std::optional<RootFacts> exact_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 
+/// The fast case of exact_root_facts(): Disc(f) = 0 with a non-zero linear subresultant, i.e. exactly
+/// one multiple root, double (hence rational: the root of the linear gcd(f, f')). Its facts follow
+/// in closed form from that root and the square-free cofactor h = f / (lambda - l0)^2, without any
+/// polynomial gcd. nullopt in every other case.
+std::optional<RootFacts> single_double_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s);
+
+/// The general case: gcd(f, s) and square-free factorisations (CGAL). nullopt when f is square-free.
+std::optional<RootFacts> exact_root_facts_by_factorisation(const Quartic<Integer>& f, const Quadratic<Integer>& s);
+
 /// Exact root structure of f (integer coefficients, f(0) != 0) relative to s.
 RootStructure exact_root_structure(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 
