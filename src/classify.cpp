@@ -10,6 +10,7 @@
 #endif
 
 #include "relpos/multiple_roots.hpp"
+#include "relpos/pooled_integer.hpp"
 #include "relpos/semi_static_filter.hpp"
 #include "relpos/smallness.hpp"
 #include "relpos/static_filter.hpp"
@@ -343,15 +344,25 @@ bool decide_from_witness(const DoubleMatrix4& p, const DoubleMatrix4& e, const D
 
 /// Exact data of a pair, computed only when an exact stage runs or full evidence is asked for.
 /// f and s in the compact integer form (to_compact_integers): roots scaled by a positive constant,
-/// so only sign and multiplicity facts may be read from them.
+/// so only sign and multiplicity facts may be read from them. Evaluated on PooledInteger (no heap
+/// traffic for the temporaries of the generic formulas); as Integer for the factorisation stage.
 struct ExactData {
-  Quartic<Integer> f;
-  Quadratic<Integer> s;
+  Quartic<PooledInteger> f;
+  Quadratic<PooledInteger> s;
   ExactData(const Ellipsoid& e, const Paraboloid& p) {
-    auto [pz, ez] = to_compact_integers(p.matrix(), e.matrix());
-    f = characteristic_polynomial<Integer>(pz, ez);
-    s = special_polynomial<Integer>(pz, ez);
+    const auto [pz, ez] = to_compact_integers(p.matrix(), e.matrix());
+    MatrixOf<PooledInteger> pp, ep;
+    for (std::size_t i = 0; i < 16; ++i) {
+      pp.a[i] = PooledInteger(pz.a[i]);
+      ep.a[i] = PooledInteger(ez.a[i]);
+    }
+    f = characteristic_polynomial<PooledInteger>(pp, ep);
+    s = special_polynomial<PooledInteger>(pp, ep);
   }
+  Quartic<Integer> f_integer() const {
+    return {f[0].to_integer(), f[1].to_integer(), f[2].to_integer(), f[3].to_integer(), f[4].to_integer()};
+  }
+  Quadratic<Integer> s_integer() const { return {s[0].to_integer(), s[1].to_integer(), s[2].to_integer()}; }
 };
 
 /// The whole filter -> exact policy in one place: each stage certifies what it can, the next one
@@ -393,10 +404,12 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   // Stage 4: Disc(f) = 0 or a defective Sturm-Habicht sequence: exact gcd and factorisation.
   v.stage = Stage::ExactRoots;
   RootFacts x;
-  if (auto facts = exact_root_facts(exact->f, exact->s)) {
+  const Quartic<Integer> fi = exact->f_integer();
+  const Quadratic<Integer> si = exact->s_integer();
+  if (auto facts = exact_root_facts(fi, si)) {
     x = *facts;  // closed forms on the degree <= 2 square-free factors
   } else {       // square-free f with a defective sequence: isolate the roots
-    const RootStructure rs = exact_root_structure(exact->f, exact->s);  // counts only: roots are scaled
+    const RootStructure rs = exact_root_structure(fi, si);  // counts only: the roots are scaled
     x.real = static_cast<int>(rs.real_roots.size());
     x.negative = rs.negative();
     x.positive = rs.positive();

@@ -1,0 +1,148 @@
+// PooledInteger: an exact integer (GMP mpz) for the exact-sign stage whose temporaries cost no heap
+// allocation once the pool is warm.
+//
+// Why by hand: the generic formulas (pencil.hpp, sturm.hpp, smallness.hpp) create a few hundred
+// temporaries per pair. With CGAL::Gmpz each one allocates a reference-counted handle and its limbs
+// and frees them again; on the 100- to 3000-bit numbers of the exact stage that malloc/free traffic,
+// not the arithmetic, was most of the time (measured: about 40 % in malloc/free alone, more in a
+// process whose heap is fragmented by a million stored bodies). GMP offers no allocation-free
+// temporaries, and setting its memory functions would change them for the whole process. Here
+// every PooledInteger takes an initialised mpz_t from a thread-local free list and gives it back on
+// destruction, limbs included, so a warm pool serves the whole evaluation without malloc.
+//
+// Value semantics, ring operations and sign only: what the generic formulas need. Objects must be
+// destroyed on the thread that created them (the exact stage uses them inside one call).
+#pragma once
+
+#include <gmp.h>
+
+#include <utility>
+#include <vector>
+
+#include "relpos/numbers.hpp"
+#include "relpos/sturm.hpp"
+
+namespace relpos {
+
+class PooledInteger {
+ public:
+  PooledInteger() : z_(take()) { mpz_set_ui(z_, 0); }
+  PooledInteger(long v) : z_(take()) { mpz_set_si(z_, v); }      // NOLINT: integer constants of the formulas
+  PooledInteger(int v) : PooledInteger(static_cast<long>(v)) {}  // NOLINT
+  explicit PooledInteger(const Integer& v) : z_(take()) { mpz_set(z_, v.mpz()); }
+  PooledInteger(const PooledInteger& o) : z_(take()) { mpz_set(z_, o.z_); }
+  PooledInteger(PooledInteger&& o) noexcept : z_(std::exchange(o.z_, nullptr)) {}
+  PooledInteger& operator=(const PooledInteger& o) {
+    if (this == &o) return *this;
+    if (!z_) z_ = take();  // assigning to a moved-from object
+    mpz_set(z_, o.z_);
+    return *this;
+  }
+  PooledInteger& operator=(PooledInteger&& o) noexcept {
+    std::swap(z_, o.z_);  // o gives back our old mpz when it dies
+    return *this;
+  }
+  ~PooledInteger() {
+    if (z_) give(z_);
+  }
+
+  Integer to_integer() const {
+    Integer r;
+    mpz_set(r.mpz(), z_);
+    return r;
+  }
+  int sign() const { return mpz_sgn(z_); }
+
+  friend PooledInteger operator+(const PooledInteger& a, const PooledInteger& b) {
+    PooledInteger r(Raw{});
+    mpz_add(r.z_, a.z_, b.z_);
+    return r;
+  }
+  friend PooledInteger operator-(const PooledInteger& a, const PooledInteger& b) {
+    PooledInteger r(Raw{});
+    mpz_sub(r.z_, a.z_, b.z_);
+    return r;
+  }
+  friend PooledInteger operator*(const PooledInteger& a, const PooledInteger& b) {
+    PooledInteger r(Raw{});
+    mpz_mul(r.z_, a.z_, b.z_);
+    return r;
+  }
+  friend PooledInteger operator-(const PooledInteger& a) {
+    PooledInteger r(Raw{});
+    mpz_neg(r.z_, a.z_);
+    return r;
+  }
+  // Rvalue overloads reuse a dying operand's mpz as the result (most temporaries are rvalues).
+  friend PooledInteger operator+(PooledInteger&& a, const PooledInteger& b) {
+    mpz_add(a.z_, a.z_, b.z_);
+    return std::move(a);
+  }
+  friend PooledInteger operator-(PooledInteger&& a, const PooledInteger& b) {
+    mpz_sub(a.z_, a.z_, b.z_);
+    return std::move(a);
+  }
+  friend PooledInteger operator*(PooledInteger&& a, const PooledInteger& b) {
+    mpz_mul(a.z_, a.z_, b.z_);
+    return std::move(a);
+  }
+  friend PooledInteger operator+(const PooledInteger& a, PooledInteger&& b) {
+    mpz_add(b.z_, a.z_, b.z_);
+    return std::move(b);
+  }
+  friend PooledInteger operator-(const PooledInteger& a, PooledInteger&& b) {
+    mpz_sub(b.z_, a.z_, b.z_);
+    return std::move(b);
+  }
+  friend PooledInteger operator*(const PooledInteger& a, PooledInteger&& b) {
+    mpz_mul(b.z_, a.z_, b.z_);
+    return std::move(b);
+  }
+  friend PooledInteger operator+(PooledInteger&& a, PooledInteger&& b) { return std::move(a) + std::as_const(b); }
+  friend PooledInteger operator-(PooledInteger&& a, PooledInteger&& b) { return std::move(a) - std::as_const(b); }
+  friend PooledInteger operator*(PooledInteger&& a, PooledInteger&& b) { return std::move(a) * std::as_const(b); }
+  friend PooledInteger operator-(PooledInteger&& a) {
+    mpz_neg(a.z_, a.z_);
+    return std::move(a);
+  }
+
+ private:
+  struct Raw {};
+  explicit PooledInteger(Raw) : z_(take()) {}  // value unspecified: the caller overwrites it
+
+  /// The thread's free list of initialised mpz_t (their limbs kept), cleared at thread exit.
+  struct Pool {
+    std::vector<mpz_ptr> free;
+    ~Pool() {
+      for (mpz_ptr z : free) {
+        mpz_clear(z);
+        delete z;
+      }
+    }
+  };
+  static Pool& pool() {
+    thread_local Pool p;
+    return p;
+  }
+  static mpz_ptr take() {
+    Pool& p = pool();
+    if (p.free.empty()) {
+      mpz_ptr z = new __mpz_struct;
+      mpz_init(z);
+      return z;
+    }
+    mpz_ptr z = p.free.back();
+    p.free.pop_back();
+    return z;
+  }
+  static void give(mpz_ptr z) { pool().free.push_back(z); }
+
+  mpz_ptr z_;
+};
+
+inline USign sign_of(const PooledInteger& x) {
+  const int s = x.sign();
+  return USign(s > 0 ? CGAL::POSITIVE : s < 0 ? CGAL::NEGATIVE : CGAL::ZERO);
+}
+
+}  // namespace relpos
