@@ -5,6 +5,8 @@
 #include <flint/fmpz_poly.h>
 #include <flint/fmpz_poly_factor.h>
 #include <flint/fmpz_poly_mat.h>
+#include <flint/nmod_poly.h>
+#include <flint/ulong_extras.h>
 #include <gmp.h>
 
 namespace bench {
@@ -22,7 +24,9 @@ struct Work {
   fmpz F[5], S[4];          // coefficients of f and s (S[3] = lambda^3 term, must be 0)
   fmpz N, D, A, B;          // smallness
   fmpz_poly_t f, s, g, ft;  // f, s, gcd(f, s), f~
+  nmod_poly_t fp;           // f mod a 62-bit prime (square-freeness filter)
   Work() {
+    nmod_poly_init(fp, n_nextprime(UWORD(1) << 62, 1));
     for (auto* a : {P, E})
       for (int i = 0; i < 16; ++i) fmpz_init(a + i);
     for (auto* x : {&den, &t, &u, &N, &D, &A, &B}) fmpz_init(x);
@@ -39,6 +43,7 @@ struct Work {
     for (int i = 0; i < 5; ++i) fmpz_clear(F + i);
     for (int i = 0; i < 4; ++i) fmpz_clear(S + i);
     fmpz_poly_clear(f), fmpz_poly_clear(s), fmpz_poly_clear(g), fmpz_poly_clear(ft);
+    nmod_poly_clear(fp);
   }
   Work(const Work&) = delete;
   Work& operator=(const Work&) = delete;
@@ -54,12 +59,13 @@ void clear_denominators(const Matrix4& m, fmpz* out, Work& w) {
   fmpz_one(&w.den);
   for (const auto& q : m.a) {
     fmpz_set_mpz(&w.t, mpq_denref(q.mpq()));
-    fmpz_lcm(&w.den, &w.den, &w.t);
+    if (!fmpz_equal(&w.t, &w.den) && !fmpz_is_one(&w.t)) fmpz_lcm(&w.den, &w.den, &w.t);
   }
   for (std::size_t i = 0; i < 16; ++i) {
-    fmpz_set_mpz(&w.t, mpq_denref(m.a[i].mpq()));
-    fmpz_divexact(&w.t, &w.den, &w.t);
     fmpz_set_mpz(out + i, mpq_numref(m.a[i].mpq()));
+    fmpz_set_mpz(&w.t, mpq_denref(m.a[i].mpq()));
+    if (fmpz_equal(&w.t, &w.den)) continue;
+    fmpz_divexact(&w.t, &w.den, &w.t);
     fmpz_mul(out + i, out + i, &w.t);
   }
 }
@@ -177,12 +183,16 @@ FlintAnswer flint_classify(const Matrix4& e, const Matrix4& p) {
   FlintAnswer out;
   if (!pencil(e, p, w) || fmpz_poly_length(w.f) != 5 || fmpz_is_zero(w.f->coeffs)) return out;
   RootFacts& x = out.facts;
-  x.sign_disc_f = sign_of_disc(w.f, w);
-  if (x.sign_disc_f != 0) {  // f square-free: one Sturm sequence
+  // Disc(f) != 0 is certified modulo p when p does not divide f4 (then Disc(f mod p) = Disc(f) mod
+  // p); only a zero there (Disc(f) = 0, or p | Disc(f)) pays for the exact discriminant.
+  fmpz_poly_get_nmod_poly(w.fp, w.f);
+  const bool squarefree = (nmod_poly_degree(w.fp) == 4 && nmod_poly_discriminant(w.fp) != 0) || sign_of_disc(w.f, w);
+  if (squarefree) {  // one Sturm sequence
     count_real(w.f, x.negative, x.positive);
     x.real = x.negative + x.positive;
     x.nonreal = 4 - x.real;
-    x.sign_disc_ftilde = x.sign_disc_f;  // the table reads neither this nor degree_ftilde
+    x.sign_disc_f = x.nonreal == 2 ? -1 : 1;  // (-1)^(number of non-real pairs) for square-free f
+    x.sign_disc_ftilde = x.sign_disc_f;       // the table reads neither this nor degree_ftilde
   } else {
     fmpz_poly_gcd(w.g, w.f, w.s);
     if (!fmpz_poly_divides(w.ft, w.f, w.g)) return out;
@@ -234,10 +244,11 @@ std::string flint_self_check(const Matrix4& e, const Matrix4& p) {
     }
     fmpz_poly_mat_clear(m);
   }
-  if (sign_of_disc(w.f, w) != 0) {
+  if (const int disc = sign_of_disc(w.f, w)) {
     int neg, pos;
     count_real(w.f, neg, pos);
     if (fmpz_poly_num_real_roots(w.f) != neg + pos) err += " Sturm count differs from fmpz_poly_num_real_roots;";
+    if (disc != (neg + pos == 2 ? -1 : 1)) err += " sign of Disc(f) differs from the Sturm count's;";
   }
   fmpz_poly_clear(d), fmpz_poly_clear(lin);
   return err;

@@ -7,8 +7,10 @@
 //     multiplicities, gcd(f, s) and rho);
 //   * f(lambda) = det(lambda P + E) by a Laplace expansion in fmpz 2x2 minors of the pencil, and
 //     s(lambda) = det(lambda A + M) along the first row;
-//   * Disc(f) with fmpz_poly_discriminant; when it is non-zero, the negative and positive real
-//     roots with FLINT's Sturm sequence (_fmpz_poly_num_real_roots_sturm, square-free input);
+//   * whether Disc(f) = 0: first modulo a 62-bit prime p (nmod_poly_discriminant; a non-zero residue
+//     with p not dividing f4 proves Disc(f) != 0), else exactly with fmpz_poly_discriminant; when it is
+//     non-zero, the negative and positive real roots with FLINT's Sturm sequence
+//     (_fmpz_poly_num_real_roots_sturm, square-free input), and sign Disc(f) = (-1)^(non-real pairs);
 //   * when Disc(f) = 0: gcd(f, s) (fmpz_poly_gcd), f~ = f / gcd (exact division, checked), the
 //     square-free factorisations of f and of f~ (fmpz_poly_factor_squarefree) and Sturm counts on
 //     each square-free factor: every real root fact, and the multiple real roots of f~ (tangencies);
@@ -41,7 +43,8 @@ FlintAnswer flint_classify(const relpos::Matrix4& e, const relpos::Matrix4& p);
 /// Untimed self-checks of the pipeline with other FLINT routines: f and s against
 /// fmpz_poly_mat_det of the polynomial matrices lambda P + E and lambda A + M (the lambda^3
 /// coefficient of s must vanish), and, when Disc(f) != 0, the real-root count against
-/// fmpz_poly_num_real_roots. Returns "" when every check passes, else what failed.
+/// fmpz_poly_num_real_roots and the exact sign of Disc(f) against the one read off the count.
+/// Returns "" when every check passes, else what failed.
 std::string flint_self_check(const relpos::Matrix4& e, const relpos::Matrix4& p);
 
 }  // namespace bench
