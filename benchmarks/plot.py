@@ -75,6 +75,57 @@ ax.grid(alpha=0.3)
 fig.tight_layout()
 fig.savefig(f"{out}/speed_accuracy.png", dpi=110)
 
+# (4) the FLINT reference, timed back to back with exact (GMP) and adaptive on each pair (flint.csv).
+fl = list(csv.DictReader(open(f"{out}/flint.csv")))
+trio = [("exact_ns", "exact"), ("flint_ns", "flint"), ("adaptive_ns", "adaptive")]
+fig, axes = plt.subplots(1, 3, figsize=(14, 4.5), gridspec_kw={"width_ratios": [1, 2, 2]})
+ab = [r for r in fl if r["family"] in ("a", "b")]
+for i, (col, m) in enumerate(trio):
+    axes[0].bar([j + i * 0.27 for j in range(len(ab))], [float(r[col]) for r in ab], 0.27, label=m,
+                color=colors.get(m))
+axes[0].set_xticks([j + 0.27 for j in range(len(ab))], ["(%s)" % r["family"] for r in ab])
+for ax, fam in zip(axes[1:], ["c", "c-sym"]):
+    rs = sorted((r for r in fl if r["family"] == fam), key=lambda r: -float(r["eps"]))
+    for col, m in trio:
+        ax.plot([float(r["eps"]) for r in rs], [float(r[col]) for r in rs], marker="o", ms=3, label=m,
+                color=colors.get(m))
+    ax.set_xscale("log")
+    ax.invert_xaxis()
+    ax.set_xlabel("eps")
+    ax.set_title(labels[fam])
+for ax in axes:
+    ax.set_yscale("log")
+    ax.grid(alpha=0.3, which="both")
+axes[0].set_ylabel("per-pair median [ns] (log), timed back to back")
+axes[0].set_title("(a), (b)")
+axes[0].legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(f"{out}/flint_reference.png", dpi=110)
+
+# (5) which stage of the adaptive method decided: stage columns read by name from stages.csv
+# (every column after "n"), so a new Stage needs no change here.
+st = list(csv.DictReader(open(f"{out}/stages.csv")))
+stage_cols = [c for c in st[0].keys() if c not in ("family", "eps", "n")] if st else []
+xs = [r for r in st if r["family"] in ("a", "b")] + [r for r in st if r["family"] in ("c", "c-sym")]
+fig, ax = plt.subplots(figsize=(14, 4.5))
+bottom = [0.0] * len(xs)
+for k, c in enumerate(stage_cols):
+    ys = [int(r[c]) / int(r["n"]) for r in xs]
+    ax.bar(range(len(xs)), ys, bottom=bottom, label=c, color=plt.cm.tab10.colors[k % 10])
+    bottom = [b + y for b, y in zip(bottom, ys)]
+ax.set_xticks(range(len(xs)), [r["family"] + (" " + r["eps"] if r["eps"] else "") for r in xs], rotation=90,
+              fontsize=7)
+ax.set_ylabel("fraction of pairs")
+ax.set_title("Deciding stage of the adaptive method")
+ax.legend(fontsize=8, ncol=len(stage_cols))
+fig.tight_layout()
+fig.savefig(f"{out}/stages.png", dpi=110)
+
 s = json.load(open(f"{out}/summary.json"))
 print("adaptive/naive-double on (a): %.2f   adaptive median on (b): %.2f us" %
       (s["adaptive_over_naive_double_family_a"], s["adaptive_median_family_b_us"]))
+f = s["flint"]
+print("flint: errors %s, self-check failures %d; " % (f["errors"], f["self_check_failures"]) +
+      "  ".join("(%s) %.0f ns, exact/flint %.1f, flint/adaptive %.1f" %
+                (k, f[k]["flint_ns"], f[k]["exact_over_flint"], f[k]["flint_over_adaptive"])
+                for k in ("a", "b", "c", "c-sym")))

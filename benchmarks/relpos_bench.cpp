@@ -4,7 +4,10 @@
 //
 //   relpos_bench [--seed N] [--out DIR] [--quick]
 //
-// Writes DIR/results.csv, DIR/stages.csv and DIR/summary.json.
+// Writes DIR/results.csv, DIR/stages.csv, DIR/flint.csv and DIR/summary.json.
+//
+// Method "flint" is an independent exact pipeline written directly on FLINT (flint_reference.hpp):
+// a speed reference for the exact methods and a cross-check of the ground truth on every pair.
 #include <CGAL/Gmpfr.h>
 #include <CGAL/Interval_nt.h>
 
@@ -23,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "flint_reference.hpp"
 #include "float_baseline.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
@@ -201,7 +205,7 @@ struct Result {
   double wrong_decided = 0;     // answered and wrong (fraction of all pairs)
   int n = 0;
   int batches = 0;
-  std::array<int, 5> stages{};
+  std::array<int, kStageCount> stages{};  ///< pairs per deciding Stage (adaptive only)
 };
 
 volatile int g_sink = 0;
@@ -216,13 +220,14 @@ Result measure(const std::vector<Pair>& v, F method, double budget_s, const std:
   auto t0 = Clock::now();
   for (std::size_t i = 0; i < v.size(); ++i) {
     Answer a = method(v[i]);
-    if (a.stage >= 0 && a.stage < 5) ++res.stages[static_cast<std::size_t>(a.stage)];
+    if (a.stage >= 0 && static_cast<std::size_t>(a.stage) < kStageCount)
+      ++res.stages[static_cast<std::size_t>(a.stage)];
     if (!a.pos)
       ++undecided;
     else if (*a.pos != v[i].truth) {
       ++wrong;
-      if (label == "adaptive") {
-        std::cerr << "CRITICAL: adaptive misclassified pair " << i << ": got " << to_string(*a.pos) << ", exact "
+      if (label == "adaptive" || label == "flint") {
+        std::cerr << "CRITICAL: " << label << " misclassified pair " << i << ": got " << to_string(*a.pos) << ", exact "
                   << to_string(v[i].truth) << "\n  E =";
         for (auto& q : v[i].e.matrix().a) std::cerr << " " << to_string(q);
         std::cerr << "\n  P =";
@@ -279,12 +284,12 @@ Result measure(const std::vector<Pair>& v, F method, double budget_s, const std:
   return res;
 }
 
-/// Per-pair medians of two methods timed back to back on each pair (alternating, best of 3 loops
-/// each), so that both see the same machine load: the ratio the bars are stated in.
-template <class F, class G>
-std::pair<double, double> measure_paired(const std::vector<Pair>& v, F first, G second) {
-  std::vector<double> a(v.size()), b(v.size());
-  auto time_one = [](auto& method, const Pair& x, int reps) {
+/// Per-pair medians of several methods timed back to back on each pair (in turn, best of 3 loops
+/// each), so that all of them see the same machine load: the ratios the bars are stated in.
+using MethodFn = std::function<Answer(const Pair&)>;
+std::vector<double> measure_paired(const std::vector<Pair>& v, const std::vector<MethodFn>& methods) {
+  std::vector<std::vector<double>> t(methods.size(), std::vector<double>(v.size()));
+  auto time_one = [](const MethodFn& method, const Pair& x, int reps) {
     int acc = 0;
     auto s = Clock::now();
     for (int r = 0; r < reps; ++r) {
@@ -295,25 +300,25 @@ std::pair<double, double> measure_paired(const std::vector<Pair>& v, F first, G 
     return std::chrono::duration<double, std::nano>(Clock::now() - s).count() / reps;
   };
   for (std::size_t i = 0; i < v.size(); ++i) {
-    const double est = std::max(time_one(first, v[i], 1), time_one(second, v[i], 1));
+    double est = 0;
+    for (const auto& m : methods) est = std::max(est, time_one(m, v[i], 1));
     const int reps = std::max(1, static_cast<int>(std::ceil(2000.0 / std::max(est, 1.0))));
-    double ba = 1e300, bb = 1e300;
-    for (int trial = 0; trial < 3; ++trial) {
-      ba = std::min(ba, time_one(first, v[i], reps));
-      bb = std::min(bb, time_one(second, v[i], reps));
-    }
-    a[i] = ba, b[i] = bb;
+    std::vector<double> best(methods.size(), 1e300);
+    for (int trial = 0; trial < 3; ++trial)
+      for (std::size_t m = 0; m < methods.size(); ++m) best[m] = std::min(best[m], time_one(methods[m], v[i], reps));
+    for (std::size_t m = 0; m < methods.size(); ++m) t[m][i] = best[m];
   }
-  auto median = [](std::vector<double>& x) {
+  std::vector<double> med;
+  for (auto& x : t) {
     std::nth_element(x.begin(), x.begin() + static_cast<long>(x.size() / 2), x.end());
-    return x[x.size() / 2];
-  };
-  return {median(a), median(b)};
+    med.push_back(x.empty() ? 0.0 : x[x.size() / 2]);
+  }
+  return med;
 }
 
 struct Method {
   std::string name;
-  std::function<Answer(const Pair&)> run;
+  MethodFn run;
 };
 
 std::vector<Method> methods() {
@@ -342,6 +347,10 @@ std::vector<Method> methods() {
                   return Answer{naive_table(signs_of(f, sh), sign_of(sq.vertex), sign_of(sq.graeffe))};
                 }});
   ms.push_back({"exact", [](const Pair& x) { return Answer{classify_exact(x.e, x.p, Evidence::Minimal).position}; }});
+  ms.push_back({"flint", [](const Pair& x) {
+                  const FlintAnswer a = flint_classify(x.e.matrix(), x.p.matrix());
+                  return Answer{a.ok ? std::optional<Position>(a.position) : std::nullopt};
+                }});
   ms.push_back({"adaptive", [](const Pair& x) {
                   Verdict v = decide_position(x.e, x.p);
                   return Answer{v.position, static_cast<int>(v.stage)};
@@ -357,6 +366,14 @@ struct Row {
   Result r;
   int exact_double_inputs = 0;
 };
+
+/// Column / key name of stage i: to_string(Stage) with '-' -> '_' (static_double, ..., exact_roots),
+/// so a new Stage value needs no change here.
+std::string stage_key(std::size_t i) {
+  std::string k = to_string(static_cast<Stage>(i));
+  std::replace(k.begin(), k.end(), '-', '_');
+  return k;
+}
 
 std::string fmt(double x, int prec = 6) {
   std::ostringstream o;
@@ -414,6 +431,18 @@ int main(int argc, char** argv) {
   // Ground truth.
   for (auto& f : fams)
     for (auto& p : f.pairs) p.truth = classify_exact(p.e, p.p, Evidence::Minimal).position;
+  // The FLINT pipeline checked against other FLINT routines on every pair (untimed).
+  int flint_self_check_failures = 0;
+  for (const auto& f : fams)
+    for (std::size_t i = 0; i < f.pairs.size(); ++i) {
+      const std::string err = flint_self_check(f.pairs[i].e.matrix(), f.pairs[i].p.matrix());
+      if (err.empty()) continue;
+      if (++flint_self_check_failures <= 10)
+        std::cerr << "CRITICAL: FLINT self-check, family " << f.family << " " << f.eps << " pair " << i << ":" << err
+                  << "\n";
+    }
+  std::cerr << "FLINT self-check (f, s against fmpz_poly_mat_det; Sturm against fmpz_poly_num_real_roots): "
+            << flint_self_check_failures << " failures\n";
   for (auto& f : fams) {
     int hist[6] = {0, 0, 0, 0, 0, 0};
     int exact = 0;
@@ -425,12 +454,13 @@ int main(int argc, char** argv) {
 
   const double budget = quick ? 0.05 : 0.25;
   std::vector<Row> rows;
-  bool adaptive_wrong = false;
+  bool adaptive_wrong = false, flint_wrong = false;
   for (const auto& m : methods()) {
     for (const auto& f : fams) {
       Row row{f.family, f.eps, f.k, m.name, measure(f.pairs, m.run, f.eps.empty() ? budget : budget / 4, m.name), 0};
       for (auto& p : f.pairs) row.exact_double_inputs += p.exact_doubles;
       if (m.name == "adaptive" && row.r.wrong_decided > 0) adaptive_wrong = true;
+      if (m.name == "flint" && row.r.error_rate > 0) flint_wrong = true;  // wrong or undecided
       std::fprintf(
           stderr, "%-13s %-2s %-6s pair median %10.1f ns  batch mean %10.1f ns  err %.4f  decided %.4f  (%d batches)\n",
           m.name.c_str(), f.family.c_str(), f.eps.c_str(), row.r.pair_median_ns, row.r.median_ns, row.r.error_rate,
@@ -450,15 +480,24 @@ int main(int argc, char** argv) {
   }
   {
     std::ofstream csv(out_dir + "/stages.csv");
-    csv << "family,eps,n,static_double,multiple_root_witness,interval,exact_signs,exact_roots\n";
+    csv << "family,eps,n";
+    for (std::size_t i = 0; i < kStageCount; ++i) csv << "," << stage_key(i);
+    csv << "\n";
     for (const auto& r : rows)
-      if (r.method == "adaptive")
-        csv << r.family << "," << r.eps << "," << r.r.n << "," << r.r.stages[0] << "," << r.r.stages[1] << ","
-            << r.r.stages[2] << "," << r.r.stages[3] << "," << r.r.stages[4] << "\n";
+      if (r.method == "adaptive") {
+        csv << r.family << "," << r.eps << "," << r.r.n;
+        for (int c : r.r.stages) csv << "," << c;
+        csv << "\n";
+      }
   }
   auto find = [&](const std::string& fam, const std::string& m) -> const Row* {
     for (const auto& r : rows)
       if (r.family == fam && r.method == m) return &r;
+    return nullptr;
+  };
+  auto find_eps = [&](const std::string& fam, const std::string& eps, const std::string& m) -> const Row* {
+    for (const auto& r : rows)
+      if (r.family == fam && r.eps == eps && r.method == m) return &r;
     return nullptr;
   };
   // The bars: naive double and adaptive timed back to back on each pair (same machine load).
@@ -468,11 +507,32 @@ int main(int argc, char** argv) {
       if (m.name == name) return m.run;
     return ms.front().run;
   };
-  const auto paired_a = measure_paired(fams[0].pairs, method_named("naive-double"), method_named("adaptive"));
-  const auto paired_b = measure_paired(fams[1].pairs, method_named("naive-double"), method_named("adaptive"));
+  const auto pa = measure_paired(fams[0].pairs, {method_named("naive-double"), method_named("adaptive")});
+  const auto pb = measure_paired(fams[1].pairs, {method_named("naive-double"), method_named("adaptive")});
+  const std::pair<double, double> paired_a{pa[0], pa[1]}, paired_b{pb[0], pb[1]};
   std::fprintf(stderr, "paired (a): naive-double %.1f ns, adaptive %.1f ns, ratio %.3f\n", paired_a.first,
                paired_a.second, paired_a.second / paired_a.first);
   std::fprintf(stderr, "paired (b): naive-double %.1f ns, adaptive %.1f ns\n", paired_b.first, paired_b.second);
+  // The FLINT reference: exact (GMP), flint and adaptive timed back to back on each pair of every family.
+  struct FlintRow {
+    const Fam* fam;
+    double exact_ns, flint_ns, adaptive_ns;
+  };
+  std::vector<FlintRow> flint_rows;
+  for (const auto& f : fams) {
+    const auto t = measure_paired(f.pairs, {method_named("exact"), method_named("flint"), method_named("adaptive")});
+    flint_rows.push_back({&f, t[0], t[1], t[2]});
+    std::fprintf(stderr, "paired %-5s %-6s exact %10.1f ns  flint %10.1f ns  adaptive %10.1f ns  exact/flint %.2f\n",
+                 f.family.c_str(), f.eps.c_str(), t[0], t[1], t[2], t[0] / t[1]);
+  }
+  {
+    std::ofstream csv(out_dir + "/flint.csv");
+    csv << "family,eps,n,exact_ns,flint_ns,adaptive_ns,flint_error_rate\n";
+    for (const auto& fr : flint_rows)
+      csv << fr.fam->family << "," << fr.fam->eps << "," << fr.fam->pairs.size() << "," << fmt(fr.exact_ns) << ","
+          << fmt(fr.flint_ns) << "," << fmt(fr.adaptive_ns) << ","
+          << fmt(find_eps(fr.fam->family, fr.fam->eps, "flint")->r.error_rate) << "\n";
+  }
   {
     const Row* ad_a = find("a", "adaptive");
     const Row* nd_a = find("a", "naive-double");
@@ -492,6 +552,23 @@ int main(int argc, char** argv) {
     js << "  \"bar_a_met\": " << ((ratio_a <= 1.5 && ad_a->r.error_rate == 0) ? "true" : "false") << ",\n";
     js << "  \"bar_b_met\": " << (paired_b.second <= 2000.0 && ad_b->r.error_rate == 0 ? "true" : "false") << ",\n";
     js << "  \"adaptive_misclassifications\": " << (adaptive_wrong ? "true" : "false") << ",\n";
+    // FLINT reference: per-pair medians timed back to back with exact and adaptive; for c and c-sym
+    // the median over the eps levels of the per-level medians.
+    js << "  \"flint\": {\"errors\": " << (flint_wrong ? "true" : "false")
+       << ", \"self_check_failures\": " << flint_self_check_failures;
+    for (const std::string fam : {"a", "b", "c", "c-sym"}) {
+      std::vector<double> e, fl, ad;
+      for (const auto& fr : flint_rows)
+        if (fr.fam->family == fam) e.push_back(fr.exact_ns), fl.push_back(fr.flint_ns), ad.push_back(fr.adaptive_ns);
+      auto med = [](std::vector<double> x) {
+        std::sort(x.begin(), x.end());
+        return x[x.size() / 2];
+      };
+      js << ",\n    \"" << fam << "\": {\"exact_ns\": " << fmt(med(e)) << ", \"flint_ns\": " << fmt(med(fl))
+         << ", \"adaptive_ns\": " << fmt(med(ad)) << ", \"exact_over_flint\": " << fmt(med(e) / med(fl))
+         << ", \"flint_over_adaptive\": " << fmt(med(fl) / med(ad)) << "}";
+    }
+    js << "},\n";
     js << "  \"families\": {\n";
     bool firstf = true;
     for (const auto& f : fams) {
@@ -504,12 +581,12 @@ int main(int argc, char** argv) {
           js << (firstm ? "" : ", ") << "\"" << r.method << "\": {\"pair_median_ns\": " << fmt(r.r.pair_median_ns)
              << ", \"batch_mean_ns\": " << fmt(r.r.median_ns) << ", \"error_rate\": " << fmt(r.r.error_rate)
              << ", \"decided_fraction\": " << fmt(r.r.decided_fraction) << ", \"n\": " << r.r.n;
-          if (r.method == "adaptive")
-            js << ", \"stage_fractions\": {\"static_double\": " << fmt(double(r.r.stages[0]) / r.r.n)
-               << ", \"multiple_root_witness\": " << fmt(double(r.r.stages[1]) / r.r.n)
-               << ", \"interval\": " << fmt(double(r.r.stages[2]) / r.r.n)
-               << ", \"exact_signs\": " << fmt(double(r.r.stages[3]) / r.r.n)
-               << ", \"exact_roots\": " << fmt(double(r.r.stages[4]) / r.r.n) << "}";
+          if (r.method == "adaptive") {
+            js << ", \"stage_fractions\": {";
+            for (std::size_t i = 0; i < kStageCount; ++i)
+              js << (i ? ", " : "") << "\"" << stage_key(i) << "\": " << fmt(double(r.r.stages[i]) / r.r.n);
+            js << "}";
+          }
           js << "}";
           firstm = false;
         }
@@ -520,6 +597,10 @@ int main(int argc, char** argv) {
   if (adaptive_wrong) {
     std::cerr << "CRITICAL: the adaptive method misclassified at least one pair (see above)\n";
     return 3;
+  }
+  if (flint_wrong || flint_self_check_failures) {
+    std::cerr << "CRITICAL: the FLINT reference disagrees with the exact answer or failed a self-check (see above)\n";
+    return 4;
   }
   return 0;
 }
