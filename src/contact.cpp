@@ -2,6 +2,9 @@
 
 #include <cfenv>
 #include <cmath>
+#if defined(__SSE2_MATH__)
+#include <xmmintrin.h>
+#endif
 
 #include "relpos/running_bound.hpp"
 #include "relpos/scene.hpp"
@@ -32,8 +35,8 @@ std::string to_string(DecidedBy d) {
       return "discriminant-filter";
     case DecidedBy::FullClassifier:
       return "full-classifier";
-    case DecidedBy::ExactContainment:
-      return "exact-containment";
+    case DecidedBy::ContainmentCertificate:
+      return "containment-certificate";
   }
   return "?";
 }
@@ -88,9 +91,9 @@ bool discriminant_case_needs_rho(DiscriminantCase c) {
   return c == DiscriminantCase::NonRealPair || c == DiscriminantCase::AllNegative;
 }
 
-std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::optional<int> rho_vs_one) {
-  if (c == DiscriminantCase::Undecided) return std::nullopt;
-  if (discriminant_case_needs_rho(c) && !rho_vs_one) return std::nullopt;
+namespace {
+
+Verdict verdict_of_case(DiscriminantCase c, int rho_vs_one) {
   // The root facts of the case; f is square-free (Disc != 0), so f~ = f has no multiple root and
   // Disc(f~) has the sign of Disc(f) (math.md section 3). The table is classify's own.
   RootFacts x;
@@ -106,16 +109,42 @@ std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::o
       x.real = 4, x.negative = 4, x.positive = 0, x.nonreal = 0, x.sign_disc_f = 1;
       break;
     case DiscriminantCase::Undecided:
-      return std::nullopt;
+      break;
   }
   x.sign_disc_ftilde = x.sign_disc_f;
+  return decide_from_root_facts(x, rho_vs_one);
+}
+
+/// The 3 decided cases x 3 outcomes of rho, generated once from classify's table (verdict_of_case):
+/// the hot path is a lookup, nothing is decided twice.
+struct CaseTable {
+  Verdict v[4][3];
+  CaseTable() {
+    for (int c = 1; c < 4; ++c)
+      for (int r = -1; r <= 1; ++r) v[c][r + 1] = verdict_of_case(static_cast<DiscriminantCase>(c), r);
+  }
+};
+
+}  // namespace
+
+std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::optional<int> rho_vs_one) {
+  static const CaseTable table;
+  if (c == DiscriminantCase::Undecided) return std::nullopt;
+  if (discriminant_case_needs_rho(c) && !rho_vs_one) return std::nullopt;
   // TwoPositive is E before the table looks at smallness (any size), so any rho gives the same.
-  return decide_from_root_facts(x, rho_vs_one ? *rho_vs_one : 1);
+  return table.v[static_cast<int>(c)][(rho_vs_one ? *rho_vs_one : 1) + 1];
 }
 
 namespace {
 
-bool rounding_to_nearest() { return std::fegetround() == FE_TONEAREST; }
+/// Is the FPU in round-to-nearest (the filters assume it)? One stmxcsr on x86-64 (SSE arithmetic).
+inline bool rounding_to_nearest() {
+#if defined(__SSE2_MATH__)
+  return (_mm_getcsr() & 0x6000u) == 0;  // MXCSR.RC, bits 13-14: 00 = to nearest
+#else
+  return std::fegetround() == FE_TONEAREST;
+#endif
+}
 
 /// Plugged into the static filter: compute the smallness signs only when the case needs them.
 bool needs_smallness(const QuarticSigns& q) { return discriminant_case_needs_rho(discriminant_case(q)); }
@@ -125,31 +154,55 @@ SymmetricEntries<NT> entries(Get get) {
   return {get(0, 0), get(1, 1), get(2, 2), get(0, 1), get(0, 2), get(1, 2), get(0, 3), get(1, 3), get(2, 3), get(3, 3)};
 }
 
-/// Exact inside certificate (math.md "Scenes"): P < 0 on the whole closed solid ellipsoid. Then the
-/// surfaces do not meet, whatever the size of the body.
-bool exact_inside_certificate(const Ellipsoid& e, const Paraboloid& p) {
+/// The inside certificate (math.md "Scenes"), P < 0 on the whole closed solid ellipsoid, in NT:
+/// then the surfaces do not meet, whatever the size of the body. Returns the signs of T (must be
+/// < 0) and of T^2 - 4KW (must be > 0) through sign().
+template <class NT, class Conv, class Sign>
+int inside_certificate(const Ellipsoid& e, const Paraboloid& p, Conv conv, Sign sign) {
   const Matrix4& em = e.matrix();
   const Matrix4& pm = p.matrix();
-  const auto ee = entries<Rational>([&](int i, int j) { return em(i, j); });
-  const auto pe = entries<Rational>([&](int i, int j) { return pm(i, j); });
-  SymmetricEntries<Rational> adj;  // only the 3x3 part (S2) is read
+  const auto ee = entries<NT>([&](int i, int j) { return conv(em, i, j); });
+  const auto pe = entries<NT>([&](int i, int j) { return conv(pm, i, j); });
+  SymmetricEntries<NT> adj{};  // only the 3x3 part (S2) is read
   adj.q00 = pe.q11 * pe.q22 - pe.q12 * pe.q12;
   adj.q11 = pe.q00 * pe.q22 - pe.q02 * pe.q02;
   adj.q22 = pe.q00 * pe.q11 - pe.q01 * pe.q01;
   adj.q01 = pe.q02 * pe.q12 - pe.q01 * pe.q22;
   adj.q02 = pe.q01 * pe.q12 - pe.q02 * pe.q11;
   adj.q12 = pe.q01 * pe.q02 - pe.q00 * pe.q12;
-  const ContainmentQuantities<Rational> q(ee, pe, adj);
-  return q.inside_t() < 0 && q.inside_gap() > 0;
+  const ContainmentQuantities<NT> q(ee, pe, adj);
+  const int t = sign(q.inside_t()), g = sign(q.inside_gap());
+  if (t > 0 || g < 0) return -1;  // fails
+  if (t < 0 && g > 0) return 1;   // holds
+  return 0;                       // uncertain (or exactly on the boundary)
+}
+
+/// First with RunningBound (double with a certified error bound; enclosures for non-double entries),
+/// exactly only when that is uncertain: a body that is not small costs the exact test only near the
+/// certificate's boundary.
+bool inside_certificate_holds(const Ellipsoid& e, const Paraboloid& p) {
+  if (rounding_to_nearest()) {
+    const int r = inside_certificate<RunningBound>(
+        e, p,
+        [](const Matrix4& m, int i, int j) {
+          const auto iv = CGAL::to_interval(m(i, j));
+          return RunningBound::enclosing(iv.first, iv.second);
+        },
+        [](const RunningBound& x) { return x.sign(); });
+    if (r != 0) return r > 0;
+  }
+  return inside_certificate<Rational>(
+             e, p, [](const Matrix4& m, int i, int j) { return m(i, j); },
+             [](const Rational& x) { return static_cast<int>(CGAL::sign(x)); }) > 0;
 }
 
 /// After the classifier: a body that is not small and has no certificate may still be certified
 /// inside by the exact containment test (no contact for any size).
 ContactAnswer finish(const Verdict& v, DecidedBy by, const Ellipsoid& e, const Paraboloid& p) {
   ContactAnswer a{contact_of(v), v.position, v.rule, by};
-  if (a.contact == Contact::Unknown && v.rule == Rule::NotSmallUnknown && exact_inside_certificate(e, p)) {
+  if (a.contact == Contact::Unknown && v.rule == Rule::NotSmallUnknown && inside_certificate_holds(e, p)) {
     a.contact = Contact::None;
-    a.by = DecidedBy::ExactContainment;
+    a.by = DecidedBy::ContainmentCertificate;
   }
   return a;
 }
@@ -188,8 +241,7 @@ Contact contact_of(const Verdict& v) {
   // real point is a tangency (math.md section 3: tangent <=> f~ has a multiple root), so every
   // common point is a transversal crossing. Otherwise (a tangency besides a non-real pair, or a
   // finding) only "they meet" is certain.
-  if (v.rule == Rule::NotSmallContact && v.tangent_negative == 0 && v.tangent_positive == 0 &&
-      v.nonreal_multiple == 0)
+  if (v.rule == Rule::NotSmallContact && v.tangent_negative == 0 && v.tangent_positive == 0 && v.nonreal_multiple == 0)
     return Contact::Crossing;
   return Contact::Meet;
 }
@@ -232,8 +284,10 @@ constexpr std::size_t kBlock[6] = {0, 1, 2, 5, 6, 10};
 /// -det E = e^T adj(M) e - e0 det M for a symmetric matrix given as 10 entries.
 template <class NT>
 NT minus_det(const SymmetricEntries<NT>& x) {
-  const NT a00 = x.q11 * x.q22 - x.q12 * x.q12, a11 = x.q00 * x.q22 - x.q02 * x.q02, a22 = x.q00 * x.q11 - x.q01 * x.q01;
-  const NT a01 = x.q02 * x.q12 - x.q01 * x.q22, a02 = x.q01 * x.q12 - x.q02 * x.q11, a12 = x.q01 * x.q02 - x.q00 * x.q12;
+  const NT a00 = x.q11 * x.q22 - x.q12 * x.q12, a11 = x.q00 * x.q22 - x.q02 * x.q02,
+           a22 = x.q00 * x.q11 - x.q01 * x.q01;
+  const NT a01 = x.q02 * x.q12 - x.q01 * x.q22, a02 = x.q01 * x.q12 - x.q02 * x.q11,
+           a12 = x.q01 * x.q02 - x.q00 * x.q12;
   const NT d = x.q00 * a00 + x.q01 * a01 + x.q02 * a02;
   const NT y0 = a00 * x.q0 + a01 * x.q1 + a02 * x.q2, y1 = a01 * x.q0 + a11 * x.q1 + a12 * x.q2,
            y2 = a02 * x.q0 + a12 * x.q1 + a22 * x.q2;
@@ -308,9 +362,9 @@ ExteriorTracker::Frame ExteriorTracker::update(const Ellipsoid& placed) {
   }
   if (!v) {
     // The case was decided but rho was not: the one-shot path computes smallness in the filter.
-    const DiscriminantVerdict r = filter_tried ? decide_by_discriminant(placed, p_)
-                                               : DiscriminantVerdict{decide_position(placed, p_), true,
-                                                                     DecidedBy::FullClassifier};
+    const DiscriminantVerdict r =
+        filter_tried ? decide_by_discriminant(placed, p_)
+                     : DiscriminantVerdict{decide_position(placed, p_), true, DecidedBy::FullClassifier};
     v = r.verdict;
     by = r.by;
   }

@@ -186,8 +186,9 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   return out;
 }
 
-DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en,
-                                                          bool (*need_smallness)(const QuarticSigns&)) {
+// flatten: inlines the generated Sturm-Habicht code, so that its dead g2 and g1 are dropped.
+[[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(
+    const DoubleMatrix4& pn, const DoubleMatrix4& en, bool (*need_smallness)(const QuarticSigns&)) {
   // The same pipeline as static_filter_signs_normalized() (f, balancing, scaling into [-1, 1], the
   // second-stage bound a + r * eps), restricted to f and g0 = Disc(f); s and the smallness quantities
   // only on demand. Index 5 of the a/r arrays is g0, 6 and 7 are vertex and graeffe.
@@ -221,7 +222,7 @@ DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& p
   for (int i = 0; i < 5; ++i) eps = std::max(eps, ef[i]);
   if (!(eps <= kEps0)) return out;
   // The generated sequence is evaluated whole so that g0 is exactly the program its bound was derived
-  // from; g2 and g1 are dead values here, and the optimiser drops them (pure double arithmetic).
+  // from; inlined (flatten), its dead g2 and g1 are dropped by the optimiser.
   const SturmHabicht<double> sh(f);
   out.quartic.g0 = certified(sh.g0[0], b.a[5] + b.r[5] * eps);
   if (!need_smallness || !need_smallness(out.quartic)) return out;

@@ -246,8 +246,8 @@ TEST_CASE("contact on constructed tangencies and their neighbours", "[contact][c
       const ContactAnswer c = relpos::contact(e, p);
       CHECK(c.position == k.expected);
       const Contact want = (k.expected == Position::TI || k.expected == Position::TE) ? Contact::Touching
-                           : k.expected == Position::C                                 ? Contact::Crossing
-                                                                                       : Contact::None;
+                           : k.expected == Position::C                                ? Contact::Crossing
+                                                                                      : Contact::None;
       CHECK(c.contact == want);
       CHECK(relpos::ContactChecker(p).contact(e).contact == want);
       ++n;
@@ -280,7 +280,7 @@ TEST_CASE("contact beyond smallness", "[contact][large]") {
     CHECK(v.rule == Rule::NotSmallUnknown);
     const ContactAnswer c = relpos::contact(e, p);
     CHECK(c.contact == Contact::None);
-    CHECK(c.by == DecidedBy::ExactContainment);
+    CHECK(c.by == DecidedBy::ContainmentCertificate);
     const ContactAnswer s = relpos::ContactChecker(p).contact(e);
     CHECK(s.contact == Contact::None);
     CHECK(s.by == DecidedBy::SceneCertificate);
@@ -308,8 +308,8 @@ TEST_CASE("contact beyond smallness", "[contact][large]") {
 TEST_CASE("smallness and the level are translation invariant (exact)", "[contact][tracker]") {
   Rng g(4242);
   for (int n = 0; n < 40; ++n) {
-    const Transformed t = transform(sphere_matrix(V(Q(0), Q(0), Q(1)), g.positive_rational(3, 4)),
-                                    paraboloid_matrix(Q(1), Q(2)), g);
+    const Transformed t =
+        transform(sphere_matrix(V(Q(0), Q(0), Q(1)), g.positive_rational(3, 4)), paraboloid_matrix(Q(1), Q(2)), g);
     const Ellipsoid e0 = Ellipsoid::from_matrix(t.e);
     const Paraboloid p = Paraboloid::from_matrix(t.p);
     const Matrix4& E = e0.matrix();
@@ -413,8 +413,8 @@ TEST_CASE("tracker: frames that are not translates still get the right answer", 
   CHECK(fr.by == DecidedBy::DiscriminantFilter);
   CHECK(tr.counts().rho_recomputed == 1);
   // A different shape block (ellipsoid) crossing the wall.
-  const Ellipsoid ell =
-      Ellipsoid::from_axes(V(Q(1), Q(0), Q(1)), V(Q(1, 4), Q(1, 8), Q(1, 8)), relpos::Quaternion{Q(1), Q(0), Q(0), Q(0)});
+  const Ellipsoid ell = Ellipsoid::from_axes(V(Q(1), Q(0), Q(1)), V(Q(1, 4), Q(1, 8), Q(1, 8)),
+                                             relpos::Quaternion{Q(1), Q(0), Q(0), Q(0)});
   CHECK(tr.update(ell).position == relpos::decide_position(ell, p).position);
 }
 

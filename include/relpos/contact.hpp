@@ -62,16 +62,17 @@ std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::o
 
 /// What settled an answer.
 enum class DecidedBy : unsigned char {
-  SceneCertificate,    ///< Scene::early_out: P has one strict sign on the solid ellipsoid
-  DiscriminantFilter,  ///< static filter on f and Disc(f) only (+ smallness when needed)
-  FullClassifier,      ///< decide_position() (static filter, witness, intervals, exact)
-  ExactContainment,    ///< exact inside certificate (P < 0 on the solid ellipsoid) for a body that is not small
+  SceneCertificate,        ///< Scene::early_out: P has one strict sign on the solid ellipsoid
+  DiscriminantFilter,      ///< static filter on f and Disc(f) only (+ smallness when needed)
+  FullClassifier,          ///< decide_position() (static filter, witness, intervals, exact)
+  ContainmentCertificate,  ///< inside certificate P < 0 on the solid ellipsoid (filtered, exact if needed), body not
+                           ///< small
 };
 inline constexpr std::size_t kDecidedByCount = 4;
 std::string to_string(DecidedBy d);
 
 struct DiscriminantVerdict {
-  Verdict verdict;  ///< position, rule, contact identical to decide_position()
+  Verdict verdict;        ///< position, rule, contact identical to decide_position()
   bool rho_known = true;  ///< false when verdict.small / rho_vs_one were not computed (answer E)
   DecidedBy by = DecidedBy::FullClassifier;
 };
@@ -167,12 +168,12 @@ class ExteriorTracker {
  private:
   std::optional<int> frame_rho(const Ellipsoid& placed);
   Paraboloid p_;
-  Matrix4 m_ref_;                     ///< reference 3x3 block (in a 4x4 for convenience)
+  Matrix4 m_ref_;  ///< reference 3x3 block (in a 4x4 for convenience)
   std::optional<DoubleMatrix4> m_ref_doubles_;
   int rho_vs_one_ = 0;
-  double det_lo_ = 0, det_hi_ = 0;    ///< enclosure of -det E of the reference (> 0)
-  bool ratio_ok_ = false;             ///< rho_ref is farther than the slack from 1
-  double adj_[6] = {}, det_m_ = 0;    ///< adj(M) and det M of the reference in double (exact when M is)
+  double det_lo_ = 0, det_hi_ = 0;  ///< enclosure of -det E of the reference (> 0)
+  bool ratio_ok_ = false;           ///< rho_ref is farther than the slack from 1
+  double adj_[6] = {}, det_m_ = 0;  ///< adj(M) and det M of the reference in double (exact when M is)
   bool adj_exact_ = false;
   std::optional<Position> last_;
   Counts counts_;
