@@ -186,4 +186,60 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   return out;
 }
 
+// flatten: inlines the generated Sturm-Habicht code, so that its dead g2 and g1 are dropped.
+[[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(
+    const DoubleMatrix4& pn, const DoubleMatrix4& en, bool (*need_smallness)(const QuarticSigns&)) {
+  // The same pipeline as static_filter_signs_normalized() (f, balancing, scaling into [-1, 1], the
+  // second-stage bound a + r * eps), restricted to f and g0 = Disc(f); s and the smallness quantities
+  // only on demand. Index 5 of the a/r arrays is g0, 6 and 7 are vertex and graeffe.
+  const Bounds& b = bounds();
+  const View p{pn}, e{en};
+  auto f = characteristic_polynomial<double>(p, e);
+  double ef[5];
+  for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
+  if (!normal_range(std::fabs(f[0])) || !normal_range(std::fabs(f[4]))) return uncertain();
+  const double step = power_of_two((exponent_of(f[0]) - exponent_of(f[4])) / 4);
+  double w = 1;
+  for (int i = 0; i < 5; ++i, w *= step) {
+    f[static_cast<std::size_t>(i)] *= w;
+    ef[i] *= w;
+  }
+  auto scale_into_unit = [](double* v, double* err, int n) {
+    double mx = 0;
+    for (int i = 0; i < n; ++i) mx = std::max(mx, std::fabs(v[i]) + err[i]);
+    if (!normal_range(mx)) return false;
+    const double scale = power_of_two(-exponent_of(mx) - 1);
+    for (int i = 0; i < n; ++i) {
+      v[i] *= scale;
+      err[i] *= scale;
+    }
+    return true;
+  };
+  if (!scale_into_unit(f.data(), ef, 5)) return uncertain();
+  DecisionSigns out;
+  for (int i = 0; i < 5; ++i) out.quartic.f[i] = certified(f[static_cast<std::size_t>(i)], ef[i]);
+  double eps = 0;
+  for (int i = 0; i < 5; ++i) eps = std::max(eps, ef[i]);
+  if (!(eps <= kEps0)) return out;
+  // The generated sequence is evaluated whole so that g0 is exactly the program its bound was derived
+  // from; inlined (flatten), its dead g2 and g1 are dropped by the optimiser.
+  const SturmHabicht<double> sh(f);
+  out.quartic.g0 = certified(sh.g0[0], b.a[5] + b.r[5] * eps);
+  if (!need_smallness || !need_smallness(out.quartic)) return out;
+  auto s = special_polynomial<double>(p, e);
+  double es[3];
+  w = 1;
+  for (int i = 0; i < 3; ++i, w *= step) {
+    s[static_cast<std::size_t>(i)] *= w;
+    es[i] = b.s[i] * w;
+  }
+  if (!scale_into_unit(s.data(), es, 3)) return out;
+  for (int i = 0; i < 3; ++i) eps = std::max(eps, es[i]);
+  if (!(eps <= kEps0)) return out;
+  SmallnessQuantities<double> sq(f, s);
+  out.vertex = certified(sq.vertex, b.a[6] + b.r[6] * eps);
+  out.graeffe = certified(sq.graeffe, b.a[7] + b.r[7] * eps);
+  return out;
+}
+
 }  // namespace relpos

@@ -1,0 +1,178 @@
+// contact_bench: per-pair time of decide_position() versus the discriminant-only decision
+// (decide_by_discriminant), the translation tracker (ExteriorTracker::update), contact() and
+// ContactChecker::contact(), measured back to back on the same random exact-double pairs. Each round
+// times one pass of every method over all pairs, the order of the methods rotating from round to
+// round (fair on a noisy, shared machine); the medians over rounds are printed, with the fraction
+// of pairs each path decided. Every answer is checked against decide_position().
+//
+// Usage: contact_bench [pairs=20000] [rounds=15] [seed=1]
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <random>
+#include <relpos/classify.hpp>
+#include <relpos/contact.hpp>
+#include <string>
+#include <vector>
+
+using namespace relpos;
+
+namespace {
+
+struct Pair {
+  std::size_t para;  ///< index of the paraboloid
+  Ellipsoid e;
+};
+
+/// Random ellipsoid M = L L^T + 0.05 I, centre in [-2, 2]^3, level in [0.01, 2]; paraboloids
+/// alpha x^2 + beta y^2 + ... - z, as relpos_bench's family A. All entries exact doubles.
+Ellipsoid random_ellipsoid(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u11(-1, 1), uc(-2, 2), uk(0.01, 2);
+  for (;;) {
+    double L[3][3], M[3][3], c[3], Mc[3];
+    for (auto& r : L)
+      for (auto& x : r) x = u11(rng);
+    for (int i = 0; i < 3; ++i)
+      for (int j = i; j < 3; ++j) {
+        M[i][j] = 0;
+        for (int k = 0; k < 3; ++k) M[i][j] += L[i][k] * L[j][k];
+        if (i == j) M[i][j] += 0.05;
+        M[j][i] = M[i][j];
+      }
+    for (double& x : c) x = uc(rng);
+    const double k = uk(rng);
+    double cMc = 0;
+    for (int i = 0; i < 3; ++i) {
+      Mc[i] = 0;
+      for (int j = 0; j < 3; ++j) Mc[i] += M[i][j] * c[j];
+      cMc += c[i] * Mc[i];
+    }
+    Matrix4 E;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) E(i, j) = Rational(M[i][j]);
+      E(i, 3) = E(3, i) = Rational(-Mc[i]);
+    }
+    E(3, 3) = Rational(cMc - k);
+    try {
+      return Ellipsoid::from_matrix(E);
+    } catch (const std::exception&) {
+    }
+  }
+}
+
+Paraboloid random_paraboloid(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u11(-1, 1), uc(-2, 2), uab(0.3, 2);
+  const double alpha = uab(rng), beta = uab(rng), uu = u11(rng), vv = u11(rng), w = uc(rng);
+  Matrix4 P;
+  P(0, 0) = Rational(alpha);
+  P(1, 1) = Rational(beta);
+  P(0, 3) = P(3, 0) = Rational(uu * alpha);
+  P(1, 3) = P(3, 1) = Rational(vv * beta);
+  P(2, 3) = P(3, 2) = Rational(-0.5);
+  P(3, 3) = Rational(w);
+  return Paraboloid::from_matrix(P);
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+volatile int g_sink = 0;  // keeps the answers alive
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::size_t n = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 20000;
+  const int rounds = argc > 2 ? std::atoi(argv[2]) : 15;
+  const std::uint64_t seed = argc > 3 ? std::strtoull(argv[3], nullptr, 10) : 1;
+  std::mt19937_64 rng(seed);
+  std::vector<Paraboloid> paras;
+  for (int i = 0; i < 16; ++i) paras.push_back(random_paraboloid(rng));
+  std::vector<Pair> pairs;
+  pairs.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) pairs.push_back({i % paras.size(), random_ellipsoid(rng)});
+  std::vector<ContactChecker> checkers;
+  for (const auto& p : paras) checkers.emplace_back(p);
+  // One tracker per body, reference = the body itself (construction, exact, not timed).
+  std::vector<ExteriorTracker> trackers;
+  trackers.reserve(n);
+  for (const auto& q : pairs) trackers.emplace_back(paras[q.para], q.e);
+
+  // Correctness and path fractions (one untimed pass).
+  std::array<std::size_t, kDecidedByCount> by_disc{}, by_contact{}, by_checker{};
+  std::array<std::size_t, 6> positions{};  // I, TI, C, TE, E, unclassified
+  std::size_t mismatches = 0, tracker_filter = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Paraboloid& p = paras[pairs[i].para];
+    const Ellipsoid& e = pairs[i].e;
+    const Verdict v = decide_position(e, p);
+    ++positions[static_cast<std::size_t>(v.position)];
+    const auto d = decide_by_discriminant(e, p);
+    ++by_disc[static_cast<std::size_t>(d.by)];
+    const ContactAnswer c = contact(e, p), s = checkers[pairs[i].para].contact(e);
+    ++by_contact[static_cast<std::size_t>(c.by)];
+    ++by_checker[static_cast<std::size_t>(s.by)];
+    ExteriorTracker t(p, e);
+    const auto fr = t.update(e);
+    tracker_filter += fr.by == DecidedBy::DiscriminantFilter;
+    if (d.verdict.position != v.position || d.verdict.rule != v.rule || fr.position != v.position ||
+        c.position != v.position || (v.contact == 0 && c.contact != Contact::None) ||
+        (v.contact == 1 && (c.contact == Contact::None || c.contact == Contact::Unknown)) ||
+        (s.contact != Contact::Unknown && c.contact != Contact::Unknown && s.contact != c.contact))
+      ++mismatches;
+  }
+
+  using Method = std::function<int(std::size_t)>;
+  const std::vector<std::pair<std::string, Method>> methods = {
+      {"decide_position",
+       [&](std::size_t i) { return int(decide_position(pairs[i].e, paras[pairs[i].para]).position); }},
+      {"decide_by_discriminant",
+       [&](std::size_t i) { return int(decide_by_discriminant(pairs[i].e, paras[pairs[i].para]).verdict.position); }},
+      {"ExteriorTracker::update", [&](std::size_t i) { return int(trackers[i].update(pairs[i].e).position); }},
+      {"contact()", [&](std::size_t i) { return int(contact(pairs[i].e, paras[pairs[i].para]).contact); }},
+      {"ContactChecker::contact",
+       [&](std::size_t i) { return int(checkers[pairs[i].para].contact(pairs[i].e).contact); }},
+  };
+  std::vector<std::vector<double>> ns(methods.size());
+  for (int r = 0; r < rounds; ++r)
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      const std::size_t m = (k + static_cast<std::size_t>(r)) % methods.size();  // rotate the order
+      int acc = 0;
+      const auto t0 = std::chrono::steady_clock::now();
+      for (std::size_t i = 0; i < n; ++i) acc += methods[m].second(i);
+      const auto t1 = std::chrono::steady_clock::now();
+      g_sink = g_sink + acc;
+      ns[m].push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(n));
+    }
+
+  std::printf("contact_bench: %zu random exact-double pairs (16 paraboloids), %d rounds, seed %llu\n", n, rounds,
+              static_cast<unsigned long long>(seed));
+  std::printf("positions: I %zu, TI %zu, C %zu, TE %zu, E %zu, unclassified %zu; mismatches %zu\n", positions[0],
+              positions[1], positions[2], positions[3], positions[4], positions[5], mismatches);
+  const double base = median(ns[0]);
+  std::printf("%-26s %12s %12s %12s %9s\n", "method", "median ns", "min ns", "max ns", "speedup");
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    const auto& v = ns[m];
+    std::printf("%-26s %12.1f %12.1f %12.1f %9.2f\n", methods[m].first.c_str(), median(v),
+                *std::min_element(v.begin(), v.end()), *std::max_element(v.begin(), v.end()), base / median(v));
+  }
+  auto frac = [&](const std::array<std::size_t, kDecidedByCount>& a, DecidedBy b) {
+    return 100.0 * static_cast<double>(a[static_cast<std::size_t>(b)]) / static_cast<double>(n);
+  };
+  std::printf("decided by (%%):            scene-cert  disc-filter  full-classifier  containment\n");
+  for (const auto& [name, a] :
+       {std::pair<const char*, const std::array<std::size_t, kDecidedByCount>*>{"decide_by_discriminant", &by_disc},
+        {"contact()", &by_contact},
+        {"ContactChecker::contact", &by_checker}})
+    std::printf("%-26s %10.2f %12.2f %16.2f %18.3f\n", name, frac(*a, DecidedBy::SceneCertificate),
+                frac(*a, DecidedBy::DiscriminantFilter), frac(*a, DecidedBy::FullClassifier),
+                frac(*a, DecidedBy::ContainmentCertificate));
+  std::printf("%-26s %23.2f\n", "ExteriorTracker::update",
+              100.0 * static_cast<double>(tracker_filter) / static_cast<double>(n));
+  return mismatches == 0 ? 0 : 1;
+}

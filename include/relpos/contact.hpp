@@ -1,0 +1,182 @@
+// Contact-only answers and a discriminant-only tracker (doc/contact.md).
+//
+// f(l) = det(l P + E) has f(0) = det E < 0 and f4 = det P < 0, and always at least two negative real
+// roots (with multiplicity): l P + E has inertia (3, 1) at l = 0 and that of -P, (1, 3), as l -> -inf,
+// and an eigenvalue changes sign only where det = 0. So f never has four non-real roots, and
+//   Disc(f) < 0  <=>  two distinct (negative) real roots and one non-real pair,
+//   Disc(f) > 0  <=>  four distinct real roots,
+//   Disc(f) = 0  <=>  a multiple root.
+// With all roots real, Descartes' rule is exact: #positive roots = V, the sign variations of
+// (f4, f3, f2, f1, f0), and V is 0 or 2 because f4, f0 < 0. Hence, from sign(Disc(f)) and the signs
+// of f1, f2, f3 alone -- no Sturm-Habicht sequence:
+//   Disc < 0         -> f square-free with a non-real pair: C when small, "the surfaces cross" for any size;
+//   Disc > 0, V = 2  -> two distinct positive roots: E for any size;
+//   Disc > 0, V = 0  -> four distinct negative roots: I when small (not small: unclassified);
+//   Disc = 0         -> undecided here; the full classifier decide_position() answers.
+// The table applied is classify's own (decide_from_root_facts), so every answer is decide_position's.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "relpos/classify.hpp"
+#include "relpos/quadric.hpp"
+#include "relpos/sturm.hpp"
+
+namespace relpos {
+
+class Scene;
+
+// ------------------------------------------------------------------------------------------------
+// The discriminant decision, written once, generic over where the signs come from (static filter,
+// intervals, exact integers).
+// ------------------------------------------------------------------------------------------------
+
+enum class DiscriminantCase : unsigned char {
+  Undecided,    ///< a needed sign is uncertain, Disc(f) = 0, or f0, f4 not certified negative
+  NonRealPair,  ///< Disc(f) < 0: two distinct negative roots and a non-real pair
+  TwoPositive,  ///< Disc(f) > 0 and V = 2: four distinct real roots, two of them positive
+  AllNegative,  ///< Disc(f) > 0 and V = 0: four distinct negative roots
+};
+std::string to_string(DiscriminantCase c);
+
+/// The case from the signs of f[0..4] and of Disc(f) (q.g0); q.g2 and q.g1 are not read.
+DiscriminantCase discriminant_case(const QuarticSigns& q);
+
+/// Whether the answer for this case depends on rho (NonRealPair and AllNegative; TwoPositive is E
+/// for any size).
+bool discriminant_case_needs_rho(DiscriminantCase c);
+
+/// classify's verdict for the case (position, rule, contact, root counts, sign of Disc(f)), applied
+/// through classify's own table; rho_vs_one is read only when the case needs it. nullopt when the
+/// case is Undecided or a needed rho is missing. The stage is left at StaticDouble. For TwoPositive
+/// the fields small / rho_vs_one are not meaningful (rho was not looked at).
+std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::optional<int> rho_vs_one);
+
+// ------------------------------------------------------------------------------------------------
+// One-shot discriminant decision with exact fallback.
+// ------------------------------------------------------------------------------------------------
+
+/// What settled an answer.
+enum class DecidedBy : unsigned char {
+  SceneCertificate,        ///< Scene::early_out: P has one strict sign on the solid ellipsoid
+  DiscriminantFilter,      ///< static filter on f and Disc(f) only (+ smallness when needed)
+  FullClassifier,          ///< decide_position() (static filter, witness, intervals, exact)
+  ContainmentCertificate,  ///< inside certificate P < 0 on the solid ellipsoid (filtered, exact if needed), body not
+                           ///< small
+};
+inline constexpr std::size_t kDecidedByCount = 4;
+std::string to_string(DecidedBy d);
+
+struct DiscriminantVerdict {
+  Verdict verdict;        ///< position, rule, contact identical to decide_position()
+  bool rho_known = true;  ///< false when verdict.small / rho_vs_one were not computed (answer E)
+  DecidedBy by = DecidedBy::FullClassifier;
+};
+
+/// The discriminant test on exact-double inputs (static filter), falling back to decide_position().
+DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p);
+
+// ------------------------------------------------------------------------------------------------
+// Contact only: do the two surfaces meet?
+// ------------------------------------------------------------------------------------------------
+
+enum class Contact : unsigned char {
+  None,      ///< the surfaces do not meet (I or E, or certified containment for any size)
+  Touching,  ///< they meet only tangentially (TI or TE)
+  Crossing,  ///< they cross (C; or, not small, f~ square-free with a non-real pair)
+  Meet,      ///< they meet, but the kind of contact is not certified (not small, or a finding)
+  Unknown,   ///< not small and no certificate: the theory cannot tell
+};
+std::string to_string(Contact c);
+
+struct ContactAnswer {
+  Contact contact = Contact::Unknown;
+  Position position = Position::Unclassified;  ///< classify's position (Unclassified when not small, ...)
+  Rule rule = Rule::None;                      ///< classify's rule
+  DecidedBy by = DecidedBy::FullClassifier;
+};
+
+/// The contact of a classifier verdict (what classify's position / contact field say; a not-small
+/// crossing with f~ square-free is Crossing, math.md section 3).
+Contact contact_of(const Verdict& v);
+
+/// Contact of the two surfaces: the discriminant test, then decide_position(), then (for an answer
+/// that is not decided because the body is not small) the exact inside certificate.
+ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p);
+
+/// The same with the paraboloid prepared once: Scene::early_out first (the cheapest certificate),
+/// then as contact(). Thread-safe (const).
+class ContactChecker {
+ public:
+  explicit ContactChecker(const Paraboloid& p);
+  ~ContactChecker();
+  ContactChecker(ContactChecker&&) noexcept;
+  ContactChecker& operator=(ContactChecker&&) noexcept;
+  ContactAnswer contact(const Ellipsoid& e) const;
+  const Paraboloid& paraboloid() const;
+
+ private:
+  std::unique_ptr<Scene> scene_;
+};
+
+// ------------------------------------------------------------------------------------------------
+// The paper's tracker, certified: one paraboloid, a body moving by translation.
+// ------------------------------------------------------------------------------------------------
+
+/// The paper (section 2) tracks a body coming from the exterior by the sign of Disc(f) alone
+/// ("< 0: C, > 0: E, = 0: TE"). That is wrong twice: Disc > 0 also holds for I (a body that has gone
+/// all the way in), and Disc = 0 also holds for C and E with a special double root -a^2 or -b^2
+/// (math.md section 3). This tracker reads sign(Disc(f)) and the signs of f1, f2, f3, takes the
+/// smallness of the body from its reference placement (rho depends on M, A, det P and det E, and a
+/// translation changes neither M nor det E = -det M * k, k the level), and falls back to
+/// decide_position() when Disc(f) = 0 or a sign is uncertain. Every frame's answer is exactly
+/// decide_position()'s on that frame.
+///
+/// The smallness shortcut is checked, not assumed: a frame whose 3x3 block differs from the
+/// reference's, or whose det E cannot be certified to keep rho on the reference's side of 1 (a body
+/// that changed size), gets its smallness computed afresh. Nothing is claimed between frames: a
+/// body can enter and leave between two samples. For certified first contact over continuous time
+/// use the motion module (relpos motion, include/relpos/motion.hpp).
+class ExteriorTracker {
+ public:
+  /// body: the moving body in any placement (its shape; smallness is computed here, exactly, once).
+  ExteriorTracker(const Paraboloid& p, const Ellipsoid& body);
+
+  struct Frame {
+    Position position = Position::Unclassified;
+    Rule rule = Rule::None;
+    signed char contact = -1;  ///< as Verdict::contact
+    bool changed = false;      ///< position differs from the previous frame's (false on the first)
+    DecidedBy by = DecidedBy::FullClassifier;
+  };
+  /// The certified position of this frame (decide_position(placed, p)).
+  Frame update(const Ellipsoid& placed);
+
+  /// rho compared with 1 for the reference body, exactly.
+  int rho_vs_one() const { return rho_vs_one_; }
+
+  struct Counts {
+    std::size_t frames = 0, by_filter = 0, by_fallback = 0;
+    std::size_t rho_recomputed = 0;  ///< frames whose smallness could not be taken from the reference
+  };
+  const Counts& counts() const { return counts_; }
+
+ private:
+  std::optional<int> frame_rho(const Ellipsoid& placed);
+  Paraboloid p_;
+  Matrix4 m_ref_;  ///< reference 3x3 block (in a 4x4 for convenience)
+  std::optional<DoubleMatrix4> m_ref_doubles_;
+  int rho_vs_one_ = 0;
+  double det_lo_ = 0, det_hi_ = 0;  ///< enclosure of -det E of the reference (> 0)
+  bool ratio_ok_ = false;           ///< rho_ref is farther than the slack from 1
+  double adj_[6] = {}, det_m_ = 0;  ///< adj(M) and det M of the reference in double (exact when M is)
+  bool adj_exact_ = false;
+  std::optional<Position> last_;
+  Counts counts_;
+};
+
+}  // namespace relpos

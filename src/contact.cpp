@@ -1,0 +1,382 @@
+#include "relpos/contact.hpp"
+
+#include <cfenv>
+#include <cmath>
+#if defined(__SSE2_MATH__)
+#include <xmmintrin.h>
+#endif
+
+#include "relpos/running_bound.hpp"
+#include "relpos/scene.hpp"
+#include "relpos/smallness.hpp"
+#include "relpos/static_filter.hpp"
+
+namespace relpos {
+
+std::string to_string(DiscriminantCase c) {
+  switch (c) {
+    case DiscriminantCase::Undecided:
+      return "undecided";
+    case DiscriminantCase::NonRealPair:
+      return "non-real-pair";
+    case DiscriminantCase::TwoPositive:
+      return "two-positive";
+    case DiscriminantCase::AllNegative:
+      return "all-negative";
+  }
+  return "?";
+}
+
+std::string to_string(DecidedBy d) {
+  switch (d) {
+    case DecidedBy::SceneCertificate:
+      return "scene-certificate";
+    case DecidedBy::DiscriminantFilter:
+      return "discriminant-filter";
+    case DecidedBy::FullClassifier:
+      return "full-classifier";
+    case DecidedBy::ContainmentCertificate:
+      return "containment-certificate";
+  }
+  return "?";
+}
+
+std::string to_string(Contact c) {
+  switch (c) {
+    case Contact::None:
+      return "none";
+    case Contact::Touching:
+      return "touching";
+    case Contact::Crossing:
+      return "crossing";
+    case Contact::Meet:
+      return "meet";
+    case Contact::Unknown:
+      return "unknown";
+  }
+  return "?";
+}
+
+DiscriminantCase discriminant_case(const QuarticSigns& q) {
+  using detail::certain;
+  const auto f4 = certain(q.f[4]), f0 = certain(q.f[0]), disc = certain(q.g0);
+  // f4 = det P < 0 and f0 = det E < 0 always; a source that cannot certify them is not trusted further.
+  if (!f4 || !f0 || !disc || *f4 >= 0 || *f0 >= 0 || *disc == 0) return DiscriminantCase::Undecided;
+  // Disc < 0: exactly one non-real pair (f has >= 2 negative roots, so never four non-real ones);
+  // the two real roots are the (distinct) negative ones.
+  if (*disc < 0) return DiscriminantCase::NonRealPair;
+  // Disc > 0: four distinct real roots, and Descartes' rule is exact: #positive = V.
+  int s[5] = {*f4, 0, 0, 0, *f0};
+  bool all_certain = true, some_positive = false;
+  for (int i = 1; i <= 3; ++i) {
+    const auto si = certain(q.f[4 - i]);
+    if (!si) {
+      all_certain = false;
+      continue;
+    }
+    s[i] = *si;
+    some_positive = some_positive || *si > 0;
+  }
+  if (all_certain) {
+    const int v = detail::variations(s, 5);
+    if (v == 0) return DiscriminantCase::AllNegative;
+    if (v == 2) return DiscriminantCase::TwoPositive;
+    return DiscriminantCase::Undecided;  // V = 4 is impossible (>= 2 negative roots): never trust it
+  }
+  // A certain positive f_i between f4 < 0 and f0 < 0 gives V >= 2, and V <= 2 always.
+  return some_positive ? DiscriminantCase::TwoPositive : DiscriminantCase::Undecided;
+}
+
+bool discriminant_case_needs_rho(DiscriminantCase c) {
+  return c == DiscriminantCase::NonRealPair || c == DiscriminantCase::AllNegative;
+}
+
+namespace {
+
+Verdict verdict_of_case(DiscriminantCase c, int rho_vs_one) {
+  // The root facts of the case; f is square-free (Disc != 0), so f~ = f has no multiple root and
+  // Disc(f~) has the sign of Disc(f) (math.md section 3). The table is classify's own.
+  RootFacts x;
+  x.degree_ftilde = 4;
+  switch (c) {
+    case DiscriminantCase::NonRealPair:
+      x.real = 2, x.negative = 2, x.positive = 0, x.nonreal = 2, x.sign_disc_f = -1;
+      break;
+    case DiscriminantCase::TwoPositive:
+      x.real = 4, x.negative = 2, x.positive = 2, x.nonreal = 0, x.sign_disc_f = 1;
+      break;
+    case DiscriminantCase::AllNegative:
+      x.real = 4, x.negative = 4, x.positive = 0, x.nonreal = 0, x.sign_disc_f = 1;
+      break;
+    case DiscriminantCase::Undecided:
+      break;
+  }
+  x.sign_disc_ftilde = x.sign_disc_f;
+  return decide_from_root_facts(x, rho_vs_one);
+}
+
+/// The 3 decided cases x 3 outcomes of rho, generated once from classify's table (verdict_of_case):
+/// the hot path is a lookup, nothing is decided twice.
+struct CaseTable {
+  Verdict v[4][3];
+  CaseTable() {
+    for (int c = 1; c < 4; ++c)
+      for (int r = -1; r <= 1; ++r) v[c][r + 1] = verdict_of_case(static_cast<DiscriminantCase>(c), r);
+  }
+};
+
+}  // namespace
+
+std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::optional<int> rho_vs_one) {
+  static const CaseTable table;
+  if (c == DiscriminantCase::Undecided) return std::nullopt;
+  if (discriminant_case_needs_rho(c) && !rho_vs_one) return std::nullopt;
+  // TwoPositive is E before the table looks at smallness (any size), so any rho gives the same.
+  return table.v[static_cast<int>(c)][(rho_vs_one ? *rho_vs_one : 1) + 1];
+}
+
+namespace {
+
+/// Is the FPU in round-to-nearest (the filters assume it)? One stmxcsr on x86-64 (SSE arithmetic).
+inline bool rounding_to_nearest() {
+#if defined(__SSE2_MATH__)
+  return (_mm_getcsr() & 0x6000u) == 0;  // MXCSR.RC, bits 13-14: 00 = to nearest
+#else
+  return std::fegetround() == FE_TONEAREST;
+#endif
+}
+
+/// Plugged into the static filter: compute the smallness signs only when the case needs them.
+bool needs_smallness(const QuarticSigns& q) { return discriminant_case_needs_rho(discriminant_case(q)); }
+
+template <class NT, class Get>
+SymmetricEntries<NT> entries(Get get) {
+  return {get(0, 0), get(1, 1), get(2, 2), get(0, 1), get(0, 2), get(1, 2), get(0, 3), get(1, 3), get(2, 3), get(3, 3)};
+}
+
+/// The inside certificate (math.md "Scenes"), P < 0 on the whole closed solid ellipsoid, in NT:
+/// then the surfaces do not meet, whatever the size of the body. Returns the signs of T (must be
+/// < 0) and of T^2 - 4KW (must be > 0) through sign().
+template <class NT, class Conv, class Sign>
+int inside_certificate(const Ellipsoid& e, const Paraboloid& p, Conv conv, Sign sign) {
+  const Matrix4& em = e.matrix();
+  const Matrix4& pm = p.matrix();
+  const auto ee = entries<NT>([&](int i, int j) { return conv(em, i, j); });
+  const auto pe = entries<NT>([&](int i, int j) { return conv(pm, i, j); });
+  SymmetricEntries<NT> adj{};  // only the 3x3 part (S2) is read
+  adj.q00 = pe.q11 * pe.q22 - pe.q12 * pe.q12;
+  adj.q11 = pe.q00 * pe.q22 - pe.q02 * pe.q02;
+  adj.q22 = pe.q00 * pe.q11 - pe.q01 * pe.q01;
+  adj.q01 = pe.q02 * pe.q12 - pe.q01 * pe.q22;
+  adj.q02 = pe.q01 * pe.q12 - pe.q02 * pe.q11;
+  adj.q12 = pe.q01 * pe.q02 - pe.q00 * pe.q12;
+  const ContainmentQuantities<NT> q(ee, pe, adj);
+  const int t = sign(q.inside_t()), g = sign(q.inside_gap());
+  if (t > 0 || g < 0) return -1;  // fails
+  if (t < 0 && g > 0) return 1;   // holds
+  return 0;                       // uncertain (or exactly on the boundary)
+}
+
+/// First with RunningBound (double with a certified error bound; enclosures for non-double entries),
+/// exactly only when that is uncertain: a body that is not small costs the exact test only near the
+/// certificate's boundary.
+bool inside_certificate_holds(const Ellipsoid& e, const Paraboloid& p) {
+  if (rounding_to_nearest()) {
+    const int r = inside_certificate<RunningBound>(
+        e, p,
+        [](const Matrix4& m, int i, int j) {
+          const auto iv = CGAL::to_interval(m(i, j));
+          return RunningBound::enclosing(iv.first, iv.second);
+        },
+        [](const RunningBound& x) { return x.sign(); });
+    if (r != 0) return r > 0;
+  }
+  return inside_certificate<Rational>(
+             e, p, [](const Matrix4& m, int i, int j) { return m(i, j); },
+             [](const Rational& x) { return static_cast<int>(CGAL::sign(x)); }) > 0;
+}
+
+/// After the classifier: a body that is not small and has no certificate may still be certified
+/// inside by the exact containment test (no contact for any size).
+ContactAnswer finish(const Verdict& v, DecidedBy by, const Ellipsoid& e, const Paraboloid& p) {
+  ContactAnswer a{contact_of(v), v.position, v.rule, by};
+  if (a.contact == Contact::Unknown && v.rule == Rule::NotSmallUnknown && inside_certificate_holds(e, p)) {
+    a.contact = Contact::None;
+    a.by = DecidedBy::ContainmentCertificate;
+  }
+  return a;
+}
+
+}  // namespace
+
+DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p) {
+  if (e.filter_doubles() && p.filter_doubles() && rounding_to_nearest()) {
+    const DecisionSigns d =
+        static_filter_discriminant_signs_normalized(*p.filter_doubles(), *e.filter_doubles(), &needs_smallness);
+    const DiscriminantCase c = discriminant_case(d.quartic);
+    std::optional<int> rho;
+    if (discriminant_case_needs_rho(c)) rho = compare_rho_with_one(d.vertex, d.graeffe);
+    if (auto v = verdict_from_discriminant_case(c, rho))
+      return {*v, c != DiscriminantCase::TwoPositive, DecidedBy::DiscriminantFilter};
+  }
+  return {decide_position(e, p), true, DecidedBy::FullClassifier};
+}
+
+Contact contact_of(const Verdict& v) {
+  switch (v.position) {
+    case Position::I:
+    case Position::E:
+      return Contact::None;
+    case Position::TI:
+    case Position::TE:
+      return Contact::Touching;
+    case Position::C:
+      return Contact::Crossing;
+    case Position::Unclassified:
+      break;
+  }
+  if (v.contact == 0) return Contact::None;
+  if (v.contact < 0) return Contact::Unknown;
+  // Not small, non-real roots: the surfaces meet (Finsler-Calabi). With f~ square-free no common
+  // real point is a tangency (math.md section 3: tangent <=> f~ has a multiple root), so every
+  // common point is a transversal crossing. Otherwise (a tangency besides a non-real pair, or a
+  // finding) only "they meet" is certain.
+  if (v.rule == Rule::NotSmallContact && v.tangent_negative == 0 && v.tangent_positive == 0 && v.nonreal_multiple == 0)
+    return Contact::Crossing;
+  return Contact::Meet;
+}
+
+ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p) {
+  const DiscriminantVerdict d = decide_by_discriminant(e, p);
+  return finish(d.verdict, d.by, e, p);
+}
+
+ContactChecker::ContactChecker(const Paraboloid& p) : scene_(std::make_unique<Scene>(p)) {}
+ContactChecker::~ContactChecker() = default;
+ContactChecker::ContactChecker(ContactChecker&&) noexcept = default;
+ContactChecker& ContactChecker::operator=(ContactChecker&&) noexcept = default;
+const Paraboloid& ContactChecker::paraboloid() const { return scene_->paraboloid(); }
+
+ContactAnswer ContactChecker::contact(const Ellipsoid& e) const {
+  if (const auto s = scene_->early_out(e)) {
+    // Inside (I, or not small: NotSmallUnknown) or outside (E): no common point in either case.
+    ContactAnswer a{Contact::None, s->position, s->rule, DecidedBy::SceneCertificate};
+    return a;
+  }
+  const DiscriminantVerdict d = decide_by_discriminant(e, scene_->paraboloid());
+  return finish(d.verdict, d.by, e, scene_->paraboloid());
+}
+
+// ------------------------------------------------------------------------------------------------
+// ExteriorTracker
+// ------------------------------------------------------------------------------------------------
+
+namespace {
+
+/// Relative slack of the smallness shortcut: the reference's rho must satisfy
+/// rho (1 + kSlack) < 1 (small) or rho (1 - kSlack) > 1 (not small), checked exactly once; a frame
+/// then only needs -det E certified within a factor (1 +- kSlack / 2) of the reference's.
+constexpr double kSlack = 0x1p-20;
+
+/// Indices of the 3x3 block M in a row-major 4x4 matrix (upper triangle).
+constexpr std::size_t kBlock[6] = {0, 1, 2, 5, 6, 10};
+
+/// -det E = e^T adj(M) e - e0 det M for a symmetric matrix given as 10 entries.
+template <class NT>
+NT minus_det(const SymmetricEntries<NT>& x) {
+  const NT a00 = x.q11 * x.q22 - x.q12 * x.q12, a11 = x.q00 * x.q22 - x.q02 * x.q02,
+           a22 = x.q00 * x.q11 - x.q01 * x.q01;
+  const NT a01 = x.q02 * x.q12 - x.q01 * x.q22, a02 = x.q01 * x.q12 - x.q02 * x.q11,
+           a12 = x.q01 * x.q02 - x.q00 * x.q12;
+  const NT d = x.q00 * a00 + x.q01 * a01 + x.q02 * a02;
+  const NT y0 = a00 * x.q0 + a01 * x.q1 + a02 * x.q2, y1 = a01 * x.q0 + a11 * x.q1 + a12 * x.q2,
+           y2 = a02 * x.q0 + a12 * x.q1 + a22 * x.q2;
+  return x.q0 * y0 + x.q1 * y1 + x.q2 * y2 - x.q33 * d;
+}
+
+}  // namespace
+
+ExteriorTracker::ExteriorTracker(const Paraboloid& p, const Ellipsoid& body) : p_(p) {
+  m_ref_ = body.matrix();
+  m_ref_doubles_ = body.doubles();
+  // Smallness of the body, exactly, once (translation invariant: it depends on M, A, det P and
+  // det E = -det M * k only).
+  const Classification c = classify_exact(body, p, Evidence::Full);
+  rho_vs_one_ = c.rho_vs_one;
+  // The shortcut for later frames: rho is proportional to -det E when M is fixed (s and det P are
+  // fixed), so a frame with the same M whose -det E is within a factor 1 +- kSlack of the
+  // reference's is on the same side of 1 as long as rho_ref (1 +- kSlack) is. Checked exactly.
+  if (rho_vs_one_ != 0) {
+    Quartic<Rational> f = c.f;
+    f[0] *= Rational(1) + Rational(rho_vs_one_ < 0 ? kSlack : -kSlack);
+    const auto shifted = compare_rho_with_one<Rational>(f, c.s);
+    ratio_ok_ = shifted && *shifted == rho_vs_one_;
+  }
+  const auto k = CGAL::to_interval(Rational(-c.f[0]));  // -det E > 0
+  det_lo_ = k.first;
+  det_hi_ = k.second;
+}
+
+std::optional<int> ExteriorTracker::frame_rho(const Ellipsoid& placed) {
+  if (!ratio_ok_ || !rounding_to_nearest()) return std::nullopt;
+  // Same shape block M (exactly)? Otherwise s, and with it rho's relation to det E, changed.
+  const auto& d = placed.doubles();
+  SymmetricEntries<RunningBound> x;
+  if (d && m_ref_doubles_) {
+    for (std::size_t i : kBlock)
+      if ((*d)[i] != (*m_ref_doubles_)[i]) return std::nullopt;
+    x = entries<RunningBound>([&](int i, int j) { return RunningBound((*d)[static_cast<std::size_t>(4 * i + j)]); });
+  } else {
+    for (std::size_t i : kBlock)
+      if (placed.matrix().a[i] != m_ref_.a[i]) return std::nullopt;
+    x = entries<RunningBound>([&](int i, int j) {
+      const auto iv = CGAL::to_interval(placed.matrix()(i, j));
+      return RunningBound::enclosing(iv.first, iv.second);
+    });
+  }
+  const RunningBound k = minus_det(x);
+  const double v = k.value(), b = k.error_bound();
+  // The comparisons below are rounded, but the slack kSlack/2 dwarfs those few ulps.
+  if (rho_vs_one_ < 0 && v + b <= det_lo_ * (1 + kSlack / 2)) return rho_vs_one_;  // -det E' <= (1+s) K_ref
+  if (rho_vs_one_ > 0 && v - b >= det_hi_ * (1 - kSlack / 2)) return rho_vs_one_;  // -det E' >= (1-s) K_ref
+  return std::nullopt;
+}
+
+ExteriorTracker::Frame ExteriorTracker::update(const Ellipsoid& placed) {
+  ++counts_.frames;
+  std::optional<Verdict> v;
+  DecidedBy by = DecidedBy::FullClassifier;
+  bool filter_tried = false;
+  if (placed.filter_doubles() && p_.filter_doubles() && rounding_to_nearest()) {
+    // f and Disc(f) only: smallness comes from the reference (frame_rho), never from the filter.
+    const DecisionSigns d = static_filter_discriminant_signs_normalized(*p_.filter_doubles(), *placed.filter_doubles());
+    const DiscriminantCase c = discriminant_case(d.quartic);
+    filter_tried = c != DiscriminantCase::Undecided;
+    std::optional<int> rho;
+    if (discriminant_case_needs_rho(c)) {
+      rho = frame_rho(placed);
+      if (!rho) ++counts_.rho_recomputed;
+    }
+    v = verdict_from_discriminant_case(c, rho);
+    if (v) by = DecidedBy::DiscriminantFilter;
+  }
+  if (!v) {
+    // The case was decided but rho was not: the one-shot path computes smallness in the filter.
+    const DiscriminantVerdict r =
+        filter_tried ? decide_by_discriminant(placed, p_)
+                     : DiscriminantVerdict{decide_position(placed, p_), true, DecidedBy::FullClassifier};
+    v = r.verdict;
+    by = r.by;
+  }
+  ++(by == DecidedBy::DiscriminantFilter ? counts_.by_filter : counts_.by_fallback);
+  Frame out;
+  out.position = v->position;
+  out.rule = v->rule;
+  out.contact = v->contact;
+  out.by = by;
+  out.changed = last_ && *last_ != out.position;
+  last_ = out.position;
+  return out;
+}
+
+}  // namespace relpos
