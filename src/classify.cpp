@@ -369,34 +369,38 @@ struct ExactData {
 /// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
 Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact) {
   Verdict v;
-  if (use_filter && e.doubles() && p.doubles()) {
-    v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
-    DecisionSigns d;                // uncertain unless the inputs are in the filter's range
-    // Both double stages assume round-to-nearest; a caller inside an upward-rounding block (CGAL
+  DecisionSigns d;  // every sign certified so far, by any stage (uncertain until then)
+  if (use_filter) {
+    // The double stages assume round-to-nearest; a caller inside an upward-rounding block (CGAL
     // interval code) gets the interval stage instead.
-    const bool in_range = e.filter_doubles() && p.filter_doubles() && rounding_to_nearest();
-    if (in_range) d = static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles());
-    if (decide_from_signs(d, v)) return v;
-    if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
+    const bool nearest = rounding_to_nearest();
+    if (e.doubles() && p.doubles()) {
+      v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
+      const bool in_range = e.filter_doubles() && p.filter_doubles() && nearest;
+      if (in_range) d = static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles());
+      if (decide_from_signs(d, v)) return v;
+      if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
+        v.stage = Stage::SemiStaticDouble;
+        merge_certain(d, semi_static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles()));
+        if (decide_from_signs(d, v)) return v;
+      }
+      const auto disc = detail::certain(d.quartic.g0);
+      if (!disc || *disc == 0) {  // stage 1b: a witness of Disc(f) = 0 on machine integers
+        v.stage = Stage::MultipleRootWitness;
+        if (decide_from_witness(*p.doubles(), *e.doubles(), d, v)) return v;
+      }
+    } else if (nearest) {  // stage 1' for rational entries: double enclosures of the entries
       v.stage = Stage::SemiStaticDouble;
-      merge_certain(d, semi_static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles()));
+      d = semi_static_filter_signs(p.matrix(), e.matrix());
       if (decide_from_signs(d, v)) return v;
     }
-    const auto disc = detail::certain(d.quartic.g0);
-    if (!disc || *disc == 0) {  // stage 1b: a witness of Disc(f) = 0 on machine integers
-      v.stage = Stage::MultipleRootWitness;
-      if (decide_from_witness(*p.doubles(), *e.doubles(), d, v)) return v;
-    }
-  }
-  if (use_filter) {  // stage 2: interval arithmetic
-    v.stage = Stage::Interval;
+    v.stage = Stage::Interval;               // stage 2: interval arithmetic
     CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false> needs rounding towards +inf
     const bool dbl = e.doubles() && p.doubles();
     const MatrixOf<Interval> pi = dbl ? to_intervals(*p.doubles()) : to_intervals(p.matrix());
     const MatrixOf<Interval> ei = dbl ? to_intervals(*e.doubles()) : to_intervals(e.matrix());
-    if (decide_from_signs(signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)),
-                          v))
-      return v;
+    merge_certain(d, signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)));
+    if (decide_from_signs(d, v)) return v;
   }
   if (!exact) exact.emplace(e, p);
   v.stage = Stage::ExactSigns;  // stage 3: exact integer signs of the same polynomials

@@ -1,5 +1,7 @@
 #include "relpos/semi_static_filter.hpp"
 
+#include <gmp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -40,6 +42,7 @@ struct Lanes {
 template <class NT>
 struct View {
   std::array<NT, 16> a;
+  View() = default;
   explicit View(const DoubleMatrix4& m) {
     for (std::size_t i = 0; i < 16; ++i) a[i] = NT(m[i]);  // exact inputs
   }
@@ -50,6 +53,9 @@ constexpr int kQuantities = 13;           // f0..f4, g2[0..2], g1[0..1], g0, ver
 constexpr double kEntryFloor = 0x1p-60;   // smallest non-zero |entry| accepted (degree 4: >= 2^-240)
 constexpr double kCoeffFloor = 0x1p-160;  // smallest non-zero scaled |f_i|, |s_i| (degree 6: >= 2^-960)
 
+template <class NT>
+bool evaluate(const View<NT>& p, const View<NT>& e, NT out[kQuantities]);
+
 /// The decision quantities in NT. Returns false (nothing certified) when a guard fails: an entry or
 /// a scaled coefficient of non-zero magnitude below its floor (the no-underflow argument above).
 /// The powers of two are data-dependent, but every scaling adds the same count whatever its value,
@@ -59,7 +65,11 @@ bool evaluate(const DoubleMatrix4& pn, const DoubleMatrix4& en, NT out[kQuantiti
   for (const DoubleMatrix4* m : {&pn, &en})
     for (double x : *m)
       if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return false;
-  const View<NT> p(pn), e(en);
+  return evaluate(View<NT>(pn), View<NT>(en), out);
+}
+
+template <class NT>
+bool evaluate(const View<NT>& p, const View<NT>& e, NT out[kQuantities]) {
   Quartic<NT> f = characteristic_polynomial<NT>(p, e);
   Quadratic<NT> s = special_polynomial<NT>(p, e);
   // Balance the quartic (lambda = 2^t mu, |f4| 2^(4t) ~ |f0|) and bring f and s near 1, by powers of
@@ -110,20 +120,14 @@ const std::array<int, kQuantities>& counts() {
   return c;
 }
 
+USign usign(int s) { return s > 0 ? USign(CGAL::POSITIVE) : s < 0 ? USign(CGAL::NEGATIVE) : USign::indeterminate(); }
+
 USign certified(const Lanes& x, int count) {
-  const int s = RunningBound::certain_sign(x.value(), x.magnitude(), count);
-  return s > 0 ? USign(CGAL::POSITIVE) : s < 0 ? USign(CGAL::NEGATIVE) : USign::indeterminate();
+  return usign(RunningBound::certain_sign(x.value(), x.magnitude(), count));
 }
 
-}  // namespace
-
-DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
-  const std::array<int, kQuantities>& d = counts();
-  Lanes q[kQuantities];
+DecisionSigns assemble(const USign c[kQuantities]) {
   DecisionSigns out;
-  if (!evaluate(pn, en, q)) return out;  // uncertain
-  USign c[kQuantities];
-  for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], d[static_cast<std::size_t>(i)]);
   for (int i = 0; i < 5; ++i) out.quartic.f[i] = c[i];
   for (int i = 0; i < 3; ++i) out.quartic.g2[i] = c[5 + i];
   for (int i = 0; i < 2; ++i) out.quartic.g1[i] = c[8 + i];
@@ -131,6 +135,51 @@ DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const
   out.vertex = c[11];
   out.graeffe = c[12];
   return out;
+}
+
+/// Enclosures of the entries of m scaled by a power of two (largest near 1): GMP's mpq_get_d
+/// truncates, |q - v| < ulp(v) <= 2^-52 |v|; the scaling is exact for entries above the floor; the
+/// radius 2^-51 |v| also covers the rounding of v -+ radius. False if an entry is out of range.
+bool enclosed(const Matrix4& m, View<RunningBound>& out) {
+  std::array<double, 16> v;
+  double mx = 0;
+  for (std::size_t i = 0; i < 16; ++i) {
+    v[i] = mpq_get_d(m.a[i].mpq());
+    mx = std::max(mx, std::fabs(v[i]));
+  }
+  if (!(mx > 0 && mx <= 0x1p1000)) return false;
+  const double k = std::ldexp(1.0, -std::ilogb(mx) - 1);
+  for (std::size_t i = 0; i < 16; ++i) {
+    if (CGAL::is_zero(m.a[i])) {
+      out.a[i] = RunningBound(0);
+      continue;
+    }
+    const double x = v[i] * k;
+    if (!(std::fabs(x) >= kEntryFloor)) return false;  // also catches an entry that truncated to 0
+    const double r = std::fabs(x) * 0x1p-51;
+    out.a[i] = RunningBound::enclosing(x - r, x + r);
+  }
+  return true;
+}
+
+}  // namespace
+
+DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
+  const std::array<int, kQuantities>& d = counts();
+  Lanes q[kQuantities];
+  if (!evaluate(pn, en, q)) return DecisionSigns{};  // uncertain
+  USign c[kQuantities];
+  for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], d[static_cast<std::size_t>(i)]);
+  return assemble(c);
+}
+
+DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e) {
+  View<RunningBound> vp, ve;
+  RunningBound q[kQuantities];
+  if (!enclosed(p, vp) || !enclosed(e, ve) || !evaluate(vp, ve, q)) return DecisionSigns{};
+  USign c[kQuantities];
+  for (int i = 0; i < kQuantities; ++i) c[i] = usign(q[i].sign());
+  return assemble(c);
 }
 
 }  // namespace relpos

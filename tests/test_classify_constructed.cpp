@@ -94,7 +94,7 @@ TEST_CASE("each position in general position, standard frame", "[classify][tange
     for (const Config& k : tangency_family(tp, r, 3)) {
       Expect x = expect_from(k);
       // Generic, moderate entries: the interval filter decides everything but the tangencies.
-      x.expect_interval_stage = k.expected != Position::TI && k.expected != Position::TE;
+      x.expect_filter_stage = k.expected != Position::TI && k.expected != Position::TE;
       check_all(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()), x);
     }
   }

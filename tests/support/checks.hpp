@@ -67,7 +67,7 @@ struct Expect {
   Quartic<Rational> f;  ///< det(l P + E) of the sign-normalized input, by construction
   Quadratic<Rational> s;
   std::array<Rational, 2> s_roots;     ///< the (rational) roots of s
-  bool expect_interval_stage = false;  ///< generic, well-conditioned: the filter must decide
+  bool expect_filter_stage = false;  ///< generic, well-conditioned: the filter must decide
 };
 
 inline Expect expect_from(const Config& k) {
@@ -239,7 +239,9 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
     for (const auto& r : c.roots)
       if (r.tangency()) CHECK(r.sign == -1);
   }
-  if (x.expect_interval_stage) CHECK(c.stage == relpos::Stage::Interval);
+  if (x.expect_filter_stage)  // a float filter, not exact integers (rational inputs: 1' or 2)
+    CHECK((c.stage == relpos::Stage::SemiStaticDouble || c.stage == relpos::Stage::Interval ||
+           c.stage == relpos::Stage::StaticDouble));
 }
 
 /// classify() and classify_exact() must agree on everything but the stage.
