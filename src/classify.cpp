@@ -4,6 +4,7 @@
 #include <gmp.h>
 
 #include <cfenv>
+#include <cfloat>
 #include <cmath>
 #if defined(__SSE2_MATH__)
 #include <xmmintrin.h>
@@ -139,19 +140,10 @@ struct MatrixOf {
 
 using Interval = CGAL::Interval_nt<false>;
 
-/// Power-of-two exponent that brings the largest entry of m near 1 (guards interval overflow and
-/// underflow; a positive scaling of either matrix changes no decision, math.md section 1).
-long balancing_exponent(const Matrix4& m) {
-  double mx = 0;
-  for (const auto& q : m.a) mx = std::max(mx, std::fabs(CGAL::to_double(q)));
-  if (mx == 0 || !std::isfinite(mx)) return 0;
-  int e;
-  std::frexp(mx, &e);
-  return -static_cast<long>(e);
-}
-
-/// Same, from a matrix of exact doubles (no rational arithmetic): a point interval times a power
-/// of two encloses the scaled entry even if the product underflows.
+/// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
+/// (guards interval overflow and underflow; a positive scaling of either matrix changes no decision,
+/// math.md section 1): a point interval times a power of two encloses the scaled entry even if the
+/// product underflows.
 MatrixOf<Interval> to_intervals(const DoubleMatrix4& m) {
   double mx = 0;
   for (double x : m) mx = std::max(mx, std::fabs(x));
@@ -163,17 +155,33 @@ MatrixOf<Interval> to_intervals(const DoubleMatrix4& m) {
   return out;
 }
 
+/// Enclosures of the entries of m scaled by 2^k (largest near 1) without rational temporaries:
+/// mpq_get_d truncates towards zero, so q lies between v and the next double away from zero (or
+/// within one subnormal step when v is tiny); the interval product with 2^k is exact or rounded
+/// outwards. CGAL::to_interval on a scaled copy cost several microseconds per pair in allocations.
 MatrixOf<Interval> to_intervals(const Matrix4& m) {
-  const long k = balancing_exponent(m);
+  std::array<double, 16> v;
+  double mx = 0;
+  for (std::size_t i = 0; i < 16; ++i) {
+    v[i] = mpq_get_d(m.a[i].mpq());
+    mx = std::max(mx, std::fabs(v[i]));
+  }
+  int e = 0;
+  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
+  const Interval scale(std::ldexp(1.0, -e));
   MatrixOf<Interval> out;
   for (std::size_t i = 0; i < 16; ++i) {
-    // Gmpq is reference-counted: write only into a fresh object, never into a shared one.
-    Rational q;
-    if (k >= 0)
-      mpq_mul_2exp(q.mpq(), m.a[i].mpq(), static_cast<mp_bitcnt_t>(k));
-    else
-      mpq_div_2exp(q.mpq(), m.a[i].mpq(), static_cast<mp_bitcnt_t>(-k));
-    out.a[i] = Interval(CGAL::to_interval(q));
+    const double x = v[i];
+    if (CGAL::is_zero(m.a[i])) {
+      out.a[i] = Interval(0);
+    } else if (std::fabs(x) >= DBL_MIN && std::isfinite(x)) {
+      const double next = std::nextafter(x, x > 0 ? HUGE_VAL : -HUGE_VAL);  // away from zero
+      out.a[i] = Interval(std::min(x, next), std::max(x, next)) * scale;
+    } else if (std::isfinite(x)) {  // |q| below DBL_MIN
+      out.a[i] = Interval(x - DBL_TRUE_MIN, x + DBL_TRUE_MIN) * scale;
+    } else {  // beyond the double range: no information
+      out.a[i] = Interval::largest();
+    }
   }
   return out;
 }
