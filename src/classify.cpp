@@ -172,8 +172,15 @@ MatrixOf<Interval> to_intervals(const Matrix4& m) {
   MatrixOf<Interval> out;
   for (std::size_t i = 0; i < 16; ++i) {
     const double x = v[i];
-    if (CGAL::is_zero(m.a[i])) {
+    const mpq_srcptr q = m.a[i].mpq();
+    if (mpq_sgn(q) == 0) {
       out.a[i] = Interval(0);
+      continue;
+    }
+    const mp_bitcnt_t den_bits = mpz_sizeinbase(mpq_denref(q), 2);
+    if (mpz_sizeinbase(mpq_numref(q), 2) <= 53 && mpz_scan1(mpq_denref(q), 0) == den_bits - 1 &&
+        std::fabs(x) >= DBL_MIN) {  // a double (53-bit numerator over a power of two): exact
+      out.a[i] = Interval(x) * scale;
     } else if (std::fabs(x) >= DBL_MIN && std::isfinite(x)) {
       const double next = std::nextafter(x, x > 0 ? HUGE_VAL : -HUGE_VAL);  // away from zero
       out.a[i] = Interval(std::min(x, next), std::max(x, next)) * scale;
