@@ -41,25 +41,39 @@ namespace {
 using Interval = CGAL::Interval_nt<false>;  // paraboloid constants only (needs Protect_FPU_rounding)
 using RB = RunningBound;                    // the per-body filter (running_bound.hpp)
 
-/// RunningBound without its count: value and magnitude only. The count of each quantity the
-/// certificates test depends on the program and on the counts of the inputs, never on their values,
-/// so Frame computes it once, by running the same code on RunningBound with exact inputs (count 0),
-/// and the hot path for bodies given by doubles carries (v, a) alone.
+/// RunningBound without its count: value and magnitude only, as one SSE register (a product is one
+/// mulpd, a sum one addpd). The count of each quantity the certificates test depends on the program
+/// and on the counts of the inputs, never on their values, so Frame computes it once, by running the
+/// same code on RunningBound with exact inputs (count 0), and the hot path for bodies given by
+/// doubles carries (v, a) alone. Unlike RunningBound there is no magnitude floor: the fast path is
+/// taken only when every non-zero input magnitude lies in [2^-45, 2^40] (kFastLow, kFastHigh), so a
+/// product of at most 20 of them (the certificates' largest degree) stays within [2^-900, 2^800]:
+/// no magnitude underflows or overflows, and a value's underflow error (below 2^-1075 < u 2^-1000)
+/// is absorbed by the count as in RunningBound.
+typedef double V2 __attribute__((vector_size(16)));  // {value, magnitude}
+constexpr double kFastLow = 0x1p-45, kFastHigh = 0x1p40;
+
 struct Fast {
-  double v, a;
-  Fast(double x = 0) : v(x), a(std::fabs(x)) {}  // NOLINT: an exact input, like RunningBound
-  Fast(double v_, double a_, int) : v(v_), a(a_) {}
-  static Fast of(const RB& x) { return {x.value(), x.magnitude(), 0}; }
-  friend Fast operator+(const Fast& x, const Fast& y) { return {x.v + y.v, x.a + y.a, 0}; }
-  friend Fast operator-(const Fast& x, const Fast& y) { return {x.v - y.v, x.a + y.a, 0}; }
-  friend Fast operator*(const Fast& x, const Fast& y) {
-    // As RunningBound: a zero magnitude is an exact zero and stays zero (flooring it would make the
-    // next products underflow, and every underflow costs a microcode assist).
-    const double m = x.a * y.a;
-    return {x.v * y.v, (x.a == 0 || y.a == 0) ? 0.0 : std::max(m, 0x1p-1022), 0};
+  V2 x;
+  Fast(double c = 0) : x{c, std::fabs(c)} {}  // NOLINT: an exact input, like RunningBound
+  explicit Fast(V2 y) : x(y) {}
+  static Fast of(const RB& r) { return Fast(V2{r.value(), r.magnitude()}); }
+  double v() const { return x[0]; }
+  double a() const { return x[1]; }
+  friend Fast operator+(const Fast& p, const Fast& q) { return Fast(p.x + q.x); }
+  friend Fast operator-(const Fast& p, const Fast& q) {
+    const V2 flip = {-1.0, 1.0};  // negate the value lane only: magnitudes add
+    return Fast(p.x + q.x * flip);
   }
-  friend Fast operator-(const Fast& x) { return {-x.v, x.a, 0}; }
+  friend Fast operator*(const Fast& p, const Fast& q) { return Fast(p.x * q.x); }
+  friend Fast operator-(const Fast& p) {
+    const V2 flip = {-1.0, 1.0};
+    return Fast(p.x * flip);
+  }
 };
+
+/// Is every non-zero magnitude in the fast path's range?
+inline bool fast_range(double a) { return a == 0 || (a >= kFastLow && a <= kFastHigh); }
 
 /// The quantities a certificate tests, in the order of Counts::of.
 enum Tested { kPn, kOutsideGap, kInsideT, kInsideGap, kRho1, kRho2, kTested };
@@ -110,6 +124,24 @@ constexpr SceneVerdict kInsideSmall{Position::I, Rule::AllRootsNegative, 0, Scen
 constexpr SceneVerdict kInsideNotSmall{Position::Unclassified, Rule::NotSmallUnknown, -1,
                                        SceneStage::InsideCertificate};
 
+/// What an early-out proved, in one byte (an optional<SceneVerdict> return cost a store-forwarding
+/// stall per body).
+enum class Early : unsigned char { None, Outside, InsideSmall, InsideNotSmall };
+
+std::optional<SceneVerdict> verdict_of(Early x) {
+  switch (x) {
+    case Early::Outside:
+      return kOutside;
+    case Early::InsideSmall:
+      return kInsideSmall;
+    case Early::InsideNotSmall:
+      return kInsideNotSmall;
+    case Early::None:
+      break;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 /// The paraboloid, scaled by a power of two, as RunningBound enclosures of exact values.
@@ -124,6 +156,7 @@ struct Scene::Frame {
   Fast fdet_p, flambda_max, frho_factor;
   std::array<int, kTested> sphere_counts{}, general_counts{};
   bool diagonal_a = false;  ///< A diagonal: the certificates skip its zero entries
+  bool fast_ok = false;     ///< every non-zero fast constant within [kFastLow, kFastHigh]
   void compute_counts();
 
   explicit Frame(const Paraboloid& par) {
@@ -169,17 +202,22 @@ struct Scene::Frame {
     fdet_p = Fast::of(det_p);
     flambda_max = Fast::of(lambda_max);
     frho_factor = Fast::of(rho_factor);
+    fast_ok = true;
+    for (const auto* e : {&fp, &fadj_a})
+      for (const Fast* c : {&e->q00, &e->q11, &e->q22, &e->q01, &e->q02, &e->q12, &e->q0, &e->q1, &e->q2, &e->q33})
+        fast_ok = fast_ok && fast_range(c->a());
+    for (const Fast* c : {&fdet_p, &flambda_max, &frho_factor}) fast_ok = fast_ok && fast_range(c->a());
     compute_counts();
   }
 };
 
 namespace {
 
-std::optional<SceneVerdict> inside_verdict(int rho_sign) {
+Early inside_verdict(int rho_sign) {
   // Interior: the core's table gives I when rho <= 1 and NotSmallUnknown when rho > 1 (math.md).
-  if (rho_sign < 0) return kInsideSmall;
-  if (rho_sign > 0) return kInsideNotSmall;
-  return std::nullopt;  // rho = 1 or too close to tell: the core decides
+  if (rho_sign < 0) return Early::InsideSmall;
+  if (rho_sign > 0) return Early::InsideNotSmall;
+  return Early::None;  // rho = 1 or too close to tell: the core decides
 }
 
 USign usign(int s) { return s == 0 ? USign::indeterminate() : USign(s > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE); }
@@ -187,13 +225,13 @@ USign usign(int s) { return s == 0 ? USign::indeterminate() : USign(s > 0 ? CGAL
 /// The certificates for a sphere (M = m I), written once for every filter type: sign(x, i) is the
 /// certified sign of the Tested quantity i (0 when uncertain).
 template <class NT, class Sign>
-std::optional<SceneVerdict> certify_sphere(const SymmetricEntries<NT>& x, const SymmetricEntries<NT>& p,
-                                           bool diagonal_a, const NT& lambda_max, const NT& rho_factor, Sign sign) {
+Early certify_sphere(const SymmetricEntries<NT>& x, const SymmetricEntries<NT>& p, bool diagonal_a,
+                     const NT& lambda_max, const NT& rho_factor, Sign sign) {
   const SphereQuantities<NT> q =
       diagonal_a ? SphereQuantities<NT>(x, p, typename SphereQuantities<NT>::DiagonalA{}) : SphereQuantities<NT>(x, p);
-  if (sign(q.Pnp, kPn) > 0 && sign(q.outside_gap(), kOutsideGap) > 0) return kOutside;
+  if (sign(q.Pnp, kPn) > 0 && sign(q.outside_gap(), kOutsideGap) > 0) return Early::Outside;
   if (!(sign(q.inside_t(lambda_max), kInsideT) < 0 && sign(q.inside_gap(lambda_max), kInsideGap) > 0))
-    return std::nullopt;
+    return Early::None;
   // rho = (K/D) S2 mu_max^2 / |det P| (smallness.hpp's number) is (K'/m^2) rho_factor for M = m I,
   // so rho - 1 has the sign of K' rho_factor - m^2.
   return inside_verdict(sign(q.Kp * rho_factor - q.m * q.m, kRho1));
@@ -201,13 +239,12 @@ std::optional<SceneVerdict> certify_sphere(const SymmetricEntries<NT>& x, const 
 
 /// The certificates for a general ellipsoid.
 template <class NT, class Sign>
-std::optional<SceneVerdict> certify_general(const SymmetricEntries<NT>& x, const SymmetricEntries<NT>& p,
-                                            bool diagonal_a, const SymmetricEntries<NT>& adj_a, const NT& det_p,
-                                            Sign sign) {
+Early certify_general(const SymmetricEntries<NT>& x, const SymmetricEntries<NT>& p, bool diagonal_a,
+                      const SymmetricEntries<NT>& adj_a, const NT& det_p, Sign sign) {
   using Q = ContainmentQuantities<NT>;
   const Q q = diagonal_a ? Q(x, p, adj_a, typename Q::DiagonalA{}) : Q(x, p, adj_a);
-  if (sign(q.Pn, kPn) > 0 && sign(q.outside_gap(), kOutsideGap) > 0) return kOutside;
-  if (!(sign(q.inside_t(), kInsideT) < 0 && sign(q.inside_gap(), kInsideGap) > 0)) return std::nullopt;
+  if (sign(q.Pn, kPn) > 0 && sign(q.outside_gap(), kOutsideGap) > 0) return Early::Outside;
+  if (!(sign(q.inside_t(), kInsideT) < 0 && sign(q.inside_gap(), kInsideGap) > 0)) return Early::None;
   // rho against 1 with the core's two smallness polynomials (smallness.hpp), f0 = det E = -K,
   // f4 = det P, s = (D, S1, S2).
   const SmallnessQuantities<NT> sm(Quartic<NT>{-q.K, NT(0), NT(0), NT(0), det_p}, Quadratic<NT>{q.D, q.S1, q.S2});
@@ -250,7 +287,7 @@ double scale_for(double mx) {
 /// The early-outs. Bodies given by exact doubles in range take the fast path (Fast, counts from
 /// Frame); the others carry full RunningBounds. Rounding to nearest, no mode switch. A certificate
 /// holds only when every sign it needs is certain.
-[[gnu::flatten]] std::optional<SceneVerdict> early_out_filter(const Scene::Frame& f, const Ellipsoid& e) {
+[[gnu::flatten]] Early early_out_filter(const Scene::Frame& f, const Ellipsoid& e) {
   SymmetricEntries<RB> x;
   bool sphere;
   if (const auto& d = e.doubles()) {
@@ -259,14 +296,16 @@ double scale_for(double mx) {
     double mx = 0;
     for (std::size_t i : {0, 1, 2, 3, 5, 6, 7, 10, 11, 15}) mx = std::max(mx, std::fabs(m[i]));
     const double s = scale_for(mx);
-    if (s == 1) {  // the hot path: exact inputs, counts known
+    bool fast = s == 1 && f.fast_ok;
+    for (std::size_t i : {0, 1, 2, 3, 5, 6, 7, 10, 11, 15}) fast = fast && fast_range(std::fabs(m[i]));
+    if (fast) {  // the hot path: exact inputs in range, counts known
       const SymmetricEntries<Fast> fx = entries<Fast>([&](int i, int j) { return Fast(m[4 * i + j]); });
       if (sphere)
         return certify_sphere(fx, f.fp, f.diagonal_a, f.flambda_max, f.frho_factor, [&](const Fast& v, int i) {
-          return RB::certain_sign(v.v, v.a, f.sphere_counts[static_cast<std::size_t>(i)]);
+          return RB::certain_sign(v.v(), v.a(), f.sphere_counts[static_cast<std::size_t>(i)]);
         });
       return certify_general(fx, f.fp, f.diagonal_a, f.fadj_a, f.fdet_p, [&](const Fast& v, int i) {
-        return RB::certain_sign(v.v, v.a, f.general_counts[static_cast<std::size_t>(i)]);
+        return RB::certain_sign(v.v(), v.a(), f.general_counts[static_cast<std::size_t>(i)]);
       });
     }
     const double inv = 1 / s;  // exact: s is a power of two
@@ -287,7 +326,7 @@ double scale_for(double mx) {
       v[i] = mpq_get_d(m.a[i].mpq());
       mx = std::max(mx, std::fabs(v[i]));
     }
-    if (!(mx <= 0x1p1000)) return std::nullopt;
+    if (!(mx <= 0x1p1000)) return Early::None;
     const double s = scale_for(mx);
     // |q s - v s| <= 2^-52 |v s| + 2^-1074 s, and v s is exact unless it underflows (one more
     // subnormal step).
@@ -309,14 +348,14 @@ Scene::Scene(const Paraboloid& p) : p_(p), frame_(std::make_shared<const Frame>(
 // The filter's error bounds, like the core's static filter, assume rounding to nearest. A caller may
 // be inside a CGAL interval block (rounding upward): then switch to nearest for the call.
 std::optional<SceneVerdict> Scene::early_out(const Ellipsoid& e) const {
-  if (CGAL::FPU_get_cw() == CGAL_FE_TONEAREST) return early_out_filter(*frame_, e);
+  if (CGAL::FPU_get_cw() == CGAL_FE_TONEAREST) return verdict_of(early_out_filter(*frame_, e));
   CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-  return early_out_filter(*frame_, e);
+  return verdict_of(early_out_filter(*frame_, e));
 }
 
 SceneVerdict Scene::classify(const Ellipsoid& e) const {
   CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-  if (auto v = early_out_filter(*frame_, e)) return *v;
+  if (auto v = verdict_of(early_out_filter(*frame_, e))) return *v;
   return scene_verdict(decide_position(e, p_));
 }
 
@@ -355,9 +394,11 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
               const char* ahead = reinterpret_cast<const char*>(&bodies[i + 8].doubles());
               __builtin_prefetch(ahead);
               __builtin_prefetch(ahead + 64);
+              __builtin_prefetch(ahead + 128);  // the optional's engaged flag follows the 16 doubles
             }
-            if (auto v = early_out_filter(frame, bodies[i]))
-              out[i] = *v;
+            const Early x = early_out_filter(frame, bodies[i]);
+            if (x != Early::None)
+              out[i] = *verdict_of(x);
             else
               pending.push_back(i);
           }
