@@ -20,6 +20,7 @@
 
 #include "motion.hpp"
 #include "relpos/classify.hpp"
+#include "relpos/contact.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
@@ -72,6 +73,7 @@ void print_main_help(std::ostream& os) {
 void print_classify_help(std::ostream& os) {
   os << "Usage: relpos classify (--ellipsoid Q | --sphere X,Y,Z,R)\n"
         "                       (--paraboloid Q | --standard-paraboloid A,B) [--digits N] [--json]\n"
+        "                       [--contact-only]\n"
         "\n"
         "Classify one pair and print a report: the position and its meaning, the deciding rule,\n"
         "smallness (rho against 1), the characteristic polynomial f with exact coefficients, its real\n"
@@ -91,6 +93,10 @@ void print_classify_help(std::ostream& os) {
         "  --standard-paraboloid A,B  shorthand: x^2/A^2 + y^2/B^2 = z (vertex at the origin, axis z)\n"
         "  --digits N                 significant digits of the approximations (default 12, 1..1000)\n"
         "  --json                     print the JSON object of `relpos batch` instead of the report\n"
+        "  --contact-only             answer only whether the surfaces meet: none, touching, crossing,\n"
+        "                             meet (kind not certified) or unknown; certified like the position,\n"
+        "                             and also for bodies that are not small when a containment\n"
+        "                             certificate proves they do not meet (doc/contact.md)\n"
         "  -h, --help                 this help\n"
         "\n"
         "Example:\n"
@@ -101,7 +107,7 @@ void print_classify_help(std::ostream& os) {
 }
 
 void print_batch_help(std::ostream& os) {
-  os << "Usage: relpos batch [FILE|-] [--digits N]\n"
+  os << "Usage: relpos batch [FILE|-] [--digits N] [--contact-only]\n"
         "\n"
         "Read JSON Lines from FILE (or standard input when FILE is '-' or absent), one pair per line:\n"
         "  {\"id\": ANY, \"ellipsoid\": Q, \"paraboloid\": Q, \"comment\": ANY}\n"
@@ -113,8 +119,10 @@ void print_batch_help(std::ostream& os) {
         "The id is echoed back; a missing id is replaced by the 1-based line number.\n"
         "\n"
         "Options:\n"
-        "  --digits N   significant digits of root approximations (default 12, 1..1000)\n"
-        "  -h, --help   this help\n"
+        "  --digits N       significant digits of root approximations (default 12, 1..1000)\n"
+        "  --contact-only   answer {\"id\", \"contact\", \"position\", \"rule\", \"decided_by\"} only:\n"
+        "                   contact is none, touching, crossing, meet or unknown (doc/contact.md)\n"
+        "  -h, --help       this help\n"
         "\n"
      << kExitCodes;
 }
@@ -212,12 +220,22 @@ void write_json_line(const Json& j) {
   std::cout.flush();
 }
 
+/// The contact-only answer as JSON (doc/contact.md).
+Json contact_json(const relpos::ContactAnswer& a) {
+  Json j;
+  j["contact"] = relpos::to_string(a.contact);
+  j["position"] = relpos::to_string(a.position);
+  j["rule"] = relpos::describe(a.rule);
+  j["decided_by"] = relpos::to_string(a.by);
+  return j;
+}
+
 // ------------------------------------------------------------------------------------------------
 
 int run_classify(Args& args) {
   std::optional<std::string> ellipsoid, paraboloid, sphere, standard;
   int digits = 12;
-  bool json = false;
+  bool json = false, contact_only = false;
   while (!args.done()) {
     std::string v;
     if (args.take("--help", nullptr) || args.take("-h", nullptr)) {
@@ -235,6 +253,8 @@ int run_classify(Args& args) {
       digits = parse_digits(v);
     } else if (args.take("--json", nullptr)) {
       json = true;
+    } else if (args.take("--contact-only", nullptr)) {
+      contact_only = true;
     } else {
       const std::string a = args.next();
       throw UsageError{(a.rfind("-", 0) == 0 ? "unknown option '" : "unexpected argument '") + a + "'"};
@@ -273,6 +293,17 @@ int run_classify(Args& args) {
       }
     }
     relpos::io::check_pair_size(*e, *p);  // doc/cli.md, Limits
+    if (contact_only) {
+      const Json j = contact_json(relpos::contact(*e, *p));
+      if (json)
+        write_json_line(j);
+      else
+        std::cout << "contact: " << j["contact"].get<std::string>() << " (position " << j["position"].get<std::string>()
+                  << "; " << j["rule"].get<std::string>() << "; decided by " << j["decided_by"].get<std::string>()
+                  << ")\n"
+                  << std::flush;
+      return std::cout ? kExitOk : kExitIo;
+    }
     const relpos::Classification c = relpos::classify(*e, *p, relpos::Evidence::Full);
     if (json)
       write_json_line(relpos::io::classification_to_json(c, options));
@@ -295,7 +326,8 @@ bool is_blank(const std::string& s) {
 }
 
 /// The answer to one input line (never throws).
-Json answer_line(const std::string& line, long line_number, const relpos::io::RenderOptions& options) {
+Json answer_line(const std::string& line, long line_number, const relpos::io::RenderOptions& options,
+                 bool contact_only) {
   Json id = line_number;
   try {
     if (is_blank(line)) throw relpos::InputError("empty line");
@@ -322,9 +354,14 @@ Json answer_line(const std::string& line, long line_number, const relpos::io::Re
     const relpos::Ellipsoid e = relpos::io::ellipsoid_from_json(doc["ellipsoid"], "ellipsoid");
     const relpos::Paraboloid p = relpos::io::paraboloid_from_json(doc["paraboloid"], "paraboloid");
     relpos::io::check_pair_size(e, p);  // doc/cli.md, Limits
-    const relpos::Classification c = relpos::classify(e, p, relpos::Evidence::Full);
     Json out;
     out["id"] = id;
+    if (contact_only) {
+      Json answer = contact_json(relpos::contact(e, p));  // named: items() must not outlive it
+      for (auto& item : answer.items()) out[item.key()] = std::move(item.value());
+      return out;
+    }
+    const relpos::Classification c = relpos::classify(e, p, relpos::Evidence::Full);
     Json report = relpos::io::classification_to_json(c, options);
     for (auto& item : report.items()) out[item.key()] = std::move(item.value());
     return out;
@@ -342,6 +379,7 @@ Json answer_line(const std::string& line, long line_number, const relpos::io::Re
 int run_batch(Args& args) {
   std::optional<std::string> file;
   relpos::io::RenderOptions options;
+  bool contact_only = false;
   while (!args.done()) {
     std::string v;
     if (args.take("--help", nullptr) || args.take("-h", nullptr)) {
@@ -349,6 +387,8 @@ int run_batch(Args& args) {
       return kExitOk;
     } else if (args.take("--digits", &v)) {
       options.digits = parse_digits(v);
+    } else if (args.take("--contact-only", nullptr)) {
+      contact_only = true;
     } else if (args.peek() != "-" && args.peek().rfind("-", 0) == 0) {
       throw UsageError{"unknown option '" + args.next() + "'"};
     } else {
@@ -372,7 +412,7 @@ int run_batch(Args& args) {
   while (std::getline(*in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    write_json_line(answer_line(line, number, options));
+    write_json_line(answer_line(line, number, options, contact_only));
     if (!std::cout) {
       std::cerr << "relpos: cannot write the output\n";
       return kExitIo;

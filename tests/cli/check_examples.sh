@@ -121,3 +121,49 @@ for p in problems:
 print(f"examples: {passed} passed, {failed} failed")
 sys.exit(0 if failed == 0 and not problems else 1)
 PY
+rc=$?
+
+# The same input with --contact-only: one line per input line, in order, and the contact each
+# expected position implies (I, E: none; TI, TE: touching; C: crossing; errors stay errors).
+"$relpos" batch --contact-only "$input" >"$output"
+if [ $? -ne 0 ]; then
+  echo "check_examples: relpos batch --contact-only failed" >&2
+  exit 1
+fi
+python3 - "$input" "$output" <<'PY' || rc=1
+import json
+import sys
+
+inputs = [l for l in open(sys.argv[1], encoding="utf-8").read().split("\n")]
+if inputs and inputs[-1] == "":
+    inputs.pop()
+outputs = open(sys.argv[2], encoding="utf-8").read().split("\n")
+if outputs and outputs[-1] == "":
+    outputs.pop()
+CONTACT = {"I": "none", "E": "none", "TI": "touching", "TE": "touching", "C": "crossing"}
+problems = []
+if len(outputs) != len(inputs):
+    problems.append(f"{len(inputs)} input lines, {len(outputs)} output lines")
+checked = 0
+for number, (line, out) in enumerate(zip(inputs, outputs), 1):
+    answer = json.loads(out)
+    try:
+        doc = json.loads(line, parse_constant=lambda c: (_ for _ in ()).throw(ValueError(c)))
+    except ValueError:
+        doc = None
+    ident = doc.get("id") if isinstance(doc, dict) else None
+    prefix = ident.split("-", 1)[0] if isinstance(ident, str) and "-" in ident else None
+    if not isinstance(doc, dict) or prefix == "ERR":
+        if "error" not in answer:
+            problems.append(f"line {number}: expected an error, got {out[:80]}")
+        continue
+    if prefix in CONTACT:
+        checked += 1
+        if answer.get("contact") != CONTACT[prefix] or answer.get("position") != prefix:
+            problems.append(f"line {number} ({ident}): expected contact {CONTACT[prefix]}, got {out[:120]}")
+for p in problems:
+    print("FAIL contact-only " + p)
+print(f"contact-only: {checked} lines checked, {len(problems)} problems")
+sys.exit(1 if problems or checked == 0 else 0)
+PY
+exit $rc
