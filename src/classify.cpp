@@ -6,10 +6,8 @@
 #include <cfenv>
 #include <cfloat>
 #include <cmath>
-#if defined(__SSE2_MATH__)
-#include <xmmintrin.h>
-#endif
 
+#include "relpos/detail/rounding.hpp"
 #include "relpos/multiple_roots.hpp"
 #include "relpos/pooled_integer.hpp"
 #include "relpos/semi_static_filter.hpp"
@@ -122,14 +120,7 @@ void decide(Verdict& v) {
   set(Position::Unclassified, -1, Rule::Finding);
 }
 
-/// Is the FPU in round-to-nearest (the default)? One stmxcsr on x86-64 (SSE arithmetic), else fegetround.
-inline bool rounding_to_nearest() {
-#if defined(__SSE2_MATH__)
-  return (_mm_getcsr() & 0x6000u) == 0;  // MXCSR.RC, bits 13-14: 00 = to nearest
-#else
-  return std::fegetround() == FE_TONEAREST;
-#endif
-}
+using detail::rounding_to_nearest;
 
 /// Matrix view with entries converted to NT, for the generic pencil code.
 template <class NT>

@@ -2,10 +2,8 @@
 
 #include <cfenv>
 #include <cmath>
-#if defined(__SSE2_MATH__)
-#include <xmmintrin.h>
-#endif
 
+#include "relpos/detail/rounding.hpp"
 #include "relpos/running_bound.hpp"
 #include "relpos/scene.hpp"
 #include "relpos/smallness.hpp"
@@ -137,14 +135,7 @@ std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::o
 
 namespace {
 
-/// Is the FPU in round-to-nearest (the filters assume it)? One stmxcsr on x86-64 (SSE arithmetic).
-inline bool rounding_to_nearest() {
-#if defined(__SSE2_MATH__)
-  return (_mm_getcsr() & 0x6000u) == 0;  // MXCSR.RC, bits 13-14: 00 = to nearest
-#else
-  return std::fegetround() == FE_TONEAREST;
-#endif
-}
+using detail::rounding_to_nearest;
 
 /// Plugged into the static filter: compute the smallness signs only when the case needs them.
 bool needs_smallness(const QuarticSigns& q) { return discriminant_case_needs_rho(discriminant_case(q)); }
@@ -163,13 +154,7 @@ int inside_certificate(const Ellipsoid& e, const Paraboloid& p, Conv conv, Sign 
   const Matrix4& pm = p.matrix();
   const auto ee = entries<NT>([&](int i, int j) { return conv(em, i, j); });
   const auto pe = entries<NT>([&](int i, int j) { return conv(pm, i, j); });
-  SymmetricEntries<NT> adj{};  // only the 3x3 part (S2) is read
-  adj.q00 = pe.q11 * pe.q22 - pe.q12 * pe.q12;
-  adj.q11 = pe.q00 * pe.q22 - pe.q02 * pe.q02;
-  adj.q22 = pe.q00 * pe.q11 - pe.q01 * pe.q01;
-  adj.q01 = pe.q02 * pe.q12 - pe.q01 * pe.q22;
-  adj.q02 = pe.q01 * pe.q12 - pe.q02 * pe.q11;
-  adj.q12 = pe.q01 * pe.q02 - pe.q00 * pe.q12;
+  const SymmetricEntries<NT> adj = adjugate3(pe);  // only the 3x3 part (S2) is read
   const ContainmentQuantities<NT> q(ee, pe, adj);
   const int t = sign(q.inside_t()), g = sign(q.inside_gap());
   if (t > 0 || g < 0) return -1;  // fails

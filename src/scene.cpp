@@ -50,27 +50,8 @@ using RB = RunningBound;                    // the per-body filter (running_boun
 /// product of at most 20 of them (the certificates' largest degree) stays within [2^-900, 2^800]:
 /// no magnitude underflows or overflows, and a value's underflow error (below 2^-1075 < u 2^-1000)
 /// is absorbed by the count as in RunningBound.
-typedef double V2 __attribute__((vector_size(16)));  // {value, magnitude}
 constexpr double kFastLow = 0x1p-45, kFastHigh = 0x1p40;
-
-struct Fast {
-  V2 x;
-  Fast(double c = 0) : x{c, std::fabs(c)} {}  // NOLINT: an exact input, like RunningBound
-  explicit Fast(V2 y) : x(y) {}
-  static Fast of(const RB& r) { return Fast(V2{r.value(), r.magnitude()}); }
-  double v() const { return x[0]; }
-  double a() const { return x[1]; }
-  friend Fast operator+(const Fast& p, const Fast& q) { return Fast(p.x + q.x); }
-  friend Fast operator-(const Fast& p, const Fast& q) {
-    const V2 flip = {-1.0, 1.0};  // negate the value lane only: magnitudes add
-    return Fast(p.x + q.x * flip);
-  }
-  friend Fast operator*(const Fast& p, const Fast& q) { return Fast(p.x * q.x); }
-  friend Fast operator-(const Fast& p) {
-    const V2 flip = {-1.0, 1.0};
-    return Fast(p.x * flip);
-  }
-};
+using Fast = RunningBoundLanes;
 
 /// Is every non-zero magnitude in the fast path's range?
 inline bool fast_range(double a) { return a == 0 || (a >= kFastLow && a <= kFastHigh); }
@@ -165,13 +146,7 @@ struct Scene::Frame {
     for (std::size_t i = 0; i < 16; ++i) m.a[i] = times_power_of_two(par.matrix().a[i], k);
     const RationalView v{&m};
     const SymmetricEntries<Rational> pe = entries<Rational>(v);
-    SymmetricEntries<Rational> adj;
-    adj.q00 = pe.q11 * pe.q22 - pe.q12 * pe.q12;
-    adj.q11 = pe.q00 * pe.q22 - pe.q02 * pe.q02;
-    adj.q22 = pe.q00 * pe.q11 - pe.q01 * pe.q01;
-    adj.q01 = pe.q02 * pe.q12 - pe.q01 * pe.q22;
-    adj.q02 = pe.q01 * pe.q12 - pe.q02 * pe.q11;
-    adj.q12 = pe.q01 * pe.q02 - pe.q00 * pe.q12;
+    const SymmetricEntries<Rational> adj = adjugate3(pe);
     // det(l P + P) = (l + 1)^4 det P: the pencil code gives det P as the leading coefficient.
     const Rational det = characteristic_polynomial<Rational>(v, v)[4];
     const Rational tr = pe.q00 + pe.q11 + pe.q22, s2 = adj.q00 + adj.q11 + adj.q22;
@@ -205,8 +180,8 @@ struct Scene::Frame {
     fast_ok = true;
     for (const auto* e : {&fp, &fadj_a})
       for (const Fast* c : {&e->q00, &e->q11, &e->q22, &e->q01, &e->q02, &e->q12, &e->q0, &e->q1, &e->q2, &e->q33})
-        fast_ok = fast_ok && fast_range(c->a());
-    for (const Fast* c : {&fdet_p, &flambda_max, &frho_factor}) fast_ok = fast_ok && fast_range(c->a());
+        fast_ok = fast_ok && fast_range(c->magnitude());
+    for (const Fast* c : {&fdet_p, &flambda_max, &frho_factor}) fast_ok = fast_ok && fast_range(c->magnitude());
     compute_counts();
   }
 };
@@ -302,10 +277,10 @@ double scale_for(double mx) {
       const SymmetricEntries<Fast> fx = entries<Fast>([&](int i, int j) { return Fast(m[4 * i + j]); });
       if (sphere)
         return certify_sphere(fx, f.fp, f.diagonal_a, f.flambda_max, f.frho_factor, [&](const Fast& v, int i) {
-          return RB::certain_sign(v.v(), v.a(), f.sphere_counts[static_cast<std::size_t>(i)]);
+          return RB::certain_sign(v.value(), v.magnitude(), f.sphere_counts[static_cast<std::size_t>(i)]);
         });
       return certify_general(fx, f.fp, f.diagonal_a, f.fadj_a, f.fdet_p, [&](const Fast& v, int i) {
-        return RB::certain_sign(v.v(), v.a(), f.general_counts[static_cast<std::size_t>(i)]);
+        return RB::certain_sign(v.value(), v.magnitude(), f.general_counts[static_cast<std::size_t>(i)]);
       });
     }
     const double inv = 1 / s;  // exact: s is a power of two

@@ -11,33 +11,11 @@
 namespace relpos {
 namespace {
 
-/// The value and magnitude lanes of RunningBound as one SSE register: a product is one mulpd, a sum
-/// one addpd, a difference one mulpd + addpd. The operation count, RunningBound's third component,
-/// does not depend on the values, so it is computed once (counts() below, by running the very same
-/// program on RunningBound) instead of on every pair. The magnitude floor of RunningBound is not
-/// needed: evaluate() refuses inputs whose non-zero magnitudes could underflow (see its guards), so
-/// every non-zero magnitude product stays above 2^-1000 and a value's underflow error, at most
-/// 2^-1075 < u 2^-1000, is absorbed by the count as in RunningBound.
-typedef double V2 __attribute__((vector_size(16)));  // {value, magnitude}
-
-struct Lanes {
-  V2 x;
-  Lanes(double c = 0) : x{c, std::fabs(c)} {}  // NOLINT: exact inputs and constants, like RunningBound
-  explicit Lanes(V2 y) : x(y) {}
-  double value() const { return x[0]; }
-  double magnitude() const { return x[1]; }
-  friend Lanes operator+(const Lanes& a, const Lanes& b) { return Lanes(a.x + b.x); }
-  friend Lanes operator-(const Lanes& a, const Lanes& b) {
-    const V2 flip = {-1.0, 1.0};  // negate the value lane only: magnitudes add
-    return Lanes(a.x + b.x * flip);
-  }
-  friend Lanes operator-(const Lanes& a) {
-    const V2 flip = {-1.0, 1.0};
-    return Lanes(a.x * flip);
-  }
-  friend Lanes operator*(const Lanes& a, const Lanes& b) { return Lanes(a.x * b.x); }
-  Lanes times_power_of_two(double two_k) const { return Lanes(x * two_k); }
-};
+/// RunningBound's value and magnitude in one SSE register (running_bound.hpp); the counts come from
+/// counts() below, by running the very same program on RunningBound. evaluate() refuses inputs whose
+/// non-zero magnitudes could underflow (see its guards), so every non-zero magnitude product stays
+/// above 2^-1000, as RunningBoundLanes requires.
+using Lanes = RunningBoundLanes;
 
 template <class NT>
 struct View {

@@ -89,6 +89,20 @@ inline double power_of_two(int k) {  // 2^k, for -1022 <= k <= 1023
 }
 inline bool normal_range(double x) { return x >= DBL_MIN && x <= DBL_MAX; }
 
+/// Scale values and their error bounds by one power of two so that every |v| + err is below 1;
+/// false if out of the normal range.
+bool scale_into_unit(double* v, double* err, int n) {
+  double mx = 0;
+  for (int i = 0; i < n; ++i) mx = std::max(mx, std::fabs(v[i]) + err[i]);
+  if (!normal_range(mx)) return false;
+  const double scale = power_of_two(-exponent_of(mx) - 1);
+  for (int i = 0; i < n; ++i) {
+    v[i] *= scale;
+    err[i] *= scale;
+  }
+  return true;
+}
+
 /// Scale a matrix so its largest entry is in [1/2, 1); false if an entry would lose bits (subnormal)
 /// or the input is not finite.
 bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
@@ -151,17 +165,6 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
     }
   }
   // Bring f and s into [-1, 1] (separately: every quantity is homogeneous in f and in s).
-  auto scale_into_unit = [](double* v, double* err, int n) {
-    double mx = 0;
-    for (int i = 0; i < n; ++i) mx = std::max(mx, std::fabs(v[i]) + err[i]);
-    if (!normal_range(mx)) return false;
-    const double scale = power_of_two(-exponent_of(mx) - 1);
-    for (int i = 0; i < n; ++i) {
-      v[i] *= scale;
-      err[i] *= scale;
-    }
-    return true;
-  };
   if (!scale_into_unit(f.data(), ef, 5) || !scale_into_unit(s.data(), es, 3)) return uncertain();
 
   DecisionSigns out;
@@ -204,17 +207,6 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
     f[static_cast<std::size_t>(i)] *= w;
     ef[i] *= w;
   }
-  auto scale_into_unit = [](double* v, double* err, int n) {
-    double mx = 0;
-    for (int i = 0; i < n; ++i) mx = std::max(mx, std::fabs(v[i]) + err[i]);
-    if (!normal_range(mx)) return false;
-    const double scale = power_of_two(-exponent_of(mx) - 1);
-    for (int i = 0; i < n; ++i) {
-      v[i] *= scale;
-      err[i] *= scale;
-    }
-    return true;
-  };
   if (!scale_into_unit(f.data(), ef, 5)) return uncertain();
   DecisionSigns out;
   for (int i = 0; i < 5; ++i) out.quartic.f[i] = certified(f[static_cast<std::size_t>(i)], ef[i]);

@@ -100,4 +100,37 @@ class RunningBound {
   int d_;
 };
 
+/// RunningBound without its count: value and magnitude as one SSE register, so a product is one
+/// mulpd and a sum one addpd. For programs whose counts are known in advance (they never depend on
+/// the values: run the same code once on RunningBound) -- the hot paths of the semi-static stage and
+/// of the scene early-outs. There is no magnitude floor: a caller must keep every non-zero magnitude
+/// product clear of underflow (each does it with a range guard on its inputs), and then a value's
+/// underflow error (< 2^-1075) is absorbed by the count exactly as in RunningBound. A zero magnitude
+/// is an exact zero and stays zero.
+class RunningBoundLanes {
+ public:
+  RunningBoundLanes(double exact = 0) : x_{exact, std::fabs(exact)} {}  // NOLINT: like RunningBound
+  static RunningBoundLanes of(const RunningBound& r) { return RunningBoundLanes(V2{r.value(), r.magnitude()}); }
+  double value() const { return x_[0]; }
+  double magnitude() const { return x_[1]; }
+  RunningBoundLanes times_power_of_two(double two_k) const { return RunningBoundLanes(x_ * two_k); }
+
+  friend RunningBoundLanes operator+(const RunningBoundLanes& a, const RunningBoundLanes& b) {
+    return RunningBoundLanes(a.x_ + b.x_);
+  }
+  friend RunningBoundLanes operator-(const RunningBoundLanes& a, const RunningBoundLanes& b) {
+    return RunningBoundLanes(a.x_ + b.x_ * kFlip);  // magnitudes add
+  }
+  friend RunningBoundLanes operator*(const RunningBoundLanes& a, const RunningBoundLanes& b) {
+    return RunningBoundLanes(a.x_ * b.x_);
+  }
+  friend RunningBoundLanes operator-(const RunningBoundLanes& a) { return RunningBoundLanes(a.x_ * kFlip); }
+
+ private:
+  typedef double V2 __attribute__((vector_size(16)));  // {value, magnitude}
+  static constexpr V2 kFlip = {-1.0, 1.0};             // negates the value lane only
+  explicit RunningBoundLanes(V2 x) : x_(x) {}
+  V2 x_;
+};
+
 }  // namespace relpos

@@ -49,6 +49,20 @@ struct SymmetricEntries {
   NT q33;                           ///< q0
 };
 
+/// adj(Q3) of the 3x3 block (the other fields are left default): adj(A) of a paraboloid, the
+/// constant the containment certificates need.
+template <class NT>
+SymmetricEntries<NT> adjugate3(const SymmetricEntries<NT>& p) {
+  SymmetricEntries<NT> adj{};
+  adj.q00 = p.q11 * p.q22 - p.q12 * p.q12;
+  adj.q11 = p.q00 * p.q22 - p.q02 * p.q02;
+  adj.q22 = p.q00 * p.q11 - p.q01 * p.q01;
+  adj.q01 = p.q02 * p.q12 - p.q01 * p.q22;
+  adj.q02 = p.q01 * p.q12 - p.q02 * p.q11;
+  adj.q12 = p.q01 * p.q02 - p.q00 * p.q12;
+  return adj;
+}
+
 /// Ellipsoid E = [[M, e], [e^T, e0]] against paraboloid P = [[A, p], [p^T, p0]]. With
 /// y = adj(M) e (so the centre is c = -y / D) and w = D p - A y (so grad P(c) = 2 w / D):
 ///   D  = det M                              (> 0)
