@@ -42,7 +42,8 @@ void second_stage(const Sfe& in, double out[8]) {
   for (int i = 0; i < 8; ++i) out[i] = q[i].error();
 }
 
-const Bounds& bounds() {
+// noinline: computed once; kept out of the flattened hot functions below (it is large).
+[[gnu::noinline]] const Bounds& bounds() {
   static const Bounds b = [] {
     Bounds r{};
     Mat<Sfe> one;
