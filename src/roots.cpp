@@ -139,64 +139,135 @@ SmallCount count_small(const Poly& h) {
 
 }  // namespace
 
-std::optional<RootFacts> single_double_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s) {
+namespace {
+
+/// The rational square root of q >= 0, if q is a square in Q.
+std::optional<Rational> rational_sqrt(const Rational& q) {
+  if (q < 0) return std::nullopt;
+  if (!mpz_perfect_square_p(q.numerator().mpz()) || !mpz_perfect_square_p(q.denominator().mpz())) return std::nullopt;
+  Integer n, d;
+  mpz_sqrt(n.mpz(), q.numerator().mpz());
+  mpz_sqrt(d.mpz(), q.denominator().mpz());
+  return Rational(n, d);
+}
+
+/// Multiplicity (0, 1 or 2) of x as a root of the quadratic s (s2 = det M > 0).
+int multiplicity_in(const Quadratic<Rational>& s, const Rational& x) {
+  if (!CGAL::is_zero((s[2] * x + s[1]) * x + s[0])) return 0;
+  return CGAL::is_zero(2 * s[2] * x + s[1]) ? 2 : 1;
+}
+
+}  // namespace
+
+std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s) {
   if (CGAL::is_zero(f[4]) || CGAL::is_zero(f[0])) return std::nullopt;
   Integer g2[3], g1[2], g0[1];
   detail::sturm_habicht_quartic(f[0], f[1], f[2], f[3], f[4], g2, g1, g0);
-  // Subresultant theorem: deg gcd(f, f') is the first j with a non-zero principal coefficient
-  // (g0 = Disc(f), then g1[0]). Disc(f) = 0 and g1[0] != 0 make gcd(f, f') = StHa_1, linear: f has
-  // exactly one multiple root, double and rational, and the other two roots are simple.
-  if (!CGAL::is_zero(g0[0]) || CGAL::is_zero(g1[0])) return std::nullopt;
-  const Rational l0(-g1[1], g1[0]);
-  // h = f / (lambda - l0)^2 by two synthetic divisions over Q; both remainders are zero.
-  std::array<Rational, 5> c;
-  for (std::size_t i = 0; i < 5; ++i) c[i] = Rational(f[i]);
-  std::array<Rational, 3> h;
-  for (int pass = 0; pass < 2; ++pass) {
-    const int deg = 4 - pass;
-    std::array<Rational, 5> q{};
-    Rational carry(0);
-    for (int i = deg; i >= 1; --i) {
-      carry = c[static_cast<std::size_t>(i)] + carry * l0;
-      q[static_cast<std::size_t>(i - 1)] = carry;
+  if (!CGAL::is_zero(g0[0])) return std::nullopt;  // square-free: not this function's case
+  // Subresultant theorem: deg gcd(f, f') is the first j whose principal coefficient is non-zero
+  // (g0 = Disc(f), then g1[0], then g2[0]), and the gcd is StHa_j. Every multiple root of f is a
+  // root of it, with multiplicity one less.
+  const Quartic<Rational> fq{Rational(f[0]), Rational(f[1]), Rational(f[2]), Rational(f[3]), Rational(f[4])};
+  const Quadratic<Rational> sq{Rational(s[0]), Rational(s[1]), Rational(s[2])};
+  struct Root {
+    Rational x;
+    int mult;
+  };
+  std::vector<Root> roots;         // the multiple roots, with their multiplicity in f
+  std::array<Rational, 3> rest{};  // f / prod (l - x)^mult, degree rest_degree (square-free)
+  int rest_degree = 0;
+  if (!CGAL::is_zero(g1[0])) {  // gcd linear: one double root, the other two simple
+    roots.push_back({Rational(-g1[1], g1[0]), 2});
+  } else if (!CGAL::is_zero(g2[0])) {  // gcd = g2, quadratic
+    const Rational a(g2[0]), b(g2[1]), c(g2[2]);
+    const Rational disc = b * b - 4 * a * c;
+    if (CGAL::is_zero(disc)) {  // gcd = (l - r)^2: a triple root and a simple one
+      roots.push_back({-b / (2 * a), 3});
+    } else {  // two double roots, rational only if disc is a square
+      const auto w = rational_sqrt(disc);
+      if (!w) return std::nullopt;  // irrational or non-real double roots: the general path
+      roots.push_back({(-b - *w) / (2 * a), 2});
+      roots.push_back({(-b + *w) / (2 * a), 2});
     }
-    if (!CGAL::is_zero(c[0] + carry * l0)) return std::nullopt;  // cannot happen (theorem above)
-    c = q;
+  } else {  // gcd cubic: a quadruple root
+    roots.push_back({-fq[3] / (4 * fq[4]), 4});
   }
-  for (std::size_t i = 0; i < 3; ++i) h[i] = c[i];
-  const Rational s0(s[0]), s1(s[1]), s2(s[2]);
-  // Multiplicity of l0 in s (s has degree 2, s2 = det M > 0).
-  int ms = 0;
-  if (CGAL::is_zero((s2 * l0 + s1) * l0 + s0)) ms = CGAL::is_zero(2 * s2 * l0 + s1) ? 2 : 1;
-  const int sign_l0 = CGAL::sign(l0);
+  // Divide the multiple roots out (synthetic division over Q); every remainder must vanish.
+  std::array<Rational, 5> c = fq;
+  int deg = 4;
+  for (const Root& r : roots)
+    for (int k = 0; k < r.mult; ++k) {
+      std::array<Rational, 5> q{};
+      Rational carry(0);
+      for (int i = deg; i >= 1; --i) {
+        carry = c[static_cast<std::size_t>(i)] + carry * r.x;
+        q[static_cast<std::size_t>(i - 1)] = carry;
+      }
+      if (!CGAL::is_zero(c[0] + carry * r.x)) return std::nullopt;  // cannot happen (theorem above)
+      c = q;
+      --deg;
+    }
+  rest_degree = deg;
+  for (int i = 0; i <= deg; ++i) rest[static_cast<std::size_t>(i)] = c[static_cast<std::size_t>(i)];
+
   RootFacts r;
-  (sign_l0 < 0 ? r.negative : r.positive) += 1;
-  const bool tangent = 2 - ms >= 2;  // math.md section 3: mult_f - mult_s >= 2
-  if (tangent) (sign_l0 < 0 ? r.tangent_negative : r.tangent_positive) += 1;
-  const int sign_disc_h = CGAL::sign(h[1] * h[1] - 4 * h[2] * h[0]);  // != 0: h is square-free
-  const SmallCount hc = detail::count_small(2, sign_disc_h, CGAL::sign(h[2]), CGAL::sign(h[1]), CGAL::sign(h[0]));
-  r.negative += hc.negative;
-  r.positive += hc.positive;
-  r.real = r.negative + r.positive;
-  r.nonreal = sign_disc_h < 0 ? 2 : 0;
-  r.sign_disc_f = 0;
-  // f~ keeps the non-real pair (s has real roots only); square-free unless tangent.
-  r.sign_disc_ftilde = tangent ? 0 : ((r.nonreal / 2) % 2 ? -1 : 1);
-  // deg f~ = 4 - deg gcd(f, s): min(2, ms) at l0, plus the roots h shares with s / (lambda - l0)^ms.
-  int shared = 0;
-  if (ms == 1) {  // s = s2 (lambda - l0)(lambda - m), m = -s1/s2 - l0
-    const Rational m = -s1 / s2 - l0;
-    shared = CGAL::is_zero((h[2] * m + h[1]) * m + h[0]) ? 1 : 0;
-  } else if (ms == 0) {  // Res(h, s) = 0 iff a common root; proportional iff both
-    const Rational u = h[2] * s0 - h[0] * s2, v = h[2] * s1 - h[1] * s2, w = h[1] * s0 - h[0] * s1;
-    if (CGAL::is_zero(u * u - v * w)) shared = (CGAL::is_zero(u) && CGAL::is_zero(v)) ? 2 : 1;
+  int gcd_degree = 0;               // deg gcd(f, s)
+  Quadratic<Rational> s_rest = sq;  // s with its roots among the multiple roots divided out
+  int s_rest_degree = 2;
+  bool tangent = false;
+  for (const Root& x : roots) {
+    const int ms = multiplicity_in(sq, x.x);
+    const int sign = CGAL::sign(x.x);
+    (sign < 0 ? r.negative : r.positive) += 1;
+    if (x.mult - ms >= 2) {  // math.md section 3: mult_f - mult_s >= 2
+      (sign < 0 ? r.tangent_negative : r.tangent_positive) += 1;
+      tangent = true;
+    }
+    gcd_degree += std::min(x.mult, ms);
+    for (int k = 0; k < ms; ++k) {  // s_rest /= (l - x)
+      const Rational q1 = s_rest[2], q0 = s_rest[1] + q1 * x.x;
+      s_rest = {q0, q1, Rational(0)};
+      --s_rest_degree;
+    }
   }
-  r.degree_ftilde = 4 - std::min(2, ms) - shared;
+  // The square-free cofactor (degree <= 2, none of its roots is a multiple root of f).
+  int sign_disc_rest = 1;
+  if (rest_degree == 2) sign_disc_rest = CGAL::sign(rest[1] * rest[1] - 4 * rest[2] * rest[0]);
+  if (rest_degree >= 1) {
+    const SmallCount hc = detail::count_small(rest_degree, sign_disc_rest, rest_degree == 2 ? CGAL::sign(rest[2]) : 0,
+                                              CGAL::sign(rest[1]), CGAL::sign(rest[0]));
+    r.negative += hc.negative;
+    r.positive += hc.positive;
+  }
+  r.real = r.negative + r.positive;
+  r.nonreal = (rest_degree == 2 && sign_disc_rest < 0) ? 2 : 0;
+  r.nonreal_multiple = 0;  // every multiple root here is rational
+  r.sign_disc_f = 0;
+  // f~ keeps f's non-real roots (s has real roots only); it is square-free unless tangent.
+  r.sign_disc_ftilde = tangent ? 0 : ((r.nonreal / 2) % 2 ? -1 : 1);
+  // Roots the cofactor shares with what is left of s (both square-free, degree <= 2).
+  int shared = 0;
+  if (rest_degree >= 1 && s_rest_degree >= 1) {
+    if (s_rest_degree == 1) {
+      const Rational m = -s_rest[0] / s_rest[1];
+      Rational v(0);
+      for (int i = rest_degree; i >= 0; --i) v = v * m + rest[static_cast<std::size_t>(i)];
+      shared = CGAL::is_zero(v) ? 1 : 0;
+    } else if (rest_degree == 1) {
+      const Rational m = -rest[0] / rest[1];
+      shared = CGAL::is_zero((s_rest[2] * m + s_rest[1]) * m + s_rest[0]) ? 1 : 0;
+    } else {  // two quadratics: Res = 0 iff a common root; proportional iff both
+      const Rational u = rest[2] * s_rest[0] - rest[0] * s_rest[2], v = rest[2] * s_rest[1] - rest[1] * s_rest[2],
+                     w = rest[1] * s_rest[0] - rest[0] * s_rest[1];
+      if (CGAL::is_zero(u * u - v * w)) shared = (CGAL::is_zero(u) && CGAL::is_zero(v)) ? 2 : 1;
+    }
+  }
+  r.degree_ftilde = 4 - gcd_degree - shared;
   return r;
 }
 
 std::optional<RootFacts> exact_root_facts(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
-  if (auto r = single_double_root_facts(fc, sc)) return r;  // the common case, without gcds
+  if (auto r = subresultant_root_facts(fc, sc)) return r;  // rational multiple roots, without gcds
   return exact_root_facts_by_factorisation(fc, sc);
 }
 

@@ -62,11 +62,13 @@ struct RootFacts {
 /// (defective Sturm-Habicht sequence with Disc(f) != 0): use exact_root_structure() then.
 std::optional<RootFacts> exact_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 
-/// The fast case of exact_root_facts(): Disc(f) = 0 with a non-zero linear subresultant, i.e. exactly
-/// one multiple root, double (hence rational: the root of the linear gcd(f, f')). Its facts follow
-/// in closed form from that root and the square-free cofactor h = f / (lambda - l0)^2, without any
-/// polynomial gcd. nullopt in every other case.
-std::optional<RootFacts> single_double_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s);
+/// The fast case of exact_root_facts(), without any polynomial gcd: Disc(f) = 0 and every multiple
+/// root of f rational. gcd(f, f') is the first non-zero subresultant of the Sturm-Habicht sequence
+/// (linear: one double root; quadratic g2: a triple root when Disc(g2) = 0, two double roots when
+/// Disc(g2) is a non-zero square; cubic: a quadruple root), so the multiple roots are read off it,
+/// divided out exactly, and every fact follows in closed form from them and the square-free
+/// cofactor. nullopt when f is square-free or has irrational or non-real multiple roots.
+std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 
 /// The general case: gcd(f, s) and square-free factorisations (CGAL). nullopt when f is square-free.
 std::optional<RootFacts> exact_root_facts_by_factorisation(const Quartic<Integer>& f, const Quadratic<Integer>& s);
