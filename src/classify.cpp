@@ -409,14 +409,22 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
     if (decide_from_signs(d, v)) return v;
   }
   if (!exact) exact.emplace(e, p);
-  v.stage = Stage::ExactSigns;  // stage 3: exact integer signs of the same polynomials
-  if (decide_from_signs(signs_in(exact->f, exact->s), v)) return v;
+  v.stage = Stage::ExactSigns;                     // stage 3: exact integer signs of the same polynomials
+  const SturmHabicht<PooledInteger> sh(exact->f);  // kept: stage 4 reads the subresultants
+  {
+    const SmallnessQuantities<PooledInteger> sq(exact->f, exact->s);
+    if (decide_from_signs(DecisionSigns{signs_of(exact->f, sh), sign_of(sq.vertex), sign_of(sq.graeffe)}, v)) return v;
+  }
   // Stage 4: Disc(f) = 0 or a defective Sturm-Habicht sequence: exact gcd and factorisation.
   v.stage = Stage::ExactRoots;
   RootFacts x;
   const Quartic<Integer> fi = exact->f_integer();
   const Quadratic<Integer> si = exact->s_integer();
-  if (auto facts = exact_root_facts(fi, si)) {
+  const Integer g2[3] = {sh.g2[0].to_integer(), sh.g2[1].to_integer(), sh.g2[2].to_integer()};
+  const Integer g1[2] = {sh.g1[0].to_integer(), sh.g1[1].to_integer()};
+  std::optional<RootFacts> facts = subresultant_root_facts(fi, si, g2, g1, sh.g0[0].to_integer());
+  if (!facts) facts = exact_root_facts_by_factorisation(fi, si);
+  if (facts) {
     x = *facts;  // closed forms on the degree <= 2 square-free factors
   } else {       // square-free f with a defective sequence: isolate the roots
     const RootStructure rs = exact_root_structure(fi, si);  // counts only: the roots are scaled

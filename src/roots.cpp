@@ -160,10 +160,15 @@ int multiplicity_in(const Quadratic<Rational>& s, const Rational& x) {
 }  // namespace
 
 std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s) {
-  if (CGAL::is_zero(f[4]) || CGAL::is_zero(f[0])) return std::nullopt;
   Integer g2[3], g1[2], g0[1];
   detail::sturm_habicht_quartic(f[0], f[1], f[2], f[3], f[4], g2, g1, g0);
-  if (!CGAL::is_zero(g0[0])) return std::nullopt;  // square-free: not this function's case
+  return subresultant_root_facts(f, s, g2, g1, g0[0]);
+}
+
+std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s,
+                                                 const Integer g2[3], const Integer g1[2], const Integer& disc) {
+  if (CGAL::is_zero(f[4]) || CGAL::is_zero(f[0])) return std::nullopt;
+  if (!CGAL::is_zero(disc)) return std::nullopt;  // square-free: not this function's case
   // Subresultant theorem: deg gcd(f, f') is the first j whose principal coefficient is non-zero
   // (g0 = Disc(f), then g1[0], then g2[0]), and the gcd is StHa_j. Every multiple root of f is a
   // root of it, with multiplicity one less.
@@ -180,11 +185,11 @@ std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, cons
     roots.push_back({Rational(-g1[1], g1[0]), 2});
   } else if (!CGAL::is_zero(g2[0])) {  // gcd = g2, quadratic
     const Rational a(g2[0]), b(g2[1]), c(g2[2]);
-    const Rational disc = b * b - 4 * a * c;
-    if (CGAL::is_zero(disc)) {  // gcd = (l - r)^2: a triple root and a simple one
+    const Rational disc_g2 = b * b - 4 * a * c;
+    if (CGAL::is_zero(disc_g2)) {  // gcd = (l - r)^2: a triple root and a simple one
       roots.push_back({-b / (2 * a), 3});
     } else {  // two double roots, rational only if disc is a square
-      const auto w = rational_sqrt(disc);
+      const auto w = rational_sqrt(disc_g2);
       if (!w) return std::nullopt;  // irrational or non-real double roots: the general path
       roots.push_back({(-b - *w) / (2 * a), 2});
       roots.push_back({(-b + *w) / (2 * a), 2});

@@ -70,6 +70,11 @@ std::optional<RootFacts> exact_root_facts(const Quartic<Integer>& f, const Quadr
 /// cofactor. nullopt when f is square-free or has irrational or non-real multiple roots.
 std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 
+/// The same with f's Sturm-Habicht coefficients already computed (g2, g1 and g0 = Disc(f) as in
+/// detail/sturm_habicht_quartic.hpp), e.g. by the exact-sign stage.
+std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s,
+                                                 const Integer g2[3], const Integer g1[2], const Integer& disc);
+
 /// The general case: gcd(f, s) and square-free factorisations (CGAL). nullopt when f is square-free.
 std::optional<RootFacts> exact_root_facts_by_factorisation(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 
