@@ -54,8 +54,9 @@ bool evaluate(const View<NT>& p, const View<NT>& e, NT out[kQuantities]) {
   // two: every decision quantity is isobaric and homogeneous in f and in s, so its value and its
   // magnitude scale alike; this only keeps the degree-6 products clear of under- and overflow.
   double step = 1;
-  if (f[0].value() != 0 && f[4].value() != 0)
-    step = std::ldexp(1.0, (std::ilogb(f[0].value()) - std::ilogb(f[4].value())) / 4);
+  const double f0 = f[0].value(), f4 = f[4].value();
+  if (f0 != 0 && f4 != 0 && std::isfinite(f0) && std::isfinite(f4))  // ilogb of 0, inf, NaN: no balancing
+    step = std::ldexp(1.0, (std::ilogb(f0) - std::ilogb(f4)) / 4);
   double w = 1;
   for (std::size_t i = 0; i < 5; ++i, w *= step) {
     f[i] = f[i].times_power_of_two(w);
