@@ -4,8 +4,10 @@
 #include <cmath>
 
 #include "relpos/detail/rounding.hpp"
+#include "relpos/error.hpp"
 #include "relpos/running_bound.hpp"
 #include "relpos/scene.hpp"
+#include "relpos/semi_static_filter.hpp"
 #include "relpos/smallness.hpp"
 #include "relpos/static_filter.hpp"
 
@@ -281,7 +283,7 @@ NT minus_det(const SymmetricEntries<NT>& x) {
 
 }  // namespace
 
-ExteriorTracker::ExteriorTracker(const Paraboloid& p, const Ellipsoid& body) : p_(p) {
+ExteriorTracker::ExteriorTracker(const Paraboloid& p, const Ellipsoid& body) : p_(p), body_(body) {
   m_ref_ = body.matrix();
   m_ref_doubles_ = body.doubles();
   // Smallness of the body, exactly, once (translation invariant: it depends on M, A, det P and
@@ -353,15 +355,40 @@ ExteriorTracker::Frame ExteriorTracker::update(const Ellipsoid& placed) {
     v = r.verdict;
     by = r.by;
   }
+  return finish(*v, by);
+}
+
+ExteriorTracker::Frame ExteriorTracker::finish(const Verdict& v, DecidedBy by) {
   ++(by == DecidedBy::DiscriminantFilter ? counts_.by_filter : counts_.by_fallback);
   Frame out;
-  out.position = v->position;
-  out.rule = v->rule;
-  out.contact = v->contact;
+  out.position = v.position;
+  out.rule = v.rule;
+  out.contact = v.contact;
   out.by = by;
   out.changed = last_ && *last_ != out.position;
   last_ = out.position;
   return out;
+}
+
+ExteriorTracker::Frame ExteriorTracker::update(const std::array<double, 3>& translation) {
+  for (double x : translation)
+    if (!std::isfinite(x)) throw InputError("tracker translation: not finite");
+  if (rounding_to_nearest()) {
+    // Every decision sign of the moved body, certified without forming it (exact-double bodies on the
+    // SSE fast path, others on double enclosures); the discriminant case reads f and Disc(f), and rho
+    // is the reference's exactly (same M, same det E).
+    const DecisionSigns d =
+        body_.filter_doubles() && p_.filter_doubles()
+            ? semi_static_filter_signs_translated(*p_.filter_doubles(), *body_.filter_doubles(), translation)
+            : semi_static_filter_signs_translated(p_.matrix(), body_.matrix(), translation);
+    const DiscriminantCase c = discriminant_case(d.quartic);
+    if (auto v = verdict_from_discriminant_case(c, rho_vs_one_)) {
+      ++counts_.frames;
+      return finish(*v, DecidedBy::DiscriminantFilter);
+    }
+  }
+  const Vector3 t{exact_rational(translation[0]), exact_rational(translation[1]), exact_rational(translation[2])};
+  return update(body_.translated(t));
 }
 
 }  // namespace relpos

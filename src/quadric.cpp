@@ -276,6 +276,20 @@ Ellipsoid Ellipsoid::from_matrix(const Matrix4& e) {
 
 Ellipsoid Ellipsoid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
 
+Ellipsoid Ellipsoid::translated(const Vector3& d) const {
+  Matrix4 m = m_;
+  Rational e0 = m_(3, 3);
+  for (int i = 0; i < 3; ++i) {
+    Rational md(0);  // (M d)_i
+    for (int j = 0; j < 3; ++j) md += m_(i, j) * d[static_cast<std::size_t>(j)];
+    const Rational& di = d[static_cast<std::size_t>(i)];
+    m(i, 3) = m(3, i) = m_(i, 3) - md;
+    e0 += di * (md - 2 * m_(i, 3));  // - 2 e_i d_i + d_i (M d)_i
+  }
+  m(3, 3) = e0;
+  return Ellipsoid(std::move(m));
+}
+
 Ellipsoid Ellipsoid::sphere(const Vector3& c, const Rational& r) {
   if (r <= 0) throw InputError("sphere radius must be positive, got " + to_string(r));
   Matrix4 m;

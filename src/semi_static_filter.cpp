@@ -3,6 +3,7 @@
 #include <gmp.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "relpos/running_bound.hpp"
@@ -82,6 +83,36 @@ bool evaluate(const View<NT>& p, const View<NT>& e, NT out[kQuantities]) {
   return true;
 }
 
+/// The moved ellipsoid's entries in NT (E' = T^T E T, T = [[I, -d], [0, 1]]), scaled by a power of
+/// two so the largest magnitude is near 1. False when a non-zero magnitude leaves the range the
+/// no-underflow argument needs (e's entries and d in [2^-60, 2^60], scaled entries >= 2^-60).
+template <class NT>
+bool translate(const View<NT>& e, const std::array<double, 3>& d, View<NT>& out) {
+  for (double x : d)
+    if (x != 0 && !(std::fabs(x) >= kEntryFloor && std::fabs(x) <= 0x1p60)) return false;
+  for (const NT& x : e.a)
+    if (x.magnitude() != 0 && !(x.magnitude() >= kEntryFloor && x.magnitude() <= 0x1p60)) return false;
+  const NT dv[3] = {NT(d[0]), NT(d[1]), NT(d[2])};
+  View<NT> m = e;
+  NT e0 = e(3, 3);
+  for (int i = 0; i < 3; ++i) {
+    const NT md = e(i, 0) * dv[0] + e(i, 1) * dv[1] + e(i, 2) * dv[2];
+    m.a[static_cast<std::size_t>(4 * i + 3)] = m.a[static_cast<std::size_t>(12 + i)] = e(i, 3) - md;
+    e0 = e0 + dv[i] * (md - NT(2) * e(i, 3));
+  }
+  m.a[15] = e0;
+  double mx = 0;
+  for (const NT& x : m.a) mx = std::max(mx, x.magnitude());
+  if (!(mx > 0 && std::isfinite(mx))) return false;
+  const double k = std::ldexp(1.0, -std::ilogb(mx) - 1);
+  for (std::size_t i = 0; i < 16; ++i) {
+    out.a[i] = m.a[i].times_power_of_two(k);
+    const double a = out.a[i].magnitude();
+    if (a != 0 && !(a >= kEntryFloor)) return false;
+  }
+  return true;
+}
+
 /// Operation counts of the program, from RunningBound on any inputs that pass the guards.
 const std::array<int, kQuantities>& counts() {
   static const std::array<int, kQuantities> c = [] {
@@ -91,6 +122,25 @@ const std::array<int, kQuantities>& counts() {
     std::array<int, kQuantities> r{};
     if (!evaluate(one, one, q)) {  // cannot happen for these inputs; if it did, certify nothing
       r.fill(1 << 20);
+      return r;
+    }
+    for (int i = 0; i < kQuantities; ++i) r[static_cast<std::size_t>(i)] = q[i].count();
+    return r;
+  }();
+  return c;
+}
+
+/// Counts of the translated program (translated_entries, then evaluate).
+const std::array<int, kQuantities>& counts_translated() {
+  static const std::array<int, kQuantities> c = [] {
+    DoubleMatrix4 one;
+    one.fill(0.5);
+    View<RunningBound> moved;
+    RunningBound q[kQuantities];
+    std::array<int, kQuantities> r{};
+    if (!translate(View<RunningBound>(one), {0.25, 0.25, 0.25}, moved) ||
+        !evaluate(View<RunningBound>(one), moved, q)) {
+      r.fill(1 << 20);  // cannot happen for these inputs; if it did, certify nothing
       return r;
     }
     for (int i = 0; i < kQuantities; ++i) r[static_cast<std::size_t>(i)] = q[i].count();
@@ -133,8 +183,12 @@ bool enclosed(const Matrix4& m, View<RunningBound>& out) {
       out.a[i] = RunningBound(0);
       continue;
     }
+    // Only a normal v has |q - v| < 2^-52 |v|; a subnormal one can be off by 2^-1074, a far larger
+    // relative error (found in review: a matrix with entries near 2^-1000 got a wrong certified
+    // sign). Such an entry is left to the interval stage.
+    if (!(std::fabs(v[i]) >= DBL_MIN)) return false;  // also catches an entry that truncated to 0
     const double x = v[i] * k;
-    if (!(std::fabs(x) >= kEntryFloor)) return false;  // also catches an entry that truncated to 0
+    if (!(std::fabs(x) >= kEntryFloor)) return false;
     const double r = std::fabs(x) * 0x1p-51;
     out.a[i] = RunningBound::enclosing(x - r, x + r);
   }
@@ -149,6 +203,29 @@ DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const
   if (!evaluate(pn, en, q)) return DecisionSigns{};  // uncertain
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], d[static_cast<std::size_t>(i)]);
+  return assemble(c);
+}
+
+DecisionSigns semi_static_filter_signs_translated(const DoubleMatrix4& pn, const DoubleMatrix4& en,
+                                                  const std::array<double, 3>& d) {
+  const std::array<int, kQuantities>& counts = counts_translated();
+  for (double x : pn)
+    if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return DecisionSigns{};
+  View<Lanes> moved;
+  Lanes q[kQuantities];
+  if (!translate(View<Lanes>(en), d, moved) || !evaluate(View<Lanes>(pn), moved, q)) return DecisionSigns{};
+  USign c[kQuantities];
+  for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], counts[static_cast<std::size_t>(i)]);
+  return assemble(c);
+}
+
+DecisionSigns semi_static_filter_signs_translated(const Matrix4& p, const Matrix4& e, const std::array<double, 3>& d) {
+  View<RunningBound> vp, ve, moved;
+  RunningBound q[kQuantities];
+  if (!enclosed(p, vp) || !enclosed(e, ve) || !translate(ve, d, moved) || !evaluate(vp, moved, q))
+    return DecisionSigns{};
+  USign c[kQuantities];
+  for (int i = 0; i < kQuantities; ++i) c[i] = usign(q[i].sign());
   return assemble(c);
 }
 

@@ -4,6 +4,7 @@
 // generic pairs, so a silent "always fall back" fails the suite.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <iostream>
 #include <random>
 #include <relpos/contact.hpp>
 #include <relpos/scene.hpp>
@@ -497,4 +498,65 @@ TEST_CASE("random near-tangent and exactly tangent dyadic spheres", "[contact][r
   }
   CHECK(n == 600);
   CHECK(tangent > 50);
+}
+
+TEST_CASE("Ellipsoid::translated is the exact translate", "[contact][tracker]") {
+  Rng g(2026);
+  for (int n = 0; n < 200; ++n) {
+    const Vector3 c{g.rational(-8, 8, 16), g.rational(-8, 8, 16), g.rational(-8, 8, 16)};
+    const Vector3 d{g.rational(-40, 40, 7), g.rational(-40, 40, 9), g.rational(-40, 40, 5)};
+    const Rational r = g.positive_rational(9, 16);
+    // A sphere moved is the sphere about the moved centre.
+    const Ellipsoid s = Ellipsoid::sphere(c, r).translated(d);
+    CHECK(s.matrix().a == Ellipsoid::sphere(V(c[0] + d[0], c[1] + d[1], c[2] + d[2]), r).matrix().a);
+    // A rotated ellipsoid moved is the one built about the moved centre; and it validates.
+    const relpos::Quaternion q{Q(g.uniform(-3, 3)), Q(g.uniform(-3, 3)), Q(g.uniform(-3, 3)), Q(1 + g.uniform(0, 2))};
+    const Vector3 axes{g.positive_rational(5, 4), g.positive_rational(5, 4), g.positive_rational(5, 4)};
+    const Ellipsoid e = Ellipsoid::from_axes(c, axes, q).translated(d);
+    CHECK(e.matrix().a == Ellipsoid::from_axes(V(c[0] + d[0], c[1] + d[1], c[2] + d[2]), axes, q).matrix().a);
+    CHECK_NOTHROW(Ellipsoid::from_matrix(e.matrix()));
+  }
+}
+
+TEST_CASE("tracker update(translation) equals decide_position on the moved body", "[contact][tracker]") {
+  // Dyadic reference bodies moved by dyadic and by arbitrary double translations, including paths
+  // through exact tangencies (Disc(f) = 0: the exact fallback) and generic frames (the filter on the
+  // moved entries, without forming the moved ellipsoid).
+  const Paraboloid p = Paraboloid::from_matrix(paraboloid_matrix(Q(1), Q(2)));
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::size_t frames = 0, by_filter = 0, tangent_frames = 0;
+  const Vector3 axes{Q(1, 4), Q(1, 8), Q(1, 16)};
+  const Ellipsoid refs[3] = {
+      Ellipsoid::sphere(V(Q(0), Q(0), Q(0)), Q(1, 4)),
+      Ellipsoid::from_axes(V(Q(0), Q(0), Q(0)), axes, relpos::Quaternion{Q(1), Q(0), Q(0), Q(0)}),
+      Ellipsoid::from_axes(V(Q(1, 2), Q(-1, 4), Q(3)), axes, relpos::Quaternion{Q(2), Q(1), Q(-1), Q(1)})};
+  for (const Ellipsoid& ref : refs) {
+    relpos::ExteriorTracker tr(p, ref);
+    for (int k = 0; k <= 400; ++k) {
+      std::array<double, 3> d;
+      if (k % 4 == 0) {  // dyadic path down the axis: exact TE / TI frames for the sphere at z = -+1/4
+        d = {0.0, 0.0, -1.0 + (k / 4) / 40.0};
+      } else {
+        d = {2 * u(rng), 2 * u(rng), 4 * u(rng) + 1};  // arbitrary doubles
+      }
+      const Vector3 t{relpos::exact_rational(d[0]), relpos::exact_rational(d[1]), relpos::exact_rational(d[2])};
+      const Ellipsoid moved = ref.translated(t);
+      const auto fr = tr.update(d);
+      const Verdict v = relpos::decide_position(moved, p);
+      INFO("frame " << k << " d = (" << d[0] << ", " << d[1] << ", " << d[2] << ")");
+      CHECK(fr.position == v.position);
+      CHECK(fr.rule == v.rule);
+      CHECK(fr.contact == v.contact);
+      if (v.position == Position::TI || v.position == Position::TE) ++tangent_frames;
+      if (k % 50 == 0) CHECK(relpos::classify_exact(moved, p, Evidence::Minimal).position == fr.position);
+    }
+    frames += tr.counts().frames;
+    by_filter += tr.counts().by_filter;
+    std::cout << "[tracker-translation] filter " << tr.counts().by_filter << " of " << tr.counts().frames << "\n";
+    CHECK(tr.counts().frames == 401);
+  }
+  INFO("by filter " << by_filter << " of " << frames);
+  CHECK(tangent_frames >= 2);           // the sphere's path hits TE and TI exactly
+  CHECK(by_filter * 10 >= frames * 9);  // the translated filter decides the generic frames
 }

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <random>
+#include <relpos/classify.hpp>
 #include <relpos/scene.hpp>
 #include <relpos/semi_static_filter.hpp>
 #include <relpos/smallness.hpp>
@@ -216,5 +218,91 @@ TEST_CASE("semi-static filter on rational entries: every certified sign is the e
             << " signs certified\n";
   CHECK(wrong == 0);
   CHECK(pairs >= 500);
+  CHECK(certified * 10 >= quantities * 8);
+}
+
+TEST_CASE("semi-static filter: entries that are subnormal as doubles are not trusted (review finding)",
+          "[filters][regression]") {
+  // An ellipsoid whose entries lie near 2^-1000: mpq_get_d of a is subnormal and off by up to 2^-1074
+  // (not 2^-52 |v|); the filter once certified det E > 0 and rho > 1 here, and decide_position said
+  // "unclassified" where classify_exact says E.
+  auto two_to_minus = [](int k) { return Q(1) / pow_q(Q(2), k); };  // pow_q takes k >= 0
+  const Rational S = two_to_minus(990);
+  const Rational n = two_to_minus(1015) * (Q(1) + two_to_minus(20));
+  const Rational a = n * n / S + two_to_minus(1100);
+  relpos::Matrix4 E, P;
+  for (auto& x : E.a) x = Q(0);
+  for (auto& x : P.a) x = Q(0);
+  E(0, 0) = a, E(0, 1) = E(1, 0) = n, E(1, 1) = S, E(2, 2) = S, E(3, 3) = -S;
+  P(0, 0) = Q(1), P(1, 1) = Q(1, 4), P(2, 3) = P(3, 2) = Q(-1, 2), P(3, 3) = Q(10);
+  struct V {
+    const relpos::Matrix4& m;
+    const Rational& operator()(int i, int j) const { return m(i, j); }
+  };
+  const auto f = relpos::characteristic_polynomial<Rational>(V{P}, V{E});
+  const auto s = relpos::special_polynomial<Rational>(V{P}, V{E});
+  const relpos::SturmHabicht<Rational> sh(f);
+  const relpos::SmallnessQuantities<Rational> sq(f, s);
+  const Rational q[13] = {f[0],     f[1],     f[2],     f[3],     f[4],      sh.g2[0],  sh.g2[1],
+                          sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
+  const auto got = flatten(relpos::semi_static_filter_signs(P, E));
+  for (std::size_t i = 0; i < 13; ++i)
+    if (CGAL::is_certain(got[i])) CHECK(static_cast<int>(CGAL::get_certain(got[i])) == sgn(q[i]));
+  const Ellipsoid e = Ellipsoid::from_matrix(E);
+  const Paraboloid p = Paraboloid::from_matrix(P);
+  CHECK(relpos::decide_position(e, p).position == relpos::classify_exact(e, p, relpos::Evidence::Minimal).position);
+  CHECK(relpos::classify_exact(e, p, relpos::Evidence::Minimal).position == relpos::Position::E);
+}
+
+TEST_CASE("translated semi-static filter: every certified sign is the exact sign of the moved body",
+          "[filters][random]") {
+  // The moved ellipsoid's entries are evaluated with their error carried along (never formed
+  // exactly); compare with the exact signs of Ellipsoid::translated, for exact-double and for
+  // rational reference bodies, translations over many binary orders (and zeros).
+  Rng g(seed_from_env(17));
+  std::mt19937_64 rng(g.seed);
+  const Paraboloid p = Paraboloid::standard({Q(0), Q(0), Q(0)}, Q(1), Q(2));
+  long certified = 0, quantities = 0, wrong = 0;
+  for (int n = 0; n < 600; ++n) {
+    const Vector3 c{g.rational(-8, 8, n % 2 ? 16 : 7), g.rational(-8, 8, 16), g.rational(-4, 8, 16)};
+    const Ellipsoid ref = n % 3 == 0 ? Ellipsoid::sphere(c, Q(g.uniform(1, 32), 64))
+                                     : Ellipsoid::from_axes(c, V(Q(1, 4), Q(1, 8), Q(g.uniform(1, 8), 32)),
+                                                            relpos::Quaternion{Q(g.uniform(-2, 2)), Q(g.uniform(-2, 2)),
+                                                                               Q(g.uniform(-2, 2)), Q(1)});
+    std::array<double, 3> d;
+    for (double& x : d) {
+      const int kind = static_cast<int>(g.uniform(0, 9));
+      x = kind == 0
+              ? 0.0
+              : std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng), static_cast<int>(g.uniform(-30, 3)));
+    }
+    const Ellipsoid moved =
+        ref.translated(V(relpos::exact_rational(d[0]), relpos::exact_rational(d[1]), relpos::exact_rational(d[2])));
+    struct M {
+      const relpos::Matrix4& m;
+      const Rational& operator()(int i, int j) const { return m(i, j); }
+    };
+    const auto f = relpos::characteristic_polynomial<Rational>(M{p.matrix()}, M{moved.matrix()});
+    const auto s = relpos::special_polynomial<Rational>(M{p.matrix()}, M{moved.matrix()});
+    const relpos::SturmHabicht<Rational> sh(f);
+    const relpos::SmallnessQuantities<Rational> sq(f, s);
+    const Rational q[13] = {f[0],     f[1],     f[2],     f[3],     f[4],      sh.g2[0],  sh.g2[1],
+                            sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
+    const auto got =
+        flatten(ref.filter_doubles()
+                    ? relpos::semi_static_filter_signs_translated(*p.filter_doubles(), *ref.filter_doubles(), d)
+                    : relpos::semi_static_filter_signs_translated(p.matrix(), ref.matrix(), d));
+    for (std::size_t i = 0; i < 13; ++i) {
+      ++quantities;
+      if (!CGAL::is_certain(got[i])) continue;
+      ++certified;
+      const int x = static_cast<int>(CGAL::get_certain(got[i]));
+      CAPTURE(n, i, x);
+      CHECK(x == sgn(q[i]));
+      wrong += x != sgn(q[i]);
+    }
+  }
+  std::cout << "[filters] translated: " << certified << " of " << quantities << " signs certified\n";
+  CHECK(wrong == 0);
   CHECK(certified * 10 >= quantities * 8);
 }

@@ -156,6 +156,13 @@ class ExteriorTracker {
   /// The certified position of this frame (decide_position(placed, p)).
   Frame update(const Ellipsoid& placed);
 
+  /// The reference body moved by `translation` (its centre moves by it; exact doubles): the same
+  /// answer as update(body.translated(translation)), without constructing the moved ellipsoid. The
+  /// moved entries are evaluated with their error carried along (semi_static_filter.hpp) and rho is
+  /// the reference's, exactly (a translate has the same M and det E). Only when a sign is uncertain
+  /// or Disc(f) = 0 is the moved ellipsoid built exactly (Ellipsoid::translated) and classified.
+  Frame update(const std::array<double, 3>& translation);
+
   /// rho compared with 1 for the reference body, exactly.
   int rho_vs_one() const { return rho_vs_one_; }
 
@@ -167,8 +174,10 @@ class ExteriorTracker {
 
  private:
   std::optional<int> frame_rho(const Ellipsoid& placed);
+  Frame finish(const Verdict& v, DecidedBy by);
   Paraboloid p_;
-  Matrix4 m_ref_;  ///< reference 3x3 block (in a 4x4 for convenience)
+  Ellipsoid body_;  ///< the reference placement (update(translation) moves it)
+  Matrix4 m_ref_;   ///< reference 3x3 block (in a 4x4 for convenience)
   std::optional<DoubleMatrix4> m_ref_doubles_;
   int rho_vs_one_ = 0;
   double det_lo_ = 0, det_hi_ = 0;  ///< enclosure of -det E of the reference (> 0)

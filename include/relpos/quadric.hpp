@@ -98,6 +98,11 @@ class Ellipsoid {
   /// The image of the unit ball under x = centre + L u, L invertible.
   static Ellipsoid from_map(const Vector3& centre, const Matrix3& linear);
 
+  /// This ellipsoid moved by d (its centre becomes centre + d): E' = T^T E T, T = [[I, -d], [0, 1]],
+  /// so e' = e - M d and e0' = e0 - 2 e.d + d^T M d, exactly. No validation: a translate of an
+  /// ellipsoid is one (from_matrix costs tens of microseconds; this a few).
+  Ellipsoid translated(const Vector3& d) const;
+
   const Matrix4& matrix() const { return m_; }
   /// The matrix as doubles when every entry is exactly a double (enables the static filter).
   const std::optional<DoubleMatrix4>& doubles() const { return d_; }

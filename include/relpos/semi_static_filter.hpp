@@ -27,4 +27,15 @@ DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& p, const 
 /// the interval stage, which converts every entry with CGAL::to_interval and switches the rounding mode.
 DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e);
 
+/// The signs for the ellipsoid e (normalized exact doubles, as filter_doubles()) moved by d (exact
+/// doubles; the centre moves by +d) against p, without forming the moved ellipsoid: its entries
+/// e - M d and e0 - 2 e.d + d^T M d are evaluated with their error carried along, then the same
+/// quantities as above. For trackers and moving bodies: a frame costs a few hundred nanoseconds
+/// instead of constructing an Ellipsoid. Uncertain when a bound does not separate or d is out of range.
+DecisionSigns semi_static_filter_signs_translated(const DoubleMatrix4& p, const DoubleMatrix4& e,
+                                                  const std::array<double, 3>& d);
+
+/// The same for rational matrices (entries enter as double enclosures; counts tracked per call).
+DecisionSigns semi_static_filter_signs_translated(const Matrix4& p, const Matrix4& e, const std::array<double, 3>& d);
+
 }  // namespace relpos
