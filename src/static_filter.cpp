@@ -90,6 +90,13 @@ inline double power_of_two(int k) {  // 2^k, for -1022 <= k <= 1023
 }
 inline bool normal_range(double x) { return x >= DBL_MIN && x <= DBL_MAX; }
 
+/// The step 2^t of the balancing lambda = 2^t mu that makes |f4| 2^(4t) ~ |f0|, or 0 when f0 or f4
+/// is out of the normal range.
+double balancing_step(const Quartic<double>& f) {
+  if (!normal_range(std::fabs(f[0])) || !normal_range(std::fabs(f[4]))) return 0;
+  return power_of_two((exponent_of(f[0]) - exponent_of(f[4])) / 4);
+}
+
 /// Scale values and their error bounds by one power of two so that every |v| + err is below 1;
 /// false if out of the normal range.
 bool scale_into_unit(double* v, double* err, int n) {
@@ -154,8 +161,8 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
   for (int i = 0; i < 3; ++i) es[i] = b.s[i];
   // Balance the quartic: lambda = 2^t mu with |f4| 2^(4t) ~ |f0|. f_i, s_i gain 2^(t i): exact.
-  if (!normal_range(std::fabs(f[0])) || !normal_range(std::fabs(f[4]))) return uncertain();
-  const double step = power_of_two((exponent_of(f[0]) - exponent_of(f[4])) / 4);
+  const double step = balancing_step(f);
+  if (step == 0) return uncertain();
   double w = 1;
   for (int i = 0; i < 5; ++i, w *= step) {
     f[static_cast<std::size_t>(i)] *= w;
@@ -201,8 +208,8 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   auto f = characteristic_polynomial<double>(p, e);
   double ef[5];
   for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
-  if (!normal_range(std::fabs(f[0])) || !normal_range(std::fabs(f[4]))) return uncertain();
-  const double step = power_of_two((exponent_of(f[0]) - exponent_of(f[4])) / 4);
+  const double step = balancing_step(f);
+  if (step == 0) return uncertain();
   double w = 1;
   for (int i = 0; i < 5; ++i, w *= step) {
     f[static_cast<std::size_t>(i)] *= w;

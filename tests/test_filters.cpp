@@ -37,15 +37,13 @@ std::array<USign, 13> flatten(const DecisionSigns& d) {
 }
 
 struct RationalView {
-  std::array<Rational, 16> a;
-  explicit RationalView(const DoubleMatrix4& m) {
-    for (std::size_t i = 0; i < 16; ++i) a[i] = relpos::exact_rational(m[i]);
-  }
-  const Rational& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+  const relpos::Matrix4& m;
+  const Rational& operator()(int i, int j) const { return m(i, j); }
 };
 
-std::array<int, 13> exact_signs(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
-  const RationalView p(pn), e(en);
+/// Exact signs of the 13 quantities (flatten's order) for rational matrices.
+std::array<int, 13> exact_signs(const relpos::Matrix4& pm, const relpos::Matrix4& em) {
+  const RationalView p{pm}, e{em};
   const auto f = relpos::characteristic_polynomial<Rational>(p, e);
   const auto s = relpos::special_polynomial<Rational>(p, e);
   const relpos::SturmHabicht<Rational> sh(f);
@@ -55,6 +53,15 @@ std::array<int, 13> exact_signs(const DoubleMatrix4& pn, const DoubleMatrix4& en
   std::array<int, 13> out{};
   for (int i = 0; i < 13; ++i) out[static_cast<std::size_t>(i)] = sgn(q[i]);
   return out;
+}
+
+std::array<int, 13> exact_signs(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
+  relpos::Matrix4 p, e;
+  for (std::size_t i = 0; i < 16; ++i) {
+    p.a[i] = relpos::exact_rational(pn[i]);
+    e.a[i] = relpos::exact_rational(en[i]);
+  }
+  return exact_signs(p, e);
 }
 
 struct Tally {
@@ -176,16 +183,7 @@ TEST_CASE("semi-static filter on rational entries: every certified sign is the e
   long certified = 0, quantities = 0, wrong = 0, pairs = 0;
   auto check = [&](const relpos::Matrix4& pm, const relpos::Matrix4& em) {
     // Exact signs of the same quantities on the rational matrices themselves.
-    struct V {
-      const relpos::Matrix4& m;
-      const Rational& operator()(int i, int j) const { return m(i, j); }
-    };
-    const auto f = relpos::characteristic_polynomial<Rational>(V{pm}, V{em});
-    const auto s = relpos::special_polynomial<Rational>(V{pm}, V{em});
-    const relpos::SturmHabicht<Rational> sh(f);
-    const relpos::SmallnessQuantities<Rational> sq(f, s);
-    const Rational q[13] = {f[0],     f[1],     f[2],     f[3],     f[4],      sh.g2[0],  sh.g2[1],
-                            sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
+    const auto q = exact_signs(pm, em);
     const auto got = flatten(relpos::semi_static_filter_signs(pm, em));
     for (std::size_t i = 0; i < 13; ++i) {
       ++quantities;
@@ -193,8 +191,8 @@ TEST_CASE("semi-static filter on rational entries: every certified sign is the e
       ++certified;
       const int x = static_cast<int>(CGAL::get_certain(got[i]));
       CAPTURE(i, x);
-      CHECK(x == sgn(q[i]));
-      wrong += x != sgn(q[i]);
+      CHECK(x == q[i]);
+      wrong += x != q[i];
     }
     ++pairs;
   };
@@ -235,19 +233,10 @@ TEST_CASE("semi-static filter: entries that are subnormal as doubles are not tru
   for (auto& x : P.a) x = Q(0);
   E(0, 0) = a, E(0, 1) = E(1, 0) = n, E(1, 1) = S, E(2, 2) = S, E(3, 3) = -S;
   P(0, 0) = Q(1), P(1, 1) = Q(1, 4), P(2, 3) = P(3, 2) = Q(-1, 2), P(3, 3) = Q(10);
-  struct V {
-    const relpos::Matrix4& m;
-    const Rational& operator()(int i, int j) const { return m(i, j); }
-  };
-  const auto f = relpos::characteristic_polynomial<Rational>(V{P}, V{E});
-  const auto s = relpos::special_polynomial<Rational>(V{P}, V{E});
-  const relpos::SturmHabicht<Rational> sh(f);
-  const relpos::SmallnessQuantities<Rational> sq(f, s);
-  const Rational q[13] = {f[0],     f[1],     f[2],     f[3],     f[4],      sh.g2[0],  sh.g2[1],
-                          sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
+  const auto q = exact_signs(P, E);
   const auto got = flatten(relpos::semi_static_filter_signs(P, E));
   for (std::size_t i = 0; i < 13; ++i)
-    if (CGAL::is_certain(got[i])) CHECK(static_cast<int>(CGAL::get_certain(got[i])) == sgn(q[i]));
+    if (CGAL::is_certain(got[i])) CHECK(static_cast<int>(CGAL::get_certain(got[i])) == q[i]);
   const Ellipsoid e = Ellipsoid::from_matrix(E);
   const Paraboloid p = Paraboloid::from_matrix(P);
   CHECK(relpos::decide_position(e, p).position == relpos::classify_exact(e, p, relpos::Evidence::Minimal).position);
@@ -278,16 +267,7 @@ TEST_CASE("translated semi-static filter: every certified sign is the exact sign
     }
     const Ellipsoid moved =
         ref.translated(V(relpos::exact_rational(d[0]), relpos::exact_rational(d[1]), relpos::exact_rational(d[2])));
-    struct M {
-      const relpos::Matrix4& m;
-      const Rational& operator()(int i, int j) const { return m(i, j); }
-    };
-    const auto f = relpos::characteristic_polynomial<Rational>(M{p.matrix()}, M{moved.matrix()});
-    const auto s = relpos::special_polynomial<Rational>(M{p.matrix()}, M{moved.matrix()});
-    const relpos::SturmHabicht<Rational> sh(f);
-    const relpos::SmallnessQuantities<Rational> sq(f, s);
-    const Rational q[13] = {f[0],     f[1],     f[2],     f[3],     f[4],      sh.g2[0],  sh.g2[1],
-                            sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
+    const auto q = exact_signs(p.matrix(), moved.matrix());
     const auto got =
         flatten(ref.filter_doubles()
                     ? relpos::semi_static_filter_signs_translated(*p.filter_doubles(), *ref.filter_doubles(), d)
@@ -298,8 +278,8 @@ TEST_CASE("translated semi-static filter: every certified sign is the exact sign
       ++certified;
       const int x = static_cast<int>(CGAL::get_certain(got[i]));
       CAPTURE(n, i, x);
-      CHECK(x == sgn(q[i]));
-      wrong += x != sgn(q[i]);
+      CHECK(x == q[i]);
+      wrong += x != q[i];
     }
   }
   std::cout << "[filters] translated: " << certified << " of " << quantities << " signs certified\n";
