@@ -13,6 +13,11 @@
 #include "relpos/semi_static_filter.hpp"
 #include "relpos/smallness.hpp"
 #include "relpos/static_filter.hpp"
+#include "relpos/running_bound.hpp"
+#include "anysize/exact.hpp"
+#include "anysize/gap.hpp"
+#include "certificate/build.hpp"
+#include <stdexcept>
 #include "relpos/sturm.hpp"
 
 namespace relpos {
@@ -50,6 +55,25 @@ std::string describe(Rule r) {
       return "f~ is square-free (Disc(f~) > 0) and all roots of f are real and negative: interior";
     case Rule::TwoPositiveRoots:
       return "f has two distinct positive roots (0 < lambda3 < lambda4): separated";
+    case Rule::RootsAboveLambdaS:
+      return "f is square-free with four real negative roots, two of them in (lambda_s, 0): interior (any size, "
+             "math.md section 8)";
+    case Rule::NoRootAboveLambdaS:
+      return "f is square-free with four real roots, none above lambda_s (the root of s nearest 0) and none "
+             "positive: crossing (any size, math.md section 8)";
+    case Rule::OddPositiveRoot:
+      return "f has a positive root of odd multiplicity: separated (math.md section 8, rule 1)";
+    case Rule::EvenPositiveRoot:
+      return "f has a positive root, of even multiplicity: tangent from outside (math.md section 8, rule 2)";
+    case Rule::OddGapRoot:
+      return "f has a root of odd multiplicity in (lambda_s, 0): interior (math.md section 8, rule 3)";
+    case Rule::EvenGapRoot:
+      return "f~ has a multiple root in (lambda_s, 0): tangent from inside (math.md section 8, rule 4)";
+    case Rule::HardCase:
+      return "f~ vanishes at lambda_s, the root of s nearest 0: tangent from inside along two points or a conic "
+             "(the hard case, math.md section 8, rule 4)";
+    case Rule::NoRootInGap:
+      return "no positive root and no root of f~ in [lambda_s, 0): crossing (math.md section 8, rule 5)";
     case Rule::NotSmallContact:
       return "not small; f has non-real roots, so the surfaces meet (Finsler-Calabi), but the type of contact "
              "needs the full arrangement classification";
@@ -89,8 +113,11 @@ std::string pattern(const Verdict& x) {
          (x.nonreal_multiple ? ", a multiple non-real root" : "");
 }
 
-/// The classification table (math.md sections 3 and 6), written once for every stage. Reads the
-/// root facts of v and its rho comparison; writes position, contact and rule.
+/// The classification (math.md sections 3, 6 and 8), written once for every stage. Reads the root
+/// facts of v and its rho comparison; writes position, contact and rule. Leaves rule None (the
+/// position undecided) when the facts do not suffice: a pair that is not small with four real
+/// negative roots needs roots_above_lambda_s (section 8), and a multiple root outside the proven
+/// small-pair table needs the exact facts of section 8 (decide_any_size).
 void decide(Verdict& v) {
   v.small = v.rho_vs_one <= 0;
   const int tangencies = v.tangent_negative + v.tangent_positive;
@@ -99,25 +126,59 @@ void decide(Verdict& v) {
     v.contact = static_cast<signed char>(contact);
     v.rule = rule;
   };
-  if (v.nonreal_multiple > 0) return set(Position::Unclassified, -1, Rule::Finding);
-  // Valid for any size (math.md section 6: Wang-Wang-Kim through a projective map).
-  if (tangencies == 1 && v.tangent_positive == 1)
-    return v.nonreal_roots ? set(Position::Unclassified, 1, Rule::Finding)
-                           : set(Position::TE, 1, Rule::PositiveMultipleRoot);
+  v.position = Position::Unclassified;
+  v.rule = Rule::None;
+  v.contact = -1;
+  const bool square_free = tangencies == 0 && v.nonreal_multiple == 0 && v.sign_disc_f != 0;
+  if (square_free) {
+    // f has >= 2 real roots at or below lambda_s (section 8); the other two decide, for any size.
+    if (v.nonreal_roots == 2 && v.positive_roots == 0) return set(Position::C, 1, Rule::NonRealPairCrossing);
+    if (v.nonreal_roots == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
+    if (v.nonreal_roots == 0 && v.positive_roots == 0) {
+      if (v.small) return set(Position::I, 0, Rule::AllRootsNegative);  // section 3, proven for small pairs
+      if (v.roots_above_lambda_s == 1) return set(Position::I, 0, Rule::RootsAboveLambdaS);
+      if (v.roots_above_lambda_s == 0) return set(Position::C, 1, Rule::NoRootAboveLambdaS);
+    }
+    return;  // undecided: the gap test, or a pattern the theorem excludes (decide_any_size reports it)
+  }
+  if (!v.small || v.nonreal_multiple > 0) return;  // section 8, exactly (decide_any_size)
+  // Small pairs with a multiple root: the table of math.md section 3.
+  if (tangencies == 1 && v.tangent_positive == 1 && v.nonreal_roots == 0)
+    return set(Position::TE, 1, Rule::PositiveMultipleRoot);
   if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 2)
     return set(Position::E, 0, Rule::TwoPositiveRoots);
-  if (!v.small)
-    return v.nonreal_roots > 0 ? set(Position::Unclassified, 1, Rule::NotSmallContact)
-                               : set(Position::Unclassified, -1, Rule::NotSmallUnknown);
-  // Small: the table of math.md section 3.
-  if (tangencies == 0 && v.nonreal_roots == 2)
-    return v.positive_roots ? set(Position::Unclassified, 1, Rule::Finding)
-                            : set(Position::C, 1, Rule::NonRealPairCrossing);
+  if (tangencies == 0 && v.nonreal_roots == 2 && v.positive_roots == 0)
+    return set(Position::C, 1, Rule::NonRealPairCrossing);
   if (tangencies == 1 && v.tangent_negative == 1 && v.nonreal_roots == 0 && v.positive_roots == 0)
     return set(Position::TI, 1, Rule::NegativeMultipleRoot);
   if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 0)
     return set(Position::I, 0, Rule::AllRootsNegative);
-  set(Position::Unclassified, -1, Rule::Finding);
+}
+
+bool decided(const Verdict& v) { return v.rule != Rule::None; }
+
+/// Section 8 from exact facts of f and s (integer coefficients; any common positive scaling of the
+/// roots): the five rules in order. Every valid pair gets one of the five positions.
+void decide_any_size(const Quartic<Integer>& f, const Quadratic<Integer>& s, Verdict& v) {
+  const anysize::AnySizeFacts x = anysize::any_size_facts(anysize::to_poly(f.data(), 5), anysize::to_poly(s.data(), 3));
+  auto set = [&](Position pos, int contact, Rule rule) {
+    v.position = pos;
+    v.contact = static_cast<signed char>(contact);
+    v.rule = rule;
+  };
+  v.roots_above_lambda_s = static_cast<signed char>(x.odd_gap + x.even_gap > 0);
+  switch (x.rule) {
+    case 1:
+      return set(Position::E, 0, Rule::OddPositiveRoot);
+    case 2:
+      return set(Position::TE, 1, Rule::EvenPositiveRoot);
+    case 3:
+      return set(Position::I, 0, Rule::OddGapRoot);
+    case 4:
+      return set(Position::TI, 1, x.hard ? Rule::HardCase : Rule::EvenGapRoot);
+    default:
+      return set(Position::C, 1, Rule::NoRootInGap);
+  }
 }
 
 using detail::rounding_to_nearest;
@@ -371,6 +432,80 @@ struct ExactData {
   Quadratic<Integer> s_integer() const { return {s[0].to_integer(), s[1].to_integer(), s[2].to_integer()}; }
 };
 
+/// A square-free f with four real negative roots and a pair that is not small: the position depends
+/// on where two roots lie against lambda_s (anysize/gap.hpp).
+bool needs_gap(const Verdict& v) {
+  return !decided(v) && !v.small && v.sign_disc_f != 0 && v.tangent_negative + v.tangent_positive == 0 &&
+         v.nonreal_roots == 0 && v.positive_roots == 0 && v.roots_above_lambda_s < 0;
+}
+
+/// The gap test of section 8 on RunningBound (semi-static doubles) from the normalized matrices.
+std::optional<bool> gap_semi_static(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
+  MatrixOf<RunningBound> pv, ev;
+  for (std::size_t i = 0; i < 16; ++i) {
+    pv.a[i] = RunningBound(pn[i]);
+    ev.a[i] = RunningBound(en[i]);
+  }
+  Quartic<RunningBound> f = characteristic_polynomial<RunningBound>(pv, ev);
+  Quadratic<RunningBound> s = special_polynomial<RunningBound>(pv, ev);
+  // Positive powers of two keep the degree-8 quantities clear of under- and overflow.
+  auto into_unit = [](RunningBound* c, std::size_t n) {
+    double mx = 0;
+    for (std::size_t i = 0; i < n; ++i) mx = std::max(mx, std::fabs(c[i].value()));
+    if (!(mx > 0 && std::isfinite(mx))) return;
+    const double k = std::ldexp(1.0, -std::ilogb(mx));
+    for (std::size_t i = 0; i < n; ++i) c[i] = c[i].times_power_of_two(k);
+  };
+  into_unit(f.data(), 5);
+  into_unit(s.data(), 3);
+  return anysize::roots_above_lambda_s(anysize::GapQuantities<RunningBound>(f, s),
+                                       [](const RunningBound& x) -> std::optional<int> {
+                                         const int sg = x.sign();
+                                         if (sg == 0) return std::nullopt;
+                                         return sg;
+                                       });
+}
+
+/// The gap test through its own ladder: semi-static doubles, intervals, exact integers (the last
+/// always certain). Records the latest stage used.
+void settle_gap(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v, std::optional<ExactData>& exact) {
+  std::optional<bool> g;
+  Stage stage = v.stage;
+  if (use_filter) {
+    if (rounding_to_nearest() && e.filter_doubles() && p.filter_doubles()) {
+      g = gap_semi_static(*p.filter_doubles(), *e.filter_doubles());
+      stage = std::max(stage, Stage::SemiStaticDouble);
+    }
+    if (!g) {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const bool dbl = e.doubles() && p.doubles();
+      const MatrixOf<Interval> pi = dbl ? to_intervals(*p.doubles()) : to_intervals(p.matrix());
+      const MatrixOf<Interval> ei = dbl ? to_intervals(*e.doubles()) : to_intervals(e.matrix());
+      g = anysize::roots_above_lambda_s(characteristic_polynomial<Interval>(pi, ei),
+                                        special_polynomial<Interval>(pi, ei));
+      stage = std::max(stage, Stage::Interval);
+    }
+  }
+  if (!g) {
+    if (!exact) exact.emplace(e, p);
+    g = anysize::roots_above_lambda_s(exact->f, exact->s);
+    stage = std::max(stage, Stage::ExactSigns);
+  }
+  if (!g) throw std::logic_error("relpos: the exact gap test left a sign uncertain");
+  v.roots_above_lambda_s = static_cast<signed char>(*g);
+  v.stage = stage;
+  decide(v);
+}
+
+/// A stage certified the root counts: finish the decision (the gap test when it is needed). False
+/// when the exact facts of section 8 are needed (multiple roots outside the small-pair table).
+bool finish(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v, std::optional<ExactData>& exact) {
+  if (decided(v)) return true;
+  if (!needs_gap(v)) return false;
+  settle_gap(e, p, use_filter, v, exact);
+  return decided(v);
+}
+
 /// The whole filter -> exact policy in one place: each stage certifies what it can, the next one
 /// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
 Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact) {
@@ -384,21 +519,21 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
       v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
       const bool in_range = e.filter_doubles() && p.filter_doubles() && nearest;
       if (in_range) d = static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles());
-      if (decide_from_signs(d, v)) return v;
+      if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
       if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
         v.stage = Stage::SemiStaticDouble;
         merge_certain(d, semi_static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles()));
-        if (decide_from_signs(d, v)) return v;
+        if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
       }
       const auto disc = detail::certain(d.quartic.g0);
       if (!disc || *disc == 0) {  // stage 1b: a witness of Disc(f) = 0 on machine integers
         v.stage = Stage::MultipleRootWitness;
-        if (decide_from_witness(*p.doubles(), *e.doubles(), d, v)) return v;
+        if (decide_from_witness(*p.doubles(), *e.doubles(), d, v) && decided(v)) return v;
       }
     } else if (nearest) {  // stage 1' for rational entries: double enclosures of the entries
       v.stage = Stage::SemiStaticDouble;
       d = semi_static_filter_signs(p.matrix(), e.matrix());
-      if (decide_from_signs(d, v)) return v;
+      if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
     }
     v.stage = Stage::Interval;               // stage 2: interval arithmetic
     CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false> needs rounding towards +inf
@@ -406,14 +541,16 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
     const MatrixOf<Interval> pi = dbl ? to_intervals(*p.doubles()) : to_intervals(p.matrix());
     const MatrixOf<Interval> ei = dbl ? to_intervals(*e.doubles()) : to_intervals(e.matrix());
     merge_certain(d, signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)));
-    if (decide_from_signs(d, v)) return v;
+    if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
   }
   if (!exact) exact.emplace(e, p);
   v.stage = Stage::ExactSigns;                     // stage 3: exact integer signs of the same polynomials
   const SturmHabicht<PooledInteger> sh(exact->f);  // kept: stage 4 reads the subresultants
   {
     const SmallnessQuantities<PooledInteger> sq(exact->f, exact->s);
-    if (decide_from_signs(DecisionSigns{signs_of(exact->f, sh), sign_of(sq.vertex), sign_of(sq.graeffe)}, v)) return v;
+    if (decide_from_signs(DecisionSigns{signs_of(exact->f, sh), sign_of(sq.vertex), sign_of(sq.graeffe)}, v) &&
+        finish(e, p, use_filter, v, exact))
+      return v;
   }
   // Stage 4: Disc(f) = 0 or a defective Sturm-Habicht sequence: exact gcd and factorisation.
   v.stage = Stage::ExactRoots;
@@ -439,6 +576,8 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
     x.sign_disc_ftilde = rs.sign_disc_ftilde;
   }
   decide_from_facts(x, *compare_rho_with_one(exact->f, exact->s), v);  // exact: certain
+  if (!decided(v) && needs_gap(v)) settle_gap(e, p, false, v, exact);
+  if (!decided(v)) decide_any_size(fi, si, v);  // math.md section 8: every pair gets an answer
   return v;
 }
 
@@ -494,6 +633,7 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const Quadratic<Integer> s = special_polynomial<Integer>(pz, ez);
     const RootStructure rs = exact_root_structure(f, s);
     fill_full_evidence(f, s, scale, out, &rs);
+    out.certificate = certificate::build(e, p, v.position);
   }
   return out;
 }

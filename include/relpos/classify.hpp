@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "relpos/certificate.hpp"
 #include "relpos/pencil.hpp"
 #include "relpos/quadric.hpp"
 #include "relpos/roots.hpp"
@@ -52,6 +53,14 @@ enum class Rule : unsigned char {
   PositiveMultipleRoot,  ///< TE: f~ has a positive multiple root (any size)
   AllRootsNegative,      ///< I: f~ square-free, all roots real and negative
   TwoPositiveRoots,      ///< E: two distinct positive roots (any size)
+  RootsAboveLambdaS,     ///< I: f square-free, roots real, none positive, two in (lambda_s, 0) (any size)
+  NoRootAboveLambdaS,    ///< C: f square-free, roots real, none above lambda_s (any size)
+  OddPositiveRoot,       ///< E: a root of odd multiplicity in (0, oo) (section 8 rule 1)
+  EvenPositiveRoot,      ///< TE: a positive root, every one of even multiplicity (section 8 rule 2)
+  OddGapRoot,            ///< I: a root of odd multiplicity in (lambda_s, 0) (section 8 rule 3)
+  EvenGapRoot,           ///< TI: f~ has a multiple root in (lambda_s, 0) (section 8 rule 4)
+  HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (section 8 rule 4)
+  NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (section 8 rule 5)
   NotSmallContact,       ///< not small, non-real roots: the surfaces meet, type unknown
   NotSmallUnknown,       ///< not small, no certificate
   Finding,               ///< root pattern outside the table
@@ -70,6 +79,9 @@ struct Verdict {
   signed char sign_disc_f = 0, sign_disc_ftilde = 0;
   signed char real_roots = 0, negative_roots = 0, positive_roots = 0, nonreal_roots = 0;
   signed char tangent_negative = 0, tangent_positive = 0, nonreal_multiple = 0;
+  /// Whether f has roots in (lambda_s, 0) (math.md section 8): 1 yes, 0 no, -1 not computed (only
+  /// pairs that are not small with four real negative roots need it).
+  signed char roots_above_lambda_s = -1;
 };
 
 /// Adaptive exact verdict (static double filter, intervals, exact integers, exact roots).
@@ -110,6 +122,8 @@ struct Classification {
   std::vector<RealRoot> roots;  ///< distinct real roots of f with multiplicities (Full only)
   std::optional<Rational> rho;  ///< rho exactly, when it is rational
   double rho_approx = 0;        ///< rho to double precision (for display)
+  /// Evidence anyone can check with rational arithmetic (certificate.hpp; Evidence::Full only).
+  Certificate certificate;
 };
 
 /// Adaptive exact classification (interval filter, then exact integers).

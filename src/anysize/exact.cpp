@@ -1,0 +1,219 @@
+#include "anysize/exact.hpp"
+
+#include <gmp.h>
+
+#include <stdexcept>
+
+namespace relpos::anysize {
+
+Poly trimmed(Poly p) {
+  while (!p.empty() && p.back() == 0) p.pop_back();
+  return p;
+}
+
+Poly derivative(const Poly& p) {
+  Poly d;
+  for (std::size_t i = 1; i < p.size(); ++i) d.push_back(p[i] * Rational(static_cast<long>(i)));
+  return trimmed(std::move(d));
+}
+
+namespace {
+
+/// a = q b + r with deg r < deg b.
+void divide(const Poly& a, const Poly& b, Poly& q, Poly& r) {
+  if (b.empty()) throw std::logic_error("polynomial division by zero");
+  r = trimmed(a);
+  q.assign(r.size() >= b.size() ? r.size() - b.size() + 1 : 0, Rational(0));
+  while (!r.empty() && r.size() >= b.size()) {
+    const std::size_t shift = r.size() - b.size();
+    const Rational c = r.back() / b.back();
+    q[shift] = c;
+    for (std::size_t i = 0; i < b.size(); ++i) r[shift + i] -= c * b[i];
+    r.pop_back();  // the leading term cancels exactly
+    r = trimmed(std::move(r));
+  }
+  q = trimmed(std::move(q));
+}
+
+Poly monic(Poly p) {
+  if (p.empty()) return p;
+  const Rational lead = p.back();
+  for (auto& c : p) c /= lead;
+  return p;
+}
+
+Poly sub(const Poly& a, const Poly& b) {
+  Poly r(std::max(a.size(), b.size()), Rational(0));
+  for (std::size_t i = 0; i < a.size(); ++i) r[i] += a[i];
+  for (std::size_t i = 0; i < b.size(); ++i) r[i] -= b[i];
+  return trimmed(std::move(r));
+}
+
+/// Sturm sequence of a square-free p: p, p', -rem(...), ...
+std::vector<Poly> sturm_sequence(const Poly& p) {
+  std::vector<Poly> seq{p, derivative(p)};
+  while (seq.back().size() > 1) {
+    Poly r = remainder(seq[seq.size() - 2], seq.back());
+    if (r.empty()) break;
+    for (auto& c : r) c = -c;
+    seq.push_back(std::move(r));
+  }
+  return seq;
+}
+
+/// Sign changes of a sequence of signs, zeros dropped.
+int variations(const std::vector<int>& signs) {
+  int v = 0, last = 0;
+  for (int s : signs) {
+    if (s == 0) continue;
+    if (last != 0 && s != last) ++v;
+    last = s;
+  }
+  return v;
+}
+
+int sign_of_rational(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+
+}  // namespace
+
+Poly remainder(const Poly& a, const Poly& b) {
+  Poly q, r;
+  divide(a, b, q, r);
+  return r;
+}
+
+Poly quotient(const Poly& a, const Poly& b) {
+  Poly q, r;
+  divide(a, b, q, r);
+  return q;
+}
+
+Poly monic_gcd(Poly a, Poly b) {
+  a = trimmed(std::move(a));
+  b = trimmed(std::move(b));
+  while (!b.empty()) {
+    Poly r = monic(remainder(a, b));
+    a = std::move(b);
+    b = std::move(r);
+  }
+  return monic(std::move(a));
+}
+
+Rational evaluate(const Poly& p, const Rational& x) {
+  Rational acc(0);
+  for (std::size_t i = p.size(); i-- > 0;) acc = acc * x + p[i];
+  return acc;
+}
+
+std::vector<Poly> square_free_decomposition(const Poly& p) {
+  // Yun's algorithm over Q (characteristic 0).
+  std::vector<Poly> out;
+  const Poly dp = derivative(p);
+  Poly a = monic_gcd(p, dp);
+  Poly b = quotient(p, a), c = quotient(dp, a);
+  Poly d = sub(c, derivative(b));
+  while (b.size() > 1) {
+    Poly g = monic_gcd(b, d);
+    out.push_back(g);
+    b = quotient(b, g);
+    c = quotient(d, g);
+    d = sub(c, derivative(b));
+  }
+  while (!out.empty() && out.back().size() <= 1) out.pop_back();
+  return out;
+}
+
+int LambdaS::sign(const QuadraticReal& x) const {
+  const int sa = sign_of_rational(x.a), sb = d == 0 ? 0 : sign_of_rational(x.b);
+  if (sb == 0) return sa;
+  if (sa == 0) return sb;
+  if (sa == sb) return sa;
+  return sa * sign_of_rational(x.a * x.a - x.b * x.b * Rational(d));
+}
+
+QuadraticReal LambdaS::add(const QuadraticReal& x, const QuadraticReal& y) const { return {x.a + y.a, x.b + y.b}; }
+QuadraticReal LambdaS::sub(const QuadraticReal& x, const QuadraticReal& y) const { return {x.a - y.a, x.b - y.b}; }
+QuadraticReal LambdaS::mul(const QuadraticReal& x, const QuadraticReal& y) const {
+  return {x.a * y.a + x.b * y.b * Rational(d), x.a * y.b + x.b * y.a};
+}
+QuadraticReal LambdaS::div(const QuadraticReal& x, const QuadraticReal& y) const {
+  const Rational n = y.a * y.a - y.b * y.b * Rational(d);  // non-zero for y != 0 (d not a square)
+  const QuadraticReal c = mul(x, {y.a, -y.b});
+  return {c.a / n, c.b / n};
+}
+
+QuadraticReal LambdaS::at(const Poly& p) const {
+  QuadraticReal acc{Rational(0), Rational(0)};
+  for (std::size_t i = p.size(); i-- > 0;) acc = add(mul(acc, value), {p[i], Rational(0)});
+  return acc;
+}
+
+int LambdaS::compare(const Rational& q) const { return sign({q - value.a, -value.b}); }
+
+LambdaS lambda_s_of(const Poly& s) {
+  if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
+  LambdaS out;
+  const Rational disc = s[1] * s[1] - 4 * s[2] * s[0];
+  if (disc < 0) throw std::logic_error("s has non-real roots");
+  // disc = N / D: sqrt(disc) = sqrt(N D) / D. Rational iff N D is a perfect square.
+  const Integer n = disc.numerator(), den = disc.denominator();
+  Integer nd = n * den;
+  const Rational two_s2 = 2 * s[2];
+  if (mpz_perfect_square_p(nd.mpz())) {
+    Integer r;
+    mpz_sqrt(r.mpz(), nd.mpz());
+    out.d = 0;
+    out.value = {(-s[1] + Rational(r) / Rational(den)) / two_s2, Rational(0)};
+  } else {
+    out.d = nd;
+    out.value = {-s[1] / two_s2, Rational(1) / (Rational(den) * two_s2)};
+  }
+  return out;
+}
+
+AnySizeFacts any_size_facts(const Poly& f, const Poly& s) {
+  AnySizeFacts x;
+  const LambdaS ls = lambda_s_of(s);
+  x.multiplicity_s = (s[1] * s[1] - 4 * s[2] * s[0]) == 0 ? 2 : 1;
+  const std::vector<Poly> factors = square_free_decomposition(f);
+  for (std::size_t k = 0; k < factors.size(); ++k) {
+    Poly g = factors[k];
+    if (g.size() <= 1) continue;
+    const int mult = static_cast<int>(k) + 1;
+    // Divide out lambda_s (and its conjugate when irrational) so the Sturm count at lambda_s needs
+    // no convention for a root at the endpoint.
+    if (ls.sign(ls.at(g)) == 0) {
+      x.multiplicity_at_lambda_s = mult;
+      g = quotient(g, ls.rational() ? Poly{-ls.value.a, Rational(1)} : monic(s));
+    }
+    if (g.size() <= 1) continue;
+    const std::vector<Poly> seq = sturm_sequence(g);
+    std::vector<int> at_ls, at_zero, at_inf;
+    for (const Poly& q : seq) {
+      at_ls.push_back(ls.sign(ls.at(q)));
+      at_zero.push_back(sign_of_rational(q[0]));
+      at_inf.push_back(sign_of_rational(q.back()));
+    }
+    const int positive = variations(at_zero) - variations(at_inf);
+    const int gap = variations(at_ls) - variations(at_zero);
+    (mult % 2 ? x.odd_positive : x.even_positive) += positive;
+    (mult % 2 ? x.odd_gap : x.even_gap) += gap;
+  }
+  if (x.odd_positive > 0) {
+    x.rule = 1;
+  } else if (x.even_positive > 0) {
+    x.rule = 2;
+  } else if (x.odd_gap > 0) {
+    x.rule = 3;
+  } else if (x.even_gap > 0) {
+    x.rule = 4;
+  } else if (x.multiplicity_at_lambda_s > x.multiplicity_s) {
+    x.rule = 4;
+    x.hard = true;
+  } else {
+    x.rule = 5;
+  }
+  return x;
+}
+
+}  // namespace relpos::anysize

@@ -1,0 +1,431 @@
+#include "certificate/build.hpp"
+
+#include <gmp.h>
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "anysize/exact.hpp"
+#include "relpos/pencil.hpp"
+
+namespace relpos::certificate {
+namespace {
+
+using anysize::LambdaS;
+using anysize::Poly;
+using anysize::QuadraticReal;
+using V3 = std::array<Rational, 3>;
+
+int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+
+/// The pair's blocks (E = [[M, m], [m^T, e0]], P = [[A, a], [a^T, p0]]), f, s and lambda_s.
+struct Pair {
+  const Matrix4& E;
+  const Matrix4& P;
+  Poly f, s;
+  LambdaS ls;
+  Pair(const Matrix4& e, const Matrix4& p) : E(e), P(p) {
+    const Quartic<Rational> fq = characteristic_polynomial<Rational>(P, E);
+    const Quadratic<Rational> sq = special_polynomial<Rational>(P, E);
+    f = anysize::to_poly(fq.data(), 5);
+    s = anysize::to_poly(sq.data(), 3);
+    ls = anysize::lambda_s_of(s);
+  }
+  /// X^T Q X for X = (x, 1).
+  static Rational form(const Matrix4& q, const V3& x) {
+    Rational acc = q(3, 3);
+    for (int i = 0; i < 3; ++i) {
+      acc += 2 * q(i, 3) * x[i];
+      for (int j = 0; j < 3; ++j) acc += x[i] * q(i, j) * x[j];
+    }
+    return acc;
+  }
+  Rational e_at(const V3& x) const { return form(E, x); }
+  Rational p_at(const V3& x) const { return form(P, x); }
+  /// x(lambda) = -(lambda A + M)^{-1} (lambda a + m): the stationary point of lambda p + e (section 8);
+  /// nullopt when lambda A + M is singular.
+  std::optional<V3> x_of(const Rational& l) const {
+    Rational k[3][3], r[3];
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) k[i][j] = l * P(i, j) + E(i, j);
+      r[i] = -(l * P(i, 3) + E(i, 3));
+    }
+    const Rational det = k[0][0] * (k[1][1] * k[2][2] - k[1][2] * k[2][1]) -
+                         k[0][1] * (k[1][0] * k[2][2] - k[1][2] * k[2][0]) +
+                         k[0][2] * (k[1][0] * k[2][1] - k[1][1] * k[2][0]);
+    if (det == 0) return std::nullopt;
+    V3 x;
+    for (int c = 0; c < 3; ++c) {  // Cramer's rule
+      Rational m[3][3];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m[i][j] = j == c ? r[i] : k[i][j];
+      x[c] = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+              m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])) /
+             det;
+    }
+    return x;
+  }
+};
+
+/// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
+Rational sqrt_below(const Rational& x, unsigned bits) {
+  Integer nd = x.numerator() * x.denominator();
+  mpz_mul_2exp(nd.mpz(), nd.mpz(), 2 * bits);
+  Integer r;
+  mpz_sqrt(r.mpz(), nd.mpz());
+  Integer den = x.denominator();
+  mpz_mul_2exp(den.mpz(), den.mpz(), bits);
+  return Rational(r, den);
+}
+
+/// A rational within 2^-bits |b| of a + b sqrt(d), above it (up = true) or below it.
+Rational approximate(const LambdaS& ls, const QuadraticReal& x, unsigned bits, bool up) {
+  if (x.b == 0 || ls.d == 0) return x.a;
+  const Rational lo = sqrt_below(Rational(ls.d), bits);
+  Rational step(1);
+  for (unsigned i = 0; i < bits; ++i) step /= 2;
+  const Rational hi = lo + step;
+  const bool b_positive = x.b > 0;
+  return x.a + x.b * ((up == b_positive) ? hi : lo);
+}
+
+/// Rational roots of a polynomial of degree <= 2 (after removing repeated factors).
+std::vector<Rational> rational_roots(const Poly& q) {
+  std::vector<Rational> out;
+  if (q.size() == 2) out.push_back(-q[0] / q[1]);
+  if (q.size() == 3) {
+    const Rational disc = q[1] * q[1] - 4 * q[2] * q[0];
+    if (disc < 0) return out;
+    Integer nd = disc.numerator() * disc.denominator();
+    if (!mpz_perfect_square_p(nd.mpz())) return out;
+    Integer r;
+    mpz_sqrt(r.mpz(), nd.mpz());
+    const Rational root = Rational(r) / Rational(disc.denominator());
+    out.push_back((-q[1] - root) / (2 * q[2]));
+    out.push_back((-q[1] + root) / (2 * q[2]));
+  }
+  return out;
+}
+
+/// Count of distinct real roots of square-free q in (lo, hi], by Sturm's theorem.
+struct Sturm {
+  std::vector<Poly> seq;
+  explicit Sturm(const Poly& q) {
+    seq = {q, anysize::derivative(q)};
+    while (seq.back().size() > 1) {
+      Poly r = anysize::remainder(seq[seq.size() - 2], seq.back());
+      if (r.empty()) break;
+      for (auto& c : r) c = -c;
+      seq.push_back(std::move(r));
+    }
+  }
+  int variations(const Rational& x) const {
+    int v = 0, last = 0;
+    for (const Poly& q : seq) {
+      const int s = sgn(anysize::evaluate(q, x));
+      if (s == 0) continue;
+      if (last && s != last) ++v;
+      last = s;
+    }
+    return v;
+  }
+};
+
+/// The real roots of q (any degree <= 3 here) refined jointly: returns, level by level, dyadic
+/// points converging to every real root; `accept` is tried on each and the first accepted is returned.
+template <class Accept>
+std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, int max_bits = 700) {
+  if (q_in.size() <= 1) return std::nullopt;
+  const Poly q = anysize::quotient(q_in, anysize::monic_gcd(q_in, anysize::derivative(q_in)));  // square-free part
+  if (q.size() <= 1) return std::nullopt;
+  // Cauchy bound, as a power of two.
+  Rational bound(1);
+  for (std::size_t i = 0; i + 1 < q.size(); ++i) {
+    const Rational r = q[i] / q.back();
+    bound = std::max(bound, r > 0 ? r + 1 : 1 - r);
+  }
+  Rational b(1);
+  while (b < bound) b *= 2;
+  const Sturm st(q);
+  struct Box {
+    Rational lo, hi;
+  };
+  std::vector<Box> boxes{{-b, b}}, isolated;
+  // Isolate (bisection on Sturm counts), then refine every isolating interval one bit per round.
+  for (int round = 0; round < max_bits && !boxes.empty(); ++round) {
+    std::vector<Box> next;
+    for (const Box& box : boxes) {
+      const Rational mid = (box.lo + box.hi) / 2;
+      if (accept(mid)) return mid;
+      if (anysize::evaluate(q, mid) == 0) {
+        // an exact root: keep a tiny box around it so it is refined (and tried) no further
+        continue;
+      }
+      for (const Box& half : {Box{box.lo, mid}, Box{mid, box.hi}}) {
+        if (st.variations(half.lo) - st.variations(half.hi) > 0) next.push_back(half);
+      }
+    }
+    boxes = std::move(next);
+  }
+  return std::nullopt;
+}
+
+/// Kernel basis and a particular solution of K x = r over Q(sqrt d) (3x3), by Gaussian elimination.
+struct LinearSolution {
+  std::array<QuadraticReal, 3> particular;
+  std::vector<std::array<QuadraticReal, 3>> kernel;
+  bool consistent = true;
+};
+
+LinearSolution solve3(const LambdaS& ls, std::array<std::array<QuadraticReal, 4>, 3> m) {
+  const QuadraticReal zero{Rational(0), Rational(0)};
+  int row = 0;
+  std::array<int, 3> pivot_of_row{-1, -1, -1};
+  std::array<bool, 3> is_pivot{false, false, false};
+  for (int c = 0; c < 3 && row < 3; ++c) {
+    int r = row;
+    while (r < 3 && ls.sign(m[r][c]) == 0) ++r;
+    if (r == 3) continue;
+    std::swap(m[r], m[row]);
+    const QuadraticReal inv = ls.div({Rational(1), Rational(0)}, m[row][c]);
+    for (int j = 0; j < 4; ++j) m[row][j] = ls.mul(m[row][j], inv);
+    for (int i = 0; i < 3; ++i) {
+      if (i == row || ls.sign(m[i][c]) == 0) continue;
+      const QuadraticReal factor = m[i][c];
+      for (int j = 0; j < 4; ++j) m[i][j] = ls.sub(m[i][j], ls.mul(factor, m[row][j]));
+    }
+    pivot_of_row[row] = c;
+    is_pivot[c] = true;
+    ++row;
+  }
+  LinearSolution out;
+  for (int i = row; i < 3; ++i)
+    if (ls.sign(m[i][3]) != 0) out.consistent = false;
+  out.particular = {zero, zero, zero};
+  for (int r = 0; r < row; ++r) out.particular[pivot_of_row[r]] = m[r][3];
+  for (int free = 0; free < 3; ++free) {
+    if (is_pivot[free]) continue;
+    std::array<QuadraticReal, 3> v{zero, zero, zero};
+    v[free] = {Rational(1), Rational(0)};
+    for (int r = 0; r < row; ++r) v[pivot_of_row[r]] = {-m[r][free].a, -m[r][free].b};
+    out.kernel.push_back(v);
+  }
+  return out;
+}
+
+QuadraticReal q_of(const Rational& x) { return {x, Rational(0)}; }
+
+/// e(x) = x^T M x + 2 m^T x + e0 over Q(sqrt d).
+QuadraticReal e_at(const LambdaS& ls, const Matrix4& E, const std::array<QuadraticReal, 3>& x) {
+  QuadraticReal acc = q_of(E(3, 3));
+  for (int i = 0; i < 3; ++i) {
+    acc = ls.add(acc, ls.mul(q_of(2 * E(i, 3)), x[i]));
+    for (int j = 0; j < 3; ++j) acc = ls.add(acc, ls.mul(ls.mul(x[i], q_of(E(i, j))), x[j]));
+  }
+  return acc;
+}
+
+/// Hard case (section 8): contact set x^ + {w in ker(lambda_s A + M): w^T M w = -e(x^)}, x^ the
+/// minimiser of e on the solutions of (lambda_s A + M) x = -(lambda_s a + m).
+void hard_case(const Pair& pr, Certificate& c) {
+  const LambdaS& ls = pr.ls;
+  std::array<std::array<QuadraticReal, 4>, 3> m;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) m[i][j] = ls.add(ls.mul(ls.value, q_of(pr.P(i, j))), q_of(pr.E(i, j)));
+    const QuadraticReal r = ls.add(ls.mul(ls.value, q_of(pr.P(i, 3))), q_of(pr.E(i, 3)));
+    m[i][3] = {-r.a, -r.b};
+  }
+  const LinearSolution sol = solve3(ls, m);
+  if (!sol.consistent) throw std::logic_error("hard case: (lambda_s A + M) x = -(lambda_s a + m) has no solution");
+  std::array<QuadraticReal, 3> x = sol.particular;
+  const auto& w = sol.kernel;
+  // Gradient of e along the kernel: g_j = w_j^T (M x + m); Gram G_jk = w_j^T M w_k; solve G c = -g.
+  auto Mv = [&](const std::array<QuadraticReal, 3>& v) {
+    std::array<QuadraticReal, 3> out;
+    for (int i = 0; i < 3; ++i) {
+      QuadraticReal acc{Rational(0), Rational(0)};
+      for (int j = 0; j < 3; ++j) acc = ls.add(acc, ls.mul(q_of(pr.E(i, j)), v[j]));
+      out[i] = acc;
+    }
+    return out;
+  };
+  auto dot = [&](const std::array<QuadraticReal, 3>& u, const std::array<QuadraticReal, 3>& v) {
+    QuadraticReal acc{Rational(0), Rational(0)};
+    for (int i = 0; i < 3; ++i) acc = ls.add(acc, ls.mul(u[i], v[i]));
+    return acc;
+  };
+  if (!w.empty()) {
+    auto mx = Mv(x);
+    for (int i = 0; i < 3; ++i) mx[i] = ls.add(mx[i], q_of(pr.E(i, 3)));
+    const std::size_t n = w.size();
+    std::array<std::array<QuadraticReal, 4>, 3> g;
+    const QuadraticReal zero{Rational(0), Rational(0)};
+    for (auto& row : g) row = {zero, zero, zero, zero};
+    for (std::size_t j = 0; j < n; ++j) {
+      for (std::size_t k = 0; k < n; ++k) g[j][k] = dot(w[j], Mv(w[k]));
+      const QuadraticReal gj = dot(w[j], mx);
+      g[j][3] = {-gj.a, -gj.b};
+    }
+    for (std::size_t j = n; j < 3; ++j) g[j][j] = {Rational(1), Rational(0)};  // pad to 3x3 identity
+    const LinearSolution cs = solve3(ls, g);
+    for (std::size_t j = 0; j < n; ++j)
+      for (int i = 0; i < 3; ++i) x[i] = ls.add(x[i], ls.mul(cs.particular[j], w[j][i]));
+  }
+  const QuadraticReal ex = e_at(ls, pr.E, x);
+  c.kind = Certificate::Kind::HardTangent;
+  c.d = ls.d;
+  c.lambda_q = {ls.value.a, ls.value.b};
+  for (int i = 0; i < 3; ++i) c.centre[i] = {x[i].a, x[i].b};
+  c.directions.clear();
+  for (const auto& v : w) c.directions.push_back({QuadraticNumber{v[0].a, v[0].b}, {v[1].a, v[1].b}, {v[2].a, v[2].b}});
+  c.radius2 = {-ex.a, -ex.b};
+}
+
+/// lambda with f(lambda) > 0 in the domain: then lambda P + E is positive definite (lambda A + M is,
+/// and det = f(lambda) > 0). The maximum of f over the domain is positive and attained at a root
+/// of f', so points converging to the roots of f' find one.
+template <class InDomain>
+std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
+  return search_near_roots(anysize::derivative(pr.f),
+                           [&](const Rational& l) { return in_domain(l) && anysize::evaluate(pr.f, l) > 0; });
+}
+
+/// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
+bool crossing_points(const Pair& pr, Certificate& c) {
+  std::optional<V3> inside, outside;
+  auto consider = [&](const V3& x) {
+    if (pr.e_at(x) > 0) return;
+    const int s = sgn(pr.p_at(x));
+    if (s < 0 && !inside) inside = x;
+    if (s > 0 && !outside) outside = x;
+  };
+  const auto centre = pr.x_of(Rational(0));
+  if (centre) consider(*centre);
+  // Along the curve x(lambda): for lambda > 0 it minimises lambda p + e, so while e(x(lambda)) <= 0
+  // it is the minimiser of p over a smaller solid, tending to the minimiser over the solid ellipsoid
+  // as e(x(lambda)) -> 0 (section 8, min side); for lambda in (lambda_s, 0) likewise the maximiser.
+  // Bisection on e(x(lambda)) = 0 with every point tried.
+  auto along = [&](Rational lo, Rational hi, bool want_inside) {
+    // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side.
+    for (int i = 0; i < 2000 && !(want_inside ? inside : outside); ++i) {
+      const Rational mid = (lo + hi) / 2;
+      const auto x = pr.x_of(mid);
+      if (!x) return;
+      consider(*x);
+      if (pr.e_at(*x) <= 0)
+        lo = mid;
+      else
+        hi = mid;
+    }
+  };
+  if (!inside) {  // lambda > 0: find hi with e(x(hi)) > 0 by doubling
+    Rational hi(1);
+    int k = 0;
+    while (k++ < 4000) {
+      const auto x = pr.x_of(hi);
+      if (x) {
+        consider(*x);
+        if (inside || pr.e_at(*x) > 0) break;
+      }
+      hi *= 2;
+    }
+    if (!inside) along(Rational(0), hi, true);
+  }
+  if (!outside) {  // lambda in (lambda_s, 0), approached from 0 towards lambda_s
+    for (unsigned bits = 4; bits <= 1024 && !outside; bits *= 2) {
+      const Rational lo = approximate(pr.ls, pr.ls.value, bits, true);
+      if (!(lo < 0) || pr.ls.compare(lo) <= 0) continue;
+      const auto x = pr.x_of(lo);
+      if (!x) continue;
+      consider(*x);
+      if (!outside && pr.e_at(*x) > 0) along(Rational(0), lo, false);
+    }
+  }
+  if (!outside) {  // the hard case of the max side: leave x(lambda) along the kernel of lambda_s A + M
+    Certificate hard;
+    hard_case(pr, hard);
+    for (unsigned bits = 8; bits <= 1024 && !outside; bits *= 2) {
+      V3 x0;
+      for (int i = 0; i < 3; ++i) x0[i] = approximate(pr.ls, {hard.centre[i].a, hard.centre[i].b}, bits, true);
+      for (const auto& dir : hard.directions) {
+        V3 w;
+        for (int i = 0; i < 3; ++i) w[i] = approximate(pr.ls, {dir[i].a, dir[i].b}, bits, true);
+        // e(x0 + t w) = e(x0) + 2 t w^T (M x0 + m) + t^2 w^T M w <= 0 between its roots.
+        Rational mw(0), g(0);
+        for (int i = 0; i < 3; ++i) {
+          Rational mi = pr.E(i, 3), wi(0);
+          for (int j = 0; j < 3; ++j) {
+            mi += pr.E(i, j) * x0[j];
+            wi += pr.E(i, j) * w[j];
+          }
+          g += w[i] * mi;
+          mw += w[i] * wi;
+        }
+        const Rational e0 = pr.e_at(x0);
+        const Rational disc = g * g - mw * e0;
+        if (disc < 0 || mw == 0) continue;
+        for (int sign : {1, -1}) {
+          // t = (-g +- sqrt(disc)) / mw, pulled slightly inwards.
+          for (unsigned shrink = bits; shrink >= 4 && !outside; shrink /= 2) {
+            const Rational r = sqrt_below(disc, shrink);
+            const Rational t = (-g + sign * r) / mw;
+            V3 x;
+            for (int i = 0; i < 3; ++i) x[i] = x0[i] + t * w[i];
+            consider(x);
+          }
+        }
+      }
+    }
+  }
+  if (!inside || !outside) return false;
+  c.kind = Certificate::Kind::Crossing;
+  c.inside = *inside;
+  c.outside = *outside;
+  return true;
+}
+
+}  // namespace
+
+Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) {
+  const Pair pr(e.matrix(), p.matrix());
+  Certificate c;
+  auto in_gap = [&](const Rational& l) { return l < 0 && pr.ls.compare(l) > 0; };
+  switch (position) {
+    case Position::E:
+    case Position::I: {
+      const bool ext = position == Position::E;
+      const auto l = ext ? definite_lambda(pr, [](const Rational& x) { return x > 0; }) : definite_lambda(pr, in_gap);
+      if (l) {
+        c.kind = Certificate::Kind::Definite;
+        c.lambda = *l;
+      }
+      return c;
+    }
+    case Position::TE:
+    case Position::TI: {
+      // The double root lambda* of f is rational (section 8), and (x(lambda*), 1) spans the kernel.
+      const Poly g = anysize::monic_gcd(pr.f, anysize::derivative(pr.f));
+      const Poly q = anysize::quotient(g, anysize::monic_gcd(g, anysize::derivative(g)));
+      for (const Rational& l : rational_roots(q)) {
+        const bool ok = position == Position::TE ? l > 0 : in_gap(l);
+        if (!ok) continue;
+        const auto x = pr.x_of(l);
+        if (!x || pr.e_at(*x) != 0 || pr.p_at(*x) != 0) continue;
+        c.kind = Certificate::Kind::Tangent;
+        c.lambda = l;
+        c.contact = *x;
+        return c;
+      }
+      if (position == Position::TI) hard_case(pr, c);
+      return c;
+    }
+    case Position::C:
+      crossing_points(pr, c);
+      return c;
+  }
+  return c;
+}
+
+}  // namespace relpos::certificate

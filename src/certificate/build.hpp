@@ -1,0 +1,15 @@
+// Building the certificate of an answer (include/relpos/certificate.hpp, math.md section 8): the
+// dual multiplier lambda of the trust-region duality for E, I, TE, TI; lambda_s and the contact set
+// in the hard case; two witness points for C. Runs on exact rationals after the position is known.
+#pragma once
+
+#include "relpos/certificate.hpp"
+#include "relpos/classify.hpp"
+
+namespace relpos::certificate {
+
+/// The certificate of `position` for the pair (which must be the pair's position). Kind::None only
+/// if the search for the points of a crossing fails (never observed; see doc/certificates.md).
+Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position);
+
+}  // namespace relpos::certificate
