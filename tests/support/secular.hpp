@@ -247,7 +247,8 @@ inline SecularPolynomials secular_polynomials(const Ellipsoid& e, const Parabolo
 
 /// Signs of min and max of p(x) = X^T P X over the solid ellipsoid (first = min, second = max), by the
 /// secular method. Throws std::logic_error when a structural claim of math.md section 8 fails (a finding).
-inline std::pair<int, int> secular_extreme_signs(const Ellipsoid& e, const Paraboloid& p) {
+/// *hard_case (if given) tells whether the max side was the hard case (no root of S in (-inf, tau)).
+inline std::pair<int, int> secular_extreme_signs(const Ellipsoid& e, const Paraboloid& p, bool* hard_case = nullptr) {
   using namespace secular_detail;
   const SecularPolynomials sp = secular_polynomials(e, p);
   const Poly &F = sp.F, &D = sp.D, &S = sp.S;
@@ -275,6 +276,7 @@ inline std::pair<int, int> secular_extreme_signs(const Ellipsoid& e, const Parab
   const int n = ss.count_open(k, qlo, tau);
   if (n > 1) throw std::logic_error("secular: S has several roots in (-inf, tau)");
   int smax = 0;
+  if (hard_case) *hard_case = n == 0;
   if (n == 1) {
     smax = -sign_at_unique_root(k, ssf, F, qlo, tau);
   } else {  // hard case: the limit of F/D at tau after cancelling gcd(F, D)
