@@ -26,6 +26,7 @@
 
 /// `relpos scene` (cli/scene.cpp): exit code; handles its own usage errors.
 int run_scene_command(const std::vector<std::string>& args);
+int run_verify(int argc, char** argv);  // `relpos verify` (cli/verify.cpp)
 
 #ifndef RELPOS_VERSION
 #define RELPOS_VERSION "unknown"
@@ -59,6 +60,7 @@ void print_main_help(std::ostream& os) {
         "  relpos batch [FILE|-] [--digits N]\n"
         "  relpos scene (--paraboloid Q | --standard-paraboloid A,B) [FILE|-] [options]\n"
         "  relpos motion (--ellipsoid Q | --sphere ..) (--paraboloid Q | ..) [--translation P3] [--rotation P4] ...\n"
+        "  relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]   (check the certificates of a batch output)\n"
         "  relpos --help | --version\n"
         "  relpos COMMAND --help\n"
         "\n"
@@ -447,6 +449,7 @@ int main(int argc, char** argv) {
     }
     if (command == "classify") return run_classify(args);
     if (command == "batch") return run_batch(args);
+    if (command == "verify") return run_verify(argc - 1, argv + 1);
     if (command == "scene") return run_scene_command(std::vector<std::string>(all.begin() + 1, all.end()));
     if (command == "motion") return relpos_cli::run_motion(std::vector<std::string>(all.begin() + 1, all.end()));
     throw UsageError{(command.rfind("-", 0) == 0 ? "unknown option '" : "unknown command '") + command + "'"};

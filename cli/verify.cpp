@@ -1,0 +1,204 @@
+// relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]: checks every certificate of a `relpos batch`
+// output against its input with the independent verifier (include/relpos/certificate.hpp).
+//
+// Line N of ANSWERS answers line N of INPUT. An answer with "error" is skipped when its input line is
+// not a valid pair, and counted as unanswered when it is. Prints `line N: <reason>` per failure
+// (unless --quiet) and `verified N, failed N, skipped N[, unanswered N]`.
+// Exit: 0 iff nothing failed and nothing valid was left unanswered, 1 otherwise, 2 on usage errors
+// (unknown option, missing or unreadable file).
+#include <cerrno>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "relpos/certificate.hpp"
+#include "relpos/classify.hpp"
+#include "relpos/error.hpp"
+#include "relpos/io.hpp"
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kVerifyHelp =
+    "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]\n"
+    "\n"
+    "Check the certificate of every answer of `relpos batch INPUT.jsonl > ANSWERS.jsonl` with an\n"
+    "independent verifier that uses exact rational arithmetic only (no code of the classifier).\n"
+    "Line N of ANSWERS must answer line N of INPUT. Answers with \"error\" are skipped when the input\n"
+    "line is not a valid pair, and counted as unanswered when it is.\n"
+    "Prints 'line N: reason' for each failure (not with --quiet) and a summary line.\n"
+    "Exit: 0 all verified, 1 a failure or an unanswered valid pair, 2 usage error.\n";
+
+std::optional<relpos::Position> position_from_text(const std::string& s) {
+  if (s == "I") return relpos::Position::I;
+  if (s == "TI") return relpos::Position::TI;
+  if (s == "C") return relpos::Position::C;
+  if (s == "TE") return relpos::Position::TE;
+  if (s == "E") return relpos::Position::E;
+  return std::nullopt;
+}
+
+struct InputPair {
+  std::optional<relpos::Ellipsoid> e;
+  std::optional<relpos::Paraboloid> p;
+  Json id;
+  std::string error;  // why the line is not a valid pair (empty if it is)
+};
+
+InputPair read_input(const std::string& line, long number) {
+  InputPair in;
+  in.id = number;
+  try {
+    if (line.find_first_not_of(" \t\r\n") == std::string::npos) throw relpos::InputError("empty line");
+    const Json doc = relpos::io::parse_json_exact(line);
+    if (!doc.is_object()) throw relpos::InputError("not a JSON object");
+    if (doc.contains("id")) {
+      try {
+        in.id = Json::parse(line)["id"];  // as `relpos batch` echoes it
+      } catch (const std::exception&) {
+        in.id = nullptr;  // not comparable (a number beyond double range)
+      }
+    }
+    for (const auto& item : doc.items())
+      if (item.key() != "id" && item.key() != "ellipsoid" && item.key() != "paraboloid" && item.key() != "comment")
+        throw relpos::InputError("unknown key \"" + item.key() + "\"");
+    if (!doc.contains("ellipsoid")) throw relpos::InputError("ellipsoid: missing");
+    if (!doc.contains("paraboloid")) throw relpos::InputError("paraboloid: missing");
+    relpos::Ellipsoid e = relpos::io::ellipsoid_from_json(doc["ellipsoid"], "ellipsoid");
+    relpos::Paraboloid p = relpos::io::paraboloid_from_json(doc["paraboloid"], "paraboloid");
+    relpos::io::check_pair_size(e, p);  // `relpos batch` rejects these too
+    in.e = std::move(e);
+    in.p = std::move(p);
+  } catch (const std::exception& err) {
+    in.error = err.what();
+  }
+  return in;
+}
+
+}  // namespace
+
+int run_verify(int argc, char** argv) {
+  std::vector<std::string> files;
+  bool quiet = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::cout << kVerifyHelp;
+      return 0;
+    } else if (a == "--quiet" || a == "-q") {
+      quiet = true;
+    } else if (a.size() > 1 && a[0] == '-') {
+      std::cerr << "relpos verify: unknown option '" << a << "'\nTry 'relpos verify --help'.\n";
+      return 2;
+    } else {
+      files.push_back(a);
+    }
+  }
+  if (files.size() != 2) {
+    std::cerr << "relpos verify: expected INPUT.jsonl and ANSWERS.jsonl\nTry 'relpos verify --help'.\n";
+    return 2;
+  }
+  std::ifstream input(files[0], std::ios::binary), answers(files[1], std::ios::binary);
+  for (int k = 0; k < 2; ++k) {
+    if (!(k == 0 ? input : answers)) {
+      std::cerr << "relpos verify: cannot open '" << files[static_cast<std::size_t>(k)] << "': " << std::strerror(errno)
+                << "\n";
+      return 2;
+    }
+  }
+  long verified = 0, failed = 0, skipped = 0, unanswered = 0, number = 0;
+  auto fail = [&](long n, const std::string& reason) {
+    ++failed;
+    if (!quiet) std::cout << "line " << n << ": " << reason << "\n";
+  };
+  std::string in_line, answer_line;
+  for (;;) {
+    const bool has_in = static_cast<bool>(std::getline(input, in_line));
+    const bool has_answer = static_cast<bool>(std::getline(answers, answer_line));
+    if (!has_in && !has_answer) break;
+    ++number;
+    if (!has_in) {
+      fail(number, "an answer line without an input line (the files have different numbers of lines)");
+      continue;
+    }
+    if (!has_answer) {
+      fail(number, "no answer line (the files have different numbers of lines)");
+      continue;
+    }
+    const InputPair in = read_input(in_line, number);
+    Json answer;
+    try {
+      answer = relpos::io::parse_json_exact(answer_line);
+    } catch (const std::exception& err) {
+      fail(number, std::string("the answer is not JSON: ") + err.what());
+      continue;
+    }
+    if (!answer.is_object()) {
+      fail(number, "the answer is not a JSON object");
+      continue;
+    }
+    if (!in.id.is_null() && answer.contains("id")) {
+      Json answer_id;
+      try {
+        answer_id = Json::parse(answer_line)["id"];
+      } catch (const std::exception&) {
+        answer_id = in.id;  // not comparable
+      }
+      if (answer_id != in.id) {
+        fail(number, "the answer's id " + answer_id.dump() + " is not the input's " + in.id.dump());
+        continue;
+      }
+    }
+    if (answer.contains("error")) {
+      if (in.e) {
+        ++unanswered;
+        if (!quiet)
+          std::cout << "line " << number << ": unanswered: the input is a valid pair but the answer is an error ("
+                    << answer["error"].dump() << ")\n";
+      } else {
+        ++skipped;
+      }
+      continue;
+    }
+    if (!in.e) {
+      fail(number, "the input is not a valid pair (" + in.error + ") but the answer is not an error");
+      continue;
+    }
+    if (!answer.contains("position") || !answer["position"].is_string()) {
+      fail(number, "the answer has no \"position\"");
+      continue;
+    }
+    const std::string position_text = answer["position"].get<std::string>();
+    const std::optional<relpos::Position> position = position_from_text(position_text);
+    if (!position) {
+      fail(number, "position \"" + position_text + "\" is not one of I, TI, C, TE, E");
+      continue;
+    }
+    if (!answer.contains("certificate")) {
+      fail(number, "the answer has no \"certificate\"");
+      continue;
+    }
+    try {
+      const relpos::Certificate c = relpos::certificate_from_json(answer["certificate"]);
+      if (auto reason = relpos::verify_certificate(*in.e, *in.p, *position, c))
+        fail(number, position_text + ": " + *reason);
+      else
+        ++verified;
+    } catch (const std::exception& err) {
+      fail(number, position_text + ": " + err.what());
+    }
+  }
+  if (input.bad() || answers.bad()) {
+    std::cerr << "relpos verify: error reading the input files\n";
+    return 2;
+  }
+  std::cout << "verified " << verified << ", failed " << failed << ", skipped " << skipped;
+  if (unanswered) std::cout << ", unanswered " << unanswered;
+  std::cout << "\n";
+  return failed == 0 && unanswered == 0 ? 0 : 1;
+}

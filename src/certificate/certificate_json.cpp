@@ -1,0 +1,164 @@
+// Certificates as JSON (include/relpos/certificate.hpp): exact strings out, exact numbers in.
+#include <gmp.h>
+
+#include <cstddef>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "relpos/certificate.hpp"
+#include "relpos/error.hpp"
+#include "relpos/io.hpp"
+
+namespace relpos {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json vec_json(const Vector3& v) { return Json::array({to_string(v[0]), to_string(v[1]), to_string(v[2])}); }
+
+Json quad_json(const QuadraticNumber& x) { return Json{{"a", to_string(x.a)}, {"b", to_string(x.b)}}; }
+
+Json quad_vec_json(const QuadraticVector3& v) {
+  return Json::array({quad_json(v[0]), quad_json(v[1]), quad_json(v[2])});
+}
+
+/// floor(sqrt(d) * 10^k) / 10^k: below sqrt d by less than 10^-k.
+Rational sqrt_below(const Integer& d, unsigned long k) {
+  Integer scale, scaled, root;
+  mpz_ui_pow_ui(scale.mpz(), 10, k);
+  scaled = d * scale * scale;
+  mpz_sqrt(root.mpz(), scaled.mpz());
+  return Rational(root, scale);
+}
+
+/// `digits` significant digits of a + b sqrt d (for humans; the last digit may be off by one).
+std::string quad_decimal(const QuadraticNumber& x, const Integer& d, int digits) {
+  if (x.b == 0 || d == 0) return to_decimal(x.a, digits);
+  if (quadratic_sign(x, d) == 0) return "0";
+  // Increase the precision until the error bound |b| 10^-k is far below the value.
+  for (unsigned long k = static_cast<unsigned long>(digits) + 10;; k *= 2) {
+    const Rational approx = x.a + x.b * sqrt_below(d, k);
+    Integer ten_k;
+    mpz_ui_pow_ui(ten_k.mpz(), 10, k);
+    const Rational bound = (x.b < 0 ? Rational(-x.b) : x.b) / Rational(ten_k);
+    const Rational magnitude = approx < 0 ? Rational(-approx) : approx;
+    Integer margin;
+    mpz_ui_pow_ui(margin.mpz(), 10, static_cast<unsigned long>(digits) + 3);
+    if (magnitude > bound * Rational(margin) || k > 100000) return to_decimal(approx, digits);
+  }
+}
+
+void check_keys(const Json& j, const std::string& path, const std::set<std::string>& allowed) {
+  if (!j.is_object()) throw InputError(path + ": expected an object");
+  for (const auto& item : j.items())
+    if (!allowed.count(item.key())) throw InputError(path + ": unknown key \"" + item.key().substr(0, 40) + "\"");
+}
+
+const Json& field(const Json& j, const std::string& key, const std::string& path) {
+  if (!j.contains(key)) throw InputError(path + ": missing \"" + key + "\"");
+  return j[key];
+}
+
+Rational number(const Json& j, const std::string& path) {
+  if (j.is_null() || j.is_boolean() || j.is_array() || j.is_object())
+    throw InputError(path + ": expected a number, got " + j.dump().substr(0, 40));
+  return io::rational_from_json(j, path);
+}
+
+Vector3 vec(const Json& j, const std::string& path) {
+  if (!j.is_array() || j.size() != 3) throw InputError(path + ": expected an array of 3 numbers");
+  return {number(j[0], path + "[0]"), number(j[1], path + "[1]"), number(j[2], path + "[2]")};
+}
+
+QuadraticNumber quad(const Json& j, const std::string& path) {
+  check_keys(j, path, {"a", "b"});
+  return {number(field(j, "a", path), path + ".a"), number(field(j, "b", path), path + ".b")};
+}
+
+QuadraticVector3 quad_vec(const Json& j, const std::string& path) {
+  if (!j.is_array() || j.size() != 3) throw InputError(path + ": expected an array of 3 {\"a\", \"b\"} objects");
+  return {quad(j[0], path + "[0]"), quad(j[1], path + "[1]"), quad(j[2], path + "[2]")};
+}
+
+}  // namespace
+
+Json certificate_to_json(const Certificate& c, int digits) {
+  using K = Certificate::Kind;
+  switch (c.kind) {
+    case K::None:
+      return Json(nullptr);
+    case K::Definite:
+      return Json{{"lambda", to_string(c.lambda)}};
+    case K::Tangent:
+      return Json{{"lambda", to_string(c.lambda)}, {"contact", vec_json(c.contact)}};
+    case K::Crossing:
+      return Json{{"inside", vec_json(c.inside)}, {"outside", vec_json(c.outside)}};
+    case K::HardTangent: {
+      Json out;
+      out["lambda"] = Json{{"a", to_string(c.lambda_q.a)}, {"b", to_string(c.lambda_q.b)}, {"d", to_string(c.d)}};
+      Json set;
+      set["center"] = quad_vec_json(c.centre);
+      set["directions"] = Json::array();
+      for (const auto& w : c.directions) set["directions"].push_back(quad_vec_json(w));
+      set["radius2"] = quad_json(c.radius2);
+      set["decimal"] =
+          Json{{"lambda", quad_decimal(c.lambda_q, c.d, digits)},
+               {"center", Json::array({quad_decimal(c.centre[0], c.d, digits), quad_decimal(c.centre[1], c.d, digits),
+                                       quad_decimal(c.centre[2], c.d, digits)})},
+               {"radius2", quad_decimal(c.radius2, c.d, digits)}};
+      out["contact_set"] = std::move(set);
+      return out;
+    }
+  }
+  return Json(nullptr);
+}
+
+Certificate certificate_from_json(const Json& j) {
+  const std::string path = "certificate";
+  Certificate c;
+  if (j.is_null()) return c;
+  if (!j.is_object()) throw InputError(path + ": expected an object or null, got " + j.dump().substr(0, 40));
+  if (j.contains("inside") || j.contains("outside")) {
+    check_keys(j, path, {"inside", "outside"});
+    c.kind = Certificate::Kind::Crossing;
+    c.inside = vec(field(j, "inside", path), path + ".inside");
+    c.outside = vec(field(j, "outside", path), path + ".outside");
+    return c;
+  }
+  if (j.contains("contact_set")) {
+    check_keys(j, path, {"lambda", "contact_set"});
+    c.kind = Certificate::Kind::HardTangent;
+    const Json& l = field(j, "lambda", path);
+    const std::string lp = path + ".lambda";
+    check_keys(l, lp, {"a", "b", "d"});
+    c.lambda_q = {number(field(l, "a", lp), lp + ".a"), number(field(l, "b", lp), lp + ".b")};
+    const Rational d = number(field(l, "d", lp), lp + ".d");
+    if (d.denominator() != 1 || d < 0)
+      throw InputError(lp + ".d: expected a non-negative integer, got " + to_string(d));
+    c.d = d.numerator();
+    const Json& s = j["contact_set"];
+    const std::string sp = path + ".contact_set";
+    check_keys(s, sp, {"center", "directions", "radius2", "decimal"});
+    c.centre = quad_vec(field(s, "center", sp), sp + ".center");
+    const Json& dirs = field(s, "directions", sp);
+    if (!dirs.is_array()) throw InputError(sp + ".directions: expected an array");
+    for (std::size_t i = 0; i < dirs.size(); ++i)
+      c.directions.push_back(quad_vec(dirs[i], sp + ".directions[" + std::to_string(i) + "]"));
+    c.radius2 = quad(field(s, "radius2", sp), sp + ".radius2");
+    return c;
+  }
+  if (j.contains("contact")) {
+    check_keys(j, path, {"lambda", "contact"});
+    c.kind = Certificate::Kind::Tangent;
+    c.lambda = number(field(j, "lambda", path), path + ".lambda");
+    c.contact = vec(j["contact"], path + ".contact");
+    return c;
+  }
+  check_keys(j, path, {"lambda"});
+  c.kind = Certificate::Kind::Definite;
+  c.lambda = number(field(j, "lambda", path), path + ".lambda");
+  return c;
+}
+
+}  // namespace relpos

@@ -1,0 +1,391 @@
+// certificate.hpp: the independent verifier and the JSON form of certificates. Every case is built by
+// hand (spheres against z = x^2 + y^2, where the pencil lambda P + E is block diagonal), the true
+// certificate must be accepted and tampered variants rejected.
+#include <catch2/catch.hpp>
+#include <optional>
+#include <relpos/certificate.hpp>
+#include <relpos/classify.hpp>
+#include <relpos/error.hpp>
+#include <relpos/io.hpp>
+#include <string>
+
+using relpos::Certificate;
+using relpos::Ellipsoid;
+using relpos::Matrix4;
+using relpos::Paraboloid;
+using relpos::Position;
+using relpos::QuadraticNumber;
+using relpos::Rational;
+using relpos::Vector3;
+using Kind = relpos::Certificate::Kind;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+Rational q(long n, long d = 1) { return Rational(n, d); }
+
+/// z = x^2 + y^2 (Paraboloid::standard({0,0,0}, 1, 1)).
+Paraboloid cup() { return Paraboloid::standard({q(0), q(0), q(0)}, q(1), q(1)); }
+
+Ellipsoid sphere(const Rational& cz, const Rational& r) { return Ellipsoid::sphere({q(0), q(0), cz}, r); }
+
+Certificate definite(const Rational& lambda) {
+  Certificate c;
+  c.kind = Kind::Definite;
+  c.lambda = lambda;
+  return c;
+}
+
+Certificate tangent(const Rational& lambda, const Vector3& x) {
+  Certificate c;
+  c.kind = Kind::Tangent;
+  c.lambda = lambda;
+  c.contact = x;
+  return c;
+}
+
+Certificate crossing(const Vector3& in, const Vector3& out) {
+  Certificate c;
+  c.kind = Kind::Crossing;
+  c.inside = in;
+  c.outside = out;
+  return c;
+}
+
+QuadraticNumber qn(const Rational& a, const Rational& b = Rational(0)) { return {a, b}; }
+
+/// The first lambda = k/8, k = 1..200 (times `sign`) that the verifier accepts for `position`.
+std::optional<Rational> scan_lambda(const Ellipsoid& e, const Paraboloid& p, Position position, int sign) {
+  for (long k = 1; k <= 200; ++k) {
+    const Rational lambda = q(sign * k, 8);
+    if (!relpos::verify_certificate(e, p, position, definite(lambda))) return lambda;
+  }
+  return std::nullopt;
+}
+
+bool accepted(const Ellipsoid& e, const Paraboloid& p, Position position, const Certificate& c) {
+  const auto r = relpos::verify_certificate(e, p, position, c);
+  if (r) UNSCOPED_INFO("rejected: " << *r);
+  return !r;
+}
+
+void require_rejected(const Ellipsoid& e, const Paraboloid& p, Position position, const Certificate& c,
+                      const std::string& fragment = "") {
+  const auto r = relpos::verify_certificate(e, p, position, c);
+  REQUIRE(r);
+  INFO("reason: " << *r);
+  if (!fragment.empty()) CHECK(r->find(fragment) != std::string::npos);
+}
+
+/// lambda P + E for the sphere centred (0, 0, cz) of radius^2 r2 and z = x^2 + y^2, and its leading
+/// minors: independent of the verifier, for the hand derivations below.
+bool pencil_pd(const Rational& cz, const Rational& r2, const Rational& lambda) {
+  // diag(1 + l, 1 + l) (+) [[1, -cz - l/2], [-cz - l/2, cz^2 - r2]]
+  const Rational off = -cz - lambda / 2;
+  return 1 + lambda > 0 && (cz * cz - r2) - off * off > 0;
+}
+
+/// The hard tangency: sphere of radius 1 centred (0, 0, 5/4) touching the cup along the circle
+/// z = 3/4, x^2 + y^2 = 3/4; lambda_s = -1 (s = (1 + lambda)^2).
+Certificate circle_certificate() {
+  Certificate c;
+  c.kind = Kind::HardTangent;
+  c.d = 0;
+  c.lambda_q = qn(q(-1));
+  c.centre = {qn(q(0)), qn(q(0)), qn(q(3, 4))};
+  c.directions = {{qn(q(1)), qn(q(0)), qn(q(0))}, {qn(q(0)), qn(q(1)), qn(q(0))}};
+  c.radius2 = qn(q(3, 4));
+  return c;
+}
+
+void require_same(const Certificate& a, const Certificate& b) {
+  REQUIRE(a.kind == b.kind);
+  switch (a.kind) {
+    case Kind::None:
+      break;
+    case Kind::Definite:
+      CHECK(a.lambda == b.lambda);
+      break;
+    case Kind::Tangent:
+      CHECK(a.lambda == b.lambda);
+      CHECK(a.contact == b.contact);
+      break;
+    case Kind::Crossing:
+      CHECK(a.inside == b.inside);
+      CHECK(a.outside == b.outside);
+      break;
+    case Kind::HardTangent: {
+      CHECK(a.d == b.d);
+      CHECK(a.lambda_q.a == b.lambda_q.a);
+      CHECK(a.lambda_q.b == b.lambda_q.b);
+      for (int i = 0; i < 3; ++i) {
+        CHECK(a.centre[i].a == b.centre[i].a);
+        CHECK(a.centre[i].b == b.centre[i].b);
+      }
+      REQUIRE(a.directions.size() == b.directions.size());
+      for (std::size_t t = 0; t < a.directions.size(); ++t)
+        for (int i = 0; i < 3; ++i) {
+          CHECK(a.directions[t][i].a == b.directions[t][i].a);
+          CHECK(a.directions[t][i].b == b.directions[t][i].b);
+        }
+      CHECK(a.radius2.a == b.radius2.a);
+      CHECK(a.radius2.b == b.radius2.b);
+      break;
+    }
+  }
+}
+
+Certificate round_trip(const Certificate& c) {
+  const Json j = relpos::certificate_to_json(c);
+  // Through text and the exact parser, as relpos verify reads it.
+  return relpos::certificate_from_json(relpos::io::parse_json_exact(j.dump()));
+}
+
+}  // namespace
+
+TEST_CASE("Q(sqrt d) signs are exact", "[certificate]") {
+  using relpos::Integer;
+  using relpos::quadratic_sign;
+  CHECK(quadratic_sign(qn(q(1), q(-1)), Integer(2)) == -1);  // 1 - sqrt 2
+  CHECK(quadratic_sign(qn(q(3), q(-2)), Integer(2)) == 1);   // 3 - 2 sqrt 2 = 0.17...
+  CHECK(quadratic_sign(qn(q(-3), q(2)), Integer(2)) == -1);
+  CHECK(quadratic_sign(qn(q(0), q(0)), Integer(5)) == 0);
+  CHECK(quadratic_sign(qn(q(2), q(-1)), Integer(4)) == 0);  // 2 - sqrt 4
+  CHECK(quadratic_sign(qn(q(0), q(-1, 3)), Integer(7)) == -1);
+  CHECK(quadratic_sign(qn(q(-5), q(0)), Integer(7)) == -1);
+  CHECK(quadratic_sign(qn(q(1), q(1)), Integer(3)) == 1);
+  CHECK(quadratic_sign(qn(q(-1), q(5)), Integer(0)) == -1);  // d = 0: sqrt d = 0
+  // 99/70 is just above sqrt 2, 140/99 just below.
+  CHECK(quadratic_sign(qn(q(99, 70), q(-1)), Integer(2)) == 1);
+  CHECK(quadratic_sign(qn(q(140, 99), q(-1)), Integer(2)) == -1);
+}
+
+TEST_CASE("E: unit sphere at (0,0,-3) below the cup", "[certificate]") {
+  const Ellipsoid e = sphere(q(-3), q(1));
+  const Paraboloid p = cup();
+  const auto lambda = scan_lambda(e, p, Position::E, 1);
+  REQUIRE(lambda);
+  CHECK(pencil_pd(q(-3), q(1), *lambda));              // hand formula agrees
+  CHECK(accepted(e, p, Position::E, definite(q(2))));  // 1 + 2 > 0, 8 - 4 > 0
+  require_rejected(e, p, Position::E, definite(q(0)), "must be > 0");
+  require_rejected(e, p, Position::E, definite(q(-1, 2)), "must be > 0");
+  require_rejected(e, p, Position::E, definite(q(1000)), "not positive definite");
+  require_rejected(e, p, Position::I, definite(*lambda), "must be < 0");
+  // Wrong kinds and positions.
+  require_rejected(e, p, Position::TE, definite(*lambda), "cannot prove");
+  require_rejected(e, p, Position::E, Certificate{}, "cannot prove");
+  require_rejected(e, p, Position::Unclassified, definite(*lambda));
+  // The raw-matrix overload normalizes signs by negation.
+  Matrix4 em = e.matrix(), pm = p.matrix();
+  for (auto& x : em.a) x = -x;
+  for (auto& x : pm.a) x = -x;
+  CHECK(!relpos::verify_certificate(em, pm, Position::E, definite(*lambda)));
+  // Not an ellipsoid / paraboloid.
+  Matrix4 bad = e.matrix();
+  bad(0, 0) = -1;
+  CHECK(relpos::verify_certificate(bad, p.matrix(), Position::E, definite(*lambda)));
+  Matrix4 asym = e.matrix();
+  asym(0, 1) = 1;
+  CHECK(relpos::verify_certificate(asym, p.matrix(), Position::E, definite(*lambda)));
+  CHECK(relpos::verify_certificate(e.matrix(), e.matrix(), Position::E, definite(*lambda)));
+}
+
+TEST_CASE("I: sphere of radius 1/10 at (0,0,1) inside the cup", "[certificate]") {
+  const Ellipsoid e = sphere(q(1), q(1, 10));
+  const Paraboloid p = cup();
+  const auto lambda = scan_lambda(e, p, Position::I, -1);
+  REQUIRE(lambda);
+  CHECK(pencil_pd(q(1), q(1, 100), *lambda));
+  CHECK(accepted(e, p, Position::I, definite(q(-1, 2))));
+  require_rejected(e, p, Position::I, definite(q(1, 2)), "must be < 0");
+  require_rejected(e, p, Position::E, definite(q(1, 2)));
+  require_rejected(e, p, Position::I, definite(q(-2)), "not positive definite");  // 1 + lambda < 0
+  require_rejected(e, p, Position::E, definite(*lambda), "must be > 0");
+}
+
+TEST_CASE("TE: unit sphere at (0,0,-1) touching the vertex from outside", "[certificate]") {
+  const Ellipsoid e = sphere(q(-1), q(1));
+  const Paraboloid p = cup();
+  // det(lambda P + E) = -(1 + lambda)^2 (1 - lambda/2)^2: the double root lambda = 2.
+  const Certificate good = tangent(q(2), {q(0), q(0), q(0)});
+  CHECK(accepted(e, p, Position::TE, good));
+  require_rejected(e, p, Position::TE, tangent(q(2), {q(0), q(0), q(1, 1000)}), "not on the");
+  require_rejected(e, p, Position::TE, tangent(q(2), {q(1, 1000), q(0), q(0)}), "not on the");
+  require_rejected(e, p, Position::TE, tangent(q(3), {q(0), q(0), q(0)}), "not positive semidefinite");
+  require_rejected(e, p, Position::TE, tangent(q(-1), {q(0), q(0), q(0)}), "must be > 0");
+  require_rejected(e, p, Position::TI, good, "must be < 0");
+  require_rejected(e, p, Position::E, good, "cannot prove");
+  // A Definite certificate cannot exist (the pencil is singular at 2) and the verifier agrees.
+  CHECK(relpos::verify_certificate(e, p, Position::E, definite(q(2))));
+}
+
+TEST_CASE("TI: sphere of radius 1/4 at (0,0,1/4) touching the vertex from inside", "[certificate]") {
+  const Ellipsoid e = sphere(q(1, 4), q(1, 4));
+  const Paraboloid p = cup();
+  // lambda P + E = diag(1 + l, 1 + l) (+) [[1, -1/4 - l/2], [-1/4 - l/2, 0]]: PSD only at l = -1/2.
+  const Certificate good = tangent(q(-1, 2), {q(0), q(0), q(0)});
+  CHECK(accepted(e, p, Position::TI, good));
+  require_rejected(e, p, Position::TI, tangent(q(-1, 2), {q(0), q(0), q(1, 2)}), "not on the paraboloid");
+  require_rejected(e, p, Position::TI, tangent(q(-1, 2), {q(1, 2), q(0), q(1, 4)}), "not on the ellipsoid");
+  require_rejected(e, p, Position::TI, tangent(q(-3, 5), {q(0), q(0), q(0)}), "not positive semidefinite");
+  require_rejected(e, p, Position::TE, good, "must be > 0");
+}
+
+TEST_CASE("TI, hard case: unit sphere at (0,0,5/4) touching along a circle", "[certificate]") {
+  const Ellipsoid e = sphere(q(5, 4), q(1));
+  const Paraboloid p = cup();
+  const Certificate good = circle_certificate();
+  CHECK(accepted(e, p, Position::TI, good));
+  // lambda_s = -1 written as -1 + 0 sqrt 2 (d need not be 0 when b = 0).
+  Certificate d2 = good;
+  d2.d = 2;
+  CHECK(accepted(e, p, Position::TI, d2));
+  // The directions in another basis of the kernel.
+  Certificate basis = good;
+  basis.directions = {{qn(q(1)), qn(q(1)), qn(q(0))}, {qn(q(1)), qn(q(-2)), qn(q(0))}};
+  CHECK(accepted(e, p, Position::TI, basis));
+  // A direction with an irrational part that cancels: (sqrt 4 - 2, 1, 0) = (0, 1, 0).
+  Certificate cancel = good;
+  cancel.d = 4;
+  cancel.directions[1] = {qn(q(-2), q(1)), qn(q(1)), qn(q(0))};
+  CHECK(accepted(e, p, Position::TI, cancel));
+
+  SECTION("tampered") {
+    Certificate c = good;
+    c.radius2 = qn(q(1));
+    require_rejected(e, p, Position::TI, c, "radius2");
+    c = good;
+    c.lambda_q = qn(q(-999, 1000));
+    require_rejected(e, p, Position::TI, c, "not positive semidefinite");
+    c = good;
+    c.lambda_q = qn(q(-1001, 1000));
+    require_rejected(e, p, Position::TI, c, "not positive semidefinite");
+    c = good;
+    c.d = 2;
+    c.lambda_q = qn(q(-1), q(1, 1000000));  // -1 + sqrt(2)/10^6
+    require_rejected(e, p, Position::TI, c, "not positive semidefinite");
+    c = good;
+    c.centre[2] = qn(q(1, 2));
+    require_rejected(e, p, Position::TI, c, "K (centre, 1)");
+    c = good;
+    c.centre[0] = qn(q(1, 10));  // still in K's kernel, but not the centre of the circle
+    require_rejected(e, p, Position::TI, c, "conjugate");
+    c = good;
+    c.directions[1] = {qn(q(0)), qn(q(1)), qn(q(1))};
+    require_rejected(e, p, Position::TI, c, "kernel");
+    c = good;
+    c.directions[1] = {qn(q(2)), qn(q(0)), qn(q(0))};
+    require_rejected(e, p, Position::TI, c, "dependent");
+    c = good;
+    c.directions[1] = {qn(q(0)), qn(q(0)), qn(q(0))};
+    require_rejected(e, p, Position::TI, c, "zero");
+    c = good;
+    c.directions.pop_back();  // the kernel has dimension 2: one direction describes two points only
+    require_rejected(e, p, Position::TI, c, "dimension 2");
+    c.directions.clear();
+    require_rejected(e, p, Position::TI, c, "no direction");
+    c = good;
+    c.directions.push_back(good.directions[0]);
+    c.directions.push_back(good.directions[1]);
+    require_rejected(e, p, Position::TI, c, "more than 3");
+    c = good;
+    c.d = -2;
+    require_rejected(e, p, Position::TI, c, "d = -2");
+    require_rejected(e, p, Position::TE, good, "cannot prove");
+    require_rejected(e, p, Position::C, good, "cannot prove");
+  }
+
+  SECTION("a single contact point (radius2 = 0): TI at the vertex as a hard certificate") {
+    // The sphere of radius 1/2 at (0, 0, 1/2) osculates the vertex: lambda_s = -1 is also the
+    // double root, K = diag(0, 0) (+) [[1, -1/2 + 1/2 = 0], [0, 0]], centre (0, 0, 0), radius2 0.
+    const Ellipsoid osc = sphere(q(1, 2), q(1, 2));
+    Certificate c;
+    c.kind = Kind::HardTangent;
+    c.d = 0;
+    c.lambda_q = qn(q(-1));
+    c.centre = {qn(q(0)), qn(q(0)), qn(q(0))};
+    c.radius2 = qn(q(0));
+    CHECK(accepted(osc, p, Position::TI, c));
+    c.directions = good.directions;  // the full kernel is fine too
+    CHECK(accepted(osc, p, Position::TI, c));
+    CHECK(accepted(osc, p, Position::TI, tangent(q(-1), {q(0), q(0), q(0)})));
+    c.radius2 = qn(q(1, 4));
+    require_rejected(osc, p, Position::TI, c, "radius2");
+  }
+}
+
+TEST_CASE("C: unit sphere at the origin crossing the cup", "[certificate]") {
+  const Ellipsoid e = sphere(q(0), q(1));
+  const Paraboloid p = cup();
+  const Vector3 in{q(0), q(0), q(1, 2)}, out{q(0), q(0), q(-1, 2)};
+  CHECK(accepted(e, p, Position::C, crossing(in, out)));
+  CHECK(accepted(e, p, Position::C, crossing(in, {q(0), q(0), q(-1)})));  // on the sphere: X^T E X = 0
+  require_rejected(e, p, Position::C, crossing(out, in), "not inside the paraboloid");
+  require_rejected(e, p, Position::C, crossing(in, in), "not outside the paraboloid");
+  require_rejected(e, p, Position::C, crossing({q(0), q(0), q(2)}, out), "not in the solid ellipsoid");
+  require_rejected(e, p, Position::C, crossing(in, {q(0), q(0), q(-2)}), "not in the solid ellipsoid");
+  require_rejected(e, p, Position::C, crossing(in, {q(0), q(0), q(0)}), "not outside");  // on the paraboloid
+  require_rejected(e, p, Position::E, crossing(in, out), "cannot prove");
+  require_rejected(e, p, Position::C, definite(q(1)), "cannot prove");
+}
+
+TEST_CASE("certificates survive JSON exactly", "[certificate]") {
+  require_same(round_trip(Certificate{}), Certificate{});
+  CHECK(relpos::certificate_to_json(Certificate{}).is_null());
+  const Certificate d = definite(q(-7, 3));
+  CHECK(relpos::certificate_to_json(d).dump() == R"({"lambda":"-7/3"})");
+  require_same(round_trip(d), d);
+  const Certificate t = tangent(q(2), {q(1, 3), q(-2), q(0)});
+  CHECK(relpos::certificate_to_json(t).dump() == R"({"lambda":"2","contact":["1/3","-2","0"]})");
+  require_same(round_trip(t), t);
+  const Certificate c = crossing({q(0), q(0), q(1, 2)}, {q(5), q(-1, 1000000), q(3)});
+  require_same(round_trip(c), c);
+
+  Certificate h = circle_certificate();
+  h.d = 35;
+  h.lambda_q = qn(q(-3, 2), q(1, 7));
+  h.centre[0] = qn(q(0), q(-1, 2));
+  h.radius2 = qn(q(3, 4), q(2));
+  require_same(round_trip(h), h);
+  const Json j = relpos::certificate_to_json(h, 6);
+  CHECK(j["lambda"]["d"] == "35");
+  CHECK(j["lambda"]["b"] == "1/7");
+  const Json& dec = j["contact_set"]["decimal"];
+  CHECK(dec["lambda"] == "-0.654846");    // -1.5 + sqrt(35)/7 = -0.6548457...
+  CHECK(dec["center"][0] == "-2.95804");  // -sqrt(35)/2 = -2.9580398...
+  CHECK(dec["center"][2] == "0.75");
+  CHECK(dec["radius2"] == "12.5822");  // 3/4 + 2 sqrt 35 = 12.58215...
+  // Numbers may also be JSON numbers (read exactly) and "decimal" is ignored.
+  const Certificate n = relpos::certificate_from_json(relpos::io::parse_json_exact(R"({"lambda": 0.1})"));
+  CHECK(n.kind == Kind::Definite);
+  CHECK(n.lambda == q(1, 10));
+}
+
+TEST_CASE("malformed certificate JSON is an InputError", "[certificate]") {
+  const char* bad[] = {
+      R"(3)",
+      R"("x")",
+      R"([])",
+      R"({})",
+      R"({"lambda": true})",
+      R"({"lambda": "1/0"})",
+      R"({"lambda": "abc"})",
+      R"({"lambda": "1", "extra": 2})",
+      R"({"lambda": "1", "contact": ["1", "2"]})",
+      R"({"lambda": "1", "contact": ["1", "2", null]})",
+      R"({"contact": ["1", "2", "3"]})",
+      R"({"inside": ["0", "0", "0"]})",
+      R"({"inside": ["0", "0", "0"], "outside": "0"})",
+      R"({"lambda": {"a": "-1", "b": "0", "d": "1/2"}, "contact_set": {"center": [{"a": "0", "b": "0"}, {"a": "0", "b": "0"}, {"a": "0", "b": "0"}], "directions": [], "radius2": {"a": "0", "b": "0"}}})",
+      R"({"lambda": {"a": "-1", "b": "0", "d": "-3"}, "contact_set": {"center": [{"a": "0", "b": "0"}, {"a": "0", "b": "0"}, {"a": "0", "b": "0"}], "directions": [], "radius2": {"a": "0", "b": "0"}}})",
+      R"({"lambda": {"a": "-1", "b": "0", "d": "2"}, "contact_set": {"center": [{"a": "0", "b": "0"}, {"a": "0", "b": "0"}], "directions": [], "radius2": {"a": "0", "b": "0"}}})",
+      R"({"lambda": {"a": "-1", "b": "0", "d": "2"}, "contact_set": {"center": [{"a": "0", "b": "0"}, {"a": "0", "b": "0"}, {"a": "0"}], "directions": [], "radius2": {"a": "0", "b": "0"}}})",
+      R"({"lambda": {"a": "-1", "b": "0", "d": "2"}, "contact_set": {"center": [{"a": "0", "b": "0"}, {"a": "0", "b": "0"}, {"a": "0", "b": "0"}], "directions": {}, "radius2": {"a": "0", "b": "0"}}})",
+      R"({"lambda": {"a": "-1", "b": "0", "d": "2"}, "contact_set": {"center": [{"a": "0", "b": "0"}, {"a": "0", "b": "0"}, {"a": "0", "b": "0"}], "directions": []}})",
+      R"({"lambda": "-1", "contact_set": {"center": [{"a": "0", "b": "0"}, {"a": "0", "b": "0"}, {"a": "0", "b": "0"}], "directions": [], "radius2": {"a": "0", "b": "0"}}})",
+  };
+  for (const char* text : bad) {
+    INFO(text);
+    CHECK_THROWS_AS(relpos::certificate_from_json(relpos::io::parse_json_exact(text)), relpos::InputError);
+  }
+}
