@@ -261,6 +261,14 @@ int count_classifier_failures(const std::vector<LargeCase>& cases, bool exact) {
   for (const LargeCase& c : cases) {
     const auto cl = exact ? relpos::classify_exact(c.e, c.p) : relpos::classify(c.e, c.p);
     ++got_hist[relpos::to_string(cl.position)];
+    if (cl.position == c.expected) {
+      // Every answer's certificate verifies with rational arithmetic alone (certificate.hpp).
+      const auto why = relpos::verify_certificate(c.e, c.p, cl.position, cl.certificate);
+      if (why) {
+        ++failures;
+        UNSCOPED_INFO(c.name << ": certificate of " << relpos::to_string(cl.position) << " rejected: " << *why);
+      }
+    }
     if (cl.position != c.expected) {
       if (cl.position != Position::Unclassified) ++definite;
       if (++failures <= 10)

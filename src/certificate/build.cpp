@@ -159,10 +159,6 @@ std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, int m
     for (const Box& box : boxes) {
       const Rational mid = (box.lo + box.hi) / 2;
       if (accept(mid)) return mid;
-      if (anysize::evaluate(q, mid) == 0) {
-        // an exact root: keep a tiny box around it so it is refined (and tried) no further
-        continue;
-      }
       for (const Box& half : {Box{box.lo, mid}, Box{mid, box.hi}}) {
         if (st.variations(half.lo) - st.variations(half.hi) > 0) next.push_back(half);
       }
