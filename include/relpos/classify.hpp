@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "relpos/pencil.hpp"
+#include "core/pencil.hpp"
 #include "relpos/quadric.hpp"
-#include "relpos/roots.hpp"
+#include "core/roots.hpp"
 
 namespace relpos {
 

@@ -7,13 +7,13 @@
 #include <cfloat>
 #include <cmath>
 
-#include "relpos/detail/rounding.hpp"
-#include "relpos/multiple_roots.hpp"
-#include "relpos/pooled_integer.hpp"
-#include "relpos/semi_static_filter.hpp"
-#include "relpos/smallness.hpp"
-#include "relpos/static_filter.hpp"
-#include "relpos/sturm.hpp"
+#include "filters/rounding.hpp"
+#include "filters/multiple_roots.hpp"
+#include "filters/pooled_integer.hpp"
+#include "filters/semi_static_filter.hpp"
+#include "core/smallness.hpp"
+#include "filters/static_filter.hpp"
+#include "core/sturm.hpp"
 
 namespace relpos {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "relpos/error.hpp"
-#include "relpos/roots.hpp"
+#include "core/roots.hpp"
 
 namespace relpos::io {
 namespace {
