@@ -26,7 +26,7 @@
 
 #include "relpos/classify.hpp"
 #include "relpos/quadric.hpp"
-#include "relpos/roots.hpp"
+#include "core/roots.hpp"
 
 namespace bench {
 

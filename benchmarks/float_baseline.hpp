@@ -6,9 +6,9 @@
 #include <optional>
 
 #include "relpos/classify.hpp"
-#include "relpos/pencil.hpp"
-#include "relpos/smallness.hpp"
-#include "relpos/sturm.hpp"
+#include "core/pencil.hpp"
+#include "core/smallness.hpp"
+#include "core/sturm.hpp"
 
 namespace bench {
 

@@ -32,8 +32,8 @@
 
 #include "relpos/classify.hpp"
 #include "relpos/motion.hpp"
-#include "relpos/pencil.hpp"
-#include "relpos/sturm.hpp"
+#include "core/pencil.hpp"
+#include "core/sturm.hpp"
 
 using namespace relpos;
 

@@ -30,10 +30,10 @@
 #include "float_baseline.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
-#include "relpos/pencil.hpp"
+#include "core/pencil.hpp"
 #include "relpos/quadric.hpp"
-#include "relpos/smallness.hpp"
-#include "relpos/sturm.hpp"
+#include "core/smallness.hpp"
+#include "core/sturm.hpp"
 
 using namespace relpos;
 using Clock = std::chrono::steady_clock;

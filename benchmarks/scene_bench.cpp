@@ -26,6 +26,7 @@
 
 #include "relpos/classify.hpp"
 #include "relpos/scene.hpp"
+#include "scene/demo.hpp"
 
 using namespace relpos;
 using Clock = std::chrono::steady_clock;

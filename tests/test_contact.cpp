@@ -8,7 +8,8 @@
 #include <random>
 #include <relpos/contact.hpp>
 #include <relpos/scene.hpp>
-#include <relpos/smallness.hpp>
+#include "contact/discriminant_case.hpp"
+#include "core/smallness.hpp"
 #include <vector>
 
 #include "support/construct.hpp"

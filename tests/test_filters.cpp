@@ -9,9 +9,11 @@
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/scene.hpp>
-#include <relpos/semi_static_filter.hpp>
-#include <relpos/smallness.hpp>
-#include <relpos/static_filter.hpp>
+#include "scene/certificates.hpp"
+#include "scene/demo.hpp"
+#include "filters/semi_static_filter.hpp"
+#include "core/smallness.hpp"
+#include "filters/static_filter.hpp"
 
 #include "support/construct.hpp"
 

@@ -5,10 +5,10 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <iostream>
-#include <relpos/checked_int.hpp>
-#include <relpos/multiple_roots.hpp>
-#include <relpos/roots.hpp>
-#include <relpos/static_filter.hpp>
+#include "filters/checked_int.hpp"
+#include "filters/multiple_roots.hpp"
+#include "core/roots.hpp"
+#include "filters/static_filter.hpp"
 
 #include "support/construct.hpp"
 #include "support/printers.hpp"

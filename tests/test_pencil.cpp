@@ -1,10 +1,10 @@
 // pencil.hpp, sturm.hpp, smallness.hpp, roots.hpp: the polynomials and the exact tools that read them.
 #include <catch2/catch.hpp>
 #include <relpos/classify.hpp>
-#include <relpos/pencil.hpp>
-#include <relpos/roots.hpp>
-#include <relpos/smallness.hpp>
-#include <relpos/sturm.hpp>
+#include "core/pencil.hpp"
+#include "core/roots.hpp"
+#include "core/smallness.hpp"
+#include "core/sturm.hpp"
 #include <vector>
 
 #include "support/construct.hpp"

@@ -7,8 +7,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
-#include <relpos/running_bound.hpp>
+#include "filters/running_bound.hpp"
 #include <relpos/scene.hpp>
+#include "scene/certificates.hpp"
+#include "scene/demo.hpp"
 #include <vector>
 
 #include "support/construct.hpp"

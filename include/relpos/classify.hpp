@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "relpos/certificate.hpp"
-#include "relpos/pencil.hpp"
+#include "core/pencil.hpp"
 #include "relpos/quadric.hpp"
-#include "relpos/roots.hpp"
+#include "core/roots.hpp"
 
 namespace relpos {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "relpos/numbers.hpp"
-#include "relpos/pencil.hpp"
+#include "core/pencil.hpp"
 
 namespace relpos::anysize {
 

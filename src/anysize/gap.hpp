@@ -20,8 +20,8 @@
 
 #include <optional>
 
-#include "relpos/pencil.hpp"
-#include "relpos/sturm.hpp"
+#include "core/pencil.hpp"
+#include "core/sturm.hpp"
 
 namespace relpos::anysize {
 

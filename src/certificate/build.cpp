@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "anysize/exact.hpp"
-#include "relpos/pencil.hpp"
+#include "core/pencil.hpp"
 
 namespace relpos::certificate {
 namespace {

@@ -13,7 +13,7 @@
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/numbers.hpp>
-#include <relpos/pencil.hpp>
+#include "core/pencil.hpp"
 #include <relpos/quadric.hpp>
 #include <string>
 #include <utility>

@@ -19,8 +19,8 @@
 #include <array>
 #include <optional>
 
-#include "relpos/detail/sturm_habicht_quartic.hpp"
-#include "relpos/pencil.hpp"
+#include "core/sturm_habicht_quartic.hpp"
+#include "core/pencil.hpp"
 
 namespace relpos {
 

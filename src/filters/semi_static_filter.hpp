@@ -12,7 +12,7 @@
 #pragma once
 
 #include "relpos/quadric.hpp"
-#include "relpos/static_filter.hpp"
+#include "filters/static_filter.hpp"
 
 namespace relpos {
 

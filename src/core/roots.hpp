@@ -16,22 +16,9 @@
 #include <vector>
 
 #include "relpos/numbers.hpp"
-#include "relpos/pencil.hpp"
+#include "core/pencil.hpp"
 
 namespace relpos {
-
-/// One distinct real root of f with certified information.
-struct RealRoot {
-  int sign = 0;                   ///< -1 or +1 (0 is never a root)
-  int multiplicity_f = 1;         ///< multiplicity as a root of f
-  int multiplicity_s = 0;         ///< multiplicity as a root of s (0, 1 or 2)
-  std::optional<Rational> exact;  ///< the root itself when it is rational
-  Rational lower, upper;          ///< isolating interval: the root is the only root of f in it
-  /// The multiplicity rule of math.md section 3. It characterises tangency for *small* pairs; for a
-  /// pair that is not small a root can be a tangency with a smaller excess (e.g. contact along a
-  /// circle), so outside smallness read it only as "multiple in f~".
-  bool tangency() const { return multiplicity_f - multiplicity_s >= 2; }
-};
 
 /// Everything exact about the roots of f and of f~ = f / gcd(f, s).
 struct RootStructure {
@@ -43,16 +30,6 @@ struct RootStructure {
   int sign_disc_ftilde = 0;
   int negative() const;
   int positive() const;
-};
-
-/// The facts the classification needs, without isolating any root.
-struct RootFacts {
-  int real = 0, negative = 0, positive = 0;        ///< distinct real roots of f
-  int nonreal = 0;                                 ///< non-real roots of f, with multiplicity
-  int nonreal_multiple = 0;                        ///< non-real roots of multiplicity >= 2
-  int tangent_negative = 0, tangent_positive = 0;  ///< distinct multiple real roots of f~, by sign
-  int sign_disc_f = 0, sign_disc_ftilde = 0;
-  int degree_ftilde = 4;
 };
 
 /// Root facts from exact gcd(f, s) and square-free factorisations when Disc(f) = 0. Then every

@@ -1,4 +1,4 @@
-#include "relpos/polynomial_motion.hpp"
+#include "relpos/motion.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Polynomial.h>

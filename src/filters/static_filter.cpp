@@ -1,4 +1,4 @@
-#include "relpos/static_filter.hpp"
+#include "filters/static_filter.hpp"
 
 #include <CGAL/Filtered_kernel/internal/Static_filters/Static_filter_error.h>
 
@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "relpos/smallness.hpp"
+#include "core/smallness.hpp"
 
 namespace relpos {
 namespace {

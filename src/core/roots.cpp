@@ -1,4 +1,4 @@
-#include "relpos/roots.hpp"
+#include "core/roots.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Polynomial.h>
@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <utility>
 
-#include "relpos/detail/small_factor.hpp"
-#include "relpos/detail/sturm_habicht_quartic.hpp"
+#include "core/small_factor.hpp"
+#include "core/sturm_habicht_quartic.hpp"
 
 namespace relpos {
 namespace {

@@ -22,10 +22,10 @@
 
 #include <optional>
 
-#include "relpos/checked_int.hpp"
-#include "relpos/pencil.hpp"
+#include "filters/checked_int.hpp"
+#include "core/pencil.hpp"
 #include "relpos/quadric.hpp"
-#include "relpos/roots.hpp"
+#include "core/roots.hpp"
 
 namespace relpos {
 

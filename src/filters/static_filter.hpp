@@ -15,7 +15,7 @@
 #pragma once
 
 #include "relpos/quadric.hpp"
-#include "relpos/sturm.hpp"
+#include "core/sturm.hpp"
 
 namespace relpos {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "relpos/error.hpp"
-#include "relpos/roots.hpp"
+#include "core/roots.hpp"
 
 namespace relpos::io {
 namespace {
@@ -548,8 +548,38 @@ Json classification_to_json(const Classification& c, const RenderOptions& option
     multiple.push_back(std::move(m));
   }
   j["multiple_roots"] = std::move(multiple);
+  j["certificate"] = certificate_to_json(c.certificate, options.digits);
   return j;
 }
+
+namespace {
+
+/// One line saying what the certificate is and why it proves the position (certificate.hpp).
+std::string certificate_text(const Certificate& c) {
+  switch (c.kind) {
+    case Certificate::Kind::Definite:
+      return "lambda = " + to_string(c.lambda) + ": lambda P + E is positive definite, so p has one sign on the "
+             "solid ellipsoid";
+    case Certificate::Kind::Tangent:
+      return "lambda = " + to_string(c.lambda) + ": lambda P + E is positive semidefinite; contact point (" +
+             to_string(c.contact[0]) + ", " + to_string(c.contact[1]) + ", " + to_string(c.contact[2]) + ")";
+    case Certificate::Kind::HardTangent:
+      return "lambda = lambda_s (hard case): contact along " +
+             std::string(c.directions.empty() ? "one point"
+                         : c.directions.size() == 1 ? "two points"
+                                                    : "a conic") +
+             " (exact centre, directions and squared radius in the JSON output)";
+    case Certificate::Kind::Crossing:
+      return "inside point (" + to_string(c.inside[0]) + ", " + to_string(c.inside[1]) + ", " + to_string(c.inside[2]) +
+             "), outside point (" + to_string(c.outside[0]) + ", " + to_string(c.outside[1]) + ", " +
+             to_string(c.outside[2]) + ") of the solid ellipsoid";
+    case Certificate::Kind::None:
+      break;
+  }
+  return "none";
+}
+
+}  // namespace
 
 std::string classification_to_text(const Classification& c, const RenderOptions& options) {
   std::string t;
@@ -576,6 +606,7 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
   line("small:", small);
   line("contact:", c.contact ? (*c.contact ? "yes" : "no") : "undecided (not small)");
   line("stage:", to_string(c.stage) + " (" + stage_meaning(c.stage) + ")");
+  if (c.has_full_evidence) line("proof:", certificate_text(c.certificate));
 
   t += "\n";
   if (c.has_full_evidence) {

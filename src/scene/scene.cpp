@@ -1,4 +1,5 @@
 #include "relpos/scene.hpp"
+#include "scene/certificates.hpp"
 
 #include <CGAL/Interval_nt.h>
 
@@ -9,9 +10,9 @@
 #include <limits>
 #include <thread>
 
-#include "relpos/pencil.hpp"
-#include "relpos/running_bound.hpp"
-#include "relpos/smallness.hpp"
+#include "core/pencil.hpp"
+#include "filters/running_bound.hpp"
+#include "core/smallness.hpp"
 
 namespace relpos {
 

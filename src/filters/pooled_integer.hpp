@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "relpos/numbers.hpp"
-#include "relpos/sturm.hpp"
+#include "core/sturm.hpp"
 
 namespace relpos {
 

@@ -8,13 +8,10 @@
 
 #include <array>
 
+#include "relpos/polynomials.hpp"
+
 namespace relpos {
 
-/// Coefficients of a polynomial, index = power of lambda.
-template <class NT>
-using Quartic = std::array<NT, 5>;
-template <class NT>
-using Quadratic = std::array<NT, 3>;
 
 namespace detail {
 

@@ -22,8 +22,8 @@
 #include <optional>
 #include <string>
 
-#include "relpos/pencil.hpp"
-#include "relpos/sturm.hpp"
+#include "core/pencil.hpp"
+#include "core/sturm.hpp"
 
 namespace relpos {
 

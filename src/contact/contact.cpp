@@ -3,13 +3,15 @@
 #include <cfenv>
 #include <cmath>
 
-#include "relpos/detail/rounding.hpp"
+#include "filters/rounding.hpp"
 #include "relpos/error.hpp"
-#include "relpos/running_bound.hpp"
+#include "filters/running_bound.hpp"
 #include "relpos/scene.hpp"
-#include "relpos/semi_static_filter.hpp"
-#include "relpos/smallness.hpp"
-#include "relpos/static_filter.hpp"
+#include "contact/discriminant_case.hpp"
+#include "scene/certificates.hpp"
+#include "filters/semi_static_filter.hpp"
+#include "core/smallness.hpp"
+#include "filters/static_filter.hpp"
 
 namespace relpos {
 

@@ -1,11 +1,11 @@
-#include "relpos/multiple_roots.hpp"
+#include "filters/multiple_roots.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
-#include "relpos/detail/small_factor.hpp"
+#include "core/small_factor.hpp"
 
 namespace relpos {
 namespace {

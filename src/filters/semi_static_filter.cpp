@@ -1,4 +1,4 @@
-#include "relpos/semi_static_filter.hpp"
+#include "filters/semi_static_filter.hpp"
 
 #include <gmp.h>
 
@@ -6,8 +6,8 @@
 #include <cfloat>
 #include <cmath>
 
-#include "relpos/running_bound.hpp"
-#include "relpos/smallness.hpp"
+#include "filters/running_bound.hpp"
+#include "core/smallness.hpp"
 
 namespace relpos {
 namespace {

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "relpos/scene.hpp"
+#include "scene/demo.hpp"
 
 namespace relpos {
 

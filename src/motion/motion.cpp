@@ -13,10 +13,10 @@
 #include <utility>
 
 #include "relpos/error.hpp"
-#include "relpos/pencil.hpp"
-#include "relpos/roots.hpp"
-#include "relpos/smallness.hpp"
-#include "relpos/sturm.hpp"
+#include "core/pencil.hpp"
+#include "core/roots.hpp"
+#include "core/smallness.hpp"
+#include "core/sturm.hpp"
 
 namespace relpos {
 namespace {

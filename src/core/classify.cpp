@@ -7,18 +7,17 @@
 #include <cfloat>
 #include <cmath>
 
-#include "relpos/detail/rounding.hpp"
-#include "relpos/multiple_roots.hpp"
-#include "relpos/pooled_integer.hpp"
-#include "relpos/semi_static_filter.hpp"
-#include "relpos/smallness.hpp"
-#include "relpos/static_filter.hpp"
-#include "relpos/running_bound.hpp"
+#include "filters/rounding.hpp"
+#include "filters/multiple_roots.hpp"
+#include "filters/pooled_integer.hpp"
+#include "filters/semi_static_filter.hpp"
+#include "core/smallness.hpp"
+#include "filters/static_filter.hpp"
+#include "core/sturm.hpp"
+#include "filters/running_bound.hpp"
 #include "anysize/exact.hpp"
 #include "anysize/gap.hpp"
 #include "certificate/build.hpp"
-#include <stdexcept>
-#include "relpos/sturm.hpp"
 
 namespace relpos {
 
