@@ -3,6 +3,8 @@
 #include <gmp.h>
 
 #include <array>
+#include <cmath>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -225,7 +227,7 @@ QuadraticReal e_at(const LambdaS& ls, const Matrix4& E, const std::array<Quadrat
 
 /// Hard case (section 8): contact set x^ + {w in ker(lambda_s A + M): w^T M w = -e(x^)}, x^ the
 /// minimiser of e on the solutions of (lambda_s A + M) x = -(lambda_s a + m).
-void hard_case(const Pair& pr, Certificate& c) {
+bool hard_case(const Pair& pr, Certificate& c) {
   const LambdaS& ls = pr.ls;
   std::array<std::array<QuadraticReal, 4>, 3> m;
   for (int i = 0; i < 3; ++i) {
@@ -234,7 +236,7 @@ void hard_case(const Pair& pr, Certificate& c) {
     m[i][3] = {-r.a, -r.b};
   }
   const LinearSolution sol = solve3(ls, m);
-  if (!sol.consistent) throw std::logic_error("hard case: (lambda_s A + M) x = -(lambda_s a + m) has no solution");
+  if (!sol.consistent) return false;  // not the hard case: x(lambda) leaves every bounded set
   std::array<QuadraticReal, 3> x = sol.particular;
   const auto& w = sol.kernel;
   // Gradient of e along the kernel: g_j = w_j^T (M x + m); Gram G_jk = w_j^T M w_k; solve G c = -g.
@@ -277,6 +279,78 @@ void hard_case(const Pair& pr, Certificate& c) {
   c.directions.clear();
   for (const auto& v : w) c.directions.push_back({QuadraticNumber{v[0].a, v[0].b}, {v[1].a, v[1].b}, {v[2].a, v[2].b}});
   c.radius2 = {-ex.a, -ex.b};
+  return true;
+}
+
+/// Last resort for the witness points of a crossing: the extremes of p on the ellipsoid's surface
+/// sought in double precision (a grid over the sphere mapped onto the surface, then local steps),
+/// each candidate pulled towards the centre until it lies in the solid ellipsoid exactly and tried
+/// exactly. Only a search: nothing is claimed unless the exact checks pass.
+void search_surface(const Pair& pr, const V3& centre, bool want_inside, std::optional<V3>& found,
+                    const std::function<void(const V3&)>& consider) {
+  double m[3][3], c[3];
+  for (int i = 0; i < 3; ++i) {
+    c[i] = CGAL::to_double(centre[i]);
+    for (int j = 0; j < 3; ++j) m[i][j] = CGAL::to_double(pr.E(i, j));
+  }
+  const double r2 = -CGAL::to_double(pr.e_at(centre));
+  if (!std::isfinite(r2) || !(r2 > 0)) return;
+  // Cholesky M = G G^T; x = c + sqrt(r2) G^{-T} u, |u| = 1, lies on the surface.
+  double g[3][3] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j <= i; ++j) {
+      double sum = m[i][j];
+      for (int k = 0; k < j; ++k) sum -= g[i][k] * g[j][k];
+      g[i][j] = i == j ? std::sqrt(std::max(sum, 1e-300)) : sum / g[j][j];
+    }
+  auto point = [&](double th, double ph, double out[3]) {
+    const double u[3] = {std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
+    double y[3];  // solve G^T y = u (back substitution)
+    for (int i = 2; i >= 0; --i) {
+      double sum = u[i];
+      for (int k = i + 1; k < 3; ++k) sum -= g[k][i] * y[k];
+      y[i] = sum / g[i][i];
+    }
+    for (int i = 0; i < 3; ++i) out[i] = c[i] + std::sqrt(std::max(r2, 0.0)) * y[i];
+  };
+  auto p_of = [&](const double x[3]) {
+    double acc = CGAL::to_double(pr.P(3, 3));
+    for (int i = 0; i < 3; ++i) {
+      acc += 2 * CGAL::to_double(pr.P(i, 3)) * x[i];
+      for (int j = 0; j < 3; ++j) acc += x[i] * CGAL::to_double(pr.P(i, j)) * x[j];
+    }
+    return want_inside ? -acc : acc;  // maximise
+  };
+  const double pi = 3.14159265358979323846;
+  double best_th = 0, best_ph = 0, best = -HUGE_VAL, x[3];
+  for (int i = 0; i <= 64; ++i)
+    for (int j = 0; j < 128; ++j) {
+      const double th = pi * i / 64, ph = 2 * pi * j / 128;
+      point(th, ph, x);
+      const double v = p_of(x);
+      if (v > best) best = v, best_th = th, best_ph = ph;
+    }
+  for (double step = pi / 64; step > 1e-15; step /= 2)
+    for (int k = 0; k < 8; ++k) {
+      bool moved = false;
+      for (const auto& d : {std::pair<double, double>{step, 0}, {-step, 0}, {0, step}, {0, -step}}) {
+        point(best_th + d.first, best_ph + d.second, x);
+        const double v = p_of(x);
+        if (v > best) best = v, best_th += d.first, best_ph += d.second, moved = true;
+      }
+      if (!moved) break;
+    }
+  point(best_th, best_ph, x);
+  for (double xi : x)
+    if (!std::isfinite(xi)) return;
+  for (int k = 1; k <= 60 && !found; ++k) {
+    Integer two_k(1);
+    mpz_mul_2exp(two_k.mpz(), two_k.mpz(), static_cast<mp_bitcnt_t>(k));
+    const Rational t = Rational(1) - Rational(1) / Rational(two_k);
+    V3 q;
+    for (int i = 0; i < 3; ++i) q[i] = centre[i] + t * (exact_rational(x[i]) - centre[i]);
+    consider(q);
+  }
 }
 
 /// lambda with f(lambda) > 0 in the domain: then lambda P + E is positive definite (lambda A + M is,
@@ -291,7 +365,7 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 bool crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
-  auto consider = [&](const V3& x) {
+  std::function<void(const V3&)> consider = [&](const V3& x) {
     if (pr.e_at(x) > 0) return;
     const int s = sgn(pr.p_at(x));
     if (s < 0 && !inside) inside = x;
@@ -341,8 +415,8 @@ bool crossing_points(const Pair& pr, Certificate& c) {
   }
   if (!outside) {  // the hard case of the max side: leave x(lambda) along the kernel of lambda_s A + M
     Certificate hard;
-    hard_case(pr, hard);
-    for (unsigned bits = 8; bits <= 1024 && !outside; bits *= 2) {
+    const bool is_hard = hard_case(pr, hard);
+    for (unsigned bits = 8; is_hard && bits <= 1024 && !outside; bits *= 2) {
       V3 x0;
       for (int i = 0; i < 3; ++i) x0[i] = approximate(pr.ls, {hard.centre[i].a, hard.centre[i].b}, bits, true);
       for (const auto& dir : hard.directions) {
@@ -375,6 +449,8 @@ bool crossing_points(const Pair& pr, Certificate& c) {
       }
     }
   }
+  if (centre && !inside) search_surface(pr, *centre, true, inside, consider);
+  if (centre && !outside) search_surface(pr, *centre, false, outside, consider);
   if (!inside || !outside) return false;
   c.kind = Certificate::Kind::Crossing;
   c.inside = *inside;
@@ -414,7 +490,7 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) {
         c.contact = *x;
         return c;
       }
-      if (position == Position::TI) hard_case(pr, c);
+      if (position == Position::TI && !hard_case(pr, c)) c = Certificate{};
       return c;
     }
     case Position::C:
