@@ -205,7 +205,7 @@ struct Result {
   double wrong_decided = 0;     // answered and wrong (fraction of all pairs)
   int n = 0;
   int batches = 0;
-  std::array<int, kStageCount> stages{};  ///< pairs per deciding Stage (adaptive only)
+  std::array<int, kAllStages.size()> stages{};  ///< pairs per deciding Stage (adaptive only)
 };
 
 volatile int g_sink = 0;
@@ -220,7 +220,7 @@ Result measure(const std::vector<Pair>& v, F method, double budget_s, const std:
   auto t0 = Clock::now();
   for (std::size_t i = 0; i < v.size(); ++i) {
     Answer a = method(v[i]);
-    if (a.stage >= 0 && static_cast<std::size_t>(a.stage) < kStageCount)
+    if (a.stage >= 0 && static_cast<std::size_t>(a.stage) < kAllStages.size())
       ++res.stages[static_cast<std::size_t>(a.stage)];
     if (!a.pos)
       ++undecided;
@@ -367,10 +367,10 @@ struct Row {
   int exact_double_inputs = 0;
 };
 
-/// Column / key name of stage i: to_string(Stage) with '-' -> '_' (static_double, ..., exact_roots),
+/// Column / key name of a stage: to_string(Stage) with '-' -> '_' (static_double, ..., exact_roots),
 /// so a new Stage value needs no change here.
-std::string stage_key(std::size_t i) {
-  std::string k = to_string(static_cast<Stage>(i));
+std::string stage_key(Stage s) {
+  std::string k = to_string(s);
   std::replace(k.begin(), k.end(), '-', '_');
   return k;
 }
@@ -481,12 +481,12 @@ int main(int argc, char** argv) {
   {
     std::ofstream csv(out_dir + "/stages.csv");
     csv << "family,eps,n";
-    for (std::size_t i = 0; i < kStageCount; ++i) csv << "," << stage_key(i);
+    for (const Stage s : kClassifierStages) csv << "," << stage_key(s);
     csv << "\n";
     for (const auto& r : rows)
       if (r.method == "adaptive") {
         csv << r.family << "," << r.eps << "," << r.r.n;
-        for (int c : r.r.stages) csv << "," << c;
+        for (const Stage st : kClassifierStages) csv << "," << r.r.stages[static_cast<std::size_t>(st)];
         csv << "\n";
       }
   }
@@ -583,8 +583,9 @@ int main(int argc, char** argv) {
              << ", \"decided_fraction\": " << fmt(r.r.decided_fraction) << ", \"n\": " << r.r.n;
           if (r.method == "adaptive") {
             js << ", \"stage_fractions\": {";
-            for (std::size_t i = 0; i < kStageCount; ++i)
-              js << (i ? ", " : "") << "\"" << stage_key(i) << "\": " << fmt(double(r.r.stages[i]) / r.r.n);
+            for (const Stage s : kClassifierStages)
+              js << (s != kClassifierStages.front() ? ", " : "") << "\"" << stage_key(s)
+                 << "\": " << fmt(double(r.r.stages[static_cast<std::size_t>(s)]) / r.r.n);
             js << "}";
           }
           js << "}";

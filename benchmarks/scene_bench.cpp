@@ -194,16 +194,17 @@ int main(int argc, char** argv) {
   // Where the per-pair time goes: by the stage of decide_position that decided.
   std::ostringstream by_stage_json;
   {
-    std::vector<std::vector<double>> by(kStageCount);
+    std::vector<std::vector<double>> by(kAllStages.size());
     for (std::size_t i = 0; i < n; ++i) by[static_cast<std::size_t>(pair_verdict[i].stage)].push_back(pair_ns[i]);
-    for (std::size_t s = 0; s < kStageCount; ++s) {
-      const std::string name = to_string(static_cast<Stage>(s));
+    for (const Stage stage : kClassifierStages) {
+      const std::size_t s = static_cast<std::size_t>(stage);
+      const std::string name = to_string(stage);
       const double sum = std::accumulate(by[s].begin(), by[s].end(), 0.0);
       const double mean = by[s].empty() ? 0.0 : sum / static_cast<double>(by[s].size());
       std::printf("  decided by %-21s %8zu pairs (%6.3f %%): median %8.0f ns, mean %8.0f ns, %5.1f %% of the time\n",
                   name.c_str(), by[s].size(), 100.0 * static_cast<double>(by[s].size()) / static_cast<double>(n),
                   median(by[s]), mean, 100.0 * sum / (pair_mean * static_cast<double>(n)));
-      by_stage_json << (s ? ", " : "") << "\"" << name << "\": {\"pairs\": " << by[s].size()
+      by_stage_json << (stage != kClassifierStages.front() ? ", " : "") << "\"" << name << "\": {\"pairs\": " << by[s].size()
                     << ", \"median_ns\": " << median(by[s]) << ", \"mean_ns\": " << mean << "}";
     }
   }
@@ -265,10 +266,9 @@ int main(int argc, char** argv) {
               c.count(Position::TI), c.count(Position::C), c.count(Position::TE), c.count(Position::E),
               c.count(Position::Unclassified));
   std::printf("settled by:");
-  for (std::size_t s = 0; s < kSceneStageCount; ++s)
-    std::printf(" %s %.3f %%%s", to_string(static_cast<SceneStage>(s)).c_str(),
-                100.0 * static_cast<double>(c.stages[s]) / static_cast<double>(n),
-                s + 1 < kSceneStageCount ? "," : "\n");
+  for (const Stage s : kAllStages)
+    std::printf(" %s %.3f %%%s", to_string(s).c_str(), 100.0 * static_cast<double>(c.count(s)) / static_cast<double>(n),
+                s != kAllStages.back() ? "," : "\n");
 
   // Determinism: every run gives the same verdicts.
   bool runs_agree = true;
@@ -374,8 +374,8 @@ int main(int argc, char** argv) {
        << ", \"C\": " << c.count(Position::C) << ", \"TE\": " << c.count(Position::TE)
        << ", \"E\": " << c.count(Position::E) << ", \"unclassified\": " << c.count(Position::Unclassified)
        << "},\n  \"stages\": {";
-    for (std::size_t s = 0; s < kSceneStageCount; ++s)
-      js << (s ? ", " : "") << "\"" << to_string(static_cast<SceneStage>(s)) << "\": " << c.stages[s];
+    for (const Stage s : kAllStages)
+      js << (s != kAllStages.front() ? ", " : "") << "\"" << to_string(s) << "\": " << c.count(s);
     js << "},\n  \"runs_agree\": " << (runs_agree ? "true" : "false") << ", \"differences_vs_pairs\": " << vs_pairs
        << ",\n  \"verified\": " << (verify ? "true" : "false") << ", \"verify_seconds\": " << verify_s
        << ", \"mismatches_vs_classify_exact\": " << mismatches

@@ -580,8 +580,7 @@ int run_scene(const std::vector<std::string>& args) {
   for (auto pos : {relpos::Position::I, relpos::Position::TI, relpos::Position::C, relpos::Position::TE,
                    relpos::Position::E, relpos::Position::Unclassified})
     positions[position_text(pos)] = counts.count(pos);
-  for (std::size_t s = 0; s < relpos::kSceneStageCount; ++s)
-    stages[relpos::to_string(static_cast<relpos::SceneStage>(s))] = counts.stages[s];
+  for (const relpos::Stage s : relpos::kAllStages) stages[relpos::to_string(s)] = counts.count(s);
   Json summary;
   summary["bodies"] = counts.bodies;
   summary["errors"] = errors;

@@ -8,6 +8,7 @@
 
 #include "support/checks.hpp"
 #include "support/construct.hpp"
+#include "support/oracles.hpp"
 #include "support/printers.hpp"
 
 using namespace rt;
@@ -66,9 +67,9 @@ TEST_CASE("tangency at (1,1,2) on z = x^2 + y^2: |n| = |(2,2,-1)| = 3", "[classi
     if (k.expected == Position::TI || k.expected == Position::TE) {
       // The tangency is a double root; on this circular cup f~ = f / (l + 1), because -a^2 = -1 is
       // a double root of s and (off the axis) a simple root of f.
-      CHECK(c.sign_disc_f == 0);
+      CHECK(c.verdict.sign_disc_f == 0);
       CHECK(c.degree_ftilde == 3);
-      CHECK((c.stage == Stage::ExactRoots || c.stage == Stage::MultipleRootWitness));
+      CHECK((c.verdict.stage == Stage::ExactRoots || c.verdict.stage == Stage::MultipleRootWitness));
     }
   }
 }
@@ -155,14 +156,14 @@ TEST_CASE("the paper's Remark example: I with -a^2 a double root of f and a root
   REQUIRE(multiplicity(paper_s(a, b), -a * a) == 1);
 
   const Classification c = check_config(k);
-  CHECK(c.position == Position::I);
-  CHECK(c.small);
-  CHECK(c.sign_disc_f == 0);
-  CHECK(c.sign_disc_ftilde == 1);
+  CHECK(c.verdict.position == Position::I);
+  CHECK(c.verdict.small);
+  CHECK(c.verdict.sign_disc_f == 0);
+  CHECK(c.verdict.sign_disc_ftilde == 1);
   CHECK(c.degree_ftilde == 3);
-  CHECK((c.stage == Stage::ExactRoots || c.stage == Stage::MultipleRootWitness));
+  CHECK((c.verdict.stage == Stage::ExactRoots || c.verdict.stage == Stage::MultipleRootWitness));
   REQUIRE(c.roots.size() == 3);  // -3.548..., -36/25 (double), -0.110...
-  CHECK(c.nonreal_roots == 0);
+  CHECK(c.verdict.nonreal_roots == 0);
   // The simple roots are those of q = 5184 l^2 + 18964 l + 2025 (f = c (25 l + 36)^2 q), one on
   // each side of -36/25; their isolating intervals bracket a sign change of q.
   const Quadratic<Rational> q{Q(2025), Q(18964), Q(5184)};
@@ -187,7 +188,7 @@ TEST_CASE("the paper's Remark example: I with -a^2 a double root of f and a root
   Rng g(0x5EED0003);
   for (int i = 0; i < 12; ++i) {
     const Classification ct = check_config_transformed(k, g);
-    CHECK(ct.position == Position::I);
+    CHECK(ct.verdict.position == Position::I);
   }
 }
 
@@ -209,7 +210,7 @@ TEST_CASE("centre on the axis: I, TI, C, TE, E by the height", "[classify][axis]
       const Classification c = check_config(k);
       // gcd(f, s) = s: f~ is the quadratic factor.
       CHECK(c.degree_ftilde == 2);
-      CHECK(c.sign_disc_ftilde == sgn(z * z - r * r));
+      CHECK(c.verdict.sign_disc_ftilde == sgn(z * z - r * r));
       if (z == r || z == -r) {
         const auto& t = root_at(c, -2 * z);  // the double root -2z of l^2 + 4 z l + 4 z^2
         CHECK(t.multiplicity_f == 2);
@@ -257,8 +258,8 @@ TEST_CASE("circular paraboloid: -a^2 has multiplicity 1, 2, 3 or 4 in f", "[clas
     CHECK(t.multiplicity_s == 2);
     CHECK_FALSE(t.tangency());
     CHECK(c.degree_ftilde == 2);
-    CHECK(c.sign_disc_f == 0);  // Disc(f) = 0 with nothing touching
-    CHECK(c.sign_disc_ftilde == 1);
+    CHECK(c.verdict.sign_disc_f == 0);  // Disc(f) = 0 with nothing touching
+    CHECK(c.verdict.sign_disc_ftilde == 1);
   }
   SECTION("on the axis, z = a^2/4 + r^2/a^2: multiplicity 3, I") {
     const Rational r(1, 4), z = a2 / 4 + r * r / a2;  // 5/16 > r: interior (axis rule)
@@ -283,8 +284,8 @@ TEST_CASE("circular paraboloid: -a^2 has multiplicity 1, 2, 3 or 4 in f", "[clas
       CHECK(c.roots[0].multiplicity_f == 4);
       CHECK(c.roots[0].multiplicity_s == 2);
       CHECK(c.roots[0].tangency());
-      CHECK(c.rho_vs_one == 0);
-      CHECK(c.small);
+      CHECK(c.verdict.rho_vs_one == 0);
+      CHECK(c.verdict.small);
     }
   }
   SECTION("on the axis, z = r != a^2/2: TI at -2r, -a^2 double but not a tangency") {
@@ -324,8 +325,8 @@ TEST_CASE("a != b: triple -a^2 at centre (0,0,a^2/2), r = a^2/2 is TI with rho =
     CHECK(t.multiplicity_s == 1);
     CHECK(t.tangency());
     CHECK(root_at(c, -ab.b * ab.b).multiplicity_f == 1);
-    CHECK(c.small);
-    CHECK(c.rho_vs_one == 0);
+    CHECK(c.verdict.small);
+    CHECK(c.verdict.rho_vs_one == 0);
     REQUIRE(c.rho.has_value());
     CHECK(*c.rho == 1);
     for (int i = 0; i < 4; ++i) check_config_transformed(k, g);
@@ -351,18 +352,18 @@ TEST_CASE("-b^2 double root with the centre crossing or outside (math.md section
     REQUIRE(dist2(p, k.c) < r * r);
     REQUIRE(crossing_certificate(k));
     const Classification c = check_config(k);
-    CHECK(c.position == Position::C);
-    CHECK(c.sign_disc_f == 0);
-    CHECK(c.sign_disc_ftilde == -1);
+    CHECK(c.verdict.position == Position::C);
+    CHECK(c.verdict.sign_disc_f == 0);
+    CHECK(c.verdict.sign_disc_ftilde == -1);
     CHECK(c.degree_ftilde == 3);
     const auto& t = root_at(c, Q(-4));
     CHECK(t.multiplicity_f == 2);
     CHECK(t.multiplicity_s == 1);
     CHECK_FALSE(t.tangency());
-    CHECK(c.nonreal_roots == 2);
+    CHECK(c.verdict.nonreal_roots == 2);
     // The paper's Table 2 (Disc = 0 and c_1 < 0) would say TE: documented counterexample.
     CHECK(table2(c.f) == Position::TE);
-    CHECK(table2(c.f) != c.position);
+    CHECK(table2(c.f) != c.verdict.position);
   }
   SECTION("centre (6/5, 0, 857/1600): E, certified by a separating tangent plane") {
     const Config k = config("-b^2 double, E", a, b, V(Q(6, 5), Q(0), Q(857, 1600)), r, Position::E);
@@ -374,10 +375,10 @@ TEST_CASE("-b^2 double root with the centre crossing or outside (math.md section
     REQUIRE(val * val > r * r * Q(169, 25));
     REQUIRE(separation_certificate(k));
     const Classification c = check_config(k);
-    CHECK(c.position == Position::E);
-    CHECK(c.sign_disc_f == 0);
-    CHECK(c.sign_disc_ftilde == 1);
-    CHECK(c.positive_roots == 2);
+    CHECK(c.verdict.position == Position::E);
+    CHECK(c.verdict.sign_disc_f == 0);
+    CHECK(c.verdict.sign_disc_ftilde == 1);
+    CHECK(c.verdict.positive_roots == 2);
     const auto& t = root_at(c, Q(-4));
     CHECK(t.multiplicity_f == 2);
     CHECK(t.multiplicity_s == 1);
@@ -402,8 +403,8 @@ TEST_CASE("2r = a^2 exactly: rho == 1, small", "[classify][smallness]") {
   // On the axis above a^2/2: distance^2 to the cup is a^2 z - a^4/4 = 19/4 > r^2: interior.
   const Config inside = config("rho = 1, axis", a, b, V(Q(0), Q(0), Q(5)), r, Position::I);
   const Classification c = check_config(inside);
-  CHECK(c.small);
-  CHECK(c.rho_vs_one == 0);
+  CHECK(c.verdict.small);
+  CHECK(c.verdict.rho_vs_one == 0);
   REQUIRE(c.rho.has_value());
   CHECK(*c.rho == 1);
   // Around an off-axis rational-normal point, with r = a^2/2 the smallest radius of curvature
@@ -416,13 +417,13 @@ TEST_CASE("2r = a^2 exactly: rho == 1, small", "[classify][smallness]") {
   // Just beyond: not small, and nothing but TE/E is claimed.
   const Config beyond = config("rho > 1, axis", a, b, V(Q(0), Q(0), Q(5)), r + Q(1, 1000), Position::I);
   const Classification cb = check_config(beyond);
-  CHECK_FALSE(cb.small);
-  CHECK(cb.rho_vs_one == 1);
-  CHECK(cb.position == Position::Unclassified);
+  CHECK_FALSE(cb.verdict.small);
+  CHECK(cb.verdict.rho_vs_one == 1);
+  CHECK(cb.verdict.position == Position::Unclassified);
   Rng g(0x5EED0008);
   for (int i = 0; i < 6; ++i) {
     const Classification ct = check_config_transformed(inside, g);
-    CHECK(ct.rho_vs_one == 0);
+    CHECK(ct.verdict.rho_vs_one == 0);
   }
 }
 
@@ -457,7 +458,7 @@ TEST_CASE("double inputs: dyadic centres on the axis give exact tangencies", "[c
     REQUIRE(e == sphere_matrix(V(Q(0), Q(0), Rational(d.z)), Rational(d.r)));
     const Config k = config("double axis", Q(1), Q(2), V(Q(0), Q(0), Rational(d.z)), Rational(d.r), d.want);
     const Classification c = check_all(Ellipsoid::from_matrix(e), Paraboloid::from_matrix(par()), expect_from(k));
-    CHECK(c.position == d.want);
+    CHECK(c.verdict.position == d.want);
   }
   // A double 0.1 is not 1/10: with z = 0.1 (double) and r = 0.1 (double) the sphere is exactly
   // tangent; with z = 1/10 and r = double(0.1) > 1/10 it crosses; the other way round it is inside.
@@ -482,20 +483,20 @@ TEST_CASE("not small: only contact / separation is claimed", "[classify][smallne
     // f = -(l + 1)^2 (l^2 + 12 l + 16) / 4: all roots real and negative, so neither a non-real
     // root (contact) nor two positive roots (separation) is available.
     const Classification c = check_config(config("big, (0,0,3)", one, one, V(Q(0), Q(0), Q(3)), r, Position::C));
-    CHECK_FALSE(c.small);
-    CHECK(c.rho_vs_one == 1);
+    CHECK_FALSE(c.verdict.small);
+    CHECK(c.verdict.rho_vs_one == 1);
     CHECK(*c.rho == 16);
-    CHECK(c.position == Position::Unclassified);
-    CHECK_FALSE(c.contact.has_value());
+    CHECK(c.verdict.position == Position::Unclassified);
+    CHECK_FALSE(c.verdict.meets().has_value());
   }
   SECTION("centre (0,0,-3): E; (0,0,-2): TE") {
     const Classification e = check_config(config("big, (0,0,-3)", one, one, V(Q(0), Q(0), Q(-3)), r, Position::E));
-    CHECK(e.position == Position::E);
-    CHECK_FALSE(e.small);
-    CHECK(e.contact == std::optional<bool>(false));
+    CHECK(e.verdict.position == Position::E);
+    CHECK_FALSE(e.verdict.small);
+    CHECK(e.verdict.meets() == std::optional<bool>(false));
     // f = -(l - 4)^2 (l + 1)^2 / 4: -1 is shared with s (not a tangency), 4 is the tangency.
     const Classification t = check_config(config("big, (0,0,-2)", one, one, V(Q(0), Q(0), Q(-2)), r, Position::TE));
-    CHECK(t.position == Position::TE);
+    CHECK(t.verdict.position == Position::TE);
     CHECK(root_at(t, Q(4)).multiplicity_f == 2);
     CHECK(root_at(t, Q(4)).tangency());
     CHECK(root_at(t, Q(-1)).multiplicity_f == 2);
@@ -504,10 +505,10 @@ TEST_CASE("not small: only contact / separation is claimed", "[classify][smallne
   SECTION("centre (0,0,0): non-real roots, so the surfaces meet") {
     // f = -(l + 1)^2 (l^2 + 16) / 4.
     const Classification c = check_config(config("big, (0,0,0)", one, one, V(Q(0), Q(0), Q(0)), r, Position::C));
-    CHECK(c.position == Position::Unclassified);
-    REQUIRE(c.contact.has_value());
-    CHECK(*c.contact == true);
-    CHECK(c.nonreal_roots == 2);
+    CHECK(c.verdict.position == Position::Unclassified);
+    REQUIRE(c.verdict.meets().has_value());
+    CHECK(*c.verdict.meets() == true);
+    CHECK(c.verdict.nonreal_roots == 2);
   }
   SECTION("a root of s carrying a tangential contact point of crossing surfaces") {
     // a = 1, b = 1/2, centre (0, 0, 5/4), r = 1 (2r > b^2): f = -(l + 1)^2 (l + 4)(4 l + 1) / 4
@@ -524,15 +525,15 @@ TEST_CASE("not small: only contact / separation is claimed", "[classify][smallne
     REQUIRE(multiplicity(f, Q(-4)) == 1);
     REQUIRE(multiplicity(f, Q(-1, 4)) == 1);
     const Classification c = check_config(k);
-    CHECK(c.position == Position::Unclassified);
-    CHECK_FALSE(c.small);
-    CHECK(relpos::kernel_has_common_point(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()), Q(-1)));
+    CHECK(c.verdict.position == Position::Unclassified);
+    CHECK_FALSE(c.verdict.small);
+    CHECK(relpos::oracle::kernel_has_common_point(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()), Q(-1)));
     CHECK(root_at(c, Q(-1)).multiplicity_s == 1);
   }
   SECTION("a big sphere resting inside on the axis touches along a circle: never called TI") {
     // r = 2 > a^2/2, centre (0,0,2): the quadratic factor is (l + 4)^2, a 'TI' root pattern.
     const Classification c = check_config(config("big, (0,0,2)", one, one, V(Q(0), Q(0), Q(2)), r, Position::C));
-    CHECK(c.position == Position::Unclassified);
+    CHECK(c.verdict.position == Position::Unclassified);
   }
 }
 
@@ -562,8 +563,8 @@ TEST_CASE("near-tangencies: perturbations of 10^-k around exact tangencies", "[c
     // And the smallness boundary: 2r = a^2 +- eps.
     const Config lo = config("rho just below 1", Q(1), Q(2), V(Q(0), Q(0), Q(5)), Q(1, 2) - eps, Position::I);
     const Config hi = config("rho just above 1", Q(1), Q(2), V(Q(0), Q(0), Q(5)), Q(1, 2) + eps, Position::I);
-    CHECK(check_config(lo).rho_vs_one == -1);
-    CHECK(check_config(hi).rho_vs_one == 1);
+    CHECK(check_config(lo).verdict.rho_vs_one == -1);
+    CHECK(check_config(hi).verdict.rho_vs_one == 1);
   }
 }
 

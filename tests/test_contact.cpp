@@ -130,26 +130,26 @@ TEST_CASE("the discriminant case on exact signs reproduces classify_exact", "[co
     const Paraboloid p = Paraboloid::from_matrix(t.p);
     const Classification x = relpos::classify_exact(e, p, Evidence::Full);
     const DiscriminantCase dc = exact_case(x.f);
-    INFO("case " << relpos::to_string(dc) << ", classify " << relpos::to_string(x.position));
-    if (x.sign_disc_f == 0) {
+    INFO("case " << relpos::to_string(dc) << ", classify " << relpos::to_string(x.verdict.position));
+    if (x.verdict.sign_disc_f == 0) {
       ++disc_zero;
       CHECK(dc == DiscriminantCase::Undecided);
       continue;
     }
     REQUIRE(dc != DiscriminantCase::Undecided);
     ++decided;
-    const auto v = relpos::verdict_from_discriminant_case(dc, x.rho_vs_one);
+    const auto v = relpos::verdict_from_discriminant_case(dc, x.verdict.rho_vs_one);
     REQUIRE(v);
-    CHECK(v->position == x.position);
-    CHECK(v->rule == x.rule_id);
-    CHECK(int(v->real_roots) == x.real_roots);
-    CHECK(int(v->positive_roots) == x.positive_roots);
-    CHECK(int(v->negative_roots) == x.negative_roots);
-    CHECK(int(v->nonreal_roots) == x.nonreal_roots);
-    CHECK(int(v->sign_disc_f) == x.sign_disc_f);
+    CHECK(v->position == x.verdict.position);
+    CHECK(v->rule == x.verdict.rule);
+    CHECK(int(v->real_roots) == x.verdict.real_roots);
+    CHECK(int(v->positive_roots) == x.verdict.positive_roots);
+    CHECK(int(v->negative_roots) == x.verdict.negative_roots);
+    CHECK(int(v->nonreal_roots) == x.verdict.nonreal_roots);
+    CHECK(int(v->sign_disc_f) == x.verdict.sign_disc_f);
     // E does not depend on rho.
     if (dc == DiscriminantCase::TwoPositive) {
-      CHECK(x.position == Position::E);
+      CHECK(x.verdict.position == Position::E);
       CHECK(relpos::verdict_from_discriminant_case(dc, -1)->position == Position::E);
       CHECK(relpos::verdict_from_discriminant_case(dc, std::nullopt)->position == Position::E);
     }
@@ -212,14 +212,14 @@ TEST_CASE("the paper's discriminant tracker is wrong twice; relpos is not", "[co
     INFO(k.name);
     const Ellipsoid e = Ellipsoid::from_matrix(sphere_matrix(k.c, r));
     const Classification x = relpos::classify_exact(e, p, Evidence::Full);
-    REQUIRE(x.position == k.expected);
+    REQUIRE(x.verdict.position == k.expected);
     const Position paper = paper_tracker(x.f);
     CHECK(paper != k.expected);  // the paper's tracker says TE, TE, E, E
     if (k.expected == Position::I) {
-      CHECK(x.sign_disc_f > 0);
+      CHECK(x.verdict.sign_disc_f > 0);
       CHECK(paper == Position::E);
     } else {
-      CHECK(x.sign_disc_f == 0);
+      CHECK(x.verdict.sign_disc_f == 0);
       CHECK(paper == Position::TE);
       CHECK(exact_case(x.f) == DiscriminantCase::Undecided);  // the discriminant cannot decide
     }
@@ -344,7 +344,7 @@ TEST_CASE("smallness and the level are translation invariant (exact)", "[contact
     CHECK(ete1 / dm - Et(3, 3) == level);
     const Classification x0 = relpos::classify_exact(e0, p, Evidence::Full);
     const Classification x1 = relpos::classify_exact(e1, p, Evidence::Full);
-    CHECK(x0.rho_vs_one == x1.rho_vs_one);
+    CHECK(x0.verdict.rho_vs_one == x1.verdict.rho_vs_one);
     CHECK(x0.s == x1.s);
     CHECK(x0.f[0] == x1.f[0]);
     CHECK(x0.f[4] == x1.f[4]);
@@ -461,7 +461,7 @@ TEST_CASE("random agreement with classify; the discriminant path decides most pa
     if (fr.by == DecidedBy::DiscriminantFilter) ++tracker_filter;
     if (i % 25 == 0) {  // the reference path, without any filter
       const Classification x = relpos::classify_exact(*e, *p, Evidence::Minimal);
-      CHECK(x.position == v.position);
+      CHECK(x.verdict.position == v.position);
       CHECK(c.contact == relpos::contact_of(v));
       ++exact_checked;
     }
@@ -550,7 +550,7 @@ TEST_CASE("tracker update(translation) equals decide_position on the moved body"
       CHECK(fr.rule == v.rule);
       CHECK(fr.contact == v.contact);
       if (v.position == Position::TI || v.position == Position::TE) ++tangent_frames;
-      if (k % 50 == 0) CHECK(relpos::classify_exact(moved, p, Evidence::Minimal).position == fr.position);
+      if (k % 50 == 0) CHECK(relpos::classify_exact(moved, p, Evidence::Minimal).verdict.position == fr.position);
     }
     frames += tr.counts().frames;
     by_filter += tr.counts().by_filter;

@@ -29,6 +29,7 @@
 #include "support/certified_roots.hpp"
 #include "support/checks.hpp"
 #include "support/construct.hpp"
+#include "support/oracles.hpp"
 #include "support/printers.hpp"
 
 using namespace rt;
@@ -103,32 +104,32 @@ void check_independent(const Ellipsoid& e, const Paraboloid& p, const Classifica
   for (std::size_t i = 0; i < 5; ++i) CHECK(c.f[i] == f[i]);
   for (std::size_t i = 0; i < 3; ++i) CHECK(c.s[i] == (*s)[i]);
   const int rho = rho_vs_one(f, *s);
-  CHECK(c.rho_vs_one == rho);
-  CHECK(c.small == (rho <= 0));
+  CHECK(c.verdict.rho_vs_one == rho);
+  CHECK(c.verdict.small == (rho <= 0));
 
   const RootCertificate cert = certify_roots(f);
   REQUIRE(cert.valid);
   if (cert.complete()) {
     ++stats().certified;
     const int nonreal = cert.count(-1);
-    CHECK(c.nonreal_roots == nonreal);
-    CHECK(c.real_roots == 4 - nonreal);
-    CHECK(c.negative_roots == cert.count(1, -1));
-    CHECK(c.positive_roots == cert.count(1, 1));
-    CHECK(c.sign_disc_f == ((nonreal / 2) % 2 ? -1 : 1));  // square-free: (-1)^(non-real pairs)
-    CHECK(c.sign_disc_ftilde == c.sign_disc_f);
+    CHECK(c.verdict.nonreal_roots == nonreal);
+    CHECK(c.verdict.real_roots == 4 - nonreal);
+    CHECK(c.verdict.negative_roots == cert.count(1, -1));
+    CHECK(c.verdict.positive_roots == cert.count(1, 1));
+    CHECK(c.verdict.sign_disc_f == ((nonreal / 2) % 2 ? -1 : 1));  // square-free: (-1)^(non-real pairs)
+    CHECK(c.verdict.sign_disc_ftilde == c.verdict.sign_disc_f);
     std::optional<bool> contact;
     const Position want = position_from_certificate(cert, rho, &contact);
-    CHECK(c.position == want);
-    CHECK(c.contact.has_value() == contact.has_value());
-    if (c.contact && contact) CHECK(*c.contact == *contact);
+    CHECK(c.verdict.position == want);
+    CHECK(c.verdict.meets().has_value() == contact.has_value());
+    if (c.verdict.meets() && contact) CHECK(*c.verdict.meets() == *contact);
     ++stats().position_by_certificate;
   } else {
     ++stats().partial;
     // What is certified still bounds the exact answer.
-    CHECK(c.nonreal_roots >= cert.count(-1));
-    CHECK(c.negative_roots >= cert.count(1, -1));
-    CHECK(c.positive_roots >= cert.count(1, 1));
+    CHECK(c.verdict.nonreal_roots >= cert.count(-1));
+    CHECK(c.verdict.negative_roots >= cert.count(1, -1));
+    CHECK(c.verdict.positive_roots >= cert.count(1, 1));
   }
   // Every isolated real disk meets the isolating interval of a simple real root of the right sign;
   // every rational multiple root of f lies in a cluster of at least that many disks.
@@ -187,52 +188,52 @@ Classification run_case(const Case& k, Rng& g) {
   // Adaptive == exact on everything the verdict holds (the Full evidence of both comes from the same
   // exact root code, so the exact path runs with Minimal evidence).
   const Classification x = relpos::classify_exact(e, p, relpos::Evidence::Minimal);
-  CHECK(x.stage != relpos::Stage::Interval);
-  CHECK(c.position == x.position);
-  CHECK(c.small == x.small);
-  CHECK(c.rho_vs_one == x.rho_vs_one);
-  CHECK(c.contact == x.contact);
-  CHECK(c.rule_id == x.rule_id);
-  CHECK(c.sign_disc_f == x.sign_disc_f);
-  CHECK(c.sign_disc_ftilde == x.sign_disc_ftilde);
-  CHECK(c.real_roots == x.real_roots);
-  CHECK(c.negative_roots == x.negative_roots);
-  CHECK(c.positive_roots == x.positive_roots);
-  CHECK(c.nonreal_roots == x.nonreal_roots);
+  CHECK(x.verdict.stage != relpos::Stage::Interval);
+  CHECK(c.verdict.position == x.verdict.position);
+  CHECK(c.verdict.small == x.verdict.small);
+  CHECK(c.verdict.rho_vs_one == x.verdict.rho_vs_one);
+  CHECK(c.verdict.meets() == x.verdict.meets());
+  CHECK(c.verdict.rule == x.verdict.rule);
+  CHECK(c.verdict.sign_disc_f == x.verdict.sign_disc_f);
+  CHECK(c.verdict.sign_disc_ftilde == x.verdict.sign_disc_ftilde);
+  CHECK(c.verdict.real_roots == x.verdict.real_roots);
+  CHECK(c.verdict.negative_roots == x.verdict.negative_roots);
+  CHECK(c.verdict.positive_roots == x.verdict.positive_roots);
+  CHECK(c.verdict.nonreal_roots == x.verdict.nonreal_roots);
   const Verdict v = relpos::decide_position(e, p);
-  CHECK(v.position == c.position);
-  CHECK(v.small == c.small);
+  CHECK(v.position == c.verdict.position);
+  CHECK(v.small == c.verdict.small);
   // A zero is never certified by a float filter, only by an exact stage (GMP roots or the exact
   // multiple-root witness on machine integers).
-  if (c.sign_disc_f == 0)
-    CHECK((c.stage == relpos::Stage::ExactRoots || c.stage == relpos::Stage::MultipleRootWitness));
-  ++stats().by_position[static_cast<int>(c.position)];
+  if (c.verdict.sign_disc_f == 0)
+    CHECK((c.verdict.stage == relpos::Stage::ExactRoots || c.verdict.stage == relpos::Stage::MultipleRootWitness));
+  ++stats().by_position[static_cast<int>(c.verdict.position)];
 
   check_independent(e, p, c);
 
   // Only E, TE and contact: true beyond smallness (math.md section 6).
-  if (!c.small) {
+  if (!c.verdict.small) {
     ++stats().not_small;
-    CHECK((c.position == Position::E || c.position == Position::TE || c.position == Position::Unclassified));
-    if (c.contact)
-      CHECK((*c.contact ? (c.position == Position::TE || c.nonreal_roots > 0) : c.position == Position::E));
+    CHECK((c.verdict.position == Position::E || c.verdict.position == Position::TE || c.verdict.position == Position::Unclassified));
+    if (c.verdict.meets())
+      CHECK((*c.verdict.meets() ? (c.verdict.position == Position::TE || c.verdict.nonreal_roots > 0) : c.verdict.position == Position::E));
   }
   if (k.truth_known) {
     ++stats().truth;
-    const bool claimable = c.small || k.truth == Position::E || k.truth == Position::TE;
-    CHECK(c.position == (claimable ? k.truth : Position::Unclassified));
-    if (c.contact) CHECK(*c.contact == truth_has_contact(k.truth));
+    const bool claimable = c.verdict.small || k.truth == Position::E || k.truth == Position::TE;
+    CHECK(c.verdict.position == (claimable ? k.truth : Position::Unclassified));
+    if (c.verdict.meets()) CHECK(*c.verdict.meets() == truth_has_contact(k.truth));
   }
   // The kernel test on rational multiple roots (small pairs; for TE at any size on the tangency).
   int tangent_kernel = 0;
   for (const auto& r : c.roots) {
     if (r.multiplicity_f < 2 || !r.exact) continue;
-    const bool kernel = relpos::kernel_has_common_point(e, p, *r.exact);
-    if (c.small) CHECK(kernel == r.tangency());
+    const bool kernel = relpos::oracle::kernel_has_common_point(e, p, *r.exact);
+    if (c.verdict.small) CHECK(kernel == r.tangency());
     if (kernel) ++tangent_kernel;
     ++stats().kernel;
   }
-  if (k.tangency && (c.small || k.truth == Position::TE)) CHECK(tangent_kernel >= 1);
+  if (k.tangency && (c.verdict.small || k.truth == Position::TE)) CHECK(tangent_kernel >= 1);
 
   // Invariance: a random congruence with positive rescaling and sign flips, a signed permutation.
   const Transformed t = transform(k.e, k.p, g, g.chance(30));
@@ -241,7 +242,7 @@ Classification run_case(const Case& k, Rng& g) {
   const Ellipsoid e2 = Ellipsoid::from_matrix(congruence(k.e, h));
   const Paraboloid p2 = Paraboloid::from_matrix(congruence(k.p, h));
   check_same_verdict(relpos::decide_position(e2, p2), v);
-  CHECK(relpos::classify(e2, p2, relpos::Evidence::Minimal).position == c.position);
+  CHECK(relpos::classify(e2, p2, relpos::Evidence::Minimal).verdict.position == c.verdict.position);
   stats().variants += 3;
   return c;
 }
@@ -512,7 +513,7 @@ void double_cases(Rng& g, int n) {
     // Power-of-two rescaling: still doubles, same answer.
     const Ellipsoid e4 = Ellipsoid::from_matrix(scaled(me, Q(1L << g.uniform(0, 40))));
     CHECK(e4.doubles().has_value());
-    CHECK(relpos::decide_position(e4, *p).position == c.position);
+    CHECK(relpos::decide_position(e4, *p).position == c.verdict.position);
     stats().variants += 4;
   }
 }

@@ -241,8 +241,8 @@ TEST_CASE("semi-static filter: entries that are subnormal as doubles are not tru
     if (CGAL::is_certain(got[i])) CHECK(static_cast<int>(CGAL::get_certain(got[i])) == q[i]);
   const Ellipsoid e = Ellipsoid::from_matrix(E);
   const Paraboloid p = Paraboloid::from_matrix(P);
-  CHECK(relpos::decide_position(e, p).position == relpos::classify_exact(e, p, relpos::Evidence::Minimal).position);
-  CHECK(relpos::classify_exact(e, p, relpos::Evidence::Minimal).position == relpos::Position::E);
+  CHECK(relpos::decide_position(e, p).position == relpos::classify_exact(e, p, relpos::Evidence::Minimal).verdict.position);
+  CHECK(relpos::classify_exact(e, p, relpos::Evidence::Minimal).verdict.position == relpos::Position::E);
 }
 
 TEST_CASE("translated semi-static filter: every certified sign is the exact sign of the moved body",

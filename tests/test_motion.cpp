@@ -12,6 +12,8 @@
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
 #include <relpos/motion.hpp>
+
+#include "motion/subresultant_position.hpp"
 #include <string>
 #include <vector>
 
@@ -151,7 +153,7 @@ void check_against_sampling(const Timeline& tl, const Ellipsoid& e0, const Rigid
   std::uniform_int_distribution<int> num(0, 1000000);
   for (int k = 0; k < n; ++k) ts.push_back(tl.t0 + span * Rational(num(rng), 1000000));
   for (const auto& t : ts) {
-    const Position want = relpos::classify(relpos::placed_ellipsoid(e0, m, t), p, relpos::Evidence::Minimal).position;
+    const Position want = relpos::classify(relpos::placed_ellipsoid(e0, m, t), p, relpos::Evidence::Minimal).verdict.position;
     INFO("t = " << relpos::to_string(t));
     CHECK(tl.position_at(t) == want);
   }
@@ -163,7 +165,7 @@ void check_against_sampling(const Timeline& tl, const Ellipsoid& e0, const Rigid
     CHECK(inst.how.find("inconsistent") == std::string::npos);
     if (!inst.time.is_rational()) continue;
     const auto c = relpos::classify(relpos::placed_ellipsoid(e0, m, *inst.time.exact()), p);
-    CHECK(inst.position == c.position);
+    CHECK(inst.position == c.verdict.position);
   }
 }
 
@@ -322,7 +324,7 @@ TEST_CASE("rational first contact: a sphere moving horizontally through the wall
   // The subresultant method agrees with classify at the rational instants where f is not square-free.
   for (const char* t : {"17/15", "2", "43/15"})
     CHECK(relpos::position_by_subresultants(e0, m, p, q(t)) ==
-          relpos::classify(relpos::placed_ellipsoid(e0, m, q(t)), p).position);
+          relpos::classify(relpos::placed_ellipsoid(e0, m, q(t)), p).verdict.position);
 }
 
 TEST_CASE("first contact at sqrt(2): a sphere rising along the axis of z = x^2 + y^2/4", "[motion][irrational]") {
@@ -415,7 +417,7 @@ TEST_CASE("C -> TI at one instant -> C: a sphere sliding through the inner tange
     // The same configuration at a rational instant (centre on the axis at t = 1 of x = t - 1).
     const RigidMotion lin = translation(poly({"-1", "1"}), poly({}), poly({"1/4"}));
     CHECK(relpos::position_by_subresultants(e0, lin, p, q("1")) == Position::TI);
-    CHECK(relpos::classify(relpos::placed_ellipsoid(e0, lin, q("1")), p).position == Position::TI);
+    CHECK(relpos::classify(relpos::placed_ellipsoid(e0, lin, q("1")), p).verdict.position == Position::TI);
   }
 }
 
@@ -443,7 +445,7 @@ TEST_CASE("axis of a circular paraboloid: Disc f = 0 for every t, contact still 
       const Rational t = Rational(k, 10);
       INFO("t = " << relpos::to_string(t));
       CHECK(relpos::position_by_subresultants(e0, m, p, t) ==
-            relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).position);
+            relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).verdict.position);
     }
   }
   SECTION("irrational instants") {
@@ -474,7 +476,7 @@ TEST_CASE("axis of a circular paraboloid: Disc f = 0 for every t, contact still 
     check_against_sampling(tl, e0, m, p, 40, 18);
     const RigidMotion lin = translation(poly({}), poly({}), poly({"-1", "1"}));  // z = 1/2 at t = 3/2
     CHECK(relpos::position_by_subresultants(e0, lin, p, q("3/2")) == Position::TI);
-    CHECK(relpos::classify(relpos::placed_ellipsoid(e0, lin, q("3/2")), p).position == Position::TI);
+    CHECK(relpos::classify(relpos::placed_ellipsoid(e0, lin, q("3/2")), p).verdict.position == Position::TI);
   }
 }
 
@@ -616,7 +618,7 @@ TEST_CASE("random paths: timelines agree with dense classification; both methods
       ++rational_instants;
       const Rational t = *inst.time.exact();
       const auto sub = relpos::position_by_subresultants(e0, m, p, t);
-      if (sub) CHECK(*sub == relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).position);
+      if (sub) CHECK(*sub == relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).verdict.position);
     }
   }
   CHECK(irrational_instants > 0);

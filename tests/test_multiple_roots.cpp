@@ -268,16 +268,16 @@ TEST_CASE("adaptive == exact on exactly degenerate double inputs; the witness st
       const Verdict v = relpos::decide_position(e, p);
       const Classification x = relpos::classify_exact(e, p, relpos::Evidence::Minimal);
       CHECK(v.position == c.expected);
-      CHECK(x.position == c.expected);
-      CHECK(v.sign_disc_f == x.sign_disc_f);
-      CHECK(v.sign_disc_ftilde == x.sign_disc_ftilde);
-      CHECK(v.real_roots == x.real_roots);
-      CHECK(v.negative_roots == x.negative_roots);
-      CHECK(v.positive_roots == x.positive_roots);
-      CHECK(v.nonreal_roots == x.nonreal_roots);
-      CHECK(v.rho_vs_one == x.rho_vs_one);
+      CHECK(x.verdict.position == c.expected);
+      CHECK(v.sign_disc_f == x.verdict.sign_disc_f);
+      CHECK(v.sign_disc_ftilde == x.verdict.sign_disc_ftilde);
+      CHECK(v.real_roots == x.verdict.real_roots);
+      CHECK(v.negative_roots == x.verdict.negative_roots);
+      CHECK(v.positive_roots == x.verdict.positive_roots);
+      CHECK(v.nonreal_roots == x.verdict.nonreal_roots);
+      CHECK(v.rho_vs_one == x.verdict.rho_vs_one);
       ++total;
-      if (x.sign_disc_f == 0) {
+      if (x.verdict.sign_disc_f == 0) {
         ++disc_zero;
         // A zero is never certified by a float filter, only by an exact stage.
         CHECK((v.stage == Stage::MultipleRootWitness || v.stage == Stage::ExactRoots));

@@ -347,7 +347,7 @@ TEST_CASE("Classification::roots gives the rational simple roots -a^2, -b^2 exac
   const auto e = relpos::Ellipsoid::sphere({Q(0), Q(0), Q(1)}, Q(1, 4));
   const auto p = relpos::Paraboloid::standard({Q(0), Q(0), Q(0)}, Q(1), Q(2));
   const relpos::Classification c = relpos::classify(e, p);
-  REQUIRE(c.position == relpos::Position::I);
+  REQUIRE(c.verdict.position == relpos::Position::I);
   int found = 0;
   for (const auto& r : c.roots)
     for (const Rational& x : {Q(-1), Q(-4)})

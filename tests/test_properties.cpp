@@ -85,9 +85,9 @@ Oracle oracle(const Config& k) {
 
 /// Checks what the oracle knows, plus the side of the centre.
 void check_oracle(const Classification& c, const Oracle& o) {
-  if (o.centre_outside) CHECK((c.position != Position::I && c.position != Position::TI));
-  if (o.centre_inside) CHECK((c.position != Position::E && c.position != Position::TE));
-  if (c.contact && o.known) CHECK(*c.contact == truth_has_contact(o.truth));
+  if (o.centre_outside) CHECK((c.verdict.position != Position::I && c.verdict.position != Position::TI));
+  if (o.centre_inside) CHECK((c.verdict.position != Position::E && c.verdict.position != Position::TE));
+  if (c.verdict.meets() && o.known) CHECK(*c.verdict.meets() == truth_has_contact(o.truth));
 }
 
 }  // namespace
@@ -119,7 +119,7 @@ TEST_CASE("random small configurations: exact algebra, classify == classify_exac
     check_oracle(c, o);
     ++total;
     if (o.known) ++known;
-    ++seen[static_cast<int>(c.position)];
+    ++seen[static_cast<int>(c.verdict.position)];
   }
   // The oracles fix a good share of the cases, and every answer occurs.
   CHECK(known * 2 > total);
@@ -151,15 +151,15 @@ TEST_CASE("random general ellipsoids: the answer is invariant under congruences 
       const Ellipsoid e2 = Ellipsoid::from_matrix(t.e);
       const Paraboloid p2 = Paraboloid::from_matrix(t.p);
       const Classification c1 = relpos::classify(e2, p2);
-      CHECK(c1.position == c0.position);
-      CHECK(c1.small == c0.small);
-      CHECK(c1.rho_vs_one == c0.rho_vs_one);
-      CHECK(c1.sign_disc_f == c0.sign_disc_f);
-      CHECK(c1.sign_disc_ftilde == c0.sign_disc_ftilde);
+      CHECK(c1.verdict.position == c0.verdict.position);
+      CHECK(c1.verdict.small == c0.verdict.small);
+      CHECK(c1.verdict.rho_vs_one == c0.verdict.rho_vs_one);
+      CHECK(c1.verdict.sign_disc_f == c0.verdict.sign_disc_f);
+      CHECK(c1.verdict.sign_disc_ftilde == c0.verdict.sign_disc_ftilde);
       CHECK(c1.degree_ftilde == c0.degree_ftilde);
-      CHECK(c1.negative_roots == c0.negative_roots);
-      CHECK(c1.positive_roots == c0.positive_roots);
-      CHECK(c1.nonreal_roots == c0.nonreal_roots);
+      CHECK(c1.verdict.negative_roots == c0.verdict.negative_roots);
+      CHECK(c1.verdict.positive_roots == c0.verdict.positive_roots);
+      CHECK(c1.verdict.nonreal_roots == c0.verdict.nonreal_roots);
       for (std::size_t k = 0; k < 5; ++k) CHECK(c1.f[k] == transformed_f(c0.f, t)[k]);
       for (std::size_t k = 0; k < 3; ++k) CHECK(c1.s[k] == transformed_s(c0.s, t)[k]);
       CHECK(c1.rho.has_value() == c0.rho.has_value());
@@ -236,13 +236,13 @@ TEST_CASE("-b^2 double root in the plane y = 0, random: C, E or I without tangen
     const Classification c = check_all(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()), x);
     check_oracle(c, o);
     if (o.known) ++certified;
-    if (c.position == Position::C && c.sign_disc_f == 0) ++crossing_with_zero_disc;
+    if (c.verdict.position == Position::C && c.verdict.sign_disc_f == 0) ++crossing_with_zero_disc;
     // A transformed copy: same answer, same algebra up to the known factors.
     const Transformed t = transform(k.e(), k.p(), g);
     Expect xt = expect_from(k, t);
     xt.truth_known = o.known;
     const Classification ct = check_all(Ellipsoid::from_matrix(t.e), Paraboloid::from_matrix(t.p), xt);
-    CHECK(ct.position == c.position);
+    CHECK(ct.verdict.position == c.verdict.position);
   }
   CHECK(certified > 30);
   CHECK(crossing_with_zero_disc > 5);

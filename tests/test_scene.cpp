@@ -23,15 +23,9 @@ using relpos::Evidence;
 using relpos::Paraboloid;
 using relpos::Rule;
 using relpos::Scene;
-using relpos::SceneStage;
+using relpos::Stage;
 using relpos::SceneVerdict;
 
-namespace Catch {
-template <>
-struct StringMaker<relpos::SceneStage> {
-  static std::string convert(relpos::SceneStage s) { return relpos::to_string(s); }
-};
-}  // namespace Catch
 
 namespace {
 
@@ -47,13 +41,13 @@ struct Body {
 void check_against_exact(const Scene& scene, const Body& b, const SceneVerdict& v) {
   INFO(b.name);
   const Classification x = relpos::classify_exact(b.e, scene.paraboloid(), Evidence::Minimal);
-  CHECK(v.position == x.position);
-  CHECK(v.rule == x.rule_id);
-  CHECK(static_cast<int>(v.contact) == (x.contact ? (*x.contact ? 1 : 0) : -1));
+  CHECK(v.position == x.verdict.position);
+  CHECK(v.rule == x.verdict.rule);
+  CHECK(static_cast<int>(v.contact) == (x.verdict.meets() ? (*x.verdict.meets() ? 1 : 0) : -1));
   if (b.known) CHECK(v.position == b.expected);
   // An early-out certifies "no common point": never on a body that touches or crosses.
-  if (v.stage == SceneStage::InsideCertificate || v.stage == SceneStage::OutsideCertificate)
-    CHECK((x.contact.has_value() ? !*x.contact : x.rule_id == Rule::NotSmallUnknown));
+  if (v.stage == Stage::InsideCertificate || v.stage == Stage::OutsideCertificate)
+    CHECK((x.verdict.meets().has_value() ? !*x.verdict.meets() : x.verdict.rule == Rule::NotSmallUnknown));
 }
 
 Ellipsoid sphere(const Vector3& c, const Rational& r) { return Ellipsoid::sphere(c, r); }
@@ -276,37 +270,37 @@ TEST_CASE("scene: the early-outs fire on bodies well inside or outside, small or
     const Paraboloid* p;
     Ellipsoid e;
     Position expected;
-    SceneStage stage;
+    Stage stage;
   };
   const Quaternion q{Q(1), Q(1), Q(1), Q(1)};
   const std::vector<Case> cases = {
-      {"sphere deep inside", &p, sphere(V(Q(0), Q(0), Q(2)), Q(1, 8)), Position::I, SceneStage::InsideCertificate},
+      {"sphere deep inside", &p, sphere(V(Q(0), Q(0), Q(2)), Q(1, 8)), Position::I, Stage::InsideCertificate},
       {"sphere off-axis inside", &p, sphere(V(Q(1, 2), Q(1, 2), Q(1)), Q(1, 8)), Position::I,
-       SceneStage::InsideCertificate},
+       Stage::InsideCertificate},
       {"rotated ellipsoid inside", &p, axes(V(Q(0), Q(1, 4), Q(2)), Q(1, 4), Q(1, 8), Q(1, 16), q), Position::I,
-       SceneStage::InsideCertificate},
+       Stage::InsideCertificate},
       {"non-dyadic sphere inside", &p, sphere(V(Q(1, 3), Q(1, 7), Q(5, 3)), Q(1, 10)), Position::I,
-       SceneStage::InsideCertificate},
-      {"sphere below", &p, sphere(V(Q(0), Q(0), Q(-1)), Q(1, 4)), Position::E, SceneStage::OutsideCertificate},
-      {"sphere beside the rim", &p, sphere(V(Q(3), Q(0), Q(1)), Q(1, 2)), Position::E, SceneStage::OutsideCertificate},
+       Stage::InsideCertificate},
+      {"sphere below", &p, sphere(V(Q(0), Q(0), Q(-1)), Q(1, 4)), Position::E, Stage::OutsideCertificate},
+      {"sphere beside the rim", &p, sphere(V(Q(3), Q(0), Q(1)), Q(1, 2)), Position::E, Stage::OutsideCertificate},
       {"rotated ellipsoid outside", &p, axes(V(Q(2), Q(0), Q(1)), Q(1, 4), Q(1, 8), Q(1, 16), q), Position::E,
-       SceneStage::OutsideCertificate},
+       Stage::OutsideCertificate},
       {"huge sphere far below (not small)", &p, sphere(V(Q(0), Q(0), Q(-100)), Q(10)), Position::E,
-       SceneStage::OutsideCertificate},
+       Stage::OutsideCertificate},
       // mixed.jsonl U-flat-ellipsoid-inside: inside but rho > 1.
       {"flat ellipsoid inside, not small", &p, axes(V(Q(0), Q(0), Q(3)), Q(1), Q(2), Q(1, 10)), Position::Unclassified,
-       SceneStage::InsideCertificate},
+       Stage::InsideCertificate},
       {"big sphere inside, not small", &p, sphere(V(Q(0), Q(0), Q(8)), Q(2)), Position::Unclassified,
-       SceneStage::InsideCertificate},
+       Stage::InsideCertificate},
       {"2^100 scale, inside", &p_huge, sphere(V(Q(0), Q(0), 2 * big * big), big * big / 16), Position::I,
-       SceneStage::InsideCertificate},
+       Stage::InsideCertificate},
       {"2^100 scale, outside", &p_huge, sphere(V(Q(0), Q(0), -2 * big * big), big * big / 16), Position::E,
-       SceneStage::OutsideCertificate},
+       Stage::OutsideCertificate},
       {"2^-100 scale, inside", &p_tiny, sphere(V(Q(0), Q(0), 2 * tiny * tiny), tiny * tiny / 16), Position::I,
-       SceneStage::InsideCertificate},
+       Stage::InsideCertificate},
       {"2^-100 scale, ellipsoid inside", &p_tiny,
        axes(V(Q(0), Q(0), 2 * tiny * tiny), tiny * tiny / 16, tiny * tiny / 32, tiny * tiny / 64, q), Position::I,
-       SceneStage::InsideCertificate},
+       Stage::InsideCertificate},
   };
   for (const Case& c : cases) {
     INFO(c.name);
@@ -365,7 +359,7 @@ TEST_CASE("scene: a few thousand mixed bodies equal classify_exact; 1, 2, 3 thre
     CHECK(sp == es.size());
     CHECK(ss == es.size());
     // The early-outs did something on these scenes.
-    CHECK(one.counts.count(SceneStage::InsideCertificate) + one.counts.count(SceneStage::OutsideCertificate) > 0);
+    CHECK(one.counts.count(Stage::InsideCertificate) + one.counts.count(Stage::OutsideCertificate) > 0);
     for (unsigned threads : {2u, 3u}) {
       o.threads = threads;
       const relpos::SceneResult many = scene.classify(es, o);
@@ -383,8 +377,8 @@ TEST_CASE("scene: a few thousand mixed bodies equal classify_exact; 1, 2, 3 thre
     o.threads = 2;
     const relpos::SceneResult plain = scene.classify(es, o);
     CHECK(plain.counts.positions == one.counts.positions);
-    CHECK(plain.counts.count(SceneStage::InsideCertificate) == 0);
-    CHECK(plain.counts.count(SceneStage::OutsideCertificate) == 0);
+    CHECK(plain.counts.count(Stage::InsideCertificate) == 0);
+    CHECK(plain.counts.count(Stage::OutsideCertificate) == 0);
   }
 }
 
@@ -493,7 +487,7 @@ TEST_CASE("scene: transformed configurations (general path, non-dyadic inputs) k
       const SceneVerdict v = scene.classify(b.e);
       check_against_exact(scene, b, v);
       ++total;
-      fired += v.stage == SceneStage::InsideCertificate || v.stage == SceneStage::OutsideCertificate;
+      fired += v.stage == Stage::InsideCertificate || v.stage == Stage::OutsideCertificate;
     }
   }
   INFO(fired << " of " << total << " settled by an early-out");
@@ -519,7 +513,7 @@ TEST_CASE("scene: empty scenes, more threads than chunks, progress counter") {
   CHECK(r.verdicts[0].position == Position::I);
   CHECK(r.verdicts[1].position == Position::E);
   CHECK(r.verdicts[2].position == Position::TI);
-  CHECK((r.verdicts[2].stage == SceneStage::MultipleRootWitness || r.verdicts[2].stage == SceneStage::ExactRoots));
+  CHECK((r.verdicts[2].stage == Stage::MultipleRootWitness || r.verdicts[2].stage == Stage::ExactRoots));
   // Called from inside a CGAL interval block (rounding upward): the same answers, and the caller's
   // rounding mode is restored.
   {

@@ -10,6 +10,7 @@
 // return identical positions on every input.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -32,8 +33,11 @@ enum class Position {
 };
 std::string to_string(Position p);
 
-/// Which arithmetic settled the answer.
-enum class Stage {
+/// What settled the answer, in the order the stages run: the scene's certified early-outs (scene.hpp)
+/// first, then the classifier's cascade (decide_position). One enum for pairs and scenes.
+enum class Stage : unsigned char {
+  InsideCertificate,    ///< scene early-out: P < 0 on the solid ellipsoid (I, or unclassified when rho > 1)
+  OutsideCertificate,   ///< scene early-out: P > 0 on the solid ellipsoid (E)
   StaticDouble,         ///< double arithmetic with static error bounds (inputs that are exact doubles)
   SemiStaticDouble,     ///< double arithmetic with error bounds from the operands' magnitudes
   MultipleRootWitness,  ///< Disc(f) = 0 certified by exact rational multiple roots, machine integers
@@ -41,8 +45,15 @@ enum class Stage {
   ExactSigns,           ///< exact integer signs of the same polynomials
   ExactRoots,           ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
 };
-/// Number of stages (tables indexed by Stage use this, so a new stage cannot be forgotten).
-inline constexpr std::size_t kStageCount = static_cast<std::size_t>(Stage::ExactRoots) + 1;
+/// Every stage, in order (tables indexed by Stage take their size from here).
+inline constexpr std::array kAllStages{Stage::InsideCertificate,   Stage::OutsideCertificate, Stage::StaticDouble,
+                                       Stage::SemiStaticDouble,    Stage::MultipleRootWitness, Stage::Interval,
+                                       Stage::ExactSigns,          Stage::ExactRoots};
+/// The stages of decide_position / classify, in order (a pair classified alone never ends in an early-out).
+inline constexpr std::array kClassifierStages{Stage::StaticDouble, Stage::SemiStaticDouble, Stage::MultipleRootWitness,
+                                              Stage::Interval,     Stage::ExactSigns,       Stage::ExactRoots};
+/// "inside-certificate", "outside-certificate", "static-double", "semi-static-double",
+/// "multiple-root-witness", "interval", "exact-signs", "exact-roots".
 std::string to_string(Stage s);
 
 /// The rule that decided (describe() gives the sentence).
@@ -75,13 +86,18 @@ struct Verdict {
   Rule rule = Rule::None;
   bool small = false;
   signed char rho_vs_one = 0;
-  signed char contact = -1;  ///< 1 yes, 0 no, -1 not decidable
+  signed char contact = -1;  ///< 1 yes, 0 no, -1 not decidable (not small)
   signed char sign_disc_f = 0, sign_disc_ftilde = 0;
   signed char real_roots = 0, negative_roots = 0, positive_roots = 0, nonreal_roots = 0;
   signed char tangent_negative = 0, tangent_positive = 0, nonreal_multiple = 0;
   /// Whether f has roots in (lambda_s, 0) (math.md section 8): 1 yes, 0 no, -1 not computed (only
   /// pairs that are not small with four real negative roots need it).
   signed char roots_above_lambda_s = -1;
+  /// contact as "do the surfaces meet?": empty when not decidable.
+  std::optional<bool> meets() const {
+    if (contact < 0) return std::nullopt;
+    return contact == 1;
+  }
 };
 
 /// Adaptive exact verdict (static double filter, intervals, exact integers, exact roots).
@@ -96,23 +112,12 @@ Verdict decide_from_root_facts(const RootFacts& facts, int rho_vs_one);
 /// coefficients of f and s, deg f~, the multiple roots and rho itself.
 enum class Evidence { Minimal, Full };
 
+/// The verdict with its evidence: what classify() returns and the reports render.
 struct Classification {
-  Position position = Position::Unclassified;
-  bool small = false;           ///< rho <= 1 (the paper's smallness hypothesis holds)
-  int rho_vs_one = 0;           ///< sign of rho - 1
-  std::optional<bool> contact;  ///< do the surfaces meet? empty when not decidable (not small)
-  Rule rule_id = Rule::None;
-  std::string rule;     ///< the rule that decided, in one sentence
+  Verdict verdict;      ///< position, stage, rule, smallness, contact and the root counts (the one copy)
   std::string finding;  ///< set when the root pattern is outside the table
-  Stage stage = Stage::Interval;
-
-  // Root evidence (always filled).
-  int sign_disc_f = 0;       ///< sign of Disc(f)
-  int sign_disc_ftilde = 0;  ///< sign of Disc(f~); equals sign_disc_f when f is square-free
-  int real_roots = 0;        ///< distinct real roots of f
-  int negative_roots = 0;    ///< distinct negative roots
-  int positive_roots = 0;    ///< distinct positive roots
-  int nonreal_roots = 0;     ///< non-real roots, with multiplicity
+  /// The rule that decided, in one sentence (describe(verdict.rule)).
+  std::string rule_text() const { return describe(verdict.rule); }
 
   // Full evidence (Evidence::Full).
   bool has_full_evidence = false;
@@ -131,9 +136,5 @@ Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence eviden
 
 /// Exact classification without the filter (reference path for tests and benchmarks).
 Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence = Evidence::Full);
-
-/// Independent tangency check (math.md section 3, for tests): lambda0 a real root of f; true iff
-/// the kernel of lambda0 P + E contains a real X != 0 with X^T E X = 0. lambda0 must be rational.
-bool kernel_has_common_point(const Ellipsoid& e, const Paraboloid& p, const Rational& lambda0);
 
 }  // namespace relpos

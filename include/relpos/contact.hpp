@@ -119,7 +119,7 @@ class ExteriorTracker {
   /// body: the moving body in any placement (its shape; smallness is computed here, exactly, once).
   ExteriorTracker(const Paraboloid& p, const Ellipsoid& body);
 
-  struct Frame {
+  struct FrameVerdict {
     Position position = Position::Unclassified;
     Rule rule = Rule::None;
     signed char contact = -1;  ///< as Verdict::contact
@@ -127,14 +127,14 @@ class ExteriorTracker {
     DecidedBy by = DecidedBy::FullClassifier;
   };
   /// The certified position of this frame (decide_position(placed, p)).
-  Frame update(const Ellipsoid& placed);
+  FrameVerdict update(const Ellipsoid& placed);
 
   /// The reference body moved by `translation` (its centre moves by it; exact doubles): the same
   /// answer as update(body.translated(translation)), without constructing the moved ellipsoid. The
   /// moved entries are evaluated with their error carried along (semi_static_filter.hpp) and rho is
   /// the reference's, exactly (a translate has the same M and det E). Only when a sign is uncertain
   /// or Disc(f) = 0 is the moved ellipsoid built exactly (Ellipsoid::translated) and classified.
-  Frame update(const std::array<double, 3>& translation);
+  FrameVerdict update(const std::array<double, 3>& translation);
 
   /// rho compared with 1 for the reference body, exactly.
   int rho_vs_one() const { return rho_vs_one_; }
@@ -147,7 +147,7 @@ class ExteriorTracker {
 
  private:
   std::optional<int> frame_rho(const Ellipsoid& placed);
-  Frame finish(const Verdict& v, DecidedBy by);
+  FrameVerdict finish(const Verdict& v, DecidedBy by);
   Paraboloid p_;
   Ellipsoid body_;  ///< the reference placement (update(translation) moves it)
   Matrix4 m_ref_;   ///< reference 3x3 block (in a 4x4 for convenience)

@@ -193,10 +193,4 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
 Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
                   const Rational& t1);
 
-/// For tests: the position at a rational time decided by the method used at irrational instants
-/// (subresultants of f and df/dl, math.md "Motion") instead of classify(). nullopt when f(., t) is
-/// square-free there (that method then takes its root counts from a neighbouring interval).
-std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p,
-                                                  const Rational& t);
-
 }  // namespace relpos

@@ -41,40 +41,24 @@ namespace relpos {
 // Scene classification
 // ------------------------------------------------------------------------------------------------
 
-/// What settled a body.
-enum class SceneStage : unsigned char {
-  InsideCertificate,    ///< early-out: P < 0 on the ellipsoid (I, or unclassified when rho > 1)
-  OutsideCertificate,   ///< early-out: P > 0 on the ellipsoid (E)
-  StaticDouble,         ///< decide_position, stage 1
-  SemiStaticDouble,     ///< decide_position, stage 1'
-  MultipleRootWitness,  ///< decide_position, stage 1b
-  Interval,             ///< decide_position, stage 2
-  ExactSigns,           ///< decide_position, stage 3
-  ExactRoots,           ///< decide_position, stage 4
-};
-inline constexpr std::size_t kSceneStageCount = 8;
 inline constexpr std::size_t kPositionCount = 6;  ///< I, TI, C, TE, E, Unclassified
-/// "inside-certificate", "outside-certificate", "static-double", "semi-static-double",
-/// "multiple-root-witness", "interval",
-/// "exact-signs", "exact-roots".
-std::string to_string(SceneStage s);
 
 /// The answer for one body: position, rule and contact are exactly decide_position()'s.
 struct SceneVerdict {
   Position position = Position::Unclassified;
   Rule rule = Rule::None;
   signed char contact = -1;  ///< 1 yes, 0 no, -1 not decidable (as Verdict::contact)
-  SceneStage stage = SceneStage::StaticDouble;
+  Stage stage = Stage::StaticDouble;  ///< an early-out or the classifier stage that decided
 };
 
 /// The scene view of a core verdict.
 SceneVerdict scene_verdict(const Verdict& v);
 
-/// Counts per position (index = static_cast<int>(Position)) and per stage (index = SceneStage).
+/// Counts per position (index = static_cast<int>(Position)) and per stage (index = Stage).
 struct SceneCounts {
   std::size_t bodies = 0;
   std::array<std::size_t, kPositionCount> positions{};
-  std::array<std::size_t, kSceneStageCount> stages{};
+  std::array<std::size_t, kAllStages.size()> stages{};
   void add(const SceneVerdict& v) {
     ++bodies;
     ++positions[static_cast<std::size_t>(v.position)];
@@ -83,10 +67,10 @@ struct SceneCounts {
   void merge(const SceneCounts& o) {
     bodies += o.bodies;
     for (std::size_t i = 0; i < kPositionCount; ++i) positions[i] += o.positions[i];
-    for (std::size_t i = 0; i < kSceneStageCount; ++i) stages[i] += o.stages[i];
+    for (std::size_t i = 0; i < stages.size(); ++i) stages[i] += o.stages[i];
   }
   std::size_t count(Position p) const { return positions[static_cast<std::size_t>(p)]; }
-  std::size_t count(SceneStage s) const { return stages[static_cast<std::size_t>(s)]; }
+  std::size_t count(Stage s) const { return stages[static_cast<std::size_t>(s)]; }
 };
 
 struct SceneOptions {
@@ -129,11 +113,11 @@ class Scene {
     return classify(bodies.data(), bodies.size(), options);
   }
 
-  struct Frame;  // the precomputed paraboloid data (scene.cpp)
+  struct PreparedParaboloid;  // the precomputed paraboloid data (scene.cpp)
 
  private:
   Paraboloid p_;
-  std::shared_ptr<const Frame> frame_;
+  std::shared_ptr<const PreparedParaboloid> prepared_;
 };
 
 /// Convenience: Scene(p).classify(bodies, options).

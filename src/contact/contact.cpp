@@ -291,7 +291,7 @@ ExteriorTracker::ExteriorTracker(const Paraboloid& p, const Ellipsoid& body) : p
   // Smallness of the body, exactly, once (translation invariant: it depends on M, A, det P and
   // det E = -det M * k only).
   const Classification c = classify_exact(body, p, Evidence::Full);
-  rho_vs_one_ = c.rho_vs_one;
+  rho_vs_one_ = c.verdict.rho_vs_one;
   // The shortcut for later frames: rho is proportional to -det E when M is fixed (s and det P are
   // fixed), so a frame with the same M whose -det E is within a factor 1 +- kSlack of the
   // reference's is on the same side of 1 as long as rho_ref (1 +- kSlack) is. Checked exactly.
@@ -331,7 +331,7 @@ std::optional<int> ExteriorTracker::frame_rho(const Ellipsoid& placed) {
   return std::nullopt;
 }
 
-ExteriorTracker::Frame ExteriorTracker::update(const Ellipsoid& placed) {
+ExteriorTracker::FrameVerdict ExteriorTracker::update(const Ellipsoid& placed) {
   ++counts_.frames;
   std::optional<Verdict> v;
   DecidedBy by = DecidedBy::FullClassifier;
@@ -360,9 +360,9 @@ ExteriorTracker::Frame ExteriorTracker::update(const Ellipsoid& placed) {
   return finish(*v, by);
 }
 
-ExteriorTracker::Frame ExteriorTracker::finish(const Verdict& v, DecidedBy by) {
+ExteriorTracker::FrameVerdict ExteriorTracker::finish(const Verdict& v, DecidedBy by) {
   ++(by == DecidedBy::DiscriminantFilter ? counts_.by_filter : counts_.by_fallback);
-  Frame out;
+  FrameVerdict out;
   out.position = v.position;
   out.rule = v.rule;
   out.contact = v.contact;
@@ -372,7 +372,7 @@ ExteriorTracker::Frame ExteriorTracker::finish(const Verdict& v, DecidedBy by) {
   return out;
 }
 
-ExteriorTracker::Frame ExteriorTracker::update(const std::array<double, 3>& translation) {
+ExteriorTracker::FrameVerdict ExteriorTracker::update(const std::array<double, 3>& translation) {
   for (double x : translation)
     if (!std::isfinite(x)) throw InputError("tracker translation: not finite");
   if (rounding_to_nearest()) {

@@ -427,6 +427,10 @@ namespace {
 
 std::string stage_meaning(Stage s) {
   switch (s) {
+    case Stage::InsideCertificate:
+      return "certified inside: P < 0 on the solid ellipsoid (scene early-out)";
+    case Stage::OutsideCertificate:
+      return "certified outside: P > 0 on the solid ellipsoid (scene early-out)";
     case Stage::StaticDouble:
       return "all signs certified in double arithmetic with static error bounds";
     case Stage::SemiStaticDouble:
@@ -509,24 +513,24 @@ std::string polynomial_to_text(const Rational* c, int size, const std::string& v
 
 Json classification_to_json(const Classification& c, const RenderOptions& options) {
   Json j;
-  j["position"] = to_string(c.position);
-  j["small"] = c.small;
-  j["contact"] = c.contact ? Json(*c.contact) : Json(nullptr);
-  j["rho_vs_one"] = rho_vs_one_text(c.rho_vs_one);
+  j["position"] = to_string(c.verdict.position);
+  j["small"] = c.verdict.small;
+  j["contact"] = c.verdict.meets() ? Json(*c.verdict.meets()) : Json(nullptr);
+  j["rho_vs_one"] = rho_vs_one_text(c.verdict.rho_vs_one);
   j["rho"] = c.rho ? Json(to_string(*c.rho)) : Json(nullptr);
   // From the exact rho when there is one: nearest double (CGAL's to_double of a Gmpq truncates).
   const double rho_approx = c.rho ? std::strtod(to_decimal(*c.rho, 40).c_str(), nullptr) : c.rho_approx;
   j["rho_approx"] = c.has_full_evidence && std::isfinite(rho_approx) ? Json(rho_approx) : Json(nullptr);
-  j["rule"] = c.rule;
+  j["rule"] = c.rule_text();
   if (!c.finding.empty()) j["finding"] = c.finding;
-  j["stage"] = to_string(c.stage);
-  j["disc_sign"] = c.sign_disc_f;
-  j["disc_ftilde_sign"] = c.sign_disc_ftilde;
+  j["stage"] = to_string(c.verdict.stage);
+  j["disc_sign"] = int(c.verdict.sign_disc_f);
+  j["disc_ftilde_sign"] = int(c.verdict.sign_disc_ftilde);
   if (c.has_full_evidence) j["degree_ftilde"] = c.degree_ftilde;
-  j["roots"] = Json{{"real", c.real_roots},
-                    {"negative", c.negative_roots},
-                    {"positive", c.positive_roots},
-                    {"nonreal", c.nonreal_roots}};
+  j["roots"] = Json{{"real", int(c.verdict.real_roots)},
+                    {"negative", int(c.verdict.negative_roots)},
+                    {"positive", int(c.verdict.positive_roots)},
+                    {"nonreal", int(c.verdict.nonreal_roots)}};
   if (!c.has_full_evidence) return j;
   Json f = Json::array(), s = Json::array();
   for (const auto& q : c.f) f.push_back(to_string(q));
@@ -588,13 +592,13 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
     if (label.size() < 10) t += std::string(10 - label.size(), ' ');
     t += text + "\n";
   };
-  line("position:", to_string(c.position) + " - " + position_meaning(c.position));
-  line("rule:", c.rule);
+  line("position:", to_string(c.verdict.position) + " - " + position_meaning(c.verdict.position));
+  line("rule:", c.rule_text());
   if (!c.finding.empty()) line("finding:", c.finding);
 
   std::string small =
-      c.small ? "yes (the paper's smallness hypothesis holds): " : "no (the smallness hypothesis fails): ";
-  const std::string compare = std::string("rho ") + (c.rho_vs_one < 0 ? "< 1" : c.rho_vs_one == 0 ? "= 1" : "> 1");
+      c.verdict.small ? "yes (the paper's smallness hypothesis holds): " : "no (the smallness hypothesis fails): ";
+  const std::string compare = std::string("rho ") + (c.verdict.rho_vs_one < 0 ? "< 1" : c.verdict.rho_vs_one == 0 ? "= 1" : "> 1");
   if (c.rho) {
     const std::string exact = to_string(*c.rho), approx = to_decimal(*c.rho, options.digits);
     small += "rho = " + exact + (approx == exact ? "" : " ~ " + approx);
@@ -604,8 +608,8 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
     small += compare;
   }
   line("small:", small);
-  line("contact:", c.contact ? (*c.contact ? "yes" : "no") : "undecided (not small)");
-  line("stage:", to_string(c.stage) + " (" + stage_meaning(c.stage) + ")");
+  line("contact:", c.verdict.meets() ? (*c.verdict.meets() ? "yes" : "no") : "undecided (not small)");
+  line("stage:", to_string(c.verdict.stage) + " (" + stage_meaning(c.verdict.stage) + ")");
   if (c.has_full_evidence) line("proof:", certificate_text(c.certificate));
 
   t += "\n";
@@ -614,12 +618,12 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
     t += "s(l) = det(l A + M) = " + polynomial_to_text(c.s.data(), 3) + "\n";
   }
   auto sign_text = [](int s) { return s < 0 ? std::string("< 0") : s == 0 ? "= 0" : "> 0"; };
-  t += "Disc(f) " + sign_text(c.sign_disc_f) + ", Disc(f~) " + sign_text(c.sign_disc_ftilde);
+  t += "Disc(f) " + sign_text(c.verdict.sign_disc_f) + ", Disc(f~) " + sign_text(c.verdict.sign_disc_ftilde);
   if (c.has_full_evidence) t += ", deg f~ = " + std::to_string(c.degree_ftilde);
   t += "   (f~ = f / gcd(f, s))\n";
 
-  t += "real roots of f: " + count_text(c.real_roots, "distinct root", "distinct roots") + " (" +
-       std::to_string(c.negative_roots) + " negative, " + std::to_string(c.positive_roots) + " positive)";
+  t += "real roots of f: " + count_text(c.verdict.real_roots, "distinct root", "distinct roots") + " (" +
+       std::to_string(c.verdict.negative_roots) + " negative, " + std::to_string(c.verdict.positive_roots) + " positive)";
   if (c.has_full_evidence && !c.roots.empty()) {
     t += ", certified to " + std::to_string(options.digits) + " significant digits:\n";
     const auto approx = root_decimals(c, options.digits, /*only_multiple=*/false);
@@ -644,7 +648,7 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
   } else {
     t += "\n";
   }
-  t += "non-real roots of f: " + std::to_string(c.nonreal_roots) + " (with multiplicity)\n";
+  t += "non-real roots of f: " + std::to_string(c.verdict.nonreal_roots) + " (with multiplicity)\n";
   return t;
 }
 

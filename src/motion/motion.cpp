@@ -1,4 +1,5 @@
 #include "relpos/motion.hpp"
+#include "motion/subresultant_position.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Interval_nt.h>
@@ -413,11 +414,11 @@ std::optional<InstantFacts> facts_at(const MovingPencil& mp, const AK& ak, const
   if (!disc_zero_here && at(mp.disc) != 0) {
     out.j = 0;
     if (!neighbour) return std::nullopt;
-    x.real = neighbour->real_roots;
-    x.negative = neighbour->negative_roots;
-    x.positive = neighbour->positive_roots;
-    x.nonreal = neighbour->nonreal_roots;
-    x.sign_disc_f = x.sign_disc_ftilde = neighbour->sign_disc_f;
+    x.real = neighbour->verdict.real_roots;
+    x.negative = neighbour->verdict.negative_roots;
+    x.positive = neighbour->verdict.positive_roots;
+    x.nonreal = neighbour->verdict.nonreal_roots;
+    x.sign_disc_f = x.sign_disc_ftilde = neighbour->verdict.sign_disc_f;
     out.how = "f is square-free at t*: root counts of the neighbouring interval (no root merges at t*)";
     return out;
   }
@@ -559,7 +560,7 @@ Classification classify_at(const Ellipsoid& e0, const RigidMotion& m, const Para
 }
 
 std::string classify_how(const Classification& c) {
-  return "classified exactly at the rational instant (" + to_string(c.stage) + ")";
+  return "classified exactly at the rational instant (" + to_string(c.verdict.stage) + ")";
 }
 
 }  // namespace
@@ -579,11 +580,11 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
   validate_motion(motion, t0, t1);
   FirstContact out;
   const Classification c0 = classify_at(e0, motion, p, t0);
-  out.start_position = c0.position;
-  if (c0.position != Position::E) {
+  out.start_position = c0.verdict.position;
+  if (c0.verdict.position != Position::E) {
     out.kind = FirstContact::Kind::NotExteriorAtStart;
     out.time = AlgebraicReal::rational(t0);
-    out.position = c0.position;
+    out.position = c0.verdict.position;
     out.how = classify_how(c0);
     return out;
   }
@@ -601,7 +602,7 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
     std::string how;
     if (z.exact) {
       const Classification c = classify_at(e0, motion, p, *z.exact);
-      pos = c.position;
+      pos = c.verdict.position;
       how = classify_how(c);
     } else {
       auto facts = facts_at(mp, ak, z, nullptr);
@@ -647,8 +648,8 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
     MotionInterval iv;
     iv.sample = rational_between(cands[i].t, cands[i + 1].t);
     interval_class.push_back(classify_at(e0, motion, p, iv.sample));
-    iv.position = interval_class.back().position;
-    iv.small = interval_class.back().small;
+    iv.position = interval_class.back().verdict.position;
+    iv.small = interval_class.back().verdict.small;
     out.intervals.push_back(std::move(iv));
   }
 
@@ -657,8 +658,8 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
     MotionInstant inst{instant_of(z), Position::Unclassified, false, z.causes, ""};
     if (inst.time.is_rational()) {
       const Classification c = classify_at(e0, motion, p, *inst.time.exact());
-      inst.position = c.position;
-      inst.small = c.small;
+      inst.position = c.verdict.position;
+      inst.small = c.verdict.small;
       inst.how = classify_how(c);
     } else {
       // Irrational instants are interior (t0, t1 are rational), so interval i-1 exists.

@@ -16,24 +16,12 @@
 
 namespace relpos {
 
-// SceneStage is the two early-outs followed by the classifier's stages in the classifier's order,
-// so names and the mapping come from Stage itself.
-static_assert(static_cast<int>(SceneStage::StaticDouble) == 2 + static_cast<int>(Stage::StaticDouble) &&
-                  static_cast<int>(SceneStage::ExactRoots) == 2 + static_cast<int>(Stage::ExactRoots),
-              "SceneStage must list the classifier stages in the order of Stage, after the two early-outs");
-
-std::string to_string(SceneStage s) {
-  if (s == SceneStage::InsideCertificate) return "inside-certificate";
-  if (s == SceneStage::OutsideCertificate) return "outside-certificate";
-  return to_string(static_cast<Stage>(static_cast<int>(s) - 2));
-}
-
 SceneVerdict scene_verdict(const Verdict& v) {
   SceneVerdict out;
   out.position = v.position;
   out.rule = v.rule;
   out.contact = v.contact;
-  out.stage = static_cast<SceneStage>(2 + static_cast<int>(v.stage));
+  out.stage = v.stage;
   return out;
 }
 
@@ -44,7 +32,7 @@ using RB = RunningBound;                    // the per-body filter (running_boun
 
 /// RunningBound without its count: value and magnitude only, as one SSE register (a product is one
 /// mulpd, a sum one addpd). The count of each quantity the certificates test depends on the program
-/// and on the counts of the inputs, never on their values, so Frame computes it once, by running the
+/// and on the counts of the inputs, never on their values, so PreparedParaboloid computes it once, by running the
 /// same code on RunningBound with exact inputs (count 0), and the hot path for bodies given by
 /// doubles carries (v, a) alone. Unlike RunningBound there is no magnitude floor: the fast path is
 /// taken only when every non-zero input magnitude lies in [2^-45, 2^40] (kFastLow, kFastHigh), so a
@@ -101,10 +89,10 @@ Rational times_power_of_two(const Rational& q, long k) {
   return out;
 }
 
-constexpr SceneVerdict kOutside{Position::E, Rule::TwoPositiveRoots, 0, SceneStage::OutsideCertificate};
-constexpr SceneVerdict kInsideSmall{Position::I, Rule::AllRootsNegative, 0, SceneStage::InsideCertificate};
+constexpr SceneVerdict kOutside{Position::E, Rule::TwoPositiveRoots, 0, Stage::OutsideCertificate};
+constexpr SceneVerdict kInsideSmall{Position::I, Rule::AllRootsNegative, 0, Stage::InsideCertificate};
 constexpr SceneVerdict kInsideNotSmall{Position::Unclassified, Rule::NotSmallUnknown, -1,
-                                       SceneStage::InsideCertificate};
+                                       Stage::InsideCertificate};
 
 /// What an early-out proved, in one byte (an optional<SceneVerdict> return cost a store-forwarding
 /// stall per body).
@@ -127,7 +115,7 @@ std::optional<SceneVerdict> verdict_of(Early x) {
 }  // namespace
 
 /// The paraboloid, scaled by a power of two, as RunningBound enclosures of exact values.
-struct Scene::Frame {
+struct Scene::PreparedParaboloid {
   SymmetricEntries<RB> p;      ///< A, p, p0 (exact when the scaled entries are doubles)
   SymmetricEntries<RB> adj_a;  ///< adj(A) (only its 3x3 part is used)
   RB det_p;                    ///< det P (< 0)
@@ -141,7 +129,7 @@ struct Scene::Frame {
   bool fast_ok = false;     ///< every non-zero fast constant within [kFastLow, kFastHigh]
   void compute_counts();
 
-  explicit Frame(const Paraboloid& par) {
+  explicit PreparedParaboloid(const Paraboloid& par) {
     const long k = balancing_exponent(par.matrix());
     Matrix4 m;
     for (std::size_t i = 0; i < 16; ++i) m.a[i] = times_power_of_two(par.matrix().a[i], k);
@@ -240,7 +228,7 @@ struct CountProbe {
 
 }  // namespace
 
-void Scene::Frame::compute_counts() {
+void Scene::PreparedParaboloid::compute_counts() {
   const RB one(1);  // any exact input: the counts do not depend on the values
   const SymmetricEntries<RB> x{one, one, one, one, one, one, one, one, one, one};
   certify_sphere(x, p, diagonal_a, lambda_max, rho_factor, CountProbe{&sphere_counts});
@@ -261,9 +249,9 @@ double scale_for(double mx) {
 }
 
 /// The early-outs. Bodies given by exact doubles in range take the fast path (Fast, counts from
-/// Frame); the others carry full RunningBounds. Rounding to nearest, no mode switch. A certificate
+/// PreparedParaboloid); the others carry full RunningBounds. Rounding to nearest, no mode switch. A certificate
 /// holds only when every sign it needs is certain.
-[[gnu::flatten]] Early early_out_filter(const Scene::Frame& f, const Ellipsoid& e) {
+[[gnu::flatten]] Early early_out_filter(const Scene::PreparedParaboloid& f, const Ellipsoid& e) {
   SymmetricEntries<RB> x;
   bool sphere;
   if (const auto& d = e.doubles()) {
@@ -319,19 +307,19 @@ double scale_for(double mx) {
 
 }  // namespace
 
-Scene::Scene(const Paraboloid& p) : p_(p), frame_(std::make_shared<const Frame>(p)) {}
+Scene::Scene(const Paraboloid& p) : p_(p), prepared_(std::make_shared<const PreparedParaboloid>(p)) {}
 
 // The filter's error bounds, like the core's static filter, assume rounding to nearest. A caller may
 // be inside a CGAL interval block (rounding upward): then switch to nearest for the call.
 std::optional<SceneVerdict> Scene::early_out(const Ellipsoid& e) const {
-  if (CGAL::FPU_get_cw() == CGAL_FE_TONEAREST) return verdict_of(early_out_filter(*frame_, e));
+  if (CGAL::FPU_get_cw() == CGAL_FE_TONEAREST) return verdict_of(early_out_filter(*prepared_, e));
   CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-  return verdict_of(early_out_filter(*frame_, e));
+  return verdict_of(early_out_filter(*prepared_, e));
 }
 
 SceneVerdict Scene::classify(const Ellipsoid& e) const {
   CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-  if (auto v = verdict_of(early_out_filter(*frame_, e))) return *v;
+  if (auto v = verdict_of(early_out_filter(*prepared_, e))) return *v;
   return scene_verdict(decide_position(e, p_));
 }
 
@@ -349,7 +337,7 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
   std::vector<SceneCounts> counts(threads);
   std::vector<std::exception_ptr> errors(threads);
   SceneVerdict* out = result.verdicts.data();
-  const Frame& frame = *frame_;
+  const PreparedParaboloid& prepared = *prepared_;
 
   auto work = [&](unsigned w) {
     SceneCounts local;  // per thread, merged once at the end (no shared cache lines while counting)
@@ -372,7 +360,7 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
               __builtin_prefetch(ahead + 64);
               __builtin_prefetch(ahead + 128);  // the optional's engaged flag follows the 16 doubles
             }
-            const Early x = early_out_filter(frame, bodies[i]);
+            const Early x = early_out_filter(prepared, bodies[i]);
             if (x != Early::None)
               out[i] = *verdict_of(x);
             else

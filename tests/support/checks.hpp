@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "support/construct.hpp"
+#include "support/oracles.hpp"
 #include "support/printers.hpp"
 
 namespace rt {
@@ -120,19 +121,19 @@ inline int expected_degree_ftilde(const Expect& x, Poly* ftilde = nullptr) {
 inline void check_against_expectation(const Classification& c, const Expect& x) {
   INFO(x.what);
   // Without a known truth, the root-pattern checks below still hold for whatever was answered.
-  const Position want = x.truth_known ? answer_for(x) : c.position;
-  CHECK(c.position == want);
-  CHECK(c.small == x.small);
-  CHECK(c.rho_vs_one == sgn(x.rho - 1));
-  if (x.truth_known && c.contact.has_value()) CHECK(*c.contact == truth_has_contact(x.truth));
+  const Position want = x.truth_known ? answer_for(x) : c.verdict.position;
+  CHECK(c.verdict.position == want);
+  CHECK(c.verdict.small == x.small);
+  CHECK(c.verdict.rho_vs_one == sgn(x.rho - 1));
+  if (x.truth_known && c.verdict.meets().has_value()) CHECK(*c.verdict.meets() == truth_has_contact(x.truth));
   // Beyond smallness only separation and outer tangency are ever claimed (math.md section 6).
   if (!x.small)
-    CHECK((c.position == Position::TE || c.position == Position::E || c.position == Position::Unclassified));
+    CHECK((c.verdict.position == Position::TE || c.verdict.position == Position::E || c.verdict.position == Position::Unclassified));
   if (want != Position::Unclassified) {
-    REQUIRE(c.contact.has_value());
+    REQUIRE(c.verdict.meets().has_value());
     CHECK(c.finding.empty());
   }
-  CHECK(!c.rule.empty());
+  CHECK(!c.rule_text().empty());
 
   REQUIRE(c.has_full_evidence);
   for (std::size_t i = 0; i < 5; ++i) CHECK(c.f[i] == x.f[i]);
@@ -142,17 +143,17 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
 
   // Discriminants and f~, computed here from the expected polynomials.
   const Rational disc = quartic_discriminant(x.f);
-  CHECK(c.sign_disc_f == sgn(disc));
+  CHECK(c.verdict.sign_disc_f == sgn(disc));
   Poly ft;
   const int deg = expected_degree_ftilde(x, &ft);
   CHECK(c.degree_ftilde == deg);
-  CHECK(c.sign_disc_ftilde == sgn(discriminant(ft)));
-  if (disc != 0) CHECK(c.sign_disc_ftilde == c.sign_disc_f);
+  CHECK(c.verdict.sign_disc_ftilde == sgn(discriminant(ft)));
+  if (disc != 0) CHECK(c.verdict.sign_disc_ftilde == c.verdict.sign_disc_f);
   if (disc == 0)  // a zero is never certified by a filter, only by an exact stage
-    CHECK((c.stage == relpos::Stage::ExactRoots || c.stage == relpos::Stage::MultipleRootWitness));
+    CHECK((c.verdict.stage == relpos::Stage::ExactRoots || c.verdict.stage == relpos::Stage::MultipleRootWitness));
 
   // Roots: counts, order, intervals, and the multiplicities at every rational root.
-  CHECK(c.real_roots == static_cast<int>(c.roots.size()));
+  CHECK(c.verdict.real_roots == static_cast<int>(c.roots.size()));
   int with_mult = 0, neg = 0, pos = 0, tangencies = 0;
   for (std::size_t i = 0; i < c.roots.size(); ++i) {
     const auto& r = c.roots[i];
@@ -175,9 +176,9 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   }
   // Every multiple root of f is rational here or a root of s... not in general: a double root can be
   // irrational only as a conjugate pair; then f = c g^2 and the count below still holds.
-  CHECK(with_mult + c.nonreal_roots == 4);
-  CHECK(c.negative_roots == neg);
-  CHECK(c.positive_roots == pos);
+  CHECK(with_mult + c.verdict.nonreal_roots == 4);
+  CHECK(c.verdict.negative_roots == neg);
+  CHECK(c.verdict.positive_roots == pos);
   // Every real root's multiplicities, located by its isolating interval (the only root of f in it):
   // at a root of s (rational here) they are computed exactly; elsewhere mult_s = 0.
   for (const auto& r : c.roots) {
@@ -201,36 +202,36 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   // Root pattern of each answer (math.md section 3 table).
   switch (want) {
     case Position::I:
-      CHECK(c.nonreal_roots == 0);
-      CHECK(c.positive_roots == 0);
+      CHECK(c.verdict.nonreal_roots == 0);
+      CHECK(c.verdict.positive_roots == 0);
       CHECK(tangencies == 0);
-      CHECK(*c.contact == false);
+      CHECK(*c.verdict.meets() == false);
       break;
     case Position::TI:
-      CHECK(c.nonreal_roots == 0);
-      CHECK(c.positive_roots == 0);
+      CHECK(c.verdict.nonreal_roots == 0);
+      CHECK(c.verdict.positive_roots == 0);
       CHECK(tangencies == 1);
-      CHECK(*c.contact == true);
+      CHECK(*c.verdict.meets() == true);
       break;
     case Position::C:
-      CHECK(c.nonreal_roots == 2);
-      CHECK(c.positive_roots == 0);
+      CHECK(c.verdict.nonreal_roots == 2);
+      CHECK(c.verdict.positive_roots == 0);
       CHECK(tangencies == 0);
-      CHECK(*c.contact == true);
+      CHECK(*c.verdict.meets() == true);
       break;
     case Position::TE:
-      CHECK(c.nonreal_roots == 0);
-      CHECK(c.positive_roots == 1);
+      CHECK(c.verdict.nonreal_roots == 0);
+      CHECK(c.verdict.positive_roots == 1);
       CHECK(tangencies == 1);
       for (const auto& r : c.roots)
         if (r.tangency()) CHECK(r.sign == 1);
-      CHECK(*c.contact == true);
+      CHECK(*c.verdict.meets() == true);
       break;
     case Position::E:
-      CHECK(c.nonreal_roots == 0);
-      CHECK(c.positive_roots == 2);
+      CHECK(c.verdict.nonreal_roots == 0);
+      CHECK(c.verdict.positive_roots == 2);
       CHECK(tangencies == 0);
-      CHECK(*c.contact == false);
+      CHECK(*c.verdict.meets() == false);
       break;
     case Position::Unclassified:
       break;
@@ -240,24 +241,24 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
       if (r.tangency()) CHECK(r.sign == -1);
   }
   if (x.expect_filter_stage)  // a float filter, not exact integers (rational inputs: 1' or 2)
-    CHECK((c.stage == relpos::Stage::SemiStaticDouble || c.stage == relpos::Stage::Interval ||
-           c.stage == relpos::Stage::StaticDouble));
+    CHECK((c.verdict.stage == relpos::Stage::SemiStaticDouble || c.verdict.stage == relpos::Stage::Interval ||
+           c.verdict.stage == relpos::Stage::StaticDouble));
 }
 
 /// classify() and classify_exact() must agree on everything but the stage.
 inline void check_same(const Classification& a, const Classification& b) {
-  CHECK(a.position == b.position);
-  CHECK(a.small == b.small);
-  CHECK(a.rho_vs_one == b.rho_vs_one);
-  CHECK(a.contact.has_value() == b.contact.has_value());
-  if (a.contact && b.contact) CHECK(*a.contact == *b.contact);
+  CHECK(a.verdict.position == b.verdict.position);
+  CHECK(a.verdict.small == b.verdict.small);
+  CHECK(a.verdict.rho_vs_one == b.verdict.rho_vs_one);
+  CHECK(a.verdict.meets().has_value() == b.verdict.meets().has_value());
+  if (a.verdict.meets() && b.verdict.meets()) CHECK(*a.verdict.meets() == *b.verdict.meets());
   CHECK(a.finding.empty() == b.finding.empty());
-  CHECK(a.sign_disc_f == b.sign_disc_f);
-  CHECK(a.sign_disc_ftilde == b.sign_disc_ftilde);
-  CHECK(a.real_roots == b.real_roots);
-  CHECK(a.negative_roots == b.negative_roots);
-  CHECK(a.positive_roots == b.positive_roots);
-  CHECK(a.nonreal_roots == b.nonreal_roots);
+  CHECK(a.verdict.sign_disc_f == b.verdict.sign_disc_f);
+  CHECK(a.verdict.sign_disc_ftilde == b.verdict.sign_disc_ftilde);
+  CHECK(a.verdict.real_roots == b.verdict.real_roots);
+  CHECK(a.verdict.negative_roots == b.verdict.negative_roots);
+  CHECK(a.verdict.positive_roots == b.verdict.positive_roots);
+  CHECK(a.verdict.nonreal_roots == b.verdict.nonreal_roots);
   CHECK(a.has_full_evidence == b.has_full_evidence);
   if (a.has_full_evidence && b.has_full_evidence) {
     for (std::size_t i = 0; i < 5; ++i) CHECK(a.f[i] == b.f[i]);
@@ -281,12 +282,12 @@ inline void check_same(const Classification& a, const Classification& b) {
 /// surfaces: the kernel test then finds a common point although mult_f - mult_s < 2; see
 /// test_classify_constructed, "not small".)
 inline void check_kernel(const Ellipsoid& e, const Paraboloid& p, const Classification& c) {
-  if (!c.small) return;
+  if (!c.verdict.small) return;
   for (const auto& r : c.roots) {
     if (r.multiplicity_f < 2 || !r.exact) continue;
     INFO("multiple root " << relpos::to_string(*r.exact) << " mult_f " << r.multiplicity_f << " mult_s "
                           << r.multiplicity_s);
-    CHECK(relpos::kernel_has_common_point(e, p, *r.exact) == r.tangency());
+    CHECK(relpos::oracle::kernel_has_common_point(e, p, *r.exact) == r.tangency());
     ++g_kernel_checks;
     if (r.tangency()) ++g_kernel_tangent;
   }
@@ -294,9 +295,9 @@ inline void check_kernel(const Ellipsoid& e, const Paraboloid& p, const Classifi
 
 /// The paper's Table 2, wherever it applies: small, and Disc(f) != 0 or f~ == f.
 inline void check_table2(const Classification& c) {
-  if (!c.small || !c.has_full_evidence) return;
-  if (c.sign_disc_f == 0 && c.degree_ftilde != 4) return;
-  CHECK(table2(c.f) == c.position);
+  if (!c.verdict.small || !c.has_full_evidence) return;
+  if (c.verdict.sign_disc_f == 0 && c.degree_ftilde != 4) return;
+  CHECK(table2(c.f) == c.verdict.position);
   ++g_table2_checks;
 }
 
@@ -306,16 +307,16 @@ inline Classification check_all(const Ellipsoid& e, const Paraboloid& p, const E
   const Classification c = relpos::classify(e, p);
   check_against_expectation(c, x);
   const Classification ce = relpos::classify_exact(e, p);
-  CHECK(ce.stage != relpos::Stage::Interval);
+  CHECK(ce.verdict.stage != relpos::Stage::Interval);
   check_same(c, ce);
   const Classification cm = relpos::classify(e, p, relpos::Evidence::Minimal);
   CHECK_FALSE(cm.has_full_evidence);
-  CHECK(cm.position == c.position);
-  CHECK(cm.small == c.small);
-  CHECK(cm.rho_vs_one == c.rho_vs_one);
-  CHECK(cm.sign_disc_f == c.sign_disc_f);
-  CHECK(cm.real_roots == c.real_roots);
-  CHECK(cm.nonreal_roots == c.nonreal_roots);
+  CHECK(cm.verdict.position == c.verdict.position);
+  CHECK(cm.verdict.small == c.verdict.small);
+  CHECK(cm.verdict.rho_vs_one == c.verdict.rho_vs_one);
+  CHECK(cm.verdict.sign_disc_f == c.verdict.sign_disc_f);
+  CHECK(cm.verdict.real_roots == c.verdict.real_roots);
+  CHECK(cm.verdict.nonreal_roots == c.verdict.nonreal_roots);
   check_kernel(e, p, c);
   check_table2(c);
   return c;
