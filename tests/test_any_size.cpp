@@ -260,21 +260,21 @@ int count_classifier_failures(const std::vector<LargeCase>& cases, bool exact) {
   std::map<std::string, int> got_hist;
   for (const LargeCase& c : cases) {
     const auto cl = exact ? relpos::classify_exact(c.e, c.p) : relpos::classify(c.e, c.p);
-    ++got_hist[relpos::to_string(cl.position)];
-    if (cl.position == c.expected) {
+    ++got_hist[relpos::to_string(cl.verdict.position)];
+    if (cl.verdict.position == c.expected) {
       // Every answer's certificate verifies with rational arithmetic alone (certificate.hpp).
-      const auto why = relpos::verify_certificate(c.e, c.p, cl.position, cl.certificate);
+      const auto why = relpos::verify_certificate(c.e, c.p, cl.verdict.position, cl.certificate);
       if (why) {
         ++failures;
-        UNSCOPED_INFO(c.name << ": certificate of " << relpos::to_string(cl.position) << " rejected: " << *why);
+        UNSCOPED_INFO(c.name << ": certificate of " << relpos::to_string(cl.verdict.position) << " rejected: " << *why);
       }
     }
-    if (cl.position != c.expected) {
-      if (cl.position != Position::Unclassified) ++definite;
+    if (cl.verdict.position != c.expected) {
+      if (cl.verdict.position != Position::Unclassified) ++definite;
       if (++failures <= 10)
         UNSCOPED_INFO((exact ? "classify_exact: " : "classify: ")
                       << c.name << ": expected " << relpos::to_string(c.expected) << ", got "
-                      << relpos::to_string(cl.position));
+                      << relpos::to_string(cl.verdict.position));
     }
   }
   std::ostringstream h;
