@@ -318,7 +318,7 @@ TEST_CASE("2000 random general pairs", "[anysize][random]") {
       err = ex.what();
       ++errors;
     }
-    const Position cl = relpos::classify(e, p, relpos::Evidence::Minimal).position;
+    const Position cl = relpos::classify(e, p, relpos::Evidence::Minimal).verdict.position;
     ++histogram[relpos::to_string(sec)];
     if (sec != cl && cl != Position::Unclassified) ++definite_mismatches;
     if (sec != cl || !err.empty()) {
