@@ -147,6 +147,14 @@ struct MovingPencil {
       // multiple root), can only change where Disc f = 0.
       merge = disc;
       events.emplace_back(disc, kCauseDiscriminant);
+      // For a body that is not small the position also changes where a root of f crosses lambda_s
+      // (math.md sections 7 and 8): the real zeros of Res_l(f^, s), f^ = f / gcd(f, s) over Q(t).
+      const BiZ bf(f.begin(), f.end()), bs(s.begin(), s.end());
+      const BiZ fhat = CGAL::integral_division_up_to_constant_factor(bf, CGAL::gcd_up_to_constant_factor(bf, bs));
+      if (fhat.degree() >= 1) {
+        const PolyZ res = CGAL::resultant(fhat, bs);
+        if (!CGAL::is_zero(res)) events.emplace_back(res, kCauseSpecialRoot);
+      }
     } else {
       // Disc f = 0 for every t: f has a multiple factor over Q(t). Work with r = f / gcd(f, df/dl)
       // (the square-free part, whose lc is constant because f4 is): away from the zeros of Disc r,

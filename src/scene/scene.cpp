@@ -91,12 +91,10 @@ Rational times_power_of_two(const Rational& q, long k) {
 
 constexpr SceneVerdict kOutside{Position::E, Rule::TwoPositiveRoots, 0, Stage::OutsideCertificate};
 constexpr SceneVerdict kInsideSmall{Position::I, Rule::AllRootsNegative, 0, Stage::InsideCertificate};
-constexpr SceneVerdict kInsideNotSmall{Position::Unclassified, Rule::NotSmallUnknown, -1,
-                                       Stage::InsideCertificate};
 
 /// What an early-out proved, in one byte (an optional<SceneVerdict> return cost a store-forwarding
 /// stall per body).
-enum class Early : unsigned char { None, Outside, InsideSmall, InsideNotSmall };
+enum class Early : unsigned char { None, Outside, InsideSmall };
 
 std::optional<SceneVerdict> verdict_of(Early x) {
   switch (x) {
@@ -104,8 +102,6 @@ std::optional<SceneVerdict> verdict_of(Early x) {
       return kOutside;
     case Early::InsideSmall:
       return kInsideSmall;
-    case Early::InsideNotSmall:
-      return kInsideNotSmall;
     case Early::None:
       break;
   }
@@ -178,10 +174,11 @@ struct Scene::PreparedParaboloid {
 namespace {
 
 Early inside_verdict(int rho_sign) {
-  // Interior: the core's table gives I when rho <= 1 and NotSmallUnknown when rho > 1 (math.md).
+  // Interior: the core's table gives I with the rule AllRootsNegative when rho < 1. A body that is
+  // not small is interior too (p < 0 on it), but the core names its rule from section 8's root
+  // location (RootsAboveLambdaS or OddGapRoot): the core decides, so a scene and batch agree.
   if (rho_sign < 0) return Early::InsideSmall;
-  if (rho_sign > 0) return Early::InsideNotSmall;
-  return Early::None;  // rho = 1 or too close to tell: the core decides
+  return Early::None;  // not small, rho = 1 or too close to tell: the core decides
 }
 
 USign usign(int s) { return s == 0 ? USign::indeterminate() : USign(s > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE); }
