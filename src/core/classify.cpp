@@ -7,13 +7,13 @@
 #include <cfloat>
 #include <cmath>
 
-#include "filters/rounding.hpp"
+#include "core/smallness.hpp"
+#include "core/sturm.hpp"
 #include "filters/multiple_roots.hpp"
 #include "filters/pooled_integer.hpp"
+#include "filters/rounding.hpp"
 #include "filters/semi_static_filter.hpp"
-#include "core/smallness.hpp"
 #include "filters/static_filter.hpp"
-#include "core/sturm.hpp"
 
 namespace relpos {
 

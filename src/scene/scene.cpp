@@ -1,5 +1,4 @@
 #include "relpos/scene.hpp"
-#include "scene/certificates.hpp"
 
 #include <CGAL/Interval_nt.h>
 
@@ -11,8 +10,9 @@
 #include <thread>
 
 #include "core/pencil.hpp"
-#include "filters/running_bound.hpp"
 #include "core/smallness.hpp"
+#include "filters/running_bound.hpp"
+#include "scene/certificates.hpp"
 
 namespace relpos {
 
@@ -91,8 +91,7 @@ Rational times_power_of_two(const Rational& q, long k) {
 
 constexpr SceneVerdict kOutside{Position::E, Rule::TwoPositiveRoots, 0, Stage::OutsideCertificate};
 constexpr SceneVerdict kInsideSmall{Position::I, Rule::AllRootsNegative, 0, Stage::InsideCertificate};
-constexpr SceneVerdict kInsideNotSmall{Position::Unclassified, Rule::NotSmallUnknown, -1,
-                                       Stage::InsideCertificate};
+constexpr SceneVerdict kInsideNotSmall{Position::Unclassified, Rule::NotSmallUnknown, -1, Stage::InsideCertificate};
 
 /// What an early-out proved, in one byte (an optional<SceneVerdict> return cost a store-forwarding
 /// stall per body).
