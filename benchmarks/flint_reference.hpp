@@ -24,9 +24,9 @@
 
 #include <string>
 
+#include "core/roots.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/quadric.hpp"
-#include "core/roots.hpp"
 
 namespace bench {
 

@@ -5,10 +5,10 @@
 #include <array>
 #include <optional>
 
-#include "relpos/classify.hpp"
 #include "core/pencil.hpp"
 #include "core/smallness.hpp"
 #include "core/sturm.hpp"
+#include "relpos/classify.hpp"
 
 namespace bench {
 

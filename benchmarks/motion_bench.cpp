@@ -30,10 +30,10 @@
 #include <string>
 #include <vector>
 
-#include "relpos/classify.hpp"
-#include "relpos/motion.hpp"
 #include "core/pencil.hpp"
 #include "core/sturm.hpp"
+#include "relpos/classify.hpp"
+#include "relpos/motion.hpp"
 
 using namespace relpos;
 

@@ -26,14 +26,14 @@
 #include <string>
 #include <vector>
 
+#include "core/pencil.hpp"
+#include "core/smallness.hpp"
+#include "core/sturm.hpp"
 #include "flint_reference.hpp"
 #include "float_baseline.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
-#include "core/pencil.hpp"
 #include "relpos/quadric.hpp"
-#include "core/smallness.hpp"
-#include "core/sturm.hpp"
 
 using namespace relpos;
 using Clock = std::chrono::steady_clock;

@@ -204,8 +204,9 @@ int main(int argc, char** argv) {
       std::printf("  decided by %-21s %8zu pairs (%6.3f %%): median %8.0f ns, mean %8.0f ns, %5.1f %% of the time\n",
                   name.c_str(), by[s].size(), 100.0 * static_cast<double>(by[s].size()) / static_cast<double>(n),
                   median(by[s]), mean, 100.0 * sum / (pair_mean * static_cast<double>(n)));
-      by_stage_json << (stage != kClassifierStages.front() ? ", " : "") << "\"" << name << "\": {\"pairs\": " << by[s].size()
-                    << ", \"median_ns\": " << median(by[s]) << ", \"mean_ns\": " << mean << "}";
+      by_stage_json << (stage != kClassifierStages.front() ? ", " : "") << "\"" << name
+                    << "\": {\"pairs\": " << by[s].size() << ", \"median_ns\": " << median(by[s])
+                    << ", \"mean_ns\": " << mean << "}";
     }
   }
 

@@ -7,7 +7,6 @@
 // The input is read in blocks; each block is parsed and classified on all threads
 // (relpos::Scene), and its answers are written in input order. Exit codes as in main.cpp.
 #include "relpos/scene.hpp"
-#include "scene/demo.hpp"
 
 #include <unistd.h>
 
@@ -30,6 +29,7 @@
 
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
+#include "scene/demo.hpp"
 
 namespace {
 

@@ -407,28 +407,33 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
   const relpos::Classification c = relpos::classify(e, p);
   const relpos::Classification x = relpos::classify_exact(e, p, relpos::Evidence::Minimal);
   const relpos::Verdict v = relpos::decide_position(e, p);
-  expect(c.verdict.position == x.verdict.position, what + ": classify " + name(c.verdict.position) + " vs classify_exact " + name(x.verdict.position));
+  expect(c.verdict.position == x.verdict.position,
+         what + ": classify " + name(c.verdict.position) + " vs classify_exact " + name(x.verdict.position));
   expect(v.position == c.verdict.position, what + ": decide_position differs from classify");
-  expect(c.verdict.small == x.verdict.small && c.verdict.rho_vs_one == x.verdict.rho_vs_one, what + ": smallness differs from classify_exact");
+  expect(c.verdict.small == x.verdict.small && c.verdict.rho_vs_one == x.verdict.rho_vs_one,
+         what + ": smallness differs from classify_exact");
   expect(c.verdict.meets() == x.verdict.meets(), what + ": contact differs from classify_exact");
-  expect(c.verdict.real_roots == x.verdict.real_roots && c.verdict.negative_roots == x.verdict.negative_roots && c.verdict.positive_roots == x.verdict.positive_roots &&
-             c.verdict.nonreal_roots == x.verdict.nonreal_roots,
+  expect(c.verdict.real_roots == x.verdict.real_roots && c.verdict.negative_roots == x.verdict.negative_roots &&
+             c.verdict.positive_roots == x.verdict.positive_roots && c.verdict.nonreal_roots == x.verdict.nonreal_roots,
          what + ": root counts differ from classify_exact");
   expect(c.verdict.sign_disc_f == x.verdict.sign_disc_f && c.verdict.sign_disc_ftilde == x.verdict.sign_disc_ftilde,
          what + ": Disc signs differ from classify_exact");
-  expect(relpos::classify(e, p, relpos::Evidence::Minimal).verdict.position == c.verdict.position, what + ": Minimal differs");
+  expect(relpos::classify(e, p, relpos::Evidence::Minimal).verdict.position == c.verdict.position,
+         what + ": Minimal differs");
   // A zero is certified only by an exact stage: GMP roots or the machine-integer multiple-root witness.
   if (c.verdict.sign_disc_f == 0)
     expect(c.verdict.stage == relpos::Stage::ExactRoots || c.verdict.stage == relpos::Stage::MultipleRootWitness,
            what + ": Disc(f) = 0 decided by a filter");
   // Beyond smallness only E and TE are claimed (math.md section 6); contact only when certain.
   if (!c.verdict.small)
-    expect(c.verdict.position == Position::E || c.verdict.position == Position::TE || c.verdict.position == Position::Unclassified,
+    expect(c.verdict.position == Position::E || c.verdict.position == Position::TE ||
+               c.verdict.position == Position::Unclassified,
            what + ": not small but position " + name(c.verdict.position));
   if (b.truth_known) {
     const Position want =
         c.verdict.small || b.truth == Position::E || b.truth == Position::TE ? b.truth : Position::Unclassified;
-    expect(c.verdict.position == want, what + ": position " + name(c.verdict.position) + ", construction says " + name(want));
+    expect(c.verdict.position == want,
+           what + ": position " + name(c.verdict.position) + ", construction says " + name(want));
     const bool contact = b.truth == Position::TI || b.truth == Position::C || b.truth == Position::TE;
     if (c.verdict.meets()) expect(*c.verdict.meets() == contact, what + ": wrong contact flag");
   }

@@ -527,7 +527,8 @@ TEST_CASE("not small: only contact / separation is claimed", "[classify][smallne
     const Classification c = check_config(k);
     CHECK(c.verdict.position == Position::Unclassified);
     CHECK_FALSE(c.verdict.small);
-    CHECK(relpos::oracle::kernel_has_common_point(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()), Q(-1)));
+    CHECK(
+        relpos::oracle::kernel_has_common_point(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()), Q(-1)));
     CHECK(root_at(c, Q(-1)).multiplicity_s == 1);
   }
   SECTION("a big sphere resting inside on the axis touches along a circle: never called TI") {

@@ -8,10 +8,10 @@
 #include <random>
 #include <relpos/contact.hpp>
 #include <relpos/scene.hpp>
-#include "contact/discriminant_case.hpp"
-#include "core/smallness.hpp"
 #include <vector>
 
+#include "contact/discriminant_case.hpp"
+#include "core/smallness.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 

@@ -214,9 +214,11 @@ Classification run_case(const Case& k, Rng& g) {
   // Only E, TE and contact: true beyond smallness (math.md section 6).
   if (!c.verdict.small) {
     ++stats().not_small;
-    CHECK((c.verdict.position == Position::E || c.verdict.position == Position::TE || c.verdict.position == Position::Unclassified));
+    CHECK((c.verdict.position == Position::E || c.verdict.position == Position::TE ||
+           c.verdict.position == Position::Unclassified));
     if (c.verdict.meets())
-      CHECK((*c.verdict.meets() ? (c.verdict.position == Position::TE || c.verdict.nonreal_roots > 0) : c.verdict.position == Position::E));
+      CHECK((*c.verdict.meets() ? (c.verdict.position == Position::TE || c.verdict.nonreal_roots > 0)
+                                : c.verdict.position == Position::E));
   }
   if (k.truth_known) {
     ++stats().truth;

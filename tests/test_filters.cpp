@@ -9,12 +9,12 @@
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/scene.hpp>
+
+#include "core/smallness.hpp"
+#include "filters/semi_static_filter.hpp"
+#include "filters/static_filter.hpp"
 #include "scene/certificates.hpp"
 #include "scene/demo.hpp"
-#include "filters/semi_static_filter.hpp"
-#include "core/smallness.hpp"
-#include "filters/static_filter.hpp"
-
 #include "support/construct.hpp"
 
 using namespace rt;
@@ -241,7 +241,8 @@ TEST_CASE("semi-static filter: entries that are subnormal as doubles are not tru
     if (CGAL::is_certain(got[i])) CHECK(static_cast<int>(CGAL::get_certain(got[i])) == q[i]);
   const Ellipsoid e = Ellipsoid::from_matrix(E);
   const Paraboloid p = Paraboloid::from_matrix(P);
-  CHECK(relpos::decide_position(e, p).position == relpos::classify_exact(e, p, relpos::Evidence::Minimal).verdict.position);
+  CHECK(relpos::decide_position(e, p).position ==
+        relpos::classify_exact(e, p, relpos::Evidence::Minimal).verdict.position);
   CHECK(relpos::classify_exact(e, p, relpos::Evidence::Minimal).verdict.position == relpos::Position::E);
 }
 

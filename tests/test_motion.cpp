@@ -12,11 +12,10 @@
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
 #include <relpos/motion.hpp>
-
-#include "motion/subresultant_position.hpp"
 #include <string>
 #include <vector>
 
+#include "motion/subresultant_position.hpp"
 #include "support/printers.hpp"
 
 using relpos::AlgebraicReal;
@@ -153,7 +152,8 @@ void check_against_sampling(const Timeline& tl, const Ellipsoid& e0, const Rigid
   std::uniform_int_distribution<int> num(0, 1000000);
   for (int k = 0; k < n; ++k) ts.push_back(tl.t0 + span * Rational(num(rng), 1000000));
   for (const auto& t : ts) {
-    const Position want = relpos::classify(relpos::placed_ellipsoid(e0, m, t), p, relpos::Evidence::Minimal).verdict.position;
+    const Position want =
+        relpos::classify(relpos::placed_ellipsoid(e0, m, t), p, relpos::Evidence::Minimal).verdict.position;
     INFO("t = " << relpos::to_string(t));
     CHECK(tl.position_at(t) == want);
   }

@@ -5,11 +5,11 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <iostream>
+
+#include "core/roots.hpp"
 #include "filters/checked_int.hpp"
 #include "filters/multiple_roots.hpp"
-#include "core/roots.hpp"
 #include "filters/static_filter.hpp"
-
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 

@@ -1,12 +1,12 @@
 // pencil.hpp, sturm.hpp, smallness.hpp, roots.hpp: the polynomials and the exact tools that read them.
 #include <catch2/catch.hpp>
 #include <relpos/classify.hpp>
+#include <vector>
+
 #include "core/pencil.hpp"
 #include "core/roots.hpp"
 #include "core/smallness.hpp"
 #include "core/sturm.hpp"
-#include <vector>
-
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 

@@ -7,12 +7,12 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
-#include "filters/running_bound.hpp"
 #include <relpos/scene.hpp>
-#include "scene/certificates.hpp"
-#include "scene/demo.hpp"
 #include <vector>
 
+#include "filters/running_bound.hpp"
+#include "scene/certificates.hpp"
+#include "scene/demo.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 
@@ -23,9 +23,8 @@ using relpos::Evidence;
 using relpos::Paraboloid;
 using relpos::Rule;
 using relpos::Scene;
-using relpos::Stage;
 using relpos::SceneVerdict;
-
+using relpos::Stage;
 
 namespace {
 
@@ -275,8 +274,7 @@ TEST_CASE("scene: the early-outs fire on bodies well inside or outside, small or
   const Quaternion q{Q(1), Q(1), Q(1), Q(1)};
   const std::vector<Case> cases = {
       {"sphere deep inside", &p, sphere(V(Q(0), Q(0), Q(2)), Q(1, 8)), Position::I, Stage::InsideCertificate},
-      {"sphere off-axis inside", &p, sphere(V(Q(1, 2), Q(1, 2), Q(1)), Q(1, 8)), Position::I,
-       Stage::InsideCertificate},
+      {"sphere off-axis inside", &p, sphere(V(Q(1, 2), Q(1, 2), Q(1)), Q(1, 8)), Position::I, Stage::InsideCertificate},
       {"rotated ellipsoid inside", &p, axes(V(Q(0), Q(1, 4), Q(2)), Q(1, 4), Q(1, 8), Q(1, 16), q), Position::I,
        Stage::InsideCertificate},
       {"non-dyadic sphere inside", &p, sphere(V(Q(1, 3), Q(1, 7), Q(5, 3)), Q(1, 10)), Position::I,

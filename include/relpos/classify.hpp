@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "relpos/certificate.hpp"
 #include "core/pencil.hpp"
-#include "relpos/quadric.hpp"
 #include "core/roots.hpp"
+#include "relpos/certificate.hpp"
+#include "relpos/quadric.hpp"
 
 namespace relpos {
 
@@ -46,9 +46,9 @@ enum class Stage : unsigned char {
   ExactRoots,           ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
 };
 /// Every stage, in order (tables indexed by Stage take their size from here).
-inline constexpr std::array kAllStages{Stage::InsideCertificate,   Stage::OutsideCertificate, Stage::StaticDouble,
-                                       Stage::SemiStaticDouble,    Stage::MultipleRootWitness, Stage::Interval,
-                                       Stage::ExactSigns,          Stage::ExactRoots};
+inline constexpr std::array kAllStages{Stage::InsideCertificate, Stage::OutsideCertificate,  Stage::StaticDouble,
+                                       Stage::SemiStaticDouble,  Stage::MultipleRootWitness, Stage::Interval,
+                                       Stage::ExactSigns,        Stage::ExactRoots};
 /// The stages of decide_position / classify, in order (a pair classified alone never ends in an early-out).
 inline constexpr std::array kClassifierStages{Stage::StaticDouble, Stage::SemiStaticDouble, Stage::MultipleRootWitness,
                                               Stage::Interval,     Stage::ExactSigns,       Stage::ExactRoots};

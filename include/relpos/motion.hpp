@@ -102,7 +102,6 @@ Ellipsoid placed_ellipsoid(const Ellipsoid& e0, const RigidMotion& m, const Rati
 /// there); throws InputError naming the problem.
 void validate_motion(const RigidMotion& m, const Rational& t0, const Rational& t1);
 
-
 // ---- Positions along the motion
 
 /// Why an instant of the timeline is there (bit flags).

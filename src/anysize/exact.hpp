@@ -7,8 +7,8 @@
 #include <optional>
 #include <vector>
 
-#include "relpos/numbers.hpp"
 #include "core/pencil.hpp"
+#include "relpos/numbers.hpp"
 
 namespace relpos::anysize {
 

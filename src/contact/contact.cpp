@@ -3,15 +3,15 @@
 #include <cfenv>
 #include <cmath>
 
-#include "filters/rounding.hpp"
-#include "relpos/error.hpp"
-#include "filters/running_bound.hpp"
-#include "relpos/scene.hpp"
 #include "contact/discriminant_case.hpp"
-#include "scene/certificates.hpp"
-#include "filters/semi_static_filter.hpp"
 #include "core/smallness.hpp"
+#include "filters/rounding.hpp"
+#include "filters/running_bound.hpp"
+#include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"
+#include "relpos/error.hpp"
+#include "relpos/scene.hpp"
+#include "scene/certificates.hpp"
 
 namespace relpos {
 

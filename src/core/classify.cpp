@@ -6,18 +6,19 @@
 #include <cfenv>
 #include <cfloat>
 #include <cmath>
+#include <stdexcept>
 
-#include "filters/rounding.hpp"
-#include "filters/multiple_roots.hpp"
-#include "filters/pooled_integer.hpp"
-#include "filters/semi_static_filter.hpp"
-#include "core/smallness.hpp"
-#include "filters/static_filter.hpp"
-#include "core/sturm.hpp"
-#include "filters/running_bound.hpp"
 #include "anysize/exact.hpp"
 #include "anysize/gap.hpp"
 #include "certificate/build.hpp"
+#include "core/smallness.hpp"
+#include "core/sturm.hpp"
+#include "filters/multiple_roots.hpp"
+#include "filters/pooled_integer.hpp"
+#include "filters/rounding.hpp"
+#include "filters/running_bound.hpp"
+#include "filters/semi_static_filter.hpp"
+#include "filters/static_filter.hpp"
 
 namespace relpos {
 

@@ -12,7 +12,6 @@
 
 namespace relpos {
 
-
 namespace detail {
 
 /// 2x2 minor of the matrix of linear polynomials m0 + lambda m1 on rows (r0, r1), columns (c0, c1):

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "relpos/numbers.hpp"
 #include "core/pencil.hpp"
+#include "relpos/numbers.hpp"
 
 namespace relpos {
 
@@ -48,7 +48,7 @@ std::optional<RootFacts> exact_root_facts(const Quartic<Integer>& f, const Quadr
 std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 
 /// The same with f's Sturm-Habicht coefficients already computed (g2, g1 and g0 = Disc(f) as in
-/// detail/sturm_habicht_quartic.hpp), e.g. by the exact-sign stage.
+/// sturm_habicht_quartic.hpp), e.g. by the exact-sign stage.
 std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, const Quadratic<Integer>& s,
                                                  const Integer g2[3], const Integer g1[2], const Integer& disc);
 

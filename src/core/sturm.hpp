@@ -1,7 +1,7 @@
 // Root counting for the characteristic quartic from the signs of its Sturm-Habicht sequence
 // (math.md section 3: "count real, negative and positive roots with Sturm (or Sturm-Habicht)
 // sequences"). The sequence is generated and verified by tools/gen_sturm_habicht.py
-// (include/relpos/detail/sturm_habicht_quartic.hpp) and evaluated generically over NT.
+// (sturm_habicht_quartic.hpp) and evaluated generically over NT.
 //
 // For a non-defective sequence (all principal coefficients non-zero) each StHa_j is a positive
 // multiple of the classical Sturm sequence, so the number of distinct real roots in (a, b) is
@@ -19,8 +19,8 @@
 #include <array>
 #include <optional>
 
-#include "core/sturm_habicht_quartic.hpp"
 #include "core/pencil.hpp"
+#include "core/sturm_habicht_quartic.hpp"
 
 namespace relpos {
 

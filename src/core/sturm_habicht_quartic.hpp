@@ -17,43 +17,24 @@ inline constexpr int kStHaF4Power0 = 1;
 
 /// g_j coefficients, highest power first: g2[0..2], g1[0..1], g0[0]. Ring operations only.
 template <class NT>
-void sturm_habicht_quartic(const NT& f0, const NT& f1, const NT& f2, const NT& f3, const NT& f4,
-                           NT g2[3], NT g1[2], NT g0[1]) {
-  g2[0] = -NT(8) * f2 * f4
-      + NT(3) * f3 * f3;
-  g2[1] = -NT(12) * f1 * f4
-      + NT(2) * f2 * f3;
-  g2[2] = -NT(16) * f0 * f4
-      + f1 * f3;
-  g1[0] = NT(32) * f0 * f2 * f4 * f4
-      - NT(12) * f0 * f3 * f3 * f4
-      - NT(36) * f1 * f1 * f4 * f4
-      + NT(28) * f1 * f2 * f3 * f4
-      - NT(6) * f1 * f3 * f3 * f3
-      - NT(8) * f2 * f2 * f2 * f4
-      + NT(2) * f2 * f2 * f3 * f3;
-  g1[1] = -NT(48) * f0 * f1 * f4 * f4
-      + NT(32) * f0 * f2 * f3 * f4
-      - NT(9) * f0 * f3 * f3 * f3
-      + NT(3) * f1 * f1 * f3 * f4
-      - NT(4) * f1 * f2 * f2 * f4
-      + f1 * f2 * f3 * f3;
-  g0[0] = NT(256) * f0 * f0 * f0 * f4 * f4 * f4
-      - NT(192) * f0 * f0 * f1 * f3 * f4 * f4
-      - NT(128) * f0 * f0 * f2 * f2 * f4 * f4
-      + NT(144) * f0 * f0 * f2 * f3 * f3 * f4
-      - NT(27) * f0 * f0 * f3 * f3 * f3 * f3
-      + NT(144) * f0 * f1 * f1 * f2 * f4 * f4
-      - NT(6) * f0 * f1 * f1 * f3 * f3 * f4
-      - NT(80) * f0 * f1 * f2 * f2 * f3 * f4
-      + NT(18) * f0 * f1 * f2 * f3 * f3 * f3
-      + NT(16) * f0 * f2 * f2 * f2 * f2 * f4
-      - NT(4) * f0 * f2 * f2 * f2 * f3 * f3
-      - NT(27) * f1 * f1 * f1 * f1 * f4 * f4
-      + NT(18) * f1 * f1 * f1 * f2 * f3 * f4
-      - NT(4) * f1 * f1 * f1 * f3 * f3 * f3
-      - NT(4) * f1 * f1 * f2 * f2 * f2 * f4
-      + f1 * f1 * f2 * f2 * f3 * f3;
+void sturm_habicht_quartic(const NT& f0, const NT& f1, const NT& f2, const NT& f3, const NT& f4, NT g2[3], NT g1[2],
+                           NT g0[1]) {
+  g2[0] = -NT(8) * f2 * f4 + NT(3) * f3 * f3;
+  g2[1] = -NT(12) * f1 * f4 + NT(2) * f2 * f3;
+  g2[2] = -NT(16) * f0 * f4 + f1 * f3;
+  g1[0] = NT(32) * f0 * f2 * f4 * f4 - NT(12) * f0 * f3 * f3 * f4 - NT(36) * f1 * f1 * f4 * f4 +
+          NT(28) * f1 * f2 * f3 * f4 - NT(6) * f1 * f3 * f3 * f3 - NT(8) * f2 * f2 * f2 * f4 +
+          NT(2) * f2 * f2 * f3 * f3;
+  g1[1] = -NT(48) * f0 * f1 * f4 * f4 + NT(32) * f0 * f2 * f3 * f4 - NT(9) * f0 * f3 * f3 * f3 +
+          NT(3) * f1 * f1 * f3 * f4 - NT(4) * f1 * f2 * f2 * f4 + f1 * f2 * f3 * f3;
+  g0[0] = NT(256) * f0 * f0 * f0 * f4 * f4 * f4 - NT(192) * f0 * f0 * f1 * f3 * f4 * f4 -
+          NT(128) * f0 * f0 * f2 * f2 * f4 * f4 + NT(144) * f0 * f0 * f2 * f3 * f3 * f4 -
+          NT(27) * f0 * f0 * f3 * f3 * f3 * f3 + NT(144) * f0 * f1 * f1 * f2 * f4 * f4 -
+          NT(6) * f0 * f1 * f1 * f3 * f3 * f4 - NT(80) * f0 * f1 * f2 * f2 * f3 * f4 +
+          NT(18) * f0 * f1 * f2 * f3 * f3 * f3 + NT(16) * f0 * f2 * f2 * f2 * f2 * f4 -
+          NT(4) * f0 * f2 * f2 * f2 * f3 * f3 - NT(27) * f1 * f1 * f1 * f1 * f4 * f4 +
+          NT(18) * f1 * f1 * f1 * f2 * f3 * f4 - NT(4) * f1 * f1 * f1 * f3 * f3 * f3 -
+          NT(4) * f1 * f1 * f2 * f2 * f2 * f4 + f1 * f1 * f2 * f2 * f3 * f3;
 }
 
 }  // namespace relpos::detail

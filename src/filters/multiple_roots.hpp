@@ -22,10 +22,10 @@
 
 #include <optional>
 
-#include "filters/checked_int.hpp"
 #include "core/pencil.hpp"
-#include "relpos/quadric.hpp"
 #include "core/roots.hpp"
+#include "filters/checked_int.hpp"
+#include "relpos/quadric.hpp"
 
 namespace relpos {
 

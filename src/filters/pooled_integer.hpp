@@ -19,8 +19,8 @@
 #include <utility>
 #include <vector>
 
-#include "relpos/numbers.hpp"
 #include "core/sturm.hpp"
+#include "relpos/numbers.hpp"
 
 namespace relpos {
 

@@ -6,8 +6,8 @@
 #include <cfloat>
 #include <cmath>
 
-#include "filters/running_bound.hpp"
 #include "core/smallness.hpp"
+#include "filters/running_bound.hpp"
 
 namespace relpos {
 namespace {

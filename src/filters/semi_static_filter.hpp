@@ -11,8 +11,8 @@
 // the four-products-per-multiplication of interval arithmetic (stage 2).
 #pragma once
 
-#include "relpos/quadric.hpp"
 #include "filters/static_filter.hpp"
+#include "relpos/quadric.hpp"
 
 namespace relpos {
 

@@ -14,8 +14,8 @@
 // uncertain for the interval and exact stages. Compile with -frounding-math and no FP contraction.
 #pragma once
 
-#include "relpos/quadric.hpp"
 #include "core/sturm.hpp"
+#include "relpos/quadric.hpp"
 
 namespace relpos {
 

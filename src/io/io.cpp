@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "relpos/error.hpp"
 #include "core/roots.hpp"
+#include "relpos/error.hpp"
 
 namespace relpos::io {
 namespace {
@@ -562,14 +562,15 @@ namespace {
 std::string certificate_text(const Certificate& c) {
   switch (c.kind) {
     case Certificate::Kind::Definite:
-      return "lambda = " + to_string(c.lambda) + ": lambda P + E is positive definite, so p has one sign on the "
+      return "lambda = " + to_string(c.lambda) +
+             ": lambda P + E is positive definite, so p has one sign on the "
              "solid ellipsoid";
     case Certificate::Kind::Tangent:
       return "lambda = " + to_string(c.lambda) + ": lambda P + E is positive semidefinite; contact point (" +
              to_string(c.contact[0]) + ", " + to_string(c.contact[1]) + ", " + to_string(c.contact[2]) + ")";
     case Certificate::Kind::HardTangent:
       return "lambda = lambda_s (hard case): contact along " +
-             std::string(c.directions.empty() ? "one point"
+             std::string(c.directions.empty()       ? "one point"
                          : c.directions.size() == 1 ? "two points"
                                                     : "a conic") +
              " (exact centre, directions and squared radius in the JSON output)";
@@ -598,7 +599,9 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
 
   std::string small =
       c.verdict.small ? "yes (the paper's smallness hypothesis holds): " : "no (the smallness hypothesis fails): ";
-  const std::string compare = std::string("rho ") + (c.verdict.rho_vs_one < 0 ? "< 1" : c.verdict.rho_vs_one == 0 ? "= 1" : "> 1");
+  const std::string compare = std::string("rho ") + (c.verdict.rho_vs_one < 0    ? "< 1"
+                                                     : c.verdict.rho_vs_one == 0 ? "= 1"
+                                                                                 : "> 1");
   if (c.rho) {
     const std::string exact = to_string(*c.rho), approx = to_decimal(*c.rho, options.digits);
     small += "rho = " + exact + (approx == exact ? "" : " ~ " + approx);
@@ -623,7 +626,8 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
   t += "   (f~ = f / gcd(f, s))\n";
 
   t += "real roots of f: " + count_text(c.verdict.real_roots, "distinct root", "distinct roots") + " (" +
-       std::to_string(c.verdict.negative_roots) + " negative, " + std::to_string(c.verdict.positive_roots) + " positive)";
+       std::to_string(c.verdict.negative_roots) + " negative, " + std::to_string(c.verdict.positive_roots) +
+       " positive)";
   if (c.has_full_evidence && !c.roots.empty()) {
     t += ", certified to " + std::to_string(options.digits) + " significant digits:\n";
     const auto approx = root_decimals(c, options.digits, /*only_multiple=*/false);

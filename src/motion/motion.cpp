@@ -1,5 +1,4 @@
 #include "relpos/motion.hpp"
-#include "motion/subresultant_position.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Interval_nt.h>
@@ -13,11 +12,12 @@
 #include <stdexcept>
 #include <utility>
 
-#include "relpos/error.hpp"
 #include "core/pencil.hpp"
 #include "core/roots.hpp"
 #include "core/smallness.hpp"
 #include "core/sturm.hpp"
+#include "motion/subresultant_position.hpp"
+#include "relpos/error.hpp"
 
 namespace relpos {
 namespace {

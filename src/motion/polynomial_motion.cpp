@@ -1,5 +1,3 @@
-#include "relpos/motion.hpp"
-
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Polynomial.h>
 #include <CGAL/Polynomial_traits_d.h>
@@ -8,6 +6,7 @@
 #include <utility>
 
 #include "relpos/error.hpp"
+#include "relpos/motion.hpp"
 
 namespace relpos {
 namespace {

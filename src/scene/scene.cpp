@@ -1,5 +1,4 @@
 #include "relpos/scene.hpp"
-#include "scene/certificates.hpp"
 
 #include <CGAL/Interval_nt.h>
 
@@ -11,8 +10,9 @@
 #include <thread>
 
 #include "core/pencil.hpp"
-#include "filters/running_bound.hpp"
 #include "core/smallness.hpp"
+#include "filters/running_bound.hpp"
+#include "scene/certificates.hpp"
 
 namespace relpos {
 

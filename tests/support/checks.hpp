@@ -128,7 +128,8 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   if (x.truth_known && c.verdict.meets().has_value()) CHECK(*c.verdict.meets() == truth_has_contact(x.truth));
   // Beyond smallness only separation and outer tangency are ever claimed (math.md section 6).
   if (!x.small)
-    CHECK((c.verdict.position == Position::TE || c.verdict.position == Position::E || c.verdict.position == Position::Unclassified));
+    CHECK((c.verdict.position == Position::TE || c.verdict.position == Position::E ||
+           c.verdict.position == Position::Unclassified));
   if (want != Position::Unclassified) {
     REQUIRE(c.verdict.meets().has_value());
     CHECK(c.finding.empty());

@@ -13,11 +13,12 @@
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/numbers.hpp>
-#include "core/pencil.hpp"
 #include <relpos/quadric.hpp>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "core/pencil.hpp"
 
 namespace rt {
 

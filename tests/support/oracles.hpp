@@ -3,11 +3,10 @@
 
 #include <array>
 #include <cstddef>
-#include <utility>
-#include <vector>
-
 #include <relpos/numbers.hpp>
 #include <relpos/quadric.hpp>
+#include <utility>
+#include <vector>
 
 namespace relpos::oracle {
 
