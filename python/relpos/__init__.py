@@ -14,7 +14,7 @@ double. doc/python.md describes the package.
 
 import json as _json
 
-from . import _relpos
+from . import _cli, _relpos
 from ._build import version as __version__
 from ._relpos import Ellipsoid, Paraboloid
 
