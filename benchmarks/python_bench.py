@@ -68,7 +68,7 @@ def main():
         return
     import distributed
 
-    import relpos.distributed
+    import relpos.distributed as relpos_distributed
 
     x, y, z, r, a, b = params
     with tempfile.TemporaryDirectory() as tmp:
@@ -88,7 +88,7 @@ def main():
             with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=False,
                                           dashboard_address=None) as cluster, distributed.Client(cluster) as client:
                 t = time.perf_counter()
-                relpos.distributed.batch(paths, os.path.join(tmp, "out-%d" % workers), client=client)
+                relpos_distributed.batch(paths, os.path.join(tmp, "out-%d" % workers), client=client)
                 timings[workers] = time.perf_counter() - t
             print("distributed.batch 4 files x %d lines, %d worker(s): %.2f s" % (args.lines, workers, timings[workers]))
         print("speed-up 1 -> 2 workers: %.2fx" % (timings[1] / timings[2]))

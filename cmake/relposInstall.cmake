@@ -43,8 +43,9 @@ install(CODE "
 ")
 
 # The package test: install into a temporary prefix, build a consumer with find_package and with
-# pkg-config (tests/package/check_package.sh).
-if(RELPOS_BUILD_TESTS AND BUILD_TESTING)
+# pkg-config (tests/package/check_package.sh). Not in sanitizer builds (the consumers are not
+# instrumented).
+if(RELPOS_BUILD_TESTS AND BUILD_TESTING AND NOT RELPOS_SANITIZE)
   add_test(NAME package
            COMMAND bash ${PROJECT_SOURCE_DIR}/tests/package/check_package.sh ${PROJECT_BINARY_DIR}
                    ${PROJECT_SOURCE_DIR}/tests/package/consumer ${CMAKE_COMMAND})

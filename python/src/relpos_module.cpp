@@ -164,9 +164,7 @@ relpos::Matrix4 exact_matrix(const double* m) {
   return out;
 }
 relpos::Ellipsoid ellipsoid_from_doubles(const double* m) { return relpos::Ellipsoid::from_matrix(exact_matrix(m)); }
-relpos::Paraboloid paraboloid_from_doubles(const double* m) {
-  return relpos::Paraboloid::from_matrix(exact_matrix(m));
-}
+relpos::Paraboloid paraboloid_from_doubles(const double* m) { return relpos::Paraboloid::from_matrix(exact_matrix(m)); }
 // ---- end of the construction place. ----
 
 /// Code of a position in relpos.POSITION_NAMES; -1 for Position::Unclassified (not small).
@@ -196,8 +194,8 @@ std::optional<std::size_t> batch_size(const DoubleArray& a, const char* name, bo
   std::string shape = "(";
   for (py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
   shape += a.ndim() == 1 ? ",)" : ")";
-  throw InputError(std::string(name) + ": expected shape (n, 4, 4)" + (allow_single ? " or (4, 4)" : "") +
-                   ", got " + shape);
+  throw InputError(std::string(name) + ": expected shape (n, 4, 4)" + (allow_single ? " or (4, 4)" : "") + ", got " +
+                   shape);
 }
 
 py::array_t<std::int8_t> decide_positions(const DoubleArray& e_array, const DoubleArray& p_array, int threads) {
@@ -251,8 +249,8 @@ py::array_t<std::int8_t> decide_positions(const DoubleArray& e_array, const Doub
               const std::lock_guard<std::mutex> lock(error_mutex);
               if (i < error_index) {
                 error_index = i;
-                error_message = std::string(failed) + "[" + std::to_string(i) + "]: " +
-                                (failed[0] == 'E' ? "ellipsoid: " : "paraboloid: ") + err.what();
+                error_message = std::string(failed) + "[" + std::to_string(i) +
+                                "]: " + (failed[0] == 'E' ? "ellipsoid: " : "paraboloid: ") + err.what();
               }
             }
           }
@@ -311,8 +309,9 @@ PYBIND11_MODULE(_relpos, m) {
           },
           "center"_a, "axes"_a, "rotation"_a = py::make_tuple(1, 0, 0, 0),
           "Semi-axes `axes` along the columns of the rotation R(q)/|q|^2 of the quaternion q = (w, x, y, z).")
-      .def("matrix", [](const relpos::Ellipsoid& e) { return matrix_to_python(e.matrix()); },
-           "The sign-normalized matrix as a list of lists of fractions.Fraction.")
+      .def(
+          "matrix", [](const relpos::Ellipsoid& e) { return matrix_to_python(e.matrix()); },
+          "The sign-normalized matrix as a list of lists of fractions.Fraction.")
       .def("__repr__", [](const relpos::Ellipsoid& e) { return matrix_repr("relpos.Ellipsoid", e.matrix()); })
       .def(py::pickle([](const relpos::Ellipsoid& e) { return matrix_to_strings(e.matrix()); },
                       [](const py::tuple& t) { return relpos::Ellipsoid::from_matrix(matrix_from_strings(t)); }));
@@ -331,15 +330,16 @@ PYBIND11_MODULE(_relpos, m) {
           "standard",
           [](py::handle vertex, py::handle a, py::handle b, py::handle rotation) {
             return with_role("paraboloid", [&] {
-              return relpos::Paraboloid::standard(vector_n<3>(vertex, "paraboloid.vertex"), to_rational(a, "paraboloid.a"),
-                                                  to_rational(b, "paraboloid.b"),
+              return relpos::Paraboloid::standard(vector_n<3>(vertex, "paraboloid.vertex"),
+                                                  to_rational(a, "paraboloid.a"), to_rational(b, "paraboloid.b"),
                                                   vector_n<4>(rotation, "paraboloid.rotation"));
             });
           },
           "vertex"_a, "a"_a, "b"_a, "rotation"_a = py::make_tuple(1, 0, 0, 0),
           "x'^2/a^2 + y'^2/b^2 = z' in the frame with origin `vertex` and axes the columns of R(q)/|q|^2.")
-      .def("matrix", [](const relpos::Paraboloid& p) { return matrix_to_python(p.matrix()); },
-           "The sign-normalized matrix as a list of lists of fractions.Fraction.")
+      .def(
+          "matrix", [](const relpos::Paraboloid& p) { return matrix_to_python(p.matrix()); },
+          "The sign-normalized matrix as a list of lists of fractions.Fraction.")
       .def("__repr__", [](const relpos::Paraboloid& p) { return matrix_repr("relpos.Paraboloid", p.matrix()); })
       .def(py::pickle([](const relpos::Paraboloid& p) { return matrix_to_strings(p.matrix()); },
                       [](const py::tuple& t) { return relpos::Paraboloid::from_matrix(matrix_from_strings(t)); }));
