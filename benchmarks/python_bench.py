@@ -51,18 +51,22 @@ def main():
     ap.add_argument("--pairs", type=int, default=20000)
     ap.add_argument("--lines", type=int, default=5000)
     ap.add_argument("--skip-dask", action="store_true")
+    ap.add_argument("--skip-decide", action="store_true")
+    ap.add_argument("--decimals", type=int, default=3,
+                    help="digits after the point of the JSON numbers of the Dask files (default 3; 0: repr of the doubles)")
     args = ap.parse_args()
 
     E, P, params = random_pairs(args.pairs)
     shared = P[0]
-    for label, p in (("own P per pair", P), ("one shared P", shared)):
+    for label, p in () if args.skip_decide else (("own P per pair", P), ("one shared P", shared)):
         for threads in (1, 2):
             t, codes = best_of(3, lambda: relpos.decide_positions(E, p, threads=threads))
             print("decide_positions %d pairs, %s, threads=%d: %.3f s = %.0f pairs/s"
                   % (args.pairs, label, threads, t, args.pairs / t))
-    counts = {n: int((codes == k).sum()) for k, n in enumerate(relpos.POSITION_NAMES)}
-    counts["unclassified"] = int((codes == -1).sum())
-    print("positions (shared P):", counts)
+    if not args.skip_decide:
+        counts = {n: int((codes == k).sum()) for k, n in enumerate(relpos.POSITION_NAMES)}
+        counts["unclassified"] = int((codes == -1).sum())
+        print("positions (shared P):", counts)
 
     if args.skip_dask:
         return
@@ -71,6 +75,8 @@ def main():
     import relpos.distributed as relpos_distributed
 
     x, y, z, r, a, b = params
+    num = repr if args.decimals == 0 else (lambda v: "%.*f" % (args.decimals, v))
+    r = numpy.maximum(r, 10.0**-args.decimals) if args.decimals else r
     with tempfile.TemporaryDirectory() as tmp:
         paths = []
         for f in range(4):
@@ -78,9 +84,9 @@ def main():
             with open(path, "w") as out:
                 for i in range(f * args.lines, (f + 1) * args.lines):
                     k = i % args.pairs
-                    line = {"id": i, "ellipsoid": {"sphere": {"center": [repr(x[k]), repr(y[k]), repr(z[k])],
-                                                              "radius": repr(r[k])}},
-                            "paraboloid": {"vertex": [0, 0, 0], "a": repr(a[k]), "b": repr(b[k])}}
+                    line = {"id": i, "ellipsoid": {"sphere": {"center": [num(x[k]), num(y[k]), num(z[k])],
+                                                              "radius": num(r[k])}},
+                            "paraboloid": {"vertex": [0, 0, 0], "a": num(a[k]), "b": num(b[k])}}
                     out.write(json.dumps(line) + "\n")
             paths.append(path)
         timings = {}
