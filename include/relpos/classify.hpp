@@ -16,8 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "core/pencil.hpp"
-#include "core/roots.hpp"
+#include "relpos/polynomials.hpp"
 #include "relpos/certificate.hpp"
 #include "relpos/quadric.hpp"
 

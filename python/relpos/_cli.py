@@ -1,0 +1,37 @@
+"""Where the relpos command-line tool is: the one lookup (relpos.distributed runs `relpos batch`)."""
+
+import os
+import shutil
+
+from . import _build
+
+
+def find_cli():
+    """Path of the `relpos` executable.
+
+    In order: the environment variable RELPOS_CLI; `<prefix>/bin/relpos` when this package is
+    installed under `<prefix>/lib/python3/dist-packages/relpos`; the CLI of the build tree that
+    built this package; `relpos` on PATH. Raises FileNotFoundError naming what was tried.
+    """
+    tried = []
+    env = os.environ.get("RELPOS_CLI")
+    if env:
+        if os.path.isfile(env) and os.access(env, os.X_OK):
+            return env
+        raise FileNotFoundError("RELPOS_CLI=%s is not an executable file" % env)
+    here = os.path.dirname(os.path.abspath(__file__))
+    candidates = [
+        os.path.join(here, "bin", "relpos"),
+        os.path.normpath(os.path.join(here, "..", "..", "..", "..", "bin", "relpos")),
+        _build.build_tree_cli,
+    ]
+    for c in candidates:
+        tried.append(c)
+        if os.path.isfile(c) and os.access(c, os.X_OK):
+            return c
+    on_path = shutil.which("relpos")
+    if on_path:
+        return on_path
+    raise FileNotFoundError(
+        "relpos CLI not found (set RELPOS_CLI); tried %s and PATH" % ", ".join(tried)
+    )
