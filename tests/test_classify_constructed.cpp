@@ -10,12 +10,14 @@
 #include "support/construct.hpp"
 #include "support/oracles.hpp"
 #include "support/printers.hpp"
+#include "support/secular.hpp"
 
 using namespace rt;
 using relpos::Classification;
 using relpos::Ellipsoid;
 using relpos::Paraboloid;
 using relpos::Stage;
+using relpos::testing::secular_position;
 
 namespace {
 
@@ -414,12 +416,14 @@ TEST_CASE("2r = a^2 exactly: rho == 1, small", "[classify][smallness]") {
   check_config(config("rho = 1, TE off-axis", a, b, tp.along(r), r, Position::TE));
   check_config(config("rho = 1, C", a, b, tp.along(-r / 2), r, Position::C));
   check_config(config("rho = 1, E", a, b, tp.along(2 * r), r, Position::E));
-  // Just beyond: not small, and nothing but TE/E is claimed.
+  // Just beyond: not small, and still the true position (math.md section 8).
   const Config beyond = config("rho > 1, axis", a, b, V(Q(0), Q(0), Q(5)), r + Q(1, 1000), Position::I);
   const Classification cb = check_config(beyond);
   CHECK_FALSE(cb.verdict.small);
   CHECK(cb.verdict.rho_vs_one == 1);
-  CHECK(cb.verdict.position == Position::Unclassified);
+  CHECK(cb.verdict.position == Position::I);
+  CHECK(cb.verdict.position == secular_position(Ellipsoid::from_matrix(beyond.e()), Paraboloid::from_matrix(beyond.p())));
+  CHECK(cb.verdict.meets() == std::optional<bool>(false));
   Rng g(0x5EED0008);
   for (int i = 0; i < 6; ++i) {
     const Classification ct = check_config_transformed(inside, g);
@@ -477,17 +481,17 @@ TEST_CASE("double inputs: dyadic centres on the axis give exact tangencies", "[c
 // 12. Not-small pairs (math.md section 6)
 // ---------------------------------------------------------------------------------------------
 
-TEST_CASE("not small: only contact / separation is claimed", "[classify][smallness]") {
+TEST_CASE("not small: every position is decided (math.md section 8)", "[classify][smallness]") {
   const Rational one(1), r(2);  // 2r = 4 > a^2 = 1
-  SECTION("centre (0,0,3): unclassified, contact unknown") {
+  SECTION("centre (0,0,3): crossing, although the root pattern alone cannot tell") {
     // f = -(l + 1)^2 (l^2 + 12 l + 16) / 4: all roots real and negative, so neither a non-real
-    // root (contact) nor two positive roots (separation) is available.
+    // root (contact) nor two positive roots (separation) is available; section 8 decides C.
     const Classification c = check_config(config("big, (0,0,3)", one, one, V(Q(0), Q(0), Q(3)), r, Position::C));
     CHECK_FALSE(c.verdict.small);
     CHECK(c.verdict.rho_vs_one == 1);
     CHECK(*c.rho == 16);
-    CHECK(c.verdict.position == Position::Unclassified);
-    CHECK_FALSE(c.verdict.meets().has_value());
+    CHECK(c.verdict.position == Position::C);
+    CHECK(c.verdict.meets() == std::optional<bool>(true));
   }
   SECTION("centre (0,0,-3): E; (0,0,-2): TE") {
     const Classification e = check_config(config("big, (0,0,-3)", one, one, V(Q(0), Q(0), Q(-3)), r, Position::E));
@@ -505,7 +509,7 @@ TEST_CASE("not small: only contact / separation is claimed", "[classify][smallne
   SECTION("centre (0,0,0): non-real roots, so the surfaces meet") {
     // f = -(l + 1)^2 (l^2 + 16) / 4.
     const Classification c = check_config(config("big, (0,0,0)", one, one, V(Q(0), Q(0), Q(0)), r, Position::C));
-    CHECK(c.verdict.position == Position::Unclassified);
+    CHECK(c.verdict.position == Position::C);
     REQUIRE(c.verdict.meets().has_value());
     CHECK(*c.verdict.meets() == true);
     CHECK(c.verdict.nonreal_roots == 2);
@@ -518,14 +522,16 @@ TEST_CASE("not small: only contact / separation is claimed", "[classify][smallne
     // common tangent plane, while in the narrower section x = 0 the parabola z = 4 y^2 comes within
     // distance^2 = b^2 z - b^4/4 = 19/64 < r^2 of the centre: the surfaces cross. Beyond
     // smallness, then, the kernel test sees a genuine tangential contact point that the
-    // multiplicity rule does not call a tangency; the pair is crossing and reported unclassified.
+    // multiplicity rule does not call a tangency; the pair is crossing, and reported C (section 8).
     const Config k = config("big, touching section", one, Q(1, 2), V(Q(0), Q(0), Q(5, 4)), one, Position::C);
     const auto f = paper_f(k.a, k.b, k.c, k.r);
     REQUIRE(multiplicity(f, Q(-1)) == 2);
     REQUIRE(multiplicity(f, Q(-4)) == 1);
     REQUIRE(multiplicity(f, Q(-1, 4)) == 1);
     const Classification c = check_config(k);
-    CHECK(c.verdict.position == Position::Unclassified);
+    CHECK(c.verdict.position == Position::C);
+    CHECK(c.verdict.position == secular_position(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p())));
+    CHECK(c.verdict.meets() == std::optional<bool>(true));
     CHECK_FALSE(c.verdict.small);
     CHECK(
         relpos::oracle::kernel_has_common_point(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()), Q(-1)));
@@ -533,8 +539,10 @@ TEST_CASE("not small: only contact / separation is claimed", "[classify][smallne
   }
   SECTION("a big sphere resting inside on the axis touches along a circle: never called TI") {
     // r = 2 > a^2/2, centre (0,0,2): the quadratic factor is (l + 4)^2, a 'TI' root pattern.
-    const Classification c = check_config(config("big, (0,0,2)", one, one, V(Q(0), Q(0), Q(2)), r, Position::C));
-    CHECK(c.verdict.position == Position::Unclassified);
+    const Config k = config("big, (0,0,2)", one, one, V(Q(0), Q(0), Q(2)), r, Position::C);
+    const Classification c = check_config(k);
+    CHECK(c.verdict.position == Position::C);
+    CHECK(c.verdict.position == secular_position(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p())));
   }
 }
 

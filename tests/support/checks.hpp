@@ -93,12 +93,8 @@ inline Expect expect_from(const Config& k, const Transformed& t) {
   return x;
 }
 
-/// What relpos may answer: the truth when small (math.md section 3); TE and E for any size
-/// (section 6); otherwise unclassified.
-inline Position answer_for(const Expect& x) {
-  if (x.small || x.truth == Position::TE || x.truth == Position::E) return x.truth;
-  return Position::Unclassified;
-}
+/// What relpos answers: the truth, whatever the size (math.md section 8).
+inline Position answer_for(const Expect& x) { return x.truth; }
 
 inline bool truth_has_contact(Position p) { return p == Position::TI || p == Position::C || p == Position::TE; }
 
@@ -126,14 +122,10 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   CHECK(c.verdict.small == x.small);
   CHECK(c.verdict.rho_vs_one == sgn(x.rho - 1));
   if (x.truth_known && c.verdict.meets().has_value()) CHECK(*c.verdict.meets() == truth_has_contact(x.truth));
-  // Beyond smallness only separation and outer tangency are ever claimed (math.md section 6).
-  if (!x.small)
-    CHECK((c.verdict.position == Position::TE || c.verdict.position == Position::E ||
-           c.verdict.position == Position::Unclassified));
-  if (want != Position::Unclassified) {
-    REQUIRE(c.verdict.meets().has_value());
-    CHECK(c.finding.empty());
-  }
+  // Every valid pair gets one of I, TI, C, TE, E, whatever its size (math.md section 8).
+  CHECK(c.verdict.position != Position::Unclassified);
+  REQUIRE(c.verdict.meets().has_value());
+  CHECK(c.finding.empty());
   CHECK(!c.rule_text().empty());
 
   REQUIRE(c.has_full_evidence);
@@ -200,8 +192,12 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
     CHECK(found == 1);
   }
 
-  // Root pattern of each answer (math.md section 3 table).
-  switch (want) {
+  // Root pattern of each answer (math.md section 3 table): it characterizes every answer of a small
+  // pair, and TE and E of any size (section 6); I, TI and C of a pair that is not small are decided
+  // by section 8, not by the root pattern.
+  const Position pattern =
+      x.small || want == Position::TE || want == Position::E ? want : Position::Unclassified;
+  switch (pattern) {
     case Position::I:
       CHECK(c.verdict.nonreal_roots == 0);
       CHECK(c.verdict.positive_roots == 0);
@@ -237,7 +233,7 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
     case Position::Unclassified:
       break;
   }
-  if (want == Position::TI) {
+  if (pattern == Position::TI) {
     for (const auto& r : c.roots)
       if (r.tangency()) CHECK(r.sign == -1);
   }
