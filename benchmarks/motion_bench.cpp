@@ -161,7 +161,7 @@ Case crossing_case(std::mt19937_64& rng) {
     RigidMotion m;
     for (std::size_t i = 0; i < 3; ++i) m.translation[i] = {start[i], target[i] - start[i]};
     Case k{e0, p, m, Rational(0), Rational(1), std::nullopt};
-    if (classify(placed_ellipsoid(e0, m, Rational(0)), p, Evidence::Minimal).position == Position::E) return k;
+    if (classify(placed_ellipsoid(e0, m, Rational(0)), p, Evidence::Minimal).verdict.position == Position::E) return k;
   }
 }
 

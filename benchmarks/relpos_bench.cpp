@@ -346,7 +346,8 @@ std::vector<Method> methods() {
                   SmallnessQuantities<Interval> sq(f, s);
                   return Answer{naive_table(signs_of(f, sh), sign_of(sq.vertex), sign_of(sq.graeffe))};
                 }});
-  ms.push_back({"exact", [](const Pair& x) { return Answer{classify_exact(x.e, x.p, Evidence::Minimal).position}; }});
+  ms.push_back(
+      {"exact", [](const Pair& x) { return Answer{classify_exact(x.e, x.p, Evidence::Minimal).verdict.position}; }});
   ms.push_back({"flint", [](const Pair& x) {
                   const FlintAnswer a = flint_classify(x.e.matrix(), x.p.matrix());
                   return Answer{a.ok ? std::optional<Position>(a.position) : std::nullopt};
@@ -430,7 +431,7 @@ int main(int argc, char** argv) {
   }
   // Ground truth.
   for (auto& f : fams)
-    for (auto& p : f.pairs) p.truth = classify_exact(p.e, p.p, Evidence::Minimal).position;
+    for (auto& p : f.pairs) p.truth = classify_exact(p.e, p.p, Evidence::Minimal).verdict.position;
   // The FLINT pipeline checked against other FLINT routines on every pair (untimed).
   int flint_self_check_failures = 0;
   for (const auto& f : fams)

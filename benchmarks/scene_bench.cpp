@@ -294,8 +294,8 @@ int main(int argc, char** argv) {
     parallel(n, hw, [&](std::size_t i) {
       const Classification x = classify_exact(bodies[i], p, Evidence::Minimal);
       const SceneVerdict& v = main_result.verdicts[i];
-      const int contact = x.contact ? (*x.contact ? 1 : 0) : -1;
-      bad[i] = x.position != v.position || x.rule_id != v.rule || contact != v.contact;
+      const int contact = x.verdict.contact;
+      bad[i] = x.verdict.position != v.position || x.verdict.rule != v.rule || contact != v.contact;
     });
     verify_s = seconds_since(t0);
     for (std::size_t i = 0; i < n; ++i)
