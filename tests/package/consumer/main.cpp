@@ -7,6 +7,6 @@ int main() {
   auto p = Paraboloid::standard({0, 0, 0}, parse_rational("1.2"), parse_rational("1.5"));
   auto e = Ellipsoid::sphere({0, parse_rational("0.5"), parse_rational("92281/129600")}, Rational(1, 4));
   Classification c = classify(e, p);
-  std::cout << to_string(c.position) << "\n";
+  std::cout << to_string(c.verdict.position) << "\n";
   return 0;
 }
