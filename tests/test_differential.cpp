@@ -31,12 +31,15 @@
 #include "support/construct.hpp"
 #include "support/oracles.hpp"
 #include "support/printers.hpp"
+#include "support/secular.hpp"
 
 using namespace rt;
 using relpos::Classification;
 using relpos::Ellipsoid;
 using relpos::Paraboloid;
 using relpos::Verdict;
+
+using relpos::testing::secular_position;
 
 namespace {
 
@@ -119,7 +122,13 @@ void check_independent(const Ellipsoid& e, const Paraboloid& p, const Classifica
     CHECK(c.verdict.sign_disc_f == ((nonreal / 2) % 2 ? -1 : 1));  // square-free: (-1)^(non-real pairs)
     CHECK(c.verdict.sign_disc_ftilde == c.verdict.sign_disc_f);
     std::optional<bool> contact;
-    const Position want = position_from_certificate(cert, rho, &contact);
+    Position want = position_from_certificate(cert, rho, &contact);
+    if (want == Position::Unclassified && rho > 0) {
+      // Not small and not E: the root pattern alone does not decide; the secular method does
+      // (math.md section 8), for any size.
+      want = secular_position(e, p);
+      contact = truth_has_contact(want);
+    }
     CHECK(c.verdict.position == want);
     CHECK(c.verdict.meets().has_value() == contact.has_value());
     if (c.verdict.meets() && contact) CHECK(*c.verdict.meets() == *contact);
@@ -211,19 +220,17 @@ Classification run_case(const Case& k, Rng& g) {
 
   check_independent(e, p, c);
 
-  // Only E, TE and contact: true beyond smallness (math.md section 6).
+  // Every size is classified (math.md section 8), contact always decided.
+  CHECK(c.verdict.position != Position::Unclassified);
+  REQUIRE(c.verdict.meets().has_value());
+  CHECK(*c.verdict.meets() == truth_has_contact(c.verdict.position));
   if (!c.verdict.small) {
     ++stats().not_small;
-    CHECK((c.verdict.position == Position::E || c.verdict.position == Position::TE ||
-           c.verdict.position == Position::Unclassified));
-    if (c.verdict.meets())
-      CHECK((*c.verdict.meets() ? (c.verdict.position == Position::TE || c.verdict.nonreal_roots > 0)
-                                : c.verdict.position == Position::E));
+    CHECK(c.verdict.position == secular_position(e, p));
   }
   if (k.truth_known) {
     ++stats().truth;
-    const bool claimable = c.verdict.small || k.truth == Position::E || k.truth == Position::TE;
-    CHECK(c.verdict.position == (claimable ? k.truth : Position::Unclassified));
+    CHECK(c.verdict.position == k.truth);
     if (c.verdict.meets()) CHECK(*c.verdict.meets() == truth_has_contact(k.truth));
   }
   // The kernel test on rational multiple roots (small pairs; for TE at any size on the tangency).
@@ -549,8 +556,10 @@ TEST_CASE("differential: adaptive vs exact vs certified MPFR roots vs constructi
             << " not small; answers I/TI/C/TE/E/unclassified = " << s.by_position[0] << "/" << s.by_position[1] << "/"
             << s.by_position[2] << "/" << s.by_position[3] << "/" << s.by_position[4] << "/" << s.by_position[5]
             << std::endl;
-  // Every answer occurs, and the independent method decides most generic cases.
-  for (int k = 0; k < 6; ++k) CHECK(s.by_position[k] > 20 / n);
+  // Every position occurs, none is left unclassified, and the independent method decides most
+  // generic cases.
+  for (int k = 0; k < 5; ++k) CHECK(s.by_position[k] > 20 / n);
+  CHECK(s.by_position[static_cast<int>(Position::Unclassified)] == 0);
   CHECK(s.certified * 3 > s.cases);
   CHECK(s.truth * 2 > s.cases);
 }
