@@ -27,6 +27,7 @@
 
 #include "../tests/support/construct.hpp"
 #include "../tests/support/oracles.hpp"
+#include "../tests/support/secular.hpp"
 
 namespace relpos_fuzz {
 
@@ -424,18 +425,25 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
   if (c.verdict.sign_disc_f == 0)
     expect(c.verdict.stage == relpos::Stage::ExactRoots || c.verdict.stage == relpos::Stage::MultipleRootWitness,
            what + ": Disc(f) = 0 decided by a filter");
-  // Beyond smallness only E and TE are claimed (math.md section 6); contact only when certain.
-  if (!c.verdict.small)
-    expect(c.verdict.position == Position::E || c.verdict.position == Position::TE ||
-               c.verdict.position == Position::Unclassified,
-           what + ": not small but position " + name(c.verdict.position));
+  // Every valid pair gets I, TI, C, TE or E whatever its size, with contact decided (math.md section 8).
+  expect(c.verdict.position != Position::Unclassified, what + ": unclassified");
+  expect(c.verdict.meets().has_value(), what + ": contact undecided");
+  const bool meets = c.verdict.position == Position::TI || c.verdict.position == Position::C ||
+                     c.verdict.position == Position::TE;
+  if (c.verdict.meets()) expect(*c.verdict.meets() == meets, what + ": contact flag differs from the position");
   if (b.truth_known) {
-    const Position want =
-        c.verdict.small || b.truth == Position::E || b.truth == Position::TE ? b.truth : Position::Unclassified;
+    expect(c.verdict.position == b.truth,
+           what + ": position " + name(c.verdict.position) + ", construction says " + name(b.truth));
+  } else if (!c.verdict.small) {
+    // No construction truth: the independent secular oracle decides (any size).
+    Position want = Position::Unclassified;
+    try {
+      want = relpos::testing::secular_position(e, p);
+    } catch (const std::logic_error& err) {
+      expect(false, what + ": the secular oracle found a structural failure: " + err.what());
+    }
     expect(c.verdict.position == want,
-           what + ": position " + name(c.verdict.position) + ", construction says " + name(want));
-    const bool contact = b.truth == Position::TI || b.truth == Position::C || b.truth == Position::TE;
-    if (c.verdict.meets()) expect(*c.verdict.meets() == contact, what + ": wrong contact flag");
+           what + ": position " + name(c.verdict.position) + ", secular oracle says " + name(want));
   }
   // The independent tangency test on every rational multiple root (small pairs; math.md section 3).
   if (c.verdict.small)
