@@ -134,7 +134,9 @@ std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::o
   if (c == DiscriminantCase::Undecided) return std::nullopt;
   if (discriminant_case_needs_rho(c) && !rho_vs_one) return std::nullopt;
   // TwoPositive is E before the table looks at smallness (any size), so any rho gives the same.
-  return table.v[static_cast<int>(c)][(rho_vs_one ? *rho_vs_one : 1) + 1];
+  const Verdict& v = table.v[static_cast<int>(c)][(rho_vs_one ? *rho_vs_one : 1) + 1];
+  if (v.rule == Rule::None) return std::nullopt;  // not small, all negative: the gap test decides (section 8)
+  return v;
 }
 
 namespace {

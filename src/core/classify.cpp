@@ -145,12 +145,12 @@ void decide(Verdict& v) {
     }
     return;  // undecided: the gap test, or a pattern the theorem excludes (decide_any_size reports it)
   }
+  if (v.nonreal_multiple == 0 && v.nonreal_roots == 0) {  // any size (math.md section 6, Wang-Wang-Kim)
+    if (tangencies == 1 && v.tangent_positive == 1) return set(Position::TE, 1, Rule::PositiveMultipleRoot);
+    if (tangencies == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
+  }
   if (!v.small || v.nonreal_multiple > 0) return;  // section 8, exactly (decide_any_size)
-  // Small pairs with a multiple root: the table of math.md section 3.
-  if (tangencies == 1 && v.tangent_positive == 1 && v.nonreal_roots == 0)
-    return set(Position::TE, 1, Rule::PositiveMultipleRoot);
-  if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 2)
-    return set(Position::E, 0, Rule::TwoPositiveRoots);
+  // Small pairs with a multiple root: the rest of the table of math.md section 3.
   if (tangencies == 0 && v.nonreal_roots == 2 && v.positive_roots == 0)
     return set(Position::C, 1, Rule::NonRealPairCrossing);
   if (tangencies == 1 && v.tangent_negative == 1 && v.nonreal_roots == 0 && v.positive_roots == 0)
