@@ -19,6 +19,7 @@
 #include "filters/running_bound.hpp"
 #include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"
+#include "forms/forms.hpp"
 
 namespace relpos {
 
@@ -186,113 +187,11 @@ void decide_any_size(const Quartic<Integer>& f, const Quadratic<Integer>& s, Ver
 }
 
 using detail::rounding_to_nearest;
-
-/// Matrix view with entries converted to NT, for the generic pencil code.
-template <class NT>
-struct MatrixOf {
-  std::array<NT, 16> a;
-  const NT& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
-};
-
-using Interval = CGAL::Interval_nt<false>;
-
-/// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
-/// (guards interval overflow and underflow; a positive scaling of either matrix changes no decision,
-/// math.md section 1): a point interval times a power of two encloses the scaled entry even if the
-/// product underflows.
-MatrixOf<Interval> to_intervals(const DoubleMatrix4& m) {
-  double mx = 0;
-  for (double x : m) mx = std::max(mx, std::fabs(x));
-  int e = 0;
-  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
-  const Interval scale(std::ldexp(1.0, -e));
-  MatrixOf<Interval> out;
-  for (std::size_t i = 0; i < 16; ++i) out.a[i] = Interval(m[i]) * scale;
-  return out;
-}
-
-/// Enclosures of the entries of m scaled by 2^k (largest near 1) without rational temporaries:
-/// mpq_get_d truncates towards zero, so q lies between v and the next double away from zero (or
-/// within one subnormal step when v is tiny); the interval product with 2^k is exact or rounded
-/// outwards. CGAL::to_interval on a scaled copy cost several microseconds per pair in allocations.
-MatrixOf<Interval> to_intervals(const Matrix4& m) {
-  std::array<double, 16> v;
-  double mx = 0;
-  for (std::size_t i = 0; i < 16; ++i) {
-    v[i] = mpq_get_d(m.a[i].mpq());
-    mx = std::max(mx, std::fabs(v[i]));
-  }
-  int e = 0;
-  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
-  const Interval scale(std::ldexp(1.0, -e));
-  MatrixOf<Interval> out;
-  for (std::size_t i = 0; i < 16; ++i) {
-    const double x = v[i];
-    const mpq_srcptr q = m.a[i].mpq();
-    if (mpq_sgn(q) == 0) {
-      out.a[i] = Interval(0);
-      continue;
-    }
-    const mp_bitcnt_t den_bits = mpz_sizeinbase(mpq_denref(q), 2);
-    if (mpz_sizeinbase(mpq_numref(q), 2) <= 53 && mpz_scan1(mpq_denref(q), 0) == den_bits - 1 &&
-        std::fabs(x) >= DBL_MIN) {  // a double (53-bit numerator over a power of two): exact
-      out.a[i] = Interval(x) * scale;
-    } else if (std::fabs(x) >= DBL_MIN && std::isfinite(x)) {
-      const double next = std::nextafter(x, x > 0 ? HUGE_VAL : -HUGE_VAL);  // away from zero
-      out.a[i] = Interval(std::min(x, next), std::max(x, next)) * scale;
-    } else if (std::isfinite(x)) {  // |q| below DBL_MIN
-      out.a[i] = Interval(x - DBL_TRUE_MIN, x + DBL_TRUE_MIN) * scale;
-    } else {  // beyond the double range: no information
-      out.a[i] = Interval::largest();
-    }
-  }
-  return out;
-}
-
-/// Both matrices times the same positive integer (lcm of all denominators): f and s are scaled by
-/// positive constants and keep their roots. The form of the reported evidence (exact f, s, roots).
-std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, const Matrix4& e, Integer& scale) {
-  Integer l(1);
-  for (const auto* m : {&p, &e})
-    for (const auto& q : m->a) mpz_lcm(l.mpz(), l.mpz(), q.denominator().mpz());
-  scale = l;
-  MatrixOf<Integer> pi, ei;
-  for (std::size_t i = 0; i < 16; ++i) {
-    pi.a[i] = p.a[i].numerator() * (l / p.a[i].denominator());
-    ei.a[i] = e.a[i].numerator() * (l / e.a[i].denominator());
-  }
-  return {pi, ei};
-}
-
-/// The smallest integer form the *decisions* need (not the evidence: the roots move). With
-/// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive
-/// alpha, beta clearing the remaining denominators of D E D and D P D:
-///   det(lambda beta DPD + alpha DED) = t^2 alpha^4 f(beta lambda / alpha),
-///   det(lambda beta A + alpha M)     = alpha^3 s(beta lambda / alpha),
-/// so every root of f and s is multiplied by the same alpha / beta > 0: signs, multiplicities,
-/// common roots and rho (invariant under congruences and positive scalings, math.md section 1) are
-/// unchanged. A centre with 50-bit denominators then costs entries of about 100 bits, not the
-/// 200 to 400 bits of one common lcm, and every exact sign after it is that much cheaper.
-std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix4& p, const Matrix4& e) {
-  Integer t(1);
-  for (const auto* m : {&p, &e})
-    for (int i = 0; i < 3; ++i) mpz_lcm(t.mpz(), t.mpz(), (*m)(i, 3).denominator().mpz());
-  const Rational tq(t), t2(t * t);
-  auto form = [&](const Matrix4& m) {
-    Matrix4 c;
-    Integer l(1);
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        const Rational& x = m(i, j);
-        c(i, j) = (i == 3 && j == 3) ? x * t2 : (i == 3 || j == 3) ? x * tq : x;
-        mpz_lcm(l.mpz(), l.mpz(), c(i, j).denominator().mpz());
-      }
-    MatrixOf<Integer> out;
-    for (std::size_t i = 0; i < 16; ++i) out.a[i] = c.a[i].numerator() * (l / c.a[i].denominator());
-    return out;
-  };
-  return {form(p), form(e)};
-}
+using forms::Interval;
+using forms::MatrixOf;
+using forms::to_compact_integers;
+using forms::to_integers;
+using forms::to_intervals;
 
 /// The signs of every decision quantity, evaluated in NT (intervals or exact integers).
 template <class NT>

@@ -1,4 +1,5 @@
 #include "filters/multiple_roots.hpp"
+#include "forms/forms.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,11 +16,7 @@ using Int = CheckedInt::Int;
 // ---------------------------------------------------------------------------------------------
 // Exact integer matrices from exact doubles.
 
-template <class NT>
-struct MatrixOf {
-  std::array<NT, 16> a;
-  const NT& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
-};
+using forms::MatrixOf;
 
 /// m scaled by the power of two that makes every entry an integer with an odd entry somewhere
 /// (exact: the bits are read directly, no libm call). Returns the largest bit length of an entry,

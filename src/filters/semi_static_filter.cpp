@@ -8,6 +8,7 @@
 
 #include "core/smallness.hpp"
 #include "filters/running_bound.hpp"
+#include "forms/forms.hpp"
 
 namespace relpos {
 namespace {
@@ -19,14 +20,7 @@ namespace {
 using Lanes = RunningBoundLanes;
 
 template <class NT>
-struct View {
-  std::array<NT, 16> a;
-  View() = default;
-  explicit View(const DoubleMatrix4& m) {
-    for (std::size_t i = 0; i < 16; ++i) a[i] = NT(m[i]);  // exact inputs
-  }
-  const NT& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
-};
+using View = forms::MatrixOf<NT>;
 
 constexpr int kQuantities = 13;           // f0..f4, g2[0..2], g1[0..1], g0, vertex, graeffe
 constexpr double kEntryFloor = 0x1p-60;   // smallest non-zero |entry| accepted (degree 4: >= 2^-240)
@@ -44,7 +38,7 @@ bool evaluate(const DoubleMatrix4& pn, const DoubleMatrix4& en, NT out[kQuantiti
   for (const DoubleMatrix4* m : {&pn, &en})
     for (double x : *m)
       if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return false;
-  return evaluate(View<NT>(pn), View<NT>(en), out);
+  return evaluate(forms::converted<NT>(pn), forms::converted<NT>(en), out);
 }
 
 template <class NT>
@@ -138,8 +132,8 @@ const std::array<int, kQuantities>& counts_translated() {
     View<RunningBound> moved;
     RunningBound q[kQuantities];
     std::array<int, kQuantities> r{};
-    if (!translate(View<RunningBound>(one), {0.25, 0.25, 0.25}, moved) ||
-        !evaluate(View<RunningBound>(one), moved, q)) {
+    if (!translate(forms::converted<RunningBound>(one), {0.25, 0.25, 0.25}, moved) ||
+        !evaluate(forms::converted<RunningBound>(one), moved, q)) {
       r.fill(1 << 20);  // cannot happen for these inputs; if it did, certify nothing
       return r;
     }
@@ -213,7 +207,7 @@ DecisionSigns semi_static_filter_signs_translated(const DoubleMatrix4& pn, const
     if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return DecisionSigns{};
   View<Lanes> moved;
   Lanes q[kQuantities];
-  if (!translate(View<Lanes>(en), d, moved) || !evaluate(View<Lanes>(pn), moved, q)) return DecisionSigns{};
+  if (!translate(forms::converted<Lanes>(en), d, moved) || !evaluate(forms::converted<Lanes>(pn), moved, q)) return DecisionSigns{};
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], counts[static_cast<std::size_t>(i)]);
   return assemble(c);

@@ -1,4 +1,5 @@
 #include "filters/static_filter.hpp"
+#include "forms/forms.hpp"
 
 #include <CGAL/Filtered_kernel/internal/Static_filters/Static_filter_error.h>
 
@@ -144,11 +145,7 @@ DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4&
 
 namespace {
 
-/// View of a normalized DoubleMatrix4 for the generic pencil code (no copy).
-struct View {
-  const DoubleMatrix4& a;
-  const double& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
-};
+using View = forms::DoubleView;
 
 }  // namespace
 

@@ -1,5 +1,7 @@
 #include "relpos/motion.hpp"
 
+#include "forms/forms.hpp"
+
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Polynomial.h>
@@ -28,10 +30,7 @@ using AK = CGAL::Algebraic_kernel_d_1<Integer>;
 using Alg = AK::Algebraic_real_1;
 
 /// Matrix view for the generic pencil code (pencil.hpp) with entries in Z[t].
-struct MatZ {
-  std::array<PolyZ, 16> a;
-  const PolyZ& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
-};
+using MatZ = forms::MatrixOf<PolyZ>;
 
 /// lcm of l and d, into a fresh object (Gmpz shares representations).
 Integer lcm(const Integer& l, const Integer& d) {

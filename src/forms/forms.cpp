@@ -1,0 +1,89 @@
+#include "forms/forms.hpp"
+
+#include <gmp.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+namespace relpos::forms {
+
+MatrixOf<Interval> to_intervals(const DoubleMatrix4& m) {
+  double mx = 0;
+  for (double x : m) mx = std::max(mx, std::fabs(x));
+  int e = 0;
+  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
+  const Interval scale(std::ldexp(1.0, -e));
+  MatrixOf<Interval> out;
+  for (std::size_t i = 0; i < 16; ++i) out.a[i] = Interval(m[i]) * scale;
+  return out;
+}
+
+MatrixOf<Interval> to_intervals(const Matrix4& m) {
+  std::array<double, 16> v;
+  double mx = 0;
+  for (std::size_t i = 0; i < 16; ++i) {
+    v[i] = mpq_get_d(m.a[i].mpq());
+    mx = std::max(mx, std::fabs(v[i]));
+  }
+  int e = 0;
+  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
+  const Interval scale(std::ldexp(1.0, -e));
+  MatrixOf<Interval> out;
+  for (std::size_t i = 0; i < 16; ++i) {
+    const double x = v[i];
+    const mpq_srcptr q = m.a[i].mpq();
+    if (mpq_sgn(q) == 0) {
+      out.a[i] = Interval(0);
+      continue;
+    }
+    const mp_bitcnt_t den_bits = mpz_sizeinbase(mpq_denref(q), 2);
+    if (mpz_sizeinbase(mpq_numref(q), 2) <= 53 && mpz_scan1(mpq_denref(q), 0) == den_bits - 1 &&
+        std::fabs(x) >= DBL_MIN) {  // a double (53-bit numerator over a power of two): exact
+      out.a[i] = Interval(x) * scale;
+    } else if (std::fabs(x) >= DBL_MIN && std::isfinite(x)) {
+      const double next = std::nextafter(x, x > 0 ? HUGE_VAL : -HUGE_VAL);  // away from zero
+      out.a[i] = Interval(std::min(x, next), std::max(x, next)) * scale;
+    } else if (std::isfinite(x)) {  // |q| below DBL_MIN
+      out.a[i] = Interval(x - DBL_TRUE_MIN, x + DBL_TRUE_MIN) * scale;
+    } else {  // beyond the double range: no information
+      out.a[i] = Interval::largest();
+    }
+  }
+  return out;
+}
+
+std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, const Matrix4& e, Integer& scale) {
+  Integer l(1);
+  for (const auto* m : {&p, &e}) lcm_of_denominators(m->a.begin(), m->a.end(), l);
+  scale = l;
+  MatrixOf<Integer> pi, ei;
+  for (std::size_t i = 0; i < 16; ++i) {
+    pi.a[i] = p.a[i].numerator() * (l / p.a[i].denominator());
+    ei.a[i] = e.a[i].numerator() * (l / e.a[i].denominator());
+  }
+  return {pi, ei};
+}
+
+std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix4& p, const Matrix4& e) {
+  Integer t(1);
+  for (const auto* m : {&p, &e})
+    for (int i = 0; i < 3; ++i) mpz_lcm(t.mpz(), t.mpz(), (*m)(i, 3).denominator().mpz());
+  const Rational tq(t), t2(t * t);
+  auto form = [&](const Matrix4& m) {
+    Matrix4 c;
+    Integer l(1);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const Rational& x = m(i, j);
+        c(i, j) = (i == 3 && j == 3) ? x * t2 : (i == 3 || j == 3) ? x * tq : x;
+        mpz_lcm(l.mpz(), l.mpz(), c(i, j).denominator().mpz());
+      }
+    MatrixOf<Integer> out;
+    for (std::size_t i = 0; i < 16; ++i) out.a[i] = c.a[i].numerator() * (l / c.a[i].denominator());
+    return out;
+  };
+  return {form(p), form(e)};
+}
+
+}  // namespace relpos::forms

@@ -1,0 +1,70 @@
+// Exact forms of a quadric's matrix: the one matrix view the generic formulas read, and the
+// conversions every stage needs -- double enclosures for the interval stage, the common-lcm integer
+// form of the reported evidence, and the compact integer form of the exact decisions (math.md,
+// "Certifying a sign in floating point, and the exact form"). Computed here once, for every caller.
+#pragma once
+
+#include <CGAL/Interval_nt.h>
+
+#include <array>
+#include <cstddef>
+#include <utility>
+
+#include "relpos/numbers.hpp"
+#include "relpos/quadric.hpp"
+
+namespace relpos::forms {
+
+/// Matrix view with entries converted to NT, for the generic pencil code (m(i, j), row-major).
+template <class NT>
+struct MatrixOf {
+  std::array<NT, 16> a;
+  const NT& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+};
+
+/// The entries of a matrix of exact doubles in NT (exact conversions).
+template <class NT>
+MatrixOf<NT> converted(const DoubleMatrix4& m) {
+  MatrixOf<NT> out;
+  for (std::size_t i = 0; i < 16; ++i) out.a[i] = NT(m[i]);
+  return out;
+}
+
+/// A DoubleMatrix4 read in place (no copy): the static filter's hot path.
+struct DoubleView {
+  const DoubleMatrix4& a;
+  const double& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+};
+
+using Interval = CGAL::Interval_nt<false>;
+
+/// The lcm of the denominators of a range of rationals, folded into `l` (one loop for every caller).
+template <class It>
+void lcm_of_denominators(It first, It last, Integer& l) {
+  for (; first != last; ++first) mpz_lcm(l.mpz(), l.mpz(), first->denominator().mpz());
+}
+
+/// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
+/// (guards interval overflow and underflow; a positive scaling of either matrix changes no decision,
+/// math.md section 1): a point interval times a power of two encloses the scaled entry even if the
+/// product underflows. Call with the rounding mode towards +inf (CGAL::Protect_FPU_rounding).
+MatrixOf<Interval> to_intervals(const DoubleMatrix4& m);
+
+/// Enclosures of the entries of m scaled by 2^k (largest near 1) without rational temporaries
+/// (mpq_get_d truncates towards zero, so q lies between v and the next double away from zero).
+MatrixOf<Interval> to_intervals(const Matrix4& m);
+
+/// Both matrices times the same positive integer (lcm of all denominators, returned in `scale`): f
+/// and s are scaled by positive constants and keep their roots. The form of the reported evidence.
+std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, const Matrix4& e, Integer& scale);
+
+/// The smallest integer form the *decisions* need (not the evidence: the roots move). With
+/// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive
+/// alpha, beta clearing the remaining denominators of D E D and D P D:
+///   det(lambda beta DPD + alpha DED) = t^2 alpha^4 f(beta lambda / alpha),
+///   det(lambda beta A + alpha M)     = alpha^3 s(beta lambda / alpha),
+/// so every root of f and s is multiplied by the same alpha / beta > 0: signs, multiplicities,
+/// common roots and rho are unchanged, with far smaller integers than one common lcm.
+std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix4& p, const Matrix4& e);
+
+}  // namespace relpos::forms
