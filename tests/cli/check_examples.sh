@@ -4,12 +4,16 @@
 # Usage: tests/cli/check_examples.sh PATH/TO/relpos REPO_ROOT
 #
 # The expected answer of each input line comes from, in this order:
-#   1. its "id", when it is a string starting with I-, TI-, C-, TE-, E-, U- (unclassified) or ERR-;
-#   2. its "comment", when it reads "expect: POS" (POS one of I, TI, C, TE, E, U, ERR);
+#   1. its "id", when it is a string starting with I-, TI-, C-, TE-, E- or ERR-;
+#   2. its "comment", when it reads "expect: POS" (POS one of I, TI, C, TE, E, ERR);
 #   3. an error, when the line is blank, is not valid JSON or is not a JSON object.
 # A line with none of these is itself a failure (every example must state its answer).
 # The output must have exactly one line per input line, in order: the output id must be the input
 # id, or the 1-based line number when the input has none (or cannot be read).
+# Every valid pair has one of the five positions whatever its size (math.md section 8): there is no
+# "unclassified" answer any more, so an id prefix U- is no expectation.
+# The batch output is then handed to `relpos verify`: every certificate must verify (error lines of
+# invalid input are skipped), and the numbers of verified and skipped lines must add up.
 # Exits 0 when everything matches, 1 on any mismatch, 2 on a usage error or a failed run.
 set -u
 
@@ -52,7 +56,7 @@ with open(output_path, encoding="utf-8") as f:
 if outputs and outputs[-1] == "":
     outputs.pop()
 
-PREFIXES = {"I": "I", "TI": "TI", "C": "C", "TE": "TE", "E": "E", "U": "unclassified", "ERR": "error"}
+PREFIXES = {"I": "I", "TI": "TI", "C": "C", "TE": "TE", "E": "E", "ERR": "error"}
 
 
 def reject_constant(name):
@@ -122,6 +126,23 @@ print(f"examples: {passed} passed, {failed} failed")
 sys.exit(0 if failed == 0 and not problems else 1)
 PY
 rc=$?
+
+# The certificates of the batch output, checked by the independent exact verifier.
+verify_out=$("$relpos" verify "$input" "$output" 2>&1)
+vrc=$?
+echo "$verify_out" | tail -n 20
+if [ $vrc -ne 0 ]; then
+  echo "FAIL relpos verify exited with status $vrc"
+  rc=1
+else
+  total=$(wc -l <"$input")
+  errors=$(grep -c '"error"' "$output")
+  summary=$(echo "$verify_out" | tail -n 1)
+  if [ "$summary" != "verified $((total - errors)), failed 0, skipped $errors" ]; then
+    echo "FAIL relpos verify summary '$summary', expected 'verified $((total - errors)), failed 0, skipped $errors'"
+    rc=1
+  fi
+fi
 
 # The same input with --contact-only: one line per input line, in order, and the contact each
 # expected position implies (I, E: none; TI, TE: touching; C: crossing; errors stay errors).

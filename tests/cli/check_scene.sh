@@ -5,7 +5,7 @@
 # Usage: tests/cli/check_scene.sh PATH/TO/relpos REPO_ROOT
 #
 # Expected answers (doc/cli.md, "relpos scene"):
-#   JSONL: the "id" when it is a string starting with I-, TI-, C-, TE-, E-, U- (unclassified) or ERR-,
+#   JSONL: the "id" when it is a string starting with I-, TI-, C-, TE-, E- or ERR-,
 #          else a "comment" reading "expect: POS"; lines that are blank or not JSON objects: error.
 #          The output id is the input id, or the 1-based line number when there is none.
 #   CSV:   the first field when it starts with one of those prefixes, else a preceding comment line
@@ -51,7 +51,7 @@ import json
 import sys
 
 ext, input_path, output_path, err_path = sys.argv[1:]
-PREFIXES = {"I": "I", "TI": "TI", "C": "C", "TE": "TE", "E": "E", "U": "unclassified", "ERR": "error"}
+PREFIXES = {"I": "I", "TI": "TI", "C": "C", "TE": "TE", "E": "E", "ERR": "error"}
 with open(input_path, encoding="utf-8") as f:
     inputs = f.read().split("\n")
 if inputs and inputs[-1] == "":

@@ -124,7 +124,7 @@ add(line("subnormal-string", pair('{"sphere": {"center": [0, 0, "1"], "radius": 
 add(line("max-double", pair('{"sphere": {"center": [0, 0, 1.7976931348623157e308], "radius": "1/4"}}')),
     "max-double", "position", "I")
 add(line("max-double-alone", pair('{"sphere": {"center": [0, 0, 1.7976931348623157e308], "radius": 8.98846567431158e307}}')),
-    "max-double-alone", "position", "unclassified")
+    "max-double-alone", "position", "C")
 # --- wrong shapes
 add(line("matrix-3x3", pair(matrix([[1, 0, 0], [0, 1, 0], [0, 0, 1]]))), "matrix-3x3", "error", "4x4")
 add(line("matrix-4x5", pair(matrix([[1, 0, 0, 0, 0], [0, 1, 0, 0, 0], [0, 0, 1, 0, 0], [0, 0, 0, -1, 0]]))),
