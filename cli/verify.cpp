@@ -1,5 +1,5 @@
 // relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]: checks every certificate of a `relpos batch`
-// output against its input with the independent verifier (include/relpos/certificate.hpp).
+// output against its input with the independent verifier (include/relpos/classify.hpp, "Certificates").
 //
 // Line N of ANSWERS answers line N of INPUT. An answer with "error" is skipped when its input line is
 // not a valid pair, and counted as unanswered when it is. Prints `line N: <reason>` per failure
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "relpos/certificate.hpp"
+#include "relpos/io.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"

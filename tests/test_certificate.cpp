@@ -1,9 +1,9 @@
-// certificate.hpp: the independent verifier and the JSON form of certificates. Every case is built by
+// The certificates (classify.hpp): the independent verifier and the JSON form of certificates. Every case is built by
 // hand (spheres against z = x^2 + y^2, where the pencil lambda P + E is block diagonal), the true
 // certificate must be accepted and tampered variants rejected.
 #include <catch2/catch.hpp>
 #include <optional>
-#include <relpos/certificate.hpp>
+#include <relpos/io.hpp>
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
 #include <relpos/io.hpp>

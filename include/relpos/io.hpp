@@ -83,3 +83,23 @@ inline constexpr std::size_t kMaxPairBits = 4096;
 void check_pair_size(const Ellipsoid& e, const Paraboloid& p);
 
 }  // namespace relpos::io
+
+namespace relpos {
+
+/// The JSON form of a certificate (doc/certificates.md): numbers as exact strings ("3/4", "-2").
+///   None         null
+///   Definite     {"lambda": q}
+///   Tangent      {"lambda": q, "contact": [x, y, z]}
+///   HardTangent  {"lambda": {"a": q, "b": q, "d": n},
+///                 "contact_set": {"center": [{"a", "b"} x3], "directions": [[{"a", "b"} x3], ...],
+///                                 "radius2": {"a", "b"},
+///                                 "decimal": {"lambda", "center": [3], "radius2"}}}
+///   Crossing     {"inside": [x, y, z], "outside": [x, y, z]}
+/// "decimal" holds `digits` significant digits for humans and is ignored by certificate_from_json.
+nlohmann::ordered_json certificate_to_json(const Certificate& c, int digits = 12);
+/// The inverse of certificate_to_json (numbers also accepted as JSON numbers, read exactly). Throws
+/// relpos::InputError naming the field on malformed input (unknown or missing keys, wrong types,
+/// non-numbers, d not a non-negative integer).
+Certificate certificate_from_json(const nlohmann::ordered_json& j);
+
+}  // namespace relpos

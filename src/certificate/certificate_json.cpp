@@ -1,4 +1,4 @@
-// Certificates as JSON (include/relpos/certificate.hpp): exact strings out, exact numbers in.
+// Certificates as JSON (include/relpos/classify.hpp, "Certificates"): exact strings out, exact numbers in.
 #include <gmp.h>
 
 #include <cstddef>
@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "relpos/certificate.hpp"
+#include "relpos/io.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 

@@ -558,7 +558,7 @@ Json classification_to_json(const Classification& c, const RenderOptions& option
 
 namespace {
 
-/// One line saying what the certificate is and why it proves the position (certificate.hpp).
+/// One line saying what the certificate is and why it proves the position (classify.hpp, "Certificates").
 std::string certificate_text(const Certificate& c) {
   switch (c.kind) {
     case Certificate::Kind::Definite:
