@@ -155,8 +155,6 @@ class ExteriorTracker {
   int rho_vs_one_ = 0;
   double det_lo_ = 0, det_hi_ = 0;  ///< enclosure of -det E of the reference (> 0)
   bool ratio_ok_ = false;           ///< rho_ref is farther than the slack from 1
-  double adj_[6] = {}, det_m_ = 0;  ///< adj(M) and det M of the reference in double (exact when M is)
-  bool adj_exact_ = false;
   std::optional<Position> last_;
   Counts counts_;
 };
