@@ -6,6 +6,8 @@
 // Tags: [secular] [sampling] are fast; [anysize] runs the classifier (fails until section 8 is implemented in
 // classify) and includes the 2000 random pairs ([random], a few seconds in Release).
 #include <catch2/catch.hpp>
+
+#include "support/seed.hpp"
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -35,12 +37,7 @@ using rt::Q;
 namespace {
 
 std::uint64_t run_seed() {
-  static const std::uint64_t seed = [] {
-    const char* env = std::getenv("RELPOS_SEED");
-    const std::uint64_t s = env && *env ? std::strtoull(env, nullptr, 0) : 20250111ULL;
-    std::cout << "test_any_size: seed " << s << " (set RELPOS_SEED to rerun or vary it)" << std::endl;
-    return s;
-  }();
+  static const std::uint64_t seed = relpos::testing::announced_seed("test_any_size", 20250111ULL);
   return seed;
 }
 

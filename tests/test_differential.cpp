@@ -17,6 +17,8 @@
 //
 // The seed is printed; RELPOS_SEED=<n> reruns or varies it.
 #include <catch2/catch.hpp>
+
+#include "support/seed.hpp"
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -44,12 +46,7 @@ using relpos::testing::secular_position;
 namespace {
 
 std::uint64_t run_seed() {
-  static const std::uint64_t seed = [] {
-    const char* env = std::getenv("RELPOS_SEED");
-    const std::uint64_t s = env && *env ? std::strtoull(env, nullptr, 0) : 20240611ULL;
-    std::cout << "test_differential: seed " << s << " (set RELPOS_SEED to rerun or vary it)" << std::endl;
-    return s;
-  }();
+  static const std::uint64_t seed = relpos::testing::announced_seed("test_differential", 20240611ULL);
   return seed;
 }
 

@@ -3,6 +3,8 @@
 // settle what the static bound cannot. Exact signs come from the same generic formulas on exact
 // rationals of the same (power-of-two normalized) matrices.
 #include <catch2/catch.hpp>
+
+#include "support/seed.hpp"
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -26,10 +28,7 @@ using relpos::USign;
 
 namespace {
 
-std::uint64_t seed_from_env(std::uint64_t fallback) {
-  if (const char* s = std::getenv("RELPOS_SEED")) return std::strtoull(s, nullptr, 10);
-  return fallback;
-}
+using relpos::testing::seed_from_env;
 
 /// The 13 signs in a fixed order: f0..f4, g2[0..2], g1[0..1], g0, vertex, graeffe.
 std::array<USign, 13> flatten(const DecisionSigns& d) {

@@ -3,6 +3,8 @@
 // known factorisations; and the adaptive classifier on exactly degenerate double inputs (tangencies
 // and special double roots under random dyadic affine maps) against classify_exact.
 #include <catch2/catch.hpp>
+
+#include "support/seed.hpp"
 #include <cstdlib>
 #include <iostream>
 
@@ -24,10 +26,7 @@ using relpos::Verdict;
 
 namespace {
 
-std::uint64_t seed_from_env(std::uint64_t fallback) {
-  if (const char* s = std::getenv("RELPOS_SEED")) return std::strtoull(s, nullptr, 10);
-  return fallback;
-}
+using relpos::testing::seed_from_env;
 
 /// Product of integer polynomials (index = power).
 std::vector<long long> mul(const std::vector<long long>& a, const std::vector<long long>& b) {
