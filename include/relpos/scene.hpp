@@ -1,4 +1,4 @@
-// Scenes: one elliptic paraboloid against many ellipsoids (issue 4; math.md section "Scenes").
+// Scenes: one elliptic paraboloid against many ellipsoids (math.md section "Scenes").
 //
 // Every body gets exactly the position decide_position() / classify_exact() give for the pair. A body
 // whose answer is cheap to prove is settled by a certified early-out: signs of polynomials in the

@@ -178,8 +178,8 @@ bool enclosed(const Matrix4& m, View<RunningBound>& out) {
       continue;
     }
     // Only a normal v has |q - v| < 2^-52 |v|; a subnormal one can be off by 2^-1074, a far larger
-    // relative error (found in review: a matrix with entries near 2^-1000 got a wrong certified
-    // sign). Such an entry is left to the interval stage.
+    // relative error, enough to certify a wrong sign for entries near 2^-1000 (doc/testing.md keeps
+    // the regression). Such an entry is left to the interval stage.
     if (!(std::fabs(v[i]) >= DBL_MIN)) return false;  // also catches an entry that truncated to 0
     const double x = v[i] * k;
     if (!(std::fabs(x) >= kEntryFloor)) return false;
