@@ -205,6 +205,13 @@ p = run(["motion", "--sphere", "0,0,0,1/4", "--standard-paraboloid", "1,2", "--t
          json.dumps([[0], [0], ["1/%d" % (3 ** 400)]]), "--t0", "0", "--t1", "1"])
 check("motion coefficient beyond the bit limit refused", p.returncode == 1 and b"bits" in p.stderr, p.stderr)
 
+p = run(["motion", "--ellipsoid", '{"center":[0,0,-1],"axes":["1/2",1,"1/4"]}', "--standard-paraboloid", "1,2",
+         "--translation", "[[0,0,-32,0,160,0,-256,0,128,0,0,0,1],[0,1,0,3,0,0,0,0,0,0,0,0,1],[0,0,0,0,0,0,0,0,0,0,0,7,3]]",
+         "--rotation", "[[1,0,0,5,0,0,0,0,0,0,0,0,1],[0,1,0,0,0,0,0,0,0,0,0,2],[],[0,0,3]]",
+         "--t0", "-1", "--t1", "1", "--max-seconds", "1"])
+check("motion beyond --max-seconds: a message and exit 5", p.returncode == 5 and b"time budget" in p.stderr,
+      (p.returncode, p.stderr))
+
 # --- help lists every command and option ---------------------------------------------------------
 h = run(["--help"]).stdout.decode()
 for word in ["classify", "batch", "scene", "motion", "verify", "--evidence", "--threads", "--numbers",
