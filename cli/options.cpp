@@ -87,18 +87,17 @@ nlohmann::ordered_json parse_inline(const std::string& text, const std::string& 
 }
 
 bool ShapeOptions::take(Args& args) {
+  const std::pair<const char*, std::optional<std::string>*> slots[] = {{"--ellipsoid", &ellipsoid},
+                                                                       {"--sphere", &sphere},
+                                                                       {"--paraboloid", &paraboloid},
+                                                                       {"--standard-paraboloid", &standard}};
   std::string v;
-  if (args.value("--ellipsoid", v))
-    ellipsoid = v;
-  else if (args.value("--sphere", v))
-    sphere = v;
-  else if (args.value("--paraboloid", v))
-    paraboloid = v;
-  else if (args.value("--standard-paraboloid", v))
-    standard = v;
-  else
-    return false;
-  return true;
+  for (const auto& [name, slot] : slots)
+    if (args.value(name, v)) {
+      *slot = v;
+      return true;
+    }
+  return false;
 }
 
 void ShapeOptions::check(bool need_ellipsoid) const {
