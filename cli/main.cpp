@@ -6,7 +6,10 @@
 //
 // Exit codes: 0 success (batch: every line answered, error lines included), 1 input error
 // (classify), 2 usage error, 3 I/O error, 4 internal error.
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <exception>
 #include <fstream>
@@ -15,32 +18,25 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <utility>
 #include <vector>
 
-#include "motion.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "options.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
-/// `relpos scene` (cli/scene.cpp): exit code; handles its own usage errors.
-int run_scene_command(const std::vector<std::string>& args);
-int run_verify(int argc, char** argv);  // `relpos verify` (cli/verify.cpp)
-
 #ifndef RELPOS_VERSION
 #define RELPOS_VERSION "unknown"
 #endif
 
-namespace {
+namespace relpos_cli {
 
 using Json = nlohmann::ordered_json;
-
-constexpr int kExitOk = 0;
-constexpr int kExitInput = 1;
-constexpr int kExitUsage = 2;
-constexpr int kExitIo = 3;
-constexpr int kExitInternal = 4;
 
 constexpr const char* kExitCodes =
     "Exit codes:\n"
@@ -49,7 +45,10 @@ constexpr const char* kExitCodes =
     "     elliptic paraboloid)\n"
     "  2  usage error (unknown command or option, missing or conflicting options)\n"
     "  3  I/O error (cannot open or read the input file, cannot write the output)\n"
-    "  4  internal error (an unexpected exception)\n";
+    "  4  internal error (an unexpected exception)\n"
+    "  5  time budget exceeded (motion --max-seconds)\n";
+
+namespace {
 
 void print_main_help(std::ostream& os) {
   os << "relpos " RELPOS_VERSION
@@ -57,7 +56,7 @@ void print_main_help(std::ostream& os) {
         "\n"
         "Usage:\n"
         "  relpos classify --ellipsoid Q --paraboloid Q [--digits N] [--json]\n"
-        "  relpos batch [FILE|-] [--digits N]\n"
+        "  relpos batch [FILE|-] [--digits N] [--evidence full|minimal] [--threads N] ...\n"
         "  relpos scene (--paraboloid Q | --standard-paraboloid A,B) [FILE|-] [options]\n"
         "  relpos motion (--ellipsoid Q | --sphere ..) (--paraboloid Q | ..) [--translation P3] [--rotation P4] ...\n"
         "  relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]   (check the certificates of a batch output)\n"
@@ -70,7 +69,16 @@ void print_main_help(std::ostream& os) {
         "such as \"92281/129600\" or \"1.5e-7\" are accepted anywhere a number is. See doc/cli.md.\n"
         "\n"
      << kExitCodes;
+  // Every command with every option (the same text as `relpos COMMAND --help`).
+  void (*const helps[])(std::ostream&) = {print_classify_help, print_batch_help, print_scene_help, print_motion_help,
+                                          print_verify_help};
+  for (auto* help : helps) {
+    os << "\n----------------------------------------------------------------------------------------------\n";
+    help(os);
+  }
 }
+
+}  // namespace
 
 void print_classify_help(std::ostream& os) {
   os << "Usage: relpos classify (--ellipsoid Q | --sphere X,Y,Z,R)\n"
@@ -109,194 +117,71 @@ void print_classify_help(std::ostream& os) {
 }
 
 void print_batch_help(std::ostream& os) {
-  os << "Usage: relpos batch [FILE|-] [--digits N] [--contact-only]\n"
+  os << "Usage: relpos batch [FILE|-] [--digits N] [--contact-only] [--evidence full|minimal]\n"
+        "                    [--threads N] [--numbers exact|double] [--max-line-bytes N]\n"
         "\n"
         "Read JSON Lines from FILE (or standard input when FILE is '-' or absent), one pair per line:\n"
         "  {\"id\": ANY, \"ellipsoid\": Q, \"paraboloid\": Q, \"comment\": ANY}\n"
         "(Q as for `relpos classify --help`; \"id\" and \"comment\" are optional). Write JSON Lines to\n"
-        "standard output: exactly one line per input line, in order, flushed after each line:\n"
+        "standard output: exactly one line per input line, in input order; the output is flushed whenever\n"
+        "the input has nothing more ready (so interactive use is answered line by line):\n"
         "  {\"id\": ..., \"position\": \"I|TI|C|TE|E|unclassified\", \"small\": ..., \"contact\": ...,\n"
         "   \"rho_vs_one\": ..., \"rho\": ..., \"rho_approx\": ..., \"rule\": ..., \"stage\": ..., ...}\n"
         "or {\"id\": ..., \"error\": \"...\"} for a line that cannot be classified (blank lines included).\n"
-        "The id is echoed back; a missing id is replaced by the 1-based line number.\n"
+        "The id is echoed back byte for byte; a missing id is replaced by the 1-based line number.\n"
+        "Duplicate keys are errors; a UTF-8 byte order mark and CRLF line ends are accepted.\n"
         "\n"
         "Options:\n"
         "  --digits N       significant digits of root approximations (default 12, 1..1000)\n"
         "  --contact-only   answer {\"id\", \"contact\", \"position\", \"rule\", \"decided_by\"} only:\n"
         "                   contact is none, touching, crossing, meet or unknown (doc/contact.md)\n"
+        "  --evidence full|minimal   full (default): the whole report with its certificate;\n"
+        "                   minimal: id, position, small, contact, rule, stage\n"
+        "  --threads N      worker threads (default: all cores); output stays in input order\n"
+        "  --numbers exact|double    exact (default): decimals read exactly; double: each JSON\n"
+        "                   number is the IEEE double nearest its text (a float program's input)\n"
+        "  --max-line-bytes N        longest input line (default 67108864 = 64 MiB); a longer line\n"
+        "                   is answered with an error and the run goes on\n"
         "  -h, --help       this help\n"
         "\n"
      << kExitCodes;
 }
 
-struct UsageError {
-  std::string message;
-};
+namespace {
 
-/// Command-line options of one subcommand: "--name value" or "--name=value"; flags take no value.
-class Args {
- public:
-  explicit Args(std::vector<std::string> args) : args_(std::move(args)) {}
-  bool done() const { return pos_ >= args_.size(); }
-  const std::string& peek() const { return args_[pos_]; }
+/// --digits N of classify and batch.
+int parse_digits(const std::string& text) { return static_cast<int>(parse_count(text, "--digits", 1, 1000)); }
 
-  /// If the next argument is option `name`, consume it (and its value when `value` is non-null).
-  bool take(const char* name, std::string* value) {
-    const std::string& a = args_[pos_];
-    const std::string n(name);
-    if (a == n) {
-      ++pos_;
-      if (value) {
-        if (done()) throw UsageError{"option " + n + " needs a value"};
-        *value = args_[pos_++];
-      }
-      return true;
-    }
-    if (value && a.size() > n.size() && a.compare(0, n.size(), n) == 0 && a[n.size()] == '=') {
-      *value = a.substr(n.size() + 1);
-      ++pos_;
-      return true;
-    }
-    if (!value && a.size() > n.size() && a.compare(0, n.size(), n) == 0 && a[n.size()] == '=')
-      throw UsageError{"option " + n + " takes no value"};
-    return false;
-  }
-  std::string next() { return args_[pos_++]; }
-
- private:
-  std::vector<std::string> args_;
-  std::size_t pos_ = 0;
-};
-
-int parse_digits(const std::string& text) {
-  std::size_t used = 0;
-  long n = 0;
-  try {
-    n = std::stol(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || n < 1 || n > 1000)
-    throw UsageError{"--digits needs an integer from 1 to 1000, got '" + text + "'"};
-  return static_cast<int>(n);
-}
-
-void set_once(std::optional<std::string>& slot, const char* name, std::string value) {
-  if (slot) throw UsageError{std::string("option ") + name + " given twice"};
-  slot = std::move(value);
-}
-
-/// "a,b,c" -> exact numbers; `what` names the option in messages.
-std::vector<relpos::Rational> comma_numbers(const std::string& text, std::size_t count, const std::string& what) {
-  std::vector<std::string> parts(1);
-  for (char ch : text) {
-    if (ch == ',')
-      parts.emplace_back();
-    else
-      parts.back() += ch;
-  }
-  if (parts.size() != count)
-    throw relpos::InputError(what + ": expected " + std::to_string(count) + " comma-separated numbers, got " +
-                             std::to_string(parts.size()) + " in '" + text + "'");
-  std::vector<relpos::Rational> out;
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    try {
-      out.push_back(relpos::parse_rational(parts[i]));
-    } catch (const relpos::InputError& e) {
-      throw relpos::InputError(what + "[" + std::to_string(i) + "]: " + e.what());
-    }
-  }
-  return out;
-}
-
-Json parse_inline(const std::string& text, const std::string& role) {
-  try {
-    return relpos::io::parse_json_exact(text);
-  } catch (const relpos::InputError& e) {
-    throw relpos::InputError(role + ": " + e.what());
-  }
-}
-
-void write_json_line(const Json& j) {
-  std::cout << j.dump(-1, ' ', false, Json::error_handler_t::replace) << '\n';
-  std::cout.flush();
-}
-
-/// The contact-only answer as JSON (doc/contact.md).
-Json contact_json(const relpos::ContactAnswer& a) {
-  Json j;
-  j["contact"] = relpos::to_string(a.contact);
-  j["position"] = relpos::to_string(a.position);
-  j["rule"] = relpos::describe(a.rule);
-  j["decided_by"] = relpos::to_string(a.by);
-  return j;
-}
+void write_json_line(const Json& j) { std::cout << relpos::io::dump_json(j) << '\n'; }
 
 // ------------------------------------------------------------------------------------------------
 
+}  // namespace
+
 int run_classify(Args& args) {
-  std::optional<std::string> ellipsoid, paraboloid, sphere, standard;
+  ShapeOptions shapes;
   int digits = 12;
   bool json = false, contact_only = false;
   while (!args.done()) {
-    std::string v;
-    if (args.take("--help", nullptr) || args.take("-h", nullptr)) {
+    if (args.help()) {
       print_classify_help(std::cout);
-      return kExitOk;
-    } else if (args.take("--ellipsoid", &v)) {
-      set_once(ellipsoid, "--ellipsoid", v);
-    } else if (args.take("--paraboloid", &v)) {
-      set_once(paraboloid, "--paraboloid", v);
-    } else if (args.take("--sphere", &v)) {
-      set_once(sphere, "--sphere", v);
-    } else if (args.take("--standard-paraboloid", &v)) {
-      set_once(standard, "--standard-paraboloid", v);
-    } else if (args.take("--digits", &v)) {
-      digits = parse_digits(v);
-    } else if (args.take("--json", nullptr)) {
-      json = true;
-    } else if (args.take("--contact-only", nullptr)) {
-      contact_only = true;
-    } else {
-      const std::string a = args.next();
-      throw UsageError{(a.rfind("-", 0) == 0 ? "unknown option '" : "unexpected argument '") + a + "'"};
+      return finish_cout();
     }
+    std::string v;
+    if (shapes.take(args) || args.flag("--json", json) || args.flag("--contact-only", contact_only)) continue;
+    if (!args.value("--digits", v)) args.unexpected();
+    digits = parse_digits(v);
   }
-  if (ellipsoid && sphere) throw UsageError{"give either --ellipsoid or --sphere, not both"};
-  if (paraboloid && standard) throw UsageError{"give either --paraboloid or --standard-paraboloid, not both"};
-  if (!ellipsoid && !sphere) throw UsageError{"missing the ellipsoid (--ellipsoid Q or --sphere X,Y,Z,R)"};
-  if (!paraboloid && !standard)
-    throw UsageError{"missing the paraboloid (--paraboloid Q or --standard-paraboloid A,B)"};
+  shapes.check(/*need_ellipsoid=*/true);
 
   relpos::io::RenderOptions options;
   options.digits = digits;
   try {
-    std::optional<relpos::Ellipsoid> e;
-    if (ellipsoid) {
-      e = relpos::io::ellipsoid_from_json(parse_inline(*ellipsoid, "ellipsoid"), "ellipsoid");
-    } else {
-      auto x = comma_numbers(*sphere, 4, "--sphere");
-      try {
-        e = relpos::Ellipsoid::sphere({x[0], x[1], x[2]}, x[3]);
-      } catch (const relpos::InputError& err) {
-        throw relpos::InputError(std::string("ellipsoid: ") + err.what());
-      }
-    }
-    std::optional<relpos::Paraboloid> p;
-    if (paraboloid) {
-      p = relpos::io::paraboloid_from_json(parse_inline(*paraboloid, "paraboloid"), "paraboloid");
-    } else {
-      auto x = comma_numbers(*standard, 2, "--standard-paraboloid");
-      try {
-        const relpos::Rational zero(0);
-        p = relpos::Paraboloid::standard({zero, zero, zero}, x[0], x[1]);
-      } catch (const relpos::InputError& err) {
-        throw relpos::InputError(std::string("paraboloid: ") + err.what());
-      }
-    }
+    const std::optional<relpos::Ellipsoid> e = shapes.make_ellipsoid();
+    const std::optional<relpos::Paraboloid> p = shapes.make_paraboloid();
     relpos::io::check_pair_size(*e, *p);  // doc/cli.md, Limits
     if (contact_only) {
-      const Json j = contact_json(relpos::contact(*e, *p));
+      const Json j = relpos::io::contact_to_json(relpos::contact(*e, *p));
       if (json)
         write_json_line(j);
       else
@@ -310,154 +195,149 @@ int run_classify(Args& args) {
     if (json)
       write_json_line(relpos::io::classification_to_json(c, options));
     else
-      std::cout << relpos::io::classification_to_text(c, options) << std::flush;
-    return std::cout ? kExitOk : kExitIo;
+      std::cout << relpos::io::classification_to_text(c, options);
+    return finish_cout();
   } catch (const relpos::InputError& err) {
     if (json) write_json_line(Json{{"error", err.what()}});
     std::cerr << "relpos: " << err.what() << "\n";
-    return kExitInput;
+    return finish_cout() == kExitOk ? kExitInput : kExitIo;
   }
 }
 
 // ------------------------------------------------------------------------------------------------
 
-bool is_blank(const std::string& s) {
-  for (char ch : s)
-    if (ch != ' ' && ch != '\t' && ch != '\r' && ch != '\n') return false;
-  return true;
+namespace {
+
+/// Answer lines[i] into answers[i] for every i, on `threads` threads (dynamic: lines differ in cost).
+void answer_all(const std::vector<std::string>& lines, long first_number, const relpos::io::BatchOptions& options,
+                unsigned threads, std::vector<std::string>& answers) {
+  answers.assign(lines.size(), std::string());
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < lines.size();)
+      answers[i] = relpos::io::answer_batch_line(lines[i], first_number + static_cast<long>(i), options);
+  };
+  const unsigned n = static_cast<unsigned>(std::min<std::size_t>(threads, (lines.size() + 7) / 8));
+  std::vector<std::thread> pool;
+  for (unsigned w = 1; w < n; ++w) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
 }
 
-/// The answer to one input line (never throws).
-Json answer_line(const std::string& line, long line_number, const relpos::io::RenderOptions& options,
-                 bool contact_only) {
-  Json id = line_number;
-  try {
-    if (is_blank(line)) throw relpos::InputError("empty line");
-    // The exact document (floats kept as text) for the quadrics; the ordinary parse only for the id,
-    // so that it is echoed back as the JSON value it was.
-    const Json doc = relpos::io::parse_json_exact(line);
-    if (!doc.is_object())
-      throw relpos::InputError("expected a JSON object {\"id\": ..., \"ellipsoid\": ..., \"paraboloid\": ...}");
-    if (doc.contains("id")) {
-      try {
-        id = Json::parse(line)["id"];
-      } catch (const nlohmann::json::exception&) {
-        id = doc["id"];  // a number beyond double range somewhere: its floats stay as text
-      }
-    }
-    for (const auto& item : doc.items()) {
-      const std::string& k = item.key();
-      if (k != "id" && k != "ellipsoid" && k != "paraboloid" && k != "comment")
-        throw relpos::InputError("unknown key \"" + k.substr(0, 40) +
-                                 "\" (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")");
-    }
-    if (!doc.contains("ellipsoid")) throw relpos::InputError("ellipsoid: missing");
-    if (!doc.contains("paraboloid")) throw relpos::InputError("paraboloid: missing");
-    const relpos::Ellipsoid e = relpos::io::ellipsoid_from_json(doc["ellipsoid"], "ellipsoid");
-    const relpos::Paraboloid p = relpos::io::paraboloid_from_json(doc["paraboloid"], "paraboloid");
-    relpos::io::check_pair_size(e, p);  // doc/cli.md, Limits
-    Json out;
-    out["id"] = id;
-    if (contact_only) {
-      Json answer = contact_json(relpos::contact(e, p));  // named: items() must not outlive it
-      for (auto& item : answer.items()) out[item.key()] = std::move(item.value());
-      return out;
-    }
-    const relpos::Classification c = relpos::classify(e, p, relpos::Evidence::Full);
-    Json report = relpos::io::classification_to_json(c, options);
-    for (auto& item : report.items()) out[item.key()] = std::move(item.value());
-    return out;
-  } catch (const relpos::InputError& err) {
-    return Json{{"id", id}, {"error", err.what()}};
-  } catch (const std::bad_alloc&) {
-    return Json{{"id", id}, {"error", "out of memory while classifying this line"}};
-  } catch (const std::exception& err) {
-    return Json{{"id", id}, {"error", std::string("internal error: ") + err.what()}};
-  } catch (...) {
-    return Json{{"id", id}, {"error", "internal error: unknown exception"}};
-  }
-}
+}  // namespace
 
 int run_batch(Args& args) {
   std::optional<std::string> file;
-  relpos::io::RenderOptions options;
-  bool contact_only = false;
+  relpos::io::BatchOptions options;
+  unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   while (!args.done()) {
     std::string v;
-    if (args.take("--help", nullptr) || args.take("-h", nullptr)) {
+    if (args.help()) {
       print_batch_help(std::cout);
-      return kExitOk;
-    } else if (args.take("--digits", &v)) {
-      options.digits = parse_digits(v);
-    } else if (args.take("--contact-only", nullptr)) {
-      contact_only = true;
+      return finish_cout();
+    } else if (args.value("--digits", v)) {
+      options.render.digits = parse_digits(v);
+    } else if (args.flag("--contact-only")) {
+      options.contact_only = true;
+    } else if (args.value("--evidence", v)) {
+      if (v != "full" && v != "minimal") throw UsageError{"--evidence must be full or minimal, got '" + v + "'"};
+      options.evidence = v == "full" ? relpos::Evidence::Full : relpos::Evidence::Minimal;
+    } else if (args.value("--numbers", v)) {
+      if (v != "exact" && v != "double") throw UsageError{"--numbers must be exact or double, got '" + v + "'"};
+      options.numbers_as_doubles = v == "double";
+    } else if (args.value("--threads", v)) {
+      threads = static_cast<unsigned>(parse_count(v, "--threads", 1, 1024));
+    } else if (args.value("--max-line-bytes", v)) {
+      options.max_line_bytes = parse_count(v, "--max-line-bytes", 1, std::size_t(1) << 40);
     } else if (args.peek() != "-" && args.peek().rfind("-", 0) == 0) {
-      throw UsageError{"unknown option '" + args.next() + "'"};
+      args.unexpected();
     } else {
       if (file) throw UsageError{"more than one input file given"};
       file = args.next();
     }
   }
-  std::ifstream in_file;
-  std::istream* in = &std::cin;
+  const int fd = open_input(file ? *file : "-");
+  if (fd < 0) return kExitIo;
   const std::string name = file && *file != "-" ? *file : "<stdin>";
-  if (file && *file != "-") {
-    in_file.open(*file, std::ios::binary);
-    if (!in_file) {
-      std::cerr << "relpos: cannot open '" << *file << "': " << std::strerror(errno) << "\n";
-      return kExitIo;
-    }
-    in = &in_file;
-  }
-  std::string line;
+  LineReader reader(fd, options.max_line_bytes);
+  Output out;
+  // Lines are answered in chunks (on the threads) and written in input order; the output is flushed
+  // whenever the input has nothing more ready, so interactive use is answered line by line.
+  const std::size_t chunk = threads > 1 ? 64 * std::size_t(threads) : 16;
+  std::vector<std::string> lines, answers;
+  std::vector<std::string> refused;  // per line: an error found while reading, or empty
   long number = 0;
-  while (std::getline(*in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    write_json_line(answer_line(line, number, options, contact_only));
-    if (!std::cout) {
-      std::cerr << "relpos: cannot write the output\n";
-      return kExitIo;
+  for (bool more = true; more;) {
+    lines.clear();
+    refused.clear();
+    std::string line;
+    while (lines.size() < chunk && (lines.empty() || reader.ready())) {
+      const LineReader::Status status = reader.next(line);
+      if (status == LineReader::Status::End) {
+        more = false;
+        break;
+      }
+      if (status == LineReader::Status::Error) {
+        std::cerr << "relpos: error reading '" << name << "': " << std::strerror(reader.error()) << "\n";
+        out.flush();
+        return kExitIo;
+      }
+      refused.push_back(status == LineReader::Status::TooLong ? relpos::io::too_long_message(options.max_line_bytes)
+                        : status == LineReader::Status::OutOfMemory ? "out of memory while reading this line"
+                                                                    : std::string());
+      lines.push_back(status == LineReader::Status::Line ? std::move(line) : std::string());
     }
+    answer_all(lines, number + 1, options, threads, answers);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      out.write(refused[i].empty() ? answers[i]
+                                   : relpos::io::error_line(std::to_string(number + 1 + long(i)), refused[i]));
+      out.write("\n");
+    }
+    number += static_cast<long>(lines.size());
+    if (!more || !reader.ready()) out.flush();
+    if (out.failed()) return out.report_failure();
   }
-  if (in->bad()) {
-    std::cerr << "relpos: error reading '" << name << "'\n";
-    return kExitIo;
-  }
-  return kExitOk;
+  return out.flush() ? kExitOk : out.report_failure();
 }
 
-}  // namespace
+}  // namespace relpos_cli
 
 int main(int argc, char** argv) {
   std::ios::sync_with_stdio(false);
+  std::signal(SIGPIPE, SIG_IGN);  // a closed pipe is a write error (exit 3 with a message), not a kill
   std::vector<std::string> all(argv + 1, argv + argc);
   if (all.empty()) {
-    print_main_help(std::cerr);
-    return kExitUsage;
+    relpos_cli::print_main_help(std::cerr);
+    return relpos_cli::kExitUsage;
   }
   const std::string command = all.front();
+  using namespace relpos_cli;
   Args args(std::vector<std::string>(all.begin() + 1, all.end()));
+  const bool known =
+      command == "classify" || command == "batch" || command == "scene" || command == "motion" || command == "verify";
   try {
     if (command == "--help" || command == "-h" || command == "help") {
       print_main_help(std::cout);
-      return kExitOk;
+      return finish_cout();
     }
     if (command == "--version") {
       std::cout << "relpos " RELPOS_VERSION "\n";
-      return kExitOk;
+      return finish_cout();
     }
     if (command == "classify") return run_classify(args);
     if (command == "batch") return run_batch(args);
-    if (command == "verify") return run_verify(argc - 1, argv + 1);
-    if (command == "scene") return run_scene_command(std::vector<std::string>(all.begin() + 1, all.end()));
-    if (command == "motion") return relpos_cli::run_motion(std::vector<std::string>(all.begin() + 1, all.end()));
+    if (command == "verify") return run_verify(args);
+    if (command == "scene") return run_scene(args);
+    if (command == "motion") return run_motion(args);
     throw UsageError{(command.rfind("-", 0) == 0 ? "unknown option '" : "unknown command '") + command + "'"};
   } catch (const UsageError& u) {
     std::cerr << "relpos: " << u.message << "\nTry 'relpos --help'";
-    if (command == "classify" || command == "batch") std::cerr << " or 'relpos " << command << " --help'";
+    if (known) std::cerr << " or 'relpos " << command << " --help'";
     std::cerr << ".\n";
     return kExitUsage;
+  } catch (const relpos::InputError& e) {
+    std::cerr << "relpos: " << e.what() << "\n";
+    return kExitInput;
   } catch (const std::bad_alloc&) {
     std::cerr << "relpos: out of memory\n";
     return kExitInternal;

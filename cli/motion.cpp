@@ -1,22 +1,33 @@
 // relpos motion: the certified first-contact time and the timeline of positions of a moving
 // ellipsoid (doc/cli.md). Parsing of quadrics and exact numbers is shared with `classify` through
 // relpos/io.hpp; this file adds the motion polynomials and the rendering of exact instants.
-#include "motion.hpp"
+#include "relpos/motion.hpp"
 
 #include <gmp.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <memory>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
+#include "commands.hpp"
+#include "common.hpp"
+#include "options.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
-#include "relpos/motion.hpp"
 
 namespace relpos_cli {
 namespace {
@@ -24,17 +35,13 @@ namespace {
 using Json = nlohmann::ordered_json;
 using relpos::Rational;
 
-constexpr int kExitOk = 0, kExitInput = 1, kExitUsage = 2, kExitIo = 3, kExitInternal = 4;
-
 /// Above this degree the text report names the defining polynomial by its degree only (the JSON
 /// output always has every coefficient).
 constexpr int kMaxShownDegree = 8;
 
-struct UsageError {
-  std::string message;
-};
+}  // namespace
 
-void print_help(std::ostream& os) {
+void print_motion_help(std::ostream& os) {
   os << "Usage: relpos motion (--ellipsoid Q | --sphere X,Y,Z,R)\n"
         "                     (--paraboloid Q | --standard-paraboloid A,B)\n"
         "                     [--translation '[CX, CY, CZ]'] [--rotation '[QW, QX, QY, QZ]']\n"
@@ -61,7 +68,10 @@ void print_help(std::ostream& os) {
         "                                 center = the centre of the ellipsoid as given\n"
         "  --t0 T0, --t1 T1               the time interval (exact numbers, T0 <= T1)\n"
         "  --first-contact                only the first contact (faster: no timeline)\n"
-        "  --digits N                     significant digits of the decimals (default 12, 1..1000)\n"
+        "  --digits N                     significant digits of the decimals (default 12, 1..200)\n"
+        "  --max-seconds S                time budget (default 60): beyond it the command stops with a\n"
+        "                                 message and exit code 5\n"
+        "  --no-progress                  no progress indication (shown on a terminal's stderr)\n"
         "  --json                         one JSON object instead of the report\n"
         "  -h, --help                     this help\n"
         "\n"
@@ -69,87 +79,20 @@ void print_help(std::ostream& os) {
         "  relpos motion --sphere 0,0,0,1/4 --standard-paraboloid 1,2 \\\n"
         "      --translation '[[], [], [\"-9/4\", 0, 1]]' --t0 0 --t1 2\n"
         "\n"
-        "Exit codes: 0 success, 1 input error, 2 usage error, 3 output error, 4 internal error.\n";
+        "Limits: each polynomial of degree at most 12, coefficients of at most 512 bits (numerator and\n"
+        "denominator).\n"
+        "Exit codes: 0 success, 1 input error, 2 usage error, 3 output error, 4 internal error,\n"
+        "5 time budget exceeded.\n";
 }
 
-/// Options "--name value" or "--name=value"; flags take no value.
-class Args {
- public:
-  explicit Args(const std::vector<std::string>& a) : args_(a) {}
-  bool done() const { return pos_ >= args_.size(); }
-  bool take(const char* name, std::string* value) {
-    const std::string& a = args_[pos_];
-    const std::string n(name);
-    if (a == n) {
-      ++pos_;
-      if (value) {
-        if (done()) throw UsageError{"option " + n + " needs a value"};
-        *value = args_[pos_++];
-      }
-      return true;
-    }
-    if (a.size() > n.size() && a.compare(0, n.size(), n) == 0 && a[n.size()] == '=') {
-      if (!value) throw UsageError{"option " + n + " takes no value"};
-      *value = a.substr(n.size() + 1);
-      ++pos_;
-      return true;
-    }
-    return false;
-  }
-  std::string next() { return args_[pos_++]; }
+namespace {
 
- private:
-  const std::vector<std::string>& args_;
-  std::size_t pos_ = 0;
-};
-
-void set_once(std::optional<std::string>& slot, const char* name, std::string value) {
-  if (slot) throw UsageError{std::string("option ") + name + " given twice"};
-  slot = std::move(value);
-}
-
-int parse_digits(const std::string& text) {
-  std::size_t used = 0;
-  long n = 0;
-  try {
-    n = std::stol(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || n < 1 || n > 1000)
-    throw UsageError{"--digits needs an integer from 1 to 1000, got '" + text + "'"};
-  return static_cast<int>(n);
-}
-
-std::vector<Rational> comma_numbers(const std::string& text, std::size_t count, const std::string& what) {
-  std::vector<std::string> parts(1);
-  for (char ch : text) {
-    if (ch == ',')
-      parts.emplace_back();
-    else
-      parts.back() += ch;
-  }
-  if (parts.size() != count)
-    throw relpos::InputError(what + ": expected " + std::to_string(count) + " comma-separated numbers, got " +
-                             std::to_string(parts.size()) + " in '" + text + "'");
-  std::vector<Rational> out;
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    try {
-      out.push_back(relpos::parse_rational(parts[i]));
-    } catch (const relpos::InputError& e) {
-      throw relpos::InputError(what + "[" + std::to_string(i) + "]: " + e.what());
-    }
-  }
-  return out;
-}
-
-Json parse_inline(const std::string& text, const std::string& role) {
-  try {
-    return relpos::io::parse_json_exact(text);
-  } catch (const relpos::InputError& e) {
-    throw relpos::InputError(role + ": " + e.what());
-  }
-}
+/// Limits of `relpos motion` (doc/cli.md, "Limits"): the exact instants are roots of polynomials
+/// whose degree and coefficient sizes grow with these, and the cost with them.
+constexpr std::size_t kMaxMotionDegree = 12;
+constexpr std::size_t kMaxCoefficientBits = 512;
+constexpr int kMaxMotionDigits = 200;
+constexpr unsigned long long kDefaultMaxSeconds = 60;
 
 /// A JSON array of `count` polynomials, each an array of exact coefficients (low degree first).
 template <std::size_t N>
@@ -166,6 +109,19 @@ std::array<relpos::TimePolynomial, N> polynomials(const std::string& text, const
         out[i].push_back(relpos::io::rational_from_json(v[i][k], path + "[" + std::to_string(k) + "]"));
     } else {
       out[i].push_back(relpos::io::rational_from_json(v[i], path));  // a constant
+    }
+    while (!out[i].empty() && out[i].back() == 0) out[i].pop_back();
+    if (out[i].size() > kMaxMotionDegree + 1)
+      throw relpos::InputError(path + ": degree " + std::to_string(out[i].size() - 1) + " is beyond the limit of " +
+                               std::to_string(kMaxMotionDegree) + " (doc/cli.md, Limits)");
+    for (std::size_t k = 0; k < out[i].size(); ++k) {
+      const relpos::Rational& c = out[i][k];
+      const std::size_t bits =
+          std::max(mpz_sizeinbase(c.numerator().mpz(), 2), mpz_sizeinbase(c.denominator().mpz(), 2));
+      if (bits > kMaxCoefficientBits)
+        throw relpos::InputError(path + "[" + std::to_string(k) + "]: a " + std::to_string(bits) +
+                                 "-bit numerator or denominator, beyond the limit of " +
+                                 std::to_string(kMaxCoefficientBits) + " bits (doc/cli.md, Limits)");
     }
   }
   return out;
@@ -334,164 +290,180 @@ std::string timeline_text(const relpos::Timeline& tl, int digits) {
   return os.str();
 }
 
-int run(const std::vector<std::string>& argv) {
-  std::optional<std::string> ellipsoid, paraboloid, sphere, standard, translation, rotation, pivot, t0s, t1s;
-  int digits = 12;
-  bool json = false, only_first = false;
-  Args args(argv);
-  while (!args.done()) {
-    std::string v;
-    if (args.take("--help", nullptr) || args.take("-h", nullptr)) {
-      print_help(std::cout);
-      return kExitOk;
-    } else if (args.take("--ellipsoid", &v)) {
-      set_once(ellipsoid, "--ellipsoid", v);
-    } else if (args.take("--paraboloid", &v)) {
-      set_once(paraboloid, "--paraboloid", v);
-    } else if (args.take("--sphere", &v)) {
-      set_once(sphere, "--sphere", v);
-    } else if (args.take("--standard-paraboloid", &v)) {
-      set_once(standard, "--standard-paraboloid", v);
-    } else if (args.take("--translation", &v)) {
-      set_once(translation, "--translation", v);
-    } else if (args.take("--rotation", &v)) {
-      set_once(rotation, "--rotation", v);
-    } else if (args.take("--pivot", &v)) {
-      set_once(pivot, "--pivot", v);
-    } else if (args.take("--t0", &v)) {
-      set_once(t0s, "--t0", v);
-    } else if (args.take("--t1", &v)) {
-      set_once(t1s, "--t1", v);
-    } else if (args.take("--digits", &v)) {
-      digits = parse_digits(v);
-    } else if (args.take("--first-contact", nullptr)) {
-      only_first = true;
-    } else if (args.take("--json", nullptr)) {
-      json = true;
+/// Everything `relpos motion` computes and prints, from the parsed options (runs on a worker
+/// thread). Returns the text to print; throws InputError.
+std::string compute(const ShapeOptions& shapes, const std::optional<std::string>& translation,
+                    const std::optional<std::string>& rotation, const std::optional<std::string>& pivot,
+                    const std::string& t0s, const std::string& t1s, int digits, bool json, bool only_first) {
+  const relpos::Ellipsoid e = shapes.make_ellipsoid();
+  const relpos::Paraboloid p = shapes.make_paraboloid();
+  relpos::RigidMotion m;
+  if (translation) m.translation = polynomials<3>(*translation, "translation");
+  if (rotation) m.rotation = polynomials<4>(*rotation, "rotation");
+  if (pivot) {
+    if (*pivot == "origin") {
+      m.pivot = relpos::Pivot::Origin;
+    } else if (*pivot == "center" || *pivot == "centre") {
+      m.pivot = relpos::Pivot::Centre;
     } else {
-      const std::string a = args.next();
-      throw UsageError{(a.rfind("-", 0) == 0 ? "unknown option '" : "unexpected argument '") + a + "'"};
+      std::vector<Rational> x;
+      try {
+        x = comma_numbers(*pivot, 3, "--pivot");
+      } catch (const relpos::InputError& err) {
+        throw relpos::InputError(std::string(err.what()) + " (--pivot takes origin|center|X,Y,Z)");
+      }
+      m.pivot = relpos::Pivot::Point;
+      m.pivot_point = {x[0], x[1], x[2]};
     }
   }
-  if (ellipsoid && sphere) throw UsageError{"give either --ellipsoid or --sphere, not both"};
-  if (paraboloid && standard) throw UsageError{"give either --paraboloid or --standard-paraboloid, not both"};
-  if (!ellipsoid && !sphere) throw UsageError{"missing the ellipsoid (--ellipsoid Q or --sphere X,Y,Z,R)"};
-  if (!paraboloid && !standard)
-    throw UsageError{"missing the paraboloid (--paraboloid Q or --standard-paraboloid A,B)"};
-  if (!t0s || !t1s) throw UsageError{"missing the time interval (--t0 T0 --t1 T1)"};
+  const Rational t0 = exact_option(t0s, "--t0");
+  const Rational t1 = exact_option(t1s, "--t1");
 
-  try {
-    std::optional<relpos::Ellipsoid> e;
-    if (ellipsoid) {
-      e = relpos::io::ellipsoid_from_json(parse_inline(*ellipsoid, "ellipsoid"), "ellipsoid");
-    } else {
-      const auto x = comma_numbers(*sphere, 4, "--sphere");
-      try {
-        e = relpos::Ellipsoid::sphere({x[0], x[1], x[2]}, x[3]);
-      } catch (const relpos::InputError& err) {
-        throw relpos::InputError(std::string("ellipsoid: ") + err.what());
-      }
-    }
-    std::optional<relpos::Paraboloid> p;
-    if (paraboloid) {
-      p = relpos::io::paraboloid_from_json(parse_inline(*paraboloid, "paraboloid"), "paraboloid");
-    } else {
-      const auto x = comma_numbers(*standard, 2, "--standard-paraboloid");
-      try {
-        const Rational zero(0);
-        p = relpos::Paraboloid::standard({zero, zero, zero}, x[0], x[1]);
-      } catch (const relpos::InputError& err) {
-        throw relpos::InputError(std::string("paraboloid: ") + err.what());
-      }
-    }
-    relpos::RigidMotion m;
-    if (translation) m.translation = polynomials<3>(*translation, "translation");
-    if (rotation) m.rotation = polynomials<4>(*rotation, "rotation");
-    if (pivot) {
-      if (*pivot == "origin") {
-        m.pivot = relpos::Pivot::Origin;
-      } else if (*pivot == "center" || *pivot == "centre") {
-        m.pivot = relpos::Pivot::Centre;
-      } else {
-        const auto x = comma_numbers(*pivot, 3, "--pivot");
-        m.pivot = relpos::Pivot::Point;
-        m.pivot_point = {x[0], x[1], x[2]};
-      }
-    }
-    Rational t0, t1;
-    try {
-      t0 = relpos::parse_rational(*t0s);
-      t1 = relpos::parse_rational(*t1s);
-    } catch (const relpos::InputError& err) {
-      throw relpos::InputError(std::string("--t0/--t1: ") + err.what());
-    }
+  const relpos::FirstContact fc = relpos::first_contact(e, m, p, t0, t1);
+  std::optional<relpos::Timeline> tl;
+  if (!only_first) tl = relpos::timeline(e, m, p, t0, t1);
 
-    const relpos::FirstContact fc = relpos::first_contact(*e, m, *p, t0, t1);
-    std::optional<relpos::Timeline> tl;
-    if (!only_first) tl = relpos::timeline(*e, m, *p, t0, t1);
-
-    if (json) {
-      Json out;
-      out["t0"] = relpos::to_string(t0);
-      out["t1"] = relpos::to_string(t1);
-      Json motion;
-      Json tr = Json::array();
-      for (const auto& c : m.translation) tr.push_back(poly_json(c));
-      motion["translation"] = tr;
-      if (m.rotation) {
-        Json ro = Json::array();
-        for (const auto& c : *m.rotation) ro.push_back(poly_json(c));
-        motion["rotation"] = ro;
-      } else {
-        motion["rotation"] = nullptr;
-      }
-      Json pv = Json::array();
-      for (const auto& c : relpos::pivot_of(*e, m)) pv.push_back(relpos::to_string(c));
-      motion["pivot"] = pv;
-      out["motion"] = motion;
-      out["first_contact"] = first_contact_json(fc, digits);
-      if (tl) out["timeline"] = timeline_json(*tl, digits);
-      std::cout << out.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
+  if (json) {
+    Json out;
+    out["t0"] = relpos::to_string(t0);
+    out["t1"] = relpos::to_string(t1);
+    Json motion;
+    Json tr = Json::array();
+    for (const auto& c : m.translation) tr.push_back(poly_json(c));
+    motion["translation"] = tr;
+    if (m.rotation) {
+      Json ro = Json::array();
+      for (const auto& c : *m.rotation) ro.push_back(poly_json(c));
+      motion["rotation"] = ro;
     } else {
-      std::cout << "motion on [" << relpos::to_string(t0) << ", " << relpos::to_string(t1) << "]: c(t) = ("
-                << poly_text(m.translation[0]) << ", " << poly_text(m.translation[1]) << ", "
-                << poly_text(m.translation[2]) << ")";
-      if (m.rotation) {
-        const auto pv = relpos::pivot_of(*e, m);
-        std::cout << ", q(t) = (" << poly_text((*m.rotation)[0]) << ", " << poly_text((*m.rotation)[1]) << ", "
-                  << poly_text((*m.rotation)[2]) << ", " << poly_text((*m.rotation)[3]) << ") about ("
-                  << relpos::to_string(pv[0]) << ", " << relpos::to_string(pv[1]) << ", " << relpos::to_string(pv[2])
-                  << ")";
-      } else {
-        std::cout << ", no rotation";
-      }
-      std::cout << "\n" << first_contact_text(fc, digits);
-      if (tl) std::cout << timeline_text(*tl, digits);
+      motion["rotation"] = nullptr;
     }
-    std::cout.flush();
-    return std::cout ? kExitOk : kExitIo;
-  } catch (const relpos::InputError& err) {
-    if (json) std::cout << Json{{"error", err.what()}}.dump() << "\n";
-    std::cerr << "relpos: " << err.what() << "\n";
-    return kExitInput;
+    Json pv = Json::array();
+    for (const auto& c : relpos::pivot_of(e, m)) pv.push_back(relpos::to_string(c));
+    motion["pivot"] = pv;
+    out["motion"] = motion;
+    out["first_contact"] = first_contact_json(fc, digits);
+    if (tl) out["timeline"] = timeline_json(*tl, digits);
+    return relpos::io::dump_json(out) + "\n";
   }
+  std::ostringstream os;
+  os << "motion on [" << relpos::to_string(t0) << ", " << relpos::to_string(t1) << "]: c(t) = ("
+     << poly_text(m.translation[0]) << ", " << poly_text(m.translation[1]) << ", " << poly_text(m.translation[2])
+     << ")";
+  if (m.rotation) {
+    const auto pv = relpos::pivot_of(e, m);
+    os << ", q(t) = (" << poly_text((*m.rotation)[0]) << ", " << poly_text((*m.rotation)[1]) << ", "
+       << poly_text((*m.rotation)[2]) << ", " << poly_text((*m.rotation)[3]) << ") about (" << relpos::to_string(pv[0])
+       << ", " << relpos::to_string(pv[1]) << ", " << relpos::to_string(pv[2]) << ")";
+  } else {
+    os << ", no rotation";
+  }
+  os << "\n" << first_contact_text(fc, digits);
+  if (tl) os << timeline_text(*tl, digits);
+  return os.str();
 }
 
 }  // namespace
 
-int run_motion(const std::vector<std::string>& args) {
-  try {
-    return run(args);
-  } catch (const UsageError& u) {
-    std::cerr << "relpos: " << u.message << "\nTry 'relpos motion --help'.\n";
-    return kExitUsage;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "relpos: out of memory\n";
-    return kExitInternal;
-  } catch (const std::exception& e) {
-    std::cerr << "relpos: internal error: " << e.what() << "\n";
-    return kExitInternal;
+int run_motion(Args& args) {
+  ShapeOptions shapes;
+  std::optional<std::string> translation, rotation, pivot, t0s, t1s;
+  int digits = 12;
+  unsigned long long max_seconds = kDefaultMaxSeconds;
+  bool json = false, only_first = false;
+  bool quiet = false;
+  while (!args.done()) {
+    if (args.help()) {
+      print_motion_help(std::cout);
+      return finish_cout();
+    }
+    std::string v;
+    if (shapes.take(args) || args.flag("--first-contact", only_first) || args.flag("--json", json) ||
+        args.flag("--no-progress", quiet))
+      continue;
+    if (args.value("--translation", v))
+      translation = v;
+    else if (args.value("--rotation", v))
+      rotation = v;
+    else if (args.value("--pivot", v))
+      pivot = v;
+    else if (args.value("--t0", v))
+      t0s = v;
+    else if (args.value("--t1", v))
+      t1s = v;
+    else if (args.value("--digits", v))
+      digits = static_cast<int>(parse_count(v, "--digits", 1, kMaxMotionDigits));
+    else if (args.value("--max-seconds", v))
+      max_seconds = parse_count(v, "--max-seconds", 1, 86400);
+    else
+      args.unexpected();
   }
+  shapes.check(/*need_ellipsoid=*/true);
+  if (!t0s || !t1s) throw UsageError{"missing the time interval (--t0 T0 --t1 T1)"};
+
+  // The work runs on a worker thread; this thread keeps the budget and the progress indication.
+  struct Result {
+    std::mutex m;
+    std::condition_variable cv;
+    bool done = false;
+    std::string text, error;
+    int code = kExitOk;
+  };
+  auto result = std::make_shared<Result>();
+  std::thread worker([=] {
+    std::string text, error;
+    int code = kExitOk;
+    try {
+      text = compute(shapes, translation, rotation, pivot, *t0s, *t1s, digits, json, only_first);
+    } catch (const relpos::InputError& err) {
+      error = err.what();
+      code = kExitInput;
+    } catch (const std::bad_alloc&) {
+      error = "out of memory";
+      code = kExitInternal;
+    } catch (const std::exception& err) {
+      error = std::string("internal error: ") + err.what();
+      code = kExitInternal;
+    }
+    std::lock_guard<std::mutex> lock(result->m);
+    result->text = std::move(text);
+    result->error = std::move(error);
+    result->code = code;
+    result->done = true;
+    result->cv.notify_all();
+  });
+  const bool show = !quiet && isatty(STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+  const auto deadline = start + std::chrono::seconds(max_seconds);
+  {
+    std::unique_lock<std::mutex> lock(result->m);
+    while (!result->done) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now >= deadline) {
+        if (show) std::cerr << "\r\033[K";
+        std::cerr << "relpos: motion: the computation exceeded its time budget of " << max_seconds
+                  << " s (--max-seconds) and was stopped; try a shorter interval, lower degrees or a larger budget\n";
+        std::cerr.flush();
+        std::cout.flush();
+        std::_Exit(kExitBudget);  // the worker cannot be interrupted: end the process
+      }
+      result->cv.wait_until(lock, std::min(deadline, now + std::chrono::milliseconds(500)));
+      if (show && !result->done) {
+        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "\rrelpos motion: computing... %.0f s of at most %llu s\033[K", secs, max_seconds);
+        std::fflush(stderr);
+      }
+    }
+  }
+  worker.join();
+  if (show) std::cerr << "\r\033[K";
+  if (result->code != kExitOk) {
+    if (json && result->code == kExitInput) std::cout << relpos::io::dump_json(Json{{"error", result->error}}) << "\n";
+    std::cerr << "relpos: " << result->error << "\n";
+    return finish_cout() == kExitOk ? result->code : kExitIo;
+  }
+  std::cout << result->text;
+  return finish_cout();
 }
 
 }  // namespace relpos_cli

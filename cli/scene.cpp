@@ -27,23 +27,20 @@
 #include <thread>
 #include <vector>
 
+#include "commands.hpp"
+#include "common.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 #include "scene/demo.hpp"
 
+namespace relpos_cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr int kExitOk = 0;
-constexpr int kExitInput = 1;
-constexpr int kExitUsage = 2;
-constexpr int kExitIo = 3;
-constexpr std::size_t kBlockLines = std::size_t(1) << 16;
+constexpr std::size_t kBlockLines = std::size_t(1) << 12;
 
-struct SceneUsageError {
-  std::string message;
-};
+}  // namespace
 
 void print_scene_help(std::ostream& os) {
   os << "Usage: relpos scene (--paraboloid Q | --standard-paraboloid A,B) [FILE|-] [--format jsonl|csv]\n"
@@ -78,6 +75,7 @@ void print_scene_help(std::ostream& os) {
         "  --threads N                worker threads (default: all cores)\n"
         "  --summary-only             print only the summary (on standard error)\n"
         "  --no-progress              no progress bar\n"
+        "  --max-line-bytes N         longest input line (default 64 MiB); longer lines are errors\n"
         "  --generate N               write a demo scene of N bodies as CSV to standard output instead:\n"
         "                             particles in the container x^2/A^2 + y^2/B^2 <= z (default A,B =\n"
         "                             1,2), see doc/performance.md\n"
@@ -88,50 +86,15 @@ void print_scene_help(std::ostream& os) {
         "  relpos scene --generate 100000 --seed 7 > scene.csv\n"
         "  relpos scene --standard-paraboloid 1,2 scene.csv > answers.jsonl\n"
         "\n"
+        "Lines are read as by `relpos batch` (the same errors, limits and id echo).\n"
         "Exit codes: 0 success (every body answered, error lines included), 1 the paraboloid cannot be\n"
         "read, 2 usage error, 3 I/O error, 4 internal error.\n";
 }
 
+namespace {
+
 // ------------------------------------------------------------------------------------------------
-// Small helpers (the same conventions as main.cpp)
-
-/// "--name value" or "--name=value" at args[i]; advances i.
-bool take(const std::vector<std::string>& args, std::size_t& i, const char* name, std::string* value) {
-  const std::string& a = args[i];
-  const std::string n(name);
-  if (a == n) {
-    if (value) {
-      if (i + 1 >= args.size()) throw SceneUsageError{"option " + n + " needs a value"};
-      *value = args[i + 1];
-      i += 2;
-    } else {
-      ++i;
-    }
-    return true;
-  }
-  if (a.size() > n.size() && a.compare(0, n.size(), n) == 0 && a[n.size()] == '=') {
-    if (!value) throw SceneUsageError{"option " + n + " takes no value"};
-    *value = a.substr(n.size() + 1);
-    ++i;
-    return true;
-  }
-  return false;
-}
-
-unsigned long long parse_count(const std::string& text, const char* what, unsigned long long lo,
-                               unsigned long long hi) {
-  std::size_t used = 0;
-  unsigned long long n = 0;
-  try {
-    if (!text.empty() && text[0] != '-') n = std::stoull(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || n < lo || n > hi)
-    throw SceneUsageError{std::string(what) + " needs an integer from " + std::to_string(lo) + " to " +
-                          std::to_string(hi) + ", got '" + text + "'"};
-  return n;
-}
+// Small helpers
 
 std::string trim(const std::string& s) {
   std::size_t b = 0, e = s.size();
@@ -152,30 +115,6 @@ std::vector<std::string> split_commas(const std::string& text) {
   return parts;
 }
 
-relpos::Paraboloid standard_paraboloid(const std::string& text, relpos::Rational* a_out = nullptr,
-                                       relpos::Rational* b_out = nullptr) {
-  const auto parts = split_commas(text);
-  if (parts.size() != 2)
-    throw relpos::InputError("--standard-paraboloid: expected 2 comma-separated numbers, got " +
-                             std::to_string(parts.size()) + " in '" + text + "'");
-  relpos::Rational ab[2];
-  for (std::size_t i = 0; i < 2; ++i) {
-    try {
-      ab[i] = relpos::parse_rational(parts[i]);
-    } catch (const relpos::InputError& e) {
-      throw relpos::InputError("--standard-paraboloid[" + std::to_string(i) + "]: " + e.what());
-    }
-  }
-  if (a_out) *a_out = ab[0];
-  if (b_out) *b_out = ab[1];
-  try {
-    const relpos::Rational zero(0);
-    return relpos::Paraboloid::standard({zero, zero, zero}, ab[0], ab[1]);
-  } catch (const relpos::InputError& e) {
-    throw relpos::InputError(std::string("paraboloid: ") + e.what());
-  }
-}
-
 // ------------------------------------------------------------------------------------------------
 // Reading bodies
 
@@ -185,47 +124,25 @@ enum class Format { Jsonl, Csv };
 struct Parsed {
   bool skip = false;  ///< CSV comment or blank line: no output
   long line = 0;
-  Json id;
+  std::string id;  ///< JSON text of the id
   std::optional<relpos::Ellipsoid> body;
   std::string error;
 };
 
-bool is_blank(const std::string& s) {
-  for (char ch : s)
-    if (ch != ' ' && ch != '\t' && ch != '\r' && ch != '\n') return false;
-  return true;
-}
-
-void parse_jsonl(const std::string& line, Parsed& out) {
-  if (is_blank(line)) throw relpos::InputError("empty line");
-  const Json doc = relpos::io::parse_json_exact(line);
-  if (!doc.is_object()) throw relpos::InputError("expected a JSON object {\"id\": ..., \"ellipsoid\": ...}");
-  if (doc.contains("id")) {
-    try {
-      out.id = Json::parse(line)["id"];  // echo the id as the JSON value it was
-    } catch (const nlohmann::json::exception&) {
-      out.id = doc["id"];  // a number beyond double range somewhere: floats stay as text
-    }
-  }
-  for (const auto& item : doc.items()) {
-    const std::string& k = item.key();
-    if (k != "id" && k != "ellipsoid" && k != "comment")
-      throw relpos::InputError("unknown key \"" + k.substr(0, 40) +
-                               "\" (a scene line takes \"id\", \"ellipsoid\" and \"comment\")");
-  }
-  if (!doc.contains("ellipsoid")) throw relpos::InputError("ellipsoid: missing");
-  out.body = relpos::io::ellipsoid_from_json(doc["ellipsoid"], "ellipsoid");
-}
-
-void parse_csv(const std::string& raw, Parsed& out) {
-  const std::string line = trim(raw);
+void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, const relpos::Paraboloid& p,
+               Parsed& out) {
+  const std::string line = trim(std::string(relpos::io::normalize_line(raw, out.line, options.max_line_bytes)));
   if (line.empty() || line[0] == '#') {
     out.skip = true;
     return;
   }
   std::vector<std::string> f = split_commas(line);
+  for (std::size_t i = 0; i < f.size(); ++i)
+    if (f[i].empty())
+      throw relpos::InputError("field " + std::to_string(i + 1) + " of " + std::to_string(f.size()) + " is empty" +
+                               (i + 1 == f.size() ? " (a trailing separator?)" : ""));
   if (f.size() == 5 || f.size() == 11) {
-    out.id = f.front();
+    out.id = relpos::io::dump_json(Json(f.front()));
     f.erase(f.begin());
   }
   if (f.size() != 4 && f.size() != 10)
@@ -252,15 +169,28 @@ void parse_csv(const std::string& raw, Parsed& out) {
   } catch (const relpos::InputError& e) {
     throw relpos::InputError(std::string("ellipsoid: ") + e.what());
   }
+  relpos::io::check_pair_size(*out.body, p);  // the limit of `relpos batch`
 }
 
-/// Parse a line; never throws (errors land in out.error).
-void parse_line(const std::string& line, Format format, Parsed& out) {
+/// Parse a line; never throws (errors land in out.error). JSON Lines go through the reader of
+/// `relpos batch` (relpos::io::read_batch_line), so both commands answer a line alike.
+void parse_line(const std::string& line, Format format, const relpos::io::BatchOptions& options,
+                const relpos::Paraboloid& p, Parsed& out) {
+  out.id = std::to_string(out.line);
   try {
-    if (format == Format::Jsonl)
-      parse_jsonl(line, out);
-    else
-      parse_csv(line, out);
+    if (format == Format::Jsonl) {
+      relpos::io::BatchLine in;
+      try {
+        relpos::io::read_batch_line(line, out.line, options, &p, in);
+      } catch (...) {
+        out.id = in.id;
+        throw;
+      }
+      out.id = in.id;
+      out.body = std::move(in.ellipsoid);
+    } else {
+      parse_csv(line, options, p, out);
+    }
   } catch (const relpos::InputError& e) {
     out.error = e.what();
   } catch (const std::bad_alloc&) {
@@ -354,36 +284,24 @@ std::size_t count_lines(const std::string& path) {
 
 // ------------------------------------------------------------------------------------------------
 
-const char* position_text(relpos::Position p) {
-  switch (p) {
-    case relpos::Position::I:
-      return "I";
-    case relpos::Position::TI:
-      return "TI";
-    case relpos::Position::C:
-      return "C";
-    case relpos::Position::TE:
-      return "TE";
-    case relpos::Position::E:
-      return "E";
-    case relpos::Position::Unclassified:
-      return "unclassified";
-  }
-  return "unclassified";
-}
+std::string dump(const Json& j) { return relpos::io::dump_json(j); }
 
-std::string dump(const Json& j) { return j.dump(-1, ' ', false, Json::error_handler_t::replace); }
-
-int run_generate(unsigned long long n, unsigned long long seed, const std::optional<std::string>& standard) {
+int run_generate(unsigned long long n, unsigned long long seed, const ShapeOptions& shapes) {
   relpos::Rational a(1), b(2);
-  if (standard) standard_paraboloid(*standard, &a, &b);
-  std::cout << "# relpos scene --generate " << n << " --seed " << seed
-            << ": particles in the container x^2/a^2 + y^2/b^2 <= z, a = " << relpos::to_string(a)
-            << ", b = " << relpos::to_string(b) << "\n# classify with: relpos scene --standard-paraboloid "
-            << relpos::to_string(a) << "," << relpos::to_string(b) << " FILE.csv\n";
+  if (shapes.standard) {
+    shapes.make_paraboloid();  // the same checks as a scene's paraboloid
+    const auto ab = shapes.standard_axes();
+    a = ab[0];
+    b = ab[1];
+  }
+  relpos_cli::Output out;
+  out.write("# relpos scene --generate " + std::to_string(n) + " --seed " + std::to_string(seed) +
+            ": particles in the container x^2/a^2 + y^2/b^2 <= z, a = " + relpos::to_string(a) +
+            ", b = " + relpos::to_string(b) + "\n# classify with: relpos scene --standard-paraboloid " +
+            relpos::to_string(a) + "," + relpos::to_string(b) + " FILE.csv\n");
   relpos::DemoSceneGenerator gen(seed, a, b);
   std::string row;
-  for (unsigned long long i = 0; i < n; ++i) {
+  for (unsigned long long i = 0; i < n && !out.failed(); ++i) {
     const relpos::DemoBody d = gen.next();
     row.clear();
     if (d.kind == relpos::DemoBody::Kind::Sphere) {
@@ -394,81 +312,64 @@ int run_generate(unsigned long long n, unsigned long long seed, const std::optio
         row += (k ? "," : "") + relpos::to_string(d.coefficients[k]);
     }
     row += '\n';
-    std::cout << row;
-    if (!std::cout) {
-      std::cerr << "relpos: cannot write the output\n";
-      return kExitIo;
-    }
+    out.write(row);
   }
-  std::cout.flush();
-  return std::cout ? kExitOk : kExitIo;
+  return out.flush() ? kExitOk : out.report_failure();
 }
 
-int run_scene(const std::vector<std::string>& args) {
-  std::optional<std::string> paraboloid, standard, file, format_text;
+}  // namespace
+
+int run_scene(Args& args) {
+  ShapeOptions shapes;
+  std::optional<std::string> file, format_text;
   std::optional<unsigned long long> generate;
   unsigned long long seed = 1;
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   bool summary_only = false, progress = true;
-  for (std::size_t i = 0; i < args.size();) {
+  relpos::io::BatchOptions options_line;  // the line reader of `relpos batch`
+  while (!args.done()) {
     std::string v;
-    if (take(args, i, "--help", nullptr) || take(args, i, "-h", nullptr)) {
+    if (args.help()) {
       print_scene_help(std::cout);
-      return kExitOk;
-    } else if (take(args, i, "--paraboloid", &v)) {
-      if (paraboloid) throw SceneUsageError{"option --paraboloid given twice"};
-      paraboloid = v;
-    } else if (take(args, i, "--standard-paraboloid", &v)) {
-      if (standard) throw SceneUsageError{"option --standard-paraboloid given twice"};
-      standard = v;
-    } else if (take(args, i, "--format", &v)) {
-      if (v != "jsonl" && v != "csv") throw SceneUsageError{"--format must be jsonl or csv, got '" + v + "'"};
+      return relpos_cli::finish_cout();
+    } else if (shapes.take(args)) {
+    } else if (args.value("--format", v)) {
+      if (v != "jsonl" && v != "csv") throw UsageError{"--format must be jsonl or csv, got '" + v + "'"};
       format_text = v;
-    } else if (take(args, i, "--threads", &v)) {
+    } else if (args.value("--threads", v)) {
       threads = static_cast<unsigned>(parse_count(v, "--threads", 1, 1024));
-    } else if (take(args, i, "--generate", &v)) {
+    } else if (args.value("--generate", v)) {
       generate = parse_count(v, "--generate", 0, 1000000000000ULL);
-    } else if (take(args, i, "--seed", &v)) {
+    } else if (args.value("--seed", v)) {
       seed = parse_count(v, "--seed", 0, ~0ULL);
-    } else if (take(args, i, "--summary-only", nullptr)) {
+    } else if (args.value("--max-line-bytes", v)) {
+      options_line.max_line_bytes = parse_count(v, "--max-line-bytes", 1, std::size_t(1) << 40);
+    } else if (args.flag("--summary-only")) {
       summary_only = true;
-    } else if (take(args, i, "--no-progress", nullptr)) {
+    } else if (args.flag("--no-progress")) {
       progress = false;
-    } else if (args[i] != "-" && args[i].rfind("-", 0) == 0) {
-      throw SceneUsageError{"unknown option '" + args[i] + "'"};
+    } else if (args.peek() != "-" && args.peek().rfind("-", 0) == 0) {
+      args.unexpected();
     } else {
-      if (file) throw SceneUsageError{"more than one input file given"};
-      file = args[i++];
+      if (file) throw UsageError{"more than one input file given"};
+      file = args.next();
     }
   }
-  if (paraboloid && standard) throw SceneUsageError{"give either --paraboloid or --standard-paraboloid, not both"};
-
   if (generate) {
-    if (paraboloid || file || format_text || summary_only)
-      throw SceneUsageError{"--generate takes only --seed and --standard-paraboloid"};
+    if (shapes.paraboloid || shapes.ellipsoid || shapes.sphere || file || format_text || summary_only)
+      throw UsageError{"--generate takes only --seed and --standard-paraboloid"};
     try {
-      return run_generate(*generate, seed, standard);
+      return run_generate(*generate, seed, shapes);
     } catch (const relpos::InputError& e) {
       std::cerr << "relpos: " << e.what() << "\n";
       return kExitInput;
     }
   }
-  if (!paraboloid && !standard)
-    throw SceneUsageError{"missing the paraboloid (--paraboloid Q or --standard-paraboloid A,B)"};
+  shapes.check(/*need_ellipsoid=*/false);
 
   std::optional<relpos::Paraboloid> p;
   try {
-    if (paraboloid) {
-      Json doc;
-      try {
-        doc = relpos::io::parse_json_exact(*paraboloid);
-      } catch (const relpos::InputError& e) {
-        throw relpos::InputError(std::string("paraboloid: ") + e.what());
-      }
-      p = relpos::io::paraboloid_from_json(doc, "paraboloid");
-    } else {
-      p = standard_paraboloid(*standard);
-    }
+    p = shapes.make_paraboloid();
   } catch (const relpos::InputError& e) {
     std::cerr << "relpos: " << e.what() << "\n";
     return kExitInput;
@@ -481,16 +382,10 @@ int run_scene(const std::vector<std::string>& args) {
   else if (from_file && file->size() >= 4 && file->compare(file->size() - 4, 4, ".csv") == 0)
     format = Format::Csv;
 
-  std::ifstream in_file;
-  std::istream* in = &std::cin;
-  if (from_file) {
-    in_file.open(*file, std::ios::binary);
-    if (!in_file) {
-      std::cerr << "relpos: cannot open '" << *file << "': " << std::strerror(errno) << "\n";
-      return kExitIo;
-    }
-    in = &in_file;
-  }
+  const int fd = relpos_cli::open_input(from_file ? *file : "-");
+  if (fd < 0) return kExitIo;
+  relpos_cli::LineReader reader(fd, options_line.max_line_bytes);
+  relpos_cli::Output output;
 
   const relpos::Scene scene(*p);
   const bool show = progress && isatty(STDERR_FILENO);
@@ -505,19 +400,38 @@ int run_scene(const std::vector<std::string>& args) {
   std::vector<std::string> lines;
   std::vector<Parsed> parsed;
   std::string out;
+  // Blocks of lines are parsed and classified on the threads and written in input order as soon as
+  // they are answered; a block ends early when the input has nothing more ready.
   for (bool more = true; more;) {
     lines.clear();
+    parsed.clear();
     std::string line;
-    while (lines.size() < kBlockLines && (more = static_cast<bool>(std::getline(*in, line)))) {
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      lines.push_back(std::move(line));
+    while (lines.size() < kBlockLines && (lines.empty() || reader.ready())) {
+      const relpos_cli::LineReader::Status status = reader.next(line);
+      if (status == relpos_cli::LineReader::Status::End) {
+        more = false;
+        break;
+      }
+      if (status == relpos_cli::LineReader::Status::Error) {
+        bar.finish();
+        output.flush();
+        std::cerr << "relpos: error reading '" << (from_file ? *file : std::string("<stdin>"))
+                  << "': " << std::strerror(reader.error()) << "\n";
+        return kExitIo;
+      }
+      Parsed x;
+      x.line = line_number + static_cast<long>(lines.size()) + 1;
+      x.id = std::to_string(x.line);
+      if (status == relpos_cli::LineReader::Status::TooLong)
+        x.error = relpos::io::too_long_message(options_line.max_line_bytes);
+      else if (status == relpos_cli::LineReader::Status::OutOfMemory)
+        x.error = "out of memory while reading this line";
+      parsed.push_back(std::move(x));
+      lines.push_back(status == relpos_cli::LineReader::Status::Line ? std::move(line) : std::string());
     }
     if (lines.empty()) break;
-    parsed.assign(lines.size(), Parsed{});
     parallel_for(lines.size(), threads, [&](std::size_t i) {
-      parsed[i].line = line_number + static_cast<long>(i) + 1;
-      parse_line(lines[i], format, parsed[i]);
-      if (parsed[i].id.is_null()) parsed[i].id = parsed[i].line;
+      if (parsed[i].error.empty()) parse_line(lines[i], format, options_line, *p, parsed[i]);
       bar.counter().fetch_add(1, std::memory_order_relaxed);  // progress: one unit when read...
     });
     line_number += static_cast<long>(lines.size());
@@ -550,10 +464,10 @@ int run_scene(const std::vector<std::string>& args) {
       for (std::size_t i = 0; i < parsed.size(); ++i) {
         const Parsed& x = parsed[i];
         if (x.skip) continue;
-        out += "{\"id\":" + dump(x.id);
+        out += "{\"id\":" + x.id;
         if (const relpos::SceneVerdict* v = verdict_of[i]) {
           out += ",\"position\":\"";
-          out += position_text(v->position);
+          out += relpos::to_string(v->position);
           out += "\",\"contact\":";
           out += v->contact < 0 ? "null" : (v->contact ? "true" : "false");
           out += ",\"stage\":\"" + relpos::to_string(v->stage) + "\"}\n";
@@ -561,25 +475,21 @@ int run_scene(const std::vector<std::string>& args) {
           out += ",\"line\":" + std::to_string(x.line) + ",\"error\":" + dump(Json(x.error)) + "}\n";
         }
       }
-      std::cout << out;
-      std::cout.flush();
-      if (!std::cout) {
+      output.write(out);
+      if (!more || !reader.ready()) output.flush();
+      if (output.failed()) {
         bar.finish();
-        std::cerr << "relpos: cannot write the output\n";
-        return kExitIo;
+        return output.report_failure();
       }
     }
   }
   bar.finish();
-  if (in->bad()) {
-    std::cerr << "relpos: error reading '" << (from_file ? *file : std::string("<stdin>")) << "'\n";
-    return kExitIo;
-  }
+  if (!output.flush()) return output.report_failure();
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Json positions, stages;
   for (auto pos : {relpos::Position::I, relpos::Position::TI, relpos::Position::C, relpos::Position::TE,
                    relpos::Position::E, relpos::Position::Unclassified})
-    positions[position_text(pos)] = counts.count(pos);
+    positions[relpos::to_string(pos)] = counts.count(pos);
   for (const relpos::Stage s : relpos::kAllStages) stages[relpos::to_string(s)] = counts.count(s);
   Json summary;
   summary["bodies"] = counts.bodies;
@@ -594,14 +504,4 @@ int run_scene(const std::vector<std::string>& args) {
   return kExitOk;
 }
 
-}  // namespace
-
-/// Entry point of `relpos scene` (hooked into cli/main.cpp's dispatch). Handles its own usage errors.
-int run_scene_command(const std::vector<std::string>& args) {
-  try {
-    return run_scene(args);
-  } catch (const SceneUsageError& u) {
-    std::cerr << "relpos: " << u.message << "\nTry 'relpos --help' or 'relpos scene --help'.\n";
-    return kExitUsage;
-  }
-}
+}  // namespace relpos_cli

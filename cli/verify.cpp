@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "commands.hpp"
+#include "common.hpp"
 #include "relpos/io.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
@@ -50,59 +52,47 @@ struct InputPair {
   std::string error;  // why the line is not a valid pair (empty if it is)
 };
 
+/// The input line as `relpos batch` reads it (relpos::io::read_batch_line).
 InputPair read_input(const std::string& line, long number) {
   InputPair in;
-  in.id = number;
+  relpos::io::BatchLine read;
   try {
-    if (line.find_first_not_of(" \t\r\n") == std::string::npos) throw relpos::InputError("empty line");
-    const Json doc = relpos::io::parse_json_exact(line);
-    if (!doc.is_object()) throw relpos::InputError("not a JSON object");
-    if (doc.contains("id")) {
-      try {
-        in.id = Json::parse(line)["id"];  // as `relpos batch` echoes it
-      } catch (const std::exception&) {
-        in.id = nullptr;  // not comparable (a number beyond double range)
-      }
-    }
-    for (const auto& item : doc.items())
-      if (item.key() != "id" && item.key() != "ellipsoid" && item.key() != "paraboloid" && item.key() != "comment")
-        throw relpos::InputError("unknown key \"" + item.key() + "\"");
-    if (!doc.contains("ellipsoid")) throw relpos::InputError("ellipsoid: missing");
-    if (!doc.contains("paraboloid")) throw relpos::InputError("paraboloid: missing");
-    relpos::Ellipsoid e = relpos::io::ellipsoid_from_json(doc["ellipsoid"], "ellipsoid");
-    relpos::Paraboloid p = relpos::io::paraboloid_from_json(doc["paraboloid"], "paraboloid");
-    relpos::io::check_pair_size(e, p);  // `relpos batch` rejects these too
-    in.e = std::move(e);
-    in.p = std::move(p);
+    relpos::io::read_batch_line(line, number, relpos::io::BatchOptions{}, nullptr, read);
+    in.e = std::move(read.ellipsoid);
+    in.p = std::move(read.paraboloid);
   } catch (const std::exception& err) {
     in.error = err.what();
+  }
+  try {
+    in.id = Json::parse(read.id);  // as `relpos batch` echoes it
+  } catch (const std::exception&) {
+    in.id = nullptr;  // not comparable (a number beyond double range)
   }
   return in;
 }
 
 }  // namespace
 
-int run_verify(int argc, char** argv) {
+namespace relpos_cli {
+
+void print_verify_help(std::ostream& os) { os << kVerifyHelp; }
+
+int run_verify(Args& args) {
   std::vector<std::string> files;
   bool quiet = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::cout << kVerifyHelp;
-      return 0;
-    } else if (a == "--quiet" || a == "-q") {
+  while (!args.done()) {
+    if (args.help()) {
+      print_verify_help(std::cout);
+      return finish_cout();
+    } else if (args.flag("--quiet") || args.flag("-q")) {
       quiet = true;
-    } else if (a.size() > 1 && a[0] == '-') {
-      std::cerr << "relpos verify: unknown option '" << a << "'\nTry 'relpos verify --help'.\n";
-      return 2;
+    } else if (args.peek().size() > 1 && args.peek()[0] == '-') {
+      args.unexpected();
     } else {
-      files.push_back(a);
+      files.push_back(args.next());
     }
   }
-  if (files.size() != 2) {
-    std::cerr << "relpos verify: expected INPUT.jsonl and ANSWERS.jsonl\nTry 'relpos verify --help'.\n";
-    return 2;
-  }
+  if (files.size() != 2) throw UsageError{"expected INPUT.jsonl and ANSWERS.jsonl"};
   std::ifstream input(files[0], std::ios::binary), answers(files[1], std::ios::binary);
   for (int k = 0; k < 2; ++k) {
     if (!(k == 0 ? input : answers)) {
@@ -200,5 +190,8 @@ int run_verify(int argc, char** argv) {
   std::cout << "verified " << verified << ", failed " << failed << ", skipped " << skipped;
   if (unanswered) std::cout << ", unanswered " << unanswered;
   std::cout << "\n";
+  if (finish_cout() != kExitOk) return kExitIo;
   return failed == 0 && unanswered == 0 ? 0 : 1;
 }
+
+}  // namespace relpos_cli

@@ -9,10 +9,12 @@
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "relpos/classify.hpp"
+#include "relpos/contact.hpp"
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
 
@@ -60,6 +62,9 @@ struct RenderOptions {
 /// evidence degree_ftilde, f, s and multiple_roots. Key order is stable.
 nlohmann::ordered_json classification_to_json(const Classification& c, const RenderOptions& options = {});
 
+/// The contact-only answer (doc/contact.md): contact, position, rule, decided_by.
+nlohmann::ordered_json contact_to_json(const ContactAnswer& a);
+
 /// A multi-line human-readable report (ends with a newline).
 std::string classification_to_text(const Classification& c, const RenderOptions& options = {});
 
@@ -81,6 +86,56 @@ inline constexpr std::size_t kMaxPairBits = 4096;
 
 /// Throws InputError ("numbers too large: ...") when pair_integer_bits(e, p) > kMaxPairBits.
 void check_pair_size(const Ellipsoid& e, const Paraboloid& p);
+
+// ------------------------------------------------------------------------------------------------
+// Batch lines: the one reader of a JSON Lines input line, used by `relpos batch`, by `relpos scene`
+// and by the fuzzer (doc/cli.md, "relpos batch").
+
+/// Default longest input line (--max-line-bytes): 64 MiB.
+inline constexpr std::size_t kDefaultMaxLineBytes = std::size_t(64) << 20;
+
+struct BatchOptions {
+  Evidence evidence = Evidence::Full;  ///< Minimal: id, position, small, contact, rule, stage only
+  bool contact_only = false;           ///< the contact answer of doc/contact.md
+  bool numbers_as_doubles = false;     ///< each JSON number is the IEEE double nearest its text
+  std::size_t max_line_bytes = kDefaultMaxLineBytes;
+  RenderOptions render;
+};
+
+/// One input line, read: the id as the JSON text to echo, and the quadrics.
+struct BatchLine {
+  std::string id;  ///< the id's JSON text exactly as in the input, or the line number
+  std::optional<Ellipsoid> ellipsoid;
+  std::optional<Paraboloid> paraboloid;
+};
+
+/// "line too long: more than N bytes (--max-line-bytes)", the refusal of a line beyond the limit.
+std::string too_long_message(std::size_t max_line_bytes);
+
+/// The line without what every input format ignores: a UTF-8 byte order mark on line 1 and one
+/// trailing '\r'. Throws InputError for a line longer than max_line_bytes or holding a NUL byte
+/// (the message names the column).
+std::string_view normalize_line(std::string_view line, long line_number, std::size_t max_line_bytes);
+
+/// Read one JSON Lines line {"id", "ellipsoid", "paraboloid", "comment"} (with `fixed`, a scene line:
+/// {"id", "ellipsoid", "comment"}, and the size limit is checked against *fixed). The top-level
+/// object is scanned once: the id's text is kept, "comment" is validated without being stored,
+/// duplicate keys are refused. out.id is set (to the line number at first, to the id once it is
+/// read) before any InputError is thrown, so that errors echo the id.
+void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
+                     BatchLine& out);
+
+/// The one JSON output line (no newline) answering an input line of `relpos batch`: the
+/// classification or {"id": ..., "error": "..."}. Never throws (out of memory on the line is that
+/// line's error).
+std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options);
+
+/// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced. Never throws std::bad_alloc
+/// beyond a fixed small message.
+std::string error_line(const std::string& id_text, const std::string& message);
+
+/// A JSON value as one line of text, invalid UTF-8 replaced by U+FFFD (the one JSON writer).
+std::string dump_json(const nlohmann::ordered_json& value);
 
 }  // namespace relpos::io
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <initializer_list>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "core/roots.hpp"
+#include "io/json_read.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos::io {
@@ -18,23 +20,132 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+/// "[json.exception.parse_error.101] parse error at ..." -> "parse error at ...".
+std::string strip_exception_prefix(const std::string& what) {
+  if (!what.empty() && what[0] == '[') {
+    auto close = what.find("] ");
+    if (close != std::string::npos) return what.substr(close + 2);
+  }
+  return what;
+}
+
 /// The DOM builder of nlohmann::json, except that a floating-point number is stored as a string
 /// holding its original text (the lexer hands the text to the SAX callback), so that no number is
-/// ever rounded to a double.
+/// ever rounded to a double; with `doubles`, every number becomes the exact value of the IEEE double
+/// nearest its text instead. Duplicate keys are rejected; with max_elements, so are arrays and
+/// objects of more entries (a quadric needs at most 16), which bounds the DOM of a batch line.
 class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
  public:
   using Base = nlohmann::detail::json_sax_dom_parser<Json>;
-  explicit ExactSax(Json& document) : Base(document, /*allow_exceptions=*/true) {}
-  bool number_float(Json::number_float_t /*rounded*/, const Json::string_t& text) {
-    Json::string_t copy = text;
+  ExactSax(Json& document, const detail::JsonReadOptions& options)
+      : Base(document, /*allow_exceptions=*/true), options_(options), depth_(options.start_depth) {}
+  bool number_float(Json::number_float_t rounded, const Json::string_t& text) {
+    if (!counted()) return false;
+    Json::string_t copy = options_.doubles ? double_text(rounded) : text;
     return Base::string(copy);
+  }
+  bool number_integer(Json::number_integer_t v) {
+    if (!counted()) return false;
+    if (options_.doubles && (v > (std::int64_t(1) << 53) || v < -(std::int64_t(1) << 53))) {
+      Json::string_t copy = double_text(static_cast<double>(v));
+      return Base::string(copy);
+    }
+    return Base::number_integer(v);
+  }
+  bool number_unsigned(Json::number_unsigned_t v) {
+    if (!counted()) return false;
+    if (options_.doubles && v > (std::uint64_t(1) << 53)) {
+      Json::string_t copy = double_text(static_cast<double>(v));
+      return Base::string(copy);
+    }
+    return Base::number_unsigned(v);
+  }
+  bool null() { return counted() && Base::null(); }
+  bool boolean(bool v) { return counted() && Base::boolean(v); }
+  bool string(Json::string_t& v) { return counted() && Base::string(v); }
+  bool key(Json::string_t& k) {
+    auto& keys = keys_.back();
+    if (std::find(keys.begin(), keys.end(), k) != keys.end())
+      throw InputError("invalid JSON: duplicate key \"" + (k.size() > 40 ? k.substr(0, 40) + "..." : k) + "\"");
+    keys.push_back(k);
+    return Base::key(k);
   }
   // Nesting is limited: copying and printing a JSON value recurse, so a line of 100000 '[' would
   // otherwise overflow the stack when its "id" is echoed.
-  bool start_object(std::size_t n) { return enter() && Base::start_object(n); }
-  bool end_object() { return leave() && Base::end_object(); }
-  bool start_array(std::size_t n) { return enter() && Base::start_array(n); }
-  bool end_array() { return leave() && Base::end_array(); }
+  bool start_object(std::size_t n) {
+    if (!counted() || !enter()) return false;
+    keys_.emplace_back();
+    counts_.push_back(0);
+    return Base::start_object(n);
+  }
+  bool end_object() {
+    keys_.pop_back();
+    counts_.pop_back();
+    return leave() && Base::end_object();
+  }
+  bool start_array(std::size_t n) {
+    if (!counted() || !enter()) return false;
+    keys_.emplace_back();
+    counts_.push_back(0);
+    return Base::start_array(n);
+  }
+  bool end_array() {
+    keys_.pop_back();
+    counts_.pop_back();
+    return leave() && Base::end_array();
+  }
+
+ private:
+  static Json::string_t double_text(double d) {
+    if (!std::isfinite(d)) return "inf";  // parse_rational rejects it with the field's path
+    return to_string(exact_rational(d));
+  }
+  /// One more entry in the innermost array or object.
+  bool counted() {
+    if (!counts_.empty() && options_.max_elements != 0 && ++counts_.back() > options_.max_elements)
+      throw InputError("an array or object of more than " + std::to_string(options_.max_elements) +
+                       " entries (a quadric needs at most 16: a 4x4 matrix)");
+    return true;
+  }
+  bool enter() {
+    if (++depth_ > kMaxJsonDepth)
+      throw InputError("invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    return true;
+  }
+  bool leave() {
+    --depth_;
+    return true;
+  }
+  detail::JsonReadOptions options_;
+  std::size_t depth_ = 0;
+  std::vector<std::vector<std::string>> keys_;
+  std::vector<std::size_t> counts_;
+};
+
+/// Validates JSON without storing anything (memory independent of the text's size): ignored content.
+class ValidatingSax : public nlohmann::json_sax<Json> {
+ public:
+  explicit ValidatingSax(std::size_t start_depth) : depth_(start_depth) {}
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return enter(); }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return leave(); }
+  bool start_array(std::size_t) override { return enter(); }
+  bool end_array() override { return leave(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    if (e.id == 406) {  // a number beyond double range: nlohmann stops here
+      overflow = true;
+      return false;
+    }
+    throw detail::JsonSyntaxError("invalid JSON: " + strip_exception_prefix(e.what()));
+  }
+  bool overflow = false;  ///< a number beyond double range stopped the parse (valid JSON so far)
 
  private:
   bool enter() {
@@ -46,17 +157,8 @@ class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
     --depth_;
     return true;
   }
-  std::size_t depth_ = 0;
+  std::size_t depth_;
 };
-
-/// "[json.exception.parse_error.101] parse error at ..." -> "parse error at ...".
-std::string strip_exception_prefix(const std::string& what) {
-  if (!what.empty() && what[0] == '[') {
-    auto close = what.find("] ");
-    if (close != std::string::npos) return what.substr(close + 2);
-  }
-  return what;
-}
 
 std::string shorten(const std::string& s, std::size_t limit = 40) {
   if (s.size() <= limit) return s;
@@ -257,32 +359,84 @@ auto with_role(const std::string& role, F&& make) -> decltype(make()) {
   }
 }
 
+/// Determinant of a symmetric 3x3 block given by its entries.
+Rational det3(const Rational (&b)[3][3]) {
+  return b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1]) - b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0]) +
+         b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0]);
+}
+
+/// A paraboloid from a matrix or coefficients, whose 3x3 block is `block`: when the library refuses
+/// it and the block has full rank, the likely cause is rounding (a paraboloid's block has rank 2, and
+/// rounded decimals of a rotated one almost never keep it), so the message says so.
+template <class F>
+Paraboloid paraboloid_checked(const std::string& role, const Rational (&block)[3][3], F&& make) {
+  try {
+    return make();
+  } catch (const InputError& e) {
+    if (det3(block) == 0) throw InputError(role + ": " + e.what());
+    throw InputError(role + ": " + e.what() +
+                     "; its 3x3 block has full rank, so this is not a paraboloid as given: if the numbers are "
+                     "rounded decimals of a paraboloid, rounding can break the shape - give it exactly by its "
+                     "geometric form {\"vertex\", \"a\", \"b\", \"rotation\"} or {\"map\", \"translation\"}");
+  }
+}
+
+Paraboloid paraboloid_from_matrix(const Matrix4& m, const std::string& role) {
+  Rational block[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) block[i][j] = m(i, j);
+  return paraboloid_checked(role, block, [&] { return Paraboloid::from_matrix(m); });
+}
+
+Paraboloid paraboloid_from_coefficients(const Coefficients10& c, const std::string& role) {
+  const Rational half(1, 2);
+  const Rational block[3][3] = {
+      {c[0], c[3] * half, c[4] * half}, {c[3] * half, c[1], c[5] * half}, {c[4] * half, c[5] * half, c[2]}};
+  return paraboloid_checked(role, block, [&] { return Paraboloid::from_coefficients(c); });
+}
+
 }  // namespace
 
-Json parse_json_exact(std::string_view text) {
+namespace detail {
+
+Json parse_json(std::string_view text, const JsonReadOptions& options) {
   Json root;
   try {
-    ExactSax sax(root);
+    ExactSax sax(root, options);
     Json::sax_parse(text.begin(), text.end(), &sax);
     return root;
   } catch (const nlohmann::json::out_of_range& e) {
     // "number overflow" (406): a number beyond the range of a double, which nlohmann checks before
     // handing us the text. Quote the number tokens and parse again; they are exact all the same.
-    if (e.id != 406) throw InputError("invalid JSON: " + strip_exception_prefix(e.what()));
+    if (e.id != 406) throw detail::JsonSyntaxError("invalid JSON: " + strip_exception_prefix(e.what()));
+    if (options.doubles) throw InputError("invalid JSON: a number beyond the range of a double (--numbers double)");
   } catch (const nlohmann::json::exception& e) {
-    throw InputError("invalid JSON: " + strip_exception_prefix(e.what()));
+    throw detail::JsonSyntaxError("invalid JSON: " + strip_exception_prefix(e.what()));
   }
   const std::string quoted = quote_numbers(text);
   root = Json();
   try {
-    ExactSax sax(root);
+    ExactSax sax(root, options);
     Json::sax_parse(quoted.begin(), quoted.end(), &sax);
   } catch (const nlohmann::json::exception& e) {
-    throw InputError("invalid JSON: " + strip_exception_prefix(e.what()) +
-                     " (columns counted after quoting the numbers beyond double range)");
+    throw detail::JsonSyntaxError("invalid JSON: " + strip_exception_prefix(e.what()) +
+                                  " (columns counted after quoting the numbers beyond double range)");
   }
   return root;
 }
+
+void validate_json(std::string_view text, std::size_t start_depth) {
+  ValidatingSax sax(start_depth);
+  Json::sax_parse(text.begin(), text.end(), &sax);
+  if (!sax.overflow) return;
+  const std::string quoted = quote_numbers(text);  // rare: numbers beyond double range
+  ValidatingSax again(start_depth);
+  Json::sax_parse(quoted.begin(), quoted.end(), &again);
+}
+
+}  // namespace detail
+
+Json parse_json_exact(std::string_view text) { return detail::parse_json(text, detail::JsonReadOptions{}); }
 
 Rational rational_from_json(const Json& v, const std::string& path) {
   switch (v.type()) {
@@ -364,20 +518,17 @@ Ellipsoid ellipsoid_from_json(const Json& v, const std::string& role) {
 
 Paraboloid paraboloid_from_json(const Json& v, const std::string& role) {
   if (v.is_array()) {
-    Matrix4 m = matrix4(v, role);
-    return with_role(role, [&] { return Paraboloid::from_matrix(m); });
+    return paraboloid_from_matrix(matrix4(v, role), role);
   }
   if (!v.is_object())
     fail(role, "expected a 4x4 array or an object describing an elliptic paraboloid, got " + describe(v));
   if (v.contains("matrix")) {
     check_keys(v, {"matrix"}, role);
-    Matrix4 m = matrix4(v["matrix"], key_path(role, "matrix"));
-    return with_role(role, [&] { return Paraboloid::from_matrix(m); });
+    return paraboloid_from_matrix(matrix4(v["matrix"], key_path(role, "matrix")), role);
   }
   if (v.contains("coefficients")) {
     check_keys(v, {"coefficients"}, role);
-    Coefficients10 c = coefficients10(v["coefficients"], key_path(role, "coefficients"));
-    return with_role(role, [&] { return Paraboloid::from_coefficients(c); });
+    return paraboloid_from_coefficients(coefficients10(v["coefficients"], key_path(role, "coefficients")), role);
   }
   if (v.contains("vertex") || v.contains("a") || v.contains("b")) {
     check_keys(v, {"vertex", "a", "b", "rotation"}, role);

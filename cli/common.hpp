@@ -1,0 +1,62 @@
+// Shared by the commands of the relpos CLI: exit codes, usage errors, input lines and output.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace relpos_cli {
+
+/// The exit codes of every command (doc/cli.md, "Exit codes").
+constexpr int kExitOk = 0;
+constexpr int kExitInput = 1;
+constexpr int kExitUsage = 2;
+constexpr int kExitIo = 3;
+constexpr int kExitInternal = 4;
+constexpr int kExitBudget = 5;  // motion: --max-seconds exceeded
+
+/// Reads lines from a file descriptor in blocks: memory O(longest line kept), lines longer than the
+/// limit are skipped (their bytes are read, not stored) and reported as such.
+class LineReader {
+ public:
+  enum class Status { Line, TooLong, OutOfMemory, End, Error };
+  LineReader(int fd, std::size_t max_line_bytes) : fd_(fd), max_(max_line_bytes) {}
+  /// The next line without its '\n' (status Line), or why there is none.
+  Status next(std::string& line);
+  /// True when next() would not block (a line is buffered, the input has data or has ended).
+  bool ready();
+  int error() const { return error_; }  ///< errno of the failed read (status Error)
+
+ private:
+  bool fill();
+  int fd_;
+  std::size_t max_;
+  std::string buffer_;
+  std::size_t begin_ = 0;
+  bool eof_ = false;
+  int error_ = 0;
+};
+
+/// Buffered standard output through write(2): a closed pipe or a full disk is seen (SIGPIPE is
+/// ignored) and reported once, with exit code kExitIo.
+class Output {
+ public:
+  void write(std::string_view text);
+  bool flush();  ///< false once a write has failed
+  bool failed() const { return failed_; }
+  int report_failure();  ///< prints "relpos: cannot write the output: ..." and returns kExitIo
+
+ private:
+  std::string buffer_;
+  bool failed_ = false;
+  int error_ = 0;
+};
+
+/// Flush std::cout; on failure print the one write-failure message and return kExitIo.
+int finish_cout();
+
+/// Open FILE for reading ("-" or empty: standard input). Returns the descriptor, or -1 after
+/// printing "relpos: cannot open 'FILE': ..." (a directory says so).
+int open_input(const std::string& file);
+
+}  // namespace relpos_cli

@@ -1,0 +1,268 @@
+// One batch line (io.hpp): the reader shared by `relpos batch`, `relpos scene` and the fuzzer.
+//
+// The top-level object of a line is scanned by hand, once: each member's value is located as a span
+// of the text, so that the id is echoed byte for byte, duplicate keys are seen, and "comment" is
+// validated by a SAX pass that stores nothing. Only the two quadrics are parsed into (small,
+// bounded) DOMs.
+#include <new>
+#include <string>
+#include <string_view>
+
+#include "io/json_read.hpp"
+#include "relpos/classify.hpp"
+#include "relpos/contact.hpp"
+#include "relpos/error.hpp"
+#include "relpos/io.hpp"
+
+namespace relpos::io {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// Entries allowed per array or object inside a quadric (a 4x4 matrix has 4 rows of 4).
+constexpr std::size_t kMaxQuadricEntries = 16;
+
+bool is_ws(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+std::size_t skip_ws(std::string_view s, std::size_t i) {
+  while (i < s.size() && is_ws(s[i])) ++i;
+  return i;
+}
+
+/// End of the string starting at s[i] == '"', or npos.
+std::size_t string_end(std::string_view s, std::size_t i) {
+  for (++i; i < s.size(); ++i) {
+    if (s[i] == '\\')
+      ++i;
+    else if (s[i] == '"')
+      return i + 1;
+  }
+  return std::string_view::npos;
+}
+
+/// End of the JSON value starting at s[i] (structure only: the span is validated later), or npos.
+std::size_t value_end(std::string_view s, std::size_t i) {
+  if (i >= s.size()) return std::string_view::npos;
+  if (s[i] == '"') return string_end(s, i);
+  if (s[i] == '{' || s[i] == '[') {
+    std::size_t depth = 0;
+    while (i < s.size()) {
+      const char c = s[i];
+      if (c == '"') {
+        i = string_end(s, i);
+        if (i == std::string_view::npos) return i;
+        continue;
+      }
+      if (c == '{' || c == '[') ++depth;
+      if ((c == '}' || c == ']') && --depth == 0) return i + 1;
+      ++i;
+    }
+    return std::string_view::npos;
+  }
+  const std::size_t start = i;
+  while (i < s.size() && !is_ws(s[i]) && s[i] != ',' && s[i] != '}' && s[i] != ']') ++i;
+  return i == start ? std::string_view::npos : i;
+}
+
+/// The message of a line that is not JSON, from the parser (columns count from the line's start).
+[[noreturn]] void invalid_json(std::string_view line) {
+  detail::validate_json(line);
+  throw InputError("invalid JSON: expected one JSON object");
+}
+
+struct Member {
+  std::string_view key;  ///< one of the known keys
+  std::string_view value;
+};
+
+bool valid_utf8(std::string_view s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const std::size_t n = c < 0x80 ? 0 : (c >> 5) == 6 ? 1 : (c >> 4) == 14 ? 2 : (c >> 3) == 30 ? 3 : 9;
+    if (n == 9 || i + n >= s.size()) return false;
+    for (std::size_t k = 1; k <= n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) >> 6) != 2) return false;
+    i += n + 1;
+  }
+  return true;
+}
+
+}  // namespace
+
+Json contact_to_json(const ContactAnswer& a) {
+  Json j;
+  j["contact"] = to_string(a.contact);
+  j["position"] = to_string(a.position);
+  j["rule"] = describe(a.rule);
+  j["decided_by"] = to_string(a.by);
+  return j;
+}
+
+std::string dump_json(const Json& value) { return value.dump(-1, ' ', false, Json::error_handler_t::replace); }
+
+std::string error_line(const std::string& id_text, const std::string& message) {
+  return "{\"id\":" + id_text + ",\"error\":" + dump_json(Json(message)) + "}";
+}
+
+std::string too_long_message(std::size_t max_line_bytes) {
+  return "line too long: more than " + std::to_string(max_line_bytes) + " bytes (--max-line-bytes)";
+}
+
+std::string_view normalize_line(std::string_view line, long line_number, std::size_t max_line_bytes) {
+  if (line.size() > max_line_bytes) throw InputError(too_long_message(max_line_bytes));
+  if (line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // on any line: files get concatenated
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  const std::size_t nul = line.find('\0');
+  if (nul != std::string_view::npos) throw InputError("NUL byte at column " + std::to_string(nul + 1));
+  return line;
+}
+
+void read_batch_line(std::string_view raw, long line_number, const BatchOptions& options, const Paraboloid* fixed,
+                     BatchLine& out) {
+  out.id = std::to_string(line_number);
+  const std::string_view line = normalize_line(raw, line_number, options.max_line_bytes);
+  std::size_t i = skip_ws(line, 0);
+  if (i == line.size()) throw InputError("empty line");
+  const char* const expected = fixed ? "expected a JSON object {\"id\": ..., \"ellipsoid\": ...}"
+                                     : "expected a JSON object {\"id\": ..., \"ellipsoid\": ..., \"paraboloid\": ...}";
+  if (line[i] != '{') {
+    detail::validate_json(line);  // not JSON, or JSON that is not an object
+    throw InputError(expected);
+  }
+  // Scan the members; all structural errors are reported by the parser's message on the whole line.
+  Member members[4];
+  std::size_t count = 0;
+  std::string unknown, duplicate;
+  i = skip_ws(line, i + 1);
+  if (i < line.size() && line[i] == '}') {
+    i = skip_ws(line, i + 1);
+  } else {
+    for (;;) {
+      if (i >= line.size() || line[i] != '"') invalid_json(line);
+      const std::size_t key_end = string_end(line, i);
+      if (key_end == std::string_view::npos) invalid_json(line);
+      const std::string_view key_text = line.substr(i, key_end - i);
+      i = skip_ws(line, key_end);
+      if (i >= line.size() || line[i] != ':') invalid_json(line);
+      i = skip_ws(line, i + 1);
+      const std::size_t end = value_end(line, i);
+      if (end == std::string_view::npos) invalid_json(line);
+      const std::string_view value = line.substr(i, end - i);
+      std::string key;
+      try {
+        key = Json::parse(key_text).get<std::string>();
+      } catch (const nlohmann::json::exception&) {
+        invalid_json(line);
+      }
+      static const char* const kKeys[] = {"id", "ellipsoid", "paraboloid", "comment"};
+      bool known = false;
+      for (const char* k : kKeys) {
+        if (key != k || (fixed && key == "paraboloid")) continue;
+        known = true;
+        for (std::size_t m = 0; m < count; ++m)
+          if (members[m].key == k && duplicate.empty()) duplicate = key;
+        if (count < 4) members[count++] = Member{k, value};
+      }
+      if (!known) {
+        if (unknown.empty()) unknown = key.substr(0, 40);
+        try {
+          detail::validate_json(value, 1);  // not stored; still JSON within the limits
+        } catch (const detail::JsonSyntaxError&) {
+          invalid_json(line);
+        }
+      }
+      i = skip_ws(line, end);
+      if (i < line.size() && line[i] == ',') {
+        i = skip_ws(line, i + 1);
+        continue;
+      }
+      if (i < line.size() && line[i] == '}') {
+        i = skip_ws(line, i + 1);
+        break;
+      }
+      invalid_json(line);
+    }
+  }
+  if (i != line.size()) invalid_json(line);
+
+  // The id and the comment: valid JSON, not stored (the id is kept as its text).
+  for (std::size_t m = 0; m < count; ++m) {
+    if (members[m].key == "ellipsoid" || members[m].key == "paraboloid") continue;
+    try {
+      detail::validate_json(members[m].value, 1);
+    } catch (const detail::JsonSyntaxError&) {
+      invalid_json(line);  // reported on the whole line, with its columns
+    }
+  }
+  for (std::size_t m = count; m-- > 0;)  // the first "id" when there are two (an error below)
+    if (members[m].key == "id") {
+      if (valid_utf8(members[m].value))
+        out.id.assign(members[m].value.data(), members[m].value.size());  // byte for byte
+      else
+        out.id = dump_json(detail::parse_json(members[m].value, detail::JsonReadOptions{}));
+    }
+  // The quadrics: small bounded trees, numbers exact (or the nearest doubles).
+  detail::JsonReadOptions read;
+  read.doubles = options.numbers_as_doubles;
+  read.max_elements = kMaxQuadricEntries;
+  read.start_depth = 1;
+  Json ellipsoid, paraboloid;
+  for (std::size_t m = 0; m < count; ++m) {
+    const Member& x = members[m];
+    if (x.key != "ellipsoid" && x.key != "paraboloid") continue;
+    try {
+      (x.key == "ellipsoid" ? ellipsoid : paraboloid) = detail::parse_json(x.value, read);
+    } catch (const detail::JsonSyntaxError&) {
+      out.id = std::to_string(line_number);  // as for any line that is not JSON
+      invalid_json(line);
+    } catch (const InputError& e) {
+      throw InputError(std::string(x.key) + ": " + e.what());  // a limit: nesting, entries, duplicate key
+    }
+  }
+  if (!duplicate.empty()) throw InputError("duplicate key \"" + duplicate + "\"");
+  if (!unknown.empty())
+    throw InputError("unknown key \"" + unknown + "\"" +
+                     (fixed ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
+                            : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")"));
+  if (ellipsoid.is_null()) throw InputError("ellipsoid: missing");
+  if (!fixed && paraboloid.is_null()) throw InputError("paraboloid: missing");
+  out.ellipsoid = ellipsoid_from_json(ellipsoid, "ellipsoid");
+  if (!fixed) out.paraboloid = paraboloid_from_json(paraboloid, "paraboloid");
+  check_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
+}
+
+std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options) {
+  BatchLine in;
+  try {
+    read_batch_line(line, line_number, options, nullptr, in);
+    Json report;
+    if (options.contact_only) {
+      report = contact_to_json(contact(*in.ellipsoid, *in.paraboloid));
+    } else {
+      const Classification c = classify(*in.ellipsoid, *in.paraboloid, options.evidence);
+      if (options.evidence == Evidence::Full) {
+        report = classification_to_json(c, options.render);
+      } else {
+        report["position"] = to_string(c.verdict.position);
+        report["small"] = c.verdict.small;
+        report["contact"] = c.verdict.meets() ? Json(*c.verdict.meets()) : Json(nullptr);
+        report["rule"] = c.rule_text();
+        report["stage"] = to_string(c.verdict.stage);
+      }
+    }
+    std::string text = dump_json(report);  // "{...}": the id goes first
+    text.replace(0, 1, "{\"id\":" + in.id + ",");
+    return text;
+  } catch (const InputError& err) {
+    return error_line(in.id, err.what());
+  } catch (const std::bad_alloc&) {
+    return error_line(in.id, "out of memory while answering this line");
+  } catch (const std::exception& err) {
+    return error_line(in.id, std::string("internal error: ") + err.what());
+  } catch (...) {
+    return error_line(in.id, "internal error: unknown exception");
+  }
+}
+
+}  // namespace relpos::io
