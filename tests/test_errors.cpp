@@ -197,3 +197,28 @@ TEST_CASE("Doubles reach the constructors only through exact_rational", "[errors
   const Paraboloid p = Paraboloid::standard({0, 0, 0}, 1.0, 2.0);
   CHECK(p.matrix() == Paraboloid::standard({Rational(0), Rational(0), Rational(0)}, Rational(1), Rational(2)).matrix());
 }
+
+TEST_CASE("The size limit reads each matrix divided by its own content", "[errors][size]") {
+  // Two matrices rescaled independently by 10^1000 and 10^-1000: the common-lcm form is huge, each
+  // normalized form is tiny.
+  Rational big(1), small(1);
+  for (int i = 0; i < 1000; ++i) big *= 10;
+  small = Rational(1) / big;
+  Matrix4 e = sphere_matrix({Q(0), Q(0), Q(1)}, Q(1, 2)), p;
+  p(0, 0) = p(1, 1) = Q(1);
+  p(2, 3) = p(3, 2) = Q(-1, 2);
+  for (auto& x : e.a) x *= big;
+  for (auto& x : p.a) x *= small;
+  const Ellipsoid es = Ellipsoid::from_matrix(e);
+  const Paraboloid ps = Paraboloid::from_matrix(p);
+  CHECK(relpos::normalized_pair_bits(es, ps) <= 8);
+  CHECK_NOTHROW(relpos::check_normalized_pair_size(es, ps));
+  // A genuinely large entry is refused with a message naming the limit.
+  Rational huge(1);
+  for (int i = 0; i < 4200; ++i) huge *= 2;
+  Matrix4 e2 = sphere_matrix({Q(0), Q(0), Q(1)}, Q(1, 2));
+  e2(3, 3) += Rational(1) / huge;
+  const Ellipsoid e2s = Ellipsoid::from_matrix(e2);
+  CHECK(relpos::normalized_pair_bits(e2s, ps) > relpos::kMaxNormalizedBits);
+  CHECK_THROWS_WITH(relpos::check_normalized_pair_size(e2s, ps), Contains("kMaxNormalizedBits"));
+}

@@ -196,4 +196,20 @@ class Paraboloid {
   detail::QuadricMatrix m_;
 };
 
+/// Size limit on the *normalized* forms of a pair: each matrix divided by its own content (times the
+/// lcm of its denominators, then divided by the gcd of the resulting integers: its primitive integer
+/// form, unchanged by any rescaling of that matrix alone) must have entries of at most this many
+/// bits. Beyond it, exact evidence becomes slow (doc/cli.md, Limits).
+inline constexpr std::size_t kMaxNormalizedBits = 4096;
+
+/// Bits of the largest entry of the primitive integer form of m (0 for the zero matrix).
+std::size_t normalized_bits(const Matrix4& m);
+
+/// max(normalized_bits(e), normalized_bits(p)): independent of how either matrix was scaled.
+std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p);
+
+/// Throws InputError ("numbers too large: ...", naming kMaxNormalizedBits) when
+/// normalized_pair_bits(e, p) > kMaxNormalizedBits.
+void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p);
+
 }  // namespace relpos

@@ -1,5 +1,7 @@
 #include "relpos/quadric.hpp"
 
+#include <gmp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -433,6 +435,39 @@ Paraboloid Paraboloid::from_map(const Matrix3& l, const Vector3& t) {
   local(0, 0) = local(1, 1) = Rational(1);
   local(2, 3) = local(3, 2) = Rational(-1, 2);
   return from_matrix(push_forward(local, l, t, "paraboloid linear map"));
+}
+
+std::size_t normalized_bits(const Matrix4& m) {
+  Integer l(1), g(0);
+  for (const Rational& q : m.a) mpz_lcm(l.mpz(), l.mpz(), q.denominator().mpz());
+  std::array<Integer, 16> z;
+  for (std::size_t i = 0; i < 16; ++i) {
+    mpz_divexact(z[i].mpz(), l.mpz(), m.a[i].denominator().mpz());
+    mpz_mul(z[i].mpz(), z[i].mpz(), m.a[i].numerator().mpz());
+    mpz_gcd(g.mpz(), g.mpz(), z[i].mpz());
+  }
+  if (g == 0) return 0;
+  std::size_t bits = 0;
+  for (auto& x : z) {
+    if (x == 0) continue;
+    mpz_divexact(x.mpz(), x.mpz(), g.mpz());
+    bits = std::max<std::size_t>(bits, mpz_sizeinbase(x.mpz(), 2));
+  }
+  return bits;
+}
+
+std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
+  return std::max(normalized_bits(e.matrix()), normalized_bits(p.matrix()));
+}
+
+void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p) {
+  const std::size_t bits = normalized_pair_bits(e, p);
+  if (bits > kMaxNormalizedBits)
+    throw InputError(
+        "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "
+        "form), has " +
+        std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxNormalizedBits) +
+        " bits (kMaxNormalizedBits, doc/cli.md, Limits)");
 }
 
 }  // namespace relpos
