@@ -183,6 +183,23 @@ int main(int argc, char** argv) {
     const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
     return static_cast<int>(classify(e, p, Evidence::Full).verdict.position);
   });
+  {  // full evidence by position: where the remaining cost is
+    std::map<std::string, std::vector<double>> by;
+    for (int i = 0; i < nf; ++i) {
+      const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
+      const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
+      const auto t0 = Clock::now();
+      const Classification c = classify(e, p, Evidence::Full);
+      const auto t1 = Clock::now();
+      by[to_string(c.verdict.position)].push_back(std::chrono::duration<double, std::nano>(t1 - t0).count());
+    }
+    std::printf("full evidence by position (per-pair median):");
+    for (auto& [k, v] : by) {
+      std::sort(v.begin(), v.end());
+      std::printf(" %s %.0f us (%zu)", k.c_str(), v[v.size() / 2] / 1000, v.size());
+    }
+    std::printf("\n");
+  }
   auto line = [&](const char* name, double ns, const char* what) {
     std::printf("%-8s %12.0f ns  %9.1fx naive   %s\n", name, ns, ns / naive, what);
   };
