@@ -60,14 +60,32 @@ fig.savefig(f"{out}/error_vs_eps.png", dpi=110)
 
 # (3) speed-accuracy: pooled over every pair of every family (time weighted by n).
 fig, ax = plt.subplots(figsize=(7, 5))
+points = []
 for m in methods:
     rs = [r for r in rows if r["method"] == m]
     n = sum(int(r["n"]) for r in rs)
     err = sum(float(r["error_rate"]) * int(r["n"]) for r in rs) / n
     tm = sum(float(r["median_ns"]) * int(r["n"]) for r in rs) / n  # family means
     ax.scatter([tm], [err], s=60, color=colors[m], label=m)
-    ax.annotate(m, (tm, err), textcoords="offset points", xytext=(5, 5), fontsize=8)
+    points.append((tm, err, m))
 ax.set_xscale("log")
+ax.margins(x=0.25, y=0.15)
+# Labels that do not overlap: placed one by one (lowest error first), each moved up in steps of
+# its height until its estimated box (in points: ~5 pt per character, 9 pt high) meets no box
+# placed before, then drawn with a leader line when it moved.
+fig.canvas.draw()
+to_pt = 72.0 / fig.dpi
+placed = []
+for tm, err, m in sorted(points, key=lambda p: (p[1], p[0])):
+    px, py = ax.transData.transform((tm, err))
+    x0, y0 = px * to_pt + 8, py * to_pt
+    w, h = 5.0 * len(m) + 2, 10.0
+    dy = 4
+    while any(x0 < bx + bw and bx < x0 + w and y0 + dy < by + bh and by < y0 + dy + h for bx, by, bw, bh in placed):
+        dy += h
+    placed.append((x0, y0 + dy, w, h))
+    ax.annotate(m, (tm, err), textcoords="offset points", xytext=(8, dy), fontsize=8,
+                arrowprops=dict(arrowstyle="-", lw=0.5, color="0.5") if dy > 4 else None)
 ax.set_xlabel("mean time per query over all families [ns] (log)")
 ax.set_ylabel("error rate over all pairs (wrong or undecided)")
 ax.set_title("Speed vs accuracy (all families pooled)")

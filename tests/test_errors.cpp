@@ -1,12 +1,16 @@
 // Every input that is not an ellipsoid / elliptic paraboloid pair gets relpos::InputError with a
 // message that names what was found (math.md section 1).
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <relpos/algebraic_real.hpp>
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
+#include <relpos/motion.hpp>
 #include <relpos/numbers.hpp>
 #include <relpos/quadric.hpp>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -156,4 +160,65 @@ TEST_CASE("InputError is the one exception type and an std::invalid_argument", "
     CHECK(std::string(e.what()).find("hyperboloid of one sheet") != std::string::npos);
     CHECK(dynamic_cast<const InputError*>(&e) != nullptr);
   }
+}
+
+// ---- API misuse (issue 15) ----------------------------------------------------------------------
+
+TEST_CASE("AlgebraicReal::refine rejects a width that is not positive", "[errors][api]") {
+  auto sqrt2 = relpos::AlgebraicReal::root({Integer(-2), Integer(0), Integer(1)}, Rational(1), Rational(2));
+  CHECK_THROWS_AS(sqrt2.refine(Rational(0)), std::invalid_argument);
+  CHECK_THROWS_AS(sqrt2.refine(Rational(-1)), std::invalid_argument);
+  auto half = relpos::AlgebraicReal::rational(Rational(1, 2));
+  CHECK_THROWS_AS(half.refine(Rational(0)), std::invalid_argument);
+  sqrt2.refine(Rational(1, 1000));  // a positive width still works
+  CHECK(sqrt2.upper() - sqrt2.lower() <= Rational(1, 1000));
+}
+
+TEST_CASE("An empty Timeline throws instead of crashing", "[errors][api]") {
+  const relpos::Timeline empty{};
+  CHECK_THROWS_AS(empty.position_at(Rational(0)), InputError);
+}
+
+TEST_CASE("Doubles reach the constructors only through exact_rational", "[errors][api]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_AS(Ellipsoid::sphere({0, 0, nan}, 0.25), InputError);
+  CHECK_THROWS_AS(Ellipsoid::sphere({0, 0, 1}, inf), InputError);
+  CHECK_THROWS_AS(Ellipsoid::sphere({0, 0, 1}, nan), InputError);
+  const std::array<double, 3> centre{0, 0, 1}, axes{1, nan, 1};
+  const std::array<double, 4> identity{1, 0, 0, 0};
+  CHECK_THROWS_AS(Ellipsoid::from_axes(centre, axes, identity), InputError);
+  CHECK_THROWS_AS(Paraboloid::standard({0, 0, -inf}, 1.0, 1.0), InputError);
+  CHECK_THROWS_AS(Paraboloid::standard({0, 0, 0}, 1.0, 1.0, {1, nan, 0, 0}), InputError);
+  // Finite doubles are taken exactly.
+  const Ellipsoid s = Ellipsoid::sphere({0, 0, 1.5}, 0.25);
+  CHECK(s.matrix()(2, 3) == Rational(-3, 2));
+  CHECK(s.matrix()(3, 3) == Rational(9, 4) - Rational(1, 16));
+  const Paraboloid p = Paraboloid::standard({0, 0, 0}, 1.0, 2.0);
+  CHECK(p.matrix() == Paraboloid::standard({Rational(0), Rational(0), Rational(0)}, Rational(1), Rational(2)).matrix());
+}
+
+TEST_CASE("The size limit reads each matrix divided by its own content", "[errors][size]") {
+  // Two matrices rescaled independently by 10^1000 and 10^-1000: the common-lcm form is huge, each
+  // normalized form is tiny.
+  Rational big(1), small(1);
+  for (int i = 0; i < 1000; ++i) big *= 10;
+  small = Rational(1) / big;
+  Matrix4 e = sphere_matrix({Q(0), Q(0), Q(1)}, Q(1, 2)), p;
+  p(0, 0) = p(1, 1) = Q(1);
+  p(2, 3) = p(3, 2) = Q(-1, 2);
+  for (auto& x : e.a) x *= big;
+  for (auto& x : p.a) x *= small;
+  const Ellipsoid es = Ellipsoid::from_matrix(e);
+  const Paraboloid ps = Paraboloid::from_matrix(p);
+  CHECK(relpos::normalized_pair_bits(es, ps) <= 8);
+  CHECK_NOTHROW(relpos::check_normalized_pair_size(es, ps));
+  // A genuinely large entry is refused with a message naming the limit.
+  Rational huge(1);
+  for (int i = 0; i < 4200; ++i) huge *= 2;
+  Matrix4 e2 = sphere_matrix({Q(0), Q(0), Q(1)}, Q(1, 2));
+  e2(3, 3) += Rational(1) / huge;
+  const Ellipsoid e2s = Ellipsoid::from_matrix(e2);
+  CHECK(relpos::normalized_pair_bits(e2s, ps) > relpos::kMaxNormalizedBits);
+  CHECK_THROWS_WITH(relpos::check_normalized_pair_size(e2s, ps), Contains("kMaxNormalizedBits"));
 }

@@ -39,7 +39,8 @@ class AlgebraicReal {
   /// coefficient (the minimal polynomial times an integer); den t - num for a rational.
   const std::vector<Integer>& polynomial() const { return poly_; }
 
-  /// Bisect (exact signs) until upper - lower <= width (width > 0). No-op for a rational.
+  /// Bisect (exact signs) until upper - lower <= width. No-op for a rational. Throws
+  /// std::invalid_argument when width <= 0 (bisection would never end).
   void refine(const Rational& width);
   /// Correctly rounded decimal with `digits` significant digits (round to nearest, ties away from
   /// zero; exact for a rational), in the format of relpos::to_decimal.

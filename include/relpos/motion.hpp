@@ -162,7 +162,8 @@ struct Timeline {
   std::vector<PositionChange> changes() const;
   /// Maximal spans of constant position, in order, covering [t0, t1].
   std::vector<PositionSpan> spans() const;
-  /// The position at a rational time in [t0, t1], located exactly among the instants.
+  /// The position at a rational time in [t0, t1], located exactly among the instants. Throws
+  /// InputError outside [t0, t1] and on an empty timeline (Timeline{}: use relpos::timeline).
   Position position_at(const Rational& t) const;
 };
 

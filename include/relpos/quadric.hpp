@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -83,16 +84,62 @@ Matrix4 matrix_from_coefficients(const Coefficients10& c);
 /// Exact rotation matrix R(q)/|q|^2 of a non-zero quaternion.
 Matrix3 rotation_from_quaternion(const Quaternion& q);
 
+namespace detail {
+
+/// The matrix of a validated quadric: exact rationals, and the doubles when every entry is one.
+/// A quadric made from doubles (from_doubles) builds its rationals only on first use by an exact
+/// stage (thread-safe: a quadric shared by several threads materializes once; copies share it).
+class QuadricMatrix {
+ public:
+  explicit QuadricMatrix(Matrix4 m);
+  /// From doubles that are all finite (checked by the caller); no heap allocation.
+  explicit QuadricMatrix(const DoubleMatrix4& d);
+  QuadricMatrix(const QuadricMatrix& o) : d_(o.d_), n_(o.n_), m_(std::atomic_load(&o.m_)) {}
+  QuadricMatrix& operator=(const QuadricMatrix& o) {
+    if (this != &o) {
+      d_ = o.d_;
+      n_ = o.n_;
+      std::atomic_store(&m_, std::atomic_load(&o.m_));
+    }
+    return *this;
+  }
+  const Matrix4& matrix() const {
+    const Matrix4* m = std::atomic_load(&m_).get();
+    return m ? *m : materialize();
+  }
+  const std::optional<DoubleMatrix4>& doubles() const { return d_; }
+  const std::optional<DoubleMatrix4>& filter_doubles() const { return n_; }
+
+ private:
+  const Matrix4& materialize() const;
+  std::optional<DoubleMatrix4> d_, n_;
+  mutable std::shared_ptr<const Matrix4> m_;
+};
+
+}  // namespace detail
+
 /// A validated ellipsoid, sign-normalized: M = Q3 positive definite, det E < 0.
 class Ellipsoid {
  public:
   /// Throws InputError naming what the matrix is when it is not a real ellipsoid.
   static Ellipsoid from_matrix(const Matrix4& e);
+  /// Row-major 4x4 doubles, each taken exactly: the same validation and InputError messages as
+  /// from_matrix (NaN and infinities are refused through exact_rational's message). The shape is
+  /// decided in doubles with certified error bounds (intervals), exactly only when they cannot
+  /// decide; the exact matrix() is built only when an exact stage first asks for it.
+  static Ellipsoid from_doubles(const DoubleMatrix4& e);
   static Ellipsoid from_coefficients(const Coefficients10& c);
   /// Sphere |x - centre| = radius, radius > 0.
   static Ellipsoid sphere(const Vector3& centre, const Rational& radius);
+  /// The same from doubles, each taken exactly through exact_rational (InputError on NaN or
+  /// infinity; a braced list of numbers such as {0, 0, 1.5} picks this overload, so no double ever
+  /// reaches Rational's implicit constructor).
+  static Ellipsoid sphere(const std::array<double, 3>& centre, double radius);
   /// Semi-axes (positive) along the columns of the rotation R(q)/|q|^2, centred at `centre`.
   static Ellipsoid from_axes(const Vector3& centre, const Vector3& semi_axes, const Quaternion& rotation);
+  /// The same from doubles (each exact through exact_rational; InputError on NaN or infinity).
+  static Ellipsoid from_axes(const std::array<double, 3>& centre, const std::array<double, 3>& semi_axes,
+                             const std::array<double, 4>& rotation);
   /// Semi-axes along the columns of an exactly orthogonal matrix (checked exactly).
   static Ellipsoid from_axes(const Vector3& centre, const Vector3& semi_axes, const Matrix3& rotation);
   /// The image of the unit ball under x = centre + L u, L invertible.
@@ -103,42 +150,66 @@ class Ellipsoid {
   /// ellipsoid is one (from_matrix costs tens of microseconds; this a few).
   Ellipsoid translated(const Vector3& d) const;
 
-  const Matrix4& matrix() const { return m_; }
+  /// The exact matrix (built on first use for a quadric made from doubles).
+  const Matrix4& matrix() const { return m_.matrix(); }
   /// The matrix as doubles when every entry is exactly a double (enables the static filter).
-  const std::optional<DoubleMatrix4>& doubles() const { return d_; }
+  const std::optional<DoubleMatrix4>& doubles() const { return m_.doubles(); }
   /// doubles(), power-of-two normalized once for the static filter (cached: a quadric is usually
   /// classified against many others).
-  const std::optional<DoubleMatrix4>& filter_doubles() const { return n_; }
+  const std::optional<DoubleMatrix4>& filter_doubles() const { return m_.filter_doubles(); }
 
  private:
-  explicit Ellipsoid(Matrix4 m) : m_(std::move(m)), d_(exact_doubles(m_)), n_(power_of_two_normalized(d_)) {}
-  Matrix4 m_;
-  std::optional<DoubleMatrix4> d_, n_;
+  explicit Ellipsoid(Matrix4 m) : m_(std::move(m)) {}
+  explicit Ellipsoid(const DoubleMatrix4& d) : m_(d) {}
+  detail::QuadricMatrix m_;
 };
 
 /// A validated elliptic paraboloid, sign-normalized: A = Q3 positive semidefinite of rank 2, det P < 0.
 class Paraboloid {
  public:
   static Paraboloid from_matrix(const Matrix4& p);
+  /// Row-major 4x4 doubles, each taken exactly; as Ellipsoid::from_doubles (the rank-2 test of the
+  /// 3x3 block is an exact zero test of its determinant on floating-point expansions).
+  static Paraboloid from_doubles(const DoubleMatrix4& p);
   static Paraboloid from_coefficients(const Coefficients10& c);
   /// x'^2/a^2 + y'^2/b^2 = z' in the frame with origin `vertex` and axes the columns of R(q)/|q|^2
   /// (the cup opens along the third column). a, b > 0.
   static Paraboloid standard(const Vector3& vertex, const Rational& a, const Rational& b,
                              const Quaternion& rotation = {Rational(1), Rational(0), Rational(0), Rational(0)});
+  /// The same from doubles (each exact through exact_rational; InputError on NaN or infinity).
+  static Paraboloid standard(const std::array<double, 3>& vertex, double a, double b,
+                             const std::array<double, 4>& rotation = {1.0, 0.0, 0.0, 0.0});
   /// The image of z = x^2 + y^2 under x = T u + t, T invertible.
   static Paraboloid from_map(const Matrix3& linear, const Vector3& translation);
 
-  const Matrix4& matrix() const { return m_; }
+  /// The exact matrix (built on first use for a quadric made from doubles).
+  const Matrix4& matrix() const { return m_.matrix(); }
   /// The matrix as doubles when every entry is exactly a double (enables the static filter).
-  const std::optional<DoubleMatrix4>& doubles() const { return d_; }
+  const std::optional<DoubleMatrix4>& doubles() const { return m_.doubles(); }
   /// doubles(), power-of-two normalized once for the static filter (cached: a quadric is usually
   /// classified against many others).
-  const std::optional<DoubleMatrix4>& filter_doubles() const { return n_; }
+  const std::optional<DoubleMatrix4>& filter_doubles() const { return m_.filter_doubles(); }
 
  private:
-  explicit Paraboloid(Matrix4 m) : m_(std::move(m)), d_(exact_doubles(m_)), n_(power_of_two_normalized(d_)) {}
-  Matrix4 m_;
-  std::optional<DoubleMatrix4> d_, n_;
+  explicit Paraboloid(Matrix4 m) : m_(std::move(m)) {}
+  explicit Paraboloid(const DoubleMatrix4& d) : m_(d) {}
+  detail::QuadricMatrix m_;
 };
+
+/// Size limit on the *normalized* forms of a pair: each matrix divided by its own content (times the
+/// lcm of its denominators, then divided by the gcd of the resulting integers: its primitive integer
+/// form, unchanged by any rescaling of that matrix alone) must have entries of at most this many
+/// bits. Beyond it, exact evidence becomes slow (doc/cli.md, Limits).
+inline constexpr std::size_t kMaxNormalizedBits = 4096;
+
+/// Bits of the largest entry of the primitive integer form of m (0 for the zero matrix).
+std::size_t normalized_bits(const Matrix4& m);
+
+/// max(normalized_bits(e), normalized_bits(p)): independent of how either matrix was scaled.
+std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p);
+
+/// Throws InputError ("numbers too large: ...", naming kMaxNormalizedBits) when
+/// normalized_pair_bits(e, p) > kMaxNormalizedBits.
+void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p);
 
 }  // namespace relpos

@@ -156,15 +156,17 @@ std::string matrix_repr(const char* name, const relpos::Matrix4& m) {
 // ------------------------------------------------------------------------------------------------
 
 // ---- THE place where decide_positions builds its quadrics from float64 matrices. ----
-// Today: the exact rationals of the 16 doubles, then the validating from_matrix (the slow part, tens
-// of microseconds). When Ellipsoid::from_doubles / Paraboloid::from_doubles exist, call them here.
-relpos::Matrix4 exact_matrix(const double* m) {
-  relpos::Matrix4 out;
-  for (std::size_t k = 0; k < 16; ++k) out.a[k] = relpos::exact_rational(m[k]);
+// from_doubles: the shape is certified in doubles (no GMP, no heap allocation); the exact rationals
+// are built only if an exact stage of decide_position needs them.
+relpos::DoubleMatrix4 double_matrix(const double* m) {
+  relpos::DoubleMatrix4 out;
+  std::copy(m, m + 16, out.begin());
   return out;
 }
-relpos::Ellipsoid ellipsoid_from_doubles(const double* m) { return relpos::Ellipsoid::from_matrix(exact_matrix(m)); }
-relpos::Paraboloid paraboloid_from_doubles(const double* m) { return relpos::Paraboloid::from_matrix(exact_matrix(m)); }
+relpos::Ellipsoid ellipsoid_from_doubles(const double* m) { return relpos::Ellipsoid::from_doubles(double_matrix(m)); }
+relpos::Paraboloid paraboloid_from_doubles(const double* m) {
+  return relpos::Paraboloid::from_doubles(double_matrix(m));
+}
 // ---- end of the construction place. ----
 
 /// Code of a position in relpos.POSITION_NAMES; -1 for Position::Unclassified (not small).

@@ -28,11 +28,16 @@ struct Pair {
   const Matrix4& P;
   Poly f, s;
   LambdaS ls;
-  Pair(const Matrix4& e, const Matrix4& p) : E(e), P(p) {
-    const Quartic<Rational> fq = characteristic_polynomial<Rational>(P, E);
-    const Quadratic<Rational> sq = special_polynomial<Rational>(P, E);
-    f = anysize::to_poly(fq.data(), 5);
-    s = anysize::to_poly(sq.data(), 3);
+  Pair(const Matrix4& e, const Matrix4& p, const Known& known) : E(e), P(p) {
+    if (known.f && known.s) {
+      f = anysize::to_poly(known.f->data(), 5);
+      s = anysize::to_poly(known.s->data(), 3);
+    } else {
+      const Quartic<Rational> fq = characteristic_polynomial<Rational>(P, E);
+      const Quadratic<Rational> sq = special_polynomial<Rational>(P, E);
+      f = anysize::to_poly(fq.data(), 5);
+      s = anysize::to_poly(sq.data(), 3);
+    }
     ls = anysize::lambda_s_of(s);
   }
   /// X^T Q X for X = (x, 1).
@@ -362,6 +367,105 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
                            [&](const Rational& l) { return in_domain(l) && anysize::evaluate(pr.f, l) > 0; });
 }
 
+/// The curve search of crossing_points first in doubles (a search only: every candidate is checked
+/// exactly by `consider`): bisection on lambda for e(x(lambda)) = 0, lambda > 0 for the inside
+/// point and lambda in (lambda_s, 0) for the outside one; the point found, and the same point
+/// pulled towards the centre (exact rationals), are tried. Most crossings end here, without the
+/// exact bisection on rationals.
+void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V3>& inside,
+                         const std::optional<V3>& outside, const std::function<void(const V3&)>& consider) {
+  double E[4][4], P[4][4];
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      E[i][j] = CGAL::to_double(pr.E(i, j));
+      P[i][j] = CGAL::to_double(pr.P(i, j));
+      if (!std::isfinite(E[i][j]) || !std::isfinite(P[i][j])) return;
+    }
+  auto x_of = [&](double l, double x[3]) {
+    double k[3][3], r[3];
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) k[i][j] = l * P[i][j] + E[i][j];
+      r[i] = -(l * P[i][3] + E[i][3]);
+    }
+    const double det = k[0][0] * (k[1][1] * k[2][2] - k[1][2] * k[2][1]) -
+                       k[0][1] * (k[1][0] * k[2][2] - k[1][2] * k[2][0]) +
+                       k[0][2] * (k[1][0] * k[2][1] - k[1][1] * k[2][0]);
+    if (!(std::fabs(det) > 0) || !std::isfinite(det)) return false;
+    for (int c = 0; c < 3; ++c) {
+      double m[3][3];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m[i][j] = j == c ? r[i] : k[i][j];
+      x[c] = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+              m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])) /
+             det;
+    }
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(x[c])) return false;
+    return true;
+  };
+  auto e_of = [&](const double x[3]) {
+    double acc = E[3][3];
+    for (int i = 0; i < 3; ++i) {
+      acc += 2 * E[i][3] * x[i];
+      for (int j = 0; j < 3; ++j) acc += x[i] * E[i][j] * x[j];
+    }
+    return acc;
+  };
+  auto try_point = [&](const double x[3]) {
+    V3 q;
+    for (int i = 0; i < 3; ++i) q[i] = exact_rational(x[i]);
+    consider(q);
+    for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
+      Integer two_k(1);
+      mpz_mul_2exp(two_k.mpz(), two_k.mpz(), static_cast<mp_bitcnt_t>(k));
+      const Rational t = Rational(1) - Rational(1) / Rational(two_k);
+      V3 y;
+      for (int i = 0; i < 3; ++i) y[i] = centre[i] + t * (q[i] - centre[i]);
+      consider(y);
+    }
+  };
+  // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side.
+  auto bisect = [&](double lo, double hi) {
+    double x[3], best[3];
+    bool have = false;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = lo + (hi - lo) / 2;
+      if (!(mid != lo && mid != hi)) break;
+      if (!x_of(mid, x)) return;
+      if (e_of(x) <= 0) {
+        lo = mid;
+        std::copy(x, x + 3, best);
+        have = true;
+      } else {
+        hi = mid;
+      }
+    }
+    if (have) try_point(best);
+  };
+  double x[3];
+  if (!inside) {
+    double hi = 1;
+    for (int k = 0; k < 2000; ++k, hi *= 2) {
+      if (!std::isfinite(hi)) return;
+      if (x_of(hi, x) && e_of(x) > 0) break;
+    }
+    bisect(0, hi);
+  }
+  if (!outside) {
+    const double ls = CGAL::to_double(approximate(pr.ls, pr.ls.value, 64, true));
+    if (std::isfinite(ls) && ls < 0) {
+      // approach lambda_s from 0: the first lambda with e(x(lambda)) > 0
+      for (double l = ls / 2, step = ls / 4; l > ls && l < 0; l += step, step /= 2) {
+        if (x_of(l, x) && e_of(x) > 0) {
+          bisect(0, l);
+          break;
+        }
+        if (step > ls * 1e-15) break;  // step is negative: stop once it is negligible
+      }
+    }
+  }
+}
+
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 bool crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
@@ -373,6 +477,7 @@ bool crossing_points(const Pair& pr, Certificate& c) {
   };
   const auto centre = pr.x_of(Rational(0));
   if (centre) consider(*centre);
+  if (centre) double_curve_search(pr, *centre, inside, outside, consider);
   // Along the curve x(lambda): for lambda > 0 it minimises lambda p + e, so while e(x(lambda)) <= 0
   // it is the minimiser of p over a smaller solid, tending to the minimiser over the solid ellipsoid
   // as e(x(lambda)) -> 0 (section 8, min side); for lambda in (lambda_s, 0) likewise the maximiser.
@@ -458,17 +563,52 @@ bool crossing_points(const Pair& pr, Certificate& c) {
   return true;
 }
 
+/// The rational with the fewest bits in the open interval (lo, hi), lo < hi: a dyadic found by
+/// rounding the midpoint to ever more bits (short multipliers make short certificates).
+Rational short_between(const Rational& lo, const Rational& hi) {
+  const Rational mid = (lo + hi) / 2;
+  for (unsigned bits = 0; bits <= 2048; bits += 4) {
+    Integer scaled, den(1);
+    mpz_mul_2exp(den.mpz(), den.mpz(), bits);
+    const Rational t = mid * Rational(den);
+    mpz_fdiv_q(scaled.mpz(), t.numerator().mpz(), t.denominator().mpz());
+    const Rational cand(scaled, den);
+    if (lo < cand && cand < hi) return cand;
+  }
+  return mid;
+}
+
+/// A lambda in the domain with f(lambda) > 0 from the isolating intervals of f's real roots: f has
+/// one sign between consecutive intervals, so one exact evaluation per gap decides.
+template <class InDomain>
+std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<RealRoot>& roots, InDomain in_domain) {
+  for (std::size_t i = 0; i + 1 < roots.size(); ++i) {
+    const Rational& lo = roots[i].exact ? *roots[i].exact : roots[i].upper;
+    const Rational& hi = roots[i + 1].exact ? *roots[i + 1].exact : roots[i + 1].lower;
+    if (!(lo < hi)) continue;
+    const Rational l = short_between(lo, hi);
+    if (in_domain(l) && anysize::evaluate(pr.f, l) > 0) return l;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
-Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) {
-  const Pair pr(e.matrix(), p.matrix());
+Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) { return build(e, p, position, Known{}); }
+
+Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known) {
+  const Pair pr(e.matrix(), p.matrix(), known);
   Certificate c;
   auto in_gap = [&](const Rational& l) { return l < 0 && pr.ls.compare(l) > 0; };
   switch (position) {
     case Position::E:
     case Position::I: {
       const bool ext = position == Position::E;
-      const auto l = ext ? definite_lambda(pr, [](const Rational& x) { return x > 0; }) : definite_lambda(pr, in_gap);
+      auto positive = [](const Rational& x) { return x > 0; };
+      std::optional<Rational> l;
+      if (known.roots)
+        l = ext ? lambda_between_roots(pr, *known.roots, positive) : lambda_between_roots(pr, *known.roots, in_gap);
+      if (!l) l = ext ? definite_lambda(pr, positive) : definite_lambda(pr, in_gap);
       if (l) {
         c.kind = Certificate::Kind::Definite;
         c.lambda = *l;
@@ -495,6 +635,8 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) {
     }
     case Position::C:
       crossing_points(pr, c);
+      return c;
+    case Position::Unclassified:
       return c;
   }
   return c;

@@ -11,4 +11,15 @@ namespace relpos::certificate {
 /// if the search for the points of a crossing fails (never observed; see doc/certificates.md).
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position);
 
+/// What the caller already knows about the pair, reused instead of recomputed: f = det(lambda P + E)
+/// and s = det(lambda A + M) of the sign-normalized matrices, and isolating intervals of the distinct
+/// real roots of f (increasing). Between two consecutive isolating intervals f keeps one sign, so
+/// a rational there with f > 0 in the right domain is the multiplier of E and I at once.
+struct Known {
+  const Quartic<Rational>* f = nullptr;
+  const Quadratic<Rational>* s = nullptr;
+  const std::vector<RealRoot>* roots = nullptr;
+};
+Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known);
+
 }  // namespace relpos::certificate

@@ -151,6 +151,8 @@ AlgebraicReal AlgebraicReal::root(std::vector<Integer> coefficients, Rational lo
 int AlgebraicReal::sign_at(const Rational& x) const { return sign_of_value(poly_, x); }
 
 void AlgebraicReal::refine(const Rational& width) {
+  if (!(width > 0))
+    throw std::invalid_argument("AlgebraicReal::refine: the width must be positive, got " + to_string(width));
   if (exact_) return;
   // Bisection on exact signs; a midpoint that is a root makes the number rational.
   while (upper_ - lower_ > width) {

@@ -524,7 +524,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const Quadratic<Integer> s = special_polynomial<Integer>(pz, ez);
     const RootStructure rs = exact_root_structure(f, s);
     fill_full_evidence(f, s, scale, out, &rs);
-    out.certificate = certificate::build(e, p, v.position);
+    // The certificate reuses f, s and the isolation instead of recomputing them.
+    out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots});
   }
   return out;
 }

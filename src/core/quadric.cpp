@@ -1,9 +1,12 @@
 #include "relpos/quadric.hpp"
 
+#include <gmp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
+#include "core/shape_filter.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos {
@@ -139,6 +142,13 @@ Matrix3 check_orthogonal(const Matrix3& r) {
   return r;
 }
 
+template <std::size_t N>
+std::array<Rational, N> exact_array(const std::array<double, N>& d) {
+  std::array<Rational, N> out;
+  for (std::size_t i = 0; i < N; ++i) out[i] = exact_rational(d[i]);
+  return out;
+}
+
 std::string found(QuadricKind k) {
   std::string s = to_string(k);
   const char* article = (s[0] == 'a' || s[0] == 'e' || s[0] == 'i' || s[0] == 'o' || s[0] == 'u') ? "an " : "a ";
@@ -155,6 +165,25 @@ std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m) {
   }
   return d;
 }
+
+namespace detail {
+
+QuadricMatrix::QuadricMatrix(Matrix4 m)
+    : d_(exact_doubles(m)), n_(power_of_two_normalized(d_)), m_(std::make_shared<const Matrix4>(std::move(m))) {}
+
+QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d) : d_(d), n_(power_of_two_normalized(d_)) {}
+
+const Matrix4& QuadricMatrix::materialize() const {
+  auto built = std::make_shared<Matrix4>();
+  for (std::size_t i = 0; i < 16; ++i) built->a[i] = Rational((*d_)[i]);  // finite: exact
+  std::shared_ptr<const Matrix4> expected;
+  std::shared_ptr<const Matrix4> desired = std::move(built);
+  // The first thread to finish publishes its matrix; the others use that one (same values).
+  if (std::atomic_compare_exchange_strong(&m_, &expected, desired)) return *desired;
+  return *expected;
+}
+
+}  // namespace detail
 
 std::string to_string(QuadricKind kind) {
   switch (kind) {
@@ -274,17 +303,51 @@ Ellipsoid Ellipsoid::from_matrix(const Matrix4& e) {
   return Ellipsoid(e(0, 0) > 0 ? e : negated(e));
 }
 
+namespace {
+
+/// The exact rationals of 16 doubles; InputError (exact_rational's message) on NaN or infinity.
+Matrix4 exact_matrix(const DoubleMatrix4& d) {
+  Matrix4 m;
+  for (std::size_t i = 0; i < 16; ++i) m.a[i] = exact_rational(d[i]);
+  return m;
+}
+
+bool all_finite(const DoubleMatrix4& d) {
+  for (double x : d)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+
+DoubleMatrix4 negated(const DoubleMatrix4& d) {
+  DoubleMatrix4 r;
+  for (std::size_t i = 0; i < 16; ++i) r[i] = -d[i];
+  return r;
+}
+
+}  // namespace
+
+Ellipsoid Ellipsoid::from_doubles(const DoubleMatrix4& e) {
+  if (all_finite(e)) {
+    const int orientation = shape_filter::certified_ellipsoid(e);
+    if (orientation != 0) return Ellipsoid(orientation > 0 ? e : negated(e));
+  }
+  // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
+  const Ellipsoid exact = from_matrix(exact_matrix(e));
+  return Ellipsoid(*exact.doubles());
+}
+
 Ellipsoid Ellipsoid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
 
 Ellipsoid Ellipsoid::translated(const Vector3& d) const {
-  Matrix4 m = m_;
-  Rational e0 = m_(3, 3);
+  const Matrix4& q = matrix();
+  Matrix4 m = q;
+  Rational e0 = q(3, 3);
   for (int i = 0; i < 3; ++i) {
     Rational md(0);  // (M d)_i
-    for (int j = 0; j < 3; ++j) md += m_(i, j) * d[static_cast<std::size_t>(j)];
+    for (int j = 0; j < 3; ++j) md += q(i, j) * d[static_cast<std::size_t>(j)];
     const Rational& di = d[static_cast<std::size_t>(i)];
-    m(i, 3) = m(3, i) = m_(i, 3) - md;
-    e0 += di * (md - 2 * m_(i, 3));  // - 2 e_i d_i + d_i (M d)_i
+    m(i, 3) = m(3, i) = q(i, 3) - md;
+    e0 += di * (md - 2 * q(i, 3));  // - 2 e_i d_i + d_i (M d)_i
   }
   m(3, 3) = e0;
   return Ellipsoid(std::move(m));
@@ -299,6 +362,15 @@ Ellipsoid Ellipsoid::sphere(const Vector3& c, const Rational& r) {
   }
   m(3, 3) = c[0] * c[0] + c[1] * c[1] + c[2] * c[2] - r * r;
   return Ellipsoid(m);
+}
+
+Ellipsoid Ellipsoid::sphere(const std::array<double, 3>& c, double r) {
+  return sphere(exact_array(c), exact_rational(r));
+}
+
+Ellipsoid Ellipsoid::from_axes(const std::array<double, 3>& c, const std::array<double, 3>& ax,
+                               const std::array<double, 4>& q) {
+  return from_axes(exact_array(c), exact_array(ax), Quaternion(exact_array(q)));
 }
 
 Ellipsoid Ellipsoid::from_axes(const Vector3& c, const Vector3& ax, const Quaternion& q) {
@@ -333,6 +405,15 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
   return Paraboloid(p(0, 0) + p(1, 1) + p(2, 2) > 0 ? p : negated(p));
 }
 
+Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
+  if (all_finite(p)) {
+    const int orientation = shape_filter::certified_paraboloid(p);
+    if (orientation != 0) return Paraboloid(orientation > 0 ? p : negated(p));
+  }
+  const Paraboloid exact = from_matrix(exact_matrix(p));
+  return Paraboloid(*exact.doubles());
+}
+
 Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
 
 Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Rational& b, const Quaternion& q) {
@@ -345,11 +426,48 @@ Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Ratio
   return from_matrix(push_forward(local, rotation_from_quaternion(q), v, "paraboloid rotation"));
 }
 
+Paraboloid Paraboloid::standard(const std::array<double, 3>& v, double a, double b, const std::array<double, 4>& q) {
+  return standard(exact_array(v), exact_rational(a), exact_rational(b), Quaternion(exact_array(q)));
+}
+
 Paraboloid Paraboloid::from_map(const Matrix3& l, const Vector3& t) {
   Matrix4 local;  // x^2 + y^2 - z
   local(0, 0) = local(1, 1) = Rational(1);
   local(2, 3) = local(3, 2) = Rational(-1, 2);
   return from_matrix(push_forward(local, l, t, "paraboloid linear map"));
+}
+
+std::size_t normalized_bits(const Matrix4& m) {
+  Integer l(1), g(0);
+  for (const Rational& q : m.a) mpz_lcm(l.mpz(), l.mpz(), q.denominator().mpz());
+  std::array<Integer, 16> z;
+  for (std::size_t i = 0; i < 16; ++i) {
+    mpz_divexact(z[i].mpz(), l.mpz(), m.a[i].denominator().mpz());
+    mpz_mul(z[i].mpz(), z[i].mpz(), m.a[i].numerator().mpz());
+    mpz_gcd(g.mpz(), g.mpz(), z[i].mpz());
+  }
+  if (g == 0) return 0;
+  std::size_t bits = 0;
+  for (auto& x : z) {
+    if (x == 0) continue;
+    mpz_divexact(x.mpz(), x.mpz(), g.mpz());
+    bits = std::max<std::size_t>(bits, mpz_sizeinbase(x.mpz(), 2));
+  }
+  return bits;
+}
+
+std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
+  return std::max(normalized_bits(e.matrix()), normalized_bits(p.matrix()));
+}
+
+void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p) {
+  const std::size_t bits = normalized_pair_bits(e, p);
+  if (bits > kMaxNormalizedBits)
+    throw InputError(
+        "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "
+        "form), has " +
+        std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxNormalizedBits) +
+        " bits (kMaxNormalizedBits, doc/cli.md, Limits)");
 }
 
 }  // namespace relpos

@@ -3,9 +3,13 @@
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Polynomial.h>
 #include <CGAL/Polynomial_traits_d.h>
+#include <flint/fmpz.h>
+#include <flint/fmpz_poly.h>
+#include <flint/nmod_poly.h>
 #include <gmp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "core/small_factor.hpp"
@@ -71,7 +75,202 @@ int sign_of_discriminant(const std::vector<Integer>& c) {
   return s;
 }
 
+namespace {
+
+/// An fmpz_poly of a polynomial over Z (RAII).
+struct FlintPoly {
+  fmpz_poly_t p;
+  template <std::size_t N>
+  explicit FlintPoly(const std::array<Integer, N>& c) {
+    fmpz_poly_init2(p, static_cast<slong>(N));
+    fmpz_t z;
+    fmpz_init(z);
+    for (std::size_t i = 0; i < N; ++i) {
+      fmpz_set_mpz(z, c[i].mpz());
+      fmpz_poly_set_coeff_fmpz(p, static_cast<slong>(i), z);
+    }
+    fmpz_clear(z);
+  }
+  ~FlintPoly() { fmpz_poly_clear(p); }
+  FlintPoly(const FlintPoly&) = delete;
+  FlintPoly& operator=(const FlintPoly&) = delete;
+};
+
+/// Sign of f(x) for a finite double x (a dyadic rational m 2^e), exactly: the sign of
+/// sum f_i m^i 2^(e i), homogenised to integers.
+int sign_at_double(const Quartic<Integer>& f, double x) {
+  if (x == 0) return sgn(f[0]);
+  int e = 0;
+  const double frac = std::frexp(x, &e);                        // x = frac 2^e, frac in [1/2, 1)
+  const auto m = static_cast<long long>(std::ldexp(frac, 53));  // exact
+  e -= 53;                                                      // x = m 2^e
+  mpz_t v, t;
+  mpz_init(v);
+  mpz_init(t);
+  // Horner on m with powers of two: e >= 0: v = v m 2^e + f_i; e < 0: v = v m + f_i 2^(-e k).
+  mpz_set(v, f[4].mpz());
+  for (int i = 3; i >= 0; --i) {
+    mpz_mul_si(v, v, static_cast<long>(m));
+    if (e >= 0) {
+      mpz_mul_2exp(v, v, static_cast<mp_bitcnt_t>(e));
+      mpz_add(v, v, f[static_cast<std::size_t>(i)].mpz());
+    } else {
+      mpz_mul_2exp(t, f[static_cast<std::size_t>(i)].mpz(),
+                   static_cast<mp_bitcnt_t>(-e) * static_cast<mp_bitcnt_t>(4 - i));
+      mpz_add(v, v, t);
+    }
+  }
+  const int out = mpz_sgn(v);
+  mpz_clear(v);
+  mpz_clear(t);
+  return out;
+}
+
+/// Polynomial value and derivative in doubles (coefficients c[0..n]).
+double horner(const double* c, int n, double x) {
+  double v = c[n];
+  for (int i = n - 1; i >= 0; --i) v = v * x + c[i];
+  return v;
+}
+
+/// A root of c (degree n) in [lo, hi] where c changes sign, by bisection to full double precision.
+double bracketed_root(const double* c, int n, double lo, double hi) {
+  double flo = horner(c, n, lo);
+  for (int it = 0; it < 2100; ++it) {
+    const double mid = lo + (hi - lo) / 2;
+    if (!(mid > lo && mid < hi)) break;
+    const double fm = horner(c, n, mid);
+    if (fm == 0) return mid;
+    if ((fm < 0) == (flo < 0)) {
+      lo = mid;
+      flo = fm;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo + (hi - lo) / 2;
+}
+
+/// Approximate real roots of c (degree n <= 4, c[n] != 0) in (-bound, bound), increasing: the roots
+/// of the derivative split the line into monotone pieces, each with at most one sign change.
+std::vector<double> approximate_real_roots(const double* c, int n, double bound) {
+  std::vector<double> out;
+  if (n == 1) {
+    out.push_back(-c[0] / c[1]);
+    return out;
+  }
+  double d[4];
+  for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
+  std::vector<double> cuts{-bound};
+  for (double x : approximate_real_roots(d, n - 1, bound))
+    if (x > cuts.back() && x < bound) cuts.push_back(x);
+  cuts.push_back(bound);
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double a = horner(c, n, cuts[k]), b = horner(c, n, cuts[k + 1]);
+    if (a == 0) {
+      if (out.empty() || out.back() != cuts[k]) out.push_back(cuts[k]);
+    } else if ((a < 0) != (b < 0) && b != 0) {
+      out.push_back(bracketed_root(c, n, cuts[k], cuts[k + 1]));
+    }
+  }
+  return out;
+}
+
+/// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
+/// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
+bool certainly_no_rational_root(const fmpz_poly_t f) {
+  static const mp_limb_t primes[] = {1000003, 1000033, 1000037, 1000039, 1000081, 1000099, 1000117, 1000121,
+                                     1000133, 1000151, 1000159, 1000171, 1000183, 1000187, 1000193, 1000199};
+  bool found = false;
+  for (mp_limb_t p : primes) {
+    nmod_poly_t fp, x, r;
+    nmod_poly_init(fp, p);
+    fmpz_poly_get_nmod_poly(fp, f);
+    if (nmod_poly_degree(fp) != fmpz_poly_degree(f)) {
+      nmod_poly_clear(fp);
+      continue;
+    }
+    nmod_poly_init(x, p);
+    nmod_poly_init(r, p);
+    nmod_poly_set_coeff_ui(x, 1, 1);
+    nmod_poly_powmod_ui_binexp(r, x, p, fp);  // x^p mod f
+    nmod_poly_sub(r, r, x);
+    nmod_poly_gcd(r, r, fp);
+    found = nmod_poly_degree(r) == 0;
+    nmod_poly_clear(fp);
+    nmod_poly_clear(x);
+    nmod_poly_clear(r);
+    if (found) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
+  if (fc[4] == 0 || fc[0] == 0 || sc[2] == 0) return std::nullopt;
+  const FlintPoly f(fc), s(sc);
+  fmpz_t z;
+  fmpz_init(z);
+  fmpz_poly_discriminant(z, f.p);
+  const int disc = fmpz_sgn(z);
+  fmpz_poly_resultant(z, f.p, s.p);
+  const bool coprime = !fmpz_is_zero(z);
+  fmpz_clear(z);
+  if (disc == 0 || !coprime) return std::nullopt;
+  if (!certainly_no_rational_root(f.p)) return std::nullopt;
+  // Coefficients as doubles, all divided by one power of two (the roots do not move).
+  long top = 0;
+  for (const auto& c : fc)
+    if (c != 0) top = std::max<long>(top, static_cast<long>(mpz_sizeinbase(c.mpz(), 2)));
+  double c[5];
+  for (std::size_t i = 0; i < 5; ++i) {
+    long ex = 0;
+    const double m = mpz_get_d_2exp(&ex, fc[i].mpz());
+    c[i] = std::ldexp(m, static_cast<int>(std::max<long>(ex - top, -2000)));
+  }
+  // Cauchy bound 1 + max |c_i / c_4|, as a double (roots beyond the double range: no fast path).
+  double bound = 0;
+  for (int i = 0; i < 4; ++i) bound = std::max(bound, std::fabs(c[i] / c[4]));
+  bound = 2 * (1 + bound);
+  if (!std::isfinite(bound) || bound > 1e300) return std::nullopt;
+  const std::vector<double> approx = approximate_real_roots(c, 4, bound);
+  const std::size_t expected = disc > 0 ? 4 : 2;  // square-free: 4 or 0 real roots, or exactly 2
+  if (approx.size() != expected) return std::nullopt;
+  RootStructure rs;
+  rs.degree_ftilde = 4;
+  rs.sign_disc_f = rs.sign_disc_ftilde = disc;
+  rs.nonreal = static_cast<int>(4 - expected);
+  // Certify: disjoint intervals around the approximations with exact opposite signs at the ends; as
+  // many as there are real roots, so each isolates exactly one (simple, irrational) root.
+  double prev_hi = -HUGE_VAL;
+  for (std::size_t k = 0; k < approx.size(); ++k) {
+    const double r = approx[k];
+    if (r == 0 || !std::isfinite(r)) return std::nullopt;
+    bool ok = false;
+    for (int widen = 0; widen < 4 && !ok; ++widen) {
+      const double delta = std::fabs(r) * std::ldexp(1.0, -44 + 10 * widen);
+      const double lo = r - delta, hi = r + delta;
+      if (!(lo > prev_hi) || (lo < 0) != (r < 0) || (hi < 0) != (r < 0)) break;
+      if (k + 1 < approx.size() && !(hi < approx[k + 1])) break;
+      const int sl = sign_at_double(fc, lo), sh = sign_at_double(fc, hi);
+      if (sl != 0 && sh != 0 && sl != sh) {
+        RealRoot root;
+        root.sign = r < 0 ? -1 : 1;
+        root.lower = Rational(lo);
+        root.upper = Rational(hi);
+        rs.real_roots.push_back(std::move(root));
+        prev_hi = hi;
+        ok = true;
+      }
+    }
+    if (!ok) return std::nullopt;
+  }
+  return rs;
+}
+
 RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
+  if (auto fast = simple_root_structure(fc, sc)) return *fast;
   const Poly f = make_poly(fc), s = make_poly(sc);
   const Poly g = CGAL::gcd(f, s);
   const Poly ft = CGAL::integral_division_up_to_constant_factor(f, g);

@@ -55,6 +55,13 @@ std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, cons
 /// The general case: gcd(f, s) and square-free factorisations (CGAL). nullopt when f is square-free.
 std::optional<RootFacts> exact_root_facts_by_factorisation(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 
+/// The common case of exact_root_structure() without CGAL's algebraic kernel: f square-free
+/// (Disc(f) != 0, FLINT), coprime to s (Res(f, s) != 0), without rational roots (a prime p for which
+/// f mod p has no root in F_p), its real roots approximated in doubles and each certified by exact
+/// opposite signs of f at the (dyadic) ends of disjoint intervals, as many as Disc(f) says there are
+/// real roots. nullopt when any of this fails (then the general path decides).
+std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& f, const Quadratic<Integer>& s);
+
 /// Exact root structure of f (integer coefficients, f(0) != 0) relative to s.
 RootStructure exact_root_structure(const Quartic<Integer>& f, const Quadratic<Integer>& s);
 

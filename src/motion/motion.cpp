@@ -732,6 +732,8 @@ std::vector<PositionSpan> Timeline::spans() const {
 }
 
 Position Timeline::position_at(const Rational& t) const {
+  if (instants.empty() || intervals.size() + 1 != instants.size())
+    throw InputError("Timeline::position_at: an empty or inconsistent timeline (build it with relpos::timeline)");
   if (t < t0 || t > t1) throw InputError("time " + to_string(t) + " is outside [t0, t1]");
   for (std::size_t i = 0; i < instants.size(); ++i) {
     const int c = instants[i].time.compare(t);

@@ -1,0 +1,212 @@
+// regime_bench: the paper's regime (small spheres and ellipsoids near the cup of an axis-aligned
+// elliptic paraboloid, all 32 entries doubles) on the paths a user takes, against the naive double
+// pipeline (characteristic quartic + discriminant + sign rule, naive_double.cpp) in the same run:
+//
+//   naive      the float pipeline on the 32 doubles (no certification)
+//   decide     relpos::decide_position on prebuilt objects
+//   doubles    32 doubles -> Ellipsoid/Paraboloid::from_doubles -> decide_position
+//   matrix     32 doubles -> exact_rational -> from_matrix -> decide_position (the old road)
+//   full       relpos::classify(e, p) with full evidence (f, s, roots, rho, certificate)
+//
+//   regime_bench [--n N] [--full N] [--seed S] [--batches B]
+//
+// Prints one line per path: median ns per pair over B batches, and the ratio to the naive median.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "float_baseline.hpp"
+#include "relpos/classify.hpp"
+#include "relpos/quadric.hpp"
+
+using namespace relpos;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+struct Raw {
+  DoubleMatrix4 e{}, p{};
+};
+
+void set(DoubleMatrix4& m, int i, int j, double v) {
+  m[static_cast<std::size_t>(4 * i + j)] = v;
+  m[static_cast<std::size_t>(4 * j + i)] = v;
+}
+
+/// z = x^2/a^2 + y^2/b^2 (a, b in [0.5, 2]) and an ellipsoid with semi-axes in [0.02, 0.3] (a
+/// sphere half the time, else rotated by a random rotation), centred near the cup: within 0.6 of
+/// the axis, height in [-0.2, 0.8]. Every entry is the double the formulas round to.
+std::vector<Raw> make_regime(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> uab(0.5, 2), ur(0.02, 0.3), uxy(-0.6, 0.6), uz(-0.2, 0.8), u11(-1, 1);
+  std::vector<Raw> out;
+  while (static_cast<int>(out.size()) < n) {
+    Raw r;
+    const double a = uab(rng), b = uab(rng);
+    set(r.p, 0, 0, 1 / (a * a));
+    set(r.p, 1, 1, 1 / (b * b));
+    set(r.p, 2, 3, -0.5);
+    const double c[3] = {uxy(rng) * a, uxy(rng) * b, uz(rng)};
+    double m[3][3] = {};
+    if (rng() % 2) {
+      const double rad = ur(rng);
+      for (int i = 0; i < 3; ++i) m[i][i] = 1 / (rad * rad);
+    } else {
+      double q[4], nq = 0;
+      for (double& x : q) x = u11(rng), nq += x * x;
+      nq = std::sqrt(nq);
+      for (double& x : q) x /= nq;
+      const double w = q[0], x = q[1], y = q[2], z = q[3];
+      const double rot[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                                {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                                {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+      const double ax[3] = {ur(rng), ur(rng), ur(rng)};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          for (int k = 0; k < 3; ++k) m[i][j] += rot[i][k] * rot[j][k] / (ax[k] * ax[k]);
+      for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j) m[j][i] = m[i][j];
+    }
+    double e0 = -1;
+    for (int i = 0; i < 3; ++i) {
+      double mc = 0;
+      for (int j = 0; j < 3; ++j) {
+        set(r.e, i, j, m[i][j]);
+        mc += m[i][j] * c[j];
+      }
+      set(r.e, i, 3, -mc);
+      e0 += c[i] * mc;
+    }
+    r.e[15] = e0;
+    out.push_back(r);
+  }
+  return out;
+}
+
+Matrix4 exact_matrix(const DoubleMatrix4& d) {
+  Matrix4 m;
+  for (std::size_t i = 0; i < 16; ++i) m.a[i] = exact_rational(d[i]);
+  return m;
+}
+
+volatile int sink = 0;
+
+/// Median over `batches` of the time per item of body(i) for i in [0, n).
+template <class F>
+double median_ns(int n, int batches, F body) {
+  std::vector<double> t;
+  for (int b = 0; b < batches; ++b) {
+    const auto t0 = Clock::now();
+    int acc = 0;
+    for (int i = 0; i < n; ++i) acc += body(i);
+    const auto t1 = Clock::now();
+    sink = sink + acc;
+    t.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / n);
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+/// Per-pair median of single calls (for the slow full-evidence path: the pairs differ in cost).
+template <class F>
+double per_call_median_ns(int n, F body) {
+  std::vector<double> t;
+  for (int i = 0; i < n; ++i) {
+    const auto t0 = Clock::now();
+    sink = sink + body(i);
+    const auto t1 = Clock::now();
+    t.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count());
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int n = 20000, n_full = 400, batches = 7;
+  unsigned long seed = 20261124;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--n") n = std::atoi(argv[i + 1]);
+    if (a == "--full") n_full = std::atoi(argv[i + 1]);
+    if (a == "--seed") seed = std::strtoul(argv[i + 1], nullptr, 10);
+    if (a == "--batches") batches = std::atoi(argv[i + 1]);
+  }
+  std::mt19937_64 rng(seed);
+  const std::vector<Raw> raw = make_regime(rng, n);
+  std::vector<Ellipsoid> es;
+  std::vector<Paraboloid> ps;
+  for (const Raw& r : raw) {
+    es.push_back(Ellipsoid::from_doubles(r.e));
+    ps.push_back(Paraboloid::from_doubles(r.p));
+  }
+  std::map<std::string, int> mix;
+  int naive_wrong = 0;
+  for (int i = 0; i < n; ++i) {
+    const Verdict v = decide_position(es[static_cast<std::size_t>(i)], ps[static_cast<std::size_t>(i)]);
+    ++mix[to_string(v.position) + (v.small ? "" : " (not small)")];
+    const auto nv = bench::naive_double(raw[static_cast<std::size_t>(i)].p, raw[static_cast<std::size_t>(i)].e);
+    if (!nv || *nv != v.position) ++naive_wrong;
+  }
+  std::printf("regime: %d pairs, seed %lu; positions:", n, seed);
+  for (const auto& [k, c] : mix) std::printf(" %s %.1f%%", k.c_str(), 100.0 * c / n);
+  std::printf("; naive double wrong or undecided on %d\n", naive_wrong);
+
+  const auto U = [](int i) { return static_cast<std::size_t>(i); };
+  const double naive = median_ns(n, batches, [&](int i) {
+    const auto v = bench::naive_double(raw[U(i)].p, raw[U(i)].e);
+    return v ? static_cast<int>(*v) : -1;
+  });
+  const double decide =
+      median_ns(n, batches, [&](int i) { return static_cast<int>(decide_position(es[U(i)], ps[U(i)]).position); });
+  const double doubles = median_ns(n, batches, [&](int i) {
+    const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
+    const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
+    return static_cast<int>(decide_position(e, p).position);
+  });
+  const int n_matrix = std::min(n, 2000);
+  const double matrix = median_ns(n_matrix, std::min(batches, 3), [&](int i) {
+    const Ellipsoid e = Ellipsoid::from_matrix(exact_matrix(raw[U(i)].e));
+    const Paraboloid p = Paraboloid::from_matrix(exact_matrix(raw[U(i)].p));
+    return static_cast<int>(decide_position(e, p).position);
+  });
+  const int nf = std::min(n, n_full);
+  const double full = per_call_median_ns(nf, [&](int i) {
+    const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);  // fresh objects: nothing cached
+    const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
+    return static_cast<int>(classify(e, p, Evidence::Full).verdict.position);
+  });
+  {  // full evidence by position: where the remaining cost is
+    std::map<std::string, std::vector<double>> by;
+    for (int i = 0; i < nf; ++i) {
+      const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
+      const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
+      const auto t0 = Clock::now();
+      const Classification c = classify(e, p, Evidence::Full);
+      const auto t1 = Clock::now();
+      by[to_string(c.verdict.position)].push_back(std::chrono::duration<double, std::nano>(t1 - t0).count());
+    }
+    std::printf("full evidence by position (per-pair median):");
+    for (auto& [k, v] : by) {
+      std::sort(v.begin(), v.end());
+      std::printf(" %s %.0f us (%zu)", k.c_str(), v[v.size() / 2] / 1000, v.size());
+    }
+    std::printf("\n");
+  }
+  auto line = [&](const char* name, double ns, const char* what) {
+    std::printf("%-8s %12.0f ns  %9.1fx naive   %s\n", name, ns, ns / naive, what);
+  };
+  line("naive", naive, "naive double pipeline (characteristic quartic + discriminant + sign rule)");
+  line("decide", decide, "decide_position on prebuilt objects");
+  line("doubles", doubles, "32 doubles -> from_doubles -> decide_position");
+  line("matrix", matrix, "32 doubles -> exact_rational -> from_matrix -> decide_position");
+  line("full", full, "classify(e, p), full evidence with certificate (per-pair median)");
+  return 0;
+}

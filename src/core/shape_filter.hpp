@@ -1,0 +1,171 @@
+// The shape of a quadric given as 16 finite doubles, decided as a filtered predicate (issue 12):
+// interval arithmetic certifies the signs of the minors that classify_quadric reads exactly, and the
+// one exact zero a paraboloid needs (det Q3 = 0) is tested on floating-point expansions (Shewchuk:
+// error-free products and sums), so the whole test runs without GMP and without heap allocation.
+// Each function answers only when it is certain the matrix is of the named kind; 0 sends the caller
+// to the exact path (classify_quadric), which decides every case and names what the matrix is.
+#pragma once
+
+#include <CGAL/Interval_nt.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+
+#include "filters/rounding.hpp"
+#include "relpos/quadric.hpp"
+
+namespace relpos::shape_filter {
+
+namespace impl {
+
+using I = CGAL::Interval_nt<false>;
+
+template <class T>
+T entry(const DoubleMatrix4& d, int i, int j) {
+  return T(d[static_cast<std::size_t>(4 * i + j)]);
+}
+
+/// det of the symmetric 4x4 matrix by the 2x2-minor expansion (Laplace on the first two rows).
+template <class T>
+T det4(const DoubleMatrix4& d) {
+  auto m = [&](int i, int j) { return entry<T>(d, i, j); };
+  const T s0 = m(0, 0) * m(1, 1) - m(1, 0) * m(0, 1);
+  const T s1 = m(0, 0) * m(1, 2) - m(1, 0) * m(0, 2);
+  const T s2 = m(0, 0) * m(1, 3) - m(1, 0) * m(0, 3);
+  const T s3 = m(0, 1) * m(1, 2) - m(1, 1) * m(0, 2);
+  const T s4 = m(0, 1) * m(1, 3) - m(1, 1) * m(0, 3);
+  const T s5 = m(0, 2) * m(1, 3) - m(1, 2) * m(0, 3);
+  const T c5 = m(2, 2) * m(3, 3) - m(3, 2) * m(2, 3);
+  const T c4 = m(2, 1) * m(3, 3) - m(3, 1) * m(2, 3);
+  const T c3 = m(2, 1) * m(3, 2) - m(3, 1) * m(2, 2);
+  const T c2 = m(2, 0) * m(3, 3) - m(3, 0) * m(2, 3);
+  const T c1 = m(2, 0) * m(3, 2) - m(3, 0) * m(2, 2);
+  const T c0 = m(2, 0) * m(3, 1) - m(3, 0) * m(2, 1);
+  return s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0;
+}
+
+template <class T>
+T det3(const DoubleMatrix4& d) {
+  auto m = [&](int i, int j) { return entry<T>(d, i, j); };
+  return m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) - m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
+         m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
+}
+
+inline int certain_sign(const I& x) {
+  if (x.inf() > 0) return 1;
+  if (x.sup() < 0) return -1;
+  return 0;  // uncertain (or zero)
+}
+
+inline bool symmetric(const DoubleMatrix4& d) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (!(d[static_cast<std::size_t>(4 * i + j)] == d[static_cast<std::size_t>(4 * j + i)])) return false;
+  return true;
+}
+
+/// A growing floating-point expansion (Shewchuk 1997): the exact sum of its components, which are
+/// non-overlapping and increasing in magnitude. Needs round to nearest and no under/overflow.
+struct Expansion {
+  std::array<double, 24> c{};
+  int n = 0;
+  void add(double b) {  // Grow-Expansion
+    double q = b;
+    for (int i = 0; i < n; ++i) {
+      const double s = q + c[static_cast<std::size_t>(i)];
+      const double bv = s - q;
+      const double err = (q - (s - bv)) + (c[static_cast<std::size_t>(i)] - bv);
+      c[static_cast<std::size_t>(i)] = err;
+      q = s;
+    }
+    c[static_cast<std::size_t>(n++)] = q;
+  }
+  /// Adds x*y*z exactly (four components).
+  void add_product(double x, double y, double z) {
+    const double p = x * y, e = std::fma(x, y, -p);
+    const double p1 = p * z, e1 = std::fma(p, z, -p1);
+    const double p2 = e * z, e2 = std::fma(e, z, -p2);
+    add(e2);
+    add(p2);
+    add(e1);
+    add(p1);
+  }
+  bool is_zero() const {
+    for (int i = 0; i < n; ++i)
+      if (c[static_cast<std::size_t>(i)] != 0) return false;
+    return true;
+  }
+};
+
+/// det Q3 == 0, exactly; nullopt when the entries are outside the range where the expansion is
+/// exact (the caller takes the exact path). The block is scaled by a power of two first (exact).
+inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
+  if (!detail::rounding_to_nearest()) return std::nullopt;
+  double mx = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) mx = std::max(mx, std::fabs(d[static_cast<std::size_t>(4 * i + j)]));
+  if (mx == 0) return true;
+  const int shift = -std::ilogb(mx);
+  double q[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double x = d[static_cast<std::size_t>(4 * i + j)];
+      // Products of three entries and their error terms stay far above the subnormal range (tested
+      // before scaling: a scaled entry must not underflow to zero).
+      if (x != 0 && std::ilogb(x) + shift < -250) return std::nullopt;
+      q[i][j] = std::ldexp(x, shift);
+    }
+  // det = a d f + 2 b c e - a e^2 - f b^2 - d c^2 for [[a, b, c], [b, d, e], [c, e, f]]
+  const double a = q[0][0], b = q[0][1], c = q[0][2], dd = q[1][1], e = q[1][2], f = q[2][2];
+  Expansion x;
+  x.add_product(a, dd, f);
+  x.add_product(2 * b, c, e);
+  x.add_product(-a, e, e);
+  x.add_product(-f, b, b);
+  x.add_product(-dd, c, c);
+  return x.is_zero();
+}
+
+}  // namespace impl
+
+/// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
+/// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
+inline int certified_ellipsoid(const DoubleMatrix4& d) {
+  using impl::I;
+  if (!impl::symmetric(d)) return 0;
+  const double a = d[0];
+  if (!(a > 0) && !(a < 0)) return 0;
+  CGAL::Protect_FPU_rounding<true> guard;
+  const I m2 = I(d[0]) * I(d[5]) - I(d[1]) * I(d[1]);
+  if (impl::certain_sign(m2) != 1) return 0;
+  const int s3 = impl::certain_sign(impl::det3<I>(d));
+  if (s3 == 0 || (s3 > 0) != (a > 0)) return 0;
+  if (impl::certain_sign(impl::det4<I>(d)) != -1) return 0;
+  return a > 0 ? 1 : -1;
+}
+
+/// +1 when the symmetric matrix is certainly an elliptic paraboloid with Q3 positive semidefinite,
+/// -1 with Q3 negative semidefinite, 0 when the filter cannot tell (or it is not one). Q3 has rank 2
+/// and is semidefinite iff det Q3 = 0 (exact) and E2 > 0 (the sum of its 2x2 principal minors: the
+/// product of the two other eigenvalues); rank Q = 4 iff det Q != 0.
+inline int certified_paraboloid(const DoubleMatrix4& d) {
+  using impl::I;
+  if (!impl::symmetric(d)) return 0;
+  int trace_sign = 0;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    const I e2 = (I(d[0]) * I(d[5]) - I(d[1]) * I(d[1])) + (I(d[0]) * I(d[10]) - I(d[2]) * I(d[2])) +
+                 (I(d[5]) * I(d[10]) - I(d[6]) * I(d[6]));
+    if (impl::certain_sign(e2) != 1) return 0;
+    trace_sign = impl::certain_sign(I(d[0]) + I(d[5]) + I(d[10]));
+    if (trace_sign == 0) return 0;
+    if (impl::certain_sign(impl::det4<I>(d)) != -1) return 0;
+  }
+  const auto zero = impl::det3_is_zero(d);
+  if (!zero || !*zero) return 0;
+  return trace_sign;
+}
+
+}  // namespace relpos::shape_filter

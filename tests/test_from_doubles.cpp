@@ -1,0 +1,235 @@
+// Ellipsoid/Paraboloid::from_doubles against from_matrix on the exact rationals of the same doubles
+// (issue 12): the same acceptance, the same InputError messages, the same stored matrices and the
+// same positions, on random and degenerate matrices (rank-deficient blocks, one-ulp perturbations,
+// asymmetry, non-finite entries, extreme exponents).
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <random>
+#include <relpos/classify.hpp>
+#include <relpos/error.hpp>
+#include <relpos/numbers.hpp>
+#include <relpos/quadric.hpp>
+#include <string>
+#include <vector>
+
+using relpos::DoubleMatrix4;
+using relpos::Ellipsoid;
+using relpos::InputError;
+using relpos::Matrix4;
+using relpos::Paraboloid;
+
+namespace {
+
+template <class Q>
+struct Outcome {
+  std::optional<Q> value;
+  std::string message;
+};
+
+Matrix4 exact(const DoubleMatrix4& d) {
+  Matrix4 m;
+  for (std::size_t i = 0; i < 16; ++i) m.a[i] = relpos::exact_rational(d[i]);
+  return m;
+}
+
+template <class Q, class F>
+Outcome<Q> attempt(F make) {
+  Outcome<Q> out;
+  try {
+    out.value.emplace(make());
+  } catch (const InputError& err) {
+    out.message = err.what();
+  }
+  return out;
+}
+
+/// Both constructions agree; returns the from_doubles object when it was accepted.
+template <class Q>
+std::optional<Q> agree(const DoubleMatrix4& d) {
+  const Outcome<Q> fast = attempt<Q>([&] { return Q::from_doubles(d); });
+  const Outcome<Q> slow = attempt<Q>([&] { return Q::from_matrix(exact(d)); });
+  std::string shown;
+  for (double x : d) shown += std::to_string(x) + " (" + std::to_string(std::ilogb(x)) + ") ";
+  INFO("matrix: " << shown << "; from_doubles: " << fast.message << "; from_matrix: " << slow.message);
+  REQUIRE(fast.value.has_value() == slow.value.has_value());
+  CHECK(fast.message == slow.message);
+  if (!fast.value) return std::nullopt;
+  CHECK(fast.value->matrix() == slow.value->matrix());
+  CHECK(fast.value->doubles() == slow.value->doubles());
+  CHECK(fast.value->filter_doubles() == slow.value->filter_doubles());
+  return fast.value;
+}
+
+struct Gen {
+  std::mt19937_64 rng{20261124};
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+  int small(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
+  bool coin() { return small(0, 1) == 1; }
+
+  /// A value of one of several kinds: a small integer, a dyadic, a random double, an extreme one.
+  double entry() {
+    switch (small(0, 5)) {
+      case 0:
+        return small(-3, 3);
+      case 1:
+        return std::ldexp(small(-50, 50), small(-8, 4));
+      case 2:
+        return uniform(-2, 2);
+      case 3:
+        return std::ldexp(uniform(-1, 1), small(-600, 600));
+      default:
+        return uniform(-0.1, 0.1);
+    }
+  }
+
+  static void set(DoubleMatrix4& m, int i, int j, double v) {
+    m[static_cast<std::size_t>(4 * i + j)] = v;
+    m[static_cast<std::size_t>(4 * j + i)] = v;
+  }
+
+  DoubleMatrix4 symmetric() {
+    DoubleMatrix4 m{};
+    for (int i = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j) set(m, i, j, entry());
+    return m;
+  }
+
+  /// A sphere or axis-aligned ellipsoid in doubles, sometimes rounded so that it is not one.
+  DoubleMatrix4 ellipsoid_like() {
+    DoubleMatrix4 m{};
+    const double c[3] = {uniform(-1, 1), uniform(-1, 1), uniform(-0.2, 1.5)};
+    double e0 = -std::pow(uniform(0.01, 0.5), 2);
+    for (int i = 0; i < 3; ++i) {
+      const double a = coin() ? 1.0 : uniform(0.5, 4);
+      set(m, i, i, a);
+      set(m, i, 3, -a * c[i]);
+      e0 += a * c[i] * c[i];
+    }
+    if (coin()) set(m, 0, 1, uniform(-0.3, 0.3));
+    m[15] = e0;
+    if (small(0, 9) == 0) m[15] = -m[15];  // imaginary or a point
+    if (coin())
+      for (double& x : m) x = -x;
+    return m;
+  }
+
+  /// z = a x^2 + b y^2 after a rotation with rational (dyadic) entries, so the 3x3 block is exactly
+  /// of rank 2 in doubles; sometimes one entry is moved by one ulp (then it is of rank 3).
+  DoubleMatrix4 paraboloid_like() {
+    DoubleMatrix4 m{};
+    // u, v integer vectors: A = alpha u u^T + beta v v^T, exact in doubles for small integers.
+    const int u[3] = {small(-3, 3), small(-3, 3), small(-3, 3)};
+    const int v[3] = {small(-3, 3), small(-3, 3), small(-3, 3)};
+    const double alpha = std::ldexp(1.0, small(-4, 4)), beta = std::ldexp(small(1, 7), small(-4, 4));
+    for (int i = 0; i < 3; ++i)
+      for (int j = i; j < 3; ++j) set(m, i, j, alpha * u[i] * u[j] + beta * v[i] * v[j]);
+    for (int i = 0; i < 3; ++i) set(m, i, 3, coin() ? entry() : uniform(-1, 1));
+    m[15] = coin() ? 0.0 : entry();
+    if (small(0, 4) == 0) {
+      const int k = small(0, 2);
+      m[static_cast<std::size_t>(5 * k)] = std::nextafter(m[static_cast<std::size_t>(5 * k)], 10.0);
+    }
+    if (coin())
+      for (double& x : m) x = -x;
+    if (small(0, 3) == 0) {  // a common power-of-two scale, sometimes extreme
+      const int s = small(-900, 900);
+      for (double& x : m) x = std::ldexp(x, s);
+    }
+    return m;
+  }
+
+  /// The paper's regime: z = x^2/a^2 + y^2/b^2 and a small sphere near the cup, all doubles.
+  std::pair<DoubleMatrix4, DoubleMatrix4> regime_pair() {
+    DoubleMatrix4 p{}, e{};
+    set(p, 0, 0, 1 / std::pow(uniform(0.5, 2), 2));
+    set(p, 1, 1, 1 / std::pow(uniform(0.5, 2), 2));
+    set(p, 2, 3, -0.5);
+    const double c[3] = {uniform(-0.5, 0.5), uniform(-0.5, 0.5), uniform(-0.1, 0.6)};
+    const double r = uniform(0.01, 0.4);
+    double e0 = -r * r;
+    for (int i = 0; i < 3; ++i) {
+      set(e, i, i, 1.0);
+      set(e, i, 3, -c[i]);
+      e0 += c[i] * c[i];
+    }
+    e[15] = e0;
+    return {e, p};
+  }
+};
+
+}  // namespace
+
+TEST_CASE("from_doubles accepts and rejects exactly as from_matrix", "[from_doubles]") {
+  Gen g;
+  int accepted_e = 0, accepted_p = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const DoubleMatrix4 a = g.ellipsoid_like(), b = g.paraboloid_like(), c = g.symmetric();
+    for (const DoubleMatrix4* m : {&a, &b, &c}) {
+      if (agree<Ellipsoid>(*m)) ++accepted_e;
+      if (agree<Paraboloid>(*m)) ++accepted_p;
+    }
+  }
+  CHECK(accepted_e > 1000);
+  CHECK(accepted_p > 1000);
+}
+
+TEST_CASE("from_doubles on degenerate and malformed matrices", "[from_doubles]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  std::vector<DoubleMatrix4> cases;
+  cases.push_back({});                                                       // zero
+  cases.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1});        // unit sphere
+  cases.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0});   // z = x^2 + y^2
+  cases.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0});         // a point
+  cases.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});         // imaginary
+  cases.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1});        // cylinder
+  cases.push_back({1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0});  // saddle
+  cases.push_back({1, 1e-300, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1});   // asymmetric by a hair
+  cases.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, nan});
+  cases.push_back({inf, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0});
+  cases.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, std::ldexp(1.0, -1074), -0.5, 0, 0, -0.5, 0});  // subnormal
+  cases.push_back({std::ldexp(1.0, 1000), 0, 0, 0, 0, std::ldexp(1.0, 1000), 0, 0, 0, 0, std::ldexp(1.0, 1000), 0, 0, 0,
+                   0, -std::ldexp(1.0, 1020)});                             // overflowing determinant
+  cases.push_back({1, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, -0.5, 0, 0, -0.5, 0});  // rank-2 block, not axis-aligned
+  for (const auto& m : cases) {
+    agree<Ellipsoid>(m);
+    agree<Paraboloid>(m);
+  }
+  // A NaN is refused with exact_rational's message, from either door.
+  CHECK_THROWS_WITH(Ellipsoid::from_doubles(cases[8]), Catch::Matchers::Contains("not a finite number"));
+}
+
+TEST_CASE("from_doubles gives the same positions as from_matrix", "[from_doubles]") {
+  Gen g;
+  int exact_checked = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const auto [ed, pd] = g.regime_pair();
+    const auto e = agree<Ellipsoid>(ed);
+    const auto p = agree<Paraboloid>(pd);
+    REQUIRE(e);
+    REQUIRE(p);
+    const Ellipsoid es = Ellipsoid::from_matrix(exact(ed));
+    const Paraboloid ps = Paraboloid::from_matrix(exact(pd));
+    const relpos::Verdict fast = relpos::decide_position(*e, *p);
+    const relpos::Verdict slow = relpos::decide_position(es, ps);
+    CHECK(fast.position == slow.position);
+    CHECK(fast.rule == slow.rule);
+    if (k % 40 == 0) {
+      CHECK(relpos::classify_exact(*e, *p, relpos::Evidence::Minimal).verdict.position == slow.position);
+      ++exact_checked;
+    }
+  }
+  CHECK(exact_checked == 100);
+}
+
+TEST_CASE("A quadric from doubles is shared safely and copies keep their matrix", "[from_doubles]") {
+  const Paraboloid p = Paraboloid::from_doubles({1, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0});
+  const Paraboloid copy = p;  // before materialization
+  const Matrix4& m = p.matrix();
+  CHECK(&m == &p.matrix());  // built once
+  CHECK(copy.matrix() == m);
+  CHECK(m(1, 1) == relpos::Rational(2));
+  const Ellipsoid e = Ellipsoid::from_doubles({-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0.5, 0, 0, 0.5, 0});
+  CHECK(e.matrix()(0, 0) == relpos::Rational(1));  // sign-normalized
+}
