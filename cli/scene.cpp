@@ -61,7 +61,7 @@ void print_scene_help(std::ostream& os) {
         "  --format defaults to csv for a FILE ending in .csv, else jsonl.\n"
         "\n"
         "Output: one JSON line per body, in input order, on standard output:\n"
-        "  {\"id\": ..., \"position\": \"I|TI|C|TE|E|unclassified\", \"contact\": true|false|null, \"stage\": ...}\n"
+        "  {\"id\": ..., \"position\": \"I|TI|C|TE|E\", \"contact\": true|false|null, \"stage\": ...}\n"
         "or {\"id\": ..., \"line\": N, \"error\": \"...\"} for a line that cannot be read (the scene goes on).\n"
         "The id is the input id, or the 1-based line number. At the end one JSON line on standard error:\n"
         "  {\"summary\": {\"bodies\", \"errors\", \"positions\", \"stages\", \"threads\", \"seconds\",\n"
