@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/flint_thread.hpp"
+
 namespace relpos {
 namespace {
 
@@ -35,6 +37,7 @@ int sign_of_value(const std::vector<Integer>& p, const Rational& x) {
 }
 
 void to_flint(fmpz_poly_t f, const std::vector<Integer>& p) {
+  detail::flint_thread_cleanup_at_exit();
   fmpz_t c;
   fmpz_init(c);
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -45,6 +48,7 @@ void to_flint(fmpz_poly_t f, const std::vector<Integer>& p) {
 }
 
 std::vector<Integer> from_flint(const fmpz_poly_t f) {
+  detail::flint_thread_cleanup_at_exit();
   std::vector<Integer> out;
   fmpz_t c;
   fmpz_init(c);
@@ -59,6 +63,7 @@ std::vector<Integer> from_flint(const fmpz_poly_t f) {
 }
 
 std::vector<std::vector<Integer>> flint_factors(const std::vector<Integer>& p) {
+  detail::flint_thread_cleanup_at_exit();
   fmpz_poly_t f;
   fmpz_poly_init(f);
   to_flint(f, p);
@@ -87,6 +92,7 @@ std::vector<std::vector<Integer>> irreducible_factors(const std::vector<Integer>
 }
 
 std::vector<Integer> pseudo_remainder(const std::vector<Integer>& p, const std::vector<Integer>& m) {
+  detail::flint_thread_cleanup_at_exit();
   if (m.size() < 2) throw std::invalid_argument("pseudo_remainder: constant divisor");
   fmpz_poly_t a, b, r;
   fmpz_poly_init(a);

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <utility>
 
+#include "core/flint_thread.hpp"
 #include "core/small_factor.hpp"
 #include "core/sturm_habicht_quartic.hpp"
 
@@ -64,6 +65,7 @@ int RootStructure::positive() const {
 }
 
 int sign_of_discriminant(const std::vector<Integer>& c) {
+  detail::flint_thread_cleanup_at_exit();
   Poly g(c.begin(), c.end());
   const int n = g.degree();
   if (n < 1) return 0;
@@ -179,6 +181,7 @@ std::vector<double> approximate_real_roots(const double* c, int n, double bound)
 /// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
 /// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
 bool certainly_no_rational_root(const fmpz_poly_t f) {
+  detail::flint_thread_cleanup_at_exit();
   static const mp_limb_t primes[] = {1000003, 1000033, 1000037, 1000039, 1000081, 1000099, 1000117, 1000121,
                                      1000133, 1000151, 1000159, 1000171, 1000183, 1000187, 1000193, 1000199};
   bool found = false;
@@ -208,6 +211,7 @@ bool certainly_no_rational_root(const fmpz_poly_t f) {
 }  // namespace
 
 std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
+  detail::flint_thread_cleanup_at_exit();
   if (fc[4] == 0 || fc[0] == 0 || sc[2] == 0) return std::nullopt;
   const FlintPoly f(fc), s(sc);
   fmpz_t z;
