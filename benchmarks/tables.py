@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Print the markdown tables of doc/performance.md from benchmarks/results/{results,flint}.csv.
 
-    python3 benchmarks/tables.py [RESULTS_DIR]
+    /usr/bin/python3 benchmarks/tables.py [RESULTS_DIR]
 """
 import csv
 import os

@@ -213,28 +213,26 @@ std::array<Rational, N> vector_of(const Json& v, const std::string& path, const 
 
 Vector3 vector3(const Json& v, const std::string& path) { return vector_of<3>(v, path, "an array of 3 numbers"); }
 
-Matrix4 matrix4(const Json& v, const std::string& path) {
-  array_of(v, 4, path, "a 4x4 array (4 rows of 4 numbers)");
-  Matrix4 m;
-  for (std::size_t i = 0; i < 4; ++i) {
+/// An N x N matrix of exact numbers (Matrix4 or Matrix3), row by row, each entry's path in messages.
+template <class M, std::size_t N>
+M square_matrix(const Json& v, const std::string& path, const char* what, const char* row_what) {
+  array_of(v, N, path, what);
+  M m;
+  for (std::size_t i = 0; i < N; ++i) {
     const std::string row = index_path(path, i);
-    array_of(v[i], 4, row, "a row of 4 numbers");
-    for (std::size_t j = 0; j < 4; ++j)
+    array_of(v[i], N, row, row_what);
+    for (std::size_t j = 0; j < N; ++j)
       m(static_cast<int>(i), static_cast<int>(j)) = rational_from_json(v[i][j], index_path(row, j));
   }
   return m;
 }
 
+Matrix4 matrix4(const Json& v, const std::string& path) {
+  return square_matrix<Matrix4, 4>(v, path, "a 4x4 array (4 rows of 4 numbers)", "a row of 4 numbers");
+}
+
 Matrix3 matrix3(const Json& v, const std::string& path) {
-  array_of(v, 3, path, "a 3x3 array (3 rows of 3 numbers)");
-  Matrix3 m;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const std::string row = index_path(path, i);
-    array_of(v[i], 3, row, "a row of 3 numbers");
-    for (std::size_t j = 0; j < 3; ++j)
-      m(static_cast<int>(i), static_cast<int>(j)) = rational_from_json(v[i][j], index_path(row, j));
-  }
-  return m;
+  return square_matrix<Matrix3, 3>(v, path, "a 3x3 array (3 rows of 3 numbers)", "a row of 3 numbers");
 }
 
 Coefficients10 coefficients10(const Json& v, const std::string& path) {

@@ -42,7 +42,7 @@ if [ $rc -ne 0 ]; then
   exit 1
 fi
 
-python3 - "$input" "$output" <<'PY'
+/usr/bin/python3 - "$input" "$output" <<'PY'
 import json
 import sys
 
@@ -151,7 +151,7 @@ if [ $? -ne 0 ]; then
   echo "check_examples: relpos batch --contact-only failed" >&2
   exit 1
 fi
-python3 - "$input" "$output" <<'PY' || rc=1
+/usr/bin/python3 - "$input" "$output" <<'PY' || rc=1
 import json
 import sys
 

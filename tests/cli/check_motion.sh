@@ -24,7 +24,7 @@ check() {  # check NAME CONDITION-RESULT
 out=$("$relpos" motion --sphere 0,0,0,1/4 --standard-paraboloid 1,2 --translation '[[], [], ["-9/4", 0, 1]]' \
   --t0 0 --t1 2 --digits 30 --json)
 check "sqrt(2) run exits 0" $?
-python3 - "$out" <<'EOF'
+/usr/bin/python3 - "$out" <<'EOF'
 import json, sys
 j = json.loads(sys.argv[1])
 fc = j["first_contact"]
@@ -55,7 +55,7 @@ check "--first-contact prints no timeline" $((1 - $?))
 out=$("$relpos" motion --ellipsoid '{"center":[0,0,-1],"axes":["1/2",1,"1/4"]}' --standard-paraboloid 1,2 \
   --rotation '[[1],[0,1],[],[]]' --pivot center --t0 0 --t1 2 --json)
 check "rotation run exits 0" $?
-python3 - "$out" <<'EOF'
+/usr/bin/python3 - "$out" <<'EOF'
 import json, sys
 j = json.loads(sys.argv[1])
 assert j["first_contact"]["time"]["exact"] == "1", j["first_contact"]
@@ -67,7 +67,7 @@ check "rotation JSON: grazing TE at t = 1" $?
 # 4. Contact at t0 is a result.
 out=$("$relpos" motion --sphere 0,0,0,1/4 --standard-paraboloid 1,2 --translation '[[], [], ["-1/4", 1]]' \
   --t0 0 --t1 1 --first-contact --json)
-python3 - "$out" <<'EOF'
+/usr/bin/python3 - "$out" <<'EOF'
 import json, sys
 fc = json.loads(sys.argv[1])["first_contact"]
 assert fc["kind"] == "not-exterior-at-start" and fc["position"] == "TE" and fc["time"]["exact"] == "0", fc

@@ -46,7 +46,7 @@ for ext in jsonl csv; do
   # The same input on standard input, format given explicitly.
   "$relpos" scene $par - --format "$ext" <"$input" >"$tmp/stdin-$ext" 2>/dev/null || note "$ext: stdin run failed"
   cmp -s "$tmp/out-$ext-1" "$tmp/stdin-$ext" || note "$ext: standard input gives different output"
-  python3 - "$ext" "$input" "$tmp/out-$ext-1" "$tmp/err-$ext-1" <<'PY' || fail=1
+  /usr/bin/python3 - "$ext" "$input" "$tmp/out-$ext-1" "$tmp/err-$ext-1" <<'PY' || fail=1
 import json
 import sys
 
