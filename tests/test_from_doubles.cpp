@@ -3,6 +3,7 @@
 // same positions, on random and degenerate matrices (rank-deficient blocks, one-ulp perturbations,
 // asymmetry, non-finite entries, extreme exponents).
 #include <catch2/catch.hpp>
+#include <cfenv>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -232,4 +233,33 @@ TEST_CASE("A quadric from doubles is shared safely and copies keep their matrix"
   CHECK(m(1, 1) == relpos::Rational(2));
   const Ellipsoid e = Ellipsoid::from_doubles({-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0.5, 0, 0, 0.5, 0});
   CHECK(e.matrix()(0, 0) == relpos::Rational(1));  // sign-normalized
+}
+
+TEST_CASE("from_doubles at the edge of its filters and under upward rounding", "[from_doubles]") {
+  // Ellipsoids whose det E is within a few ulps of zero (a point, imaginary, or barely real): the
+  // static and semi-static signs are uncertain there, so the interval and exact stages decide; and
+  // the same matrices with the FPU rounding upwards (the semi-static stage is skipped).
+  Gen g;
+  int accepted = 0, rejected = 0;
+  for (int k = 0; k < 600; ++k) {
+    DoubleMatrix4 m{};
+    const double c[3] = {g.uniform(-1, 1), g.uniform(-1, 1), g.uniform(-1, 1)};
+    double e0 = 0;
+    for (int i = 0; i < 3; ++i) {
+      Gen::set(m, i, i, 1.0);
+      Gen::set(m, i, 3, -c[i]);
+      e0 += c[i] * c[i];
+    }
+    for (int step = g.small(0, 4); step > 0; --step) e0 = std::nextafter(e0, g.coin() ? 10.0 : -10.0);
+    m[15] = e0;
+    const bool upward = k % 3 == 0;
+    if (upward) std::fesetround(FE_UPWARD);
+    const auto e = agree<Ellipsoid>(m);
+    const auto p = agree<Paraboloid>(g.paraboloid_like());
+    if (upward) std::fesetround(FE_TONEAREST);
+    (e ? accepted : rejected) += 1;
+    (void)p;
+  }
+  CHECK(accepted > 0);
+  CHECK(rejected > 0);
 }

@@ -94,6 +94,8 @@ class QuadricMatrix {
   explicit QuadricMatrix(Matrix4 m);
   /// From doubles that are all finite (checked by the caller); no heap allocation.
   explicit QuadricMatrix(const DoubleMatrix4& d);
+  /// The same with d's power_of_two_normalized copy already computed (by the caller's filter).
+  QuadricMatrix(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized);
   QuadricMatrix(const QuadricMatrix& o) : d_(o.d_), n_(o.n_), m_(std::atomic_load(&o.m_)) {}
   QuadricMatrix& operator=(const QuadricMatrix& o) {
     if (this != &o) {
@@ -161,6 +163,7 @@ class Ellipsoid {
  private:
   explicit Ellipsoid(Matrix4 m) : m_(std::move(m)) {}
   explicit Ellipsoid(const DoubleMatrix4& d) : m_(d) {}
+  explicit Ellipsoid(detail::QuadricMatrix m) : m_(std::move(m)) {}
   detail::QuadricMatrix m_;
 };
 
@@ -193,6 +196,7 @@ class Paraboloid {
  private:
   explicit Paraboloid(Matrix4 m) : m_(std::move(m)) {}
   explicit Paraboloid(const DoubleMatrix4& d) : m_(d) {}
+  explicit Paraboloid(detail::QuadricMatrix m) : m_(std::move(m)) {}
   detail::QuadricMatrix m_;
 };
 

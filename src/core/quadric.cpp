@@ -173,6 +173,9 @@ QuadricMatrix::QuadricMatrix(Matrix4 m)
 
 QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d) : d_(d), n_(power_of_two_normalized(d_)) {}
 
+QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized)
+    : d_(d), n_(normalized) {}
+
 const Matrix4& QuadricMatrix::materialize() const {
   auto built = std::make_shared<Matrix4>();
   for (std::size_t i = 0; i < 16; ++i) built->a[i] = Rational((*d_)[i]);  // finite: exact
@@ -324,12 +327,19 @@ DoubleMatrix4 negated(const DoubleMatrix4& d) {
   return r;
 }
 
+std::optional<DoubleMatrix4> negated(const std::optional<DoubleMatrix4>& d) {
+  if (!d) return std::nullopt;
+  return negated(*d);
+}
+
 }  // namespace
 
 Ellipsoid Ellipsoid::from_doubles(const DoubleMatrix4& e) {
   if (all_finite(e)) {
-    const int orientation = shape_filter::certified_ellipsoid(e);
-    if (orientation != 0) return Ellipsoid(orientation > 0 ? e : negated(e));
+    const std::optional<DoubleMatrix4> n = power_of_two_normalized(e);
+    const int orientation = shape_filter::certified_ellipsoid(e, n);
+    if (orientation > 0) return Ellipsoid(detail::QuadricMatrix(e, n));
+    if (orientation < 0) return Ellipsoid(detail::QuadricMatrix(negated(e), negated(n)));
   }
   // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
   const Ellipsoid exact = from_matrix(exact_matrix(e));
@@ -407,8 +417,10 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
 
 Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
   if (all_finite(p)) {
-    const int orientation = shape_filter::certified_paraboloid(p);
-    if (orientation != 0) return Paraboloid(orientation > 0 ? p : negated(p));
+    const std::optional<DoubleMatrix4> n = power_of_two_normalized(p);
+    const int orientation = shape_filter::certified_paraboloid(p, n);
+    if (orientation > 0) return Paraboloid(detail::QuadricMatrix(p, n));
+    if (orientation < 0) return Paraboloid(detail::QuadricMatrix(negated(p), negated(n)));
   }
   const Paraboloid exact = from_matrix(exact_matrix(p));
   return Paraboloid(*exact.doubles());

@@ -53,6 +53,37 @@ T det3(const DoubleMatrix4& d) {
          m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
 }
 
+/// Magnitudes for a semi-static error bound: a formula evaluated on |entries| with every
+/// subtraction turned into an addition is the sum of the absolute values of its terms, which bounds
+/// the rounding error of the same formula evaluated in doubles (Shewchuk's "permanent" bounds).
+struct Mag {
+  double v = 0;
+  Mag() = default;
+  explicit Mag(double x) : v(std::fabs(x)) {}
+  friend Mag operator*(Mag a, Mag b) { return Mag(a.v * b.v); }
+  friend Mag operator+(Mag a, Mag b) { return Mag(a.v + b.v); }
+  friend Mag operator-(Mag a, Mag b) { return Mag(a.v + b.v); }
+};
+
+/// The sign of a formula of at most 12 successive roundings (det4 below has 8, det3 5), evaluated in
+/// doubles on a power-of-two normalized matrix (entries below 1 in magnitude, none subnormal):
+/// its error is at most 12 eps (1 + 12 eps) times its magnitude, plus underflow in at most a few
+/// hundred products of at most 2^-1074 each; the bound 2^-47 magnitude + 2^-1000 covers both with a
+/// factor of two to spare (the magnitude's own rounding included). 0 when uncertain.
+inline int semi_static_sign(double value, double magnitude) {
+  const double bound = 0x1p-47 * magnitude + 0x1p-1000;
+  if (value > bound) return 1;
+  if (value < -bound) return -1;
+  return 0;
+}
+/// The same, trying first the static magnitude `most` (what the formula's magnitude can be at
+/// most when every entry is below 1: no extra arithmetic), then the actual magnitude.
+template <class MagnitudeOf>
+int filtered_sign(double value, double most, MagnitudeOf magnitude) {
+  if (const int s = semi_static_sign(value, most)) return s;
+  return semi_static_sign(value, magnitude().v);
+}
+
 inline int certain_sign(const I& x) {
   if (x.inf() > 0) return 1;
   if (x.sup() < 0) return -1;
@@ -102,6 +133,13 @@ struct Expansion {
 /// det Q3 == 0, exactly; nullopt when the entries are outside the range where the expansion is
 /// exact (the caller takes the exact path). The block is scaled by a power of two first (exact).
 inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
+  {  // Every term of the expansion below has a zero factor (axis-aligned paraboloids): det = 0,
+     // without arithmetic.
+    const double a = d[0], b = d[1], c = d[2], dd = d[5], e = d[6], f = d[10];
+    if ((a == 0 || dd == 0 || f == 0) && (b == 0 || c == 0 || e == 0) && (a == 0 || e == 0) && (f == 0 || b == 0) &&
+        (dd == 0 || c == 0))
+      return true;
+  }
   if (!detail::rounding_to_nearest()) return std::nullopt;
   double mx = 0;
   for (int i = 0; i < 3; ++i)
@@ -132,29 +170,55 @@ inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
 
 /// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
 /// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
-inline int certified_ellipsoid(const DoubleMatrix4& d) {
+/// `normalized` is d scaled by a power of two (power_of_two_normalized), when it exists: the
+/// semi-static stage reads it; the interval stage reads d.
+inline int certified_ellipsoid(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized) {
   using impl::I;
   if (!impl::symmetric(d)) return 0;
   const double a = d[0];
   if (!(a > 0) && !(a < 0)) return 0;
+  const int want = a > 0 ? 1 : -1;
+  if (normalized && detail::rounding_to_nearest()) {  // semi-static stage: no rounding-mode switch
+    const DoubleMatrix4& n = *normalized;
+    using impl::Mag;
+    const int s2 = impl::filtered_sign(n[0] * n[5] - n[1] * n[1], 2,
+                                       [&] { return Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1]); });
+    const int s3 = impl::filtered_sign(impl::det3<double>(n), 6, [&] { return impl::det3<Mag>(n); });
+    const int s4 = impl::filtered_sign(impl::det4<double>(n), 24, [&] { return impl::det4<Mag>(n); });
+    if (s2 == 1 && s3 == want && s4 == -1) return want;
+  }
   CGAL::Protect_FPU_rounding<true> guard;
   const I m2 = I(d[0]) * I(d[5]) - I(d[1]) * I(d[1]);
   if (impl::certain_sign(m2) != 1) return 0;
   const int s3 = impl::certain_sign(impl::det3<I>(d));
-  if (s3 == 0 || (s3 > 0) != (a > 0)) return 0;
+  if (s3 != want) return 0;
   if (impl::certain_sign(impl::det4<I>(d)) != -1) return 0;
-  return a > 0 ? 1 : -1;
+  return want;
 }
 
 /// +1 when the symmetric matrix is certainly an elliptic paraboloid with Q3 positive semidefinite,
 /// -1 with Q3 negative semidefinite, 0 when the filter cannot tell (or it is not one). Q3 has rank 2
 /// and is semidefinite iff det Q3 = 0 (exact) and E2 > 0 (the sum of its 2x2 principal minors: the
-/// product of the two other eigenvalues); rank Q = 4 iff det Q != 0.
-inline int certified_paraboloid(const DoubleMatrix4& d) {
+/// product of the two other eigenvalues); rank Q = 4 iff det Q != 0. `normalized` as for
+/// certified_ellipsoid.
+inline int certified_paraboloid(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized) {
   using impl::I;
   if (!impl::symmetric(d)) return 0;
   int trace_sign = 0;
-  {
+  bool certain = false;
+  if (normalized && detail::rounding_to_nearest()) {  // semi-static stage
+    const DoubleMatrix4& n = *normalized;
+    using impl::Mag;
+    const int e2 = impl::filtered_sign(
+        (n[0] * n[5] - n[1] * n[1]) + (n[0] * n[10] - n[2] * n[2]) + (n[5] * n[10] - n[6] * n[6]), 6, [&] {
+          return (Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1])) + (Mag(n[0]) * Mag(n[10]) + Mag(n[2]) * Mag(n[2])) +
+                 (Mag(n[5]) * Mag(n[10]) + Mag(n[6]) * Mag(n[6]));
+        });
+    trace_sign = impl::filtered_sign(n[0] + n[5] + n[10], 3, [&] { return Mag(n[0]) + Mag(n[5]) + Mag(n[10]); });
+    certain = e2 == 1 && trace_sign != 0 &&
+              impl::filtered_sign(impl::det4<double>(n), 24, [&] { return impl::det4<Mag>(n); }) == -1;
+  }
+  if (!certain) {
     CGAL::Protect_FPU_rounding<true> guard;
     const I e2 = (I(d[0]) * I(d[5]) - I(d[1]) * I(d[1])) + (I(d[0]) * I(d[10]) - I(d[2]) * I(d[2])) +
                  (I(d[5]) * I(d[10]) - I(d[6]) * I(d[6]));

@@ -1,5 +1,4 @@
 #include "filters/static_filter.hpp"
-#include "forms/forms.hpp"
 
 #include <CGAL/Filtered_kernel/internal/Static_filters/Static_filter_error.h>
 
@@ -10,6 +9,7 @@
 #include <cstring>
 
 #include "core/smallness.hpp"
+#include "forms/forms.hpp"
 
 namespace relpos {
 namespace {
@@ -103,7 +103,7 @@ double balancing_step(const Quartic<double>& f) {
 bool scale_into_unit(double* v, double* err, int n) {
   double mx = 0;
   for (int i = 0; i < n; ++i) mx = std::max(mx, std::fabs(v[i]) + err[i]);
-  if (!normal_range(mx)) return false;
+  if (!normal_range(mx) || exponent_of(mx) >= 1022) return false;  // 2^-(e+1) must be normal
   const double scale = power_of_two(-exponent_of(mx) - 1);
   for (int i = 0; i < n; ++i) {
     v[i] *= scale;
@@ -118,9 +118,13 @@ bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
   double mx = 0;
   for (double x : in) mx = std::max(mx, std::fabs(x));
   if (!normal_range(mx)) return false;
-  const double scale = power_of_two(-exponent_of(mx) - 1);  // multiplying by it is exact
+  // 2^-(e+1) is below the normal range when e = 1023: then scale in two exact steps (an entry that
+  // turns subnormal on the way stays below DBL_MIN and is refused below).
+  const int k = -exponent_of(mx) - 1;
+  const double pre = k < -1022 ? 0x1p-512 : 1.0;
+  const double scale = power_of_two(k < -1022 ? k + 512 : k);  // multiplying by it is exact
   for (std::size_t i = 0; i < 16; ++i) {
-    out.a[i] = in[i] * scale;
+    out.a[i] = in[i] * pre * scale;
     if (in[i] != 0 && std::fabs(out.a[i]) < DBL_MIN) return false;
   }
   return true;
