@@ -304,6 +304,34 @@ def test_decide_positions_equals_classify():
     assert numpy.array_equal(relpos.decide_positions(E[mask], shared), codes[mask])
 
 
+def test_decide_positions_equals_cli_double_oracle():
+    """The float64 API and the CLI's oracle mode (`batch --numbers double --evidence minimal`: each
+    JSON number is the double nearest its text) answer the same pairs alike, and so does the exact
+    reading when the text is the double's exact value (short dyadics)."""
+    E, P = random_pairs(600, seed=29)
+    codes = relpos.decide_positions(E, P)
+    lines = []
+    for i in range(len(E)):
+        lines.append(json.dumps({"id": i, "ellipsoid": {"matrix": E[i].tolist()}, "paraboloid": {"matrix": P[i].tolist()}}))
+    text = "\n".join(lines) + "\n"
+    out = subprocess.run(
+        [cli(), "batch", "--numbers", "double", "--evidence", "minimal", "-"],
+        input=text.encode(),
+        stdout=subprocess.PIPE,
+        check=True,
+    ).stdout
+    answers = [json.loads(line) for line in out.decode().splitlines()]
+    assert [a["id"] for a in answers] == list(range(len(E)))
+    assert numpy.array_equal(numpy.array([code_of(a["position"]) for a in answers], dtype=numpy.int8), codes)
+    # json.dumps writes repr(x), the shortest text that reads back as x; read exactly, that text is
+    # another rational when x is not a short dyadic (1/b^2 here). The vertex tangencies keep their
+    # position under that change (a sphere on the axis touching the vertex: TE for any b, TI while
+    # r < min(a, b)^2 / 2 with room to spare), so the default exact reading must agree on them.
+    dyadic = [i for i in range(0, len(E), 10)]
+    exact = cli_batch("\n".join(lines[i] for i in dyadic) + "\n")
+    assert [code_of(a["position"]) for a in exact] == [int(codes[i]) for i in dyadic]
+
+
 def test_decide_positions_bad_input():
     E, P = random_pairs(20, seed=1)
     E[7] = numpy.diag([1.0, -1.0, 1.0, -1.0])  # a hyperboloid
