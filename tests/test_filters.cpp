@@ -3,8 +3,6 @@
 // settle what the static bound cannot. Exact signs come from the same generic formulas on exact
 // rationals of the same (power-of-two normalized) matrices.
 #include <catch2/catch.hpp>
-
-#include "support/seed.hpp"
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -12,12 +10,14 @@
 #include <relpos/classify.hpp>
 #include <relpos/scene.hpp>
 
+#include "anysize/gap.hpp"
 #include "core/smallness.hpp"
 #include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"
 #include "scene/certificates.hpp"
 #include "scene/demo.hpp"
 #include "support/construct.hpp"
+#include "support/seed.hpp"
 
 using namespace rt;
 using relpos::DecisionSigns;
@@ -287,4 +287,54 @@ TEST_CASE("translated semi-static filter: every certified sign is the exact sign
   std::cout << "[filters] translated: " << certified << " of " << quantities << " signs certified\n";
   CHECK(wrong == 0);
   CHECK(certified * 10 >= quantities * 8);
+}
+
+TEST_CASE("semi-static gap test (math.md section 8): every certified answer is the exact one", "[filters][random]") {
+  // Large spheres and ellipsoids near the cup (most pairs are not small, many need the gap test),
+  // and random matrices with wide exponents: whenever the double filter answers, the exact gap test
+  // on the same f and s answers the same.
+  Rng g(seed_from_env(808));
+  std::cout << "[filters] gap seed " << g.seed << "\n";
+  auto u = [&g](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g.gen); };
+  int answered = 0, pairs = 0;
+  for (int n = 0; n < 3000; ++n) {
+    DoubleMatrix4 pm{}, em{};
+    auto set = [](DoubleMatrix4& m, int i, int j, double v) {
+      m[static_cast<std::size_t>(4 * i + j)] = m[static_cast<std::size_t>(4 * j + i)] = v;
+    };
+    const double a = u(0.5, 2), b = u(0.5, 2);
+    set(pm, 0, 0, 1 / (a * a));
+    set(pm, 1, 1, 1 / (b * b));
+    set(pm, 2, 3, -0.5);
+    const double c[3] = {u(-1, 1), u(-1, 1), u(-0.5, 3)};
+    const double k[3] = {u(0.1, 4), u(0.1, 4), u(0.1, 4)};
+    double e0 = -u(0.05, 4);
+    for (int i = 0; i < 3; ++i) {
+      set(em, i, i, k[i]);
+      set(em, i, 3, -k[i] * c[i]);
+      e0 += k[i] * c[i] * c[i];
+    }
+    em[15] = e0;
+    if (n % 3 == 0) set(em, 0, 1, u(-0.05, 0.05));
+    const auto pn = relpos::power_of_two_normalized(pm), en = relpos::power_of_two_normalized(em);
+    if (!pn || !en) continue;
+    ++pairs;
+    const auto fast = relpos::semi_static_roots_above_lambda_s(*pn, *en);
+    if (!fast) continue;
+    relpos::Matrix4 p, e;
+    for (std::size_t i = 0; i < 16; ++i) {
+      p.a[i] = relpos::exact_rational((*pn)[i]);
+      e.a[i] = relpos::exact_rational((*en)[i]);
+    }
+    const RationalView pv{p}, ev{e};
+    const auto f = relpos::characteristic_polynomial<Rational>(pv, ev);
+    const auto s = relpos::special_polynomial<Rational>(pv, ev);
+    const auto exact = relpos::anysize::roots_above_lambda_s(
+        relpos::anysize::GapQuantities<Rational>(f, s), [](const Rational& x) { return std::optional<int>(sgn(x)); });
+    REQUIRE(exact);
+    CHECK(*fast == *exact);
+    ++answered;
+  }
+  std::cout << "[filters] gap: " << pairs << " pairs, answered by the double filter on " << answered << "\n";
+  CHECK(answered * 10 >= pairs * 9);
 }

@@ -25,6 +25,9 @@
 
 namespace relpos::anysize {
 
+/// Number of quantities of the gap test: d, then U, V, W for f', f'', f''' (GapQuantities::flatten).
+inline constexpr int kGapSigns = 10;
+
 /// U, V and W = U^2 - V^2 d for f', f'', f''' at lambda_s, and d = Disc(s).
 template <class NT>
 struct GapQuantities {
@@ -58,6 +61,16 @@ struct GapQuantities {
       w[j] = a * a - b * b * d;
     }
   }
+  /// d, u[0..2], v[0..2], w[0..2].
+  template <class Out>
+  void flatten(Out* out) const {
+    out[0] = d;
+    for (int j = 0; j < 3; ++j) {
+      out[1 + j] = u[j];
+      out[4 + j] = v[j];
+      out[7 + j] = w[j];
+    }
+  }
 };
 
 /// Certain signs as ints (nullopt: uncertain), for any number type the ladder uses.
@@ -82,13 +95,12 @@ inline std::optional<int> sign_plus_sqrt(std::optional<int> su, std::optional<in
 }
 
 /// Whether f has roots in (lambda_s, 0), for square-free f with four real roots, none positive
-/// (the comment at the top): true (I), false (C), nullopt when a sign is uncertain in NT.
-template <class NT, class SignOf>
-std::optional<bool> roots_above_lambda_s(const GapQuantities<NT>& q, SignOf sign) {
-  const std::optional<int> sd = sign(q.d);
+/// (the comment at the top): true (I), false (C), nullopt when a sign is uncertain. `signs` are
+/// those of the quantities in GapQuantities::flatten order, nullopt when uncertain.
+inline std::optional<bool> roots_above_lambda_s(const std::optional<int> (&signs)[kGapSigns]) {
   bool all_certain = true;
   for (int j = 0; j < 3; ++j) {
-    const auto c = sign_plus_sqrt(sign(q.u[j]), sign(q.v[j]), sign(q.w[j]), sd);
+    const auto c = sign_plus_sqrt(signs[1 + j], signs[4 + j], signs[7 + j], signs[0]);
     if (!c) {
       all_certain = false;
       continue;
@@ -97,6 +109,16 @@ std::optional<bool> roots_above_lambda_s(const GapQuantities<NT>& q, SignOf sign
   }
   if (all_certain) return false;
   return std::nullopt;
+}
+
+/// The same with the signs taken in NT by `sign` (nullopt: uncertain).
+template <class NT, class SignOf>
+std::optional<bool> roots_above_lambda_s(const GapQuantities<NT>& q, SignOf sign) {
+  NT flat[kGapSigns];
+  q.flatten(flat);
+  std::optional<int> signs[kGapSigns];
+  for (int i = 0; i < kGapSigns; ++i) signs[i] = sign(flat[i]);
+  return roots_above_lambda_s(signs);
 }
 
 template <class NT>

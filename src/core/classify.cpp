@@ -342,33 +342,6 @@ bool needs_gap(const Verdict& v) {
          v.nonreal_roots == 0 && v.positive_roots == 0 && v.roots_above_lambda_s < 0;
 }
 
-/// The gap test of section 8 on RunningBound (semi-static doubles) from the normalized matrices.
-std::optional<bool> gap_semi_static(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
-  MatrixOf<RunningBound> pv, ev;
-  for (std::size_t i = 0; i < 16; ++i) {
-    pv.a[i] = RunningBound(pn[i]);
-    ev.a[i] = RunningBound(en[i]);
-  }
-  Quartic<RunningBound> f = characteristic_polynomial<RunningBound>(pv, ev);
-  Quadratic<RunningBound> s = special_polynomial<RunningBound>(pv, ev);
-  // Positive powers of two keep the degree-8 quantities clear of under- and overflow.
-  auto into_unit = [](RunningBound* c, std::size_t n) {
-    double mx = 0;
-    for (std::size_t i = 0; i < n; ++i) mx = std::max(mx, std::fabs(c[i].value()));
-    if (!(mx > 0 && std::isfinite(mx))) return;
-    const double k = std::ldexp(1.0, -std::ilogb(mx));
-    for (std::size_t i = 0; i < n; ++i) c[i] = c[i].times_power_of_two(k);
-  };
-  into_unit(f.data(), 5);
-  into_unit(s.data(), 3);
-  return anysize::roots_above_lambda_s(anysize::GapQuantities<RunningBound>(f, s),
-                                       [](const RunningBound& x) -> std::optional<int> {
-                                         const int sg = x.sign();
-                                         if (sg == 0) return std::nullopt;
-                                         return sg;
-                                       });
-}
-
 /// The gap test through its own ladder: semi-static doubles, intervals, exact integers (the last
 /// always certain). Records the latest stage used.
 void settle_gap(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v, std::optional<ExactData>& exact) {
@@ -376,7 +349,7 @@ void settle_gap(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdic
   Stage stage = v.stage;
   if (use_filter) {
     if (rounding_to_nearest() && e.filter_doubles() && p.filter_doubles()) {
-      g = gap_semi_static(*p.filter_doubles(), *e.filter_doubles());
+      g = semi_static_roots_above_lambda_s(*p.filter_doubles(), *e.filter_doubles());
       stage = std::max(stage, Stage::SemiStaticDouble);
     }
     if (!g) {

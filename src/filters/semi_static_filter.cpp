@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "anysize/gap.hpp"
 #include "core/smallness.hpp"
 #include "filters/running_bound.hpp"
 #include "forms/forms.hpp"
@@ -22,9 +23,10 @@ using Lanes = RunningBoundLanes;
 template <class NT>
 using View = forms::MatrixOf<NT>;
 
-constexpr int kQuantities = 13;           // f0..f4, g2[0..2], g1[0..1], g0, vertex, graeffe
-constexpr double kEntryFloor = 0x1p-60;   // smallest non-zero |entry| accepted (degree 4: >= 2^-240)
-constexpr double kCoeffFloor = 0x1p-160;  // smallest non-zero scaled |f_i|, |s_i| (degree 6: >= 2^-960)
+constexpr int kQuantities = 13;              // f0..f4, g2[0..2], g1[0..1], g0, vertex, graeffe
+constexpr double kEntryFloor = 0x1p-60;      // smallest non-zero |entry| accepted (degree 4: >= 2^-240)
+constexpr double kCoeffFloor = 0x1p-160;     // smallest non-zero scaled |f_i|, |s_i| (degree 6: >= 2^-960)
+constexpr double kGapCoeffFloor = 0x1p-120;  // the same for the gap test (degree 8: >= 2^-960)
 
 template <class NT>
 bool evaluate(const View<NT>& p, const View<NT>& e, NT out[kQuantities]);
@@ -41,13 +43,14 @@ bool evaluate(const DoubleMatrix4& pn, const DoubleMatrix4& en, NT out[kQuantiti
   return evaluate(forms::converted<NT>(pn), forms::converted<NT>(en), out);
 }
 
+/// f and s in NT, balanced (lambda = 2^t mu, |f4| 2^(4t) ~ |f0|) and each brought near 1, by powers
+/// of two: every decision quantity (and every gap quantity) is isobaric and homogeneous in f and in
+/// s, so its value and its magnitude scale alike; this only keeps the products of degree up to 8
+/// clear of under- and overflow. False when a non-zero scaled magnitude is below `floor`.
 template <class NT>
-bool evaluate(const View<NT>& p, const View<NT>& e, NT out[kQuantities]) {
-  Quartic<NT> f = characteristic_polynomial<NT>(p, e);
-  Quadratic<NT> s = special_polynomial<NT>(p, e);
-  // Balance the quartic (lambda = 2^t mu, |f4| 2^(4t) ~ |f0|) and bring f and s near 1, by powers of
-  // two: every decision quantity is isobaric and homogeneous in f and in s, so its value and its
-  // magnitude scale alike; this only keeps the degree-6 products clear of under- and overflow.
+bool scaled_pencil(const View<NT>& p, const View<NT>& e, Quartic<NT>& f, Quadratic<NT>& s, double floor) {
+  f = characteristic_polynomial<NT>(p, e);
+  s = special_polynomial<NT>(p, e);
   double step = 1;
   const double f0 = f[0].value(), f4 = f[4].value();
   if (f0 != 0 && f4 != 0 && std::isfinite(f0) && std::isfinite(f4))  // ilogb of 0, inf, NaN: no balancing
@@ -57,24 +60,58 @@ bool evaluate(const View<NT>& p, const View<NT>& e, NT out[kQuantities]) {
     f[i] = f[i].times_power_of_two(w);
     if (i < 3) s[i] = s[i].times_power_of_two(w);
   }
-  auto into_unit = [](NT* c, std::size_t n) {
+  auto into_unit = [floor](NT* c, std::size_t n) {
     double mx = 0;
     for (std::size_t i = 0; i < n; ++i) mx = std::max(mx, c[i].magnitude());
     const double k = (mx > 0 && std::isfinite(mx)) ? std::ldexp(1.0, -std::ilogb(mx) - 1) : 1.0;
     for (std::size_t i = 0; i < n; ++i) {
       c[i] = c[i].times_power_of_two(k);
       const double a = c[i].magnitude();
-      if (a != 0 && !(a >= kCoeffFloor && a <= 1)) return false;
+      if (a != 0 && !(a >= floor && a <= 1)) return false;
     }
     return true;
   };
-  if (!into_unit(f.data(), 5) || !into_unit(s.data(), 3)) return false;
+  return into_unit(f.data(), 5) && into_unit(s.data(), 3);
+}
+
+template <class NT>
+bool evaluate(const View<NT>& p, const View<NT>& e, NT out[kQuantities]) {
+  Quartic<NT> f;
+  Quadratic<NT> s;
+  if (!scaled_pencil(p, e, f, s, kCoeffFloor)) return false;
   const SturmHabicht<NT> sh(f);
   const SmallnessQuantities<NT> sq(f, s);
   const NT q[kQuantities] = {f[0],     f[1],     f[2],     f[3],     f[4],      sh.g2[0],  sh.g2[1],
                              sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
   std::copy(q, q + kQuantities, out);
   return true;
+}
+
+/// The gap test's quantities (anysize/gap.hpp) in NT, in GapQuantities::flatten order.
+template <class NT>
+bool evaluate_gap(const View<NT>& p, const View<NT>& e, NT out[anysize::kGapSigns]) {
+  Quartic<NT> f;
+  Quadratic<NT> s;
+  if (!scaled_pencil(p, e, f, s, kGapCoeffFloor)) return false;
+  anysize::GapQuantities<NT>(f, s).flatten(out);
+  return true;
+}
+
+/// Operation counts of the gap program, from RunningBound (as counts() below).
+const std::array<int, anysize::kGapSigns>& gap_counts() {
+  static const std::array<int, anysize::kGapSigns> c = [] {
+    DoubleMatrix4 one;
+    one.fill(0.5);
+    RunningBound q[anysize::kGapSigns];
+    std::array<int, anysize::kGapSigns> r{};
+    if (!evaluate_gap(forms::converted<RunningBound>(one), forms::converted<RunningBound>(one), q)) {
+      r.fill(1 << 20);  // cannot happen for these inputs; if it did, certify nothing
+      return r;
+    }
+    for (int i = 0; i < anysize::kGapSigns; ++i) r[static_cast<std::size_t>(i)] = q[i].count();
+    return r;
+  }();
+  return c;
 }
 
 /// The moved ellipsoid's entries in NT (E' = T^T E T, T = [[I, -d], [0, 1]]), scaled by a power of
@@ -200,6 +237,20 @@ DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const
   return assemble(c);
 }
 
+std::optional<bool> semi_static_roots_above_lambda_s(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
+  for (const DoubleMatrix4* m : {&pn, &en})
+    for (double x : *m)
+      if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return std::nullopt;
+  const std::array<int, anysize::kGapSigns>& counts = gap_counts();
+  Lanes q[anysize::kGapSigns];
+  if (!evaluate_gap(forms::converted<Lanes>(pn), forms::converted<Lanes>(en), q)) return std::nullopt;
+  std::optional<int> signs[anysize::kGapSigns];
+  for (int i = 0; i < anysize::kGapSigns; ++i)
+    if (const int c = RunningBound::certain_sign(q[i].value(), q[i].magnitude(), counts[static_cast<std::size_t>(i)]))
+      signs[i] = c;
+  return anysize::roots_above_lambda_s(signs);
+}
+
 DecisionSigns semi_static_filter_signs_translated(const DoubleMatrix4& pn, const DoubleMatrix4& en,
                                                   const std::array<double, 3>& d) {
   const std::array<int, kQuantities>& counts = counts_translated();
@@ -207,7 +258,8 @@ DecisionSigns semi_static_filter_signs_translated(const DoubleMatrix4& pn, const
     if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return DecisionSigns{};
   View<Lanes> moved;
   Lanes q[kQuantities];
-  if (!translate(forms::converted<Lanes>(en), d, moved) || !evaluate(forms::converted<Lanes>(pn), moved, q)) return DecisionSigns{};
+  if (!translate(forms::converted<Lanes>(en), d, moved) || !evaluate(forms::converted<Lanes>(pn), moved, q))
+    return DecisionSigns{};
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], counts[static_cast<std::size_t>(i)]);
   return assemble(c);

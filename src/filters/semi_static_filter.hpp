@@ -11,6 +11,8 @@
 // the four-products-per-multiplication of interval arithmetic (stage 2).
 #pragma once
 
+#include <optional>
+
 #include "filters/static_filter.hpp"
 #include "relpos/quadric.hpp"
 
@@ -26,6 +28,10 @@ DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& p, const 
 /// enclosure (RunningBound::enclosing), with the count tracked per pair. About ten times cheaper than
 /// the interval stage, which converts every entry with CGAL::to_interval and switches the rounding mode.
 DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e);
+
+/// The gap test of math.md section 8 (anysize/gap.hpp) on RunningBoundLanes from power-of-two
+/// normalized matrices: true (a root of f above lambda_s), false, or nullopt when uncertain.
+std::optional<bool> semi_static_roots_above_lambda_s(const DoubleMatrix4& p, const DoubleMatrix4& e);
 
 /// The signs for the ellipsoid e (normalized exact doubles, as filter_doubles()) moved by d (exact
 /// doubles; the centre moves by +d) against p, without forming the moved ellipsoid: its entries
