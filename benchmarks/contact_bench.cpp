@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
 
   // Correctness and path fractions (one untimed pass).
   std::array<std::size_t, kDecidedByCount> by_disc{}, by_contact{}, by_checker{};
-  std::array<std::size_t, 6> positions{};  // I, TI, C, TE, E, unclassified
+  std::array<std::size_t, 5> positions{};  // I, TI, C, TE, E
   std::size_t mismatches = 0, tracker_filter = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const Paraboloid& p = paras[pairs[i].para];
@@ -153,8 +153,8 @@ int main(int argc, char** argv) {
 
   std::printf("contact_bench: %zu random exact-double pairs (16 paraboloids), %d rounds, seed %llu\n", n, rounds,
               static_cast<unsigned long long>(seed));
-  std::printf("positions: I %zu, TI %zu, C %zu, TE %zu, E %zu, unclassified %zu; mismatches %zu\n", positions[0],
-              positions[1], positions[2], positions[3], positions[4], positions[5], mismatches);
+  std::printf("positions: I %zu, TI %zu, C %zu, TE %zu, E %zu; mismatches %zu\n", positions[0], positions[1],
+              positions[2], positions[3], positions[4], mismatches);
   const double base = median(ns[0]);
   std::printf("%-26s %12s %12s %12s %9s\n", "method", "median ns", "min ns", "max ns", "speedup");
   for (std::size_t m = 0; m < methods.size(); ++m) {

@@ -31,10 +31,11 @@
 namespace bench {
 
 struct FlintAnswer {
-  relpos::Position position = relpos::Position::Unclassified;
+  relpos::Position position = relpos::Position::C;  ///< meaningful when ok
   relpos::RootFacts facts;
   int rho_vs_one = 0;
-  bool ok = false;  ///< false when the input is not in the expected normal form (never for valid quadrics)
+  bool ok = false;  ///< false when the input is not in the expected normal form (never for valid quadrics), or when
+                    ///< the facts do not decide (not small: math.md section 8)
 };
 
 /// The FLINT pipeline on the exact matrices of a validated ellipsoid and paraboloid.

@@ -29,7 +29,7 @@ inline USign usign(const long double& x) {
 }
 
 /// What a user would write on top of the float signs. nullopt = undecided (a zero / uncertain sign
-/// where the table needs a strict one).
+/// where the table needs a strict one, or a pair outside the paper's small-ellipsoid table).
 inline std::optional<Position> naive_table(const QuarticSigns& q, const USign& vertex, const USign& graeffe) {
   auto rho = compare_rho_with_one(vertex, graeffe);
   if (!rho) return std::nullopt;
@@ -44,16 +44,17 @@ inline std::optional<Position> naive_table(const QuarticSigns& q, const USign& v
     auto c = count_roots(q2);
     if (!c) return std::nullopt;
     if (c->positive > 0) return Position::TE;
-    return small ? Position::TI : Position::Unclassified;
+    if (!small) return std::nullopt;  // outside the paper's table
+    return Position::TI;
   }
   auto c = count_roots(q);
   if (!c) return std::nullopt;
   const int nonreal = 4 - c->real;
   if (nonreal == 0 && c->positive == 2) return Position::E;
-  if (!small) return Position::Unclassified;
+  if (!small) return std::nullopt;  // outside the paper's table
   if (nonreal == 2 && c->positive == 0) return Position::C;
   if (nonreal == 0 && c->positive == 0) return Position::I;
-  return Position::Unclassified;
+  return std::nullopt;
 }
 
 template <class NT, class Conv>

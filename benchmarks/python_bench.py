@@ -65,7 +65,6 @@ def main():
                   % (args.pairs, label, threads, t, args.pairs / t))
     if not args.skip_decide:
         counts = {n: int((codes == k).sum()) for k, n in enumerate(relpos.POSITION_NAMES)}
-        counts["unclassified"] = int((codes == -1).sum())
         print("positions (shared P):", counts)
 
     if args.skip_dask:

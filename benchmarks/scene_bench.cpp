@@ -263,9 +263,8 @@ int main(int argc, char** argv) {
     }
   const SceneResult& main_result = runs.front().last;
   const SceneCounts& c = main_result.counts;
-  std::printf("positions: I %zu, TI %zu, C %zu, TE %zu, E %zu, unclassified %zu\n", c.count(Position::I),
-              c.count(Position::TI), c.count(Position::C), c.count(Position::TE), c.count(Position::E),
-              c.count(Position::Unclassified));
+  std::printf("positions: I %zu, TI %zu, C %zu, TE %zu, E %zu\n", c.count(Position::I), c.count(Position::TI),
+              c.count(Position::C), c.count(Position::TE), c.count(Position::E));
   std::printf("settled by:");
   for (const Stage s : kAllStages)
     std::printf(" %s %.3f %%%s", to_string(s).c_str(), 100.0 * static_cast<double>(c.count(s)) / static_cast<double>(n),
@@ -373,8 +372,7 @@ int main(int argc, char** argv) {
          << ", \"cpu_ns_per_body\": " << runs[i].cpu_seconds * 1e9 / static_cast<double>(n) << "}";
     js << "\n  ],\n  \"positions\": {\"I\": " << c.count(Position::I) << ", \"TI\": " << c.count(Position::TI)
        << ", \"C\": " << c.count(Position::C) << ", \"TE\": " << c.count(Position::TE)
-       << ", \"E\": " << c.count(Position::E) << ", \"unclassified\": " << c.count(Position::Unclassified)
-       << "},\n  \"stages\": {";
+       << ", \"E\": " << c.count(Position::E) << "},\n  \"stages\": {";
     for (const Stage s : kAllStages)
       js << (s != kAllStages.front() ? ", " : "") << "\"" << to_string(s) << "\": " << c.count(s);
     js << "},\n  \"runs_agree\": " << (runs_agree ? "true" : "false") << ", \"differences_vs_pairs\": " << vs_pairs

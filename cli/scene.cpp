@@ -487,9 +487,7 @@ int run_scene(Args& args) {
   if (!output.flush()) return output.report_failure();
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Json positions, stages;
-  for (auto pos : {relpos::Position::I, relpos::Position::TI, relpos::Position::C, relpos::Position::TE,
-                   relpos::Position::E, relpos::Position::Unclassified})
-    positions[relpos::to_string(pos)] = counts.count(pos);
+  for (const relpos::Position pos : relpos::kAllPositions) positions[relpos::to_string(pos)] = counts.count(pos);
   for (const relpos::Stage s : relpos::kAllStages) stages[relpos::to_string(s)] = counts.count(s);
   Json summary;
   summary["bodies"] = counts.bodies;

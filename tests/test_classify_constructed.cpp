@@ -422,7 +422,8 @@ TEST_CASE("2r = a^2 exactly: rho == 1, small", "[classify][smallness]") {
   CHECK_FALSE(cb.verdict.small);
   CHECK(cb.verdict.rho_vs_one == 1);
   CHECK(cb.verdict.position == Position::I);
-  CHECK(cb.verdict.position == secular_position(Ellipsoid::from_matrix(beyond.e()), Paraboloid::from_matrix(beyond.p())));
+  CHECK(cb.verdict.position ==
+        secular_position(Ellipsoid::from_matrix(beyond.e()), Paraboloid::from_matrix(beyond.p())));
   CHECK(cb.verdict.meets() == std::optional<bool>(false));
   Rng g(0x5EED0008);
   for (int i = 0; i < 6; ++i) {
@@ -649,7 +650,7 @@ TEST_CASE("position and stage names", "[classify]") {
   CHECK(relpos::to_string(Position::C) == "C");
   CHECK(relpos::to_string(Position::TE) == "TE");
   CHECK(relpos::to_string(Position::E) == "E");
-  CHECK_FALSE(relpos::to_string(Position::Unclassified).empty());
+  for (const Position p : relpos::kAllPositions) CHECK_FALSE(relpos::to_string(p).empty());
   CHECK(relpos::to_string(Stage::Interval) != relpos::to_string(Stage::ExactSigns));
   CHECK(relpos::to_string(Stage::ExactSigns) != relpos::to_string(Stage::ExactRoots));
 }

@@ -55,10 +55,6 @@ void check_contact_consistent(const ContactAnswer& a, const Verdict& v) {
     case Position::C:
       CHECK(a.contact == Contact::Crossing);
       break;
-    case Position::Unclassified:
-      // classify decides every valid pair, whatever its size (math.md section 8).
-      FAIL_CHECK("classify left a valid pair unclassified");
-      break;
   }
 }
 
@@ -147,7 +143,6 @@ TEST_CASE("the discriminant case on exact signs reproduces classify_exact", "[co
       CHECK(dc == DiscriminantCase::AllNegative);
       continue;
     }
-    CHECK(v->position != Position::Unclassified);
     CHECK(v->position == x.verdict.position);
     CHECK(v->rule == x.verdict.rule);
     CHECK(int(v->real_roots) == x.verdict.real_roots);
@@ -424,7 +419,7 @@ TEST_CASE("tracker: frames that are not translates still get the right answer", 
   const Ellipsoid big = Ellipsoid::sphere(V(Q(0), Q(0), Q(8)), Q(2));
   const auto fr = tr.update(big);
   CHECK(fr.position == relpos::decide_position(big, p).position);
-  CHECK(fr.position == Position::I);  // not small, yet decided (math.md section 8)
+  CHECK(fr.position == Position::I);          // not small, yet decided (math.md section 8)
   CHECK(fr.by == DecidedBy::FullClassifier);  // the gap test of section 8 is the classifier's
   CHECK(tr.counts().rho_recomputed == 1);
   // A different shape block (ellipsoid) crossing the wall.

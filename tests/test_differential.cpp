@@ -17,8 +17,6 @@
 //
 // The seed is printed; RELPOS_SEED=<n> reruns or varies it.
 #include <catch2/catch.hpp>
-
-#include "support/seed.hpp"
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -34,6 +32,7 @@
 #include "support/oracles.hpp"
 #include "support/printers.hpp"
 #include "support/secular.hpp"
+#include "support/seed.hpp"
 
 using namespace rt;
 using relpos::Classification;
@@ -55,14 +54,14 @@ struct Case {
   std::string name;
   Matrix4 e, p;
   bool truth_known = false;
-  Position truth = Position::Unclassified;
-  bool tangency = false;  ///< an exact tangency by construction (TI or TE)
+  Position truth = Position::C;  ///< read only when truth_known
+  bool tangency = false;         ///< an exact tangency by construction (TI or TE)
 };
 
 struct Stats {
   int cases = 0, variants = 0, certified = 0, position_by_certificate = 0, partial = 0, kernel = 0, truth = 0,
       not_small = 0;
-  int by_position[6] = {0, 0, 0, 0, 0, 0};
+  int by_position[5] = {0, 0, 0, 0, 0};
 };
 
 Stats& stats() {
@@ -72,8 +71,10 @@ Stats& stats() {
 
 // ---- the independent position -------------------------------------------------------------------
 
-/// The table of math.md sections 3 and 6 for a square-free f whose roots are all certified.
-Position position_from_certificate(const RootCertificate& c, int rho_sign, std::optional<bool>* contact) {
+/// The table of math.md sections 3 and 6 for a square-free f whose roots are all certified; nullopt
+/// when the root pattern alone does not decide (not small and not E, or outside the table).
+std::optional<Position> position_from_certificate(const RootCertificate& c, int rho_sign,
+                                                  std::optional<bool>* contact) {
   const int nonreal = c.count(-1), positive = c.count(1, 1);
   if (nonreal == 0 && positive == 2) {
     *contact = false;
@@ -81,7 +82,7 @@ Position position_from_certificate(const RootCertificate& c, int rho_sign, std::
   }
   if (rho_sign > 0) {  // not small: nothing else is claimed; non-real roots certify contact
     *contact = nonreal > 0 ? std::optional<bool>(true) : std::nullopt;
-    return Position::Unclassified;
+    return std::nullopt;
   }
   if (nonreal == 2 && positive == 0) {
     *contact = true;
@@ -92,7 +93,7 @@ Position position_from_certificate(const RootCertificate& c, int rho_sign, std::
     return Position::I;
   }
   *contact = std::nullopt;
-  return Position::Unclassified;  // a finding
+  return std::nullopt;  // a finding
 }
 
 /// Everything the independent method says about c (the Full classification of e, p).
@@ -119,14 +120,15 @@ void check_independent(const Ellipsoid& e, const Paraboloid& p, const Classifica
     CHECK(c.verdict.sign_disc_f == ((nonreal / 2) % 2 ? -1 : 1));  // square-free: (-1)^(non-real pairs)
     CHECK(c.verdict.sign_disc_ftilde == c.verdict.sign_disc_f);
     std::optional<bool> contact;
-    Position want = position_from_certificate(cert, rho, &contact);
-    if (want == Position::Unclassified && rho > 0) {
+    std::optional<Position> want = position_from_certificate(cert, rho, &contact);
+    if (!want && rho > 0) {
       // Not small and not E: the root pattern alone does not decide; the secular method does
       // (math.md section 8), for any size.
       want = secular_position(e, p);
-      contact = truth_has_contact(want);
+      contact = truth_has_contact(*want);
     }
-    CHECK(c.verdict.position == want);
+    CHECK(want.has_value());
+    CHECK(want == c.verdict.position);
     CHECK(c.verdict.meets().has_value() == contact.has_value());
     if (c.verdict.meets() && contact) CHECK(*c.verdict.meets() == *contact);
     ++stats().position_by_certificate;
@@ -218,7 +220,6 @@ Classification run_case(const Case& k, Rng& g) {
   check_independent(e, p, c);
 
   // Every size is classified (math.md section 8), contact always decided.
-  CHECK(c.verdict.position != Position::Unclassified);
   REQUIRE(c.verdict.meets().has_value());
   CHECK(*c.verdict.meets() == truth_has_contact(c.verdict.position));
   if (!c.verdict.small) {
@@ -301,7 +302,7 @@ bool oracle(const Config& k, Position* truth) {
 
 Case oracle_case(Config k, const char* name) {
   k.name = name;
-  Position truth = Position::Unclassified;
+  Position truth = Position::C;  // set when known
   const bool known = oracle(k, &truth);
   k.expected = truth;
   return from_config(k, known);
@@ -550,13 +551,10 @@ TEST_CASE("differential: adaptive vs exact vs certified MPFR roots vs constructi
             << s.certified << " with every root certified by MPFR + inclusion disks (" << s.position_by_certificate
             << " positions compared), " << s.partial << " partly certified; " << s.kernel << " kernel tests; "
             << s.truth << " positions known by construction; " << s.not_small
-            << " not small; answers I/TI/C/TE/E/unclassified = " << s.by_position[0] << "/" << s.by_position[1] << "/"
-            << s.by_position[2] << "/" << s.by_position[3] << "/" << s.by_position[4] << "/" << s.by_position[5]
-            << std::endl;
-  // Every position occurs, none is left unclassified, and the independent method decides most
-  // generic cases.
+            << " not small; answers I/TI/C/TE/E = " << s.by_position[0] << "/" << s.by_position[1] << "/"
+            << s.by_position[2] << "/" << s.by_position[3] << "/" << s.by_position[4] << std::endl;
+  // Every position occurs, and the independent method decides most generic cases.
   for (int k = 0; k < 5; ++k) CHECK(s.by_position[k] > 20 / n);
-  CHECK(s.by_position[static_cast<int>(Position::Unclassified)] == 0);
   CHECK(s.certified * 3 > s.cases);
   CHECK(s.truth * 2 > s.cases);
 }
@@ -590,7 +588,7 @@ TEST_CASE("the independent method itself: certified roots of quartics with known
   CHECK(c.count(1, -1) == 1);
   // The closed-form smallness agrees with rho = 4 r^2 / a^4 in the standard frame.
   for (const auto& [r, want] : {std::pair{Q(1, 4), -1}, std::pair{Q(1, 2), 0}, std::pair{Q(3, 4), 1}}) {
-    const Config k{"", Q(1), Q(2), {Q(0), Q(0), Q(1)}, r, Position::Unclassified};
+    const Config k{"", Q(1), Q(2), {Q(0), Q(0), Q(1)}, r, Position::C};  // expected not used
     CHECK(rho_vs_one(paper_f(k.a, k.b, k.c, k.r), paper_s(k.a, k.b)) == want);
     const auto s = interpolated_s(k.e(), k.p());
     REQUIRE(s.has_value());

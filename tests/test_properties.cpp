@@ -49,7 +49,7 @@ Config random_small_config(Rng& g) {
 /// What an independent argument says about the configuration: the truth, or nothing.
 struct Oracle {
   bool known = false;
-  Position truth = Position::Unclassified;
+  Position truth = Position::C;  ///< read only when known
   bool centre_inside = false, centre_outside = false;
 };
 
@@ -98,7 +98,7 @@ TEST_CASE("random small configurations: exact algebra, classify == classify_exac
   CAPTURE(seed);
   const int kernel_before = g_kernel_checks, table2_before = g_table2_checks;
   int known = 0, total = 0;
-  int seen[6] = {0, 0, 0, 0, 0, 0};
+  int seen[5] = {0, 0, 0, 0, 0};
   for (int i = 0; i < 2500; ++i) {
     Config k = random_small_config(g);
     const Oracle o = oracle(k);
@@ -121,12 +121,11 @@ TEST_CASE("random small configurations: exact algebra, classify == classify_exac
     if (o.known) ++known;
     ++seen[static_cast<int>(c.verdict.position)];
   }
-  // The oracles fix a good share of the cases, every position occurs, and nothing is left
-  // unclassified (math.md section 8).
+  // The oracles fix a good share of the cases and every position occurs (every pair gets one of the
+  // five, math.md section 8).
   CHECK(known * 2 > total);
   for (const Position q : {Position::I, Position::TI, Position::C, Position::TE, Position::E})
     CHECK(seen[static_cast<int>(q)] > 20);
-  CHECK(seen[static_cast<int>(Position::Unclassified)] == 0);
   CHECK(g_kernel_checks - kernel_before > 100);
   CHECK(g_table2_checks - table2_before > 500);
 }

@@ -30,12 +30,12 @@ using relpos::testing::secular_position;
 
 namespace {
 
-/// A named body with its expected answer when known by construction (Unclassified + !known: unknown).
+/// A named body with its expected answer when known by construction (`expected` is read only when `known`).
 struct Body {
   std::string name;
   Ellipsoid e;
   bool known = false;
-  Position expected = Position::Unclassified;
+  Position expected = Position::C;
 };
 
 /// The scene verdict must be the core's, field by field (position, rule, contact).
@@ -314,8 +314,7 @@ TEST_CASE("scene: the early-outs fire on bodies well inside or outside, small or
       {"flat ellipsoid inside, not small", &p, axes(V(Q(0), Q(0), Q(3)), Q(1), Q(2), Q(1, 10)), Position::I,
        Stage::InsideCertificate},
       // distance^2 from (0,0,8) to the cup: a^2 z - a^4/4 = 31/4 > r^2 = 4.
-      {"big sphere inside, not small", &p, sphere(V(Q(0), Q(0), Q(8)), Q(2)), Position::I,
-       Stage::InsideCertificate},
+      {"big sphere inside, not small", &p, sphere(V(Q(0), Q(0), Q(8)), Q(2)), Position::I, Stage::InsideCertificate},
   };
   for (const Case& c : not_small) {
     INFO(c.name);

@@ -22,19 +22,20 @@
 namespace relpos {
 
 enum class Position {
-  I,             ///< the ellipsoid is interior to the paraboloid
-  TI,            ///< tangent from inside
-  C,             ///< the surfaces cross (non-tangent contact)
-  TE,            ///< tangent from outside
-  E,             ///< exterior
-  Unclassified,  ///< not covered by the theory (not small) or outside the table (a finding)
+  I,   ///< the ellipsoid is interior to the paraboloid
+  TI,  ///< tangent from inside
+  C,   ///< the surfaces cross (non-tangent contact)
+  TE,  ///< tangent from outside
+  E,   ///< exterior
 };
+/// Every position, in enum order (tables indexed by Position take their size from here).
+inline constexpr std::array kAllPositions{Position::I, Position::TI, Position::C, Position::TE, Position::E};
 std::string to_string(Position p);
 
 /// What settled the answer, in the order the stages run: the scene's certified early-outs (scene.hpp)
 /// first, then the classifier's cascade (decide_position). One enum for pairs and scenes.
 enum class Stage : unsigned char {
-  InsideCertificate,    ///< scene early-out: P < 0 on the solid ellipsoid (I, or unclassified when rho > 1)
+  InsideCertificate,    ///< scene early-out: P < 0 on the solid ellipsoid (I, for a small ellipsoid)
   OutsideCertificate,   ///< scene early-out: P > 0 on the solid ellipsoid (E)
   StaticDouble,         ///< double arithmetic with static error bounds (inputs that are exact doubles)
   SemiStaticDouble,     ///< double arithmetic with error bounds from the operands' magnitudes
@@ -79,7 +80,7 @@ std::string describe(Rule r);
 /// The answer without the evidence strings and exact coefficients: what the hot path computes.
 /// No heap allocation unless an exact stage runs.
 struct Verdict {
-  Position position = Position::Unclassified;
+  Position position = Position::C;  ///< meaningful once rule != Rule::None (every returned verdict)
   Stage stage = Stage::StaticDouble;
   Rule rule = Rule::None;
   bool small = false;
@@ -103,8 +104,10 @@ Verdict decide_position(const Ellipsoid& e, const Paraboloid& p);
 
 /// The classification table itself (math.md sections 3 and 6), applied to exact root facts and the
 /// comparison of rho with 1: the one written decision, for callers that obtain the facts another
-/// way (the motion module at algebraic instants). Stage is left at its default.
-Verdict decide_from_root_facts(const RootFacts& facts, int rho_vs_one);
+/// way (the contact-only discriminant test). Stage is left at its default. nullopt when the facts do
+/// not decide (a pair that is not small needs the exact facts of math.md section 8 -- the gap test
+/// against lambda_s or the five rules -- which decide_position computes).
+std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs_one);
 
 /// How much evidence to assemble. Minimal is what the fast path needs; Full adds the exact
 /// coefficients of f and s, deg f~, the multiple roots and rho itself.

@@ -11,7 +11,7 @@
 // of f1, f2, f3 alone -- no Sturm-Habicht sequence:
 //   Disc < 0         -> f square-free with a non-real pair: C when small, "the surfaces cross" for any size;
 //   Disc > 0, V = 2  -> two distinct positive roots: E for any size;
-//   Disc > 0, V = 0  -> four distinct negative roots: I when small (not small: unclassified);
+//   Disc > 0, V = 0  -> four distinct negative roots: I when small (not small: the gap test of section 8);
 //   Disc = 0         -> undecided here; the full classifier decide_position() answers.
 // The table applied is classify's own (decide_from_root_facts), so every answer is decide_position's.
 #pragma once
@@ -68,8 +68,8 @@ std::string to_string(Contact c);
 
 struct ContactAnswer {
   Contact contact = Contact::Unknown;
-  Position position = Position::Unclassified;  ///< classify's position (Unclassified when not small, ...)
-  Rule rule = Rule::None;                      ///< classify's rule
+  Position position = Position::C;  ///< classify's position
+  Rule rule = Rule::None;           ///< classify's rule
   DecidedBy by = DecidedBy::FullClassifier;
 };
 
@@ -120,7 +120,7 @@ class ExteriorTracker {
   ExteriorTracker(const Paraboloid& p, const Ellipsoid& body);
 
   struct FrameVerdict {
-    Position position = Position::Unclassified;
+    Position position = Position::C;
     Rule rule = Rule::None;
     signed char contact = -1;  ///< as Verdict::contact
     bool changed = false;      ///< position differs from the previous frame's (false on the first)

@@ -7,10 +7,12 @@
 // polynomials (Disc_l f, or when it vanishes identically the discriminant of the square-free part
 // of f and the resultants that track roots shared with s; the two smallness quantities) the root
 // structure of f relative to s, hence the position, is constant: it is classified exactly at one
-// rational time of each open interval. At a zero t* the position is decided exactly: with
-// relpos::classify when t* is rational, otherwise from the subresultants of f and df/dl at t* (the
-// merging root l*(t) = -S1_0(t) / S1_1(t) and its multiplicity in s), every sign being the sign of a
-// univariate integer polynomial at the algebraic number t*, decided by CGAL's algebraic kernel.
+// rational time of each open interval. At a zero t* the position is decided exactly, for any size:
+// with relpos::classify when t* is rational; otherwise, when f(., t*) is square-free, it is the
+// (open) position of the neighbouring intervals, and when it is not, the real roots of f(., t*) are
+// read off the subresultants of f and df/dl and the pencil l P + E(t*) is tested for definiteness
+// between and at them, every sign being the sign of a univariate integer polynomial at the
+// algebraic number t*.
 //
 // Rigid motions:
 // Rigid motions whose matrices are polynomial in time (math.md "Motion").
@@ -119,8 +121,8 @@ std::vector<std::string> cause_names(unsigned causes);
 /// The position at one instant.
 struct MotionInstant {
   AlgebraicReal time;
-  Position position = Position::Unclassified;
-  bool small = false;  ///< rho(t) <= 1 at that instant
+  Position position = Position::C;
+  bool small = false;  ///< rho(t) <= 1 at that instant (reported; no answer depends on it)
   unsigned causes = 0;
   std::string how;  ///< how the position was decided, one sentence
 };
@@ -128,7 +130,7 @@ struct MotionInstant {
 /// The position on the open interval between two consecutive instants (constant there).
 struct MotionInterval {
   Rational sample;  ///< the rational time inside the interval where it was classified
-  Position position = Position::Unclassified;
+  Position position = Position::C;
   bool small = false;
 };
 
@@ -136,7 +138,7 @@ struct MotionInterval {
 struct PositionChange {
   AlgebraicReal time;
   std::optional<Position> before;  ///< absent at t0
-  Position at = Position::Unclassified;
+  Position at = Position::C;
   std::optional<Position> after;  ///< absent at t1
 };
 
@@ -144,7 +146,7 @@ struct PositionChange {
 struct PositionSpan {
   AlgebraicReal from, to;
   bool from_closed = true, to_closed = true;
-  Position position = Position::Unclassified;
+  Position position = Position::C;
 };
 
 struct Timeline {
@@ -175,10 +177,10 @@ struct FirstContact {
     None,                ///< E on all of [t0, t1]
   };
   Kind kind = Kind::None;
-  Position start_position = Position::Unclassified;  ///< the position at t0
-  std::optional<AlgebraicReal> time;                 ///< t0 for NotExteriorAtStart, t* for Contact
-  Position position = Position::Unclassified;        ///< the position at `time`
-  std::string how;                                   ///< how that position was decided
+  Position start_position = Position::E;  ///< the position at t0
+  std::optional<AlgebraicReal> time;      ///< t0 for NotExteriorAtStart, t* for Contact
+  Position position = Position::E;        ///< the position at `time` (E for Kind::None)
+  std::string how;                        ///< how that position was decided
 };
 
 /// Certified first contact on [t0, t1]. Separation (E) and its end are decided for an ellipsoid of
@@ -188,8 +190,8 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
                            const Rational& t1);
 
 /// Every change of position on [t0, t1], with the position on each open interval and at each
-/// instant. Positions I, TI and C are claimed only where the ellipsoid is small (rho(t) <= 1);
-/// elsewhere they are reported Unclassified, as relpos::classify does.
+/// instant, for an ellipsoid of any size (math.md "Motion"). Throws InputError on invalid input and
+/// std::logic_error ("internal error") if an instant contradicts its neighbouring intervals.
 Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
                   const Rational& t1);
 

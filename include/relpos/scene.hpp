@@ -7,9 +7,8 @@
 //
 //   * outside certificate: P(x) > 0 on the whole closed solid ellipsoid  =>  position E;
 //   * inside certificate:  P(x) < 0 on the whole closed solid ellipsoid  =>  position I when the
-//     ellipsoid is small (rho <= 1, the core's rho of smallness.hpp, certified the same way), and
-//     "unclassified" (rule NotSmallUnknown) when rho > 1 is certified -- exactly what the core's
-//     table says for an interior body that is not small.
+//     ellipsoid is small (rho <= 1, the core's rho of smallness.hpp, certified the same way); a body
+//     that is not small goes to the core, which decides it exactly (math.md section 8).
 //
 // math.md proves that these are the core's answers: for surfaces with no common point f has only
 // real roots and f~ = f / gcd(f, s) no multiple root, and the sign pattern of the simultaneous
@@ -41,13 +40,13 @@ namespace relpos {
 // Scene classification
 // ------------------------------------------------------------------------------------------------
 
-inline constexpr std::size_t kPositionCount = 6;  ///< I, TI, C, TE, E, Unclassified
+inline constexpr std::size_t kPositionCount = kAllPositions.size();  ///< I, TI, C, TE, E
 
 /// The answer for one body: position, rule and contact are exactly decide_position()'s.
 struct SceneVerdict {
-  Position position = Position::Unclassified;
+  Position position = Position::C;
   Rule rule = Rule::None;
-  signed char contact = -1;  ///< 1 yes, 0 no, -1 not decidable (as Verdict::contact)
+  signed char contact = -1;           ///< 1 yes, 0 no, -1 not decidable (as Verdict::contact)
   Stage stage = Stage::StaticDouble;  ///< an early-out or the classifier stage that decided
 };
 

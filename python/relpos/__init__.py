@@ -47,8 +47,8 @@ POSITION_MEANINGS = {
 class Classification:
     """The answer for one pair, with its evidence: the fields of the JSON object `relpos batch` writes.
 
-    Attributes: position ("I", "TI", "C", "TE", "E", or "unclassified" when the theory does not
-    apply: the ellipsoid is not small), small, contact (True, False, or None when not decidable),
+    Attributes: position ("I", "TI", "C", "TE" or "E", for an ellipsoid of any size), small,
+    contact (True or False),
     rule (the deciding rule in one sentence), stage (which arithmetic settled it), rho_vs_one, rho.
     as_dict() returns every field.
     """
@@ -117,8 +117,7 @@ def decide_positions(E, P, threads=0):
 
     E: array (n, 4, 4) of ellipsoid matrices; P: array (n, 4, 4), or one (4, 4) matrix shared by all.
     Each double is taken as its exact value. Returns a numpy int8 array of codes into
-    POSITION_NAMES (0 = "I" ... 4 = "E"); -1 marks a pair the theory does not cover (the ellipsoid
-    is not small). threads=0 uses every core; the GIL is released while deciding.
+    POSITION_NAMES (0 = "I" ... 4 = "E"). threads=0 uses every core; the GIL is released while deciding.
     Raises ValueError naming the index of an invalid matrix ("E[17]: ellipsoid: ...").
     """
     return _relpos._decide_positions(_float64_array(E, "E"), _float64_array(P, "P"), int(threads))

@@ -20,6 +20,7 @@
 #include <relpos/io.hpp>
 #include <relpos/numbers.hpp>
 #include <relpos/quadric.hpp>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -169,7 +170,7 @@ relpos::Paraboloid paraboloid_from_doubles(const double* m) {
 }
 // ---- end of the construction place. ----
 
-/// Code of a position in relpos.POSITION_NAMES; -1 for Position::Unclassified (not small).
+/// Code of a position in relpos.POSITION_NAMES (every pair gets one of the five positions).
 std::int8_t position_code(relpos::Position p) {
   switch (p) {
     case relpos::Position::I:
@@ -182,9 +183,8 @@ std::int8_t position_code(relpos::Position p) {
       return 3;
     case relpos::Position::E:
       return 4;
-    default:
-      return -1;
   }
+  throw std::logic_error("internal error: position_code: not a Position");
 }
 
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -362,5 +362,5 @@ PYBIND11_MODULE(_relpos, m) {
       "e"_a, "p"_a, "full"_a = true, "The JSON object of `relpos batch` for the pair (without \"id\"), as text.");
 
   m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a = 0,
-        "Position codes (int8, -1 = unclassified) of float64 matrices E (n, 4, 4) against P (n, 4, 4) or (4, 4).");
+        "Position codes (int8, 0 = I ... 4 = E) of float64 matrices E (n, 4, 4) against P (n, 4, 4) or (4, 4).");
 }

@@ -636,8 +636,6 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, co
     case Position::C:
       crossing_points(pr, c);
       return c;
-    case Position::Unclassified:
-      return c;
   }
   return c;
 }

@@ -363,7 +363,7 @@ std::optional<std::string> verify_certificate(const Matrix4& e_in, const Matrix4
       if (c.kind != K::Crossing) return wrong + "C";
       return verify_crossing(e, p, c);
     default:
-      return std::string("no certificate can prove an unclassified position");
+      return std::string("not a position");
   }
 }
 

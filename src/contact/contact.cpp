@@ -2,6 +2,7 @@
 
 #include <cfenv>
 #include <cmath>
+#include <stdexcept>
 
 #include "contact/discriminant_case.hpp"
 #include "core/smallness.hpp"
@@ -95,7 +96,7 @@ bool discriminant_case_needs_rho(DiscriminantCase c) {
 
 namespace {
 
-Verdict verdict_of_case(DiscriminantCase c, int rho_vs_one) {
+std::optional<Verdict> verdict_of_case(DiscriminantCase c, int rho_vs_one) {
   // The root facts of the case; f is square-free (Disc != 0), so f~ = f has no multiple root and
   // Disc(f~) has the sign of Disc(f) (math.md section 3). The table is classify's own.
   RootFacts x;
@@ -120,7 +121,7 @@ Verdict verdict_of_case(DiscriminantCase c, int rho_vs_one) {
 /// The 3 decided cases x 3 outcomes of rho, generated once from classify's table (verdict_of_case):
 /// the hot path is a lookup, nothing is decided twice.
 struct CaseTable {
-  Verdict v[4][3];
+  std::optional<Verdict> v[4][3];  // nullopt: not small, all negative (the gap test decides, section 8)
   CaseTable() {
     for (int c = 1; c < 4; ++c)
       for (int r = -1; r <= 1; ++r) v[c][r + 1] = verdict_of_case(static_cast<DiscriminantCase>(c), r);
@@ -134,9 +135,7 @@ std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::o
   if (c == DiscriminantCase::Undecided) return std::nullopt;
   if (discriminant_case_needs_rho(c) && !rho_vs_one) return std::nullopt;
   // TwoPositive is E before the table looks at smallness (any size), so any rho gives the same.
-  const Verdict& v = table.v[static_cast<int>(c)][(rho_vs_one ? *rho_vs_one : 1) + 1];
-  if (v.rule == Rule::None) return std::nullopt;  // not small, all negative: the gap test decides (section 8)
-  return v;
+  return table.v[static_cast<int>(c)][(rho_vs_one ? *rho_vs_one : 1) + 1];
 }
 
 namespace {
@@ -223,18 +222,8 @@ Contact contact_of(const Verdict& v) {
       return Contact::Touching;
     case Position::C:
       return Contact::Crossing;
-    case Position::Unclassified:
-      break;
   }
-  if (v.contact == 0) return Contact::None;
-  if (v.contact < 0) return Contact::Unknown;
-  // Not small, non-real roots: the surfaces meet (Finsler-Calabi). With f~ square-free no common
-  // real point is a tangency (math.md section 3: tangent <=> f~ has a multiple root), so every
-  // common point is a transversal crossing. Otherwise (a tangency besides a non-real pair, or a
-  // finding) only "they meet" is certain.
-  if (v.rule == Rule::NotSmallContact && v.tangent_negative == 0 && v.tangent_positive == 0 && v.nonreal_multiple == 0)
-    return Contact::Crossing;
-  return Contact::Meet;
+  throw std::logic_error("internal error: contact_of: not a Position");
 }
 
 ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p) {

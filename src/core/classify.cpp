@@ -35,10 +35,8 @@ std::string to_string(Position p) {
       return "TE";
     case Position::E:
       return "E";
-    case Position::Unclassified:
-      return "unclassified";
   }
-  return "unclassified";
+  throw std::logic_error("internal error: to_string: not a Position");
 }
 
 std::string describe(Rule r) {
@@ -131,8 +129,7 @@ void decide(Verdict& v) {
     v.contact = static_cast<signed char>(contact);
     v.rule = rule;
   };
-  v.position = Position::Unclassified;
-  v.rule = Rule::None;
+  v.rule = Rule::None;  // undecided until a rule is set (the position is then meaningless)
   v.contact = -1;
   const bool square_free = tangencies == 0 && v.nonreal_multiple == 0 && v.sign_disc_f != 0;
   if (square_free) {
@@ -505,9 +502,10 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
 
 }  // namespace
 
-Verdict decide_from_root_facts(const RootFacts& facts, int rho_vs_one) {
+std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs_one) {
   Verdict v;
   decide_from_facts(facts, rho_vs_one, v);
+  if (!decided(v)) return std::nullopt;
   return v;
 }
 

@@ -563,9 +563,6 @@ std::string position_meaning(Position p) {
       return "the ellipsoid lies outside the paraboloid and touches it (tangent from outside)";
     case Position::E:
       return "the ellipsoid lies outside the paraboloid, with no common point";
-    case Position::Unclassified:
-      return "not classified: the pair is outside the theory (the ellipsoid is not small) or its root pattern is "
-             "outside the table";
   }
   return "?";
 }

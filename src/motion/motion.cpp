@@ -1,7 +1,5 @@
 #include "relpos/motion.hpp"
 
-#include "forms/forms.hpp"
-
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Polynomial.h>
@@ -18,6 +16,8 @@
 #include "core/roots.hpp"
 #include "core/smallness.hpp"
 #include "core/sturm.hpp"
+#include "forms/forms.hpp"
+#include "motion/instant_position.hpp"
 #include "motion/subresultant_position.hpp"
 #include "relpos/error.hpp"
 
@@ -111,7 +111,8 @@ struct MovingPencil {
   PolyZ vertex, graeffe;  // smallness quantities (smallness.hpp), polynomials in t
   bool disc_zero = false;
   PolyZ merge;  // real zeros contain every t where two roots of f meet (Disc f, or Disc of sqf(f))
-  std::vector<std::pair<PolyZ, unsigned>> events;  // every candidate instant, with its cause
+  std::vector<std::pair<PolyZ, unsigned>> events;       // every candidate instant, with its cause
+  std::optional<motion_detail::InstantPencil> instant;  // the decision at instants where f has a multiple root
 
   MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p) {
     const MatZ pz = integer_matrix(p.matrix());
@@ -140,6 +141,7 @@ struct MovingPencil {
       *x = one[0];
     }
     disc_zero = CGAL::is_zero(disc);
+    instant.emplace(pz, ez, f, g2, g1, disc);
     if (!disc_zero) {
       // Disc f(., t) != 0: f square-free, its roots distinct and continuous, none crosses 0 (f(0) =
       // det E < 0) and f4 = det P is constant: the root pattern, hence the position (f~ = f has no
@@ -379,166 +381,19 @@ int total_degree(const std::vector<std::pair<PolyZ, unsigned>>& polys) {
   return d;
 }
 
-/// The classification table of math.md sections 3 and 6 applied to root facts (the same rules as
-/// classify(); tests compare the two at rational instants).
-/// The core's one decision table (classify.hpp), on facts obtained at an instant.
-Position position_from(const RootFacts& x, int rho_vs_one) { return decide_from_root_facts(x, rho_vs_one).position; }
-
-/// Root facts of f(., t*) relative to s(., t*) at an instant t* (rational or algebraic), from signs
-/// of polynomials in t at t* (math.md "Motion").
-struct InstantFacts {
-  RootFacts roots;
-  int j = 0;           ///< degree of gcd(f, df/dl) at t*
-  int rho_vs_one = 0;  ///< sign of rho(t*) - 1 (see position_of)
-  std::string how;
-};
-
-void count_root(RootFacts& x, int sign) { ++(sign < 0 ? x.negative : x.positive); }
-void count_tangency(RootFacts& x, int sign) { ++(sign < 0 ? x.tangent_negative : x.tangent_positive); }
-const char* sign_word(int s) { return s < 0 ? "negative" : "positive"; }
-
-[[noreturn]] void impossible(const std::string& what) {
-  throw std::logic_error("motion: impossible root configuration at an instant (" + what + ")");
-}
-
-/// nullopt when f(., t*) is square-free and no neighbour is given (its root counts are then those
-/// of the neighbouring interval: no root merges at t*).
-std::optional<InstantFacts> facts_at(const MovingPencil& mp, const AK& ak, const Candidate& a,
-                                     const Classification* neighbour) {
-  InstantFacts out;
-  RootFacts& x = out.roots;
-  auto at = [&](const PolyZ& p) { return sign_at(ak, p, a); };
-  const PolyZ &f0 = mp.f[0], &f3 = mp.f[3], &f4 = mp.f[4];
-  const PolyZ &s0 = mp.s[0], &s1 = mp.s[1], &s2 = mp.s[2];
-  // s(u/v) * v^2 and s'(u/v) * v: is the rational-in-t root u/v a root of s, and a double one?
-  auto s_at = [&](const PolyZ& u, const PolyZ& v) { return s2 * u * u + s1 * u * v + s0 * v * v; };
-  auto ds_at = [&](const PolyZ& u, const PolyZ& v) { return PolyZ(Integer(2)) * s2 * u + s1 * v; };
-
-  // j = deg gcd(f, f') at t* = the first non-vanishing principal subresultant coefficient
-  // (specialisation commutes with subresultants because f4 = det P is a non-zero constant).
+/// The position at an instant t* where f(., t*) has a multiple root, for any size (instant_position.hpp);
+/// nullopt when f(., t*) is square-free there.
+std::optional<motion_detail::InstantDecision> decide_at(const MovingPencil& mp, const AK& ak, const Candidate& a) {
   // A zero of the discriminant polynomial (its minimal polynomial divides Disc f) needs no test.
-  const bool disc_zero_here = mp.disc_zero || ((a.causes & kCauseDiscriminant) && !a.exact);
-  if (!disc_zero_here && at(mp.disc) != 0) {
-    out.j = 0;
-    if (!neighbour) return std::nullopt;
-    x.real = neighbour->verdict.real_roots;
-    x.negative = neighbour->verdict.negative_roots;
-    x.positive = neighbour->verdict.positive_roots;
-    x.nonreal = neighbour->verdict.nonreal_roots;
-    x.sign_disc_f = x.sign_disc_ftilde = neighbour->verdict.sign_disc_f;
-    out.how = "f is square-free at t*: root counts of the neighbouring interval (no root merges at t*)";
-    return out;
-  }
-  x.sign_disc_f = 0;
-  if (at(mp.g1[0]) != 0) {
-    // One double root l* = -S1_0 / S1_1 (S1 = StHa_1); f = f4 (l - l*)^2 g with g = f4 l^2 + g1 l + g0,
-    // g1 = f3 + 2 f4 l*, g0 = f0 / l*^2 (compare coefficients of l^3 and l^0).
-    out.j = 1;
-    const PolyZ u = -mp.g1[1], v = mp.g1[0];
-    const int su = at(u), sv = at(v);
-    if (su == 0) impossible("double root at l = 0");
-    const int lam = su * sv;
-    const bool on_s = at(s_at(u, v)) == 0;
-    const PolyZ w = v * f3 + PolyZ(Integer(2)) * f4 * u;                           // v * g1
-    const PolyZ dg = w * w * u * u - PolyZ(Integer(4)) * f4 * f0 * v * v * v * v;  // Disc g * u^2 v^2
-    const int sg = at(dg);
-    if (sg == 0) impossible("j = 1 but g has a double root");
-    x.real = 1;
-    count_root(x, lam);
-    if (sg > 0) {
-      // g0 / g2 = f0 / (f4 l*^2) > 0: both roots of g have the sign of their sum -g1/g2, i.e. of g1.
-      const int sr = at(w) * sv;
-      x.real += 2;
-      count_root(x, sr);
-      count_root(x, sr);
-    } else {
-      x.nonreal = 2;
-    }
-    if (!on_s) count_tangency(x, lam);
-    out.how = std::string("Disc f = 0: one double root l* = -S1_0/S1_1 of f, ") + sign_word(lam) +
-              (on_s ? ", also a root of s (special root, not a tangency)" : ", not a root of s: a tangency");
-    x.sign_disc_ftilde = on_s ? (sg > 0 ? 1 : -1) : 0;
-    return out;
-  }
-  if (at(mp.g2[0]) != 0) {
-    out.j = 2;
-    const PolyZ &A = mp.g2[0], &B = mp.g2[1], &C = mp.g2[2];  // gcd(f, f') = A l^2 + B l + C at t*
-    const int sd = at(B * B - PolyZ(Integer(4)) * A * C);
-    if (sd == 0) {
-      // Triple root l* = -B/(2A); f = f4 (l - l*)^3 (l - mu), mu = -f3/f4 - 3 l*.
-      const PolyZ u = -B, v = PolyZ(Integer(2)) * A;
-      const int lam = at(u) * at(v);
-      const int mu = at(-f3 * v - PolyZ(Integer(3)) * f4 * u) * at(f4) * at(v);
-      if (lam == 0 || mu == 0) impossible("triple root or its cofactor at l = 0");
-      const int ms = at(s_at(u, v)) != 0 ? 0 : (at(ds_at(u, v)) != 0 ? 1 : 2);
-      x.real = 2;
-      count_root(x, lam);
-      count_root(x, mu);
-      if (3 - ms >= 2) count_tangency(x, lam);
-      out.how = std::string("Disc f = 0: a triple root of f, ") + sign_word(lam) + ", of multiplicity " +
-                std::to_string(ms) + " in s" + (3 - ms >= 2 ? ": a tangency" : ": not a tangency");
-      return out;
-    }
-    if (sd < 0) {
-      x.nonreal = 4;
-      x.nonreal_multiple = 4;
-      out.how = "Disc f = 0: f is the square of a quadratic with non-real roots (outside the table)";
-      return out;
-    }
-    // Two real double roots a != b, the roots of A l^2 + B l + C.
-    const int sp = at(C) * at(A), ss = -at(B) * at(A);
-    if (sp == 0) impossible("double root at l = 0");
-    int sa, sb;
-    if (sp > 0) {
-      if (ss == 0) impossible("two double roots of the same sign with sum 0");
-      sa = sb = ss;
-    } else {
-      sa = -1;
-      sb = 1;
-    }
-    x.real = 2;
-    count_root(x, sa);
-    count_root(x, sb);
-    // Res(A l^2 + B l + C, s) = (A s0 - C s2)^2 - (A s1 - B s2)(B s0 - C s1).
-    const PolyZ p1 = A * s0 - C * s2, p2 = A * s1 - B * s2, p3 = B * s0 - C * s1;
-    if (at(p1 * p1 - p2 * p3) != 0) {
-      count_tangency(x, sa);
-      count_tangency(x, sb);
-      out.how = "Disc f = 0: two real double roots of f, neither a root of s: two tangencies (outside the table)";
-    } else if (at(p2) == 0 && at(p1) == 0) {
-      out.how = "Disc f = 0: two real double roots of f, both roots of s (special roots, no tangency)";
-    } else {
-      // Exactly one is a root of s, hence negative; the other is the tangency.
-      if (sa > 0 && sb > 0) impossible("a positive root of s");
-      count_tangency(x, sa == sb ? -1 : 1);
-      out.how = std::string("Disc f = 0: two real double roots of f, one a root of s; the other, ") +
-                sign_word(sa == sb ? -1 : 1) + ", is a tangency";
-    }
-    return out;
-  }
-  // gcd(f, f') = f' at t*: f = f4 (l - l*)^4 with l* = -f3 / (4 f4); mult_s <= 2 so always a tangency.
-  out.j = 3;
-  const int lam = -at(f3) * at(f4);
-  if (lam == 0) impossible("quadruple root at l = 0");
-  x.real = 1;
-  count_root(x, lam);
-  count_tangency(x, lam);
-  out.how = std::string("Disc f = 0: a quadruple root of f, ") + sign_word(lam) + ": a tangency";
-  return out;
+  const bool known_multiple = mp.disc_zero || ((a.causes & kCauseDiscriminant) && !a.exact);
+  return motion_detail::decide_at_instant(
+      *mp.instant, [&](const PolyZ& q) { return sign_at(ak, q, a); }, known_multiple);
 }
 
-/// The position at an instant from its root facts. With `report_smallness` false, smallness is
-/// evaluated only when the answer depends on it (E and TE do not; first contact needs no more).
-Position position_of(const MovingPencil& mp, const AK& ak, const Candidate& a, InstantFacts& facts,
-                     bool report_smallness) {
-  const Position if_small = position_from(facts.roots, -1), if_large = position_from(facts.roots, 1);
-  if (if_small == if_large && !report_smallness) {
-    facts.rho_vs_one = 0;  // not evaluated
-    return if_small;
-  }
-  facts.rho_vs_one = *compare_rho_with_one(USign(static_cast<CGAL::Sign>(sign_at(ak, mp.vertex, a))),
-                                           USign(static_cast<CGAL::Sign>(sign_at(ak, mp.graeffe, a))));
-  return position_from(facts.roots, facts.rho_vs_one);
+/// rho(t*) <= 1 at an instant (the two smallness quantities' signs; reported, never needed).
+bool small_at(const MovingPencil& mp, const AK& ak, const Candidate& a) {
+  return *compare_rho_with_one(USign(static_cast<CGAL::Sign>(sign_at(ak, mp.vertex, a))),
+                               USign(static_cast<CGAL::Sign>(sign_at(ak, mp.graeffe, a)))) <= 0;
 }
 
 /// Positions that a limit of configurations in position p can have (the contact set is closed,
@@ -556,10 +411,19 @@ unsigned closure(Position p) {
       return bit(Position::TE);
     case Position::TI:
       return bit(Position::TI);
-    case Position::Unclassified:
-      break;
   }
-  return ~0u;
+  return 0;
+}
+
+/// The cross-check of an instant with its neighbouring intervals (`closure`): a violation is a
+/// defect, never an answer.
+void check_closure(Position at, const std::optional<Position>& before, const std::optional<Position>& after,
+                   const AlgebraicReal& t) {
+  const unsigned bit = 1u << static_cast<unsigned>(at);
+  for (const auto& n : {before, after})
+    if (n && !(closure(*n) & bit))
+      throw std::logic_error("internal error: motion: position " + to_string(at) + " at t = " + t.decimals(20) +
+                             " is not a limit of the neighbouring position " + to_string(*n));
 }
 
 Classification classify_at(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p, const Rational& t) {
@@ -612,10 +476,12 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
       pos = c.verdict.position;
       how = classify_how(c);
     } else {
-      auto facts = facts_at(mp, ak, z, nullptr);
-      if (!facts) continue;  // no root merges: still E
-      pos = position_of(mp, ak, z, *facts, false);
-      how = facts->how;
+      // The left neighbour is E; E is open, so a square-free f (no root merges) keeps it.
+      const auto d = decide_at(mp, ak, z);
+      if (!d) continue;
+      pos = d->position;
+      how = "at the algebraic instant: " + d->how;
+      check_closure(pos, Position::E, std::nullopt, instant_of(z));
     }
     if (pos != Position::E) {
       out.kind = FirstContact::Kind::Contact;
@@ -662,31 +528,32 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
 
   for (std::size_t i = 0; i < cands.size(); ++i) {
     const Candidate& z = cands[i];
-    MotionInstant inst{instant_of(z), Position::Unclassified, false, z.causes, ""};
+    MotionInstant inst{instant_of(z), Position::C, false, z.causes, ""};
     if (inst.time.is_rational()) {
       const Classification c = classify_at(e0, motion, p, *inst.time.exact());
       inst.position = c.verdict.position;
       inst.small = c.verdict.small;
       inst.how = classify_how(c);
     } else {
-      // Irrational instants are interior (t0, t1 are rational), so interval i-1 exists.
-      auto facts = facts_at(mp, ak, z, &interval_class[i - 1]);
-      inst.position = position_of(mp, ak, z, *facts, true);
-      inst.small = facts->rho_vs_one <= 0;
-      inst.how = "at the algebraic instant: " + facts->how;
-    }
-    // Cross-check with the neighbours (closure of positions, see `closure`): a violation would mean
-    // a defect or a gap in the theory, so the instant is reported unclassified, never guessed.
-    if (inst.position != Position::Unclassified) {
-      const unsigned bit = 1u << static_cast<unsigned>(inst.position);
-      bool ok = true;
-      if (i > 0) ok = ok && (closure(out.intervals[i - 1].position) & bit);
-      if (i + 1 < cands.size()) ok = ok && (closure(out.intervals[i].position) & bit);
-      if (!ok) {
-        inst.how += " [inconsistent with the neighbouring intervals: reported unclassified]";
-        inst.position = Position::Unclassified;
+      // Irrational instants are interior (t0, t1 are rational), so intervals i-1 and i exist. f
+      // square-free at t*: no tangency (that needs a multiple root), so the position is open (E, I
+      // or C) and equals that of the neighbouring intervals. Otherwise the definiteness test of
+      // instant_position.hpp decides, for any size.
+      const auto d = decide_at(mp, ak, z);
+      if (d) {
+        inst.position = d->position;
+        inst.how = "at the algebraic instant: " + d->how;
+      } else {
+        inst.position = out.intervals[i - 1].position;
+        inst.how =
+            "at the algebraic instant: f is square-free (no root merges), the position of the neighbouring "
+            "intervals";
       }
+      inst.small = small_at(mp, ak, z);
     }
+    // Cross-check with the neighbours: E|C forces TE, I|C forces TI, E|I is impossible, ...
+    check_closure(inst.position, i > 0 ? std::optional<Position>(out.intervals[i - 1].position) : std::nullopt,
+                  i + 1 < cands.size() ? std::optional<Position>(out.intervals[i].position) : std::nullopt, inst.time);
     out.instants.push_back(std::move(inst));
   }
   return out;
@@ -696,9 +563,9 @@ std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const Rig
                                                   const Rational& t) {
   const MovingPencil mp(e0, motion, p);
   AK ak;
-  auto facts = facts_at(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}), nullptr);
-  if (!facts) return std::nullopt;
-  return position_of(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}), *facts, true);
+  const auto d = decide_at(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}));
+  if (!d) return std::nullopt;
+  return d->position;
 }
 
 std::vector<PositionChange> Timeline::changes() const {

@@ -1,5 +1,6 @@
-// The method motion.cpp uses at irrational instants, exposed (privately) so tests can compare it
-// with classify() at rational times. It stays in motion.cpp, next to the internals it runs on.
+// The method motion.cpp uses at irrational instants (instant_position.hpp: definiteness of the
+// pencil at the roots of f listed by the subresultants), exposed (privately) so tests can compare it
+// with classify() at rational times.
 #pragma once
 
 #include <optional>
@@ -9,8 +10,8 @@
 namespace relpos {
 
 /// For tests: the position at a rational time decided by the method used at irrational instants
-/// (subresultants of f and df/dl, math.md "Motion") instead of classify(). nullopt when f(., t) is
-/// square-free there (that method then takes its root counts from a neighbouring interval).
+/// (math.md "Motion"), for any size, instead of classify(). nullopt when f(., t) is square-free
+/// there (that method then takes the position of the neighbouring intervals).
 std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p,
                                                   const Rational& t);
 

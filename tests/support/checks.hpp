@@ -61,13 +61,13 @@ inline Rational discriminant(Poly p) {
 
 struct Expect {
   std::string what;
-  Position truth = Position::Unclassified;  ///< the geometric position, by construction
-  bool truth_known = true;                  ///< false: only the algebra (f, s, rho) is known
+  Position truth = Position::C;  ///< the geometric position, by construction (when truth_known)
+  bool truth_known = true;       ///< false: only the algebra (f, s, rho) is known
   bool small = true;
   Rational rho;
   Quartic<Rational> f;  ///< det(l P + E) of the sign-normalized input, by construction
   Quadratic<Rational> s;
-  std::array<Rational, 2> s_roots;     ///< the (rational) roots of s
+  std::array<Rational, 2> s_roots;   ///< the (rational) roots of s
   bool expect_filter_stage = false;  ///< generic, well-conditioned: the filter must decide
 };
 
@@ -122,8 +122,7 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   CHECK(c.verdict.small == x.small);
   CHECK(c.verdict.rho_vs_one == sgn(x.rho - 1));
   if (x.truth_known && c.verdict.meets().has_value()) CHECK(*c.verdict.meets() == truth_has_contact(x.truth));
-  // Every valid pair gets one of I, TI, C, TE, E, whatever its size (math.md section 8).
-  CHECK(c.verdict.position != Position::Unclassified);
+  // Every valid pair gets one of I, TI, C, TE, E, whatever its size (math.md section 8), and contact.
   REQUIRE(c.verdict.meets().has_value());
   CHECK(c.finding.empty());
   CHECK(!c.rule_text().empty());
@@ -195,44 +194,42 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   // Root pattern of each answer (math.md section 3 table): it characterizes every answer of a small
   // pair, and TE and E of any size (section 6); I, TI and C of a pair that is not small are decided
   // by section 8, not by the root pattern.
-  const Position pattern =
-      x.small || want == Position::TE || want == Position::E ? want : Position::Unclassified;
-  switch (pattern) {
-    case Position::I:
-      CHECK(c.verdict.nonreal_roots == 0);
-      CHECK(c.verdict.positive_roots == 0);
-      CHECK(tangencies == 0);
-      CHECK(*c.verdict.meets() == false);
-      break;
-    case Position::TI:
-      CHECK(c.verdict.nonreal_roots == 0);
-      CHECK(c.verdict.positive_roots == 0);
-      CHECK(tangencies == 1);
-      CHECK(*c.verdict.meets() == true);
-      break;
-    case Position::C:
-      CHECK(c.verdict.nonreal_roots == 2);
-      CHECK(c.verdict.positive_roots == 0);
-      CHECK(tangencies == 0);
-      CHECK(*c.verdict.meets() == true);
-      break;
-    case Position::TE:
-      CHECK(c.verdict.nonreal_roots == 0);
-      CHECK(c.verdict.positive_roots == 1);
-      CHECK(tangencies == 1);
-      for (const auto& r : c.roots)
-        if (r.tangency()) CHECK(r.sign == 1);
-      CHECK(*c.verdict.meets() == true);
-      break;
-    case Position::E:
-      CHECK(c.verdict.nonreal_roots == 0);
-      CHECK(c.verdict.positive_roots == 2);
-      CHECK(tangencies == 0);
-      CHECK(*c.verdict.meets() == false);
-      break;
-    case Position::Unclassified:
-      break;
-  }
+  const std::optional<Position> pattern =
+      x.small || want == Position::TE || want == Position::E ? std::optional<Position>(want) : std::nullopt;
+  if (pattern) switch (*pattern) {
+      case Position::I:
+        CHECK(c.verdict.nonreal_roots == 0);
+        CHECK(c.verdict.positive_roots == 0);
+        CHECK(tangencies == 0);
+        CHECK(*c.verdict.meets() == false);
+        break;
+      case Position::TI:
+        CHECK(c.verdict.nonreal_roots == 0);
+        CHECK(c.verdict.positive_roots == 0);
+        CHECK(tangencies == 1);
+        CHECK(*c.verdict.meets() == true);
+        break;
+      case Position::C:
+        CHECK(c.verdict.nonreal_roots == 2);
+        CHECK(c.verdict.positive_roots == 0);
+        CHECK(tangencies == 0);
+        CHECK(*c.verdict.meets() == true);
+        break;
+      case Position::TE:
+        CHECK(c.verdict.nonreal_roots == 0);
+        CHECK(c.verdict.positive_roots == 1);
+        CHECK(tangencies == 1);
+        for (const auto& r : c.roots)
+          if (r.tangency()) CHECK(r.sign == 1);
+        CHECK(*c.verdict.meets() == true);
+        break;
+      case Position::E:
+        CHECK(c.verdict.nonreal_roots == 0);
+        CHECK(c.verdict.positive_roots == 2);
+        CHECK(tangencies == 0);
+        CHECK(*c.verdict.meets() == false);
+        break;
+    }
   if (pattern == Position::TI) {
     for (const auto& r : c.roots)
       if (r.tangency()) CHECK(r.sign == -1);

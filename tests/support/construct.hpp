@@ -338,7 +338,7 @@ struct Config {
   Rational a, b;
   Vector3 c;
   Rational r;
-  Position expected = Position::Unclassified;
+  Position expected = Position::C;  ///< by construction (set by every maker)
 
   Rational amin() const { return rmin(a, b); }
   /// rho = 4 r^2 / min(a, b)^4 (math.md section 5).
