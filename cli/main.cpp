@@ -179,7 +179,7 @@ int run_classify(Args& args) {
   try {
     const std::optional<relpos::Ellipsoid> e = shapes.make_ellipsoid();
     const std::optional<relpos::Paraboloid> p = shapes.make_paraboloid();
-    relpos::io::check_pair_size(*e, *p);  // doc/cli.md, Limits
+    relpos::check_normalized_pair_size(*e, *p);  // doc/cli.md, Limits
     if (contact_only) {
       const Json j = relpos::io::contact_to_json(relpos::contact(*e, *p));
       if (json)

@@ -169,7 +169,7 @@ void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, co
   } catch (const relpos::InputError& e) {
     throw relpos::InputError(std::string("ellipsoid: ") + e.what());
   }
-  relpos::io::check_pair_size(*out.body, p);  // the limit of `relpos batch`
+  relpos::check_normalized_pair_size(*out.body, p);  // the limit of `relpos batch`
 }
 
 /// Parse a line; never throws (errors land in out.error). JSON Lines go through the reader of

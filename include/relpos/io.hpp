@@ -71,21 +71,6 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
 /// A polynomial with exact coefficients (index = power) as text: "3*l^4 - 1/2*l^2 + 7".
 std::string polynomial_to_text(const Rational* coefficients, int size, const std::string& variable = "l");
 
-/// Largest bit length among the entries of the pair's exact integer form: both matrices multiplied
-/// by the lcm of all 32 denominators, which is what classify()'s exact stages compute with (the
-/// coefficients of f then have at most 4 B + 5 bits).
-std::size_t pair_integer_bits(const Ellipsoid& e, const Paraboloid& p);
-
-/// Limit on pair_integer_bits enforced by the CLI (doc/cli.md, "Limits"). The exact root evidence
-/// (roots.cpp) slows down sharply with the size of f's coefficients: measured on pairs with unrelated
-/// denominators, about 1 s per pair at 1500 bits and 10 s at 4000 bits; with 10^4-digit entries a
-/// pair took minutes and gigabytes, crashed (SIGSEGV), or kept CGAL's modular gcd looping after its
-/// 2000 primes ran out (doc/testing.md, "Defects found"). 4096 bits admit every pair of doubles
-/// except those spanning both ends of the double range at once.
-inline constexpr std::size_t kMaxPairBits = 4096;
-
-/// Throws InputError ("numbers too large: ...") when pair_integer_bits(e, p) > kMaxPairBits.
-void check_pair_size(const Ellipsoid& e, const Paraboloid& p);
 
 // ------------------------------------------------------------------------------------------------
 // Batch lines: the one reader of a JSON Lines input line, used by `relpos batch`, by `relpos scene`

@@ -473,7 +473,12 @@ std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
 }
 
 void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p) {
-  const std::size_t bits = normalized_pair_bits(e, p);
+  // A matrix of doubles is within the limit whatever its entries: its primitive form has at most
+  // 2098 + 53 bits (exponents span at most 2^-1074 .. 2^1023), so the check costs nothing then and
+  // never builds the exact matrix of a quadric made from doubles.
+  static_assert(kMaxNormalizedBits >= 2098 + 53, "every matrix of doubles must pass");
+  const std::size_t bits =
+      std::max(e.doubles() ? 0 : normalized_bits(e.matrix()), p.doubles() ? 0 : normalized_bits(p.matrix()));
   if (bits > kMaxNormalizedBits)
     throw InputError(
         "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "

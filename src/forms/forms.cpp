@@ -80,7 +80,15 @@ std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix
         mpz_lcm(l.mpz(), l.mpz(), c(i, j).denominator().mpz());
       }
     MatrixOf<Integer> out;
-    for (std::size_t i = 0; i < 16; ++i) out.a[i] = c.a[i].numerator() * (l / c.a[i].denominator());
+    Integer g(0);
+    for (std::size_t i = 0; i < 16; ++i) {
+      out.a[i] = c.a[i].numerator() * (l / c.a[i].denominator());
+      mpz_gcd(g.mpz(), g.mpz(), out.a[i].mpz());
+    }
+    // Divided by its content (a positive factor): the primitive form, whatever the scale of the
+    // input matrix, so that the size limit on normalized forms bounds what the exact stages see.
+    if (g > 1)
+      for (auto& x : out.a) mpz_divexact(x.mpz(), x.mpz(), g.mpz());
     return out;
   };
   return {form(p), form(e)};

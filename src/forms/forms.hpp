@@ -60,7 +60,8 @@ std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, co
 
 /// The smallest integer form the *decisions* need (not the evidence: the roots move). With
 /// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive
-/// alpha, beta clearing the remaining denominators of D E D and D P D:
+/// alpha, beta clearing the remaining denominators of D E D and D P D and dividing out each form's
+/// content (each matrix's scale is forgotten):
 ///   det(lambda beta DPD + alpha DED) = t^2 alpha^4 f(beta lambda / alpha),
 ///   det(lambda beta A + alpha M)     = alpha^3 s(beta lambda / alpha),
 /// so every root of f and s is multiplied by the same alpha / beta > 0: signs, multiplicities,

@@ -229,7 +229,7 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
   if (!fixed && paraboloid.is_null()) throw InputError("paraboloid: missing");
   out.ellipsoid = ellipsoid_from_json(ellipsoid, "ellipsoid");
   if (!fixed) out.paraboloid = paraboloid_from_json(paraboloid, "paraboloid");
-  check_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
+  check_normalized_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
 }
 
 std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options) {

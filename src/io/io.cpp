@@ -802,39 +802,4 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
   return t;
 }
 
-// ------------------------------------------------------------------------------------------------
-// Size limit
-
-std::size_t pair_integer_bits(const Ellipsoid& e, const Paraboloid& p) {
-  // Gmpz is reference-counted: every GMP call writes into a freshly constructed object.
-  Integer l(1);
-  for (const Matrix4* m : {&e.matrix(), &p.matrix()})
-    for (const Rational& q : m->a) {
-      Integer next;
-      mpz_lcm(next.mpz(), l.mpz(), q.denominator().mpz());
-      l = next;
-    }
-  std::size_t bits = 0;
-  for (const Matrix4* m : {&e.matrix(), &p.matrix()})
-    for (const Rational& q : m->a) {
-      if (q == 0) continue;
-      Integer scaled;
-      mpz_divexact(scaled.mpz(), l.mpz(), q.denominator().mpz());
-      Integer entry;
-      mpz_mul(entry.mpz(), scaled.mpz(), q.numerator().mpz());
-      bits = std::max<std::size_t>(bits, mpz_sizeinbase(entry.mpz(), 2));
-    }
-  return bits;
-}
-
-void check_pair_size(const Ellipsoid& e, const Paraboloid& p) {
-  const std::size_t bits = pair_integer_bits(e, p);
-  if (bits > kMaxPairBits)
-    throw InputError(
-        "numbers too large: the exact integer form of the pair (both matrices times the lcm of all "
-        "their denominators) has " +
-        std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxPairBits) +
-        " bits (doc/cli.md, Limits)");
-}
-
 }  // namespace relpos::io

@@ -137,6 +137,12 @@ def main():
         (pair("exponent-4000", sphere('"25e-4002"')), "exponent-4000", "error", "numbers too large"),
         (pair("exponent-plus-4000", sphere('"1e4000"')), "exponent-plus-4000", "error", "numbers too large"),
         (pair("exponent-plus-4001", sphere('"1e4001"')), "exponent-plus-4001", "error", "beyond the supported range"),
+        # Each matrix rescaled on its own by 10^1000 and 10^-1000: its primitive form is small, so the
+        # pair is classified (the sphere of "e300" on the axis of z = x^2 + y^2/4: I); a sphere whose
+        # own matrix is large is still refused (above).
+        ('{"id": "rescaled-1e1000", "ellipsoid": {"matrix": [[1e1000, 0, 0, 0], [0, 1e1000, 0, 0], '
+         '[0, 0, 1e1000, -1e1000], [0, 0, -1e1000, 9.375e999]]}, "paraboloid": {"matrix": [[1e-1000, 0, 0, 0], '
+         '[0, 2.5e-1001, 0, 0], [0, 0, 0, -5e-1001], [0, 0, -5e-1001, 0]]}}', "rescaled-1e1000", "position", "I"),
         (pair("exponent-minus-14001", sphere('"1e-14001"')), "exponent-minus-14001", "error",
          "beyond the supported range"),
         # Very long lines.
