@@ -123,8 +123,7 @@ int main(int argc, char** argv) {
     tracker_filter += fr.by == DecidedBy::DiscriminantFilter;
     if (d.verdict.position != v.position || d.verdict.rule != v.rule || fr.position != v.position ||
         c.position != v.position || (v.contact == 0 && c.contact != Contact::None) ||
-        (v.contact == 1 && (c.contact == Contact::None || c.contact == Contact::Unknown)) ||
-        (s.contact != Contact::Unknown && c.contact != Contact::Unknown && s.contact != c.contact))
+        (v.contact == 1 && c.contact == Contact::None) || s.contact != c.contact)
       ++mismatches;
   }
 
@@ -165,14 +164,13 @@ int main(int argc, char** argv) {
   auto frac = [&](const std::array<std::size_t, kDecidedByCount>& a, DecidedBy b) {
     return 100.0 * static_cast<double>(a[static_cast<std::size_t>(b)]) / static_cast<double>(n);
   };
-  std::printf("decided by (%%):            scene-cert  disc-filter  full-classifier  containment\n");
+  std::printf("decided by (%%):            scene-cert  disc-filter  full-classifier\n");
   for (const auto& [name, a] :
        {std::pair<const char*, const std::array<std::size_t, kDecidedByCount>*>{"decide_by_discriminant", &by_disc},
         {"contact()", &by_contact},
         {"ContactChecker::contact", &by_checker}})
-    std::printf("%-26s %10.2f %12.2f %16.2f %18.3f\n", name, frac(*a, DecidedBy::SceneCertificate),
-                frac(*a, DecidedBy::DiscriminantFilter), frac(*a, DecidedBy::FullClassifier),
-                frac(*a, DecidedBy::ContainmentCertificate));
+    std::printf("%-26s %10.2f %12.2f %16.2f\n", name, frac(*a, DecidedBy::SceneCertificate),
+                frac(*a, DecidedBy::DiscriminantFilter), frac(*a, DecidedBy::FullClassifier));
   std::printf("%-26s %23.2f\n", "ExteriorTracker::update",
               100.0 * static_cast<double>(tracker_filter) / static_cast<double>(n));
 

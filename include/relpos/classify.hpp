@@ -71,9 +71,6 @@ enum class Rule : unsigned char {
   EvenGapRoot,           ///< TI: f~ has a multiple root in (lambda_s, 0) (section 8 rule 4)
   HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (section 8 rule 4)
   NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (section 8 rule 5)
-  NotSmallContact,       ///< not small, non-real roots: the surfaces meet, type unknown
-  NotSmallUnknown,       ///< not small, no certificate
-  Finding,               ///< root pattern outside the table
 };
 std::string describe(Rule r);
 
@@ -85,7 +82,7 @@ struct Verdict {
   Rule rule = Rule::None;
   bool small = false;
   signed char rho_vs_one = 0;
-  signed char contact = -1;  ///< 1 yes, 0 no, -1 not decidable (not small)
+  signed char contact = -1;  ///< 1 the surfaces meet (TI, C, TE), 0 they do not (I, E); -1 before a rule is set
   signed char sign_disc_f = 0, sign_disc_ftilde = 0;
   signed char real_roots = 0, negative_roots = 0, positive_roots = 0, nonreal_roots = 0;
   signed char tangent_negative = 0, tangent_positive = 0, nonreal_multiple = 0;
@@ -154,8 +151,7 @@ struct Certificate {
 };
 
 struct Classification {
-  Verdict verdict;      ///< position, stage, rule, smallness, contact and the root counts (the one copy)
-  std::string finding;  ///< set when the root pattern is outside the table
+  Verdict verdict;  ///< position, stage, rule, smallness, contact and the root counts (the one copy)
   /// The rule that decided, in one sentence (describe(verdict.rule)).
   std::string rule_text() const { return describe(verdict.rule); }
 

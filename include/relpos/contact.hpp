@@ -35,13 +35,11 @@ class Scene;
 
 /// What settled an answer.
 enum class DecidedBy : unsigned char {
-  SceneCertificate,        ///< Scene::early_out: P has one strict sign on the solid ellipsoid
-  DiscriminantFilter,      ///< static filter on f and Disc(f) only (+ smallness when needed)
-  FullClassifier,          ///< decide_position() (static filter, witness, intervals, exact)
-  ContainmentCertificate,  ///< inside certificate P < 0 on the solid ellipsoid (filtered, exact if needed), body not
-                           ///< small
+  SceneCertificate,    ///< Scene::early_out: P has one strict sign on the solid ellipsoid
+  DiscriminantFilter,  ///< static filter on f and Disc(f) only (+ smallness when needed)
+  FullClassifier,      ///< decide_position() (static filter, witness, intervals, exact)
 };
-inline constexpr std::size_t kDecidedByCount = 4;
+inline constexpr std::size_t kDecidedByCount = 3;
 std::string to_string(DecidedBy d);
 
 struct DiscriminantVerdict {
@@ -58,16 +56,14 @@ DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid&
 // ------------------------------------------------------------------------------------------------
 
 enum class Contact : unsigned char {
-  None,      ///< the surfaces do not meet (I or E, or certified containment for any size)
+  None,      ///< the surfaces do not meet (I or E)
   Touching,  ///< they meet only tangentially (TI or TE)
-  Crossing,  ///< they cross (C; or, not small, f~ square-free with a non-real pair)
-  Meet,      ///< they meet, but the kind of contact is not certified (not small, or a finding)
-  Unknown,   ///< not small and no certificate: the theory cannot tell
+  Crossing,  ///< they cross (C)
 };
 std::string to_string(Contact c);
 
 struct ContactAnswer {
-  Contact contact = Contact::Unknown;
+  Contact contact = Contact::None;
   Position position = Position::C;  ///< classify's position
   Rule rule = Rule::None;           ///< classify's rule
   DecidedBy by = DecidedBy::FullClassifier;

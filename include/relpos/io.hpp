@@ -58,7 +58,7 @@ struct RenderOptions {
 };
 
 /// The JSON report of one classification (without "id"): position, small, contact, rho_vs_one, rho,
-/// rho_approx, rule, finding (if any), stage, disc_sign, disc_ftilde_sign, roots, and with full
+/// rho_approx, rule, stage, disc_sign, disc_ftilde_sign, roots, and with full
 /// evidence degree_ftilde, f, s and multiple_roots. Key order is stable.
 nlohmann::ordered_json classification_to_json(const Classification& c, const RenderOptions& options = {});
 
@@ -70,7 +70,6 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
 
 /// A polynomial with exact coefficients (index = power) as text: "3*l^4 - 1/2*l^2 + 7".
 std::string polynomial_to_text(const Rational* coefficients, int size, const std::string& variable = "l");
-
 
 // ------------------------------------------------------------------------------------------------
 // Batch lines: the one reader of a JSON Lines input line, used by `relpos batch`, by `relpos scene`

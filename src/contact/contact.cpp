@@ -38,8 +38,6 @@ std::string to_string(DecidedBy d) {
       return "discriminant-filter";
     case DecidedBy::FullClassifier:
       return "full-classifier";
-    case DecidedBy::ContainmentCertificate:
-      return "containment-certificate";
   }
   return "?";
 }
@@ -52,10 +50,6 @@ std::string to_string(Contact c) {
       return "touching";
     case Contact::Crossing:
       return "crossing";
-    case Contact::Meet:
-      return "meet";
-    case Contact::Unknown:
-      return "unknown";
   }
   return "?";
 }
@@ -150,52 +144,8 @@ SymmetricEntries<NT> entries(Get get) {
   return {get(0, 0), get(1, 1), get(2, 2), get(0, 1), get(0, 2), get(1, 2), get(0, 3), get(1, 3), get(2, 3), get(3, 3)};
 }
 
-/// The inside certificate (math.md "Scenes"), P < 0 on the whole closed solid ellipsoid, in NT:
-/// then the surfaces do not meet, whatever the size of the body. Returns the signs of T (must be
-/// < 0) and of T^2 - 4KW (must be > 0) through sign().
-template <class NT, class Conv, class Sign>
-int inside_certificate(const Ellipsoid& e, const Paraboloid& p, Conv conv, Sign sign) {
-  const Matrix4& em = e.matrix();
-  const Matrix4& pm = p.matrix();
-  const auto ee = entries<NT>([&](int i, int j) { return conv(em, i, j); });
-  const auto pe = entries<NT>([&](int i, int j) { return conv(pm, i, j); });
-  const SymmetricEntries<NT> adj = adjugate3(pe);  // only the 3x3 part (S2) is read
-  const ContainmentQuantities<NT> q(ee, pe, adj);
-  const int t = sign(q.inside_t()), g = sign(q.inside_gap());
-  if (t > 0 || g < 0) return -1;  // fails
-  if (t < 0 && g > 0) return 1;   // holds
-  return 0;                       // uncertain (or exactly on the boundary)
-}
-
-/// First with RunningBound (double with a certified error bound; enclosures for non-double entries),
-/// exactly only when that is uncertain: a body that is not small costs the exact test only near the
-/// certificate's boundary.
-bool inside_certificate_holds(const Ellipsoid& e, const Paraboloid& p) {
-  if (rounding_to_nearest()) {
-    const int r = inside_certificate<RunningBound>(
-        e, p,
-        [](const Matrix4& m, int i, int j) {
-          const auto iv = CGAL::to_interval(m(i, j));
-          return RunningBound::enclosing(iv.first, iv.second);
-        },
-        [](const RunningBound& x) { return x.sign(); });
-    if (r != 0) return r > 0;
-  }
-  return inside_certificate<Rational>(
-             e, p, [](const Matrix4& m, int i, int j) { return m(i, j); },
-             [](const Rational& x) { return static_cast<int>(CGAL::sign(x)); }) > 0;
-}
-
-/// After the classifier: a body that is not small and has no certificate may still be certified
-/// inside by the exact containment test (no contact for any size).
-ContactAnswer finish(const Verdict& v, DecidedBy by, const Ellipsoid& e, const Paraboloid& p) {
-  ContactAnswer a{contact_of(v), v.position, v.rule, by};
-  if (a.contact == Contact::Unknown && v.rule == Rule::NotSmallUnknown && inside_certificate_holds(e, p)) {
-    a.contact = Contact::None;
-    a.by = DecidedBy::ContainmentCertificate;
-  }
-  return a;
-}
+/// The answer of a classifier verdict, by what settled it.
+ContactAnswer finish(const Verdict& v, DecidedBy by) { return {contact_of(v), v.position, v.rule, by}; }
 
 }  // namespace
 
@@ -228,7 +178,7 @@ Contact contact_of(const Verdict& v) {
 
 ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p) {
   const DiscriminantVerdict d = decide_by_discriminant(e, p);
-  return finish(d.verdict, d.by, e, p);
+  return finish(d.verdict, d.by);
 }
 
 ContactChecker::ContactChecker(const Paraboloid& p) : scene_(std::make_unique<Scene>(p)) {}
@@ -239,12 +189,12 @@ const Paraboloid& ContactChecker::paraboloid() const { return scene_->paraboloid
 
 ContactAnswer ContactChecker::contact(const Ellipsoid& e) const {
   if (const auto s = scene_->early_out(e)) {
-    // Inside (I, or not small: NotSmallUnknown) or outside (E): no common point in either case.
+    // Inside (I) or outside (E): no common point in either case.
     ContactAnswer a{Contact::None, s->position, s->rule, DecidedBy::SceneCertificate};
     return a;
   }
   const DiscriminantVerdict d = decide_by_discriminant(e, scene_->paraboloid());
-  return finish(d.verdict, d.by, e, scene_->paraboloid());
+  return finish(d.verdict, d.by);
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -73,14 +73,6 @@ std::string describe(Rule r) {
              "(the hard case, math.md section 8, rule 4)";
     case Rule::NoRootInGap:
       return "no positive root and no root of f~ in [lambda_s, 0): crossing (math.md section 8, rule 5)";
-    case Rule::NotSmallContact:
-      return "not small; f has non-real roots, so the surfaces meet (Finsler-Calabi), but the type of contact "
-             "needs the full arrangement classification";
-    case Rule::NotSmallUnknown:
-      return "not small and no positive roots certify separation: interior, tangency from inside and "
-             "two-component intersections are beyond the paper's theorem";
-    case Rule::Finding:
-      return "root pattern outside the classification table (reported, not guessed)";
   }
   return "";
 }
@@ -108,13 +100,6 @@ std::string to_string(Stage s) {
 }
 
 namespace {
-
-std::string pattern(const Verdict& x) {
-  return std::to_string(x.real_roots) + " distinct real roots (" + std::to_string(x.negative_roots) + " negative, " +
-         std::to_string(x.positive_roots) + " positive), " + std::to_string(x.nonreal_roots) + " non-real, " +
-         std::to_string(x.tangent_negative + x.tangent_positive) + " multiple root(s) of f~" +
-         (x.nonreal_multiple ? ", a multiple non-real root" : "");
-}
 
 /// The classification (math.md sections 3, 6 and 8), written once for every stage. Reads the root
 /// facts of v and its rho comparison; writes position, contact and rule. Leaves rule None (the
@@ -486,7 +471,6 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   const Verdict v = run_stages(e, p, use_filter, exact);
   Classification out;
   out.verdict = v;
-  if (v.rule == Rule::Finding) out.finding = pattern(v);
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E): the common-lcm form
     Integer scale;
     const auto [pz, ez] = to_integers(p.matrix(), e.matrix(), scale);

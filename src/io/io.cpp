@@ -668,7 +668,6 @@ Json classification_to_json(const Classification& c, const RenderOptions& option
   const double rho_approx = c.rho ? std::strtod(to_decimal(*c.rho, 40).c_str(), nullptr) : c.rho_approx;
   j["rho_approx"] = c.has_full_evidence && std::isfinite(rho_approx) ? Json(rho_approx) : Json(nullptr);
   j["rule"] = c.rule_text();
-  if (!c.finding.empty()) j["finding"] = c.finding;
   j["stage"] = to_string(c.verdict.stage);
   j["disc_sign"] = int(c.verdict.sign_disc_f);
   j["disc_ftilde_sign"] = int(c.verdict.sign_disc_ftilde);
@@ -741,7 +740,6 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
   };
   line("position:", to_string(c.verdict.position) + " - " + position_meaning(c.verdict.position));
   line("rule:", c.rule_text());
-  if (!c.finding.empty()) line("finding:", c.finding);
 
   std::string small =
       c.verdict.small ? "yes (the paper's smallness hypothesis holds): " : "no (the smallness hypothesis fails): ";

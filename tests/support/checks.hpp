@@ -124,7 +124,6 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   if (x.truth_known && c.verdict.meets().has_value()) CHECK(*c.verdict.meets() == truth_has_contact(x.truth));
   // Every valid pair gets one of I, TI, C, TE, E, whatever its size (math.md section 8), and contact.
   REQUIRE(c.verdict.meets().has_value());
-  CHECK(c.finding.empty());
   CHECK(!c.rule_text().empty());
 
   REQUIRE(c.has_full_evidence);
@@ -246,7 +245,6 @@ inline void check_same(const Classification& a, const Classification& b) {
   CHECK(a.verdict.rho_vs_one == b.verdict.rho_vs_one);
   CHECK(a.verdict.meets().has_value() == b.verdict.meets().has_value());
   if (a.verdict.meets() && b.verdict.meets()) CHECK(*a.verdict.meets() == *b.verdict.meets());
-  CHECK(a.finding.empty() == b.finding.empty());
   CHECK(a.verdict.sign_disc_f == b.verdict.sign_disc_f);
   CHECK(a.verdict.sign_disc_ftilde == b.verdict.sign_disc_ftilde);
   CHECK(a.verdict.real_roots == b.verdict.real_roots);
