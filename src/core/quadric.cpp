@@ -3,6 +3,7 @@
 #include <gmp.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <utility>
 
@@ -117,13 +118,15 @@ Matrix4 push_forward(const Matrix4& local, const Matrix3& l, const Vector3& t, c
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       Rational s(0);
-      for (int k = 0; k < 4; ++k) s += local(i, k) * hi(k, j);
+      for (int k = 0; k < 4; ++k)
+        if (!CGAL::is_zero(local(i, k)) && !CGAL::is_zero(hi(k, j))) s += local(i, k) * hi(k, j);
       tmp(i, j) = s;
     }
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       Rational s(0);
-      for (int k = 0; k < 4; ++k) s += hi(k, i) * tmp(k, j);
+      for (int k = 0; k < 4; ++k)
+        if (!CGAL::is_zero(hi(k, i)) && !CGAL::is_zero(tmp(k, j))) s += hi(k, i) * tmp(k, j);
       out(i, j) = s;
     }
   return out;
@@ -160,8 +163,19 @@ std::string found(QuadricKind k) {
 std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m) {
   DoubleMatrix4 d;
   for (std::size_t i = 0; i < 16; ++i) {
-    d[i] = CGAL::to_double(m.a[i]);
-    if (!std::isfinite(d[i]) || Rational(d[i]) != m.a[i]) return std::nullopt;
+    // A double is n 2^j / 2^k in lowest terms with odd |n| < 2^53 (and in range): tested on the integers,
+    // without building a rational from the double (an allocation per entry).
+    const mpq_srcptr q = m.a[i].mpq();
+    if (mpq_sgn(q) == 0) {
+      d[i] = 0;
+      continue;
+    }
+    const std::size_t den_bits = mpz_sizeinbase(mpq_denref(q), 2);
+    const std::size_t significant = mpz_sizeinbase(mpq_numref(q), 2) - mpz_scan1(mpq_numref(q), 0);
+    if (significant > 53 || mpz_scan1(mpq_denref(q), 0) != den_bits - 1) return std::nullopt;
+    d[i] = mpq_get_d(q);  // exact when in range: a 53-bit integer over a power of two
+    if (!std::isfinite(d[i]) || d[i] == 0) return std::nullopt;
+    if (std::fabs(d[i]) < DBL_MIN && Rational(d[i]) != m.a[i]) return std::nullopt;  // subnormal: check
   }
   return d;
 }
@@ -401,7 +415,9 @@ Ellipsoid Ellipsoid::from_map(const Vector3& c, const Matrix3& l) {
   Matrix4 unit;  // x^2 + y^2 + z^2 - 1
   unit(0, 0) = unit(1, 1) = unit(2, 2) = Rational(1);
   unit(3, 3) = Rational(-1);
-  return from_matrix(push_forward(unit, l, c, "ellipsoid linear map"));
+  // The image of the unit ball under an invertible affine map: an ellipsoid, positive definite block
+  // (Sylvester's law of inertia): no validation, no sign normalization.
+  return Ellipsoid(push_forward(unit, l, c, "ellipsoid linear map"));
 }
 
 Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
@@ -431,11 +447,25 @@ Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_
 Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Rational& b, const Quaternion& q) {
   if (a <= 0 || b <= 0)
     throw InputError("paraboloid parameters a, b must be positive, got a = " + to_string(a) + ", b = " + to_string(b));
+  const Rational ia = Rational(1) / (a * a), ib = Rational(1) / (b * b);
+  // A congruence of the standard paraboloid by an invertible affine map is an elliptic paraboloid
+  // with the same orientation (Sylvester's law of inertia): no validation, no sign normalization.
+  if (q[0] != 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) {
+    // No rotation: (x - v)^T A (x - v) - (z - v_z), written directly (the common case).
+    Matrix4 m;
+    m(0, 0) = ia;
+    m(1, 1) = ib;
+    m(0, 3) = m(3, 0) = -ia * v[0];
+    m(1, 3) = m(3, 1) = -ib * v[1];
+    m(2, 3) = m(3, 2) = Rational(-1, 2);
+    m(3, 3) = ia * v[0] * v[0] + ib * v[1] * v[1] + v[2];
+    return Paraboloid(std::move(m));
+  }
   Matrix4 local;
-  local(0, 0) = Rational(1) / (a * a);
-  local(1, 1) = Rational(1) / (b * b);
+  local(0, 0) = ia;
+  local(1, 1) = ib;
   local(2, 3) = local(3, 2) = Rational(-1, 2);
-  return from_matrix(push_forward(local, rotation_from_quaternion(q), v, "paraboloid rotation"));
+  return Paraboloid(push_forward(local, rotation_from_quaternion(q), v, "paraboloid rotation"));
 }
 
 Paraboloid Paraboloid::standard(const std::array<double, 3>& v, double a, double b, const std::array<double, 4>& q) {
@@ -446,8 +476,25 @@ Paraboloid Paraboloid::from_map(const Matrix3& l, const Vector3& t) {
   Matrix4 local;  // x^2 + y^2 - z
   local(0, 0) = local(1, 1) = Rational(1);
   local(2, 3) = local(3, 2) = Rational(-1, 2);
-  return from_matrix(push_forward(local, l, t, "paraboloid linear map"));
+  return Paraboloid(push_forward(local, l, t, "paraboloid linear map"));  // valid by construction
 }
+
+namespace {
+
+/// An upper bound on normalized_bits(m) from the lcm of the denominators alone: each entry of the
+/// integer form, num * (l / den), has at most bits(num) + bits(l) - bits(den) + 1 bits.
+std::size_t normalized_bits_bound(const Matrix4& m) {
+  Integer l(1);
+  for (const Rational& q : m.a)
+    if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) != 0) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(q.mpq()));
+  const std::size_t lb = mpz_sizeinbase(l.mpz(), 2);
+  std::size_t bound = 0;
+  for (const Rational& q : m.a)
+    bound = std::max(bound, mpz_sizeinbase(mpq_numref(q.mpq()), 2) + lb + 1 - mpz_sizeinbase(mpq_denref(q.mpq()), 2));
+  return bound;
+}
+
+}  // namespace
 
 std::size_t normalized_bits(const Matrix4& m) {
   Integer l(1), g(0);
@@ -474,11 +521,16 @@ std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
 
 void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p) {
   // A matrix of doubles is within the limit whatever its entries: its primitive form has at most
-  // 2098 + 53 bits (exponents span at most 2^-1074 .. 2^1023), so the check costs nothing then and
+  // 2098 bits (every double is a multiple of 2^-1074 below 2^1024), so the check costs nothing then and
   // never builds the exact matrix of a quadric made from doubles.
-  static_assert(kMaxNormalizedBits >= 2098 + 53, "every matrix of doubles must pass");
-  const std::size_t bits =
-      std::max(e.doubles() ? 0 : normalized_bits(e.matrix()), p.doubles() ? 0 : normalized_bits(p.matrix()));
+  static_assert(kMaxNormalizedBits >= 2098, "every matrix of doubles must pass");
+  // The bound from the lcm alone settles ordinary inputs (decimals with their powers of ten) without
+  // the gcd and the products.
+  auto bits_of = [](const Matrix4& m) {
+    const std::size_t bound = normalized_bits_bound(m);
+    return bound <= kMaxNormalizedBits ? bound : normalized_bits(m);
+  };
+  const std::size_t bits = std::max(e.doubles() ? 0 : bits_of(e.matrix()), p.doubles() ? 0 : bits_of(p.matrix()));
   if (bits > kMaxNormalizedBits)
     throw InputError(
         "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "
