@@ -22,6 +22,67 @@ using V3 = std::array<Rational, 3>;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
+/// Exact signs of X^T Q X, X = (x, 1), on integers: Q times the positive lcm of its denominators,
+/// x over the lcm D of its coordinates' denominators (D^2 X^T Q X = N^T Qz N, N = (D x, D)). No
+/// rational canonicalisation (gcd) per operation, and the temporaries live in reused mpz_t.
+class IntegerForm {
+ public:
+  explicit IntegerForm(const Matrix4& q) {
+    Integer l(1);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), q(i, j).denominator().mpz());
+    for (int i = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j) {
+        mpz_init(z_[i][j]);
+        mpz_divexact(z_[i][j], l.mpz(), q(i, j).denominator().mpz());
+        mpz_mul(z_[i][j], z_[i][j], q(i, j).numerator().mpz());
+        if (j > i) mpz_mul_2exp(z_[i][j], z_[i][j], 1);  // off-diagonal entries appear twice
+      }
+  }
+  IntegerForm(const IntegerForm&) = delete;
+  IntegerForm& operator=(const IntegerForm&) = delete;
+  ~IntegerForm() {
+    for (int i = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j) mpz_clear(z_[i][j]);
+  }
+  /// Numerators N = (D x, D) of a point, shared by every form evaluated at it.
+  struct Point {
+    mpz_t n[4];
+    explicit Point(const V3& x) {
+      for (auto& v : n) mpz_init(v);
+      mpz_set_ui(n[3], 1);
+      for (int i = 0; i < 3; ++i) mpz_lcm(n[3], n[3], x[i].denominator().mpz());
+      for (int i = 0; i < 3; ++i) {
+        mpz_divexact(n[i], n[3], x[i].denominator().mpz());
+        mpz_mul(n[i], n[i], x[i].numerator().mpz());
+      }
+    }
+    Point(const Point&) = delete;
+    Point& operator=(const Point&) = delete;
+    ~Point() {
+      for (auto& v : n) mpz_clear(v);
+    }
+  };
+  /// sign(X^T Q X): Horner per row, N_i (sum_{j >= i} Qz_ij N_j).
+  int sign(const Point& x) const {
+    mpz_t acc, row;
+    mpz_init(acc);
+    mpz_init(row);
+    for (int i = 0; i < 4; ++i) {
+      mpz_set_ui(row, 0);
+      for (int j = i; j < 4; ++j) mpz_addmul(row, z_[i][j], x.n[j]);
+      mpz_addmul(acc, row, x.n[i]);
+    }
+    const int s = mpz_sgn(acc);
+    mpz_clear(acc);
+    mpz_clear(row);
+    return s;
+  }
+
+ private:
+  mpz_t z_[4][4];
+};
+
 /// The pair's blocks (E = [[M, m], [m^T, e0]], P = [[A, a], [a^T, p0]]), f, s and lambda_s.
 struct Pair {
   const Matrix4& E;
@@ -469,9 +530,11 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 bool crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
+  const IntegerForm ez(pr.E), pz(pr.P);  // exact signs of e and p at the candidates
   std::function<void(const V3&)> consider = [&](const V3& x) {
-    if (pr.e_at(x) > 0) return;
-    const int s = sgn(pr.p_at(x));
+    const IntegerForm::Point xz(x);
+    if (ez.sign(xz) > 0) return;
+    const int s = pz.sign(xz);
     if (s < 0 && !inside) inside = x;
     if (s > 0 && !outside) outside = x;
   };
