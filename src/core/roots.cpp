@@ -182,6 +182,23 @@ std::vector<double> approximate_real_roots(const double* c, int n, double bound)
 /// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
 bool certainly_no_rational_root(const fmpz_poly_t f) {
   detail::flint_thread_cleanup_at_exit();
+  // Small primes first, every residue tried by Horner on machine words: most irreducible quartics
+  // (and products of irreducible quadratics) have no root modulo one of the first few primes.
+  static const unsigned long small_primes[] = {3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47};
+  const slong deg = fmpz_poly_degree(f);
+  for (unsigned long p : small_primes) {
+    unsigned long c[5] = {0, 0, 0, 0, 0};
+    if (deg < 1 || deg > 4) break;
+    for (slong i = 0; i <= deg; ++i) c[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), p);
+    if (c[deg] == 0) continue;  // p divides lc(f): a rational root need not reduce
+    bool root = false;
+    for (unsigned long x = 0; x < p && !root; ++x) {
+      unsigned long v = 0;
+      for (slong i = deg; i >= 0; --i) v = (v * x + c[i]) % p;
+      root = v == 0;
+    }
+    if (!root) return true;
+  }
   static const mp_limb_t primes[] = {1000003, 1000033, 1000037, 1000039, 1000081, 1000099, 1000117, 1000121,
                                      1000133, 1000151, 1000159, 1000171, 1000183, 1000187, 1000193, 1000199};
   bool found = false;
