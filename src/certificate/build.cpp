@@ -527,6 +527,30 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
   }
 }
 
+/// The centre -M^{-1} m of the ellipsoid, by Cramer's rule on E times the lcm of its denominators
+/// (integer determinants, one rational canonicalisation per coordinate); nullopt if M is singular.
+std::optional<V3> centre_of(const Matrix4& e) {
+  Integer l(1);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), e(i, j).denominator().mpz());
+  Integer k[3][4];  // [M | -m] times l
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const Rational& q = e(i, j);
+      mpz_divexact(k[i][j].mpz(), l.mpz(), q.denominator().mpz());
+      mpz_mul(k[i][j].mpz(), k[i][j].mpz(), q.numerator().mpz());
+      if (j == 3) mpz_neg(k[i][j].mpz(), k[i][j].mpz());
+    }
+  auto det3 = [&](int c0, int c1, int c2) {
+    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
+           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
+           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
+  };
+  const Integer det = det3(0, 1, 2);
+  if (det == 0) return std::nullopt;
+  return V3{Rational(det3(3, 1, 2), det), Rational(det3(0, 3, 2), det), Rational(det3(0, 1, 3), det)};
+}
+
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 bool crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
@@ -538,9 +562,22 @@ bool crossing_points(const Pair& pr, Certificate& c) {
     if (s < 0 && !inside) inside = x;
     if (s > 0 && !outside) outside = x;
   };
-  const auto centre = pr.x_of(Rational(0));
+  const auto centre = centre_of(pr.E);
   if (centre) consider(*centre);
-  if (centre) double_curve_search(pr, *centre, inside, outside, consider);
+  if (centre) {
+    // Candidates are pulled towards a dyadic centre (short exact arithmetic); the exact one if
+    // that is not strictly inside the solid.
+    V3 pull = *centre;
+    V3 dyadic;
+    bool finite = true;
+    for (int i = 0; i < 3; ++i) {
+      const double d = CGAL::to_double((*centre)[i]);
+      finite = finite && std::isfinite(d);
+      if (finite) dyadic[i] = exact_rational(d);
+    }
+    if (finite && ez.sign(IntegerForm::Point(dyadic)) < 0) pull = dyadic;
+    double_curve_search(pr, pull, inside, outside, consider);
+  }
   // Along the curve x(lambda): for lambda > 0 it minimises lambda p + e, so while e(x(lambda)) <= 0
   // it is the minimiser of p over a smaller solid, tending to the minimiser over the solid ellipsoid
   // as e(x(lambda)) -> 0 (section 8, min side); for lambda in (lambda_s, 0) likewise the maximiser.
