@@ -500,7 +500,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const Quartic<Integer> f{fp[0].to_integer(), fp[1].to_integer(), fp[2].to_integer(), fp[3].to_integer(),
                              fp[4].to_integer()};
     const Quadratic<Integer> s{sp[0].to_integer(), sp[1].to_integer(), sp[2].to_integer()};
-    const RootStructure rs = exact_root_structure(f, s);
+    // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
+    const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     fill_full_evidence(f, s, scale, out, &rs);
     // The certificate reuses f, s and the isolation instead of recomputing them.
     out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots});

@@ -227,14 +227,18 @@ bool certainly_no_rational_root(const fmpz_poly_t f) {
 
 }  // namespace
 
-std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
+std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc,
+                                                   int sign_disc_f) {
   detail::flint_thread_cleanup_at_exit();
   if (fc[4] == 0 || fc[0] == 0 || sc[2] == 0) return std::nullopt;
   const FlintPoly f(fc), s(sc);
   fmpz_t z;
   fmpz_init(z);
-  fmpz_poly_discriminant(z, f.p);
-  const int disc = fmpz_sgn(z);
+  int disc = sign_disc_f;
+  if (disc == 0) {
+    fmpz_poly_discriminant(z, f.p);
+    disc = fmpz_sgn(z);
+  }
   fmpz_poly_resultant(z, f.p, s.p);
   const bool coprime = !fmpz_is_zero(z);
   fmpz_clear(z);
@@ -290,8 +294,8 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   return rs;
 }
 
-RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
-  if (auto fast = simple_root_structure(fc, sc)) return *fast;
+RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc, int sign_disc_f) {
+  if (auto fast = simple_root_structure(fc, sc, sign_disc_f)) return *fast;
   const Poly f = make_poly(fc), s = make_poly(sc);
   const Poly g = CGAL::gcd(f, s);
   const Poly ft = CGAL::integral_division_up_to_constant_factor(f, g);
