@@ -30,12 +30,12 @@ class IntegerForm {
   explicit IntegerForm(const Matrix4& q) {
     Integer l(1);
     for (int i = 0; i < 4; ++i)
-      for (int j = i; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), q(i, j).denominator().mpz());
+      for (int j = i; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(q(i, j).mpq()));
     for (int i = 0; i < 4; ++i)
       for (int j = i; j < 4; ++j) {
         mpz_init(z_[i][j]);
-        mpz_divexact(z_[i][j], l.mpz(), q(i, j).denominator().mpz());
-        mpz_mul(z_[i][j], z_[i][j], q(i, j).numerator().mpz());
+        mpz_divexact(z_[i][j], l.mpz(), mpq_denref(q(i, j).mpq()));
+        mpz_mul(z_[i][j], z_[i][j], mpq_numref(q(i, j).mpq()));
         if (j > i) mpz_mul_2exp(z_[i][j], z_[i][j], 1);  // off-diagonal entries appear twice
       }
   }
@@ -51,10 +51,10 @@ class IntegerForm {
     explicit Point(const V3& x) {
       for (auto& v : n) mpz_init(v);
       mpz_set_ui(n[3], 1);
-      for (int i = 0; i < 3; ++i) mpz_lcm(n[3], n[3], x[i].denominator().mpz());
+      for (int i = 0; i < 3; ++i) mpz_lcm(n[3], n[3], mpq_denref(x[i].mpq()));
       for (int i = 0; i < 3; ++i) {
-        mpz_divexact(n[i], n[3], x[i].denominator().mpz());
-        mpz_mul(n[i], n[i], x[i].numerator().mpz());
+        mpz_divexact(n[i], n[3], mpq_denref(x[i].mpq()));
+        mpz_mul(n[i], n[i], mpq_numref(x[i].mpq()));
       }
     }
     Point(const Point&) = delete;
@@ -476,12 +476,15 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
     V3 q;
     for (int i = 0; i < 3; ++i) q[i] = exact_rational(x[i]);
     consider(q);
+    V3 diff;
+    for (int i = 0; i < 3; ++i) diff[i] = q[i] - centre[i];
     for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
-      Integer two_k(1);
-      mpz_mul_2exp(two_k.mpz(), two_k.mpz(), static_cast<mp_bitcnt_t>(k));
-      const Rational t = Rational(1) - Rational(1) / Rational(two_k);
-      V3 y;
-      for (int i = 0; i < 3; ++i) y[i] = centre[i] + t * (q[i] - centre[i]);
+      V3 y;                             // centre + (1 - 2^-k)(q - centre) = q - 2^-k (q - centre)
+      for (int i = 0; i < 3; ++i) {
+        Rational step;
+        mpq_div_2exp(step.mpq(), diff[i].mpq(), static_cast<mp_bitcnt_t>(k));
+        y[i] = q[i] - step;
+      }
       consider(y);
     }
   };
@@ -532,13 +535,13 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
 std::optional<V3> centre_of(const Matrix4& e) {
   Integer l(1);
   for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), e(i, j).denominator().mpz());
+    for (int j = 0; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(e(i, j).mpq()));
   Integer k[3][4];  // [M | -m] times l
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 4; ++j) {
       const Rational& q = e(i, j);
-      mpz_divexact(k[i][j].mpz(), l.mpz(), q.denominator().mpz());
-      mpz_mul(k[i][j].mpz(), k[i][j].mpz(), q.numerator().mpz());
+      mpz_divexact(k[i][j].mpz(), l.mpz(), mpq_denref(q.mpq()));
+      mpz_mul(k[i][j].mpz(), k[i][j].mpz(), mpq_numref(q.mpq()));
       if (j == 3) mpz_neg(k[i][j].mpz(), k[i][j].mpz());
     }
   auto det3 = [&](int c0, int c1, int c2) {
@@ -671,7 +674,7 @@ Rational short_between(const Rational& lo, const Rational& hi) {
     Integer scaled, den(1);
     mpz_mul_2exp(den.mpz(), den.mpz(), bits);
     const Rational t = mid * Rational(den);
-    mpz_fdiv_q(scaled.mpz(), t.numerator().mpz(), t.denominator().mpz());
+    mpz_fdiv_q(scaled.mpz(), mpq_numref(t.mpq()), mpq_denref(t.mpq()));
     const Rational cand(scaled, den);
     if (lo < cand && cand < hi) return cand;
   }
