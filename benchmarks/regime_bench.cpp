@@ -8,7 +8,10 @@
 //   matrix     32 doubles -> exact_rational -> from_matrix -> decide_position (the old road)
 //   full       relpos::classify(e, p) with full evidence (f, s, roots, rho, certificate)
 //
-//   regime_bench [--n N] [--full N] [--seed S] [--batches B]
+//   regime_bench [--n N] [--full N] [--seed S] [--batches B] [--only POSITION]
+//
+// --only POSITION (C, E, I, ...) only repeats full evidence on the pairs in that position (a
+// profiling loop for perf record), then exits.
 //
 // Prints one line per path: median ns per pair over B batches, and the ratio to the naive median.
 #include <algorithm>
@@ -132,12 +135,14 @@ double per_call_median_ns(int n, F body) {
 int main(int argc, char** argv) {
   int n = 20000, n_full = 400, batches = 7;
   unsigned long seed = 20261124;
+  std::string only;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--n") n = std::atoi(argv[i + 1]);
     if (a == "--full") n_full = std::atoi(argv[i + 1]);
     if (a == "--seed") seed = std::strtoul(argv[i + 1], nullptr, 10);
     if (a == "--batches") batches = std::atoi(argv[i + 1]);
+    if (a == "--only") only = argv[i + 1];
   }
   std::mt19937_64 rng(seed);
   const std::vector<Raw> raw = make_regime(rng, n);
@@ -160,6 +165,18 @@ int main(int argc, char** argv) {
   std::printf("; naive double wrong or undecided on %d\n", naive_wrong);
 
   const auto U = [](int i) { return static_cast<std::size_t>(i); };
+  if (!only.empty()) {  // profiling loop: full evidence on one position only
+    int count = 0;
+    for (int rep = 0; rep < batches; ++rep)
+      for (int i = 0; i < std::min(n, n_full); ++i) {
+        if (to_string(decide_position(es[U(i)], ps[U(i)]).position) != only) continue;
+        const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
+        const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
+        count += classify(e, p, Evidence::Full).certificate.kind != Certificate::Kind::None;
+      }
+    std::printf("%s: %d certificates\n", only.c_str(), count);
+    return 0;
+  }
   const double naive = median_ns(n, batches, [&](int i) {
     const auto v = bench::naive_double(raw[U(i)].p, raw[U(i)].e);
     return v ? static_cast<int>(*v) : -1;

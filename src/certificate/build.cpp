@@ -22,6 +22,67 @@ using V3 = std::array<Rational, 3>;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
+/// Exact signs of X^T Q X, X = (x, 1), on integers: Q times the positive lcm of its denominators,
+/// x over the lcm D of its coordinates' denominators (D^2 X^T Q X = N^T Qz N, N = (D x, D)). No
+/// rational canonicalisation (gcd) per operation, and the temporaries live in reused mpz_t.
+class IntegerForm {
+ public:
+  explicit IntegerForm(const Matrix4& q) {
+    Integer l(1);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(q(i, j).mpq()));
+    for (int i = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j) {
+        mpz_init(z_[i][j]);
+        mpz_divexact(z_[i][j], l.mpz(), mpq_denref(q(i, j).mpq()));
+        mpz_mul(z_[i][j], z_[i][j], mpq_numref(q(i, j).mpq()));
+        if (j > i) mpz_mul_2exp(z_[i][j], z_[i][j], 1);  // off-diagonal entries appear twice
+      }
+  }
+  IntegerForm(const IntegerForm&) = delete;
+  IntegerForm& operator=(const IntegerForm&) = delete;
+  ~IntegerForm() {
+    for (int i = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j) mpz_clear(z_[i][j]);
+  }
+  /// Numerators N = (D x, D) of a point, shared by every form evaluated at it.
+  struct Point {
+    mpz_t n[4];
+    explicit Point(const V3& x) {
+      for (auto& v : n) mpz_init(v);
+      mpz_set_ui(n[3], 1);
+      for (int i = 0; i < 3; ++i) mpz_lcm(n[3], n[3], mpq_denref(x[i].mpq()));
+      for (int i = 0; i < 3; ++i) {
+        mpz_divexact(n[i], n[3], mpq_denref(x[i].mpq()));
+        mpz_mul(n[i], n[i], mpq_numref(x[i].mpq()));
+      }
+    }
+    Point(const Point&) = delete;
+    Point& operator=(const Point&) = delete;
+    ~Point() {
+      for (auto& v : n) mpz_clear(v);
+    }
+  };
+  /// sign(X^T Q X): Horner per row, N_i (sum_{j >= i} Qz_ij N_j).
+  int sign(const Point& x) const {
+    mpz_t acc, row;
+    mpz_init(acc);
+    mpz_init(row);
+    for (int i = 0; i < 4; ++i) {
+      mpz_set_ui(row, 0);
+      for (int j = i; j < 4; ++j) mpz_addmul(row, z_[i][j], x.n[j]);
+      mpz_addmul(acc, row, x.n[i]);
+    }
+    const int s = mpz_sgn(acc);
+    mpz_clear(acc);
+    mpz_clear(row);
+    return s;
+  }
+
+ private:
+  mpz_t z_[4][4];
+};
+
 /// The pair's blocks (E = [[M, m], [m^T, e0]], P = [[A, a], [a^T, p0]]), f, s and lambda_s.
 struct Pair {
   const Matrix4& E;
@@ -415,12 +476,15 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
     V3 q;
     for (int i = 0; i < 3; ++i) q[i] = exact_rational(x[i]);
     consider(q);
+    V3 diff;
+    for (int i = 0; i < 3; ++i) diff[i] = q[i] - centre[i];
     for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
-      Integer two_k(1);
-      mpz_mul_2exp(two_k.mpz(), two_k.mpz(), static_cast<mp_bitcnt_t>(k));
-      const Rational t = Rational(1) - Rational(1) / Rational(two_k);
-      V3 y;
-      for (int i = 0; i < 3; ++i) y[i] = centre[i] + t * (q[i] - centre[i]);
+      V3 y;                             // centre + (1 - 2^-k)(q - centre) = q - 2^-k (q - centre)
+      for (int i = 0; i < 3; ++i) {
+        Rational step;
+        mpq_div_2exp(step.mpq(), diff[i].mpq(), static_cast<mp_bitcnt_t>(k));
+        y[i] = q[i] - step;
+      }
       consider(y);
     }
   };
@@ -466,18 +530,57 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
   }
 }
 
+/// The centre -M^{-1} m of the ellipsoid, by Cramer's rule on E times the lcm of its denominators
+/// (integer determinants, one rational canonicalisation per coordinate); nullopt if M is singular.
+std::optional<V3> centre_of(const Matrix4& e) {
+  Integer l(1);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(e(i, j).mpq()));
+  Integer k[3][4];  // [M | -m] times l
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const Rational& q = e(i, j);
+      mpz_divexact(k[i][j].mpz(), l.mpz(), mpq_denref(q.mpq()));
+      mpz_mul(k[i][j].mpz(), k[i][j].mpz(), mpq_numref(q.mpq()));
+      if (j == 3) mpz_neg(k[i][j].mpz(), k[i][j].mpz());
+    }
+  auto det3 = [&](int c0, int c1, int c2) {
+    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
+           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
+           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
+  };
+  const Integer det = det3(0, 1, 2);
+  if (det == 0) return std::nullopt;
+  return V3{Rational(det3(3, 1, 2), det), Rational(det3(0, 3, 2), det), Rational(det3(0, 1, 3), det)};
+}
+
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 bool crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
+  const IntegerForm ez(pr.E), pz(pr.P);  // exact signs of e and p at the candidates
   std::function<void(const V3&)> consider = [&](const V3& x) {
-    if (pr.e_at(x) > 0) return;
-    const int s = sgn(pr.p_at(x));
+    const IntegerForm::Point xz(x);
+    if (ez.sign(xz) > 0) return;
+    const int s = pz.sign(xz);
     if (s < 0 && !inside) inside = x;
     if (s > 0 && !outside) outside = x;
   };
-  const auto centre = pr.x_of(Rational(0));
+  const auto centre = centre_of(pr.E);
   if (centre) consider(*centre);
-  if (centre) double_curve_search(pr, *centre, inside, outside, consider);
+  if (centre) {
+    // Candidates are pulled towards a dyadic centre (short exact arithmetic); the exact one if
+    // that is not strictly inside the solid.
+    V3 pull = *centre;
+    V3 dyadic;
+    bool finite = true;
+    for (int i = 0; i < 3; ++i) {
+      const double d = CGAL::to_double((*centre)[i]);
+      finite = finite && std::isfinite(d);
+      if (finite) dyadic[i] = exact_rational(d);
+    }
+    if (finite && ez.sign(IntegerForm::Point(dyadic)) < 0) pull = dyadic;
+    double_curve_search(pr, pull, inside, outside, consider);
+  }
   // Along the curve x(lambda): for lambda > 0 it minimises lambda p + e, so while e(x(lambda)) <= 0
   // it is the minimiser of p over a smaller solid, tending to the minimiser over the solid ellipsoid
   // as e(x(lambda)) -> 0 (section 8, min side); for lambda in (lambda_s, 0) likewise the maximiser.
@@ -571,7 +674,7 @@ Rational short_between(const Rational& lo, const Rational& hi) {
     Integer scaled, den(1);
     mpz_mul_2exp(den.mpz(), den.mpz(), bits);
     const Rational t = mid * Rational(den);
-    mpz_fdiv_q(scaled.mpz(), t.numerator().mpz(), t.denominator().mpz());
+    mpz_fdiv_q(scaled.mpz(), mpq_numref(t.mpq()), mpq_denref(t.mpq()));
     const Rational cand(scaled, den);
     if (lo < cand && cand < hi) return cand;
   }

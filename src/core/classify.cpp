@@ -474,9 +474,18 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E): the common-lcm form
     Integer scale;
     const auto [pz, ez] = to_integers(p.matrix(), e.matrix(), scale);
-    const Quartic<Integer> f = characteristic_polynomial<Integer>(pz, ez);
-    const Quadratic<Integer> s = special_polynomial<Integer>(pz, ez);
-    const RootStructure rs = exact_root_structure(f, s);
+    MatrixOf<PooledInteger> pp, ep;  // the generic formulas without heap traffic for temporaries
+    for (std::size_t i = 0; i < 16; ++i) {
+      pp.a[i] = PooledInteger(pz.a[i]);
+      ep.a[i] = PooledInteger(ez.a[i]);
+    }
+    const Quartic<PooledInteger> fp = characteristic_polynomial<PooledInteger>(pp, ep);
+    const Quadratic<PooledInteger> sp = special_polynomial<PooledInteger>(pp, ep);
+    const Quartic<Integer> f{fp[0].to_integer(), fp[1].to_integer(), fp[2].to_integer(), fp[3].to_integer(),
+                             fp[4].to_integer()};
+    const Quadratic<Integer> s{sp[0].to_integer(), sp[1].to_integer(), sp[2].to_integer()};
+    // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
+    const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     fill_full_evidence(f, s, scale, out, &rs);
     // The certificate reuses f, s and the isolation instead of recomputing them.
     out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots});

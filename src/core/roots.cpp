@@ -182,6 +182,23 @@ std::vector<double> approximate_real_roots(const double* c, int n, double bound)
 /// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
 bool certainly_no_rational_root(const fmpz_poly_t f) {
   detail::flint_thread_cleanup_at_exit();
+  // Small primes first, every residue tried by Horner on machine words: most irreducible quartics
+  // (and products of irreducible quadratics) have no root modulo one of the first few primes.
+  static const unsigned long small_primes[] = {3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47};
+  const slong deg = fmpz_poly_degree(f);
+  for (unsigned long p : small_primes) {
+    unsigned long c[5] = {0, 0, 0, 0, 0};
+    if (deg < 1 || deg > 4) break;
+    for (slong i = 0; i <= deg; ++i) c[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), p);
+    if (c[deg] == 0) continue;  // p divides lc(f): a rational root need not reduce
+    bool root = false;
+    for (unsigned long x = 0; x < p && !root; ++x) {
+      unsigned long v = 0;
+      for (slong i = deg; i >= 0; --i) v = (v * x + c[i]) % p;
+      root = v == 0;
+    }
+    if (!root) return true;
+  }
   static const mp_limb_t primes[] = {1000003, 1000033, 1000037, 1000039, 1000081, 1000099, 1000117, 1000121,
                                      1000133, 1000151, 1000159, 1000171, 1000183, 1000187, 1000193, 1000199};
   bool found = false;
@@ -210,14 +227,18 @@ bool certainly_no_rational_root(const fmpz_poly_t f) {
 
 }  // namespace
 
-std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
+std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc,
+                                                   int sign_disc_f) {
   detail::flint_thread_cleanup_at_exit();
   if (fc[4] == 0 || fc[0] == 0 || sc[2] == 0) return std::nullopt;
   const FlintPoly f(fc), s(sc);
   fmpz_t z;
   fmpz_init(z);
-  fmpz_poly_discriminant(z, f.p);
-  const int disc = fmpz_sgn(z);
+  int disc = sign_disc_f;
+  if (disc == 0) {
+    fmpz_poly_discriminant(z, f.p);
+    disc = fmpz_sgn(z);
+  }
   fmpz_poly_resultant(z, f.p, s.p);
   const bool coprime = !fmpz_is_zero(z);
   fmpz_clear(z);
@@ -273,8 +294,8 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   return rs;
 }
 
-RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
-  if (auto fast = simple_root_structure(fc, sc)) return *fast;
+RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc, int sign_disc_f) {
+  if (auto fast = simple_root_structure(fc, sc, sign_disc_f)) return *fast;
   const Poly f = make_poly(fc), s = make_poly(sc);
   const Poly g = CGAL::gcd(f, s);
   const Poly ft = CGAL::integral_division_up_to_constant_factor(f, g);

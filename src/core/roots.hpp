@@ -59,11 +59,14 @@ std::optional<RootFacts> exact_root_facts_by_factorisation(const Quartic<Integer
 /// (Disc(f) != 0, FLINT), coprime to s (Res(f, s) != 0), without rational roots (a prime p for which
 /// f mod p has no root in F_p), its real roots approximated in doubles and each certified by exact
 /// opposite signs of f at the (dyadic) ends of disjoint intervals, as many as Disc(f) says there are
-/// real roots. nullopt when any of this fails (then the general path decides).
-std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& f, const Quadratic<Integer>& s);
+/// real roots. nullopt when any of this fails (then the general path decides). `sign_disc_f`, when
+/// not 0, is the already certified sign of Disc(f) (e.g. a Verdict's), saving its computation.
+std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& f, const Quadratic<Integer>& s,
+                                                   int sign_disc_f = 0);
 
-/// Exact root structure of f (integer coefficients, f(0) != 0) relative to s.
-RootStructure exact_root_structure(const Quartic<Integer>& f, const Quadratic<Integer>& s);
+/// Exact root structure of f (integer coefficients, f(0) != 0) relative to s (`sign_disc_f`: as
+/// for simple_root_structure).
+RootStructure exact_root_structure(const Quartic<Integer>& f, const Quadratic<Integer>& s, int sign_disc_f = 0);
 
 /// Certified decimal approximations of the real roots of f: each string has `digits` significant
 /// digits and the true root lies within one unit of the last digit (the isolating interval is

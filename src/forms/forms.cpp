@@ -54,13 +54,37 @@ MatrixOf<Interval> to_intervals(const Matrix4& m) {
 }
 
 std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, const Matrix4& e, Integer& scale) {
+  MatrixOf<Integer> pi, ei;
+  // Dyadic entries (exact doubles): the lcm is the largest power of two, the entries shifts.
+  mp_bitcnt_t top = 0;
+  bool dyadic = true;
+  for (const auto* m : {&p, &e})
+    for (const Rational& q : m->a) {
+      const mpz_srcptr d = mpq_denref(q.mpq());
+      const mp_bitcnt_t k = mpz_scan1(d, 0);
+      if (k + 1 != mpz_sizeinbase(d, 2)) {
+        dyadic = false;
+        break;
+      }
+      top = std::max(top, k);
+    }
+  if (dyadic) {
+    scale = Integer(1);
+    mpz_mul_2exp(scale.mpz(), scale.mpz(), top);
+    for (std::size_t i = 0; i < 16; ++i) {
+      mpz_mul_2exp(pi.a[i].mpz(), mpq_numref(p.a[i].mpq()), top - mpz_scan1(mpq_denref(p.a[i].mpq()), 0));
+      mpz_mul_2exp(ei.a[i].mpz(), mpq_numref(e.a[i].mpq()), top - mpz_scan1(mpq_denref(e.a[i].mpq()), 0));
+    }
+    return {pi, ei};
+  }
   Integer l(1);
   for (const auto* m : {&p, &e}) lcm_of_denominators(m->a.begin(), m->a.end(), l);
   scale = l;
-  MatrixOf<Integer> pi, ei;
   for (std::size_t i = 0; i < 16; ++i) {
-    pi.a[i] = p.a[i].numerator() * (l / p.a[i].denominator());
-    ei.a[i] = e.a[i].numerator() * (l / e.a[i].denominator());
+    mpz_divexact(pi.a[i].mpz(), l.mpz(), mpq_denref(p.a[i].mpq()));
+    mpz_mul(pi.a[i].mpz(), pi.a[i].mpz(), mpq_numref(p.a[i].mpq()));
+    mpz_divexact(ei.a[i].mpz(), l.mpz(), mpq_denref(e.a[i].mpq()));
+    mpz_mul(ei.a[i].mpz(), ei.a[i].mpz(), mpq_numref(e.a[i].mpq()));
   }
   return {pi, ei};
 }
@@ -77,7 +101,7 @@ std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix
       for (int j = 0; j < 4; ++j) {
         const Rational& x = m(i, j);
         c(i, j) = (i == 3 && j == 3) ? x * t2 : (i == 3 || j == 3) ? x * tq : x;
-        mpz_lcm(l.mpz(), l.mpz(), c(i, j).denominator().mpz());
+        mpz_lcm(l.mpz(), l.mpz(), mpq_denref(c(i, j).mpq()));
       }
     MatrixOf<Integer> out;
     Integer g(0);
