@@ -396,6 +396,17 @@ TEST_CASE("first contact at sqrt(2): a sphere rising along the axis of z = x^2 +
   check_first_contact_consistent(tl, fc);
 }
 
+/// E, then TE at the single instant sqrt(2), then E again: one change, a graze.
+void check_grazes_at_sqrt2(const Timeline& tl) {
+  CHECK(span_positions(tl) == std::vector<Position>{Position::E, Position::TE, Position::E});
+  const auto changes = tl.changes();
+  REQUIRE(changes.size() == 1);
+  CHECK(*changes[0].before == Position::E);
+  CHECK(changes[0].at == Position::TE);
+  CHECK(*changes[0].after == Position::E);
+  check_sqrt_decimals(changes[0].time, Rational(2), 30);
+}
+
 TEST_CASE("grazing paths: E -> TE at one instant -> E", "[motion][grazing]") {
   // A sphere of radius 1/4 moving in the plane z = -1/4 below the vertex of z = x^2 + y^2/4 lies in
   // z <= 0; it meets the paraboloid (z >= 0) only when its top (x, 0, 0) is the vertex: x = 0.
@@ -419,13 +430,7 @@ TEST_CASE("grazing paths: E -> TE at one instant -> E", "[motion][grazing]") {
     CHECK(fc.position == Position::TE);
     CHECK(fc.time->decimals(30) == sqrt2_decimals(30));
     const Timeline tl = relpos::timeline(e0, m, p, q("0"), q("2"));
-    CHECK(span_positions(tl) == std::vector<Position>{Position::E, Position::TE, Position::E});
-    const auto changes = tl.changes();
-    REQUIRE(changes.size() == 1);
-    CHECK(*changes[0].before == Position::E);
-    CHECK(changes[0].at == Position::TE);
-    CHECK(*changes[0].after == Position::E);
-    check_sqrt_decimals(changes[0].time, Rational(2), 30);
+    check_grazes_at_sqrt2(tl);
     // Disc f has other real zeros on [0, 2] (roots of f merging away from contact): E on both sides.
     CHECK(tl.instants.size() > 3);
     check_against_sampling(tl, e0, m, p, 60, 14);
@@ -619,6 +624,68 @@ TEST_CASE("a rotation can change smallness; spans without it are classified too"
   check_against_sampling(tl, e0, m, p, 40, 21);
 }
 
+namespace {
+
+/// Random bodies on random paths through a random paraboloid z = x^2/a^2 + y^2/b^2 (a, b dyadic in
+/// [1, 2]): semi-axes axis_offset + a dyadic in [axis_lo, axis_hi], turned by an integer
+/// quaternion; a straight path from `start` to `target` (dyadic boxes), parabolic every
+/// `parabolic_every`-th path, turning about its centre every `turning_every`-th path.
+struct RandomPaths {
+  std::mt19937_64 rng;
+  int axis_lo, axis_hi, axis_bits;
+  Rational axis_offset;
+  int start_xy, start_z_lo, start_z_hi, target_xy, target_z_lo, target_z_hi, curve;
+  int parabolic_every, turning_every;
+
+  Rational dyadic(int lo, int hi, int bits) {  // a random multiple of 2^-bits in [lo, hi]
+    std::uniform_int_distribution<long> d(static_cast<long>(lo) * (1L << bits), static_cast<long>(hi) * (1L << bits));
+    return Rational(d(rng), 1L << bits);
+  }
+  struct Path {
+    Paraboloid p;
+    Ellipsoid e0;
+    RigidMotion m;
+  };
+  Path next(int k) {
+    std::uniform_int_distribution<int> small(-2, 2);
+    const Rational z(0);
+    const Paraboloid p = Paraboloid::standard({z, z, z}, dyadic(1, 2, 2), dyadic(1, 2, 2));
+    relpos::Quaternion rot{Rational(1), Rational(small(rng)), Rational(small(rng)), Rational(small(rng))};
+    auto axis = [&] { return axis_offset + dyadic(axis_lo, axis_hi, axis_bits); };
+    const Ellipsoid e0 = Ellipsoid::from_axes({z, z, z}, {axis(), axis(), axis()}, rot);
+    RigidMotion m;
+    const Vector3 start{dyadic(-start_xy, start_xy, 2), dyadic(-start_xy, start_xy, 2),
+                        dyadic(start_z_lo, start_z_hi, 2)};
+    const Vector3 target{dyadic(-target_xy, target_xy, 2), dyadic(-target_xy, target_xy, 2),
+                         dyadic(target_z_lo, target_z_hi, 2)};
+    for (std::size_t i = 0; i < 3; ++i) {
+      m.translation[i] = {start[i], target[i] - start[i]};
+      if (k % parabolic_every == parabolic_every - 1) m.translation[i].push_back(dyadic(-curve, curve, 1));
+    }
+    if (k % turning_every == turning_every - 1)
+      m.rotation = std::array<TimePolynomial, 4>{poly({"1"}), poly({"0", "1"}), poly({}), poly({})};
+    return {p, e0, m};
+  }
+};
+
+/// The subresultant (instant) method equals classify() at every rational instant; returns the
+/// number of irrational instants.
+int check_rational_instants(const Timeline& tl, const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p) {
+  int irrational = 0;
+  for (const auto& inst : tl.instants) {
+    if (!inst.time.is_rational()) {
+      ++irrational;
+      continue;
+    }
+    const Rational t = *inst.time.exact();
+    const auto sub = relpos::position_by_subresultants(e0, m, p, t);
+    if (sub) CHECK(*sub == relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).verdict.position);
+  }
+  return irrational;
+}
+
+}  // namespace
+
 TEST_CASE("random paths: timelines agree with dense classification; both methods agree at rational instants",
           "[motion][random]") {
   // Random ellipsoids (small dyadic semi-axes, integer quaternions) on straight or parabolic paths
@@ -627,42 +694,17 @@ TEST_CASE("random paths: timelines agree with dense classification; both methods
   // and the subresultant method with classify() at every rational instant.
   const std::uint64_t seed = 0x5EED1;
   CAPTURE(seed);
-  std::mt19937_64 rng(seed);
-  auto dyadic = [&](int lo, int hi, int bits) {  // a random multiple of 2^-bits in [lo, hi]
-    std::uniform_int_distribution<long> d(static_cast<long>(lo) * (1L << bits), static_cast<long>(hi) * (1L << bits));
-    return Rational(d(rng), 1L << bits);
-  };
-  std::uniform_int_distribution<int> small(-2, 2);
+  RandomPaths gen{std::mt19937_64(seed), 0, 1, 3, q("1/8"), 2, -2, 0, 1, 1, 2, 1, 3, 4};
   int rational_instants = 0, irrational_instants = 0;
   for (int k = 0; k < 12; ++k) {
     CAPTURE(k);
-    const Rational z(0);
-    const Paraboloid p = Paraboloid::standard({z, z, z}, dyadic(1, 2, 2), dyadic(1, 2, 2));
-    relpos::Quaternion rot{Rational(1), Rational(small(rng)), Rational(small(rng)), Rational(small(rng))};
-    const Ellipsoid e0 = Ellipsoid::from_axes(
-        {z, z, z}, {dyadic(0, 1, 3) + q("1/8"), dyadic(0, 1, 3) + q("1/8"), dyadic(0, 1, 3) + q("1/8")}, rot);
-    RigidMotion m;
-    const Vector3 start{dyadic(-2, 2, 2), dyadic(-2, 2, 2), dyadic(-2, 0, 2)};
-    const Vector3 target{dyadic(-1, 1, 2), dyadic(-1, 1, 2), dyadic(1, 2, 2)};
-    for (std::size_t i = 0; i < 3; ++i) {
-      m.translation[i] = {start[i], target[i] - start[i]};
-      if (k % 3 == 1) m.translation[i].push_back(dyadic(-1, 1, 1));  // a parabolic path
-    }
-    if (k % 4 == 3)  // a body turning about its centre while it moves
-      m.rotation = std::array<TimePolynomial, 4>{poly({"1"}), poly({"0", "1"}), poly({}), poly({})};
+    const auto [p, e0, m] = gen.next(k);
     const Timeline tl = relpos::timeline(e0, m, p, q("0"), q("1"));
     check_against_sampling(tl, e0, m, p, 30, static_cast<unsigned>(seed + static_cast<unsigned>(k)));
     check_first_contact_consistent(tl, relpos::first_contact(e0, m, p, q("0"), q("1")));
-    for (const auto& inst : tl.instants) {
-      if (!inst.time.is_rational()) {
-        ++irrational_instants;
-        continue;
-      }
-      ++rational_instants;
-      const Rational t = *inst.time.exact();
-      const auto sub = relpos::position_by_subresultants(e0, m, p, t);
-      if (sub) CHECK(*sub == relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).verdict.position);
-    }
+    const int irrational = check_rational_instants(tl, e0, m, p);
+    irrational_instants += irrational;
+    rational_instants += static_cast<int>(tl.instants.size()) - irrational;
   }
   CHECK(irrational_instants > 0);
   CHECK(rational_instants >= 24);  // t0 and t1 of each path at least
@@ -671,6 +713,19 @@ TEST_CASE("random paths: timelines agree with dense classification; both methods
 // ------------------------------------------------------------------------------------------------
 // Bodies that are not small (math.md section 8): every instant is decided, irrational ones included
 // (definiteness of l P + E(t*) at the roots of f, instant_position.hpp).
+
+/// A timeline over [0, t1] whose instants respect the closure, that agrees with classify() at 40
+/// samples, and whose first contact is TE at sqrt(2), as the timeline says.
+void check_touches_first_at_sqrt2(const Timeline& tl, const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p,
+                                  const Rational& t1, unsigned seed) {
+  check_closure_and_size(tl, false);
+  check_against_sampling(tl, e0, m, p, 40, seed);
+  const FirstContact fc = relpos::first_contact(e0, m, p, q("0"), t1);
+  REQUIRE(fc.kind == FirstContact::Kind::Contact);
+  CHECK(fc.position == Position::TE);
+  check_sqrt_decimals(*fc.time, Rational(2), 30);
+  check_first_contact_consistent(tl, fc);
+}
 
 TEST_CASE("a big sphere on the axis: TE at sqrt(2), inner tangency along a circle or two points at sqrt(17)/2",
           "[motion][irrational][anysize]") {
@@ -691,13 +746,7 @@ TEST_CASE("a big sphere on the axis: TE at sqrt(2), inner tangency along a circl
           std::vector<Position>{Position::E, Position::TE, Position::C, Position::TI, Position::I});
     check_sqrt_decimals(instant_with(tl, Position::TE).time, Rational(2), 30);
     check_sqrt_decimals(instant_with(tl, Position::TI).time, q("17/4"), 30);
-    check_closure_and_size(tl, false);
-    check_against_sampling(tl, e0, m, p, 40, 31);
-    const FirstContact fc = relpos::first_contact(e0, m, p, q("0"), q("3"));
-    REQUIRE(fc.kind == FirstContact::Kind::Contact);
-    CHECK(fc.position == Position::TE);
-    check_sqrt_decimals(*fc.time, Rational(2), 30);
-    check_first_contact_consistent(tl, fc);
+    check_touches_first_at_sqrt2(tl, e0, m, p, q("3"), 31);
     // The same configurations at rational instants (h = t - 3): the instant method agrees with classify.
     const RigidMotion lin = translation(poly({}), poly({}), poly({"-3", "1"}));
     for (const char* t : {"2", "17/4"}) {
@@ -722,13 +771,7 @@ TEST_CASE("a big sphere moved sideways touches the wall from outside at sqrt(2)"
   CHECK(std::vector<Position>(spans.begin(), spans.begin() + 3) ==
         std::vector<Position>{Position::E, Position::TE, Position::C});
   check_sqrt_decimals(instant_with(tl, Position::TE).time, Rational(2), 30);
-  check_closure_and_size(tl, false);
-  check_against_sampling(tl, e0, m, p, 40, 32);
-  const FirstContact fc = relpos::first_contact(e0, m, p, q("0"), q("3/2"));
-  REQUIRE(fc.kind == FirstContact::Kind::Contact);
-  CHECK(fc.position == Position::TE);
-  check_sqrt_decimals(*fc.time, Rational(2), 30);
-  check_first_contact_consistent(tl, fc);
+  check_touches_first_at_sqrt2(tl, e0, m, p, q("3/2"), 32);
 }
 
 TEST_CASE("a big sphere grazes the vertex: E -> TE at sqrt(2) -> E; discriminant zeros change nothing",
@@ -741,13 +784,7 @@ TEST_CASE("a big sphere grazes the vertex: E -> TE at sqrt(2) -> E; discriminant
     INFO("paraboloid x^2 + y^2/b^2, b = " << b);
     const Paraboloid p = standard("1", b);
     const Timeline tl = relpos::timeline(e0, m, p, q("0"), q("2"));
-    CHECK(span_positions(tl) == std::vector<Position>{Position::E, Position::TE, Position::E});
-    const auto changes = tl.changes();
-    REQUIRE(changes.size() == 1);
-    CHECK(*changes[0].before == Position::E);
-    CHECK(changes[0].at == Position::TE);
-    CHECK(*changes[0].after == Position::E);
-    check_sqrt_decimals(changes[0].time, Rational(2), 30);
+    check_grazes_at_sqrt2(tl);
     check_closure_and_size(tl, false);
     check_against_sampling(tl, e0, m, p, 40, 33);
     const FirstContact fc = relpos::first_contact(e0, m, p, q("0"), q("2"));
@@ -808,42 +845,20 @@ TEST_CASE("random motions of bodies that are not small: every instant decided an
   // the rational instants.
   const std::uint64_t seed = 0xB16B0D1;
   CAPTURE(seed);
-  std::mt19937_64 rng(seed);
-  auto dyadic = [&](int lo, int hi, int bits) {
-    std::uniform_int_distribution<long> d(static_cast<long>(lo) * (1L << bits), static_cast<long>(hi) * (1L << bits));
-    return Rational(d(rng), 1L << bits);
-  };
-  std::uniform_int_distribution<int> small(-2, 2);
+  RandomPaths gen{std::mt19937_64(seed), 1, 3, 2, Rational(0), 4, -5, 0, 2, 2, 8, 2, 2, 5};
   int irrational_instants = 0, decided_by_definiteness = 0, not_small = 0;
   for (int k = 0; k < 40; ++k) {
     CAPTURE(k);
-    const Rational z(0);
-    const Paraboloid p = Paraboloid::standard({z, z, z}, dyadic(1, 2, 2), dyadic(1, 2, 2));
-    relpos::Quaternion rot{Rational(1), Rational(small(rng)), Rational(small(rng)), Rational(small(rng))};
-    const Ellipsoid e0 = Ellipsoid::from_axes({z, z, z}, {dyadic(1, 3, 2), dyadic(1, 3, 2), dyadic(1, 3, 2)}, rot);
-    RigidMotion m;
-    const Vector3 start{dyadic(-4, 4, 2), dyadic(-4, 4, 2), dyadic(-5, 0, 2)};
-    const Vector3 target{dyadic(-2, 2, 2), dyadic(-2, 2, 2), dyadic(2, 8, 2)};
-    for (std::size_t i = 0; i < 3; ++i) {
-      m.translation[i] = {start[i], target[i] - start[i]};
-      if (k % 2 == 1) m.translation[i].push_back(dyadic(-2, 2, 1));  // a parabolic path
-    }
-    if (k % 5 == 4) m.rotation = std::array<TimePolynomial, 4>{poly({"1"}), poly({"0", "1"}), poly({}), poly({})};
+    const auto [p, e0, m] = gen.next(k);
     Timeline tl;
     REQUIRE_NOTHROW(tl = relpos::timeline(e0, m, p, q("0"), q("1")));
     check_closure_and_size(tl, m.rotation ? std::nullopt : std::optional<bool>(tl.instants.front().small));
     check_against_sampling(tl, e0, m, p, 20, static_cast<unsigned>(seed + static_cast<unsigned>(k)));
     check_first_contact_consistent(tl, relpos::first_contact(e0, m, p, q("0"), q("1")));
+    irrational_instants += check_rational_instants(tl, e0, m, p);
     for (const auto& inst : tl.instants) {
       if (!inst.small) ++not_small;
-      if (!inst.time.is_rational()) {
-        ++irrational_instants;
-        if (inst.how.find("definite") != std::string::npos) ++decided_by_definiteness;
-        continue;
-      }
-      const Rational t = *inst.time.exact();
-      const auto sub = relpos::position_by_subresultants(e0, m, p, t);
-      if (sub) CHECK(*sub == relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).verdict.position);
+      if (!inst.time.is_rational() && inst.how.find("definite") != std::string::npos) ++decided_by_definiteness;
     }
   }
   INFO(irrational_instants << " irrational instants, " << decided_by_definiteness << " by definiteness, " << not_small
