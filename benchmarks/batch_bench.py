@@ -22,19 +22,27 @@ import tempfile
 import time
 
 
-def write_regime(path, lines, seed=12):
+def write_regime(path, lines, seed=12, form="sphere"):
+    """form "sphere": sphere and standard paraboloid (6 numbers a line); "matrix": the same bodies
+    as two 4x4 matrices of doubles (32 numbers a line, what a float pipeline holds)."""
     rng = random.Random(seed)
+    f = lambda v: "%.17g" % v
     with open(path, "w") as out:
         for i in range(lines):
             a, b = rng.uniform(0.8, 2.0), rng.uniform(0.8, 2.0)
             r = rng.uniform(0.01, 0.2)
             x, y = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3)
             z = x * x / a / a + y * y / b / b + rng.uniform(-0.4, 0.6)
-            f = lambda v: "%.17g" % v
-            out.write(
-                '{"id":%d,"ellipsoid":{"sphere":{"center":[%s,%s,%s],"radius":%s}},'
-                '"paraboloid":{"vertex":[0,0,0],"a":%s,"b":%s}}\n' % (i, f(x), f(y), f(z), f(r), f(a), f(b))
-            )
+            if form == "sphere":
+                out.write(
+                    '{"id":%d,"ellipsoid":{"sphere":{"center":[%s,%s,%s],"radius":%s}},'
+                    '"paraboloid":{"vertex":[0,0,0],"a":%s,"b":%s}}\n' % (i, f(x), f(y), f(z), f(r), f(a), f(b))
+                )
+                continue
+            e = [[1, 0, 0, -x], [0, 1, 0, -y], [0, 0, 1, -z], [-x, -y, -z, x * x + y * y + z * z - r * r]]
+            p = [[1 / a / a, 0, 0, 0], [0, 1 / b / b, 0, 0], [0, 0, 0, -0.5], [0, 0, -0.5, 0]]
+            m = lambda q: "[" + ",".join("[" + ",".join(f(v) for v in row) + "]" for row in q) + "]"
+            out.write('{"id":%d,"ellipsoid":{"matrix":%s},"paraboloid":{"matrix":%s}}\n' % (i, m(e), m(p)))
 
 
 def best_time(cmd, repeat, out_path):
@@ -59,12 +67,13 @@ def main():
     ap.add_argument("--lines", type=int, default=20000)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--file", help="use this JSON Lines file instead of writing the regime file")
+    ap.add_argument("--form", choices=("sphere", "matrix"), default="sphere", help="how the regime file writes the bodies")
     args = ap.parse_args()
 
     with tempfile.TemporaryDirectory() as tmp:
         data = args.file or os.path.join(tmp, "regime.jsonl")
         if not args.file:
-            write_regime(data, args.lines)
+            write_regime(data, args.lines, form=args.form)
         lines = sum(1 for _ in open(data))
         loads = [sys.executable, "-c", "import json,sys\nfor l in open(sys.argv[1]): json.loads(l)", data]
         runs = [

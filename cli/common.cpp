@@ -128,4 +128,58 @@ int open_input(const std::string& file) {
   return fd;
 }
 
+WorkerPool::WorkerPool(unsigned threads) {
+  for (unsigned w = 1; w < threads; ++w) workers_.emplace_back([this] { work(); });
+}
+
+WorkerPool::~WorkerPool() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  start_.notify_all();
+  for (auto& t : workers_) t.join();
+}
+
+void WorkerPool::drain() {
+  for (std::size_t i; (i = next_.fetch_add(1)) < size_;) (*task_)(i);
+}
+
+void WorkerPool::work() {
+  unsigned long seen = 0;
+  for (;;) {
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      start_.wait(lock, [&] { return stop_ || generation_ != seen; });
+      if (stop_) return;
+      seen = generation_;
+    }
+    drain();
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++finished_;
+    }
+    done_.notify_one();
+  }
+}
+
+void WorkerPool::run(std::size_t n, const std::function<void(std::size_t)>& f) {
+  if (workers_.empty() || n < 2) {
+    for (std::size_t i = 0; i < n; ++i) f(i);
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    task_ = &f;
+    size_ = n;
+    next_.store(0);
+    finished_ = 0;
+    ++generation_;
+  }
+  start_.notify_all();
+  drain();
+  std::unique_lock<std::mutex> lock(mutex_);
+  done_.wait(lock, [&] { return finished_ == workers_.size(); });
+}
+
 }  // namespace relpos_cli

@@ -208,20 +208,13 @@ int run_classify(Args& args) {
 
 namespace {
 
-/// Answer lines[i] into answers[i] for every i, on `threads` threads (dynamic: lines differ in cost).
+/// Answer lines[i] into answers[i] for every i, on the pool's threads.
 void answer_all(const std::vector<std::string>& lines, long first_number, const relpos::io::BatchOptions& options,
-                unsigned threads, std::vector<std::string>& answers) {
-  answers.assign(lines.size(), std::string());
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < lines.size();)
-      answers[i] = relpos::io::answer_batch_line(lines[i], first_number + static_cast<long>(i), options);
-  };
-  const unsigned n = static_cast<unsigned>(std::min<std::size_t>(threads, (lines.size() + 7) / 8));
-  std::vector<std::thread> pool;
-  for (unsigned w = 1; w < n; ++w) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+                WorkerPool& pool, std::vector<std::string>& answers) {
+  answers.resize(lines.size());
+  pool.run(lines.size(), [&](std::size_t i) {
+    answers[i] = relpos::io::answer_batch_line(lines[i], first_number + static_cast<long>(i), options);
+  });
 }
 
 }  // namespace
@@ -261,6 +254,7 @@ int run_batch(Args& args) {
   const std::string name = file && *file != "-" ? *file : "<stdin>";
   LineReader reader(fd, options.max_line_bytes);
   Output out;
+  WorkerPool pool(threads);
   // Lines are answered in chunks (on the threads) and written in input order; the output is flushed
   // whenever the input has nothing more ready, so interactive use is answered line by line.
   const std::size_t chunk = threads > 1 ? 64 * std::size_t(threads) : 16;
@@ -287,7 +281,7 @@ int run_batch(Args& args) {
                                                                     : std::string());
       lines.push_back(status == LineReader::Status::Line ? std::move(line) : std::string());
     }
-    answer_all(lines, number + 1, options, threads, answers);
+    answer_all(lines, number + 1, options, pool, answers);
     for (std::size_t i = 0; i < lines.size(); ++i) {
       out.write(refused[i].empty() ? answers[i]
                                    : relpos::io::error_line(std::to_string(number + 1 + long(i)), refused[i]));

@@ -84,23 +84,47 @@ Matrix4 matrix_from_coefficients(const Coefficients10& c);
 /// Exact rotation matrix R(q)/|q|^2 of a non-zero quaternion.
 Matrix3 rotation_from_quaternion(const Quaternion& q);
 
+class Ellipsoid;
+class Paraboloid;
+
 namespace detail {
+
+/// Certified double enclosures lo[i] <= entry i <= hi[i] of a matrix (row-major) whose entries are
+/// not all doubles: the filters' input for a quadric read from decimal text.
+struct EnclosureMatrix4 {
+  DoubleMatrix4 lo{}, hi{};
+};
+
+/// Builds the exact matrix of a quadric on first use (for a quadric read from text: the exact
+/// parse of that text, run only when an exact stage or the evidence asks for the rationals).
+class ExactSource {
+ public:
+  virtual ~ExactSource() = default;
+  virtual Matrix4 build() const = 0;
+};
 
 /// The matrix of a validated quadric: exact rationals, and the doubles when every entry is one.
 /// A quadric made from doubles (from_doubles) builds its rationals only on first use by an exact
-/// stage (thread-safe: a quadric shared by several threads materializes once; copies share it).
+/// stage (thread-safe: a quadric shared by several threads materializes once; copies share it);
+/// so does one made from enclosures and an ExactSource.
 class QuadricMatrix {
  public:
   explicit QuadricMatrix(Matrix4 m);
+  /// Entries known by enclosures (not all lo == hi) and built exactly by `source` on first use.
+  /// The caller proves the shape, the sign normalization and the size limit (within_size_limit()).
+  QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source);
   /// From doubles that are all finite (checked by the caller); no heap allocation.
   explicit QuadricMatrix(const DoubleMatrix4& d);
   /// The same with d's power_of_two_normalized copy already computed (by the caller's filter).
   QuadricMatrix(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized);
-  QuadricMatrix(const QuadricMatrix& o) : d_(o.d_), n_(o.n_), m_(std::atomic_load(&o.m_)) {}
+  QuadricMatrix(const QuadricMatrix& o)
+      : d_(o.d_), n_(o.n_), enclosure_(o.enclosure_), source_(o.source_), m_(std::atomic_load(&o.m_)) {}
   QuadricMatrix& operator=(const QuadricMatrix& o) {
     if (this != &o) {
       d_ = o.d_;
       n_ = o.n_;
+      enclosure_ = o.enclosure_;
+      source_ = o.source_;
       std::atomic_store(&m_, std::atomic_load(&o.m_));
     }
     return *this;
@@ -111,12 +135,23 @@ class QuadricMatrix {
   }
   const std::optional<DoubleMatrix4>& doubles() const { return d_; }
   const std::optional<DoubleMatrix4>& filter_doubles() const { return n_; }
+  /// Enclosures of the entries when the quadric was made from them (nullopt otherwise).
+  const std::optional<EnclosureMatrix4>& enclosure() const { return enclosure_; }
+  /// True when the primitive integer form is known to be within kMaxNormalizedBits without
+  /// building it: doubles, or a source whose reader bounds its numbers.
+  bool within_size_limit() const { return d_.has_value() || source_ != nullptr; }
 
  private:
   const Matrix4& materialize() const;
   std::optional<DoubleMatrix4> d_, n_;
+  std::optional<EnclosureMatrix4> enclosure_;
+  std::shared_ptr<const ExactSource> source_;
   mutable std::shared_ptr<const Matrix4> m_;
 };
+
+/// A quadric whose shape and sign normalization the caller has certified (src/io's fast reader).
+Ellipsoid make_ellipsoid(QuadricMatrix m);
+Paraboloid make_paraboloid(QuadricMatrix m);
 
 }  // namespace detail
 
@@ -159,8 +194,11 @@ class Ellipsoid {
   /// doubles(), power-of-two normalized once for the static filter (cached: a quadric is usually
   /// classified against many others).
   const std::optional<DoubleMatrix4>& filter_doubles() const { return m_.filter_doubles(); }
+  /// The storage of the matrix (its enclosures, whether its size is known to be within the limit).
+  const detail::QuadricMatrix& storage() const { return m_; }
 
  private:
+  friend Ellipsoid detail::make_ellipsoid(detail::QuadricMatrix m);
   explicit Ellipsoid(Matrix4 m) : m_(std::move(m)) {}
   explicit Ellipsoid(const DoubleMatrix4& d) : m_(d) {}
   explicit Ellipsoid(detail::QuadricMatrix m) : m_(std::move(m)) {}
@@ -192,8 +230,11 @@ class Paraboloid {
   /// doubles(), power-of-two normalized once for the static filter (cached: a quadric is usually
   /// classified against many others).
   const std::optional<DoubleMatrix4>& filter_doubles() const { return m_.filter_doubles(); }
+  /// The storage of the matrix (its enclosures, whether its size is known to be within the limit).
+  const detail::QuadricMatrix& storage() const { return m_; }
 
  private:
+  friend Paraboloid detail::make_paraboloid(detail::QuadricMatrix m);
   explicit Paraboloid(Matrix4 m) : m_(std::move(m)) {}
   explicit Paraboloid(const DoubleMatrix4& d) : m_(d) {}
   explicit Paraboloid(detail::QuadricMatrix m) : m_(std::move(m)) {}

@@ -294,6 +294,33 @@ bool decide_from_witness(const DoubleMatrix4& p, const DoubleMatrix4& e, const D
   return true;
 }
 
+/// The entries of a quadric as intervals for stage 2, without building its rationals when it has
+/// doubles or stored enclosures (scaled by a power of two; rounding towards +inf).
+template <class Q>
+MatrixOf<Interval> interval_entries(const Q& q) {
+  if (q.doubles()) return to_intervals(*q.doubles());
+  if (q.storage().enclosure()) return to_intervals(*q.storage().enclosure());
+  return to_intervals(q.matrix());
+}
+
+/// Degenerate enclosures of a matrix of doubles, else certified ones of its rationals (one quadric
+/// of a pair read from text, the other built otherwise).
+template <class Q>
+detail::EnclosureMatrix4 enclosure_of(const Q& q) {
+  detail::EnclosureMatrix4 out;
+  if (q.doubles()) {
+    out.lo = out.hi = *q.doubles();
+    return out;
+  }
+  const Matrix4& m = q.matrix();
+  for (std::size_t i = 0; i < 16; ++i) {
+    const std::pair<double, double> b = CGAL::to_interval(m.a[i]);
+    out.lo[i] = b.first;
+    out.hi[i] = b.second;
+  }
+  return out;
+}
+
 /// Exact data of a pair, computed only when an exact stage runs or full evidence is asked for.
 /// f and s in the compact integer form (to_compact_integers): roots scaled by a positive constant,
 /// so only sign and multiplicity facts may be read from them. Evaluated on PooledInteger (no heap
@@ -336,9 +363,7 @@ void settle_gap(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdic
     }
     if (!g) {
       CGAL::Protect_FPU_rounding<true> guard;
-      const bool dbl = e.doubles() && p.doubles();
-      const MatrixOf<Interval> pi = dbl ? to_intervals(*p.doubles()) : to_intervals(p.matrix());
-      const MatrixOf<Interval> ei = dbl ? to_intervals(*e.doubles()) : to_intervals(e.matrix());
+      const MatrixOf<Interval> pi = interval_entries(p), ei = interval_entries(e);
       g = anysize::roots_above_lambda_s(characteristic_polynomial<Interval>(pi, ei),
                                         special_polynomial<Interval>(pi, ei));
       stage = std::max(stage, Stage::Interval);
@@ -388,16 +413,23 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
         v.stage = Stage::MultipleRootWitness;
         if (decide_from_witness(*p.doubles(), *e.doubles(), d, v) && decided(v)) return v;
       }
-    } else if (nearest) {  // stage 1' for rational entries: double enclosures of the entries
+    } else if (nearest) {  // stage 1' for other entries: double enclosures (stored, or of the rationals)
       v.stage = Stage::SemiStaticDouble;
-      d = semi_static_filter_signs(p.matrix(), e.matrix());
+      const auto& pe = p.storage().enclosure();
+      const auto& ee = e.storage().enclosure();
+      if (pe && ee)
+        d = semi_static_filter_signs(*pe, *ee);
+      else if (pe)
+        d = semi_static_filter_signs(*pe, enclosure_of(e));
+      else if (ee)
+        d = semi_static_filter_signs(enclosure_of(p), *ee);
+      else
+        d = semi_static_filter_signs(p.matrix(), e.matrix());
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
     }
     v.stage = Stage::Interval;               // stage 2: interval arithmetic
     CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false> needs rounding towards +inf
-    const bool dbl = e.doubles() && p.doubles();
-    const MatrixOf<Interval> pi = dbl ? to_intervals(*p.doubles()) : to_intervals(p.matrix());
-    const MatrixOf<Interval> ei = dbl ? to_intervals(*e.doubles()) : to_intervals(e.matrix());
+    const MatrixOf<Interval> pi = interval_entries(p), ei = interval_entries(e);
     merge_certain(d, signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)));
     if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
   }

@@ -190,15 +190,25 @@ QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d) : d_(d), n_(power_of_two_no
 QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized)
     : d_(d), n_(normalized) {}
 
+QuadricMatrix::QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source)
+    : enclosure_(enclosure), source_(std::move(source)) {}
+
 const Matrix4& QuadricMatrix::materialize() const {
   auto built = std::make_shared<Matrix4>();
-  for (std::size_t i = 0; i < 16; ++i) built->a[i] = Rational((*d_)[i]);  // finite: exact
+  if (d_) {
+    for (std::size_t i = 0; i < 16; ++i) built->a[i] = Rational((*d_)[i]);  // finite: exact
+  } else {
+    *built = source_->build();
+  }
   std::shared_ptr<const Matrix4> expected;
   std::shared_ptr<const Matrix4> desired = std::move(built);
   // The first thread to finish publishes its matrix; the others use that one (same values).
   if (std::atomic_compare_exchange_strong(&m_, &expected, desired)) return *desired;
   return *expected;
 }
+
+Ellipsoid make_ellipsoid(QuadricMatrix m) { return Ellipsoid(std::move(m)); }
+Paraboloid make_paraboloid(QuadricMatrix m) { return Paraboloid(std::move(m)); }
 
 }  // namespace detail
 
@@ -530,7 +540,8 @@ void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p) {
     const std::size_t bound = normalized_bits_bound(m);
     return bound <= kMaxNormalizedBits ? bound : normalized_bits(m);
   };
-  const std::size_t bits = std::max(e.doubles() ? 0 : bits_of(e.matrix()), p.doubles() ? 0 : bits_of(p.matrix()));
+  const std::size_t bits = std::max(e.storage().within_size_limit() ? 0 : bits_of(e.matrix()),
+                                    p.storage().within_size_limit() ? 0 : bits_of(p.matrix()));
   if (bits > kMaxNormalizedBits)
     throw InputError(
         "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "

@@ -22,15 +22,20 @@ namespace impl {
 
 using I = CGAL::Interval_nt<false>;
 
+/// The entries of d as T, read through m(i, j) by the formulas below.
 template <class T>
-T entry(const DoubleMatrix4& d, int i, int j) {
-  return T(d[static_cast<std::size_t>(4 * i + j)]);
+auto entries(const DoubleMatrix4& d) {
+  return [&d](int i, int j) { return T(d[static_cast<std::size_t>(4 * i + j)]); };
+}
+template <class T>
+auto entries(const std::array<T, 16>& d) {
+  return [&d](int i, int j) { return d[static_cast<std::size_t>(4 * i + j)]; };
 }
 
 /// det of the symmetric 4x4 matrix by the 2x2-minor expansion (Laplace on the first two rows).
-template <class T>
-T det4(const DoubleMatrix4& d) {
-  auto m = [&](int i, int j) { return entry<T>(d, i, j); };
+template <class T, class M>
+T det4(const M& d) {
+  const auto m = entries<T>(d);
   const T s0 = m(0, 0) * m(1, 1) - m(1, 0) * m(0, 1);
   const T s1 = m(0, 0) * m(1, 2) - m(1, 0) * m(0, 2);
   const T s2 = m(0, 0) * m(1, 3) - m(1, 0) * m(0, 3);
@@ -46,9 +51,9 @@ T det4(const DoubleMatrix4& d) {
   return s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0;
 }
 
-template <class T>
-T det3(const DoubleMatrix4& d) {
-  auto m = [&](int i, int j) { return entry<T>(d, i, j); };
+template <class T, class M>
+T det3(const M& d) {
+  const auto m = entries<T>(d);
   return m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) - m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
          m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
 }
@@ -82,6 +87,12 @@ template <class MagnitudeOf>
 int filtered_sign(double value, double most, MagnitudeOf magnitude) {
   if (const int s = semi_static_sign(value, most)) return s;
   return semi_static_sign(value, magnitude().v);
+}
+
+inline std::array<I, 16> interval_entries(const DoubleMatrix4& d) {
+  std::array<I, 16> out;
+  for (std::size_t k = 0; k < 16; ++k) out[k] = I(d[k]);
+  return out;
 }
 
 inline int certain_sign(const I& x) {
@@ -130,16 +141,16 @@ struct Expansion {
   }
 };
 
+/// Every term of det Q3 = a d f + 2 b c e - a e^2 - f b^2 - d c^2 ([[a, b, c], [b, d, e], [c, e, f]])
+/// has a factor that is exactly zero (axis-aligned paraboloids): det Q3 = 0 without arithmetic.
+inline bool zero_by_pattern(bool a, bool b, bool c, bool d, bool e, bool f) {
+  return (a || d || f) && (b || c || e) && (a || e) && (f || b) && (d || c);
+}
+
 /// det Q3 == 0, exactly; nullopt when the entries are outside the range where the expansion is
 /// exact (the caller takes the exact path). The block is scaled by a power of two first (exact).
 inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
-  {  // Every term of the expansion below has a zero factor (axis-aligned paraboloids): det = 0,
-     // without arithmetic.
-    const double a = d[0], b = d[1], c = d[2], dd = d[5], e = d[6], f = d[10];
-    if ((a == 0 || dd == 0 || f == 0) && (b == 0 || c == 0 || e == 0) && (a == 0 || e == 0) && (f == 0 || b == 0) &&
-        (dd == 0 || c == 0))
-      return true;
-  }
+  if (zero_by_pattern(d[0] == 0, d[1] == 0, d[2] == 0, d[5] == 0, d[6] == 0, d[10] == 0)) return true;
   if (!detail::rounding_to_nearest()) return std::nullopt;
   double mx = 0;
   for (int i = 0; i < 3; ++i)
@@ -168,6 +179,30 @@ inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
 
 }  // namespace impl
 
+/// The interval stage of the shape tests on enclosures of the entries (rounding towards +inf, by
+/// the caller): `want` (+1 or -1, the certain sign of the first entry) when the matrix is certainly
+/// a real ellipsoid with Q3 of that definiteness, else 0.
+inline int certified_ellipsoid_intervals(const std::array<impl::I, 16>& d, int want) {
+  using impl::I;
+  const I m2 = d[0] * d[5] - d[1] * d[1];
+  if (impl::certain_sign(m2) != 1) return 0;
+  if (impl::certain_sign(impl::det3<I>(d)) != want) return 0;
+  if (impl::certain_sign(impl::det4<I>(d)) != -1) return 0;
+  return want;
+}
+
+/// The same for an elliptic paraboloid: the sign of the trace of Q3 when E2 > 0, the trace and
+/// det Q < 0 are certain (det Q3 = 0 is the caller's exact test), else 0.
+inline int certified_paraboloid_intervals(const std::array<impl::I, 16>& d) {
+  using impl::I;
+  const I e2 = (d[0] * d[5] - d[1] * d[1]) + (d[0] * d[10] - d[2] * d[2]) + (d[5] * d[10] - d[6] * d[6]);
+  if (impl::certain_sign(e2) != 1) return 0;
+  const int trace_sign = impl::certain_sign(d[0] + d[5] + d[10]);
+  if (trace_sign == 0) return 0;
+  if (impl::certain_sign(impl::det4<I>(d)) != -1) return 0;
+  return trace_sign;
+}
+
 /// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
 /// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
 /// `normalized` is d scaled by a power of two (power_of_two_normalized), when it exists: the
@@ -188,12 +223,7 @@ inline int certified_ellipsoid(const DoubleMatrix4& d, const std::optional<Doubl
     if (s2 == 1 && s3 == want && s4 == -1) return want;
   }
   CGAL::Protect_FPU_rounding<true> guard;
-  const I m2 = I(d[0]) * I(d[5]) - I(d[1]) * I(d[1]);
-  if (impl::certain_sign(m2) != 1) return 0;
-  const int s3 = impl::certain_sign(impl::det3<I>(d));
-  if (s3 != want) return 0;
-  if (impl::certain_sign(impl::det4<I>(d)) != -1) return 0;
-  return want;
+  return certified_ellipsoid_intervals(impl::interval_entries(d), want);
 }
 
 /// +1 when the symmetric matrix is certainly an elliptic paraboloid with Q3 positive semidefinite,
@@ -220,12 +250,8 @@ inline int certified_paraboloid(const DoubleMatrix4& d, const std::optional<Doub
   }
   if (!certain) {
     CGAL::Protect_FPU_rounding<true> guard;
-    const I e2 = (I(d[0]) * I(d[5]) - I(d[1]) * I(d[1])) + (I(d[0]) * I(d[10]) - I(d[2]) * I(d[2])) +
-                 (I(d[5]) * I(d[10]) - I(d[6]) * I(d[6]));
-    if (impl::certain_sign(e2) != 1) return 0;
-    trace_sign = impl::certain_sign(I(d[0]) + I(d[5]) + I(d[10]));
+    trace_sign = certified_paraboloid_intervals(impl::interval_entries(d));
     if (trace_sign == 0) return 0;
-    if (impl::certain_sign(impl::det4<I>(d)) != -1) return 0;
   }
   const auto zero = impl::det3_is_zero(d);
   if (!zero || !*zero) return 0;

@@ -226,6 +226,26 @@ bool enclosed(const Matrix4& m, View<RunningBound>& out) {
   return true;
 }
 
+/// The same from certified enclosures [lo, hi]: scaled by the power of two that brings the largest
+/// bound near 1 (exact while the scaled bounds stay above the entry floor, checked).
+bool enclosed(const detail::EnclosureMatrix4& m, View<RunningBound>& out) {
+  double mx = 0;
+  for (std::size_t i = 0; i < 16; ++i) mx = std::max({mx, std::fabs(m.lo[i]), std::fabs(m.hi[i])});
+  if (!(mx > 0 && mx <= 0x1p1000)) return false;
+  const double k = std::ldexp(1.0, -std::ilogb(mx) - 1);
+  for (std::size_t i = 0; i < 16; ++i) {
+    const double lo = m.lo[i] * k, hi = m.hi[i] * k;
+    if (m.lo[i] == 0 && m.hi[i] == 0) {
+      out.a[i] = RunningBound(0);
+      continue;
+    }
+    const double small = std::min(std::fabs(lo), std::fabs(hi));
+    if (!(small >= kEntryFloor) || (lo < 0) != (hi < 0)) return false;  // no exact scaling, or a sign change
+    out.a[i] = RunningBound::enclosing(lo, hi);
+  }
+  return true;
+}
+
 }  // namespace
 
 DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
@@ -276,6 +296,15 @@ DecisionSigns semi_static_filter_signs_translated(const Matrix4& p, const Matrix
 }
 
 DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e) {
+  View<RunningBound> vp, ve;
+  RunningBound q[kQuantities];
+  if (!enclosed(p, vp) || !enclosed(e, ve) || !evaluate(vp, ve, q)) return DecisionSigns{};
+  USign c[kQuantities];
+  for (int i = 0; i < kQuantities; ++i) c[i] = usign(q[i].sign());
+  return assemble(c);
+}
+
+DecisionSigns semi_static_filter_signs(const detail::EnclosureMatrix4& p, const detail::EnclosureMatrix4& e) {
   View<RunningBound> vp, ve;
   RunningBound q[kQuantities];
   if (!enclosed(p, vp) || !enclosed(e, ve) || !evaluate(vp, ve, q)) return DecisionSigns{};

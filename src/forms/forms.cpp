@@ -19,6 +19,17 @@ MatrixOf<Interval> to_intervals(const DoubleMatrix4& m) {
   return out;
 }
 
+MatrixOf<Interval> to_intervals(const detail::EnclosureMatrix4& m) {
+  double mx = 0;
+  for (std::size_t i = 0; i < 16; ++i) mx = std::max({mx, std::fabs(m.lo[i]), std::fabs(m.hi[i])});
+  int e = 0;
+  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
+  const Interval scale(std::ldexp(1.0, -e));
+  MatrixOf<Interval> out;
+  for (std::size_t i = 0; i < 16; ++i) out.a[i] = Interval(m.lo[i], m.hi[i]) * scale;
+  return out;
+}
+
 MatrixOf<Interval> to_intervals(const Matrix4& m) {
   std::array<double, 16> v;
   double mx = 0;

@@ -50,6 +50,10 @@ void lcm_of_denominators(It first, It last, Integer& l) {
 /// product underflows. Call with the rounding mode towards +inf (CGAL::Protect_FPU_rounding).
 MatrixOf<Interval> to_intervals(const DoubleMatrix4& m);
 
+/// The stored enclosures of a quadric read from text, scaled by 2^k (largest bound near 1). Call
+/// with the rounding mode towards +inf.
+MatrixOf<Interval> to_intervals(const detail::EnclosureMatrix4& m);
+
 /// Enclosures of the entries of m scaled by 2^k (largest near 1) without rational temporaries
 /// (mpq_get_d truncates towards zero, so q lies between v and the next double away from zero).
 MatrixOf<Interval> to_intervals(const Matrix4& m);

@@ -2,12 +2,14 @@
 //
 // The top-level object of a line is scanned by hand, once: each member's value is located as a span
 // of the text, so that the id is echoed byte for byte, duplicate keys are seen, and "comment" is
-// validated by a SAX pass that stores nothing. Only the two quadrics are parsed into (small,
-// bounded) DOMs.
+// validated by a SAX pass that stores nothing. The two quadrics are read by the fast reader
+// (fast_quadric.hpp: common forms, short numbers, straight to double enclosures) or else parsed
+// into (small, bounded) DOMs by the general reader, which words every error.
 #include <new>
 #include <string>
 #include <string_view>
 
+#include "io/fast_quadric.hpp"
 #include "io/json_read.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
@@ -88,6 +90,65 @@ bool valid_utf8(std::string_view s) {
   return true;
 }
 
+/// The name of a key given as its JSON text "...": the text between the quotes when it has no
+/// escape, control character or non-ASCII byte (what every key of a well-formed line is), else the
+/// general parser's reading.
+std::string key_name(std::string_view key_text) {
+  bool plain = true;
+  for (std::size_t k = 1; k + 1 < key_text.size() && plain; ++k) {
+    const auto c = static_cast<unsigned char>(key_text[k]);
+    plain = c >= 0x20 && c < 0x80 && c != '\\';
+  }
+  if (plain) return std::string(key_text.substr(1, key_text.size() - 2));
+  return Json::parse(key_text).get<std::string>();
+}
+
+/// An id or comment that is certainly one valid JSON value without parsing it: an integer, or a
+/// string of printable ASCII without escapes. Anything else goes through the validating parser.
+bool plainly_valid(std::string_view v) {
+  if (v.empty()) return false;
+  if (v.front() == '"') {
+    if (v.size() < 2 || v.back() != '"') return false;
+    for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+      const auto c = static_cast<unsigned char>(v[k]);
+      if (c < 0x20 || c >= 0x80 || c == '\\' || c == '"') return false;
+    }
+    return true;
+  }
+  std::size_t k = v.front() == '-' ? 1 : 0;
+  if (k == v.size() || (v[k] == '0' && k + 1 != v.size())) return false;
+  for (; k < v.size(); ++k)
+    if (v[k] < '0' || v[k] > '9') return false;
+  return true;
+}
+
+/// The minimal report's members after the id, as JSON text: written directly (the rule texts are
+/// escaped once), in the order of the full report's first members.
+void append_minimal(const Classification& c, std::string& out) {
+  static const std::array<std::string, 16> rules = [] {
+    std::array<std::string, 16> r;
+    for (std::size_t k = 0; k < r.size(); ++k) r[k] = dump_json(Json(describe(static_cast<Rule>(k))));
+    return r;
+  }();
+  const Verdict& v = c.verdict;
+  out += ",\"position\":\"";
+  out += to_string(v.position);
+  out += v.small ? "\",\"small\":true" : "\",\"small\":false";
+  const auto meets = v.meets();
+  out += !meets ? ",\"contact\":null" : *meets ? ",\"contact\":true" : ",\"contact\":false";
+  out += ",\"rule\":";
+  const auto r = static_cast<std::size_t>(v.rule);
+  out += r < rules.size() ? rules[r] : dump_json(Json(c.rule_text()));
+  static const std::array<std::string, kAllStages.size()> stages = [] {
+    std::array<std::string, kAllStages.size()> names;
+    for (Stage st : kAllStages) names[static_cast<std::size_t>(st)] = dump_json(Json(to_string(st)));
+    return names;
+  }();
+  out += ",\"stage\":";
+  out += stages[static_cast<std::size_t>(v.stage)];
+  out += '}';
+}
+
 }  // namespace
 
 Json contact_to_json(const ContactAnswer& a) {
@@ -151,7 +212,7 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
       const std::string_view value = line.substr(i, end - i);
       std::string key;
       try {
-        key = Json::parse(key_text).get<std::string>();
+        key = key_name(key_text);
       } catch (const nlohmann::json::exception&) {
         invalid_json(line);
       }
@@ -189,6 +250,7 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
   // The id and the comment: valid JSON, not stored (the id is kept as its text).
   for (std::size_t m = 0; m < count; ++m) {
     if (members[m].key == "ellipsoid" || members[m].key == "paraboloid") continue;
+    if (plainly_valid(members[m].value)) continue;
     try {
       detail::validate_json(members[m].value, 1);
     } catch (const detail::JsonSyntaxError&) {
@@ -208,9 +270,14 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
   read.max_elements = kMaxQuadricEntries;
   read.start_depth = 1;
   Json ellipsoid, paraboloid;
+  std::optional<Ellipsoid> fast_e;
+  std::optional<Paraboloid> fast_p;
   for (std::size_t m = 0; m < count; ++m) {
     const Member& x = members[m];
     if (x.key != "ellipsoid" && x.key != "paraboloid") continue;
+    if (x.key == "ellipsoid" ? (fast_e = detail::fast_ellipsoid(x.value, read.doubles)).has_value()
+                             : (fast_p = detail::fast_paraboloid(x.value, read.doubles)).has_value())
+      continue;
     try {
       (x.key == "ellipsoid" ? ellipsoid : paraboloid) = detail::parse_json(x.value, read);
     } catch (const detail::JsonSyntaxError&) {
@@ -225,10 +292,10 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
     throw InputError("unknown key \"" + unknown + "\"" +
                      (fixed ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
                             : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")"));
-  if (ellipsoid.is_null()) throw InputError("ellipsoid: missing");
-  if (!fixed && paraboloid.is_null()) throw InputError("paraboloid: missing");
-  out.ellipsoid = ellipsoid_from_json(ellipsoid, "ellipsoid");
-  if (!fixed) out.paraboloid = paraboloid_from_json(paraboloid, "paraboloid");
+  if (!fast_e && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
+  if (!fixed && !fast_p && paraboloid.is_null()) throw InputError("paraboloid: missing");
+  out.ellipsoid = fast_e ? std::move(fast_e) : ellipsoid_from_json(ellipsoid, "ellipsoid");
+  if (!fixed) out.paraboloid = fast_p ? std::move(fast_p) : paraboloid_from_json(paraboloid, "paraboloid");
   check_normalized_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
 }
 
@@ -244,11 +311,9 @@ std::string answer_batch_line(std::string_view line, long line_number, const Bat
       if (options.evidence == Evidence::Full) {
         report = classification_to_json(c, options.render);
       } else {
-        report["position"] = to_string(c.verdict.position);
-        report["small"] = c.verdict.small;
-        report["contact"] = c.verdict.meets() ? Json(*c.verdict.meets()) : Json(nullptr);
-        report["rule"] = c.rule_text();
-        report["stage"] = to_string(c.verdict.stage);
+        std::string text = "{\"id\":" + in.id;
+        append_minimal(c, text);
+        return text;
       }
     }
     std::string text = dump_json(report);  // "{...}": the id goes first

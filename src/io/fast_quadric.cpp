@@ -1,0 +1,426 @@
+// The fast reader of fast_quadric.hpp: a bounded recursive descent over the text (at most 32 nodes,
+// depth 3), each number turned into an interval by at most three exactly-rounded operations, then
+// the entries of the form in interval arithmetic (one rounding-mode switch per quadric).
+//
+// Written by hand rather than with simdjson: the forms need the number *text* (exactness, exact
+// symmetry), the nodes are few and the general reader stays the reference for every error; a full
+// parser would add a second document model without removing the per-number work.
+#include "io/fast_quadric.hpp"
+
+#include <CGAL/Interval_nt.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "core/shape_filter.hpp"
+#include "io/json_read.hpp"
+#include "relpos/io.hpp"
+
+namespace relpos::io::detail {
+namespace {
+
+using I = CGAL::Interval_nt<false>;
+using Entries = std::array<I, 16>;
+
+constexpr int kMaxNodes = 32;
+constexpr int kMaxDepth = 3;
+constexpr int kMaxDigits = 19;    ///< significant digits: m < 10^19 < 2^64
+constexpr int kMaxExponent = 30;  ///< |e| after trailing zeros are removed (the size bound in the header)
+
+/// Powers of ten that are exact doubles.
+constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+/// A number as read: its enclosure, and its exact identity for the symmetry test and exact zeros
+/// (value (-1)^neg m 10^e with m free of trailing zeros, or the double itself with --numbers double).
+struct Number {
+  I x;
+  bool neg = false;
+  std::uint64_t m = 0;
+  int e = 0;
+  bool is_zero() const { return m == 0; }
+  bool same(const Number& o) const { return neg == o.neg && m == o.m && e == o.e; }
+};
+
+enum class Kind : unsigned char { Number, Array, Object };
+
+struct Node {
+  Kind kind = Kind::Number;
+  std::string_view key;  ///< the member name, inside an object
+  int child = -1;        ///< first child (arrays and objects)
+  int next = -1;         ///< next sibling
+  int count = 0;         ///< children
+  Number number;
+};
+
+class Reader {
+ public:
+  Reader(std::string_view text, bool doubles) : s_(text), doubles_(doubles) {}
+
+  /// The root node, or -1 when the text is not entirely one value of the accepted kinds.
+  int parse() {
+    skip_ws();
+    const int root = value(0);
+    skip_ws();
+    return root >= 0 && i_ == s_.size() ? root : -1;
+  }
+  const Node& node(int k) const { return nodes_[k]; }
+
+ private:
+  bool at_end() const { return i_ >= s_.size(); }
+  char peek() const { return s_[i_]; }
+  void skip_ws() {
+    while (!at_end() && (peek() == ' ' || peek() == '\t' || peek() == '\n' || peek() == '\r')) ++i_;
+  }
+  bool digit() const { return !at_end() && peek() >= '0' && peek() <= '9'; }
+
+  int new_node(Kind kind) {
+    if (n_ == kMaxNodes) return -1;
+    nodes_[n_].kind = kind;
+    return n_++;
+  }
+
+  int value(int depth) {
+    if (at_end()) return -1;
+    const char c = peek();
+    if (c == '[' || c == '{') return container(depth, c == '{');
+    return number();
+  }
+
+  /// A key: plain ASCII without escapes or control characters (anything else: the general reader).
+  bool key(std::string_view& out) {
+    if (at_end() || peek() != '"') return false;
+    const std::size_t start = ++i_;
+    while (!at_end() && peek() != '"') {
+      const auto c = static_cast<unsigned char>(peek());
+      if (c < 0x20 || c >= 0x80 || c == '\\') return false;
+      ++i_;
+    }
+    if (at_end()) return false;
+    out = s_.substr(start, i_ - start);
+    ++i_;
+    return true;
+  }
+
+  int container(int depth, bool object) {
+    if (depth == kMaxDepth) return -1;
+    const int self = new_node(object ? Kind::Object : Kind::Array);
+    if (self < 0) return -1;
+    ++i_;
+    skip_ws();
+    const char close = object ? '}' : ']';
+    if (!at_end() && peek() == close) {
+      ++i_;
+      return self;
+    }
+    int last = -1;
+    for (;;) {
+      std::string_view name;
+      if (object) {
+        if (!key(name)) return -1;
+        skip_ws();
+        if (at_end() || peek() != ':') return -1;
+        ++i_;
+        skip_ws();
+        for (int k = nodes_[self].child; k >= 0; k = nodes_[k].next)
+          if (nodes_[k].key == name) return -1;  // a duplicate key: the general reader's error
+      }
+      const int child = value(depth + 1);
+      if (child < 0) return -1;
+      nodes_[child].key = name;
+      (last < 0 ? nodes_[self].child : nodes_[last].next) = child;
+      last = child;
+      ++nodes_[self].count;
+      skip_ws();
+      if (at_end()) return -1;
+      if (peek() == ',') {
+        ++i_;
+        skip_ws();
+        continue;
+      }
+      if (peek() != close) return -1;
+      ++i_;
+      return self;
+    }
+  }
+
+  /// A JSON number (RFC 8259 grammar, checked here), read as its decimal or its nearest double.
+  int number() {
+    const std::size_t start = i_;
+    Number x;
+    if (!at_end() && peek() == '-') {
+      x.neg = true;
+      ++i_;
+    }
+    int zeros = 0, digits = 0, scale = 0;  // pending zeros, significant digits kept, exponent shift
+    auto feed = [&](char c) {
+      if (c == '0') {
+        if (digits > 0) ++zeros;
+        return true;
+      }
+      digits += zeros + 1;
+      if (digits > kMaxDigits) return false;
+      for (; zeros > 0; --zeros) x.m *= 10;
+      x.m = x.m * 10 + static_cast<std::uint64_t>(c - '0');
+      return true;
+    };
+    if (!digit()) return -1;
+    if (peek() == '0') {
+      ++i_;
+    } else {
+      while (digit())
+        if (!feed(s_[i_++])) return -1;
+    }
+    if (!at_end() && peek() == '.') {
+      ++i_;
+      if (!digit()) return -1;
+      while (digit()) {
+        if (!feed(s_[i_++])) return -1;
+        --scale;
+      }
+    }
+    int exponent = 0;
+    if (!at_end() && (peek() == 'e' || peek() == 'E')) {
+      ++i_;
+      bool negative = false;
+      if (!at_end() && (peek() == '+' || peek() == '-')) negative = s_[i_++] == '-';
+      if (!digit()) return -1;
+      int length = 0;
+      while (digit()) {
+        if (++length > 5) return -1;
+        exponent = exponent * 10 + (s_[i_++] - '0');
+      }
+      if (negative) exponent = -exponent;
+    }
+    if (!at_end() && peek() != ',' && peek() != ']' && peek() != '}' && peek() != ' ' && peek() != '\t' &&
+        peek() != '\n' && peek() != '\r')
+      return -1;
+    const int self = new_node(Kind::Number);
+    if (self < 0) return -1;
+    if (doubles_) {  // round to nearest here: the caller's guard starts after parse()
+      double d = 0;
+      const auto r = std::from_chars(s_.data() + start, s_.data() + i_, d);
+      if (r.ec != std::errc() || r.ptr != s_.data() + i_) return -1;
+      if (d != 0 && !(std::fabs(d) >= 0x1p-100 && std::fabs(d) <= 0x1p100)) return -1;
+      // The identity of a double: its bits, read through the same fields (exact symmetry, zeros).
+      x = Number{};
+      x.x = I(d);
+      x.neg = d < 0;
+      x.m = d == 0 ? 0 : static_cast<std::uint64_t>(std::fabs(std::frexp(d, &x.e)) * 0x1p53);
+      if (d == 0) x.e = 0;
+    } else if (x.m == 0) {
+      x = Number{};
+      x.x = I(0);
+    } else {
+      x.e = exponent + scale + zeros;
+      if (x.e > kMaxExponent || x.e < -kMaxExponent) return -1;
+      decimals_ = true;  // enclosed by enclose_decimals()
+    }
+    nodes_[self].number = x;
+    return self;
+  }
+
+ public:
+  /// The enclosures of the decimal numbers: m exactly (a sum of two exact doubles when m > 2^53),
+  /// then one exactly-rounded operation with 10^|e| (two when |e| > 22). Call with the rounding mode
+  /// towards +inf.
+  void enclose_decimals() {
+    if (!decimals_) return;
+    for (int k = 0; k < n_; ++k) {
+      Number& x = nodes_[k].number;
+      if (nodes_[k].kind != Kind::Number || x.m == 0) continue;
+      const I m = x.m <= (std::uint64_t(1) << 53)
+                      ? I(static_cast<double>(x.m))
+                      : I(static_cast<double>(x.m >> 11)) * I(2048.0) + I(static_cast<double>(x.m & 2047));
+      const int p10 = x.e < 0 ? -x.e : x.e;
+      const I p = p10 <= 22 ? I(kPow10[p10]) : I(kPow10[22]) * I(kPow10[p10 - 22]);
+      x.x = x.e >= 0 ? m * p : m / p;
+      if (x.neg) x.x = -x.x;
+    }
+  }
+
+ private:
+  std::string_view s_;
+  bool doubles_;
+  std::size_t i_ = 0;
+  int n_ = 0;
+  bool decimals_ = false;
+  Node nodes_[kMaxNodes];
+};
+
+/// The child of an object named `name`, or -1.
+int member(const Reader& r, int object, std::string_view name) {
+  for (int k = r.node(object).child; k >= 0; k = r.node(k).next)
+    if (r.node(k).key == name) return k;
+  return -1;
+}
+
+/// The numbers of an array of exactly n numbers, or false.
+template <std::size_t N>
+bool numbers(const Reader& r, int array, std::array<Number, N>& out) {
+  if (array < 0 || r.node(array).kind != Kind::Array || r.node(array).count != static_cast<int>(N)) return false;
+  std::size_t i = 0;
+  for (int k = r.node(array).child; k >= 0; k = r.node(k).next) {
+    if (r.node(k).kind != Kind::Number) return false;
+    out[i++] = r.node(k).number;
+  }
+  return true;
+}
+
+/// A 4x4 array of numbers that is exactly symmetric.
+bool symmetric_matrix(const Reader& r, int array, std::array<Number, 16>& out) {
+  if (array < 0 || r.node(array).kind != Kind::Array || r.node(array).count != 4) return false;
+  std::size_t row = 0;
+  for (int k = r.node(array).child; k >= 0; k = r.node(k).next, ++row) {
+    std::array<Number, 4> x;
+    if (!numbers(r, k, x)) return false;
+    for (std::size_t j = 0; j < 4; ++j) out[4 * row + j] = x[j];
+  }
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = i + 1; j < 4; ++j)
+      if (!out[4 * i + j].same(out[4 * j + i])) return false;
+  return true;
+}
+
+bool positive(const Number& x) { return !x.neg && !x.is_zero(); }
+
+/// The exact matrix, when first needed: the general reader on the same text.
+class TextSource final : public relpos::detail::ExactSource {
+ public:
+  TextSource(std::string_view text, bool doubles, bool ellipsoid)
+      : text_(text), doubles_(doubles), ellipsoid_(ellipsoid) {}
+  Matrix4 build() const override {
+    JsonReadOptions read;
+    read.doubles = doubles_;
+    read.max_elements = 16;
+    read.start_depth = 1;
+    const auto json = parse_json(text_, read);
+    return ellipsoid_ ? ellipsoid_from_json(json, "ellipsoid").matrix()
+                      : paraboloid_from_json(json, "paraboloid").matrix();
+  }
+
+ private:
+  std::string text_;
+  bool doubles_, ellipsoid_;
+};
+
+/// The storage of a certified quadric: its doubles when every enclosure is a point (the exact
+/// matrix is then those doubles), else the enclosures with the text as the exact source.
+relpos::detail::QuadricMatrix storage(const Entries& x, int orientation, std::string_view text, bool doubles,
+                                      bool ellipsoid) {
+  relpos::detail::EnclosureMatrix4 enc;
+  bool points = true;
+  for (std::size_t k = 0; k < 16; ++k) {
+    const I v = orientation > 0 ? x[k] : -x[k];
+    enc.lo[k] = v.inf();
+    enc.hi[k] = v.sup();
+    points = points && v.inf() == v.sup();
+  }
+  if (points) return relpos::detail::QuadricMatrix(enc.lo);
+  return relpos::detail::QuadricMatrix(enc, std::make_shared<const TextSource>(text, doubles, ellipsoid));
+}
+
+Entries intervals(const std::array<Number, 16>& n) {
+  Entries x;
+  for (std::size_t k = 0; k < 16; ++k) x[k] = n[k].x;
+  return x;
+}
+
+/// The matrix of a 4x4 array or {"matrix": 4x4}, or -1.
+int matrix_node(const Reader& r, int root) {
+  if (r.node(root).kind == Kind::Array) return root;
+  if (r.node(root).kind == Kind::Object && r.node(root).count == 1) return member(r, root, "matrix");
+  return -1;
+}
+
+/// The entries of the ellipsoid of the text, in interval arithmetic, and its orientation (the sign
+/// that makes Q3 positive definite); 0 when this reader does not take the text. Rounding towards
+/// +inf (the caller's guard).
+int ellipsoid_entries(const Reader& r, int root, Entries& x) {
+  if (const int m = matrix_node(r, root); m >= 0) {
+    std::array<Number, 16> n;
+    if (!symmetric_matrix(r, m, n) || n[0].is_zero()) return 0;
+    const int want = n[0].neg ? -1 : 1;
+    x = intervals(n);
+    return shape_filter::certified_ellipsoid_intervals(x, want) == want ? want : 0;
+  }
+  // {"sphere": {"center" | "centre": [x, y, z], "radius": r}}: Ellipsoid::sphere, valid when r > 0.
+  if (r.node(root).kind != Kind::Object || r.node(root).count != 1) return 0;
+  const int sphere = member(r, root, "sphere");
+  if (sphere < 0 || r.node(sphere).kind != Kind::Object || r.node(sphere).count != 2) return 0;
+  const int centre = member(r, sphere, "center") >= 0 ? member(r, sphere, "center") : member(r, sphere, "centre");
+  const int radius = member(r, sphere, "radius");
+  std::array<Number, 3> c;
+  if (radius < 0 || r.node(radius).kind != Kind::Number || !numbers(r, centre, c)) return 0;
+  const Number& rad = r.node(radius).number;
+  if (!positive(rad)) return 0;
+  x.fill(I(0));
+  x[0] = x[5] = x[10] = I(1);
+  for (std::size_t i = 0; i < 3; ++i) x[4 * i + 3] = x[12 + i] = -c[i].x;
+  x[15] = CGAL::square(c[0].x) + CGAL::square(c[1].x) + CGAL::square(c[2].x) - CGAL::square(rad.x);
+  return 1;
+}
+
+/// The same for an elliptic paraboloid (the orientation makes Q3 positive semidefinite).
+int paraboloid_entries(const Reader& r, int root, Entries& x) {
+  if (const int m = matrix_node(r, root); m >= 0) {
+    std::array<Number, 16> n;
+    if (!symmetric_matrix(r, m, n)) return 0;
+    // det Q3 = 0 exactly, from entries that are exactly zero (axis-aligned cups); else the general reader.
+    if (!shape_filter::impl::zero_by_pattern(n[0].is_zero(), n[1].is_zero(), n[2].is_zero(), n[5].is_zero(),
+                                             n[6].is_zero(), n[10].is_zero()))
+      return 0;
+    x = intervals(n);
+    return shape_filter::certified_paraboloid_intervals(x);
+  }
+  // {"vertex": [x, y, z], "a": a, "b": b}: Paraboloid::standard without rotation, valid when a, b > 0.
+  if (r.node(root).kind != Kind::Object || r.node(root).count != 3) return 0;
+  const int a = member(r, root, "a"), b = member(r, root, "b");
+  std::array<Number, 3> v;
+  if (a < 0 || b < 0 || r.node(a).kind != Kind::Number || r.node(b).kind != Kind::Number ||
+      !numbers(r, member(r, root, "vertex"), v))
+    return 0;
+  if (!positive(r.node(a).number) || !positive(r.node(b).number)) return 0;
+  const I ia = I(1) / CGAL::square(r.node(a).number.x), ib = I(1) / CGAL::square(r.node(b).number.x);
+  x.fill(I(0));
+  x[0] = ia;
+  x[5] = ib;
+  x[3] = x[12] = -ia * v[0].x;
+  x[7] = x[13] = -ib * v[1].x;
+  x[11] = x[14] = I(-0.5);
+  x[15] = ia * CGAL::square(v[0].x) + ib * CGAL::square(v[1].x) + v[2].x;
+  return 1;
+}
+
+}  // namespace
+
+std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles) {
+  Entries x;
+  int orientation = 0;
+  Reader r(text, doubles);
+  if (const int root = r.parse(); root >= 0) {
+    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false>: rounding towards +inf
+    r.enclose_decimals();
+    orientation = ellipsoid_entries(r, root, x);
+  }
+  if (orientation == 0) return std::nullopt;
+  return relpos::detail::make_ellipsoid(storage(x, orientation, text, doubles, true));
+}
+
+std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles) {
+  Entries x;
+  int orientation = 0;
+  Reader r(text, doubles);
+  if (const int root = r.parse(); root >= 0) {
+    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false>: rounding towards +inf
+    r.enclose_decimals();
+    orientation = paraboloid_entries(r, root, x);
+  }
+  if (orientation == 0) return std::nullopt;
+  return relpos::detail::make_paraboloid(storage(x, orientation, text, doubles, false));
+}
+
+}  // namespace relpos::io::detail

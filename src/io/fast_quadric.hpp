@@ -1,0 +1,40 @@
+// The common quadric forms read straight from JSON text into double enclosures (issue 12): no DOM,
+// no rationals, no heap traffic per number. Used by the batch reader (batch.cpp) before the general
+// reader of io.cpp.
+//
+// A value is read here only when it is one of the forms below, its JSON is plainly valid (keys
+// without escapes, no duplicate keys, no other keys) and each number is short (at most 19
+// significant digits and a decimal exponent within +-30 after trailing zeros are removed; with
+// --numbers double, a double within 2^+-100). Anything else returns nullopt and the caller takes the
+// general reader, which decides every case and words every error: this reader never answers
+// differently and never refuses. The exact matrix is built, when an exact stage or the evidence
+// asks for it, by the general reader from the same text (QuadricMatrix's ExactSource), so the
+// rationals, the sign normalization and the evidence are those of the general path.
+//
+// Forms: a 4x4 array or {"matrix": 4x4} (ellipsoid or paraboloid; an exactly symmetric matrix whose
+// shape the interval filter certifies, and for a paraboloid det Q3 = 0 by exactly-zero entries),
+// {"sphere": {"center"|"centre": [x, y, z], "radius": r}} and {"vertex": [x, y, z], "a": a, "b": b}
+// (no rotation).
+//
+// Size limit (doc/cli.md, Limits): short numbers keep every matrix read here far below
+// kMaxNormalizedBits. A number is m 10^e with m < 10^19 and |e| <= 30, so its numerator and
+// denominator have at most 64 + 100 bits; the entries of these forms are polynomials of degree at
+// most 4 in at most 5 such numbers over powers of ten and the squares of a and b, whose primitive
+// integer forms stay below 1500 bits (tests/test_io.cpp builds the extreme case and checks it).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "relpos/quadric.hpp"
+
+namespace relpos::io::detail {
+
+/// The ellipsoid described by the JSON text, or nullopt when this reader does not take it.
+/// `doubles`: each number is the double nearest its text (--numbers double).
+std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles);
+
+/// The elliptic paraboloid described by the JSON text, or nullopt (as fast_ellipsoid).
+std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles);
+
+}  // namespace relpos::io::detail

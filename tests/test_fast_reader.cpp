@@ -1,0 +1,219 @@
+// The fast reader of batch lines (src/io/fast_quadric.hpp) against the general reader: a quadric it
+// takes has enclosures that contain the exact entries, the same exact matrix and the same position;
+// a text it does not take (not JSON, another form, long numbers) is left to the general reader.
+#include <catch2/catch.hpp>
+#include <random>
+#include <string>
+
+#include "io/fast_quadric.hpp"
+#include "io/json_read.hpp"
+#include "relpos/classify.hpp"
+#include "relpos/io.hpp"
+
+namespace {
+
+using relpos::Ellipsoid;
+using relpos::Matrix4;
+using relpos::Paraboloid;
+using relpos::io::detail::fast_ellipsoid;
+using relpos::io::detail::fast_paraboloid;
+
+nlohmann::ordered_json general_json(const std::string& text, bool doubles) {
+  relpos::io::detail::JsonReadOptions read;
+  read.doubles = doubles;
+  read.max_elements = 16;
+  read.start_depth = 1;
+  return relpos::io::detail::parse_json(text, read);
+}
+
+/// Every exact entry inside its enclosure (or equal to the double, when the quadric has doubles).
+template <class Q>
+void check_storage(const Q& q) {
+  const Matrix4& m = q.matrix();
+  const auto& enc = q.storage().enclosure();
+  REQUIRE((q.doubles().has_value() || enc.has_value()));
+  for (std::size_t k = 0; k < 16; ++k) {
+    if (q.doubles()) {
+      REQUIRE(relpos::Rational((*q.doubles())[k]) == m.a[k]);
+    } else {
+      REQUIRE(relpos::Rational(enc->lo[k]) <= m.a[k]);
+      REQUIRE(m.a[k] <= relpos::Rational(enc->hi[k]));
+    }
+  }
+}
+
+/// The decimal d 10^exponent, d of `digits` random significant digits, in one of the spellings JSON
+/// allows (exponent, fraction, plain, trailing zeros), sometimes negative.
+std::string decimal(std::mt19937_64& rng, int digits, int exponent, bool negative) {
+  std::string d;
+  for (int i = 0; i < digits; ++i) d += static_cast<char>('0' + (i == 0 ? 1 + rng() % 9 : rng() % 10));
+  const std::string s = negative ? "-" : "";
+  const auto n = static_cast<std::size_t>(digits);
+  switch (rng() % 4) {
+    case 0:
+      return s + d + "e" + std::to_string(exponent);
+    case 1: {  // d[0].d[1..] E (exponent + digits - 1)
+      const int x = exponent + digits - 1;
+      return s + d.substr(0, 1) + "." + (digits > 1 ? d.substr(1) : "0") + (x >= 0 ? "E+" : "E") + std::to_string(x);
+    }
+    case 2:  // a fraction or an integer, no exponent
+      if (exponent >= 0) return s + d + std::string(static_cast<std::size_t>(exponent), '0');
+      if (static_cast<std::size_t>(-exponent) >= n)
+        return s + "0." + std::string(static_cast<std::size_t>(-exponent) - n, '0') + d;
+      return s + d.substr(0, n - static_cast<std::size_t>(-exponent)) + "." +
+             d.substr(n - static_cast<std::size_t>(-exponent));
+    default:
+      return s + d + "000e" + std::to_string(exponent - 3);
+  }
+}
+
+std::string vec3(const std::string& a, const std::string& b, const std::string& c) {
+  return "[" + a + "," + b + "," + c + "]";
+}
+
+}  // namespace
+
+TEST_CASE("fast reader: spheres and standard paraboloids agree with the general reader", "[io][fast]") {
+  std::mt19937_64 rng(7);
+  int taken = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const bool doubles = trial % 5 == 4;
+    auto num = [&](bool positive) {
+      const int digits = 1 + static_cast<int>(rng() % 19);
+      return decimal(rng, digits, -static_cast<int>(rng() % 4) - digits + 1, !positive && rng() % 2 == 0);
+    };
+    const std::string e_text = "{\"sphere\":{\"" + std::string(trial % 2 ? "center" : "centre") +
+                               "\":" + vec3(num(false), num(false), num(false)) + ",\"radius\":" + num(true) + "}}";
+    const std::string p_text =
+        "{\"vertex\":" + vec3(num(false), num(false), num(false)) + ",\"a\":" + num(true) + ",\"b\":" + num(true) + "}";
+    const auto fe = fast_ellipsoid(e_text, doubles);
+    const auto fp = fast_paraboloid(p_text, doubles);
+    INFO(e_text << "  " << p_text);
+    REQUIRE(fe);
+    REQUIRE(fp);
+    const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid");
+    const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
+    check_storage(*fe);
+    check_storage(*fp);
+    REQUIRE(fe->matrix() == ge.matrix());
+    REQUIRE(fp->matrix() == gp.matrix());
+    REQUIRE(relpos::decide_position(*fe, *fp).position == relpos::classify_exact(ge, gp).verdict.position);
+    ++taken;
+  }
+  REQUIRE(taken == 400);
+}
+
+TEST_CASE("fast reader: matrices agree with the general reader, either orientation", "[io][fast]") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-0.3, 0.3), pos(0.8, 2.0), rad(0.01, 0.2);
+  auto f = [](double v) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g", v);
+    return std::string(b);
+  };
+  auto matrix = [&](const double(&m)[16], double sign) {
+    std::string s = "[";
+    for (int i = 0; i < 4; ++i) {
+      s += i ? ",[" : "[";
+      for (int j = 0; j < 4; ++j) s += (j ? "," : "") + f(sign * m[4 * i + j]);
+      s += "]";
+    }
+    return s + "]";
+  };
+  for (int trial = 0; trial < 300; ++trial) {
+    const double x = u(rng), y = u(rng), a = pos(rng), b = pos(rng), r = rad(rng);
+    const double z = x * x / a / a + y * y / b / b + u(rng);
+    const double em[16] = {1, 0, 0, -x, 0, 1, 0, -y, 0, 0, 1, -z, -x, -y, -z, x * x + y * y + z * z - r * r};
+    const double pm[16] = {1 / a / a, 0, 0, 0, 0, 1 / b / b, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0};
+    const double sign = trial % 3 == 2 ? -1 : 1;
+    const bool doubles = trial % 4 == 3;
+    const std::string e_text = trial % 2 ? matrix(em, sign) : "{\"matrix\":" + matrix(em, sign) + "}";
+    const std::string p_text = trial % 2 ? "{\"matrix\":" + matrix(pm, sign) + "}" : matrix(pm, sign);
+    INFO(e_text << "  " << p_text);
+    const auto fe = fast_ellipsoid(e_text, doubles);
+    const auto fp = fast_paraboloid(p_text, doubles);
+    REQUIRE(fe);
+    REQUIRE(fp);
+    const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid");
+    const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
+    check_storage(*fe);
+    check_storage(*fp);
+    REQUIRE(fe->matrix() == ge.matrix());
+    REQUIRE(fp->matrix() == gp.matrix());
+    REQUIRE(relpos::decide_position(*fe, *fp).position == relpos::classify_exact(ge, gp).verdict.position);
+  }
+}
+
+TEST_CASE("fast reader: exact doubles stay doubles; decimals that are not get enclosures", "[io][fast]") {
+  const auto e = fast_ellipsoid(R"({"sphere":{"center":[0.5,-0.25,1],"radius":0.75}})", false);
+  REQUIRE(e);
+  REQUIRE(e->doubles());  // every entry (0.25 + 0.0625 + 1 - 0.5625 included) is a double
+  const auto d = fast_ellipsoid(R"({"sphere":{"center":[0.1,0,0],"radius":1}})", false);
+  REQUIRE(d);
+  REQUIRE_FALSE(d->doubles());
+  REQUIRE(d->storage().enclosure());
+  REQUIRE(d->matrix()(0, 3) == relpos::Rational(-1, 10));  // built exactly from the text on demand
+  // --numbers double: 0.1 is the nearest double, exactly.
+  const auto n = fast_ellipsoid(R"({"sphere":{"center":[0.1,0,0],"radius":1}})", true);
+  REQUIRE(n);
+  REQUIRE(n->matrix()(0, 3) == -relpos::Rational(0.1));
+}
+
+TEST_CASE("fast reader: texts it leaves to the general reader", "[io][fast]") {
+  // Not JSON, or not plainly: the general reader gives the error or reads the escapes.
+  for (const char* text : {"",
+                           "[",
+                           "{}",
+                           "[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1],]",
+                           "01",
+                           "1.",
+                           ".5",
+                           "-",
+                           "1e",
+                           "+1",
+                           "NaN",
+                           R"({"sphere":{"center":[0,0,0],"radius":1}})"
+                           "x",
+                           R"({"sph\u0065re":{"center":[0,0,0],"radius":1}})",
+                           R"({"sphere":{"center":[0,0,0],"radius":1,"radius":2}})",
+                           R"({"sphere":{"center":[0,0,0],"centre":[0,0,0],"radius":1}})",
+                           R"({"sphere":{"center":[0,0,0],"radius":"1"}})",
+                           R"({"sphere":{"center":[0,0,0],"radius":0}})",
+                           R"({"sphere":{"center":[0,0,0],"radius":-1}})",
+                           R"({"sphere":{"center":[0,0,0],"radius":12345678901234567891}})",
+                           R"({"sphere":{"center":[0,0,0],"radius":1e31}})",
+                           R"({"sphere":{"center":[0,0],"radius":1}})",
+                           R"({"axes":[1,2,3],"center":[0,0,0]})",
+                           "[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]",     // imaginary: the general error
+                           "[[1,0,0,0.5],[0,1,0,0],[0,0,1,0],[0,0,0,-1]]",  // not symmetric
+                           "[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1],[0,0,0,0]]"})
+    REQUIRE_FALSE(fast_ellipsoid(text, false));
+  for (const char* text : {R"({"vertex":[0,0,0],"a":1,"b":1,"rotation":[1,0,0,0]})", R"({"vertex":[0,0,0],"a":1})",
+                           R"({"vertex":[0,0,0],"a":0,"b":1})", R"({"vertex":[0,0,0],"a":1,"b":-1})",
+                           "[[1,0,0,0],[0,1,0,0],[0,0,1,-0.5],[0,0,-0.5,0]]"})  // an ellipsoid
+    REQUIRE_FALSE(fast_paraboloid(text, false));
+  // A valid paraboloid whose det Q3 = 0 (Q3 = A^T A, A = [[1,1,1],[1,2,3]]) is not shown by zero
+  // entries: the general reader takes it.
+  const char* tilted = "[[2,3,4,-0.5],[3,5,7,1],[4,7,10,-0.5],[-0.5,1,-0.5,0]]";
+  REQUIRE_FALSE(fast_paraboloid(tilted, false));
+  REQUIRE_NOTHROW(relpos::io::paraboloid_from_json(general_json(tilted, false), "paraboloid"));
+  // det Q3 = 0 by zeros, although rotated about the axis: taken.
+  REQUIRE(fast_paraboloid("[[1,0.5,0,0],[0.5,1,0,0],[0,0,0,-0.5],[0,0,-0.5,0]]", false));
+  // Exactly symmetric although spelled differently: taken.
+  REQUIRE(fast_ellipsoid("[[1,0,0,0.5],[0,1,0,0],[0,0,1,0],[5e-1,0,0,-1]]", false));
+  REQUIRE(fast_ellipsoid("[[-1,0,0,0],[0,-1,0,0],[0,0,-1,0],[0,0,0,1]]", false)->matrix()(0, 0) == 1);
+}
+
+TEST_CASE("fast reader: its numbers keep the normalized size far below the limit", "[io][fast]") {
+  // The extremes of the reader's numbers (19 digits, decimal exponent +-30) in the forms whose
+  // entries have the highest degree.
+  const std::string big = "9999999999999999999e11", tiny = "-1234567890123456789e-30", odd = "7777777777777777777e-30";
+  const auto e = fast_ellipsoid("{\"sphere\":{\"center\":" + vec3(big, tiny, odd) + ",\"radius\":" + odd + "}}", false);
+  const auto p =
+      fast_paraboloid("{\"vertex\":" + vec3(tiny, big, odd) + ",\"a\":" + odd + ",\"b\":" + big + "}", false);
+  REQUIRE(e);
+  REQUIRE(p);
+  REQUIRE(relpos::normalized_bits(e->matrix()) <= 1500);
+  REQUIRE(relpos::normalized_bits(p->matrix()) <= 1500);
+  relpos::check_normalized_pair_size(*e, *p);  // does not build the matrices, does not throw
+}
