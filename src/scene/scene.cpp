@@ -275,6 +275,23 @@ double scale_for(double mx) {
       // Exact unless it underflowed; then the true value is within a subnormal step of y.
       return y * inv == v ? RB(y) : RB::enclosing(y - 0x1p-1074, y + 0x1p-1074);
     });
+  } else if (const auto& enc = e.storage().enclosure()) {  // read from text: the stored enclosures
+    const auto point = [&](std::size_t i) { return enc->lo[i] == enc->hi[i]; };
+    sphere = point(0) && point(1) && point(2) && point(5) && point(6) && point(10) && enc->lo[1] == 0 &&
+             enc->lo[2] == 0 && enc->lo[6] == 0 && enc->lo[0] == enc->lo[5] && enc->lo[0] == enc->lo[10];
+    double mx = 0;
+    for (std::size_t i : {0, 1, 2, 3, 5, 6, 7, 10, 11, 15})
+      mx = std::max({mx, std::fabs(enc->lo[i]), std::fabs(enc->hi[i])});
+    if (!(mx <= 0x1p1000)) return Early::None;
+    const double s = scale_for(mx);
+    bool exact_scaling = true;  // no scaled bound underflows (else: no early-out)
+    x = entries<RB>([&](int i, int j) {
+      const auto k = static_cast<std::size_t>(4 * i + j);
+      const double lo = enc->lo[k] * s, hi = enc->hi[k] * s;
+      if (lo / s != enc->lo[k] || hi / s != enc->hi[k]) exact_scaling = false;
+      return RB::enclosing(lo, hi);
+    });
+    if (!exact_scaling) return Early::None;
   } else {
     const Matrix4& m = e.matrix();
     sphere = CGAL::is_zero(m(0, 1)) && CGAL::is_zero(m(0, 2)) && CGAL::is_zero(m(1, 2)) && m(0, 0) == m(1, 1) &&
