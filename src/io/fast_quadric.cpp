@@ -13,11 +13,8 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <string>
 
 #include "core/shape_filter.hpp"
-#include "io/json_read.hpp"
-#include "relpos/io.hpp"
 
 namespace relpos::io::detail {
 namespace {
@@ -287,40 +284,64 @@ bool symmetric_matrix(const Reader& r, int array, std::array<Number, 16>& out) {
 
 bool positive(const Number& x) { return !x.neg && !x.is_zero(); }
 
-/// The exact matrix, when first needed: the general reader on the same text.
-class TextSource final : public relpos::detail::ExactSource {
+/// What a quadric was read from: the form and its numbers (a matrix: 16; a sphere: centre, radius;
+/// a standard paraboloid: vertex, a, b), and the orientation the shape test certified.
+struct Recipe {
+  enum class Form : unsigned char { Matrix, Sphere, Standard } form = Form::Matrix;
+  int orientation = 1;
+  std::array<Number, 16> n;
+};
+
+/// The exact value of a number as read: m 10^e, or the double itself (a point enclosure).
+Rational exact(const Number& x, bool doubles) {
+  if (doubles) return Rational(x.x.inf());
+  if (x.m == 0) return Rational(0);
+  Integer num(static_cast<unsigned long>(x.m)), p;
+  mpz_ui_pow_ui(p.mpz(), 10, static_cast<unsigned long>(x.e < 0 ? -x.e : x.e));
+  if (x.e >= 0) num *= p;
+  Rational q = x.e >= 0 ? Rational(num) : Rational(num, p);  // canonical
+  return x.neg ? -q : q;
+}
+
+/// The exact matrix, when first needed: the constructor the general reader calls for the form
+/// (Ellipsoid::sphere, Paraboloid::standard), or the matrix with the certified sign normalization
+/// (what from_matrix returns), from the exact values of the numbers.
+class NumberSource final : public relpos::detail::ExactSource {
  public:
-  TextSource(std::string_view text, bool doubles, bool ellipsoid)
-      : text_(text), doubles_(doubles), ellipsoid_(ellipsoid) {}
+  NumberSource(const Recipe& recipe, bool doubles) : recipe_(recipe), doubles_(doubles) {}
   Matrix4 build() const override {
-    JsonReadOptions read;
-    read.doubles = doubles_;
-    read.max_elements = 16;
-    read.start_depth = 1;
-    const auto json = parse_json(text_, read);
-    return ellipsoid_ ? ellipsoid_from_json(json, "ellipsoid").matrix()
-                      : paraboloid_from_json(json, "paraboloid").matrix();
+    auto q = [&](std::size_t k) { return exact(recipe_.n[k], doubles_); };
+    switch (recipe_.form) {
+      case Recipe::Form::Sphere:
+        return Ellipsoid::sphere(Vector3{q(0), q(1), q(2)}, q(3)).matrix();
+      case Recipe::Form::Standard:
+        return Paraboloid::standard(Vector3{q(0), q(1), q(2)}, q(3), q(4)).matrix();
+      case Recipe::Form::Matrix:
+        break;
+    }
+    Matrix4 m;
+    for (std::size_t k = 0; k < 16; ++k) m.a[k] = recipe_.orientation > 0 ? q(k) : -q(k);
+    return m;
   }
 
  private:
-  std::string text_;
-  bool doubles_, ellipsoid_;
+  Recipe recipe_;
+  bool doubles_;
 };
 
 /// The storage of a certified quadric: its doubles when every enclosure is a point (the exact
-/// matrix is then those doubles), else the enclosures with the text as the exact source.
-relpos::detail::QuadricMatrix storage(const Entries& x, int orientation, std::string_view text, bool doubles,
-                                      bool ellipsoid) {
+/// matrix is then those doubles), else the enclosures with the numbers as the exact source.
+relpos::detail::QuadricMatrix storage(const Entries& x, const Recipe& recipe, bool doubles) {
   relpos::detail::EnclosureMatrix4 enc;
   bool points = true;
   for (std::size_t k = 0; k < 16; ++k) {
-    const I v = orientation > 0 ? x[k] : -x[k];
+    const I v = recipe.orientation > 0 ? x[k] : -x[k];
     enc.lo[k] = v.inf();
     enc.hi[k] = v.sup();
     points = points && v.inf() == v.sup();
   }
   if (points) return relpos::detail::QuadricMatrix(enc.lo);
-  return relpos::detail::QuadricMatrix(enc, std::make_shared<const TextSource>(text, doubles, ellipsoid));
+  return relpos::detail::QuadricMatrix(enc, std::make_shared<const NumberSource>(recipe, doubles));
 }
 
 Entries intervals(const std::array<Number, 16>& n) {
@@ -339,12 +360,13 @@ int matrix_node(const Reader& r, int root) {
 /// The entries of the ellipsoid of the text, in interval arithmetic, and its orientation (the sign
 /// that makes Q3 positive definite); 0 when this reader does not take the text. Rounding towards
 /// +inf (the caller's guard).
-int ellipsoid_entries(const Reader& r, int root, Entries& x) {
+int ellipsoid_entries(const Reader& r, int root, Entries& x, Recipe& recipe) {
   if (const int m = matrix_node(r, root); m >= 0) {
     std::array<Number, 16> n;
     if (!symmetric_matrix(r, m, n) || n[0].is_zero()) return 0;
     const int want = n[0].neg ? -1 : 1;
     x = intervals(n);
+    recipe.n = n;
     return shape_filter::certified_ellipsoid_intervals(x, want) == want ? want : 0;
   }
   // {"sphere": {"center" | "centre": [x, y, z], "radius": r}}: Ellipsoid::sphere, valid when r > 0.
@@ -357,6 +379,8 @@ int ellipsoid_entries(const Reader& r, int root, Entries& x) {
   if (radius < 0 || r.node(radius).kind != Kind::Number || !numbers(r, centre, c)) return 0;
   const Number& rad = r.node(radius).number;
   if (!positive(rad)) return 0;
+  recipe.form = Recipe::Form::Sphere;
+  recipe.n = {c[0], c[1], c[2], rad};
   x.fill(I(0));
   x[0] = x[5] = x[10] = I(1);
   for (std::size_t i = 0; i < 3; ++i) x[4 * i + 3] = x[12 + i] = -c[i].x;
@@ -365,10 +389,11 @@ int ellipsoid_entries(const Reader& r, int root, Entries& x) {
 }
 
 /// The same for an elliptic paraboloid (the orientation makes Q3 positive semidefinite).
-int paraboloid_entries(const Reader& r, int root, Entries& x) {
+int paraboloid_entries(const Reader& r, int root, Entries& x, Recipe& recipe) {
   if (const int m = matrix_node(r, root); m >= 0) {
     std::array<Number, 16> n;
     if (!symmetric_matrix(r, m, n)) return 0;
+    recipe.n = n;
     // det Q3 = 0 exactly, from entries that are exactly zero (axis-aligned cups); else the general reader.
     if (!shape_filter::impl::zero_by_pattern(n[0].is_zero(), n[1].is_zero(), n[2].is_zero(), n[5].is_zero(),
                                              n[6].is_zero(), n[10].is_zero()))
@@ -384,6 +409,8 @@ int paraboloid_entries(const Reader& r, int root, Entries& x) {
       !numbers(r, member(r, root, "vertex"), v))
     return 0;
   if (!positive(r.node(a).number) || !positive(r.node(b).number)) return 0;
+  recipe.form = Recipe::Form::Standard;
+  recipe.n = {v[0], v[1], v[2], r.node(a).number, r.node(b).number};
   const I ia = I(1) / CGAL::square(r.node(a).number.x), ib = I(1) / CGAL::square(r.node(b).number.x);
   x.fill(I(0));
   x[0] = ia;
@@ -399,28 +426,32 @@ int paraboloid_entries(const Reader& r, int root, Entries& x) {
 
 std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles) {
   Entries x;
-  int orientation = 0;
+  Recipe recipe;
   Reader r(text, doubles);
   if (const int root = r.parse(); root >= 0) {
     CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false>: rounding towards +inf
     r.enclose_decimals();
-    orientation = ellipsoid_entries(r, root, x);
+    recipe.orientation = ellipsoid_entries(r, root, x, recipe);
+  } else {
+    recipe.orientation = 0;
   }
-  if (orientation == 0) return std::nullopt;
-  return relpos::detail::make_ellipsoid(storage(x, orientation, text, doubles, true));
+  if (recipe.orientation == 0) return std::nullopt;
+  return relpos::detail::make_ellipsoid(storage(x, recipe, doubles));
 }
 
 std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles) {
   Entries x;
-  int orientation = 0;
+  Recipe recipe;
   Reader r(text, doubles);
   if (const int root = r.parse(); root >= 0) {
     CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false>: rounding towards +inf
     r.enclose_decimals();
-    orientation = paraboloid_entries(r, root, x);
+    recipe.orientation = paraboloid_entries(r, root, x, recipe);
+  } else {
+    recipe.orientation = 0;
   }
-  if (orientation == 0) return std::nullopt;
-  return relpos::detail::make_paraboloid(storage(x, orientation, text, doubles, false));
+  if (recipe.orientation == 0) return std::nullopt;
+  return relpos::detail::make_paraboloid(storage(x, recipe, doubles));
 }
 
 }  // namespace relpos::io::detail

@@ -7,9 +7,11 @@
 // significant digits and a decimal exponent within +-30 after trailing zeros are removed; with
 // --numbers double, a double within 2^+-100). Anything else returns nullopt and the caller takes the
 // general reader, which decides every case and words every error: this reader never answers
-// differently and never refuses. The exact matrix is built, when an exact stage or the evidence
-// asks for it, by the general reader from the same text (QuadricMatrix's ExactSource), so the
-// rationals, the sign normalization and the evidence are those of the general path.
+// differently and never refuses. The exact matrix is built only when an exact stage or the evidence
+// asks for it (QuadricMatrix's ExactSource), from the exact values of the numbers read, by the
+// constructor the general reader calls for the form (or, for a matrix, with the sign normalization
+// from_matrix applies): the rationals and the evidence are those of the general path
+// (tests/test_fast_reader.cpp compares them).
 //
 // Forms: a 4x4 array or {"matrix": 4x4} (ellipsoid or paraboloid; an exactly symmetric matrix whose
 // shape the interval filter certifies, and for a paraboloid det Q3 = 0 by exactly-zero entries),
