@@ -25,6 +25,8 @@
 #include <string_view>
 #include <vector>
 
+#include "../src/io/fast_quadric.hpp"
+#include "../src/io/json_read.hpp"
 #include "../tests/support/construct.hpp"
 #include "../tests/support/oracles.hpp"
 #include "../tests/support/secular.hpp"
@@ -137,6 +139,40 @@ inline void check_numbers(const std::uint8_t* data, std::size_t size) {
 // ------------------------------------------------------------------------------------------------
 // One batch line
 
+/// The fast reader of batch lines against the general reader on one quadric text: whatever the fast
+/// reader takes, the general reader takes too, with the same exact matrix, inside the stored
+/// enclosures (or equal to the stored doubles).
+template <class Q, class Fast, class General>
+void check_fast_quadric(std::string_view text, bool doubles, Fast fast, General general, const char* role) {
+  const std::optional<Q> q = fast(text, doubles);
+  if (!q) return;
+  relpos::io::detail::JsonReadOptions read;
+  read.doubles = doubles;
+  read.max_elements = 16;
+  read.start_depth = 1;
+  std::optional<Q> g;
+  try {
+    g = general(relpos::io::detail::parse_json(text, read), role);
+  } catch (const relpos::InputError& e) {
+    expect(false, std::string("fast reader took a ") + role + " the general reader refuses: " + e.what());
+  }
+  expect(q->matrix() == g->matrix(), std::string("fast reader: another exact matrix for the ") + role);
+  const auto& enc = q->storage().enclosure();
+  expect(q->doubles().has_value() || enc.has_value(), "fast reader: neither doubles nor enclosures");
+  for (std::size_t k = 0; k < 16 && enc; ++k)
+    expect(Rational(enc->lo[k]) <= q->matrix().a[k] && q->matrix().a[k] <= Rational(enc->hi[k]),
+           std::string("fast reader: an entry outside its enclosure for the ") + role);
+}
+
+inline void check_fast_reader(std::string_view text) {
+  for (const bool doubles : {false, true}) {
+    check_fast_quadric<relpos::Ellipsoid>(text, doubles, relpos::io::detail::fast_ellipsoid,
+                                          relpos::io::ellipsoid_from_json, "ellipsoid");
+    check_fast_quadric<relpos::Paraboloid>(text, doubles, relpos::io::detail::fast_paraboloid,
+                                           relpos::io::paraboloid_from_json, "paraboloid");
+  }
+}
+
 inline void check_batch_line(const std::uint8_t* data, std::size_t size) {
   // The bytes may hold several lines, split at '\n' as the CLI splits its input; each goes through
   // the library's relpos::io::answer_batch_line, the one function `relpos batch` calls.
@@ -149,6 +185,17 @@ inline void check_batch_line(const std::uint8_t* data, std::size_t size) {
     const std::string text = relpos::io::answer_batch_line(std::string_view(all).substr(start, end - start), ++number,
                                                            relpos::io::BatchOptions{});
     expect(text.find('\n') == std::string::npos, "answer spans several lines");
+    // The fast reader on the raw line and on the quadric values of a line that is a JSON object
+    // (their bytes as written: the members' spans are located in the raw text).
+    const std::string_view raw = std::string_view(all).substr(start, end - start);
+    check_fast_reader(raw);
+    for (const char* key : {"\"ellipsoid\":", "\"paraboloid\":"}) {
+      const std::size_t at = raw.find(key);
+      if (at == std::string_view::npos) continue;
+      const std::string_view rest = raw.substr(at + std::strlen(key));
+      for (std::size_t cut = 1; cut <= rest.size(); ++cut)  // every prefix that ends a value
+        if (rest[cut - 1] == '}' || rest[cut - 1] == ']') check_fast_reader(rest.substr(0, cut));
+    }
     Json answer;
     try {
       answer = relpos::io::parse_json_exact(text);  // ids are echoed as written: 1e400 too

@@ -72,6 +72,8 @@ enum class Rule : unsigned char {
   HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (section 8 rule 4)
   NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (section 8 rule 5)
 };
+/// Number of rules, None included (tables indexed by Rule take their size from here).
+inline constexpr std::size_t kRuleCount = static_cast<std::size_t>(Rule::NoRootInGap) + 1;
 std::string describe(Rule r);
 
 /// The answer without the evidence strings and exact coefficients: what the hot path computes.

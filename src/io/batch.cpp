@@ -125,8 +125,8 @@ bool plainly_valid(std::string_view v) {
 /// The minimal report's members after the id, as JSON text: written directly (the rule texts are
 /// escaped once), in the order of the full report's first members.
 void append_minimal(const Classification& c, std::string& out) {
-  static const std::array<std::string, 16> rules = [] {
-    std::array<std::string, 16> r;
+  static const std::array<std::string, kRuleCount> rules = [] {
+    std::array<std::string, kRuleCount> r;
     for (std::size_t k = 0; k < r.size(); ++k) r[k] = dump_json(Json(describe(static_cast<Rule>(k))));
     return r;
   }();
@@ -138,7 +138,7 @@ void append_minimal(const Classification& c, std::string& out) {
   out += !meets ? ",\"contact\":null" : *meets ? ",\"contact\":true" : ",\"contact\":false";
   out += ",\"rule\":";
   const auto r = static_cast<std::size_t>(v.rule);
-  out += r < rules.size() ? rules[r] : dump_json(Json(c.rule_text()));
+  out += rules.at(r);
   static const std::array<std::string, kAllStages.size()> stages = [] {
     std::array<std::string, kAllStages.size()> names;
     for (Stage st : kAllStages) names[static_cast<std::size_t>(st)] = dump_json(Json(to_string(st)));
