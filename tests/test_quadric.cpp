@@ -74,6 +74,39 @@ TEST_CASE("classify_quadric: the type is invariant under random affine congruenc
     }
 }
 
+TEST_CASE("from_matrix (filtered shape test) accepts exactly the ellipsoids and paraboloids", "[quadric][random]") {
+  // The interval filter decides most matrices; the exact inertia the rest. Every type, random
+  // congruences and scales of either sign, and near-degenerate ones (the constant term moved by
+  // +-10^-30, which turns a point, a cone or a cylinder into a neighbouring type).
+  Rng g(0xF17E2ED);
+  const Rational tiny(Integer(1), Integer("1000000000000000000000000000000"));
+  int ellipsoids = 0, paraboloids = 0;
+  for (int round = 0; round < 10; ++round)
+    for (const auto& k : all_kinds())
+      for (int nudge = -1; nudge <= 1; ++nudge) {
+        Matrix4 m = scaled(congruence(k.m, random_congruence(g).h), g.nonzero_rational(-5, 5, 3));
+        m(3, 3) += nudge * tiny;
+        CAPTURE(round, k.equation, nudge);
+        const QuadricKind kind = classify_quadric(m);
+        if (kind == QuadricKind::Ellipsoid) {
+          ++ellipsoids;
+          const Ellipsoid e = Ellipsoid::from_matrix(m);
+          CHECK(e.matrix() == (m(0, 0) > 0 ? m : scaled(m, Rational(-1))));
+        } else {
+          CHECK_THROWS_AS(Ellipsoid::from_matrix(m), relpos::InputError);
+        }
+        if (kind == QuadricKind::EllipticParaboloid) {
+          ++paraboloids;
+          const Paraboloid q = Paraboloid::from_matrix(m);
+          CHECK(q.matrix() == (m(0, 0) + m(1, 1) + m(2, 2) > 0 ? m : scaled(m, Rational(-1))));
+        } else {
+          CHECK_THROWS_AS(Paraboloid::from_matrix(m), relpos::InputError);
+        }
+      }
+  CHECK(ellipsoids >= 20);
+  CHECK(paraboloids >= 20);
+}
+
 TEST_CASE("to_string(QuadricKind): the names the error messages use", "[quadric]") {
   CHECK(relpos::to_string(QuadricKind::Ellipsoid) == "ellipsoid");
   CHECK(relpos::to_string(QuadricKind::EllipticParaboloid) == "elliptic paraboloid");

@@ -320,7 +320,52 @@ Matrix3 rotation_from_quaternion(const Quaternion& q) {
   return r;
 }
 
+namespace {
+
+bool exactly_symmetric(const Matrix4& q) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (q(i, j) != q(j, i)) return false;
+  return true;
+}
+
+/// Certified enclosures of the entries (CGAL::to_interval; rounding towards +inf by the caller).
+std::array<shape_filter::impl::I, 16> entry_intervals(const Matrix4& q) {
+  std::array<shape_filter::impl::I, 16> x;
+  for (std::size_t k = 0; k < 16; ++k) x[k] = shape_filter::impl::I(CGAL::to_interval(q.a[k]));
+  return x;
+}
+
+/// The shape of a rational matrix as a filtered predicate: the orientation (+1 or -1, the sign of
+/// the first entry) when intervals around the entries certify a real ellipsoid, else 0 and the
+/// exact classification decides (and names what the matrix is).
+int filtered_ellipsoid(const Matrix4& e) {
+  const int want = CGAL::sign(e(0, 0));
+  if (want == 0 || !exactly_symmetric(e)) return 0;
+  CGAL::Protect_FPU_rounding<true> guard;
+  return shape_filter::certified_ellipsoid_intervals(entry_intervals(e), want) == want ? want : 0;
+}
+
+/// The same for an elliptic paraboloid: the sign of the trace of Q3 when certain. det Q3 = 0 is
+/// exact (zero factors, else the rational determinant: nine products, far cheaper than the
+/// inertia).
+int filtered_paraboloid(const Matrix4& p) {
+  if (!exactly_symmetric(p)) return 0;
+  if (!shape_filter::impl::zero_by_pattern(CGAL::is_zero(p.a[0]), CGAL::is_zero(p.a[1]), CGAL::is_zero(p.a[2]),
+                                           CGAL::is_zero(p.a[5]), CGAL::is_zero(p.a[6]), CGAL::is_zero(p.a[10]))) {
+    const Rational det3 = p(0, 0) * (p(1, 1) * p(2, 2) - p(1, 2) * p(1, 2)) -
+                          p(0, 1) * (p(0, 1) * p(2, 2) - p(1, 2) * p(0, 2)) +
+                          p(0, 2) * (p(0, 1) * p(1, 2) - p(1, 1) * p(0, 2));
+    if (!CGAL::is_zero(det3)) return 0;
+  }
+  CGAL::Protect_FPU_rounding<true> guard;
+  return shape_filter::certified_paraboloid_intervals(entry_intervals(p));
+}
+
+}  // namespace
+
 Ellipsoid Ellipsoid::from_matrix(const Matrix4& e) {
+  if (const int orientation = filtered_ellipsoid(e)) return Ellipsoid(orientation > 0 ? e : negated(e));
   QuadricKind k = classify_quadric(e);
   if (k == QuadricKind::EllipticParaboloid)
     throw InputError(
@@ -431,6 +476,7 @@ Ellipsoid Ellipsoid::from_map(const Vector3& c, const Matrix3& l) {
 }
 
 Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
+  if (const int orientation = filtered_paraboloid(p)) return Paraboloid(orientation > 0 ? p : negated(p));
   QuadricKind k = classify_quadric(p);
   if (k == QuadricKind::Ellipsoid)
     throw InputError(
