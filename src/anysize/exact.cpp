@@ -1,5 +1,6 @@
 #include "anysize/exact.hpp"
 
+#include <CGAL/Interval_nt.h>
 #include <gmp.h>
 
 #include <stdexcept>
@@ -148,7 +149,12 @@ QuadraticReal LambdaS::at(const Poly& p) const {
   return acc;
 }
 
-int LambdaS::compare(const Rational& q) const { return sign({q - value.a, -value.b}); }
+int LambdaS::compare(const Rational& q) const {
+  const std::pair<double, double> x = CGAL::to_interval(q);  // certified: decided without rationals
+  if (x.second < lo) return -1;
+  if (x.first > hi) return 1;
+  return sign({q - value.a, -value.b});
+}
 
 LambdaS lambda_s_of(const Poly& s) {
   if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
@@ -167,6 +173,16 @@ LambdaS lambda_s_of(const Poly& s) {
   } else {
     out.d = nd;
     out.value = {-s[1] / two_s2, Rational(1) / (Rational(den) * two_s2)};
+  }
+  // The enclosure of a + b sqrt(d) for compare(): interval arithmetic on certified enclosures of
+  // a, b and d (infinite bounds, hence no filtering, beyond the double range).
+  CGAL::Protect_FPU_rounding<true> guard;
+  using I = CGAL::Interval_nt<false>;
+  const I v = I(CGAL::to_interval(out.value.a)) +
+              (out.d == 0 ? I(0) : I(CGAL::to_interval(out.value.b)) * CGAL::sqrt(I(CGAL::to_interval(out.d))));
+  if (std::isfinite(v.inf()) && std::isfinite(v.sup())) {
+    out.lo = v.inf();
+    out.hi = v.sup();
   }
   return out;
 }

@@ -4,6 +4,7 @@
 // only for exact tangencies, special roots and certificates, never on the filtered path.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -35,6 +36,7 @@ struct QuadraticReal {
 struct LambdaS {
   Integer d;
   QuadraticReal value;
+  double lo = -HUGE_VAL, hi = HUGE_VAL;  ///< a certified enclosure lo <= lambda_s <= hi (compare's filter)
   bool rational() const { return value.b == 0; }
   /// Exact sign of x + y sqrt(d).
   int sign(const QuadraticReal& x) const;

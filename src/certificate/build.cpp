@@ -472,10 +472,12 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
     }
     return acc;
   };
-  auto try_point = [&](const double x[3]) {
+  // `wanted`: the point a search is for (inside or outside); the pulls stop once it is found.
+  auto try_point = [&](const double x[3], const std::optional<V3>& wanted) {
     V3 q;
     for (int i = 0; i < 3; ++i) q[i] = exact_rational(x[i]);
     consider(q);
+    if (wanted) return;
     V3 diff;
     for (int i = 0; i < 3; ++i) diff[i] = q[i] - centre[i];
     for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
@@ -486,10 +488,11 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
         y[i] = q[i] - step;
       }
       consider(y);
+      if (wanted) return;
     }
   };
   // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side.
-  auto bisect = [&](double lo, double hi) {
+  auto bisect = [&](double lo, double hi, const std::optional<V3>& wanted) {
     double x[3], best[3];
     bool have = false;
     for (int i = 0; i < 200; ++i) {
@@ -504,7 +507,7 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
         hi = mid;
       }
     }
-    if (have) try_point(best);
+    if (have) try_point(best, wanted);
   };
   double x[3];
   if (!inside) {
@@ -513,7 +516,7 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
       if (!std::isfinite(hi)) return;
       if (x_of(hi, x) && e_of(x) > 0) break;
     }
-    bisect(0, hi);
+    bisect(0, hi, inside);
   }
   if (!outside) {
     const double ls = CGAL::to_double(approximate(pr.ls, pr.ls.value, 64, true));
@@ -521,7 +524,7 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
       // approach lambda_s from 0: the first lambda with e(x(lambda)) > 0
       for (double l = ls / 2, step = ls / 4; l > ls && l < 0; l += step, step /= 2) {
         if (x_of(l, x) && e_of(x) > 0) {
-          bisect(0, l);
+          bisect(0, l, outside);
           break;
         }
         if (step > ls * 1e-15) break;  // step is negative: stop once it is negligible
@@ -667,16 +670,24 @@ bool crossing_points(const Pair& pr, Certificate& c) {
 }
 
 /// The rational with the fewest bits in the open interval (lo, hi), lo < hi: a dyadic found by
-/// rounding the midpoint to ever more bits (short multipliers make short certificates).
+/// rounding the midpoint to ever more bits (short multipliers make short certificates). The tests
+/// compare integers (cross-multiplied, denominators positive): no rational is canonicalized until
+/// the answer.
 Rational short_between(const Rational& lo, const Rational& hi) {
   const Rational mid = (lo + hi) / 2;
+  Integer scaled, a, b;
   for (unsigned bits = 0; bits <= 2048; bits += 4) {
-    Integer scaled, den(1);
+    mpz_mul_2exp(a.mpz(), mpq_numref(mid.mpq()), bits);  // scaled = floor(mid 2^bits)
+    mpz_fdiv_q(scaled.mpz(), a.mpz(), mpq_denref(mid.mpq()));
+    mpz_mul_2exp(a.mpz(), mpq_numref(lo.mpq()), bits);  // lo < scaled / 2^bits
+    mpz_mul(b.mpz(), scaled.mpz(), mpq_denref(lo.mpq()));
+    if (mpz_cmp(a.mpz(), b.mpz()) >= 0) continue;
+    mpz_mul(a.mpz(), scaled.mpz(), mpq_denref(hi.mpq()));  // scaled / 2^bits < hi
+    mpz_mul_2exp(b.mpz(), mpq_numref(hi.mpq()), bits);
+    if (mpz_cmp(a.mpz(), b.mpz()) >= 0) continue;
+    Integer den(1);
     mpz_mul_2exp(den.mpz(), den.mpz(), bits);
-    const Rational t = mid * Rational(den);
-    mpz_fdiv_q(scaled.mpz(), mpq_numref(t.mpq()), mpq_denref(t.mpq()));
-    const Rational cand(scaled, den);
-    if (lo < cand && cand < hi) return cand;
+    return Rational(scaled, den);
   }
   return mid;
 }
