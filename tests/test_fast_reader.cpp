@@ -42,6 +42,23 @@ void check_storage(const Q& q) {
   }
 }
 
+/// Both texts taken by the fast reader, with the general reader's exact matrices inside the stored
+/// enclosures, and the same position as classify_exact on the general reader's quadrics.
+void check_pair(const std::string& e_text, const std::string& p_text, bool doubles) {
+  INFO(e_text << "  " << p_text << (doubles ? "  (--numbers double)" : ""));
+  const auto fe = fast_ellipsoid(e_text, doubles);
+  const auto fp = fast_paraboloid(p_text, doubles);
+  REQUIRE(fe);
+  REQUIRE(fp);
+  const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid");
+  const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
+  check_storage(*fe);
+  check_storage(*fp);
+  REQUIRE(fe->matrix() == ge.matrix());
+  REQUIRE(fp->matrix() == gp.matrix());
+  REQUIRE(relpos::decide_position(*fe, *fp).position == relpos::classify_exact(ge, gp).verdict.position);
+}
+
 /// The decimal d 10^exponent, d of `digits` random significant digits, in one of the spellings JSON
 /// allows (exponent, fraction, plain, trailing zeros), sometimes negative.
 std::string decimal(std::mt19937_64& rng, int digits, int exponent, bool negative) {
@@ -86,18 +103,7 @@ TEST_CASE("fast reader: spheres and standard paraboloids agree with the general 
                                "\":" + vec3(num(false), num(false), num(false)) + ",\"radius\":" + num(true) + "}}";
     const std::string p_text =
         "{\"vertex\":" + vec3(num(false), num(false), num(false)) + ",\"a\":" + num(true) + ",\"b\":" + num(true) + "}";
-    const auto fe = fast_ellipsoid(e_text, doubles);
-    const auto fp = fast_paraboloid(p_text, doubles);
-    INFO(e_text << "  " << p_text);
-    REQUIRE(fe);
-    REQUIRE(fp);
-    const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid");
-    const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
-    check_storage(*fe);
-    check_storage(*fp);
-    REQUIRE(fe->matrix() == ge.matrix());
-    REQUIRE(fp->matrix() == gp.matrix());
-    REQUIRE(relpos::decide_position(*fe, *fp).position == relpos::classify_exact(ge, gp).verdict.position);
+    check_pair(e_text, p_text, doubles);
     ++taken;
   }
   REQUIRE(taken == 400);
@@ -129,18 +135,7 @@ TEST_CASE("fast reader: matrices agree with the general reader, either orientati
     const bool doubles = trial % 4 == 3;
     const std::string e_text = trial % 2 ? matrix(em, sign) : "{\"matrix\":" + matrix(em, sign) + "}";
     const std::string p_text = trial % 2 ? "{\"matrix\":" + matrix(pm, sign) + "}" : matrix(pm, sign);
-    INFO(e_text << "  " << p_text);
-    const auto fe = fast_ellipsoid(e_text, doubles);
-    const auto fp = fast_paraboloid(p_text, doubles);
-    REQUIRE(fe);
-    REQUIRE(fp);
-    const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid");
-    const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
-    check_storage(*fe);
-    check_storage(*fp);
-    REQUIRE(fe->matrix() == ge.matrix());
-    REQUIRE(fp->matrix() == gp.matrix());
-    REQUIRE(relpos::decide_position(*fe, *fp).position == relpos::classify_exact(ge, gp).verdict.position);
+    check_pair(e_text, p_text, doubles);
   }
 }
 

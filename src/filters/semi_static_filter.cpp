@@ -295,7 +295,11 @@ DecisionSigns semi_static_filter_signs_translated(const Matrix4& p, const Matrix
   return assemble(c);
 }
 
-DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e) {
+namespace {
+
+/// The signs from entries that enter as enclosures (rationals, or stored double enclosures).
+template <class M>
+DecisionSigns enclosed_signs(const M& p, const M& e) {
   View<RunningBound> vp, ve;
   RunningBound q[kQuantities];
   if (!enclosed(p, vp) || !enclosed(e, ve) || !evaluate(vp, ve, q)) return DecisionSigns{};
@@ -304,13 +308,12 @@ DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e) {
   return assemble(c);
 }
 
+}  // namespace
+
+DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e) { return enclosed_signs(p, e); }
+
 DecisionSigns semi_static_filter_signs(const detail::EnclosureMatrix4& p, const detail::EnclosureMatrix4& e) {
-  View<RunningBound> vp, ve;
-  RunningBound q[kQuantities];
-  if (!enclosed(p, vp) || !enclosed(e, ve) || !evaluate(vp, ve, q)) return DecisionSigns{};
-  USign c[kQuantities];
-  for (int i = 0; i < kQuantities; ++i) c[i] = usign(q[i].sign());
-  return assemble(c);
+  return enclosed_signs(p, e);
 }
 
 }  // namespace relpos

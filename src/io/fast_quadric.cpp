@@ -422,36 +422,35 @@ int paraboloid_entries(const Reader& r, int root, Entries& x, Recipe& recipe) {
   return 1;
 }
 
+/// The storage of the quadric of the text, or nullopt: `entries` is ellipsoid_entries or
+/// paraboloid_entries.
+template <class Entries_of>
+std::optional<relpos::detail::QuadricMatrix> read_quadric(std::string_view text, bool doubles, Entries_of entries) {
+  Entries x;
+  Recipe recipe;
+  recipe.orientation = 0;
+  Reader r(text, doubles);
+  if (const int root = r.parse(); root >= 0) {
+    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false>: rounding towards +inf
+    r.enclose_decimals();
+    recipe.orientation = entries(r, root, x, recipe);
+  }
+  if (recipe.orientation == 0) return std::nullopt;
+  return storage(x, recipe, doubles);
+}
+
 }  // namespace
 
 std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles) {
-  Entries x;
-  Recipe recipe;
-  Reader r(text, doubles);
-  if (const int root = r.parse(); root >= 0) {
-    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false>: rounding towards +inf
-    r.enclose_decimals();
-    recipe.orientation = ellipsoid_entries(r, root, x, recipe);
-  } else {
-    recipe.orientation = 0;
-  }
-  if (recipe.orientation == 0) return std::nullopt;
-  return relpos::detail::make_ellipsoid(storage(x, recipe, doubles));
+  auto m = read_quadric(text, doubles, ellipsoid_entries);
+  if (!m) return std::nullopt;
+  return relpos::detail::make_ellipsoid(std::move(*m));
 }
 
 std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles) {
-  Entries x;
-  Recipe recipe;
-  Reader r(text, doubles);
-  if (const int root = r.parse(); root >= 0) {
-    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false>: rounding towards +inf
-    r.enclose_decimals();
-    recipe.orientation = paraboloid_entries(r, root, x, recipe);
-  } else {
-    recipe.orientation = 0;
-  }
-  if (recipe.orientation == 0) return std::nullopt;
-  return relpos::detail::make_paraboloid(storage(x, recipe, doubles));
+  auto m = read_quadric(text, doubles, paraboloid_entries);
+  if (!m) return std::nullopt;
+  return relpos::detail::make_paraboloid(std::move(*m));
 }
 
 }  // namespace relpos::io::detail
