@@ -100,6 +100,29 @@ struct Pair {
       s = anysize::to_poly(sq.data(), 3);
     }
     ls = anysize::lambda_s_of(s);
+    Integer l(1);  // f times the lcm of its denominators: integer coefficients for f_sign
+    for (const Rational& c : f) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(c.mpq()));
+    for (const Rational& c : f) {
+      Integer z;
+      mpz_divexact(z.mpz(), l.mpz(), mpq_denref(c.mpq()));
+      mpz_mul(z.mpz(), z.mpz(), mpq_numref(c.mpq()));
+      fz.push_back(z);
+    }
+  }
+  std::vector<Integer> fz;
+  /// The sign of f(l), from the integer coefficients: sum fz_k n^k d^(deg - k) for l = n / d, d > 0
+  /// (integer products only, where a rational Horner scheme canonicalizes at every step).
+  int f_sign(const Rational& x) const {
+    if (fz.empty()) return 0;
+    Integer acc, dp(1), t;  // fresh objects: Gmpz shares its value on copy, mpz() does not unshare
+    mpz_set(acc.mpz(), fz.back().mpz());
+    for (std::size_t k = fz.size() - 1; k-- > 0;) {
+      mpz_mul(dp.mpz(), dp.mpz(), mpq_denref(x.mpq()));
+      mpz_mul(acc.mpz(), acc.mpz(), mpq_numref(x.mpq()));
+      mpz_mul(t.mpz(), fz[k].mpz(), dp.mpz());
+      mpz_add(acc.mpz(), acc.mpz(), t.mpz());
+    }
+    return mpz_sgn(acc.mpz());
   }
   /// X^T Q X for X = (x, 1).
   static Rational form(const Matrix4& q, const V3& x) {
@@ -425,7 +448,7 @@ void search_surface(const Pair& pr, const V3& centre, bool want_inside, std::opt
 template <class InDomain>
 std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
   return search_near_roots(anysize::derivative(pr.f),
-                           [&](const Rational& l) { return in_domain(l) && anysize::evaluate(pr.f, l) > 0; });
+                           [&](const Rational& l) { return in_domain(l) && pr.f_sign(l) > 0; });
 }
 
 /// The curve search of crossing_points first in doubles (a search only: every candidate is checked
@@ -701,7 +724,7 @@ std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<R
     const Rational& hi = roots[i + 1].exact ? *roots[i + 1].exact : roots[i + 1].lower;
     if (!(lo < hi)) continue;
     const Rational l = short_between(lo, hi);
-    if (in_domain(l) && anysize::evaluate(pr.f, l) > 0) return l;
+    if (in_domain(l) && pr.f_sign(l) > 0) return l;
   }
   return std::nullopt;
 }

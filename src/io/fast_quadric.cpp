@@ -293,14 +293,31 @@ struct Recipe {
 };
 
 /// The exact value of a number as read: m 10^e, or the double itself (a point enclosure).
+static_assert(sizeof(unsigned long) >= sizeof(std::uint64_t), "GMP's _ui functions take the 19-digit m");
+
 Rational exact(const Number& x, bool doubles) {
   if (doubles) return Rational(x.x.inf());
   if (x.m == 0) return Rational(0);
-  Integer num(static_cast<unsigned long>(x.m)), p;
-  mpz_ui_pow_ui(p.mpz(), 10, static_cast<unsigned long>(x.e < 0 ? -x.e : x.e));
-  if (x.e >= 0) num *= p;
-  Rational q = x.e >= 0 ? Rational(num) : Rational(num, p);  // canonical
-  return x.neg ? -q : q;
+  Rational q;  // fresh: its mpq is not shared
+  const mpq_ptr r = q.mpq();
+  const auto k = static_cast<unsigned long>(x.e < 0 ? -x.e : x.e);
+  if (x.e >= 0) {
+    mpz_ui_pow_ui(mpq_numref(r), 10, k);
+    mpz_mul_ui(mpq_numref(r), mpq_numref(r), x.m);
+  } else {
+    // m has no factor 10 (its trailing zeros are in e), so the canonical form of m / 10^k is
+    // (m / 2^a 5^b) / (2^(k-a) 5^(k-b)), a and b the powers of 2 and 5 in m (capped at k):
+    // written directly, without a gcd.
+    std::uint64_t m = x.m;
+    unsigned long a = 0, b = 0;
+    while (a < k && m % 2 == 0) m /= 2, ++a;
+    while (b < k && m % 5 == 0) m /= 5, ++b;
+    mpz_set_ui(mpq_numref(r), m);
+    mpz_ui_pow_ui(mpq_denref(r), 5, k - b);
+    mpz_mul_2exp(mpq_denref(r), mpq_denref(r), k - a);
+  }
+  if (x.neg) mpq_neg(r, r);
+  return q;
 }
 
 /// The exact matrix, when first needed: the constructor the general reader calls for the form

@@ -602,7 +602,8 @@ Quartic<Integer> integer_quartic(const Quartic<Rational>& f) {
   return out;
 }
 
-/// One certified decimal per entry of c.roots (exact roots are rounded exactly).
+/// One certified decimal per entry of c.roots (exact roots are rounded exactly); with only_multiple,
+/// only for the roots of multiplicity >= 2 (the others are left empty).
 std::vector<std::string> root_decimals(const Classification& c, int digits, bool only_multiple) {
   std::vector<std::string> out(c.roots.size());
   bool need_isolation = false;
@@ -612,6 +613,7 @@ std::vector<std::string> root_decimals(const Classification& c, int digits, bool
   if (need_isolation) iso = real_root_decimals(integer_quartic(c.f), digits);
   for (std::size_t i = 0; i < c.roots.size(); ++i) {
     const auto& r = c.roots[i];
+    if (only_multiple && r.multiplicity_f < 2) continue;  // not shown: left empty
     if (r.exact)
       out[i] = to_decimal(*r.exact, digits);
     else if (iso.size() == c.roots.size())
