@@ -514,20 +514,38 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
       if (wanted) return;
     }
   };
-  // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side.
+  // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side (either order on the line). Regula falsi with
+  // the Illinois modification (the end that stays has its value halved), bisection when the
+  // interpolated point is not strictly inside; down to a bracket of one or two doubles, as plain
+  // bisection would, in a fraction of the steps.
   auto bisect = [&](double lo, double hi, const std::optional<V3>& wanted) {
     double x[3], best[3];
     bool have = false;
+    double glo = 0, ghi = 0;
+    if (!x_of(lo, x) || !x_of(hi, best)) return;
+    glo = e_of(x);
+    ghi = e_of(best);
+    if (!(glo <= 0 && ghi > 0)) glo = ghi = 0;  // no usable values: bisection only
+    int side = 0;
     for (int i = 0; i < 200; ++i) {
-      const double mid = lo + (hi - lo) / 2;
-      if (!(mid != lo && mid != hi)) break;
+      const double half = lo + (hi - lo) / 2;
+      if (!(half != lo && half != hi)) break;
+      double mid = glo < 0 && ghi > 0 ? (lo * ghi - hi * glo) / (ghi - glo) : half;
+      if (!(mid > std::min(lo, hi) && mid < std::max(lo, hi))) mid = half;
       if (!x_of(mid, x)) return;
-      if (e_of(x) <= 0) {
+      const double g = e_of(x);
+      if (g <= 0) {
         lo = mid;
+        glo = g;
+        if (side == -1) ghi /= 2;
+        side = -1;
         std::copy(x, x + 3, best);
         have = true;
       } else {
         hi = mid;
+        ghi = g;
+        if (side == 1) glo /= 2;
+        side = 1;
       }
     }
     if (have) try_point(best, wanted);
@@ -542,7 +560,11 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
     bisect(0, hi, inside);
   }
   if (!outside) {
-    const double ls = CGAL::to_double(approximate(pr.ls, pr.ls.value, 64, true));
+    // lambda_s from above: the upper end of its stored enclosure (a search needs no more), else a
+    // rational approximation.
+    const double ls = std::isfinite(pr.ls.hi) && pr.ls.hi - pr.ls.lo <= 0x1p-40 * std::fabs(pr.ls.hi)
+                          ? pr.ls.hi
+                          : CGAL::to_double(approximate(pr.ls, pr.ls.value, 64, true));
     if (std::isfinite(ls) && ls < 0) {
       // approach lambda_s from 0: the first lambda with e(x(lambda)) > 0
       for (double l = ls / 2, step = ls / 4; l > ls && l < 0; l += step, step /= 2) {

@@ -474,16 +474,28 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
 void fill_full_evidence(const Quartic<Integer>& fi, const Quadratic<Integer>& si, const Integer& scale,
                         Classification& out, const RootStructure* known) {
   out.has_full_evidence = true;
-  Rational c4(1);
-  for (int i = 0; i < 4; ++i) c4 *= Rational(scale);
-  Rational c3 = c4 / Rational(scale);
-  for (std::size_t i = 0; i < 5; ++i) out.f[i] = Rational(fi[i]) / c4;
-  for (std::size_t i = 0; i < 3; ++i) out.s[i] = Rational(si[i]) / c3;
+  if (mpz_popcount(scale.mpz()) == 1) {  // a power of two (inputs that are doubles): shifts, no gcd
+    const mp_bitcnt_t k = mpz_scan1(scale.mpz(), 0);
+    auto shifted = [](const Integer& z, mp_bitcnt_t bits) {
+      Rational q;  // fresh: its mpq is not shared
+      mpq_set_z(q.mpq(), z.mpz());
+      mpq_div_2exp(q.mpq(), q.mpq(), bits);
+      return q;
+    };
+    for (std::size_t i = 0; i < 5; ++i) out.f[i] = shifted(fi[i], 4 * k);
+    for (std::size_t i = 0; i < 3; ++i) out.s[i] = shifted(si[i], 3 * k);
+  } else {
+    Rational c4(1);
+    for (int i = 0; i < 4; ++i) c4 *= Rational(scale);
+    Rational c3 = c4 / Rational(scale);
+    for (std::size_t i = 0; i < 5; ++i) out.f[i] = Rational(fi[i]) / c4;
+    for (std::size_t i = 0; i < 3; ++i) out.s[i] = Rational(si[i]) / c3;
+  }
   RootStructure rs = known ? *known : exact_root_structure(fi, si);
   out.degree_ftilde = rs.degree_ftilde;
   out.roots = rs.real_roots;
   // rho = (f0/f4)(s2/s0) / u1^2 with u1 = smallest root of s(-u); rational iff Disc(s) is a square.
-  const Rational k = (out.f[0] / out.f[4]) * (out.s[2] / out.s[0]);
+  const Rational k(fi[0] * si[2], fi[4] * si[0]);  // (f0 / f4)(s2 / s0): the scales cancel
   Integer d = si[1] * si[1] - 4 * si[2] * si[0];
   if (d >= 0 && mpz_perfect_square_p(d.mpz())) {
     Integer r;
