@@ -602,6 +602,27 @@ std::optional<V3> centre_of(const Matrix4& e) {
   return V3{Rational(det3(3, 1, 2), det), Rational(det3(0, 3, 2), det), Rational(det3(0, 1, 3), det)};
 }
 
+/// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals; nullopt when it is
+/// not finite. An approximation: the caller checks it exactly.
+std::optional<V3> approximate_centre(const Matrix4& e) {
+  double k[3][4];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) k[i][j] = CGAL::to_double(e(i, j)) * (j == 3 ? -1 : 1);
+  auto det3 = [&](int c0, int c1, int c2) {
+    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
+           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
+           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
+  };
+  const double det = det3(0, 1, 2);
+  const double x[3] = {det3(3, 1, 2) / det, det3(0, 3, 2) / det, det3(0, 1, 3) / det};
+  V3 out;
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(x[i])) return std::nullopt;
+    out[static_cast<std::size_t>(i)] = exact_rational(x[i]);
+  }
+  return out;
+}
+
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 bool crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
@@ -613,21 +634,25 @@ bool crossing_points(const Pair& pr, Certificate& c) {
     if (s < 0 && !inside) inside = x;
     if (s > 0 && !outside) outside = x;
   };
-  const auto centre = centre_of(pr.E);
-  if (centre) consider(*centre);
-  if (centre) {
-    // Candidates are pulled towards a dyadic centre (short exact arithmetic); the exact one if
-    // that is not strictly inside the solid.
-    V3 pull = *centre;
-    V3 dyadic;
-    bool finite = true;
-    for (int i = 0; i < 3; ++i) {
-      const double d = CGAL::to_double((*centre)[i]);
-      finite = finite && std::isfinite(d);
-      if (finite) dyadic[i] = exact_rational(d);
-    }
-    if (finite && ez.sign(IntegerForm::Point(dyadic)) < 0) pull = dyadic;
-    double_curve_search(pr, pull, inside, outside, consider);
+  // Candidates are pulled towards a dyadic centre (short exact arithmetic): the centre solved in
+  // doubles, taken exactly, when it is strictly inside the solid (almost always); else the exact
+  // centre (Cramer's rule on integers, several times dearer), which the surface search below also
+  // needs, and then only.
+  std::optional<V3> centre;
+  bool centre_known = false;
+  auto exact_centre = [&] {
+    if (!centre_known) centre = centre_of(pr.E);
+    centre_known = true;
+  };
+  std::optional<V3> pull = approximate_centre(pr.E);
+  if (pull && ez.sign(IntegerForm::Point(*pull)) >= 0) pull.reset();
+  if (!pull) {
+    exact_centre();
+    pull = centre;
+  }
+  if (pull) {
+    consider(*pull);
+    double_curve_search(pr, *pull, inside, outside, consider);
   }
   // Along the curve x(lambda): for lambda > 0 it minimises lambda p + e, so while e(x(lambda)) <= 0
   // it is the minimiser of p over a smaller solid, tending to the minimiser over the solid ellipsoid
@@ -705,6 +730,7 @@ bool crossing_points(const Pair& pr, Certificate& c) {
       }
     }
   }
+  if (!inside || !outside) exact_centre();
   if (centre && !inside) search_surface(pr, *centre, true, inside, consider);
   if (centre && !outside) search_surface(pr, *centre, false, outside, consider);
   if (!inside || !outside) return false;
