@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+#include "forms/forms.hpp"
+
 namespace relpos::anysize {
 
 Poly trimmed(Poly p) {
@@ -163,12 +165,9 @@ LambdaS lambda_s_of(const Poly& s) {
   // denominators): disc = (S1^2 - 4 S2 S0) / L^2, reduced by one gcd instead of a canonicalization
   // per rational operation. sqrt(disc) = sqrt(N Den) / Den: rational iff N Den is a perfect square.
   Integer l(1), num, den, g;  // fresh objects: written through mpz()
-  for (const Rational& c : s) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(c.mpq()));
+  forms::lcm_of_denominators(s.begin(), s.end(), l);
   Integer si[3];
-  for (std::size_t i = 0; i < 3; ++i) {
-    mpz_divexact(si[i].mpz(), l.mpz(), mpq_denref(s[i].mpq()));
-    mpz_mul(si[i].mpz(), si[i].mpz(), mpq_numref(s[i].mpq()));
-  }
+  for (std::size_t i = 0; i < 3; ++i) forms::scaled_numerator(s[i], l, si[i].mpz());
   mpz_mul(num.mpz(), si[1].mpz(), si[1].mpz());
   mpz_mul(g.mpz(), si[2].mpz(), si[0].mpz());
   mpz_submul_ui(num.mpz(), g.mpz(), 4);

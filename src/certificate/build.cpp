@@ -11,6 +11,7 @@
 
 #include "anysize/exact.hpp"
 #include "core/pencil.hpp"
+#include "forms/forms.hpp"
 
 namespace relpos::certificate {
 namespace {
@@ -29,13 +30,11 @@ class IntegerForm {
  public:
   explicit IntegerForm(const Matrix4& q) {
     Integer l(1);
-    for (int i = 0; i < 4; ++i)
-      for (int j = i; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(q(i, j).mpq()));
+    forms::lcm_of_denominators(q.a.begin(), q.a.end(), l);
     for (int i = 0; i < 4; ++i)
       for (int j = i; j < 4; ++j) {
         mpz_init(z_[i][j]);
-        mpz_divexact(z_[i][j], l.mpz(), mpq_denref(q(i, j).mpq()));
-        mpz_mul(z_[i][j], z_[i][j], mpq_numref(q(i, j).mpq()));
+        forms::scaled_numerator(q(i, j), l, z_[i][j]);
         if (j > i) mpz_mul_2exp(z_[i][j], z_[i][j], 1);  // off-diagonal entries appear twice
       }
   }
@@ -101,13 +100,9 @@ struct Pair {
     }
     ls = anysize::lambda_s_of(s);
     Integer l(1);  // f times the lcm of its denominators: integer coefficients for f_sign
-    for (const Rational& c : f) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(c.mpq()));
-    for (const Rational& c : f) {
-      Integer z;
-      mpz_divexact(z.mpz(), l.mpz(), mpq_denref(c.mpq()));
-      mpz_mul(z.mpz(), z.mpz(), mpq_numref(c.mpq()));
-      fz.push_back(z);
-    }
+    forms::lcm_of_denominators(f.begin(), f.end(), l);
+    fz.resize(f.size());
+    for (std::size_t k = 0; k < f.size(); ++k) forms::scaled_numerator(f[k], l, fz[k].mpz());
   }
   std::vector<Integer> fz;
   /// The sign of f(l), from the integer coefficients: sum fz_k n^k d^(deg - k) for l = n / d, d > 0
@@ -578,28 +573,32 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
   }
 }
 
-/// The centre -M^{-1} m of the ellipsoid, by Cramer's rule on E times the lcm of its denominators
-/// (integer determinants, one rational canonicalisation per coordinate); nullopt if M is singular.
-std::optional<V3> centre_of(const Matrix4& e) {
-  Integer l(1);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(e(i, j).mpq()));
-  Integer k[3][4];  // [M | -m] times l
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 4; ++j) {
-      const Rational& q = e(i, j);
-      mpz_divexact(k[i][j].mpz(), l.mpz(), mpq_denref(q.mpq()));
-      mpz_mul(k[i][j].mpz(), k[i][j].mpz(), mpq_numref(q.mpq()));
-      if (j == 3) mpz_neg(k[i][j].mpz(), k[i][j].mpz());
-    }
+/// Cramer's rule for [K | r] (3x4, the right-hand side in column 3): the determinant of K, then
+/// those with column 0, 1 and 2 replaced by r. Written once for the exact and the double centre.
+template <class T>
+std::array<T, 4> cramer(const T (&k)[3][4]) {
   auto det3 = [&](int c0, int c1, int c2) {
     return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
            k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
            k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
   };
-  const Integer det = det3(0, 1, 2);
-  if (det == 0) return std::nullopt;
-  return V3{Rational(det3(3, 1, 2), det), Rational(det3(0, 3, 2), det), Rational(det3(0, 1, 3), det)};
+  return {det3(0, 1, 2), det3(3, 1, 2), det3(0, 3, 2), det3(0, 1, 3)};
+}
+
+/// The centre -M^{-1} m of the ellipsoid, by Cramer's rule on E times the lcm of its denominators
+/// (integer determinants, one rational canonicalisation per coordinate); nullopt if M is singular.
+std::optional<V3> centre_of(const Matrix4& e) {
+  Integer l(1);
+  forms::lcm_of_denominators(e.a.begin(), e.a.end(), l);
+  Integer k[3][4];  // [M | -m] times l
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) {
+      forms::scaled_numerator(e(i, j), l, k[i][j].mpz());
+      if (j == 3) mpz_neg(k[i][j].mpz(), k[i][j].mpz());
+    }
+  const std::array<Integer, 4> d = cramer(k);
+  if (d[0] == 0) return std::nullopt;
+  return V3{Rational(d[1], d[0]), Rational(d[2], d[0]), Rational(d[3], d[0])};
 }
 
 /// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals; nullopt when it is
@@ -608,17 +607,12 @@ std::optional<V3> approximate_centre(const Matrix4& e) {
   double k[3][4];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 4; ++j) k[i][j] = CGAL::to_double(e(i, j)) * (j == 3 ? -1 : 1);
-  auto det3 = [&](int c0, int c1, int c2) {
-    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
-           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
-           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
-  };
-  const double det = det3(0, 1, 2);
-  const double x[3] = {det3(3, 1, 2) / det, det3(0, 3, 2) / det, det3(0, 1, 3) / det};
+  const std::array<double, 4> d = cramer(k);
   V3 out;
-  for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(x[i])) return std::nullopt;
-    out[static_cast<std::size_t>(i)] = exact_rational(x[i]);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double x = d[i + 1] / d[0];
+    if (!std::isfinite(x)) return std::nullopt;
+    out[i] = exact_rational(x);
   }
   return out;
 }

@@ -303,10 +303,11 @@ MatrixOf<Interval> interval_entries(const Q& q) {
   return to_intervals(q.matrix());
 }
 
-/// Degenerate enclosures of a matrix of doubles, else certified ones of its rationals (one quadric
-/// of a pair read from text, the other built otherwise).
+/// The stored enclosures of a quadric read from text, degenerate ones of a matrix of doubles, else
+/// certified ones of its rationals (for a pair of which one quadric was read from text).
 template <class Q>
 detail::EnclosureMatrix4 enclosure_of(const Q& q) {
+  if (q.storage().enclosure()) return *q.storage().enclosure();
   detail::EnclosureMatrix4 out;
   if (q.doubles()) {
     out.lo = out.hi = *q.doubles();
@@ -415,14 +416,8 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
       }
     } else if (nearest) {  // stage 1' for other entries: double enclosures (stored, or of the rationals)
       v.stage = Stage::SemiStaticDouble;
-      const auto& pe = p.storage().enclosure();
-      const auto& ee = e.storage().enclosure();
-      if (pe && ee)
-        d = semi_static_filter_signs(*pe, *ee);
-      else if (pe)
-        d = semi_static_filter_signs(*pe, enclosure_of(e));
-      else if (ee)
-        d = semi_static_filter_signs(enclosure_of(p), *ee);
+      if (p.storage().enclosure() || e.storage().enclosure())
+        d = semi_static_filter_signs(enclosure_of(p), enclosure_of(e));
       else
         d = semi_static_filter_signs(p.matrix(), e.matrix());
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/shape_filter.hpp"
+#include "forms/forms.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos {
@@ -353,10 +354,7 @@ int filtered_paraboloid(const Matrix4& p) {
   if (!exactly_symmetric(p)) return 0;
   if (!shape_filter::impl::zero_by_pattern(CGAL::is_zero(p.a[0]), CGAL::is_zero(p.a[1]), CGAL::is_zero(p.a[2]),
                                            CGAL::is_zero(p.a[5]), CGAL::is_zero(p.a[6]), CGAL::is_zero(p.a[10]))) {
-    const Rational det3 = p(0, 0) * (p(1, 1) * p(2, 2) - p(1, 2) * p(1, 2)) -
-                          p(0, 1) * (p(0, 1) * p(2, 2) - p(1, 2) * p(0, 2)) +
-                          p(0, 2) * (p(0, 1) * p(1, 2) - p(1, 1) * p(0, 2));
-    if (!CGAL::is_zero(det3)) return 0;
+    if (!CGAL::is_zero(shape_filter::impl::det3<Rational>(p.a))) return 0;
   }
   CGAL::Protect_FPU_rounding<true> guard;
   return shape_filter::certified_paraboloid_intervals(entry_intervals(p));
@@ -541,8 +539,7 @@ namespace {
 /// integer form, num * (l / den), has at most bits(num) + bits(l) - bits(den) + 1 bits.
 std::size_t normalized_bits_bound(const Matrix4& m) {
   Integer l(1);
-  for (const Rational& q : m.a)
-    if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) != 0) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(q.mpq()));
+  forms::lcm_of_denominators(m.a.begin(), m.a.end(), l);
   const std::size_t lb = mpz_sizeinbase(l.mpz(), 2);
   std::size_t bound = 0;
   for (const Rational& q : m.a)
@@ -554,11 +551,10 @@ std::size_t normalized_bits_bound(const Matrix4& m) {
 
 std::size_t normalized_bits(const Matrix4& m) {
   Integer l(1), g(0);
-  for (const Rational& q : m.a) mpz_lcm(l.mpz(), l.mpz(), q.denominator().mpz());
+  forms::lcm_of_denominators(m.a.begin(), m.a.end(), l);
   std::array<Integer, 16> z;
   for (std::size_t i = 0; i < 16; ++i) {
-    mpz_divexact(z[i].mpz(), l.mpz(), m.a[i].denominator().mpz());
-    mpz_mul(z[i].mpz(), z[i].mpz(), m.a[i].numerator().mpz());
+    forms::scaled_numerator(m.a[i], l, z[i].mpz());
     mpz_gcd(g.mpz(), g.mpz(), z[i].mpz());
   }
   if (g == 0) return 0;

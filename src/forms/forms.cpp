@@ -7,13 +7,21 @@
 #include <cmath>
 
 namespace relpos::forms {
+namespace {
+
+/// The power of two that brings mx into [1/2, 1) (1 for zero or a non-finite mx), as an interval.
+Interval scale_below_one(double mx) {
+  int e = 0;
+  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
+  return Interval(std::ldexp(1.0, -e));
+}
+
+}  // namespace
 
 MatrixOf<Interval> to_intervals(const DoubleMatrix4& m) {
   double mx = 0;
   for (double x : m) mx = std::max(mx, std::fabs(x));
-  int e = 0;
-  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
-  const Interval scale(std::ldexp(1.0, -e));
+  const Interval scale = scale_below_one(mx);
   MatrixOf<Interval> out;
   for (std::size_t i = 0; i < 16; ++i) out.a[i] = Interval(m[i]) * scale;
   return out;
@@ -22,9 +30,7 @@ MatrixOf<Interval> to_intervals(const DoubleMatrix4& m) {
 MatrixOf<Interval> to_intervals(const detail::EnclosureMatrix4& m) {
   double mx = 0;
   for (std::size_t i = 0; i < 16; ++i) mx = std::max({mx, std::fabs(m.lo[i]), std::fabs(m.hi[i])});
-  int e = 0;
-  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
-  const Interval scale(std::ldexp(1.0, -e));
+  const Interval scale = scale_below_one(mx);
   MatrixOf<Interval> out;
   for (std::size_t i = 0; i < 16; ++i) out.a[i] = Interval(m.lo[i], m.hi[i]) * scale;
   return out;
@@ -37,9 +43,7 @@ MatrixOf<Interval> to_intervals(const Matrix4& m) {
     v[i] = mpq_get_d(m.a[i].mpq());
     mx = std::max(mx, std::fabs(v[i]));
   }
-  int e = 0;
-  if (mx > 0 && std::isfinite(mx)) std::frexp(mx, &e);
-  const Interval scale(std::ldexp(1.0, -e));
+  const Interval scale = scale_below_one(mx);
   MatrixOf<Interval> out;
   for (std::size_t i = 0; i < 16; ++i) {
     const double x = v[i];
@@ -92,10 +96,8 @@ std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, co
   for (const auto* m : {&p, &e}) lcm_of_denominators(m->a.begin(), m->a.end(), l);
   scale = l;
   for (std::size_t i = 0; i < 16; ++i) {
-    mpz_divexact(pi.a[i].mpz(), l.mpz(), mpq_denref(p.a[i].mpq()));
-    mpz_mul(pi.a[i].mpz(), pi.a[i].mpz(), mpq_numref(p.a[i].mpq()));
-    mpz_divexact(ei.a[i].mpz(), l.mpz(), mpq_denref(e.a[i].mpq()));
-    mpz_mul(ei.a[i].mpz(), ei.a[i].mpz(), mpq_numref(e.a[i].mpq()));
+    scaled_numerator(p.a[i], l, pi.a[i].mpz());
+    scaled_numerator(e.a[i], l, ei.a[i].mpz());
   }
   return {pi, ei};
 }

@@ -41,7 +41,14 @@ using Interval = CGAL::Interval_nt<false>;
 /// The lcm of the denominators of a range of rationals, folded into `l` (one loop for every caller).
 template <class It>
 void lcm_of_denominators(It first, It last, Integer& l) {
-  for (; first != last; ++first) mpz_lcm(l.mpz(), l.mpz(), first->denominator().mpz());
+  for (; first != last; ++first) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(first->mpq()));
+}
+
+/// The integer q l, for l a multiple of q's denominator (lcm_of_denominators), written into `out`
+/// (a fresh Integer's mpz, or an mpz_t: Gmpz shares its value on copy and mpz() does not unshare).
+inline void scaled_numerator(const Rational& q, const Integer& l, mpz_ptr out) {
+  mpz_divexact(out, l.mpz(), mpq_denref(q.mpq()));
+  mpz_mul(out, out, mpq_numref(q.mpq()));
 }
 
 /// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
