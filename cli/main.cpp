@@ -193,7 +193,7 @@ int run_classify(Args& args) {
     }
     const relpos::Classification c = relpos::classify(*e, *p, relpos::Evidence::Full);
     if (json)
-      write_json_line(relpos::io::classification_to_json(c, options));
+      std::cout << relpos::io::classification_json_text(c, options) << '\n';
     else
       std::cout << relpos::io::classification_to_text(c, options);
     return finish_cout();

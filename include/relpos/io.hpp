@@ -62,6 +62,10 @@ struct RenderOptions {
 /// evidence degree_ftilde, f, s and multiple_roots. Key order is stable.
 nlohmann::ordered_json classification_to_json(const Classification& c, const RenderOptions& options = {});
 
+/// The same report as one line of JSON text: dump_json(classification_to_json(c, options)),
+/// written directly (what `relpos classify --json`, `relpos batch` and the Python module print).
+std::string classification_json_text(const Classification& c, const RenderOptions& options = {});
+
 /// The contact-only answer (doc/contact.md): contact, position, rule, decided_by.
 nlohmann::ordered_json contact_to_json(const ContactAnswer& a);
 

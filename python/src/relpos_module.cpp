@@ -355,7 +355,7 @@ PYBIND11_MODULE(_relpos, m) {
           relpos::check_normalized_pair_size(e, p);  // the CLI's limit (doc/cli.md, Limits)
           const relpos::Classification c =
               relpos::classify(e, p, full ? relpos::Evidence::Full : relpos::Evidence::Minimal);
-          text = relpos::io::classification_to_json(c).dump();
+          text = relpos::io::classification_json_text(c);
         }
         return text;
       },

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "relpos/io.hpp"
+#include "io/json_write.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
@@ -14,14 +14,6 @@ namespace relpos {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-Json vec_json(const Vector3& v) { return Json::array({to_string(v[0]), to_string(v[1]), to_string(v[2])}); }
-
-Json quad_json(const QuadraticNumber& x) { return Json{{"a", to_string(x.a)}, {"b", to_string(x.b)}}; }
-
-Json quad_vec_json(const QuadraticVector3& v) {
-  return Json::array({quad_json(v[0]), quad_json(v[1]), quad_json(v[2])});
-}
 
 /// floor(sqrt(d) * 10^k) / 10^k: below sqrt d by less than 10^-k.
 Rational sqrt_below(const Integer& d, unsigned long k) {
@@ -83,35 +75,97 @@ QuadraticVector3 quad_vec(const Json& j, const std::string& path) {
 
 }  // namespace
 
-Json certificate_to_json(const Certificate& c, int digits) {
+}  // namespace relpos
+
+namespace relpos::io::detail {
+namespace {
+
+void vec_json(const Vector3& v, JsonWriter& w) { w.rationals(v.data(), v.size()); }
+
+void quad_json(const QuadraticNumber& x, JsonWriter& w) {
+  w.raw("{\"a\":");
+  w.rational(x.a);
+  w.raw(",\"b\":");
+  w.rational(x.b);
+  w.raw("}");
+}
+
+void quad_vec_json(const QuadraticVector3& v, JsonWriter& w) {
+  for (std::size_t i = 0; i < 3; ++i) {
+    w.raw(i ? "," : "[");
+    quad_json(v[i], w);
+  }
+  w.raw("]");
+}
+
+}  // namespace
+
+void append_certificate(const Certificate& c, int digits, JsonWriter& w) {
   using K = Certificate::Kind;
   switch (c.kind) {
     case K::None:
-      return Json(nullptr);
+      w.null();
+      return;
     case K::Definite:
-      return Json{{"lambda", to_string(c.lambda)}};
+      w.raw("{\"lambda\":");
+      w.rational(c.lambda);
+      w.raw("}");
+      return;
     case K::Tangent:
-      return Json{{"lambda", to_string(c.lambda)}, {"contact", vec_json(c.contact)}};
+      w.raw("{\"lambda\":");
+      w.rational(c.lambda);
+      w.raw(",\"contact\":");
+      vec_json(c.contact, w);
+      w.raw("}");
+      return;
     case K::Crossing:
-      return Json{{"inside", vec_json(c.inside)}, {"outside", vec_json(c.outside)}};
+      w.raw("{\"inside\":");
+      vec_json(c.inside, w);
+      w.raw(",\"outside\":");
+      vec_json(c.outside, w);
+      w.raw("}");
+      return;
     case K::HardTangent: {
-      Json out;
-      out["lambda"] = Json{{"a", to_string(c.lambda_q.a)}, {"b", to_string(c.lambda_q.b)}, {"d", to_string(c.d)}};
-      Json set;
-      set["center"] = quad_vec_json(c.centre);
-      set["directions"] = Json::array();
-      for (const auto& w : c.directions) set["directions"].push_back(quad_vec_json(w));
-      set["radius2"] = quad_json(c.radius2);
-      set["decimal"] =
-          Json{{"lambda", quad_decimal(c.lambda_q, c.d, digits)},
-               {"center", Json::array({quad_decimal(c.centre[0], c.d, digits), quad_decimal(c.centre[1], c.d, digits),
-                                       quad_decimal(c.centre[2], c.d, digits)})},
-               {"radius2", quad_decimal(c.radius2, c.d, digits)}};
-      out["contact_set"] = std::move(set);
-      return out;
+      w.raw("{\"lambda\":{\"a\":");
+      w.rational(c.lambda_q.a);
+      w.raw(",\"b\":");
+      w.rational(c.lambda_q.b);
+      w.raw(",\"d\":");
+      w.rational(Rational(c.d));
+      w.raw("},\"contact_set\":{\"center\":");
+      quad_vec_json(c.centre, w);
+      w.raw(",\"directions\":[");
+      for (std::size_t i = 0; i < c.directions.size(); ++i) {
+        if (i) w.raw(",");
+        quad_vec_json(c.directions[i], w);
+      }
+      w.raw("],\"radius2\":");
+      quad_json(c.radius2, w);
+      w.raw(",\"decimal\":{\"lambda\":");
+      w.string(quad_decimal(c.lambda_q, c.d, digits));
+      w.raw(",\"center\":[");
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (i) w.raw(",");
+        w.string(quad_decimal(c.centre[i], c.d, digits));
+      }
+      w.raw("],\"radius2\":");
+      w.string(quad_decimal(c.radius2, c.d, digits));
+      w.raw("}}}");
+      return;
     }
   }
-  return Json(nullptr);
+  w.null();
+}
+
+}  // namespace relpos::io::detail
+
+namespace relpos {
+
+Json certificate_to_json(const Certificate& c, int digits) {
+  std::string text;
+  io::detail::JsonWriter w(text);
+  io::detail::append_certificate(c, digits, w);
+  return Json::parse(text);
 }
 
 Certificate certificate_from_json(const Json& j) {

@@ -11,6 +11,7 @@
 
 #include "io/fast_quadric.hpp"
 #include "io/json_read.hpp"
+#include "io/json_write.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
@@ -303,21 +304,21 @@ std::string answer_batch_line(std::string_view line, long line_number, const Bat
   BatchLine in;
   try {
     read_batch_line(line, line_number, options, nullptr, in);
-    Json report;
+    std::string text = "{\"id\":" + in.id;  // the id goes first
     if (options.contact_only) {
-      report = contact_to_json(contact(*in.ellipsoid, *in.paraboloid));
-    } else {
-      const Classification c = classify(*in.ellipsoid, *in.paraboloid, options.evidence);
-      if (options.evidence == Evidence::Full) {
-        report = classification_to_json(c, options.render);
-      } else {
-        std::string text = "{\"id\":" + in.id;
-        append_minimal(c, text);
-        return text;
-      }
+      const std::string report = dump_json(contact_to_json(contact(*in.ellipsoid, *in.paraboloid)));
+      text.append(",").append(report, 1, std::string::npos);
+      return text;
     }
-    std::string text = dump_json(report);  // "{...}": the id goes first
-    text.replace(0, 1, "{\"id\":" + in.id + ",");
+    const Classification c = classify(*in.ellipsoid, *in.paraboloid, options.evidence);
+    if (options.evidence == Evidence::Full) {
+      text.reserve(2048);  // a full report is 1-2 KB: grown once
+      text += ',';
+      detail::JsonWriter w(text);
+      detail::append_classification(c, options.render, w);
+    } else {
+      append_minimal(c, text);
+    }
     return text;
   } catch (const InputError& err) {
     return error_line(in.id, err.what());

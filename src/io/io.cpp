@@ -13,6 +13,7 @@
 
 #include "core/roots.hpp"
 #include "io/json_read.hpp"
+#include "io/json_write.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos::io {
@@ -659,48 +660,124 @@ std::string polynomial_to_text(const Rational* c, int size, const std::string& v
   return out.empty() ? "0" : out;
 }
 
-Json classification_to_json(const Classification& c, const RenderOptions& options) {
-  Json j;
-  j["position"] = to_string(c.verdict.position);
-  j["small"] = c.verdict.small;
-  j["contact"] = c.verdict.meets() ? Json(*c.verdict.meets()) : Json(nullptr);
-  j["rho_vs_one"] = rho_vs_one_text(c.verdict.rho_vs_one);
-  j["rho"] = c.rho ? Json(to_string(*c.rho)) : Json(nullptr);
+namespace detail {
+
+void append_classification(const Classification& c, const RenderOptions& options, JsonWriter& w) {
+  const Verdict& v = c.verdict;
+  w.key("position");
+  w.string(to_string(v.position));
+  w.raw(",");
+  w.key("small");
+  w.boolean(v.small);
+  w.raw(",");
+  w.key("contact");
+  if (const auto meets = v.meets())
+    w.boolean(*meets);
+  else
+    w.null();
+  w.raw(",");
+  w.key("rho_vs_one");
+  w.string(rho_vs_one_text(v.rho_vs_one));
+  w.raw(",");
+  w.key("rho");
+  if (c.rho)
+    w.rational(*c.rho);
+  else
+    w.null();
+  w.raw(",");
   // From the exact rho when there is one: nearest double (CGAL's to_double of a Gmpq truncates).
   const double rho_approx = c.rho ? std::strtod(to_decimal(*c.rho, 40).c_str(), nullptr) : c.rho_approx;
-  j["rho_approx"] = c.has_full_evidence && std::isfinite(rho_approx) ? Json(rho_approx) : Json(nullptr);
-  j["rule"] = c.rule_text();
-  j["stage"] = to_string(c.verdict.stage);
-  j["disc_sign"] = int(c.verdict.sign_disc_f);
-  j["disc_ftilde_sign"] = int(c.verdict.sign_disc_ftilde);
-  if (c.has_full_evidence) j["degree_ftilde"] = c.degree_ftilde;
-  j["roots"] = Json{{"real", int(c.verdict.real_roots)},
-                    {"negative", int(c.verdict.negative_roots)},
-                    {"positive", int(c.verdict.positive_roots)},
-                    {"nonreal", int(c.verdict.nonreal_roots)}};
-  if (!c.has_full_evidence) return j;
-  Json f = Json::array(), s = Json::array();
-  for (const auto& q : c.f) f.push_back(to_string(q));
-  for (const auto& q : c.s) s.push_back(to_string(q));
-  j["f"] = std::move(f);
-  j["s"] = std::move(s);
-  Json multiple = Json::array();
+  w.key("rho_approx");
+  if (c.has_full_evidence && std::isfinite(rho_approx))
+    w.number(rho_approx);
+  else
+    w.null();
+  w.raw(",");
+  w.key("rule");
+  w.string(c.rule_text());
+  w.raw(",");
+  w.key("stage");
+  w.string(to_string(v.stage));
+  w.raw(",");
+  w.key("disc_sign");
+  w.integer(v.sign_disc_f);
+  w.raw(",");
+  w.key("disc_ftilde_sign");
+  w.integer(v.sign_disc_ftilde);
+  if (c.has_full_evidence) {
+    w.raw(",");
+    w.key("degree_ftilde");
+    w.integer(c.degree_ftilde);
+  }
+  w.raw(",\"roots\":{\"real\":");
+  w.integer(v.real_roots);
+  w.raw(",\"negative\":");
+  w.integer(v.negative_roots);
+  w.raw(",\"positive\":");
+  w.integer(v.positive_roots);
+  w.raw(",\"nonreal\":");
+  w.integer(v.nonreal_roots);
+  w.raw("}");
+  if (!c.has_full_evidence) {
+    w.raw("}");
+    return;
+  }
+  w.raw(",");
+  w.key("f");
+  w.rationals(c.f.data(), c.f.size());
+  w.raw(",");
+  w.key("s");
+  w.rationals(c.s.data(), c.s.size());
+  w.raw(",");
+  w.key("multiple_roots");
+  w.raw("[");
   const auto approx = root_decimals(c, options.digits, /*only_multiple=*/true);
+  bool first = true;
   for (std::size_t i = 0; i < c.roots.size(); ++i) {
     const auto& r = c.roots[i];
     if (r.multiplicity_f < 2) continue;
-    Json m;
-    m["value"] = r.exact ? Json(to_string(*r.exact)) : Json(nullptr);
-    m["interval"] = Json::array({to_string(r.lower), to_string(r.upper)});
-    m["approx"] = approx[i];
-    m["multiplicity_f"] = r.multiplicity_f;
-    m["multiplicity_s"] = r.multiplicity_s;
-    m["tangency"] = r.tangency();
-    multiple.push_back(std::move(m));
+    w.raw(first ? "{" : ",{");
+    first = false;
+    w.key("value");
+    if (r.exact)
+      w.rational(*r.exact);
+    else
+      w.null();
+    w.raw(",");
+    w.key("interval");
+    const Rational ends[2] = {r.lower, r.upper};
+    w.rationals(ends, 2);
+    w.raw(",");
+    w.key("approx");
+    w.string(approx[i]);
+    w.raw(",");
+    w.key("multiplicity_f");
+    w.integer(r.multiplicity_f);
+    w.raw(",");
+    w.key("multiplicity_s");
+    w.integer(r.multiplicity_s);
+    w.raw(",");
+    w.key("tangency");
+    w.boolean(r.tangency());
+    w.raw("}");
   }
-  j["multiple_roots"] = std::move(multiple);
-  j["certificate"] = certificate_to_json(c.certificate, options.digits);
-  return j;
+  w.raw("],");
+  w.key("certificate");
+  append_certificate(c.certificate, options.digits, w);
+  w.raw("}");
+}
+
+}  // namespace detail
+
+std::string classification_json_text(const Classification& c, const RenderOptions& options) {
+  std::string out = "{";
+  detail::JsonWriter w(out);
+  detail::append_classification(c, options, w);
+  return out;
+}
+
+Json classification_to_json(const Classification& c, const RenderOptions& options) {
+  return Json::parse(classification_json_text(c, options));
 }
 
 namespace {

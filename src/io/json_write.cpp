@@ -1,0 +1,58 @@
+#include "io/json_write.hpp"
+
+#include <gmp.h>
+
+#include <nlohmann/json.hpp>
+
+namespace relpos::io::detail {
+
+void JsonWriter::key(std::string_view name) {
+  out_ += '"';
+  out_.append(name);
+  out_ += "\":";
+}
+
+void JsonWriter::string(std::string_view s) {
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c >= 0x80 || c == '"' || c == '\\') {  // escapes or UTF-8: the general writer
+      out_ += dump_json(nlohmann::ordered_json(std::string(s)));
+      return;
+    }
+  }
+  out_ += '"';
+  out_.append(s);
+  out_ += '"';
+}
+
+void JsonWriter::integer(long n) { out_ += std::to_string(n); }
+
+void JsonWriter::number(double x) { out_ += dump_json(nlohmann::ordered_json(x)); }
+
+void JsonWriter::rational(const Rational& q) {
+  // mpz_get_str straight into the output: no temporary strings for the longest values of a report.
+  auto put = [this](const Integer& z) {
+    const std::size_t at = out_.size();
+    out_.resize(at + mpz_sizeinbase(z.mpz(), 10) + 2);
+    mpz_get_str(&out_[at], 10, z.mpz());
+    out_.resize(at + std::char_traits<char>::length(&out_[at]));
+  };
+  out_ += '"';
+  put(q.numerator());
+  if (q.denominator() != 1) {
+    out_ += '/';
+    put(q.denominator());
+  }
+  out_ += '"';
+}
+
+void JsonWriter::rationals(const Rational* q, std::size_t n) {
+  out_ += '[';
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i) out_ += ',';
+    rational(q[i]);
+  }
+  out_ += ']';
+}
+
+}  // namespace relpos::io::detail
