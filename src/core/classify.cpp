@@ -469,16 +469,9 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
 void fill_full_evidence(const Quartic<Integer>& fi, const Quadratic<Integer>& si, const Integer& scale,
                         Classification& out, const RootStructure* known) {
   out.has_full_evidence = true;
-  if (mpz_popcount(scale.mpz()) == 1) {  // a power of two (inputs that are doubles): shifts, no gcd
-    const mp_bitcnt_t k = mpz_scan1(scale.mpz(), 0);
-    auto shifted = [](const Integer& z, mp_bitcnt_t bits) {
-      Rational q;  // fresh: its mpq is not shared
-      mpq_set_z(q.mpq(), z.mpz());
-      mpq_div_2exp(q.mpq(), q.mpq(), bits);
-      return q;
-    };
-    for (std::size_t i = 0; i < 5; ++i) out.f[i] = shifted(fi[i], 4 * k);
-    for (std::size_t i = 0; i < 3; ++i) out.s[i] = shifted(si[i], 3 * k);
+  if (const auto smooth = forms::as_power_of_two_and_five(scale)) {  // doubles and decimal text: no gcd
+    for (std::size_t i = 0; i < 5; ++i) out.f[i] = forms::divided_by_power(fi[i], *smooth, 4);
+    for (std::size_t i = 0; i < 3; ++i) out.s[i] = forms::divided_by_power(si[i], *smooth, 3);
   } else {
     Rational c4(1);
     for (int i = 0; i < 4; ++i) c4 *= Rational(scale);

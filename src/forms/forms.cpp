@@ -131,4 +131,38 @@ std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix
   return {form(p), form(e)};
 }
 
+std::optional<PowerOfTwoAndFive> as_power_of_two_and_five(const Integer& scale) {
+  if (mpz_sgn(scale.mpz()) <= 0) return std::nullopt;
+  PowerOfTwoAndFive out;
+  out.twos = mpz_scan1(scale.mpz(), 0);
+  mpz_t rest;
+  mpz_init(rest);
+  mpz_tdiv_q_2exp(rest, scale.mpz(), out.twos);
+  out.fives = mpz_remove(rest, rest, Integer(5).mpz());
+  const bool smooth = mpz_cmp_ui(rest, 1) == 0;
+  mpz_clear(rest);
+  if (!smooth) return std::nullopt;
+  return out;
+}
+
+Rational divided_by_power(const Integer& z, PowerOfTwoAndFive scale, unsigned long k) {
+  Rational out;  // fresh: its mpq is not shared, so it is written in place
+  mpz_ptr num = mpq_numref(out.mpq());
+  mpz_ptr den = mpq_denref(out.mpq());
+  if (mpz_sgn(z.mpz()) == 0) return out;
+  const unsigned long twos = scale.twos * k, fives = scale.fives * k;
+  const unsigned long shift = std::min<unsigned long>(mpz_scan1(z.mpz(), 0), twos);
+  mpz_tdiv_q_2exp(num, z.mpz(), shift);
+  Integer five(5);
+  unsigned long removed = mpz_remove(num, num, five.mpz());  // by powers 5^(2^j): few divisions
+  if (removed > fives) {                                     // more fives than the scale has: put back
+    mpz_ui_pow_ui(den, 5, removed - fives);
+    mpz_mul(num, num, den);
+    removed = fives;
+  }
+  mpz_ui_pow_ui(den, 5, fives - removed);
+  mpz_mul_2exp(den, den, twos - shift);
+  return out;
+}
+
 }  // namespace relpos::forms

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <utility>
 
 #include "relpos/numbers.hpp"
@@ -50,6 +51,19 @@ inline void scaled_numerator(const Rational& q, const Integer& l, mpz_ptr out) {
   mpz_divexact(out, l.mpz(), mpq_denref(q.mpq()));
   mpz_mul(out, out, mpq_numref(q.mpq()));
 }
+
+/// A positive integer 2^twos 5^fives: the lcm of the denominators of doubles and decimal text.
+struct PowerOfTwoAndFive {
+  unsigned long twos = 0, fives = 0;
+};
+
+/// scale as 2^a 5^b, or nothing when it has another prime factor.
+std::optional<PowerOfTwoAndFive> as_power_of_two_and_five(const Integer& scale);
+
+/// z / scale^k in lowest terms for scale = 2^a 5^b, without a gcd: the common factors are counted
+/// by a bit scan and divisions by 5 (a general gcd of the long numbers of the reported f and s was
+/// a tenth of a decimal batch line's full evidence).
+Rational divided_by_power(const Integer& z, PowerOfTwoAndFive scale, unsigned long k);
 
 /// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
 /// (guards interval overflow and underflow; a positive scaling of either matrix changes no decision,
