@@ -164,7 +164,7 @@ struct Classification {
   int degree_ftilde = 4;        ///< degree of f~ = f / gcd(f, s)
   std::vector<RealRoot> roots;  ///< distinct real roots of f with multiplicities (Full only)
   std::optional<Rational> rho;  ///< rho exactly, when it is rational
-  double rho_approx = 0;        ///< rho to double precision (for display)
+  double rho_approx = 0;        ///< rho to double precision: the nearest double when rho is rational
   /// Evidence anyone can check with rational arithmetic (classify.hpp, "Certificates"; Evidence::Full only).
   Certificate certificate;
 };

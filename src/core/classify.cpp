@@ -2,6 +2,7 @@
 
 #include <CGAL/Interval_nt.h>
 #include <gmp.h>
+#include <mpfr.h>
 
 #include <cfenv>
 #include <cfloat>
@@ -466,6 +467,18 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   return v;
 }
 
+/// The double nearest q (ties to even; CGAL's to_double of a Gmpq truncates): rounded once to 53
+/// bits by MPFR, which is the double itself unless it is subnormal, then rounded from 40 digits.
+double nearest_double(const Rational& q) {
+  mpfr_t x;
+  mpfr_init2(x, 53);
+  mpfr_set_q(x, q.mpq(), MPFR_RNDN);
+  const double d = mpfr_get_d(x, MPFR_RNDN);
+  mpfr_clear(x);
+  if (d == 0 || std::fabs(d) < DBL_MIN || !std::isfinite(d)) return std::strtod(to_decimal(q, 40).c_str(), nullptr);
+  return d;
+}
+
 void fill_full_evidence(const Quartic<Integer>& fi, const Quadratic<Integer>& si, const Integer& scale,
                         Classification& out, const RootStructure* known) {
   out.has_full_evidence = true;
@@ -490,7 +503,7 @@ void fill_full_evidence(const Quartic<Integer>& fi, const Quadratic<Integer>& si
     mpz_sqrt(r.mpz(), d.mpz());
     Rational u1(si[1] - r, 2 * si[2]);
     out.rho = k / (u1 * u1);
-    out.rho_approx = CGAL::to_double(*out.rho);
+    out.rho_approx = nearest_double(*out.rho);
   } else {
     const double s2 = CGAL::to_double(out.s[2]), s1 = CGAL::to_double(out.s[1]), s0 = CGAL::to_double(out.s[0]);
     const double u1 = (2 * s0) / (s1 + std::sqrt(s1 * s1 - 4 * s2 * s0));  // stable smaller root

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 
 namespace relpos::forms {
 namespace {
@@ -153,12 +154,23 @@ Rational divided_by_power(const Integer& z, PowerOfTwoAndFive scale, unsigned lo
   const unsigned long twos = scale.twos * k, fives = scale.fives * k;
   const unsigned long shift = std::min<unsigned long>(mpz_scan1(z.mpz(), 0), twos);
   mpz_tdiv_q_2exp(num, z.mpz(), shift);
-  Integer five(5);
-  unsigned long removed = mpz_remove(num, num, five.mpz());  // by powers 5^(2^j): few divisions
-  if (removed > fives) {                                     // more fives than the scale has: put back
-    mpz_ui_pow_ui(den, 5, removed - fives);
-    mpz_mul(num, num, den);
-    removed = fives;
+  // The fives, 27 at a time: num mod 5^27 (< 2^63) by one single-limb pass; when it is not zero,
+  // its own valuation is num's (r = num + k 5^27). No mpz temporaries, unlike mpz_remove.
+  unsigned long removed = 0;
+  while (removed < fives) {
+    const unsigned long chunk = std::min<unsigned long>(27, fives - removed);
+    std::uint64_t p = 1;
+    for (unsigned long i = 0; i < chunk; ++i) p *= 5;
+    std::uint64_t r = mpz_fdiv_ui(num, p);
+    if (r == 0) {
+      mpz_divexact_ui(num, num, p);
+      removed += chunk;
+      continue;
+    }
+    std::uint64_t q = 1;
+    for (; r % 5 == 0; r /= 5) q *= 5, ++removed;
+    if (q > 1) mpz_divexact_ui(num, num, q);
+    break;
   }
   mpz_ui_pow_ui(den, 5, fives - removed);
   mpz_mul_2exp(den, den, twos - shift);

@@ -685,8 +685,7 @@ void append_classification(const Classification& c, const RenderOptions& options
   else
     w.null();
   w.raw(",");
-  // From the exact rho when there is one: nearest double (CGAL's to_double of a Gmpq truncates).
-  const double rho_approx = c.rho ? std::strtod(to_decimal(*c.rho, 40).c_str(), nullptr) : c.rho_approx;
+  const double rho_approx = c.rho_approx;  // the nearest double to the exact rho when there is one
   w.key("rho_approx");
   if (c.has_full_evidence && std::isfinite(rho_approx))
     w.number(rho_approx);
