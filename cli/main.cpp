@@ -298,7 +298,8 @@ int run_batch(Args& args) {
 
 int main(int argc, char** argv) {
   std::ios::sync_with_stdio(false);
-  std::signal(SIGPIPE, SIG_IGN);  // a closed pipe is a write error (exit 3 with a message), not a kill
+  relpos::install_gmp_block_cache();  // before any number: see relpos/numbers.hpp
+  std::signal(SIGPIPE, SIG_IGN);      // a closed pipe is a write error (exit 3 with a message), not a kill
   std::vector<std::string> all(argv + 1, argv + argc);
   if (all.empty()) {
     relpos_cli::print_main_help(std::cerr);

@@ -5,6 +5,8 @@
 #include <relpos/error.hpp>
 #include <relpos/numbers.hpp>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "support/construct.hpp"
 #include "support/printers.hpp"
@@ -181,4 +183,52 @@ TEST_CASE("to_decimal: very large and very small values round to within half a u
   }
   CHECK(parse_rational(to_decimal(pow10(30), 3)) == pow10(30));
   CHECK(parse_rational(to_decimal(pow10(-10), 3)) == pow10(-10));
+}
+
+namespace {
+
+/// Text of a chain of exact operations on growing numbers: limb arrays of many sizes are allocated,
+/// grown (realloc) and freed.
+std::string gmp_workout(int seed) {
+  rt::Rng g(static_cast<unsigned>(seed));
+  Rational acc(1);
+  std::string out;
+  for (int i = 0; i < 60; ++i) {
+    const Rational q = g.nonzero_rational(-99999, 99999, 99999);
+    acc = i % 3 == 2 ? acc / q + Rational(1, 7) : acc * q - Rational(i);
+    if (i % 10 == 9) out += relpos::to_string(acc) + ";";
+  }
+  Integer big(1);
+  for (int i = 1; i < 120; ++i) big *= Integer(1000003 + i);  // past the cached sizes: plain realloc
+  return out + relpos::to_string(big);
+}
+
+}  // namespace
+
+TEST_CASE("install_gmp_block_cache: the same values, on every thread, with numbers made before it",
+          "[numbers][allocator]") {
+  std::vector<std::string> expected;
+  for (int s = 0; s < 8; ++s) expected.push_back(gmp_workout(s));
+  std::vector<Rational> before;  // allocated by the default allocator, freed by the cache
+  for (int s = 0; s < 200; ++s) before.push_back(Rational(s + 1, 3) * Rational(1000000007));
+  relpos::install_gmp_block_cache();
+  relpos::install_gmp_block_cache();  // idempotent
+  for (int s = 0; s < 200; ++s) CHECK(before[static_cast<std::size_t>(s)] == Rational(s + 1, 3) * Rational(1000000007));
+  before.clear();
+  std::vector<std::string> got(32);
+  std::vector<Rational> made(32);  // made on the workers, freed on this thread
+  std::vector<std::thread> workers;
+  for (int t = 0; t < 4; ++t)
+    workers.emplace_back([&, t] {
+      for (int k = t; k < 32; k += 4) {
+        got[static_cast<std::size_t>(k)] = gmp_workout(k % 8);
+        made[static_cast<std::size_t>(k)] = Rational(k + 1, 11) * Rational(998244353);
+      }
+    });
+  for (auto& w : workers) w.join();
+  for (int k = 0; k < 32; ++k) {
+    CHECK(got[static_cast<std::size_t>(k)] == expected[static_cast<std::size_t>(k % 8)]);
+    CHECK(made[static_cast<std::size_t>(k)] == Rational(k + 1, 11) * Rational(998244353));
+  }
+  CHECK(gmp_workout(3) == expected[3]);
 }

@@ -35,4 +35,13 @@ std::string to_string(const Integer& z);
 /// Decimal approximation of q with `digits` significant digits (rounded to nearest).
 std::string to_decimal(const Rational& q, int digits);
 
+/// Opt-in speed-up for programs that classify many pairs: GMP's blocks of up to 512 bytes are
+/// recycled through per-thread caches keyed on their exact size (the exact stages and the full
+/// evidence allocate and free millions of small limb arrays). Process-wide
+/// (mp_set_memory_functions), so it also serves other GMP users of the process; safe to call at
+/// any time, with GMP numbers alive: a cached block is a malloc block, reused only for its size.
+/// Out of memory prints a message and aborts, as GMP's default allocator does. The relpos CLI
+/// and the Python module call it.
+void install_gmp_block_cache();
+
 }  // namespace relpos

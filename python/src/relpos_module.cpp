@@ -272,6 +272,7 @@ py::array_t<std::int8_t> decide_positions(const DoubleArray& e_array, const Doub
 
 PYBIND11_MODULE(_relpos, m) {
   m.doc() = "relpos: exact relative position of an ellipsoid and an elliptic paraboloid (compiled part)";
+  relpos::install_gmp_block_cache();  // many small GMP blocks per pair (relpos/numbers.hpp)
   // relpos::InputError derives from std::invalid_argument; translated explicitly all the same.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
