@@ -7,6 +7,7 @@
 #include "core/roots.hpp"
 #include "core/smallness.hpp"
 #include "core/sturm.hpp"
+#include "forms/forms.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 
@@ -399,4 +400,31 @@ TEST_CASE("real_root_decimals: certified digits", "[roots]") {
   }
   CHECK(relpos::parse_rational(d[1]) < 0);
   CHECK(relpos::parse_rational(d[3]) > 0);
+}
+
+TEST_CASE("divided_by_power: z / scale^k in lowest terms, as rational division gives it", "[forms]") {
+  // Scales of the three kinds the reports meet: doubles (2^a), decimal text (2^a 5^b) and rationals
+  // (another factor, shared with z to various powers); z zero, negative, and with many fives.
+  rt::Rng g(4242);
+  const long rests[] = {1, 3, 7, 9, 21, 1000003, 3 * 3 * 11};
+  for (int trial = 0; trial < 2000; ++trial) {
+    const auto a = static_cast<unsigned long>(g.uniform(0, 40)), b = static_cast<unsigned long>(g.uniform(0, 40));
+    Integer scale = Integer(rests[trial % 7]);
+    for (unsigned long i = 0; i < a; ++i) scale *= Integer(2);
+    for (unsigned long i = 0; i < b; ++i) scale *= Integer(5);
+    Integer z(static_cast<long>(g.uniform(-1000000, 1000000)));
+    const auto extra = g.uniform(0, 6);
+    for (long i = 0; i < extra; ++i) z *= Integer(trial % 3 == 0 ? 5 : trial % 3 == 1 ? 2 : rests[trial % 7]);
+    if (trial % 5 == 0) z *= scale * scale;  // common factors beyond one power of the scale
+    const relpos::forms::SplitScale split = relpos::forms::split_scale(scale);
+    for (unsigned long k = 0; k <= 4; ++k) {
+      Rational expected(z);
+      for (unsigned long i = 0; i < k; ++i) expected /= Rational(scale);
+      const Rational got = relpos::forms::divided_by_power(z, split, k);
+      CAPTURE(relpos::to_string(z), relpos::to_string(scale), k);
+      CHECK(got == expected);
+      CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // canonical
+      CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(expected.mpq())) == 0);
+    }
+  }
 }

@@ -98,7 +98,7 @@ struct Pair {
       f = anysize::to_poly(fq.data(), 5);
       s = anysize::to_poly(sq.data(), 3);
     }
-    ls = anysize::lambda_s_of(s);
+    ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s);
     Integer l(1);  // f times the lcm of its denominators: integer coefficients for f_sign
     forms::lcm_of_denominators(f.begin(), f.end(), l);
     fz.resize(f.size());

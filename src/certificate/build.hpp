@@ -3,6 +3,7 @@
 // in the hard case; two witness points for C. Runs on exact rationals after the position is known.
 #pragma once
 
+#include "anysize/exact.hpp"
 #include "relpos/classify.hpp"
 
 namespace relpos::certificate {
@@ -19,6 +20,7 @@ struct Known {
   const Quartic<Rational>* f = nullptr;
   const Quadratic<Rational>* s = nullptr;
   const std::vector<RealRoot>* roots = nullptr;
+  const anysize::LambdaS* lambda_s = nullptr;  ///< lambda_s of *s (set only with f and s)
 };
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known);
 

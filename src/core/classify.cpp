@@ -479,30 +479,22 @@ double nearest_double(const Rational& q) {
   return d;
 }
 
+/// The reported evidence from the common-lcm integer form (f = fi / scale^4, s = si / scale^3) and
+/// its root structure; lambda_s is computed once here, for rho and for the certificate.
 void fill_full_evidence(const Quartic<Integer>& fi, const Quadratic<Integer>& si, const Integer& scale,
-                        Classification& out, const RootStructure* known) {
+                        const RootStructure& rs, Classification& out, anysize::LambdaS& ls) {
   out.has_full_evidence = true;
-  if (const auto smooth = forms::as_power_of_two_and_five(scale)) {  // doubles and decimal text: no gcd
-    for (std::size_t i = 0; i < 5; ++i) out.f[i] = forms::divided_by_power(fi[i], *smooth, 4);
-    for (std::size_t i = 0; i < 3; ++i) out.s[i] = forms::divided_by_power(si[i], *smooth, 3);
-  } else {
-    Rational c4(1);
-    for (int i = 0; i < 4; ++i) c4 *= Rational(scale);
-    Rational c3 = c4 / Rational(scale);
-    for (std::size_t i = 0; i < 5; ++i) out.f[i] = Rational(fi[i]) / c4;
-    for (std::size_t i = 0; i < 3; ++i) out.s[i] = Rational(si[i]) / c3;
-  }
-  RootStructure rs = known ? *known : exact_root_structure(fi, si);
+  const forms::SplitScale split = forms::split_scale(scale);
+  for (std::size_t i = 0; i < 5; ++i) out.f[i] = forms::divided_by_power(fi[i], split, 4);
+  for (std::size_t i = 0; i < 3; ++i) out.s[i] = forms::divided_by_power(si[i], split, 3);
   out.degree_ftilde = rs.degree_ftilde;
   out.roots = rs.real_roots;
-  // rho = (f0/f4)(s2/s0) / u1^2 with u1 = smallest root of s(-u); rational iff Disc(s) is a square.
-  const Rational k(fi[0] * si[2], fi[4] * si[0]);  // (f0 / f4)(s2 / s0): the scales cancel
-  Integer d = si[1] * si[1] - 4 * si[2] * si[0];
-  if (d >= 0 && mpz_perfect_square_p(d.mpz())) {
-    Integer r;
-    mpz_sqrt(r.mpz(), d.mpz());
-    Rational u1(si[1] - r, 2 * si[2]);
-    out.rho = k / (u1 * u1);
+  // rho = (f0/f4)(s2/s0) / u1^2 with u1 = -lambda_s, the smallest root of s(-u): rational iff
+  // Disc(s) is a square. From the reduced f and s (far shorter than fi and si).
+  ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3));
+  const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
+  if (ls.rational()) {
+    out.rho = k / (ls.value.a * ls.value.a);
     out.rho_approx = nearest_double(*out.rho);
   } else {
     const double s2 = CGAL::to_double(out.s[2]), s1 = CGAL::to_double(out.s[1]), s0 = CGAL::to_double(out.s[0]);
@@ -531,9 +523,10 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const Quadratic<Integer> s{sp[0].to_integer(), sp[1].to_integer(), sp[2].to_integer()};
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
     const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
-    fill_full_evidence(f, s, scale, out, &rs);
-    // The certificate reuses f, s and the isolation instead of recomputing them.
-    out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots});
+    anysize::LambdaS ls;
+    fill_full_evidence(f, s, scale, rs, out, ls);
+    // The certificate reuses f, s, lambda_s and the isolation instead of recomputing them.
+    out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls});
   }
   return out;
 }

@@ -132,21 +132,20 @@ std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix
   return {form(p), form(e)};
 }
 
-std::optional<PowerOfTwoAndFive> as_power_of_two_and_five(const Integer& scale) {
-  if (mpz_sgn(scale.mpz()) <= 0) return std::nullopt;
-  PowerOfTwoAndFive out;
+SplitScale split_scale(const Integer& scale) {
+  SplitScale out;
   out.twos = mpz_scan1(scale.mpz(), 0);
-  mpz_t rest;
-  mpz_init(rest);
-  mpz_tdiv_q_2exp(rest, scale.mpz(), out.twos);
-  out.fives = mpz_remove(rest, rest, Integer(5).mpz());
-  const bool smooth = mpz_cmp_ui(rest, 1) == 0;
-  mpz_clear(rest);
-  if (!smooth) return std::nullopt;
+  Integer rest;  // fresh: written through mpz()
+  mpz_tdiv_q_2exp(rest.mpz(), scale.mpz(), out.twos);
+  const Integer five(5);
+  out.fives = mpz_remove(rest.mpz(), rest.mpz(), five.mpz());
+  out.rest = rest;
+  out.rest_power[0] = Integer(1);
+  for (std::size_t k = 1; k < out.rest_power.size(); ++k) out.rest_power[k] = out.rest_power[k - 1] * rest;
   return out;
 }
 
-Rational divided_by_power(const Integer& z, PowerOfTwoAndFive scale, unsigned long k) {
+Rational divided_by_power(const Integer& z, const SplitScale& scale, unsigned long k) {
   Rational out;  // fresh: its mpq is not shared, so it is written in place
   mpz_ptr num = mpq_numref(out.mpq());
   mpz_ptr den = mpq_denref(out.mpq());
@@ -174,6 +173,22 @@ Rational divided_by_power(const Integer& z, PowerOfTwoAndFive scale, unsigned lo
   }
   mpz_ui_pow_ui(den, 5, fives - removed);
   mpz_mul_2exp(den, den, twos - shift);
+  if (mpz_cmp_ui(scale.rest.mpz(), 1) == 0) return out;
+  // gcd(num, rest^k) = g_1 ... g_j, g_i = gcd(num / (g_1 ... g_(i-1)), rest): each step takes
+  // min(v_p(num), v_p(rest)) more of every prime p, so k steps take min(v_p(num), k v_p(rest)).
+  mpz_t g, common;
+  mpz_init(g);
+  mpz_init_set_ui(common, 1);
+  for (unsigned long i = 0; i < k; ++i) {
+    mpz_gcd(g, num, scale.rest.mpz());
+    if (mpz_cmp_ui(g, 1) == 0) break;
+    mpz_divexact(num, num, g);
+    mpz_mul(common, common, g);
+  }
+  mpz_divexact(g, scale.rest_power[k].mpz(), common);
+  mpz_mul(den, den, g);
+  mpz_clear(g);
+  mpz_clear(common);
   return out;
 }
 

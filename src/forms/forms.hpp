@@ -52,18 +52,22 @@ inline void scaled_numerator(const Rational& q, const Integer& l, mpz_ptr out) {
   mpz_mul(out, out, mpq_numref(q.mpq()));
 }
 
-/// A positive integer 2^twos 5^fives: the lcm of the denominators of doubles and decimal text.
-struct PowerOfTwoAndFive {
+/// A positive integer scale split as 2^twos 5^fives rest, and rest^k for the powers a caller
+/// divides by: 2 and 5 are what doubles and decimal text put in denominators.
+struct SplitScale {
   unsigned long twos = 0, fives = 0;
+  Integer rest{1};
+  std::array<Integer, 5> rest_power;  ///< rest^k for k = 0..4
 };
 
-/// scale as 2^a 5^b, or nothing when it has another prime factor.
-std::optional<PowerOfTwoAndFive> as_power_of_two_and_five(const Integer& scale);
+/// Splits a positive integer.
+SplitScale split_scale(const Integer& scale);
 
-/// z / scale^k in lowest terms for scale = 2^a 5^b, without a gcd: the common factors are counted
-/// by a bit scan and divisions by 5 (a general gcd of the long numbers of the reported f and s was
-/// a tenth of a decimal batch line's full evidence).
-Rational divided_by_power(const Integer& z, PowerOfTwoAndFive scale, unsigned long k);
+/// z / scale^k in lowest terms (k <= 4) without a gcd of the long numbers: the twos by a bit scan,
+/// the fives by single-limb remainders, and gcd(z, rest^k) as at most k gcds with rest itself,
+/// usually one that is 1 (a general gcd per coefficient of the reported f and s was a tenth to a
+/// sixth of a decimal batch line's full evidence).
+Rational divided_by_power(const Integer& z, const SplitScale& scale, unsigned long k);
 
 /// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
 /// (guards interval overflow and underflow; a positive scaling of either matrix changes no decision,
