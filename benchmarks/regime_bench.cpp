@@ -217,6 +217,14 @@ int main(int argc, char** argv) {
     }
     std::printf("\n");
   }
+  // The same, with the opt-in GMP block cache of the CLI and the Python module (installed last:
+  // it cannot be removed).
+  relpos::install_gmp_block_cache();
+  const double full_cached = per_call_median_ns(nf, [&](int i) {
+    const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
+    const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
+    return static_cast<int>(classify(e, p, Evidence::Full).verdict.position);
+  });
   auto line = [&](const char* name, double ns, const char* what) {
     std::printf("%-8s %12.0f ns  %9.1fx naive   %s\n", name, ns, ns / naive, what);
   };
@@ -225,5 +233,6 @@ int main(int argc, char** argv) {
   line("doubles", doubles, "32 doubles -> from_doubles -> decide_position");
   line("matrix", matrix, "32 doubles -> exact_rational -> from_matrix -> decide_position");
   line("full", full, "classify(e, p), full evidence with certificate (per-pair median)");
+  line("full+gc", full_cached, "the same after relpos::install_gmp_block_cache() (as the CLI and Python)");
   return 0;
 }

@@ -162,8 +162,9 @@ LambdaS lambda_s_of(const Poly& s) {
   if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
   LambdaS out;
   // disc = s1^2 - 4 s2 s0 in lowest terms N / Den, from the integer form S = L s (L the lcm of the
-  // denominators): disc = (S1^2 - 4 S2 S0) / L^2, reduced by one gcd instead of a canonicalization
-  // per rational operation. sqrt(disc) = sqrt(N Den) / Den: rational iff N Den is a perfect square.
+  // denominators): disc = (S1^2 - 4 S2 S0) / L^2, reduced once (forms::divided_by_power) instead
+  // of a canonicalization per rational operation. sqrt(disc) = sqrt(N Den) / Den: rational iff N Den is a perfect
+  // square.
   Integer l(1), num, den, g;  // fresh objects: written through mpz()
   forms::lcm_of_denominators(s.begin(), s.end(), l);
   Integer si[3];
@@ -172,15 +173,9 @@ LambdaS lambda_s_of(const Poly& s) {
   mpz_mul(g.mpz(), si[2].mpz(), si[0].mpz());
   mpz_submul_ui(num.mpz(), g.mpz(), 4);
   if (mpz_sgn(num.mpz()) < 0) throw std::logic_error("s has non-real roots");
-  mpz_mul(den.mpz(), l.mpz(), l.mpz());
-  mpz_gcd(g.mpz(), num.mpz(), den.mpz());
-  if (mpz_sgn(g.mpz()) != 0) {
-    mpz_divexact(num.mpz(), num.mpz(), g.mpz());
-    mpz_divexact(den.mpz(), den.mpz(), g.mpz());
-  } else {
-    mpz_set_ui(den.mpz(), 1);  // disc = 0
-  }
-  const Integer& n = num;
+  const Rational disc = forms::divided_by_power(num, forms::split_scale(l), 2);
+  const Integer& n = disc.numerator();
+  den = disc.denominator();
   Integer nd = n * den;
   const Rational two_s2 = 2 * s[2];
   if (mpz_perfect_square_p(nd.mpz())) {
