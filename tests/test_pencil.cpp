@@ -428,3 +428,29 @@ TEST_CASE("divided_by_power: z / scale^k in lowest terms, as rational division g
     }
   }
 }
+
+TEST_CASE("divided_by_powers: two scales with shared prime factors, as rational division gives it", "[forms]") {
+  // The reported f_i = g_i / (lp^i le^(4-i)): the two matrices' scales may share any prime.
+  rt::Rng g(777);
+  const long parts[] = {1, 2, 3, 5, 6, 10, 12, 15, 49, 1000003};
+  for (int trial = 0; trial < 1500; ++trial) {
+    Integer a(1), b(1);
+    for (int i = 0; i < 4; ++i) {
+      a *= Integer(parts[g.uniform(0, 9)]);
+      b *= Integer(parts[g.uniform(0, 9)]);
+    }
+    Integer z(static_cast<long>(g.uniform(-100000, 100000)));
+    for (long i = g.uniform(0, 4); i > 0; --i) z *= Integer(parts[g.uniform(0, 9)]);
+    if (trial % 4 == 0) z *= a * a * b;
+    const relpos::forms::SplitScale sa = relpos::forms::split_scale(a), sb = relpos::forms::split_scale(b);
+    for (unsigned long i = 0; i <= 4; ++i) {
+      Rational expected(z);
+      for (unsigned long k = 0; k < i; ++k) expected /= Rational(a);
+      for (unsigned long k = i; k < 4; ++k) expected /= Rational(b);
+      const Rational got = relpos::forms::divided_by_powers(z, {{sa, i}, {sb, 4 - i}});
+      CAPTURE(relpos::to_string(z), relpos::to_string(a), relpos::to_string(b), i);
+      CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // same canonical form
+      CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(expected.mpq())) == 0);
+    }
+  }
+}

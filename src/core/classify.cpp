@@ -173,7 +173,6 @@ using detail::rounding_to_nearest;
 using forms::Interval;
 using forms::MatrixOf;
 using forms::to_compact_integers;
-using forms::to_integers;
 using forms::to_intervals;
 
 /// The signs of every decision quantity, evaluated in NT (intervals or exact integers).
@@ -479,18 +478,35 @@ double nearest_double(const Rational& q) {
   return d;
 }
 
-/// The reported evidence from the common-lcm integer form (f = fi / scale^4, s = si / scale^3) and
-/// its root structure; lambda_s is computed once here, for rho and for the certificate.
-void fill_full_evidence(const Quartic<Integer>& fi, const Quadratic<Integer>& si, const Integer& scale,
-                        const RootStructure& rs, Classification& out, anysize::LambdaS& ls) {
+/// f = det(lambda P + E) and s = det(lambda A + M) from the two integer forms Pz = lp P and
+/// Ez = le E (forms::integer_form): with g = det(mu Pz + Ez) and h = det(mu Az + Mz),
+///   f_i = g_i / (lp^i le^(4-i)),  s_i = h_i / (lp^i le^(3-i))   (reported reduced),
+/// and the common-lcm integer forms of the root isolation, S^4 f and S^3 s with S = lcm(lp, le):
+///   S^4 f_i = g_i (S/lp)^i (S/le)^(4-i),  S^3 s_i = h_i (S/lp)^i (S/le)^(3-i).
+void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h, const Integer& lp, const Integer& le,
+                          Classification& out, Quartic<Integer>& fi, Quadratic<Integer>& si) {
+  const forms::SplitScale sp = forms::split_scale(lp), se = forms::split_scale(le);
+  for (unsigned long i = 0; i < 5; ++i) out.f[i] = forms::divided_by_powers(g[i], {{sp, i}, {se, 4 - i}});
+  for (unsigned long i = 0; i < 3; ++i) out.s[i] = forms::divided_by_powers(h[i], {{sp, i}, {se, 3 - i}});
+  Integer common, a, b;  // fresh: written through mpz()
+  mpz_lcm(common.mpz(), lp.mpz(), le.mpz());
+  mpz_divexact(a.mpz(), common.mpz(), lp.mpz());
+  mpz_divexact(b.mpz(), common.mpz(), le.mpz());
+  Integer pa[5], pb[5];  // powers of S/lp and S/le
+  pa[0] = pb[0] = Integer(1);
+  for (std::size_t i = 1; i < 5; ++i) pa[i] = pa[i - 1] * a, pb[i] = pb[i - 1] * b;
+  for (std::size_t i = 0; i < 5; ++i) fi[i] = g[i] * pa[i] * pb[4 - i];
+  for (std::size_t i = 0; i < 3; ++i) si[i] = h[i] * pa[i] * pb[3 - i];
+}
+
+/// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
+/// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square (from the reduced
+/// f and s, far shorter than the integer forms). lambda_s is computed once here, for rho and for
+/// the certificate.
+void fill_full_evidence(const RootStructure& rs, Classification& out, anysize::LambdaS& ls) {
   out.has_full_evidence = true;
-  const forms::SplitScale split = forms::split_scale(scale);
-  for (std::size_t i = 0; i < 5; ++i) out.f[i] = forms::divided_by_power(fi[i], split, 4);
-  for (std::size_t i = 0; i < 3; ++i) out.s[i] = forms::divided_by_power(si[i], split, 3);
   out.degree_ftilde = rs.degree_ftilde;
   out.roots = rs.real_roots;
-  // rho = (f0/f4)(s2/s0) / u1^2 with u1 = -lambda_s, the smallest root of s(-u): rational iff
-  // Disc(s) is a square. From the reduced f and s (far shorter than fi and si).
   ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3));
   const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
   if (ls.rational()) {
@@ -508,23 +524,26 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   const Verdict v = run_stages(e, p, use_filter, exact);
   Classification out;
   out.verdict = v;
-  if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E): the common-lcm form
-    Integer scale;
-    const auto [pz, ez] = to_integers(p.matrix(), e.matrix(), scale);
+  if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E), from each matrix's own form
+    Integer lp, le;
+    const MatrixOf<Integer> pz = forms::integer_form(p.matrix(), lp), ez = forms::integer_form(e.matrix(), le);
     MatrixOf<PooledInteger> pp, ep;  // the generic formulas without heap traffic for temporaries
     for (std::size_t i = 0; i < 16; ++i) {
       pp.a[i] = PooledInteger(pz.a[i]);
       ep.a[i] = PooledInteger(ez.a[i]);
     }
-    const Quartic<PooledInteger> fp = characteristic_polynomial<PooledInteger>(pp, ep);
-    const Quadratic<PooledInteger> sp = special_polynomial<PooledInteger>(pp, ep);
-    const Quartic<Integer> f{fp[0].to_integer(), fp[1].to_integer(), fp[2].to_integer(), fp[3].to_integer(),
-                             fp[4].to_integer()};
-    const Quadratic<Integer> s{sp[0].to_integer(), sp[1].to_integer(), sp[2].to_integer()};
+    const Quartic<PooledInteger> gp = characteristic_polynomial<PooledInteger>(pp, ep);
+    const Quadratic<PooledInteger> hp = special_polynomial<PooledInteger>(pp, ep);
+    const Quartic<Integer> g{gp[0].to_integer(), gp[1].to_integer(), gp[2].to_integer(), gp[3].to_integer(),
+                             gp[4].to_integer()};
+    const Quadratic<Integer> h{hp[0].to_integer(), hp[1].to_integer(), hp[2].to_integer()};
+    Quartic<Integer> f;
+    Quadratic<Integer> s;
+    reported_polynomials(g, h, lp, le, out, f, s);
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
     const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
-    fill_full_evidence(f, s, scale, rs, out, ls);
+    fill_full_evidence(rs, out, ls);
     // The certificate reuses f, s, lambda_s and the isolation instead of recomputing them.
     out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls});
   }

@@ -69,40 +69,6 @@ MatrixOf<Interval> to_intervals(const Matrix4& m) {
   return out;
 }
 
-std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, const Matrix4& e, Integer& scale) {
-  MatrixOf<Integer> pi, ei;
-  // Dyadic entries (exact doubles): the lcm is the largest power of two, the entries shifts.
-  mp_bitcnt_t top = 0;
-  bool dyadic = true;
-  for (const auto* m : {&p, &e})
-    for (const Rational& q : m->a) {
-      const mpz_srcptr d = mpq_denref(q.mpq());
-      const mp_bitcnt_t k = mpz_scan1(d, 0);
-      if (k + 1 != mpz_sizeinbase(d, 2)) {
-        dyadic = false;
-        break;
-      }
-      top = std::max(top, k);
-    }
-  if (dyadic) {
-    scale = Integer(1);
-    mpz_mul_2exp(scale.mpz(), scale.mpz(), top);
-    for (std::size_t i = 0; i < 16; ++i) {
-      mpz_mul_2exp(pi.a[i].mpz(), mpq_numref(p.a[i].mpq()), top - mpz_scan1(mpq_denref(p.a[i].mpq()), 0));
-      mpz_mul_2exp(ei.a[i].mpz(), mpq_numref(e.a[i].mpq()), top - mpz_scan1(mpq_denref(e.a[i].mpq()), 0));
-    }
-    return {pi, ei};
-  }
-  Integer l(1);
-  for (const auto* m : {&p, &e}) lcm_of_denominators(m->a.begin(), m->a.end(), l);
-  scale = l;
-  for (std::size_t i = 0; i < 16; ++i) {
-    scaled_numerator(p.a[i], l, pi.a[i].mpz());
-    scaled_numerator(e.a[i], l, ei.a[i].mpz());
-  }
-  return {pi, ei};
-}
-
 std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix4& p, const Matrix4& e) {
   Integer t(1);
   for (const auto* m : {&p, &e})
@@ -145,12 +111,13 @@ SplitScale split_scale(const Integer& scale) {
   return out;
 }
 
-Rational divided_by_power(const Integer& z, const SplitScale& scale, unsigned long k) {
+Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors) {
   Rational out;  // fresh: its mpq is not shared, so it is written in place
   mpz_ptr num = mpq_numref(out.mpq());
   mpz_ptr den = mpq_denref(out.mpq());
   if (mpz_sgn(z.mpz()) == 0) return out;
-  const unsigned long twos = scale.twos * k, fives = scale.fives * k;
+  unsigned long twos = 0, fives = 0;
+  for (const ScalePower& d : divisors) twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
   const unsigned long shift = std::min<unsigned long>(mpz_scan1(z.mpz(), 0), twos);
   mpz_tdiv_q_2exp(num, z.mpz(), shift);
   // The fives, 27 at a time: num mod 5^27 (< 2^63) by one single-limb pass; when it is not zero,
@@ -173,22 +140,53 @@ Rational divided_by_power(const Integer& z, const SplitScale& scale, unsigned lo
   }
   mpz_ui_pow_ui(den, 5, fives - removed);
   mpz_mul_2exp(den, den, twos - shift);
-  if (mpz_cmp_ui(scale.rest.mpz(), 1) == 0) return out;
   // gcd(num, rest^k) = g_1 ... g_j, g_i = gcd(num / (g_1 ... g_(i-1)), rest): each step takes
   // min(v_p(num), v_p(rest)) more of every prime p, so k steps take min(v_p(num), k v_p(rest)).
+  // Scale after scale, the caps add up: min(v_p(num), sum_j k_j v_p(rest_j)) in all.
   mpz_t g, common;
   mpz_init(g);
-  mpz_init_set_ui(common, 1);
-  for (unsigned long i = 0; i < k; ++i) {
-    mpz_gcd(g, num, scale.rest.mpz());
-    if (mpz_cmp_ui(g, 1) == 0) break;
-    mpz_divexact(num, num, g);
-    mpz_mul(common, common, g);
+  mpz_init(common);
+  for (const ScalePower& d : divisors) {
+    if (d.k == 0 || mpz_cmp_ui(d.scale.rest.mpz(), 1) == 0) continue;
+    mpz_set_ui(common, 1);
+    for (unsigned long i = 0; i < d.k; ++i) {
+      mpz_gcd(g, num, d.scale.rest.mpz());
+      if (mpz_cmp_ui(g, 1) == 0) break;
+      mpz_divexact(num, num, g);
+      mpz_mul(common, common, g);
+    }
+    mpz_divexact(g, d.scale.rest_power[d.k].mpz(), common);
+    mpz_mul(den, den, g);
   }
-  mpz_divexact(g, scale.rest_power[k].mpz(), common);
-  mpz_mul(den, den, g);
   mpz_clear(g);
   mpz_clear(common);
+  return out;
+}
+
+MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l) {
+  MatrixOf<Integer> out;  // fresh entries: written through mpz()
+  // Dyadic entries (exact doubles): the lcm is the largest power of two, the entries shifts.
+  mp_bitcnt_t top = 0;
+  bool dyadic = true;
+  for (const Rational& q : m.a) {
+    const mpz_srcptr d = mpq_denref(q.mpq());
+    const mp_bitcnt_t k = mpz_scan1(d, 0);
+    if (k + 1 != mpz_sizeinbase(d, 2)) {
+      dyadic = false;
+      break;
+    }
+    top = std::max(top, k);
+  }
+  Integer lcm(1);  // fresh: written through mpz()
+  if (dyadic) {
+    mpz_mul_2exp(lcm.mpz(), lcm.mpz(), top);
+    for (std::size_t i = 0; i < 16; ++i)
+      mpz_mul_2exp(out.a[i].mpz(), mpq_numref(m.a[i].mpq()), top - mpz_scan1(mpq_denref(m.a[i].mpq()), 0));
+  } else {
+    lcm_of_denominators(m.a.begin(), m.a.end(), lcm);
+    for (std::size_t i = 0; i < 16; ++i) scaled_numerator(m.a[i], lcm, out.a[i].mpz());
+  }
+  l = lcm;
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <initializer_list>
 #include <optional>
 #include <utility>
 
@@ -63,11 +64,20 @@ struct SplitScale {
 /// Splits a positive integer.
 SplitScale split_scale(const Integer& scale);
 
-/// z / scale^k in lowest terms (k <= 4) without a gcd of the long numbers: the twos by a bit scan,
-/// the fives by single-limb remainders, and gcd(z, rest^k) as at most k gcds with rest itself,
-/// usually one that is 1 (a general gcd per coefficient of the reported f and s was a tenth to a
-/// sixth of a decimal batch line's full evidence).
-Rational divided_by_power(const Integer& z, const SplitScale& scale, unsigned long k);
+/// One divisor of divided_by_powers: scale^k, k <= 4.
+struct ScalePower {
+  const SplitScale& scale;
+  unsigned long k;
+};
+
+/// z / (scale_1^k_1 scale_2^k_2 ...) in lowest terms without a gcd of the long numbers: the twos
+/// by a bit scan, the fives by single-limb remainders, and the common factor with each rest^k as
+/// at most k gcds with rest itself, usually one that is 1 (a general gcd per coefficient of the
+/// reported f and s was a tenth to a sixth of a decimal batch line's full evidence).
+Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors);
+inline Rational divided_by_power(const Integer& z, const SplitScale& scale, unsigned long k) {
+  return divided_by_powers(z, {{scale, k}});
+}
 
 /// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
 /// (guards interval overflow and underflow; a positive scaling of either matrix changes no decision,
@@ -83,9 +93,11 @@ MatrixOf<Interval> to_intervals(const detail::EnclosureMatrix4& m);
 /// (mpq_get_d truncates towards zero, so q lies between v and the next double away from zero).
 MatrixOf<Interval> to_intervals(const Matrix4& m);
 
-/// Both matrices times the same positive integer (lcm of all denominators, returned in `scale`): f
-/// and s are scaled by positive constants and keep their roots. The form of the reported evidence.
-std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_integers(const Matrix4& p, const Matrix4& e, Integer& scale);
+/// The matrix times the lcm of its own denominators (returned in `l`): the integer form of one
+/// quadric. The reported evidence is computed on the two forms, each with its own scale:
+/// det(lambda P + E) = sum_i g_i lambda^i / (lp^i le^(4-i)) with g = det(mu Pz + Ez), which keeps
+/// every product shorter than one common lcm of both matrices would.
+MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l);
 
 /// The smallest integer form the *decisions* need (not the evidence: the roots move). With
 /// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive
