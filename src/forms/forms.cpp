@@ -103,9 +103,15 @@ SplitScale split_scale(const Integer& scale) {
   out.twos = mpz_scan1(scale.mpz(), 0);
   Integer rest;  // fresh: written through mpz()
   mpz_tdiv_q_2exp(rest.mpz(), scale.mpz(), out.twos);
-  const Integer five(5);
-  out.fives = mpz_remove(rest.mpz(), rest.mpz(), five.mpz());
+  if (mpz_divisible_ui_p(rest.mpz(), 5)) {  // mpz_remove allocates: only when there are fives
+    const Integer five(5);
+    out.fives = mpz_remove(rest.mpz(), rest.mpz(), five.mpz());
+  }
   out.rest = rest;
+  if (mpz_cmp_ui(rest.mpz(), 1) == 0) {  // doubles and decimal text: every power is 1 (one shared value)
+    out.rest_power.fill(rest);
+    return out;
+  }
   out.rest_power[0] = Integer(1);
   for (std::size_t k = 1; k < out.rest_power.size(); ++k) out.rest_power[k] = out.rest_power[k - 1] * rest;
   return out;
