@@ -208,12 +208,14 @@ int run_classify(Args& args) {
 
 namespace {
 
-/// Answer lines[i] into answers[i] for every i, on the pool's threads.
-void answer_all(const std::vector<std::string>& lines, long first_number, const relpos::io::BatchOptions& options,
-                WorkerPool& pool, std::vector<std::string>& answers) {
-  answers.resize(lines.size());
-  pool.run(lines.size(), [&](std::size_t i) {
-    answers[i] = relpos::io::answer_batch_line(lines[i], first_number + static_cast<long>(i), options);
+/// Answer lines[i] into answers[i] for i < n, on the pool's threads. Both vectors keep their
+/// strings from chunk to chunk: a line costs no allocation once the buffers have grown (with two
+/// threads, every malloc takes an arena lock).
+void answer_all(const std::vector<std::string>& lines, std::size_t n, long first_number,
+                const relpos::io::BatchOptions& options, WorkerPool& pool, std::vector<std::string>& answers) {
+  if (answers.size() < n) answers.resize(n);
+  pool.run(n, [&](std::size_t i) {
+    relpos::io::answer_batch_line(lines[i], first_number + static_cast<long>(i), options, answers[i]);
   });
 }
 
@@ -258,15 +260,14 @@ int run_batch(Args& args) {
   // Lines are answered in chunks (on the threads) and written in input order; the output is flushed
   // whenever the input has nothing more ready, so interactive use is answered line by line.
   const std::size_t chunk = threads > 1 ? 64 * std::size_t(threads) : 16;
-  std::vector<std::string> lines, answers;
-  std::vector<std::string> refused;  // per line: an error found while reading, or empty
+  std::vector<std::string> lines(chunk), answers(chunk);  // reused: see answer_all
+  std::vector<std::string> refused;                       // per line: an error found while reading, or empty
   long number = 0;
   for (bool more = true; more;) {
-    lines.clear();
+    std::size_t n = 0;
     refused.clear();
-    std::string line;
-    while (lines.size() < chunk && (lines.empty() || reader.ready())) {
-      const LineReader::Status status = reader.next(line);
+    while (n < chunk && (n == 0 || reader.ready())) {
+      const LineReader::Status status = reader.next(lines[n]);
       if (status == LineReader::Status::End) {
         more = false;
         break;
@@ -279,15 +280,20 @@ int run_batch(Args& args) {
       refused.push_back(status == LineReader::Status::TooLong ? relpos::io::too_long_message(options.max_line_bytes)
                         : status == LineReader::Status::OutOfMemory ? "out of memory while reading this line"
                                                                     : std::string());
-      lines.push_back(status == LineReader::Status::Line ? std::move(line) : std::string());
+      if (status != LineReader::Status::Line) lines[n].clear();
+      ++n;
     }
-    answer_all(lines, number + 1, options, pool, answers);
-    for (std::size_t i = 0; i < lines.size(); ++i) {
+    answer_all(lines, n, number + 1, options, pool, answers);
+    for (std::size_t i = 0; i < n; ++i) {
       out.write(refused[i].empty() ? answers[i]
                                    : relpos::io::error_line(std::to_string(number + 1 + long(i)), refused[i]));
       out.write("\n");
     }
-    number += static_cast<long>(lines.size());
+    number += static_cast<long>(n);
+    for (std::size_t i = 0; i < n; ++i) {  // a rare long line does not hold its memory for the whole run
+      if (lines[i].capacity() > (std::size_t(1) << 20)) std::string().swap(lines[i]);
+      if (answers[i].capacity() > (std::size_t(1) << 20)) std::string().swap(answers[i]);
+    }
     if (!more || !reader.ready()) out.flush();
     if (out.failed()) return out.report_failure();
   }

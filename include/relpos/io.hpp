@@ -118,6 +118,10 @@ void read_batch_line(std::string_view line, long line_number, const BatchOptions
 /// line's error).
 std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options);
 
+/// The same line written into `out` (replacing its text, keeping its capacity: a caller answering
+/// many lines reuses its buffers).
+void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out);
+
 /// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced. Never throws std::bad_alloc
 /// beyond a fixed small message.
 std::string error_line(const std::string& id_text, const std::string& message);

@@ -300,35 +300,40 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
   check_normalized_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
 }
 
-std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options) {
+void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out) {
   BatchLine in;
   try {
     read_batch_line(line, line_number, options, nullptr, in);
-    std::string text = "{\"id\":" + in.id;  // the id goes first
+    out.assign("{\"id\":").append(in.id);  // the id goes first
     if (options.contact_only) {
       const std::string report = dump_json(contact_to_json(contact(*in.ellipsoid, *in.paraboloid)));
-      text.append(",").append(report, 1, std::string::npos);
-      return text;
+      out.append(",").append(report, 1, std::string::npos);
+      return;
     }
     const Classification c = classify(*in.ellipsoid, *in.paraboloid, options.evidence);
     if (options.evidence == Evidence::Full) {
-      text.reserve(2048);  // a full report is 1-2 KB: grown once
-      text += ',';
-      detail::JsonWriter w(text);
+      out += ',';
+      detail::JsonWriter w(out);
       detail::append_classification(c, options.render, w);
     } else {
-      append_minimal(c, text);
+      append_minimal(c, out);
     }
-    return text;
+    return;
   } catch (const InputError& err) {
-    return error_line(in.id, err.what());
+    out = error_line(in.id, err.what());
   } catch (const std::bad_alloc&) {
-    return error_line(in.id, "out of memory while answering this line");
+    out = error_line(in.id, "out of memory while answering this line");
   } catch (const std::exception& err) {
-    return error_line(in.id, std::string("internal error: ") + err.what());
+    out = error_line(in.id, std::string("internal error: ") + err.what());
   } catch (...) {
-    return error_line(in.id, "internal error: unknown exception");
+    out = error_line(in.id, "internal error: unknown exception");
   }
+}
+
+std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options) {
+  std::string out;
+  answer_batch_line(line, line_number, options, out);
+  return out;
 }
 
 }  // namespace relpos::io
