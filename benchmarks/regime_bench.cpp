@@ -8,12 +8,13 @@
 //   matrix     32 doubles -> exact_rational -> from_matrix -> decide_position (the old road)
 //   full       relpos::classify(e, p) with full evidence (f, s, roots, rho, certificate)
 //
-//   regime_bench [--n N] [--full N] [--seed S] [--batches B] [--only POSITION]
+//   regime_bench [--n N] [--full N] [--seed S] [--batches B] [--rounds R] [--only POSITION]
 //
 // --only POSITION (C, E, I, ...) only repeats full evidence on the pairs in that position (a
 // profiling loop for perf record), then exits.
 //
-// Prints one line per path: median ns per pair over B batches, and the ratio to the naive median.
+// Prints one line per path: median ns per pair over B batches, and its ratio to the naive pipeline
+// timed in the same round, as the median (and range) over R rounds.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -133,7 +134,7 @@ double per_call_median_ns(int n, F body) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int n = 20000, n_full = 400, batches = 7;
+  int n = 20000, n_full = 400, batches = 7, rounds = 5;
   unsigned long seed = 20261124;
   std::string only;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -143,6 +144,7 @@ int main(int argc, char** argv) {
     if (a == "--seed") seed = std::strtoul(argv[i + 1], nullptr, 10);
     if (a == "--batches") batches = std::atoi(argv[i + 1]);
     if (a == "--only") only = argv[i + 1];
+    if (a == "--rounds") rounds = std::max(1, std::atoi(argv[i + 1]));
   }
   std::mt19937_64 rng(seed);
   const std::vector<Raw> raw = make_regime(rng, n);
@@ -177,29 +179,64 @@ int main(int argc, char** argv) {
     std::printf("%s: %d certificates\n", only.c_str(), count);
     return 0;
   }
-  const double naive = median_ns(n, batches, [&](int i) {
-    const auto v = bench::naive_double(raw[U(i)].p, raw[U(i)].e);
-    return v ? static_cast<int>(*v) : -1;
-  });
-  const double decide =
-      median_ns(n, batches, [&](int i) { return static_cast<int>(decide_position(es[U(i)], ps[U(i)]).position); });
-  const double doubles = median_ns(n, batches, [&](int i) {
-    const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
-    const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
-    return static_cast<int>(decide_position(e, p).position);
-  });
-  const int n_matrix = std::min(n, 2000);
-  const double matrix = median_ns(n_matrix, std::min(batches, 3), [&](int i) {
-    const Ellipsoid e = Ellipsoid::from_matrix(exact_matrix(raw[U(i)].e));
-    const Paraboloid p = Paraboloid::from_matrix(exact_matrix(raw[U(i)].p));
-    return static_cast<int>(decide_position(e, p).position);
-  });
+  // Each round times the naive pipeline and every path back to back, and the ratios are taken per
+  // round: on a shared machine the speed changes over seconds, and a ratio of two medians taken
+  // far apart would mix two speeds. Reported: the median over rounds of each time and ratio.
   const int nf = std::min(n, n_full);
-  const double full = per_call_median_ns(nf, [&](int i) {
-    const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);  // fresh objects: nothing cached
-    const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
-    return static_cast<int>(classify(e, p, Evidence::Full).verdict.position);
-  });
+  const int n_matrix = std::min(n, 2000);
+  auto naive_ns = [&] {
+    return median_ns(n, batches, [&](int i) {
+      const auto v = bench::naive_double(raw[U(i)].p, raw[U(i)].e);
+      return v ? static_cast<int>(*v) : -1;
+    });
+  };
+  auto full_ns = [&] {
+    return per_call_median_ns(nf, [&](int i) {
+      const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);  // fresh objects: nothing cached
+      const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
+      return static_cast<int>(classify(e, p, Evidence::Full).verdict.position);
+    });
+  };
+  enum { kNaive, kDecide, kDoubles, kMatrix, kFull, kFullCached, kPaths };
+  std::vector<std::array<double, kPaths>> time(static_cast<std::size_t>(rounds)), ratio(time.size());
+  for (auto& r : time) {
+    r[kNaive] = naive_ns();
+    r[kDecide] =
+        median_ns(n, batches, [&](int i) { return static_cast<int>(decide_position(es[U(i)], ps[U(i)]).position); });
+    r[kDoubles] = median_ns(n, batches, [&](int i) {
+      const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
+      const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
+      return static_cast<int>(decide_position(e, p).position);
+    });
+    r[kMatrix] = median_ns(n_matrix, std::min(batches, 3), [&](int i) {
+      const Ellipsoid e = Ellipsoid::from_matrix(exact_matrix(raw[U(i)].e));
+      const Paraboloid p = Paraboloid::from_matrix(exact_matrix(raw[U(i)].p));
+      return static_cast<int>(decide_position(e, p).position);
+    });
+    r[kFull] = full_ns();
+  }
+  // The same full evidence with the opt-in GMP block cache of the CLI and the Python module,
+  // installed last (it cannot be removed), each round against a naive time of its own.
+  relpos::install_gmp_block_cache();
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    const double base = naive_ns();
+    time[k][kFullCached] = full_ns();
+    for (int path = 0; path < kPaths; ++path)
+      ratio[k][static_cast<std::size_t>(path)] =
+          time[k][static_cast<std::size_t>(path)] / (path == kFullCached ? base : time[k][kNaive]);
+  }
+  auto median_of = [&](const std::vector<std::array<double, kPaths>>& v, int path) {
+    std::vector<double> x;
+    for (const auto& r : v) x.push_back(r[static_cast<std::size_t>(path)]);
+    std::sort(x.begin(), x.end());
+    return x[x.size() / 2];
+  };
+  auto range_of = [&](int path) {
+    double lo = HUGE_VAL, hi = 0;
+    for (const auto& r : ratio)
+      lo = std::min(lo, r[static_cast<std::size_t>(path)]), hi = std::max(hi, r[static_cast<std::size_t>(path)]);
+    return std::pair<double, double>{lo, hi};
+  };
   {  // full evidence by position: where the remaining cost is
     std::map<std::string, std::vector<double>> by;
     for (int i = 0; i < nf; ++i) {
@@ -210,29 +247,24 @@ int main(int argc, char** argv) {
       const auto t1 = Clock::now();
       by[to_string(c.verdict.position)].push_back(std::chrono::duration<double, std::nano>(t1 - t0).count());
     }
-    std::printf("full evidence by position (per-pair median):");
+    std::printf("full evidence by position (per-pair median, block cache installed):");
     for (auto& [k, v] : by) {
       std::sort(v.begin(), v.end());
       std::printf(" %s %.0f us (%zu)", k.c_str(), v[v.size() / 2] / 1000, v.size());
     }
     std::printf("\n");
   }
-  // The same, with the opt-in GMP block cache of the CLI and the Python module (installed last:
-  // it cannot be removed).
-  relpos::install_gmp_block_cache();
-  const double full_cached = per_call_median_ns(nf, [&](int i) {
-    const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
-    const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
-    return static_cast<int>(classify(e, p, Evidence::Full).verdict.position);
-  });
-  auto line = [&](const char* name, double ns, const char* what) {
-    std::printf("%-8s %12.0f ns  %9.1fx naive   %s\n", name, ns, ns / naive, what);
+  std::printf("%d rounds; per path: median time, median of the per-round ratios to naive [range]\n", rounds);
+  auto line = [&](const char* name, int path, const char* what) {
+    const auto [lo, hi] = range_of(path);
+    std::printf("%-8s %10.0f ns  %8.1fx naive [%.1f-%.1f]   %s\n", name, median_of(time, path), median_of(ratio, path),
+                lo, hi, what);
   };
-  line("naive", naive, "naive double pipeline (characteristic quartic + discriminant + sign rule)");
-  line("decide", decide, "decide_position on prebuilt objects");
-  line("doubles", doubles, "32 doubles -> from_doubles -> decide_position");
-  line("matrix", matrix, "32 doubles -> exact_rational -> from_matrix -> decide_position");
-  line("full", full, "classify(e, p), full evidence with certificate (per-pair median)");
-  line("full+gc", full_cached, "the same after relpos::install_gmp_block_cache() (as the CLI and Python)");
+  line("naive", kNaive, "naive double pipeline (characteristic quartic + discriminant + sign rule)");
+  line("decide", kDecide, "decide_position on prebuilt objects");
+  line("doubles", kDoubles, "32 doubles -> from_doubles -> decide_position");
+  line("matrix", kMatrix, "32 doubles -> exact_rational -> from_matrix -> decide_position");
+  line("full", kFull, "classify(e, p), full evidence with certificate (per-pair median)");
+  line("full+gc", kFullCached, "the same after relpos::install_gmp_block_cache() (as the CLI and Python)");
   return 0;
 }

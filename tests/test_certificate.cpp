@@ -387,3 +387,37 @@ TEST_CASE("malformed certificate JSON is an InputError", "[certificate]") {
     CHECK_THROWS_AS(relpos::certificate_from_json(relpos::io::parse_json_exact(text)), relpos::InputError);
   }
 }
+
+TEST_CASE("the report's JSON text holds the classification's exact values, for every position", "[certificate][io]") {
+  // The one writer of reports (src/io/json_write.cpp): its text is read back member by member and
+  // compared with the Classification it renders; the tree of classification_to_json is that text.
+  const std::pair<Ellipsoid, Position> cases[] = {
+      {sphere(q(-3), q(1)), Position::E},    {sphere(q(1), q(1, 10)), Position::I},
+      {sphere(q(-1), q(1)), Position::TE},   {sphere(q(1, 4), q(1, 4)), Position::TI},
+      {sphere(q(5, 4), q(1)), Position::TI}, {sphere(q(0), q(1)), Position::C}};
+  for (const auto& [e, expected] : cases) {
+    const relpos::Classification c = relpos::classify(e, cup(), relpos::Evidence::Full);
+    REQUIRE(c.verdict.position == expected);
+    const std::string text = relpos::io::classification_json_text(c);
+    CAPTURE(text);
+    const Json j = Json::parse(text);
+    CHECK(relpos::io::dump_json(relpos::io::classification_to_json(c)) == text);
+    CHECK(j["position"] == relpos::to_string(c.verdict.position));
+    CHECK(j["small"] == c.verdict.small);
+    CHECK(j["stage"] == relpos::to_string(c.verdict.stage));
+    CHECK(j["rule"] == c.rule_text());
+    CHECK(j["disc_sign"] == int(c.verdict.sign_disc_f));
+    CHECK(j["roots"]["real"] == int(c.verdict.real_roots));
+    CHECK(j["degree_ftilde"] == c.degree_ftilde);
+    for (std::size_t i = 0; i < 5; ++i) CHECK(j["f"][i] == relpos::to_string(c.f[i]));
+    for (std::size_t i = 0; i < 3; ++i) CHECK(j["s"][i] == relpos::to_string(c.s[i]));
+    if (c.rho) CHECK(j["rho"] == relpos::to_string(*c.rho));
+    if (c.rho) CHECK(j["rho_approx"].get<double>() == c.rho_approx);  // the double itself, round trip
+    std::size_t multiple = 0;
+    for (const auto& r : c.roots) multiple += r.multiplicity_f >= 2;
+    CHECK(j["multiple_roots"].size() == multiple);
+    require_same(relpos::certificate_from_json(j["certificate"]), c.certificate);
+    CHECK_FALSE(
+        relpos::verify_certificate(e, cup(), c.verdict.position, relpos::certificate_from_json(j["certificate"])));
+  }
+}

@@ -492,6 +492,17 @@ void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h
   mpz_lcm(common.mpz(), lp.mpz(), le.mpz());
   mpz_divexact(a.mpz(), common.mpz(), lp.mpz());
   mpz_divexact(b.mpz(), common.mpz(), le.mpz());
+  if (mpz_popcount(a.mpz()) == 1 && mpz_popcount(b.mpz()) == 1) {  // doubles: S/lp and S/le are powers of 2
+    const mp_bitcnt_t ka = mpz_scan1(a.mpz(), 0), kb = mpz_scan1(b.mpz(), 0);
+    auto shifted = [](const Integer& z, mp_bitcnt_t bits) {
+      Integer r;  // fresh: written through mpz()
+      mpz_mul_2exp(r.mpz(), z.mpz(), bits);
+      return r;
+    };
+    for (std::size_t i = 0; i < 5; ++i) fi[i] = shifted(g[i], ka * i + kb * (4 - i));
+    for (std::size_t i = 0; i < 3; ++i) si[i] = shifted(h[i], ka * i + kb * (3 - i));
+    return;
+  }
   Integer pa[5], pb[5];  // powers of S/lp and S/le
   pa[0] = pb[0] = Integer(1);
   for (std::size_t i = 1; i < 5; ++i) pa[i] = pa[i - 1] * a, pb[i] = pb[i - 1] * b;
