@@ -10,6 +10,7 @@
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
+#include <relpos/io.hpp>
 #include <relpos/numbers.hpp>
 #include <relpos/quadric.hpp>
 #include <string>
@@ -222,6 +223,24 @@ TEST_CASE("from_doubles gives the same positions as from_matrix", "[from_doubles
     }
   }
   CHECK(exact_checked == 100);
+}
+
+TEST_CASE("full evidence from doubles is the full evidence of the exact matrices", "[from_doubles]") {
+  // The evidence reads a quadric made from doubles through its doubles (integer forms from the
+  // bits, the certificate's matrices only when it needs them): every byte of the report must be
+  // the one of the same pair given as exact rationals.
+  Gen g;
+  for (int k = 0; k < 300; ++k) {
+    const auto [ed, pd] = g.regime_pair();
+    const Ellipsoid e = Ellipsoid::from_doubles(ed);
+    const Paraboloid p = Paraboloid::from_doubles(pd);
+    const Ellipsoid es = Ellipsoid::from_matrix(exact(ed));
+    const Paraboloid ps = Paraboloid::from_matrix(exact(pd));
+    const std::string fast = relpos::io::classification_json_text(relpos::classify(e, p, relpos::Evidence::Full));
+    const std::string slow = relpos::io::classification_json_text(relpos::classify(es, ps, relpos::Evidence::Full));
+    CAPTURE(k);
+    CHECK(fast == slow);
+  }
 }
 
 TEST_CASE("A quadric from doubles is shared safely and copies keep their matrix", "[from_doubles]") {

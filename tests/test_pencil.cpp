@@ -1,5 +1,8 @@
 // pencil.hpp, sturm.hpp, smallness.hpp, roots.hpp: the polynomials and the exact tools that read them.
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <random>
 #include <relpos/classify.hpp>
 #include <vector>
 
@@ -452,5 +455,38 @@ TEST_CASE("divided_by_powers: two scales with shared prime factors, as rational 
       CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // same canonical form
       CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(expected.mpq())) == 0);
     }
+  }
+}
+
+TEST_CASE("integer_form of doubles equals integer_form of their exact rationals", "[forms]") {
+  rt::Rng g(99);
+  std::mt19937_64 bits(5);
+  for (int trial = 0; trial < 3000; ++trial) {
+    relpos::DoubleMatrix4 d{};
+    for (double& x : d) {
+      switch (g.uniform(0, 5)) {
+        case 0:
+          x = 0;
+          break;
+        case 1:
+          x = static_cast<double>(g.uniform(-1000, 1000));
+          break;
+        case 2:
+          x = std::ldexp(static_cast<double>(g.uniform(-(1L << 52), 1L << 52)), static_cast<int>(g.uniform(-1074, 60)));
+          break;
+        case 3:
+          x = std::numeric_limits<double>::denorm_min() * static_cast<double>(g.uniform(1, 7));
+          break;
+        default:
+          x = std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits), static_cast<int>(g.uniform(-300, 300)));
+      }
+    }
+    relpos::Matrix4 m;
+    for (std::size_t i = 0; i < 16; ++i) m.a[i] = Rational(d[i]);
+    Integer l1, l2;
+    const auto a = relpos::forms::integer_form(d, l1);
+    const auto b = relpos::forms::integer_form(m, l2);
+    CHECK(l1 == l2);
+    for (std::size_t i = 0; i < 16; ++i) CHECK(a.a[i] == b.a[i]);
   }
 }

@@ -82,19 +82,37 @@ class IntegerForm {
   mpz_t z_[4][4];
 };
 
+/// A quadric's exact matrix, asked for on first use: the certificates of E and I with known roots
+/// never read the matrices, so a quadric made from doubles builds no rationals for them.
+template <class Quadric>
+class LazyMatrix {
+ public:
+  explicit LazyMatrix(const Quadric& q) : q_(q) {}
+  const Matrix4& get() const {
+    if (!m_) m_ = &q_.matrix();
+    return *m_;
+  }
+  operator const Matrix4&() const { return get(); }  // NOLINT: reads as the matrix it stands for
+  const Rational& operator()(int i, int j) const { return get()(i, j); }
+
+ private:
+  const Quadric& q_;
+  mutable const Matrix4* m_ = nullptr;
+};
+
 /// The pair's blocks (E = [[M, m], [m^T, e0]], P = [[A, a], [a^T, p0]]), f, s and lambda_s.
 struct Pair {
-  const Matrix4& E;
-  const Matrix4& P;
+  LazyMatrix<Ellipsoid> E;
+  LazyMatrix<Paraboloid> P;
   Poly f, s;
   LambdaS ls;
-  Pair(const Matrix4& e, const Matrix4& p, const Known& known) : E(e), P(p) {
+  Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known) : E(e), P(p) {
     if (known.f && known.s) {
       f = anysize::to_poly(known.f->data(), 5);
       s = anysize::to_poly(known.s->data(), 3);
     } else {
-      const Quartic<Rational> fq = characteristic_polynomial<Rational>(P, E);
-      const Quadratic<Rational> sq = special_polynomial<Rational>(P, E);
+      const Quartic<Rational> fq = characteristic_polynomial<Rational>(P.get(), E.get());
+      const Quadratic<Rational> sq = special_polynomial<Rational>(P.get(), E.get());
       f = anysize::to_poly(fq.data(), 5);
       s = anysize::to_poly(sq.data(), 3);
     }
@@ -776,7 +794,7 @@ std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<R
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) { return build(e, p, position, Known{}); }
 
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known) {
-  const Pair pr(e.matrix(), p.matrix(), known);
+  const Pair pr(e, p, known);
   Certificate c;
   auto in_gap = [&](const Rational& l) { return l < 0 && pr.ls.compare(l) > 0; };
   switch (position) {

@@ -537,7 +537,11 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   out.verdict = v;
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E), from each matrix's own form
     Integer lp, le;
-    const MatrixOf<Integer> pz = forms::integer_form(p.matrix(), lp), ez = forms::integer_form(e.matrix(), le);
+    // From the doubles when the entries are doubles: no rational matrix is built for the evidence.
+    const MatrixOf<Integer> pz =
+        p.doubles() ? forms::integer_form(*p.doubles(), lp) : forms::integer_form(p.matrix(), lp);
+    const MatrixOf<Integer> ez =
+        e.doubles() ? forms::integer_form(*e.doubles(), le) : forms::integer_form(e.matrix(), le);
     MatrixOf<PooledInteger> pp, ep;  // the generic formulas without heap traffic for temporaries
     for (std::size_t i = 0; i < 16; ++i) {
       pp.a[i] = PooledInteger(pz.a[i]);

@@ -98,6 +98,9 @@ MatrixOf<Interval> to_intervals(const Matrix4& m);
 /// det(lambda P + E) = sum_i g_i lambda^i / (lp^i le^(4-i)) with g = det(mu Pz + Ez), which keeps
 /// every product shorter than one common lcm of both matrices would.
 MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l);
+/// The same for a matrix of exact doubles, read from their bits (no rationals): equal to
+/// integer_form of the matrix of Rational(d[i]).
+MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l);
 
 /// The smallest integer form the *decisions* need (not the evidence: the roots move). With
 /// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive
