@@ -405,6 +405,8 @@ int run_scene(Args& args) {
   for (bool more = true; more;) {
     lines.clear();
     parsed.clear();
+    lines.reserve(kBlockLines);
+    parsed.reserve(kBlockLines);
     std::string line;
     while (lines.size() < kBlockLines && (lines.empty() || reader.ready())) {
       const relpos_cli::LineReader::Status status = reader.next(line);
@@ -438,6 +440,8 @@ int run_scene(Args& args) {
 
     std::vector<relpos::Ellipsoid> bodies;
     std::vector<std::size_t> where;
+    bodies.reserve(parsed.size());
+    where.reserve(parsed.size());
     for (std::size_t i = 0; i < parsed.size(); ++i) {
       if (parsed[i].body) {
         bodies.push_back(std::move(*parsed[i].body));

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "relpos/numbers.hpp"
 
@@ -119,6 +120,22 @@ class QuadricMatrix {
   QuadricMatrix(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized);
   QuadricMatrix(const QuadricMatrix& o)
       : d_(o.d_), n_(o.n_), enclosure_(o.enclosure_), source_(o.source_), m_(std::atomic_load(&o.m_)) {}
+  /// Moves take the matrix without atomic operations: a quadric being moved is not shared (vectors
+  /// of quadrics grow by moves, not by copies).
+  QuadricMatrix(QuadricMatrix&& o) noexcept
+      : d_(std::move(o.d_)),
+        n_(std::move(o.n_)),
+        enclosure_(std::move(o.enclosure_)),
+        source_(std::move(o.source_)),
+        m_(std::move(o.m_)) {}
+  QuadricMatrix& operator=(QuadricMatrix&& o) noexcept {
+    d_ = std::move(o.d_);
+    n_ = std::move(o.n_);
+    enclosure_ = std::move(o.enclosure_);
+    source_ = std::move(o.source_);
+    m_ = std::move(o.m_);
+    return *this;
+  }
   QuadricMatrix& operator=(const QuadricMatrix& o) {
     if (this != &o) {
       d_ = o.d_;
