@@ -666,71 +666,51 @@ void append_classification(const Classification& c, const RenderOptions& options
   const Verdict& v = c.verdict;
   w.key("position");
   w.string(to_string(v.position));
-  w.raw(",");
-  w.key("small");
+  w.member("small");
   w.boolean(v.small);
-  w.raw(",");
-  w.key("contact");
-  if (const auto meets = v.meets())
-    w.boolean(*meets);
-  else
-    w.null();
-  w.raw(",");
-  w.key("rho_vs_one");
+  w.member("contact");
+  w.or_null(v.meets(), [&](bool meets) { w.boolean(meets); });
+  w.member("rho_vs_one");
   w.string(rho_vs_one_text(v.rho_vs_one));
-  w.raw(",");
-  w.key("rho");
-  if (c.rho)
-    w.rational(*c.rho);
-  else
-    w.null();
-  w.raw(",");
-  const double rho_approx = c.rho_approx;  // the nearest double to the exact rho when there is one
-  w.key("rho_approx");
-  if (c.has_full_evidence && std::isfinite(rho_approx))
-    w.number(rho_approx);
-  else
-    w.null();
-  w.raw(",");
-  w.key("rule");
+  w.member("rho");
+  w.or_null(c.rho, [&](const Rational& rho) { w.rational(rho); });
+  w.member("rho_approx");  // the double nearest the exact rho when there is one
+  const bool approx = c.has_full_evidence && std::isfinite(c.rho_approx);
+  w.or_null(approx ? std::optional<double>(c.rho_approx) : std::nullopt, [&](double x) { w.number(x); });
+  w.member("rule");
   w.string(c.rule_text());
-  w.raw(",");
-  w.key("stage");
+  w.member("stage");
   w.string(to_string(v.stage));
-  w.raw(",");
-  w.key("disc_sign");
+  w.member("disc_sign");
   w.integer(v.sign_disc_f);
-  w.raw(",");
-  w.key("disc_ftilde_sign");
+  w.member("disc_ftilde_sign");
   w.integer(v.sign_disc_ftilde);
   if (c.has_full_evidence) {
-    w.raw(",");
-    w.key("degree_ftilde");
+    w.member("degree_ftilde");
     w.integer(c.degree_ftilde);
   }
-  w.raw(",\"roots\":{\"real\":");
-  w.integer(v.real_roots);
-  w.raw(",\"negative\":");
-  w.integer(v.negative_roots);
-  w.raw(",\"positive\":");
-  w.integer(v.positive_roots);
-  w.raw(",\"nonreal\":");
-  w.integer(v.nonreal_roots);
+  const std::pair<const char*, int> counts[] = {{"real", v.real_roots},
+                                                {"negative", v.negative_roots},
+                                                {"positive", v.positive_roots},
+                                                {"nonreal", v.nonreal_roots}};
+  w.member("roots");
+  for (std::size_t k = 0; k < 4; ++k) {
+    w.raw(k == 0 ? "{" : ",");
+    w.key(counts[k].first);
+    w.integer(counts[k].second);
+  }
   w.raw("}");
   if (!c.has_full_evidence) {
     w.raw("}");
     return;
   }
-  w.raw(",");
-  w.key("f");
+  w.member("f");
   w.rationals(c.f.data(), c.f.size());
-  w.raw(",");
-  w.key("s");
+  w.member("s");
   w.rationals(c.s.data(), c.s.size());
-  w.raw(",");
-  w.key("multiple_roots");
+  w.member("multiple_roots");
   w.raw("[");
-  const auto approx = root_decimals(c, options.digits, /*only_multiple=*/true);
+  const auto approx_roots = root_decimals(c, options.digits, /*only_multiple=*/true);
   bool first = true;
   for (std::size_t i = 0; i < c.roots.size(); ++i) {
     const auto& r = c.roots[i];
@@ -738,30 +718,22 @@ void append_classification(const Classification& c, const RenderOptions& options
     w.raw(first ? "{" : ",{");
     first = false;
     w.key("value");
-    if (r.exact)
-      w.rational(*r.exact);
-    else
-      w.null();
-    w.raw(",");
-    w.key("interval");
+    w.or_null(r.exact, [&](const Rational& x) { w.rational(x); });
+    w.member("interval");
     const Rational ends[2] = {r.lower, r.upper};
     w.rationals(ends, 2);
-    w.raw(",");
-    w.key("approx");
-    w.string(approx[i]);
-    w.raw(",");
-    w.key("multiplicity_f");
+    w.member("approx");
+    w.string(approx_roots[i]);
+    w.member("multiplicity_f");
     w.integer(r.multiplicity_f);
-    w.raw(",");
-    w.key("multiplicity_s");
+    w.member("multiplicity_s");
     w.integer(r.multiplicity_s);
-    w.raw(",");
-    w.key("tangency");
+    w.member("tangency");
     w.boolean(r.tangency());
     w.raw("}");
   }
-  w.raw("],");
-  w.key("certificate");
+  w.raw("]");
+  w.member("certificate");
   append_certificate(c.certificate, options.digits, w);
   w.raw("}");
 }

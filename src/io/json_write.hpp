@@ -5,6 +5,7 @@
 // the public API are parsed back from this text, so there is one rendering.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -20,11 +21,22 @@ class JsonWriter {
   explicit JsonWriter(std::string& out) : out_(out) {}
 
   void raw(std::string_view text) { out_.append(text); }
-  void key(std::string_view name);  ///< "name": (name is plain ASCII)
+  void key(std::string_view name);      ///< "name": (name is plain ASCII)
+  void member(std::string_view name) {  ///< ,"name": (a member after the first)
+    out_ += ',';
+    key(name);
+  }
   void string(std::string_view s);  ///< escaped as dump_json escapes it
   void integer(long n);
   void boolean(bool b) { out_ += b ? "true" : "false"; }
   void null() { out_ += "null"; }
+  template <class T, class Write>
+  void or_null(const std::optional<T>& x, Write write) {  ///< write(*x), or null
+    if (x)
+      write(*x);
+    else
+      null();
+  }
   void number(double x);                             ///< as dump_json writes a double (the shortest round trip)
   void rational(const Rational& q);                  ///< "p/q" or "p": to_string(q) as a JSON string
   void rationals(const Rational* q, std::size_t n);  ///< [q0, q1, ...] as strings
