@@ -29,12 +29,11 @@ int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 class IntegerForm {
  public:
   explicit IntegerForm(const Matrix4& q) {
-    Integer l(1);
-    forms::lcm_of_denominators(q.a.begin(), q.a.end(), l);
+    Integer l;
+    const forms::MatrixOf<Integer> z = forms::integer_form(q, l);
     for (int i = 0; i < 4; ++i)
       for (int j = i; j < 4; ++j) {
-        mpz_init(z_[i][j]);
-        forms::scaled_numerator(q(i, j), l, z_[i][j]);
+        mpz_init_set(z_[i][j], z(i, j).mpz());
         if (j > i) mpz_mul_2exp(z_[i][j], z_[i][j], 1);  // off-diagonal entries appear twice
       }
   }
@@ -606,14 +605,11 @@ std::array<T, 4> cramer(const T (&k)[3][4]) {
 /// The centre -M^{-1} m of the ellipsoid, by Cramer's rule on E times the lcm of its denominators
 /// (integer determinants, one rational canonicalisation per coordinate); nullopt if M is singular.
 std::optional<V3> centre_of(const Matrix4& e) {
-  Integer l(1);
-  forms::lcm_of_denominators(e.a.begin(), e.a.end(), l);
+  Integer l;
+  const forms::MatrixOf<Integer> z = forms::integer_form(e, l);
   Integer k[3][4];  // [M | -m] times l
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 4; ++j) {
-      forms::scaled_numerator(e(i, j), l, k[i][j].mpz());
-      if (j == 3) mpz_neg(k[i][j].mpz(), k[i][j].mpz());
-    }
+    for (int j = 0; j < 4; ++j) k[i][j] = j == 3 ? -z(i, j) : z(i, j);
   const std::array<Integer, 4> d = cramer(k);
   if (d[0] == 0) return std::nullopt;
   return V3{Rational(d[1], d[0]), Rational(d[2], d[0]), Rational(d[3], d[0])};

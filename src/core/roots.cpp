@@ -294,7 +294,7 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   bound = 2 * (1 + bound);
   if (!std::isfinite(bound) || bound > 1e300) return std::nullopt;
   double roots[4];
-  const std::vector<double> approx(roots, roots + approximate_real_roots(c, 4, bound, roots));
+  const std::size_t count = static_cast<std::size_t>(approximate_real_roots(c, 4, bound, roots));
   // The sign of f at a double: the double Horner value when it exceeds its error bound (each c_i
   // is f_i 2^-top truncated, relative error < 2^-52, plus at most 8 roundings: 2^-48 times the
   // magnitude covers both with room), else exactly. Only when no coefficient was flushed towards 0.
@@ -317,7 +317,7 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
     return sign_at_double(fc, x);
   };
   const std::size_t expected = disc > 0 ? 4 : 2;  // square-free: 4 or 0 real roots, or exactly 2
-  if (approx.size() != expected) return std::nullopt;
+  if (count != expected) return std::nullopt;
   RootStructure rs;
   rs.degree_ftilde = 4;
   rs.sign_disc_f = rs.sign_disc_ftilde = disc;
@@ -325,15 +325,15 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   // Certify: disjoint intervals around the approximations with exact opposite signs at the ends; as
   // many as there are real roots, so each isolates exactly one (simple, irrational) root.
   double prev_hi = -HUGE_VAL;
-  for (std::size_t k = 0; k < approx.size(); ++k) {
-    const double r = approx[k];
+  for (std::size_t k = 0; k < count; ++k) {
+    const double r = roots[k];
     if (r == 0 || !std::isfinite(r)) return std::nullopt;
     bool ok = false;
     for (int widen = 0; widen < 4 && !ok; ++widen) {
       const double delta = std::fabs(r) * std::ldexp(1.0, -44 + 10 * widen);
       const double lo = r - delta, hi = r + delta;
       if (!(lo > prev_hi) || (lo < 0) != (r < 0) || (hi < 0) != (r < 0)) break;
-      if (k + 1 < approx.size() && !(hi < approx[k + 1])) break;
+      if (k + 1 < count && !(hi < roots[k + 1])) break;
       const int sl = sign_at(lo), sh = sign_at(hi);
       if (sl != 0 && sh != 0 && sl != sh) {
         RealRoot root;

@@ -123,30 +123,31 @@ bool plainly_valid(std::string_view v) {
   return true;
 }
 
-/// The minimal report's members after the id, as JSON text: written directly (the rule texts are
-/// escaped once), in the order of the full report's first members.
+/// The minimal report's members after the id, in the order of the full report's first members,
+/// by the report writer (the rule and stage texts made once).
 void append_minimal(const Classification& c, std::string& out) {
   static const std::array<std::string, kRuleCount> rules = [] {
     std::array<std::string, kRuleCount> r;
-    for (std::size_t k = 0; k < r.size(); ++k) r[k] = dump_json(Json(describe(static_cast<Rule>(k))));
+    for (std::size_t k = 0; k < r.size(); ++k) r[k] = describe(static_cast<Rule>(k));
     return r;
   }();
-  const Verdict& v = c.verdict;
-  out += ",\"position\":\"";
-  out += to_string(v.position);
-  out += v.small ? "\",\"small\":true" : "\",\"small\":false";
-  const auto meets = v.meets();
-  out += !meets ? ",\"contact\":null" : *meets ? ",\"contact\":true" : ",\"contact\":false";
-  out += ",\"rule\":";
-  const auto r = static_cast<std::size_t>(v.rule);
-  out += rules.at(r);
   static const std::array<std::string, kAllStages.size()> stages = [] {
     std::array<std::string, kAllStages.size()> names;
-    for (Stage st : kAllStages) names[static_cast<std::size_t>(st)] = dump_json(Json(to_string(st)));
+    for (Stage st : kAllStages) names[static_cast<std::size_t>(st)] = to_string(st);
     return names;
   }();
-  out += ",\"stage\":";
-  out += stages[static_cast<std::size_t>(v.stage)];
+  const Verdict& v = c.verdict;
+  detail::JsonWriter w(out);
+  w.member("position");
+  w.string(to_string(v.position));
+  w.member("small");
+  w.boolean(v.small);
+  w.member("contact");
+  w.or_null(v.meets(), [&](bool meets) { w.boolean(meets); });
+  w.member("rule");
+  w.string(rules.at(static_cast<std::size_t>(v.rule)));
+  w.member("stage");
+  w.string(stages[static_cast<std::size_t>(v.stage)]);
   out += '}';
 }
 
