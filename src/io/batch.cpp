@@ -138,12 +138,7 @@ void append_minimal(const Classification& c, std::string& out) {
   }();
   const Verdict& v = c.verdict;
   detail::JsonWriter w(out);
-  w.member("position");
-  w.string(to_string(v.position));
-  w.member("small");
-  w.boolean(v.small);
-  w.member("contact");
-  w.or_null(v.meets(), [&](bool meets) { w.boolean(meets); });
+  detail::append_verdict_head(v, w);
   w.member("rule");
   w.string(rules.at(static_cast<std::size_t>(v.rule)));
   w.member("stage");
@@ -313,7 +308,6 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
     }
     const Classification c = classify(*in.ellipsoid, *in.paraboloid, options.evidence);
     if (options.evidence == Evidence::Full) {
-      out += ',';
       detail::JsonWriter w(out);
       detail::append_classification(c, options.render, w);
     } else {

@@ -662,14 +662,18 @@ std::string polynomial_to_text(const Rational* c, int size, const std::string& v
 
 namespace detail {
 
-void append_classification(const Classification& c, const RenderOptions& options, JsonWriter& w) {
-  const Verdict& v = c.verdict;
-  w.key("position");
+void append_verdict_head(const Verdict& v, JsonWriter& w) {
+  w.member("position");
   w.string(to_string(v.position));
   w.member("small");
   w.boolean(v.small);
   w.member("contact");
   w.or_null(v.meets(), [&](bool meets) { w.boolean(meets); });
+}
+
+void append_classification(const Classification& c, const RenderOptions& options, JsonWriter& w) {
+  const Verdict& v = c.verdict;
+  append_verdict_head(v, w);
   w.member("rho_vs_one");
   w.string(rho_vs_one_text(v.rho_vs_one));
   w.member("rho");
@@ -741,9 +745,10 @@ void append_classification(const Classification& c, const RenderOptions& options
 }  // namespace detail
 
 std::string classification_json_text(const Classification& c, const RenderOptions& options) {
-  std::string out = "{";
+  std::string out;
   detail::JsonWriter w(out);
   detail::append_classification(c, options, w);
+  out[0] = '{';  // the members start with a comma (batch writes the id before them)
   return out;
 }
 

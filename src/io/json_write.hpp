@@ -45,8 +45,12 @@ class JsonWriter {
   std::string& out_;
 };
 
-/// The members of the classification report after its opening brace, up to and including the
-/// closing brace (classification_to_json describes them).
+/// "position", "small" and "contact": the first members of the full and the minimal report, each
+/// preceded by a comma.
+void append_verdict_head(const Verdict& v, JsonWriter& w);
+
+/// The members of the classification report, each preceded by a comma (the caller has written the
+/// opening brace and the id), and the closing brace (classification_to_json describes them).
 void append_classification(const Classification& c, const RenderOptions& options, JsonWriter& w);
 
 /// The certificate's JSON value (certificate_to_json describes it).
