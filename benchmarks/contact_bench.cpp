@@ -122,8 +122,7 @@ int main(int argc, char** argv) {
     const auto fr = t.update(e);
     tracker_filter += fr.by == DecidedBy::DiscriminantFilter;
     if (d.verdict.position != v.position || d.verdict.rule != v.rule || fr.position != v.position ||
-        c.position != v.position || (v.contact == 0 && c.contact != Contact::None) ||
-        (v.contact == 1 && c.contact == Contact::None) || s.contact != c.contact)
+        c.position != v.position || c.contact != contact_of(v.position) || s.contact != c.contact)
       ++mismatches;
   }
 

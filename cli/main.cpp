@@ -134,7 +134,7 @@ void print_batch_help(std::ostream& os) {
         "Options:\n"
         "  --digits N       significant digits of root approximations (default 12, 1..1000)\n"
         "  --contact-only   answer {\"id\", \"contact\", \"position\", \"rule\", \"decided_by\"} only:\n"
-        "                   contact is none, touching, crossing, meet or unknown (doc/contact.md)\n"
+        "                   contact is none, touching or crossing (doc/contact.md)\n"
         "  --evidence full|minimal   full (default): the whole report with its certificate;\n"
         "                   minimal: id, position, small, contact, rule, stage\n"
         "  --threads N      worker threads (default: all cores); output stays in input order\n"

@@ -61,7 +61,7 @@ void print_scene_help(std::ostream& os) {
         "  --format defaults to csv for a FILE ending in .csv, else jsonl.\n"
         "\n"
         "Output: one JSON line per body, in input order, on standard output:\n"
-        "  {\"id\": ..., \"position\": \"I|TI|C|TE|E\", \"contact\": true|false|null, \"stage\": ...}\n"
+        "  {\"id\": ..., \"position\": \"I|TI|C|TE|E\", \"contact\": true|false, \"stage\": ...}\n"
         "or {\"id\": ..., \"line\": N, \"error\": \"...\"} for a line that cannot be read (the scene goes on).\n"
         "The id is the input id, or the 1-based line number. At the end one JSON line on standard error:\n"
         "  {\"summary\": {\"bodies\", \"errors\", \"positions\", \"stages\", \"threads\", \"seconds\",\n"
@@ -473,7 +473,7 @@ int run_scene(Args& args) {
           out += ",\"position\":\"";
           out += relpos::to_string(v->position);
           out += "\",\"contact\":";
-          out += v->contact < 0 ? "null" : (v->contact ? "true" : "false");
+          out += relpos::contact_of(v->position) != relpos::Contact::None ? "true" : "false";
           out += ",\"stage\":\"" + relpos::to_string(v->stage) + "\"}\n";
         } else {
           out += ",\"line\":" + std::to_string(x.line) + ",\"error\":" + dump(Json(x.error)) + "}\n";

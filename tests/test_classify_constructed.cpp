@@ -424,7 +424,6 @@ TEST_CASE("2r = a^2 exactly: rho == 1, small", "[classify][smallness]") {
   CHECK(cb.verdict.position == Position::I);
   CHECK(cb.verdict.position ==
         secular_position(Ellipsoid::from_matrix(beyond.e()), Paraboloid::from_matrix(beyond.p())));
-  CHECK(cb.verdict.meets() == std::optional<bool>(false));
   Rng g(0x5EED0008);
   for (int i = 0; i < 6; ++i) {
     const Classification ct = check_config_transformed(inside, g);
@@ -492,13 +491,11 @@ TEST_CASE("not small: every position is decided (math.md section 8)", "[classify
     CHECK(c.verdict.rho_vs_one == 1);
     CHECK(*c.rho == 16);
     CHECK(c.verdict.position == Position::C);
-    CHECK(c.verdict.meets() == std::optional<bool>(true));
   }
   SECTION("centre (0,0,-3): E; (0,0,-2): TE") {
     const Classification e = check_config(config("big, (0,0,-3)", one, one, V(Q(0), Q(0), Q(-3)), r, Position::E));
     CHECK(e.verdict.position == Position::E);
     CHECK_FALSE(e.verdict.small);
-    CHECK(e.verdict.meets() == std::optional<bool>(false));
     // f = -(l - 4)^2 (l + 1)^2 / 4: -1 is shared with s (not a tangency), 4 is the tangency.
     const Classification t = check_config(config("big, (0,0,-2)", one, one, V(Q(0), Q(0), Q(-2)), r, Position::TE));
     CHECK(t.verdict.position == Position::TE);
@@ -511,8 +508,6 @@ TEST_CASE("not small: every position is decided (math.md section 8)", "[classify
     // f = -(l + 1)^2 (l^2 + 16) / 4.
     const Classification c = check_config(config("big, (0,0,0)", one, one, V(Q(0), Q(0), Q(0)), r, Position::C));
     CHECK(c.verdict.position == Position::C);
-    REQUIRE(c.verdict.meets().has_value());
-    CHECK(*c.verdict.meets() == true);
     CHECK(c.verdict.nonreal_roots == 2);
   }
   SECTION("a root of s carrying a tangential contact point of crossing surfaces") {
@@ -532,7 +527,6 @@ TEST_CASE("not small: every position is decided (math.md section 8)", "[classify
     const Classification c = check_config(k);
     CHECK(c.verdict.position == Position::C);
     CHECK(c.verdict.position == secular_position(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p())));
-    CHECK(c.verdict.meets() == std::optional<bool>(true));
     CHECK_FALSE(c.verdict.small);
     CHECK(
         relpos::oracle::kernel_has_common_point(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()), Q(-1)));

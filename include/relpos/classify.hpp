@@ -74,18 +74,12 @@ struct Verdict {
   Rule rule = Rule::None;
   bool small = false;
   signed char rho_vs_one = 0;
-  signed char contact = -1;  ///< 1 the surfaces meet (TI, C, TE), 0 they do not (I, E); -1 before a rule is set
   signed char sign_disc_f = 0, sign_disc_ftilde = 0;
   signed char real_roots = 0, negative_roots = 0, positive_roots = 0, nonreal_roots = 0;
   signed char tangent_negative = 0, tangent_positive = 0, nonreal_multiple = 0;
   /// Whether f has roots in (lambda_s, 0) (math.md section 8): 1 yes, 0 no, -1 not computed (only
   /// pairs that are not small with four real negative roots need it).
   signed char roots_above_lambda_s = -1;
-  /// contact as "do the surfaces meet?": empty when not decidable.
-  std::optional<bool> meets() const {
-    if (contact < 0) return std::nullopt;
-    return contact == 1;
-  }
 };
 
 /// Adaptive exact verdict (static double filter, intervals, exact integers, exact roots).

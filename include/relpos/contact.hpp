@@ -55,23 +55,12 @@ DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid&
 // Contact only: do the two surfaces meet?
 // ------------------------------------------------------------------------------------------------
 
-enum class Contact : unsigned char {
-  None,      ///< the surfaces do not meet (I or E)
-  Touching,  ///< they meet only tangentially (TI or TE)
-  Crossing,  ///< they cross (C)
-};
-std::string to_string(Contact c);
-
 struct ContactAnswer {
   Contact contact = Contact::None;
   Position position = Position::C;  ///< classify's position
   Rule rule = Rule::None;           ///< classify's rule
   DecidedBy by = DecidedBy::FullClassifier;
 };
-
-/// The contact of a classifier verdict (what classify's position / contact field say; a not-small
-/// crossing with f~ square-free is Crossing, math.md section 3).
-Contact contact_of(const Verdict& v);
 
 /// Contact of the two surfaces: the discriminant test, then decide_position(), then (for an answer
 /// that is not decided because the body is not small) the exact inside certificate.
@@ -118,7 +107,6 @@ class ExteriorTracker {
   struct FrameVerdict {
     Position position = Position::C;
     Rule rule = Rule::None;
-    signed char contact = -1;  ///< as Verdict::contact
     bool changed = false;      ///< position differs from the previous frame's (false on the first)
     DecidedBy by = DecidedBy::FullClassifier;
   };

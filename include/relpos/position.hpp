@@ -39,6 +39,31 @@ inline std::string to_string(Position p) {
   throw std::logic_error("internal error: to_string: not a Position");
 }
 
+/// Whether and how the two surfaces meet.
+enum class Contact : unsigned char {
+  None,      ///< the surfaces do not meet (I or E)
+  Touching,  ///< they meet only tangentially (TI or TE)
+  Crossing,  ///< they cross (C)
+};
+/// "none", "touching", "crossing".
+inline std::string to_string(Contact c) {
+  switch (c) {
+    case Contact::None:
+      return "none";
+    case Contact::Touching:
+      return "touching";
+    case Contact::Crossing:
+      return "crossing";
+  }
+  throw std::logic_error("internal error: to_string: not a Contact");
+}
+
+/// The contact a position states: every answer with a position derives its contact from it.
+constexpr Contact contact_of(Position p) {
+  return p == Position::C ? Contact::Crossing
+                          : (p == Position::TI || p == Position::TE ? Contact::Touching : Contact::None);
+}
+
 // Certificates: evidence for each position that anyone can check with exact rational arithmetic
 // alone (math.md section 8; doc/certificates.md). The matrices are the sign-normalized ones the
 // library stores (Ellipsoid::matrix(): 3x3 block positive definite, det < 0; Paraboloid::matrix():

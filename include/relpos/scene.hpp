@@ -42,11 +42,10 @@ namespace relpos {
 
 inline constexpr std::size_t kPositionCount = kAllPositions.size();  ///< I, TI, C, TE, E
 
-/// The answer for one body: position, rule and contact are exactly decide_position()'s.
+/// The answer for one body: position and rule are exactly decide_position()'s (contact_of(position)).
 struct SceneVerdict {
   Position position = Position::C;
   Rule rule = Rule::None;
-  signed char contact = -1;           ///< 1 yes, 0 no, -1 not decidable (as Verdict::contact)
   Stage stage = Stage::StaticDouble;  ///< an early-out or the classifier stage that decided
 };
 

@@ -42,18 +42,6 @@ std::string to_string(DecidedBy d) {
   return "?";
 }
 
-std::string to_string(Contact c) {
-  switch (c) {
-    case Contact::None:
-      return "none";
-    case Contact::Touching:
-      return "touching";
-    case Contact::Crossing:
-      return "crossing";
-  }
-  return "?";
-}
-
 DiscriminantCase discriminant_case(const QuarticSigns& q) {
   using detail::certain;
   const auto f4 = certain(q.f[4]), f0 = certain(q.f[0]), disc = certain(q.g0);
@@ -145,7 +133,7 @@ SymmetricEntries<NT> entries(Get get) {
 }
 
 /// The answer of a classifier verdict, by what settled it.
-ContactAnswer finish(const Verdict& v, DecidedBy by) { return {contact_of(v), v.position, v.rule, by}; }
+ContactAnswer finish(const Verdict& v, DecidedBy by) { return {contact_of(v.position), v.position, v.rule, by}; }
 
 }  // namespace
 
@@ -160,20 +148,6 @@ DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid&
       return {*v, c != DiscriminantCase::TwoPositive, DecidedBy::DiscriminantFilter};
   }
   return {decide_position(e, p), true, DecidedBy::FullClassifier};
-}
-
-Contact contact_of(const Verdict& v) {
-  switch (v.position) {
-    case Position::I:
-    case Position::E:
-      return Contact::None;
-    case Position::TI:
-    case Position::TE:
-      return Contact::Touching;
-    case Position::C:
-      return Contact::Crossing;
-  }
-  throw std::logic_error("internal error: contact_of: not a Position");
 }
 
 ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p) {
@@ -306,7 +280,6 @@ ExteriorTracker::FrameVerdict ExteriorTracker::finish(const Verdict& v, DecidedB
   FrameVerdict out;
   out.position = v.position;
   out.rule = v.rule;
-  out.contact = v.contact;
   out.by = by;
   out.changed = last_ && *last_ != out.position;
   last_ = out.position;

@@ -87,44 +87,41 @@ std::string to_string(Stage s) {
 namespace {
 
 /// The classification (math.md sections 3, 6 and 8), written once for every stage. Reads the root
-/// facts of v and its rho comparison; writes position, contact and rule. Leaves rule None (the
+/// facts of v and its rho comparison; writes position and rule. Leaves rule None (the
 /// position undecided) when the facts do not suffice: a pair that is not small with four real
 /// negative roots needs roots_above_lambda_s (section 8), and a multiple root outside the proven
 /// small-pair table needs the exact facts of section 8 (decide_any_size).
 void decide(Verdict& v) {
   v.small = v.rho_vs_one <= 0;
   const int tangencies = v.tangent_negative + v.tangent_positive;
-  auto set = [&](Position pos, int contact, Rule rule) {
+  auto set = [&](Position pos, Rule rule) {
     v.position = pos;
-    v.contact = static_cast<signed char>(contact);
     v.rule = rule;
   };
   v.rule = Rule::None;  // undecided until a rule is set (the position is then meaningless)
-  v.contact = -1;
   const bool square_free = tangencies == 0 && v.nonreal_multiple == 0 && v.sign_disc_f != 0;
   if (square_free) {
     // f has >= 2 real roots at or below lambda_s (section 8); the other two decide, for any size.
-    if (v.nonreal_roots == 2 && v.positive_roots == 0) return set(Position::C, 1, Rule::NonRealPairCrossing);
-    if (v.nonreal_roots == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
+    if (v.nonreal_roots == 2 && v.positive_roots == 0) return set(Position::C, Rule::NonRealPairCrossing);
+    if (v.nonreal_roots == 0 && v.positive_roots == 2) return set(Position::E, Rule::TwoPositiveRoots);
     if (v.nonreal_roots == 0 && v.positive_roots == 0) {
-      if (v.small) return set(Position::I, 0, Rule::AllRootsNegative);  // section 3, proven for small pairs
-      if (v.roots_above_lambda_s == 1) return set(Position::I, 0, Rule::RootsAboveLambdaS);
-      if (v.roots_above_lambda_s == 0) return set(Position::C, 1, Rule::NoRootAboveLambdaS);
+      if (v.small) return set(Position::I, Rule::AllRootsNegative);  // section 3, proven for small pairs
+      if (v.roots_above_lambda_s == 1) return set(Position::I, Rule::RootsAboveLambdaS);
+      if (v.roots_above_lambda_s == 0) return set(Position::C, Rule::NoRootAboveLambdaS);
     }
     return;  // undecided: the gap test, or a pattern the theorem excludes (decide_any_size reports it)
   }
   if (v.nonreal_multiple == 0 && v.nonreal_roots == 0) {  // any size (math.md section 6, Wang-Wang-Kim)
-    if (tangencies == 1 && v.tangent_positive == 1) return set(Position::TE, 1, Rule::PositiveMultipleRoot);
-    if (tangencies == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
+    if (tangencies == 1 && v.tangent_positive == 1) return set(Position::TE, Rule::PositiveMultipleRoot);
+    if (tangencies == 0 && v.positive_roots == 2) return set(Position::E, Rule::TwoPositiveRoots);
   }
   if (!v.small || v.nonreal_multiple > 0) return;  // section 8, exactly (decide_any_size)
   // Small pairs with a multiple root: the rest of the table of math.md section 3.
   if (tangencies == 0 && v.nonreal_roots == 2 && v.positive_roots == 0)
-    return set(Position::C, 1, Rule::NonRealPairCrossing);
+    return set(Position::C, Rule::NonRealPairCrossing);
   if (tangencies == 1 && v.tangent_negative == 1 && v.nonreal_roots == 0 && v.positive_roots == 0)
-    return set(Position::TI, 1, Rule::NegativeMultipleRoot);
-  if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 0)
-    return set(Position::I, 0, Rule::AllRootsNegative);
+    return set(Position::TI, Rule::NegativeMultipleRoot);
+  if (tangencies == 0 && v.nonreal_roots == 0 && v.positive_roots == 0) return set(Position::I, Rule::AllRootsNegative);
 }
 
 bool decided(const Verdict& v) { return v.rule != Rule::None; }
@@ -133,23 +130,22 @@ bool decided(const Verdict& v) { return v.rule != Rule::None; }
 /// roots): the five rules in order. Every valid pair gets one of the five positions.
 void decide_any_size(const Quartic<Integer>& f, const Quadratic<Integer>& s, Verdict& v) {
   const anysize::AnySizeFacts x = anysize::any_size_facts(anysize::to_poly(f.data(), 5), anysize::to_poly(s.data(), 3));
-  auto set = [&](Position pos, int contact, Rule rule) {
+  auto set = [&](Position pos, Rule rule) {
     v.position = pos;
-    v.contact = static_cast<signed char>(contact);
     v.rule = rule;
   };
   v.roots_above_lambda_s = static_cast<signed char>(x.odd_gap + x.even_gap > 0);
   switch (x.rule) {
     case 1:
-      return set(Position::E, 0, Rule::OddPositiveRoot);
+      return set(Position::E, Rule::OddPositiveRoot);
     case 2:
-      return set(Position::TE, 1, Rule::EvenPositiveRoot);
+      return set(Position::TE, Rule::EvenPositiveRoot);
     case 3:
-      return set(Position::I, 0, Rule::OddGapRoot);
+      return set(Position::I, Rule::OddGapRoot);
     case 4:
-      return set(Position::TI, 1, x.hard ? Rule::HardCase : Rule::EvenGapRoot);
+      return set(Position::TI, x.hard ? Rule::HardCase : Rule::EvenGapRoot);
     default:
-      return set(Position::C, 1, Rule::NoRootInGap);
+      return set(Position::C, Rule::NoRootInGap);
   }
 }
 

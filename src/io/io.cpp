@@ -668,7 +668,7 @@ void append_verdict_head(const Verdict& v, JsonWriter& w) {
   w.member("small");
   w.boolean(v.small);
   w.member("contact");
-  w.or_null(v.meets(), [&](bool meets) { w.boolean(meets); });
+  w.boolean(contact_of(v.position) != Contact::None);
 }
 
 void append_classification(const Classification& c, const RenderOptions& options, JsonWriter& w) {
@@ -810,7 +810,7 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
     small += compare;
   }
   line("small:", small);
-  line("contact:", c.verdict.meets() ? (*c.verdict.meets() ? "yes" : "no") : "undecided (not small)");
+  line("contact:", contact_of(c.verdict.position) != Contact::None ? "yes" : "no");
   line("stage:", to_string(c.verdict.stage) + " (" + stage_meaning(c.verdict.stage) + ")");
   if (c.has_full_evidence) line("proof:", certificate_text(c.certificate));
 

@@ -20,7 +20,6 @@ SceneVerdict scene_verdict(const Verdict& v) {
   SceneVerdict out;
   out.position = v.position;
   out.rule = v.rule;
-  out.contact = v.contact;
   out.stage = v.stage;
   return out;
 }
@@ -89,8 +88,8 @@ Rational times_power_of_two(const Rational& q, long k) {
   return out;
 }
 
-constexpr SceneVerdict kOutside{Position::E, Rule::TwoPositiveRoots, 0, Stage::OutsideCertificate};
-constexpr SceneVerdict kInsideSmall{Position::I, Rule::AllRootsNegative, 0, Stage::InsideCertificate};
+constexpr SceneVerdict kOutside{Position::E, Rule::TwoPositiveRoots, Stage::OutsideCertificate};
+constexpr SceneVerdict kInsideSmall{Position::I, Rule::AllRootsNegative, Stage::InsideCertificate};
 
 /// What an early-out proved, in one byte (an optional<SceneVerdict> return cost a store-forwarding
 /// stall per body).

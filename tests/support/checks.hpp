@@ -121,9 +121,6 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   CHECK(c.verdict.position == want);
   CHECK(c.verdict.small == x.small);
   CHECK(c.verdict.rho_vs_one == sgn(x.rho - 1));
-  if (x.truth_known && c.verdict.meets().has_value()) CHECK(*c.verdict.meets() == truth_has_contact(x.truth));
-  // Every valid pair gets one of I, TI, C, TE, E, whatever its size (math.md section 8), and contact.
-  REQUIRE(c.verdict.meets().has_value());
   CHECK(!c.rule_text().empty());
 
   REQUIRE(c.has_full_evidence);
@@ -200,19 +197,16 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
         CHECK(c.verdict.nonreal_roots == 0);
         CHECK(c.verdict.positive_roots == 0);
         CHECK(tangencies == 0);
-        CHECK(*c.verdict.meets() == false);
         break;
       case Position::TI:
         CHECK(c.verdict.nonreal_roots == 0);
         CHECK(c.verdict.positive_roots == 0);
         CHECK(tangencies == 1);
-        CHECK(*c.verdict.meets() == true);
         break;
       case Position::C:
         CHECK(c.verdict.nonreal_roots == 2);
         CHECK(c.verdict.positive_roots == 0);
         CHECK(tangencies == 0);
-        CHECK(*c.verdict.meets() == true);
         break;
       case Position::TE:
         CHECK(c.verdict.nonreal_roots == 0);
@@ -220,13 +214,11 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
         CHECK(tangencies == 1);
         for (const auto& r : c.roots)
           if (r.tangency()) CHECK(r.sign == 1);
-        CHECK(*c.verdict.meets() == true);
         break;
       case Position::E:
         CHECK(c.verdict.nonreal_roots == 0);
         CHECK(c.verdict.positive_roots == 2);
         CHECK(tangencies == 0);
-        CHECK(*c.verdict.meets() == false);
         break;
     }
   if (pattern == Position::TI) {
@@ -243,8 +235,6 @@ inline void check_same(const Classification& a, const Classification& b) {
   CHECK(a.verdict.position == b.verdict.position);
   CHECK(a.verdict.small == b.verdict.small);
   CHECK(a.verdict.rho_vs_one == b.verdict.rho_vs_one);
-  CHECK(a.verdict.meets().has_value() == b.verdict.meets().has_value());
-  if (a.verdict.meets() && b.verdict.meets()) CHECK(*a.verdict.meets() == *b.verdict.meets());
   CHECK(a.verdict.sign_disc_f == b.verdict.sign_disc_f);
   CHECK(a.verdict.sign_disc_ftilde == b.verdict.sign_disc_ftilde);
   CHECK(a.verdict.real_roots == b.verdict.real_roots);
