@@ -24,6 +24,7 @@
 
 #include "commands.hpp"
 #include "common.hpp"
+#include "io/batch.hpp"
 #include "options.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
@@ -179,7 +180,6 @@ int run_classify(Args& args) {
   try {
     const std::optional<relpos::Ellipsoid> e = shapes.make_ellipsoid();
     const std::optional<relpos::Paraboloid> p = shapes.make_paraboloid();
-    relpos::check_normalized_pair_size(*e, *p);  // doc/cli.md, Limits
     if (contact_only) {
       const Json j = relpos::io::contact_to_json(relpos::contact(*e, *p));
       if (json)

@@ -29,6 +29,7 @@
 
 #include "commands.hpp"
 #include "common.hpp"
+#include "io/batch.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 #include "scene/demo.hpp"

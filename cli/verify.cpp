@@ -17,7 +17,7 @@
 
 #include "commands.hpp"
 #include "common.hpp"
-#include "relpos/io.hpp"
+#include "io/batch.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"

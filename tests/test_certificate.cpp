@@ -8,6 +8,8 @@
 #include <relpos/io.hpp>
 #include <string>
 
+#include "certificate/verify.hpp"
+
 using relpos::Certificate;
 using relpos::Ellipsoid;
 using relpos::Matrix4;

@@ -30,7 +30,7 @@ nlohmann::ordered_json general_json(const std::string& text, bool doubles) {
 template <class Q>
 void check_storage(const Q& q) {
   const Matrix4& m = q.matrix();
-  const auto& enc = q.storage().enclosure();
+  const auto& enc = storage_of(q).enclosure();
   REQUIRE((q.doubles().has_value() || enc.has_value()));
   for (std::size_t k = 0; k < 16; ++k) {
     if (q.doubles()) {
@@ -146,7 +146,7 @@ TEST_CASE("fast reader: exact doubles stay doubles; decimals that are not get en
   const auto d = fast_ellipsoid(R"({"sphere":{"center":[0.1,0,0],"radius":1}})", false);
   REQUIRE(d);
   REQUIRE_FALSE(d->doubles());
-  REQUIRE(d->storage().enclosure());
+  REQUIRE(storage_of(*d).enclosure());
   REQUIRE(d->matrix()(0, 3) == relpos::Rational(-1, 10));  // built exactly from the text on demand
   // --numbers double: 0.1 is the nearest double, exactly.
   const auto n = fast_ellipsoid(R"({"sphere":{"center":[0.1,0,0],"radius":1}})", true);

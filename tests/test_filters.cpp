@@ -111,8 +111,8 @@ TEST_CASE("double filters: every certified sign is the exact sign (demo scene bo
   Tally t;
   for (int i = 0; i < 3000; ++i) {
     const Ellipsoid e = gen.next().ellipsoid();
-    if (!e.filter_doubles()) continue;
-    check_pair(*p.filter_doubles(), *e.filter_doubles(), t);
+    if (!storage_of(e).filter_doubles()) continue;
+    check_pair(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), t);
   }
   std::cout << "[filters] demo bodies: " << t.pairs << " pairs; all 13 signs certified by the static filter on "
             << t.static_all << ", by the semi-static filter on " << t.semi_all << "\n";
@@ -169,8 +169,8 @@ TEST_CASE("double filters on near-tangent and exactly tangent double inputs", "[
     if (g.chance(75)) z += (g.chance(50) ? 1 : -1) * pow_q(Q(2), -k);
     const Rational x = g.chance(50) ? Q(0) : Q(g.uniform(-8, 8), 64);
     const Ellipsoid e = Ellipsoid::sphere(V(x, Q(0), z), r);
-    if (!e.filter_doubles()) continue;
-    check_pair(*p.filter_doubles(), normalized(e.doubles()), t);
+    if (!storage_of(e).filter_doubles()) continue;
+    check_pair(*storage_of(p).filter_doubles(), normalized(e.doubles()), t);
   }
   CHECK(t.wrong == 0);
   CHECK(t.pairs > 300);
@@ -270,10 +270,10 @@ TEST_CASE("translated semi-static filter: every certified sign is the exact sign
     const Ellipsoid moved =
         ref.translated(V(relpos::exact_rational(d[0]), relpos::exact_rational(d[1]), relpos::exact_rational(d[2])));
     const auto q = exact_signs(p.matrix(), moved.matrix());
-    const auto got =
-        flatten(ref.filter_doubles()
-                    ? relpos::semi_static_filter_signs_translated(*p.filter_doubles(), *ref.filter_doubles(), d)
-                    : relpos::semi_static_filter_signs_translated(p.matrix(), ref.matrix(), d));
+    const auto got = flatten(storage_of(ref).filter_doubles()
+                                 ? relpos::semi_static_filter_signs_translated(*storage_of(p).filter_doubles(),
+                                                                               *storage_of(ref).filter_doubles(), d)
+                                 : relpos::semi_static_filter_signs_translated(p.matrix(), ref.matrix(), d));
     for (std::size_t i = 0; i < 13; ++i) {
       ++quantities;
       if (!CGAL::is_certain(got[i])) continue;

@@ -60,7 +60,7 @@ std::optional<Q> agree(const DoubleMatrix4& d) {
   if (!fast.value) return std::nullopt;
   CHECK(fast.value->matrix() == slow.value->matrix());
   CHECK(fast.value->doubles() == slow.value->doubles());
-  CHECK(fast.value->filter_doubles() == slow.value->filter_doubles());
+  CHECK(storage_of(*fast.value).filter_doubles() == storage_of(*slow.value).filter_doubles());
   return fast.value;
 }
 

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "motion/polynomial_motion.hpp"
 #include "motion/subresultant_position.hpp"
 #include "support/printers.hpp"
 

@@ -83,6 +83,8 @@ struct Verdict {
 };
 
 /// Adaptive exact verdict (static double filter, intervals, exact integers, exact roots).
+/// Throws InputError for a pair beyond the size limit (check_normalized_pair_size, quadric.hpp),
+/// as classify() and classify_exact() do.
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p);
 
 /// The classification table itself (math.md sections 3 and 6), applied to exact root facts and the

@@ -76,8 +76,8 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
 std::string polynomial_to_text(const Rational* coefficients, int size, const std::string& variable = "l");
 
 // ------------------------------------------------------------------------------------------------
-// Batch lines: the one reader of a JSON Lines input line, used by `relpos batch`, by `relpos scene`
-// and by the fuzzer (doc/cli.md, "relpos batch").
+// Batch lines: the answer to one JSON Lines input line, as `relpos batch` writes it (doc/cli.md,
+// "relpos batch"); its reader is internal (src/io/batch.hpp).
 
 /// Default longest input line (--max-line-bytes): 64 MiB.
 inline constexpr std::size_t kDefaultMaxLineBytes = std::size_t(64) << 20;
@@ -90,29 +90,6 @@ struct BatchOptions {
   RenderOptions render;
 };
 
-/// One input line, read: the id as the JSON text to echo, and the quadrics.
-struct BatchLine {
-  std::string id;  ///< the id's JSON text exactly as in the input, or the line number
-  std::optional<Ellipsoid> ellipsoid;
-  std::optional<Paraboloid> paraboloid;
-};
-
-/// "line too long: more than N bytes (--max-line-bytes)", the refusal of a line beyond the limit.
-std::string too_long_message(std::size_t max_line_bytes);
-
-/// The line without what every input format ignores: a UTF-8 byte order mark on line 1 and one
-/// trailing '\r'. Throws InputError for a line longer than max_line_bytes or holding a NUL byte
-/// (the message names the column).
-std::string_view normalize_line(std::string_view line, long line_number, std::size_t max_line_bytes);
-
-/// Read one JSON Lines line {"id", "ellipsoid", "paraboloid", "comment"} (with `fixed`, a scene line:
-/// {"id", "ellipsoid", "comment"}, and the size limit is checked against *fixed). The top-level
-/// object is scanned once: the id's text is kept, "comment" is validated without being stored,
-/// duplicate keys are refused. out.id is set (to the line number at first, to the id once it is
-/// read) before any InputError is thrown, so that errors echo the id.
-void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
-                     BatchLine& out);
-
 /// The one JSON output line (no newline) answering an input line of `relpos batch`: the
 /// classification or {"id": ..., "error": "..."}. Never throws (out of memory on the line is that
 /// line's error).
@@ -121,10 +98,6 @@ std::string answer_batch_line(std::string_view line, long line_number, const Bat
 /// The same line written into `out` (replacing its text, keeping its capacity: a caller answering
 /// many lines reuses its buffers).
 void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out);
-
-/// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced. Never throws std::bad_alloc
-/// beyond a fixed small message.
-std::string error_line(const std::string& id_text, const std::string& message);
 
 /// A JSON value as one line of text, invalid UTF-8 replaced by U+FFFD (the one JSON writer).
 std::string dump_json(const nlohmann::ordered_json& value);

@@ -111,8 +111,4 @@ std::optional<std::string> verify_certificate(const Ellipsoid& e, const Parabolo
 std::optional<std::string> verify_certificate(const Matrix4& e, const Matrix4& p, Position position,
                                               const Certificate& c);
 
-/// The exact sign (-1, 0, 1) of x.a + x.b sqrt(d), d >= 0 (the verifier's own Q(sqrt d) arithmetic,
-/// exposed for tests).
-int quadratic_sign(const QuadraticNumber& x, const Integer& d);
-
 }  // namespace relpos

@@ -353,7 +353,6 @@ PYBIND11_MODULE(_relpos, m) {
         std::string text;
         {
           py::gil_scoped_release release;
-          relpos::check_normalized_pair_size(e, p);  // the CLI's limit (doc/cli.md, Limits)
           const relpos::Classification c =
               relpos::classify(e, p, full ? relpos::Evidence::Full : relpos::Evidence::Minimal);
           text = relpos::io::classification_json_text(c);

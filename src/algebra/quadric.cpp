@@ -582,8 +582,8 @@ void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p) {
     const std::size_t bound = normalized_bits_bound(m);
     return bound <= kMaxNormalizedBits ? bound : normalized_bits(m);
   };
-  const std::size_t bits = std::max(e.storage().within_size_limit() ? 0 : bits_of(e.matrix()),
-                                    p.storage().within_size_limit() ? 0 : bits_of(p.matrix()));
+  const std::size_t bits = std::max(storage_of(e).within_size_limit() ? 0 : bits_of(e.matrix()),
+                                    storage_of(p).within_size_limit() ? 0 : bits_of(p.matrix()));
   if (bits > kMaxNormalizedBits)
     throw InputError(
         "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "

@@ -4,6 +4,8 @@
 // of Q(sqrt d) arithmetic of its own: no code of the classifier (pencil, Sturm sequences, roots,
 // filters) is used, so that a certificate checked here is evidence independent of the code that
 // produced it.
+#include "certificate/verify.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstddef>

@@ -138,9 +138,9 @@ ContactAnswer finish(const Verdict& v, DecidedBy by) { return {contact_of(v.posi
 }  // namespace
 
 DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p) {
-  if (e.filter_doubles() && p.filter_doubles() && rounding_to_nearest()) {
-    const DecisionSigns d =
-        static_filter_discriminant_signs_normalized(*p.filter_doubles(), *e.filter_doubles(), &needs_smallness);
+  if (storage_of(e).filter_doubles() && storage_of(p).filter_doubles() && rounding_to_nearest()) {
+    const DecisionSigns d = static_filter_discriminant_signs_normalized(
+        *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), &needs_smallness);
     const DiscriminantCase c = discriminant_case(d.quartic);
     std::optional<int> rho;
     if (discriminant_case_needs_rho(c)) rho = compare_rho_with_one(d.vertex, d.graeffe);
@@ -251,9 +251,10 @@ ExteriorTracker::FrameVerdict ExteriorTracker::update(const Ellipsoid& placed) {
   std::optional<Verdict> v;
   DecidedBy by = DecidedBy::FullClassifier;
   bool filter_tried = false;
-  if (placed.filter_doubles() && p_.filter_doubles() && rounding_to_nearest()) {
+  if (storage_of(placed).filter_doubles() && storage_of(p_).filter_doubles() && rounding_to_nearest()) {
     // f and Disc(f) only: smallness comes from the reference (frame_rho), never from the filter.
-    const DecisionSigns d = static_filter_discriminant_signs_normalized(*p_.filter_doubles(), *placed.filter_doubles());
+    const DecisionSigns d = static_filter_discriminant_signs_normalized(*storage_of(p_).filter_doubles(),
+                                                                        *storage_of(placed).filter_doubles());
     const DiscriminantCase c = discriminant_case(d.quartic);
     filter_tried = c != DiscriminantCase::Undecided;
     std::optional<int> rho;
@@ -293,10 +294,10 @@ ExteriorTracker::FrameVerdict ExteriorTracker::update(const std::array<double, 3
     // Every decision sign of the moved body, certified without forming it (exact-double bodies on the
     // SSE fast path, others on double enclosures); the discriminant case reads f and Disc(f), and rho
     // is the reference's exactly (same M, same det E).
-    const DecisionSigns d =
-        body_.filter_doubles() && p_.filter_doubles()
-            ? semi_static_filter_signs_translated(*p_.filter_doubles(), *body_.filter_doubles(), translation)
-            : semi_static_filter_signs_translated(p_.matrix(), body_.matrix(), translation);
+    const DecisionSigns d = storage_of(body_).filter_doubles() && storage_of(p_).filter_doubles()
+                                ? semi_static_filter_signs_translated(*storage_of(p_).filter_doubles(),
+                                                                      *storage_of(body_).filter_doubles(), translation)
+                                : semi_static_filter_signs_translated(p_.matrix(), body_.matrix(), translation);
     const DiscriminantCase c = discriminant_case(d.quartic);
     if (auto v = verdict_from_discriminant_case(c, rho_vs_one_)) {
       ++counts_.frames;

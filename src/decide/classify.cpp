@@ -16,6 +16,7 @@
 #include "anysize/exact.hpp"
 #include "anysize/gap.hpp"
 #include "certificate/build.hpp"
+#include "decide/unchecked.hpp"
 #include "filters/multiple_roots.hpp"
 #include "filters/pooled_integer.hpp"
 #include "filters/running_bound.hpp"
@@ -279,7 +280,7 @@ bool decide_from_witness(const DoubleMatrix4& p, const DoubleMatrix4& e, const D
 template <class Q>
 MatrixOf<Interval> interval_entries(const Q& q) {
   if (q.doubles()) return to_intervals(*q.doubles());
-  if (q.storage().enclosure()) return to_intervals(*q.storage().enclosure());
+  if (storage_of(q).enclosure()) return to_intervals(*storage_of(q).enclosure());
   return to_intervals(q.matrix());
 }
 
@@ -287,7 +288,7 @@ MatrixOf<Interval> interval_entries(const Q& q) {
 /// certified ones of its rationals (for a pair of which one quadric was read from text).
 template <class Q>
 detail::EnclosureMatrix4 enclosure_of(const Q& q) {
-  if (q.storage().enclosure()) return *q.storage().enclosure();
+  if (storage_of(q).enclosure()) return *storage_of(q).enclosure();
   detail::EnclosureMatrix4 out;
   if (q.doubles()) {
     out.lo = out.hi = *q.doubles();
@@ -338,8 +339,8 @@ void settle_gap(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdic
   std::optional<bool> g;
   Stage stage = v.stage;
   if (use_filter) {
-    if (rounding_to_nearest() && e.filter_doubles() && p.filter_doubles()) {
-      g = semi_static_roots_above_lambda_s(*p.filter_doubles(), *e.filter_doubles());
+    if (rounding_to_nearest() && storage_of(e).filter_doubles() && storage_of(p).filter_doubles()) {
+      g = semi_static_roots_above_lambda_s(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles());
       stage = std::max(stage, Stage::SemiStaticDouble);
     }
     if (!g) {
@@ -381,12 +382,14 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
     const bool nearest = rounding_to_nearest();
     if (e.doubles() && p.doubles()) {
       v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
-      const bool in_range = e.filter_doubles() && p.filter_doubles() && nearest;
-      if (in_range) d = static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles());
+      const bool in_range = storage_of(e).filter_doubles() && storage_of(p).filter_doubles() && nearest;
+      if (in_range)
+        d = static_filter_signs_normalized(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles());
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
       if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
         v.stage = Stage::SemiStaticDouble;
-        merge_certain(d, semi_static_filter_signs_normalized(*p.filter_doubles(), *e.filter_doubles()));
+        merge_certain(
+            d, semi_static_filter_signs_normalized(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles()));
         if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
       }
       const auto disc = detail::certain(d.quartic.g0);
@@ -396,7 +399,7 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
       }
     } else if (nearest) {  // stage 1' for other entries: double enclosures (stored, or of the rationals)
       v.stage = Stage::SemiStaticDouble;
-      if (p.storage().enclosure() || e.storage().enclosure())
+      if (storage_of(p).enclosure() || storage_of(e).enclosure())
         d = semi_static_filter_signs(enclosure_of(p), enclosure_of(e));
       else
         d = semi_static_filter_signs(p.matrix(), e.matrix());
@@ -555,16 +558,23 @@ std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs
 }
 
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p) {
+  check_normalized_pair_size(e, p);  // two flag tests for doubles and the fast reader's numbers
   std::optional<ExactData> exact;
   return run_stages(e, p, true, exact);
 }
 
 Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
+  check_normalized_pair_size(e, p);
   return classify_impl(e, p, evidence, true);
 }
 
 Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
+  check_normalized_pair_size(e, p);
   return classify_impl(e, p, evidence, false);
+}
+
+Classification detail::classify_unchecked(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
+  return classify_impl(e, p, evidence, true);
 }
 
 }  // namespace relpos

@@ -19,7 +19,7 @@
 namespace relpos {
 
 /// Certified signs of every decision quantity (as static_filter_signs) for matrices normalized by
-/// power_of_two_normalized() (Ellipsoid::filter_doubles(), Paraboloid::filter_doubles()).
+/// power_of_two_normalized() (storage_of(quadric).filter_doubles(), quadric.hpp).
 /// Uncertain where the running bound does not separate a value from zero. Requires the rounding
 /// mode to be round-to-nearest (the caller checks it).
 DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e);

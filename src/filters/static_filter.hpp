@@ -24,7 +24,7 @@ namespace relpos {
 DecisionSigns static_filter_signs(const DoubleMatrix4& p, const DoubleMatrix4& e);
 
 /// The same for matrices already normalized by power_of_two_normalized() (quadric.hpp), e.g.
-/// Ellipsoid::filter_doubles(): the hot path of classify().
+/// storage_of(ellipsoid).filter_doubles(): the hot path of classify().
 DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e);
 
 /// Only what the discriminant decision of contact.hpp reads: the signs of f's coefficients and of

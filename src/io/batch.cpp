@@ -5,6 +5,8 @@
 // validated by a SAX pass that stores nothing. The two quadrics are read by the fast reader
 // (fast_quadric.hpp: common forms, short numbers, straight to double enclosures) or else parsed
 // into (small, bounded) DOMs by the general reader, which words every error.
+#include "io/batch.hpp"
+
 #include <new>
 #include <string>
 #include <string_view>

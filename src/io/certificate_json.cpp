@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "certificate/verify.hpp"
 #include "io/json_write.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"

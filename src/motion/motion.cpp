@@ -17,7 +17,9 @@
 #include "algebra/roots.hpp"
 #include "algebra/smallness.hpp"
 #include "algebra/sturm.hpp"
+#include "decide/unchecked.hpp"
 #include "motion/instant_position.hpp"
+#include "motion/polynomial_motion.hpp"
 #include "motion/subresultant_position.hpp"
 #include "relpos/error.hpp"
 
@@ -427,7 +429,7 @@ void check_closure(Position at, const std::optional<Position>& before, const std
 }
 
 Classification classify_at(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p, const Rational& t) {
-  return classify(placed_ellipsoid(e0, m, t), p, Evidence::Minimal);
+  return detail::classify_unchecked(placed_ellipsoid(e0, m, t), p, Evidence::Minimal);
 }
 
 std::string classify_how(const Classification& c) {

@@ -1,3 +1,5 @@
+#include "motion/polynomial_motion.hpp"
+
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Polynomial.h>
 #include <CGAL/Polynomial_traits_d.h>

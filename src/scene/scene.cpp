@@ -274,7 +274,7 @@ double scale_for(double mx) {
       // Exact unless it underflowed; then the true value is within a subnormal step of y.
       return y * inv == v ? RB(y) : RB::enclosing(y - 0x1p-1074, y + 0x1p-1074);
     });
-  } else if (const auto& enc = e.storage().enclosure()) {  // read from text: the stored enclosures
+  } else if (const auto& enc = storage_of(e).enclosure()) {  // read from text: the stored enclosures
     const auto point = [&](std::size_t i) { return enc->lo[i] == enc->hi[i]; };
     sphere = point(0) && point(1) && point(2) && point(5) && point(6) && point(10) && enc->lo[1] == 0 &&
              enc->lo[2] == 0 && enc->lo[6] == 0 && enc->lo[0] == enc->lo[5] && enc->lo[0] == enc->lo[10];

@@ -1,0 +1,42 @@
+// The pieces of a batch line (internal): the reader shared by `relpos batch`, the JSON Lines input of
+// `relpos scene`, `relpos verify` and the fuzzer, and the error line they write.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "relpos/io.hpp"
+#include "relpos/quadric.hpp"
+
+namespace relpos::io {
+
+/// One input line, read: the id as the JSON text to echo, and the quadrics.
+struct BatchLine {
+  std::string id;  ///< the id's JSON text exactly as in the input, or the line number
+  std::optional<Ellipsoid> ellipsoid;
+  std::optional<Paraboloid> paraboloid;
+};
+
+/// "line too long: more than N bytes (--max-line-bytes)", the refusal of a line beyond the limit.
+std::string too_long_message(std::size_t max_line_bytes);
+
+/// The line without what every input format ignores: a UTF-8 byte order mark on line 1 and one
+/// trailing '\r'. Throws InputError for a line longer than max_line_bytes or holding a NUL byte
+/// (the message names the column).
+std::string_view normalize_line(std::string_view line, long line_number, std::size_t max_line_bytes);
+
+/// Read one JSON Lines line {"id", "ellipsoid", "paraboloid", "comment"} (with `fixed`, a scene line:
+/// {"id", "ellipsoid", "comment"}, and the size limit is checked against *fixed). The top-level
+/// object is scanned once: the id's text is kept, "comment" is validated without being stored,
+/// duplicate keys are refused. out.id is set (to the line number at first, to the id once it is
+/// read) before any InputError is thrown, so that errors echo the id.
+void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
+                     BatchLine& out);
+
+/// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced. Never throws std::bad_alloc
+/// beyond a fixed small message.
+std::string error_line(const std::string& id_text, const std::string& message);
+
+}  // namespace relpos::io
