@@ -1,15 +1,12 @@
 // Shared by the commands of the relpos CLI: exit codes, usage errors, input lines and output.
 #pragma once
 
-#include <atomic>
-#include <condition_variable>
 #include <cstddef>
-#include <functional>
-#include <mutex>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <vector>
+
+#include "base/worker_pool.hpp"
 
 namespace relpos_cli {
 
@@ -58,35 +55,8 @@ class Output {
   int error_ = 0;
 };
 
-/// Worker threads kept for a whole command: batch answers its input in short chunks (so that
-/// interactive use is answered at once), and starting threads for each chunk cost more than the
-/// work of a short one. The calling thread works too.
-class WorkerPool {
- public:
-  explicit WorkerPool(unsigned threads);  ///< threads - 1 workers (none for 1)
-  ~WorkerPool();
-  WorkerPool(const WorkerPool&) = delete;
-  WorkerPool& operator=(const WorkerPool&) = delete;
-  unsigned threads() const { return static_cast<unsigned>(workers_.size()) + 1; }
-  /// f(i) for every i in [0, n), each index once, on every thread (dynamic: items differ in cost);
-  /// returns when all are done. f must not throw.
-  void run(std::size_t n, const std::function<void(std::size_t)>& f);
-
- private:
-  void work();
-  void drain();
-  std::vector<std::thread> workers_;
-  std::mutex mutex_;
-  std::condition_variable start_, done_;
-  // Every worker takes part in every round and run() waits for all of them, so no worker can act
-  // on a round that has ended (task_ and size_ are written under the mutex before the round starts).
-  const std::function<void(std::size_t)>* task_ = nullptr;
-  std::size_t size_ = 0;
-  std::atomic<std::size_t> next_{0};
-  unsigned long generation_ = 0;
-  std::size_t finished_ = 0;
-  bool stop_ = false;
-};
+/// The library's worker pool (src/base/worker_pool.hpp): batch answers its chunks on it.
+using WorkerPool = relpos::detail::WorkerPool;
 
 /// Flush std::cout; on failure print the one write-failure message and return kExitIo.
 int finish_cout();

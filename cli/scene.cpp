@@ -202,19 +202,6 @@ void parse_line(const std::string& line, Format format, const relpos::io::BatchO
   if (!out.error.empty()) out.body.reset();
 }
 
-/// Run f(i) for i in [0, n) on `threads` threads (static split; parsing costs about the same per line).
-template <class F>
-void parallel_for(std::size_t n, unsigned threads, F f) {
-  threads = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, n / 64 + 1)));
-  std::vector<std::thread> pool;
-  auto part = [&](unsigned w) {
-    for (std::size_t i = n * w / threads; i < n * (w + 1) / threads; ++i) f(i);
-  };
-  for (unsigned w = 1; w < threads; ++w) pool.emplace_back(part, w);
-  part(0);
-  for (auto& t : pool) t.join();
-}
-
 // ------------------------------------------------------------------------------------------------
 // Progress bar (stderr, only when it is a terminal)
 
@@ -401,6 +388,7 @@ int run_scene(Args& args) {
   std::vector<std::string> lines;
   std::vector<Parsed> parsed;
   std::string out;
+  relpos_cli::WorkerPool parse_pool(threads);
   // Blocks of lines are parsed and classified on the threads and written in input order as soon as
   // they are answered; a block ends early when the input has nothing more ready.
   for (bool more = true; more;) {
@@ -433,7 +421,7 @@ int run_scene(Args& args) {
       lines.push_back(status == relpos_cli::LineReader::Status::Line ? std::move(line) : std::string());
     }
     if (lines.empty()) break;
-    parallel_for(lines.size(), threads, [&](std::size_t i) {
+    parse_pool.run(lines.size(), [&](std::size_t i) {
       if (parsed[i].error.empty()) parse_line(lines[i], format, options_line, *p, parsed[i]);
       bar.counter().fetch_add(1, std::memory_order_relaxed);  // progress: one unit when read...
     });

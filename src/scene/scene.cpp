@@ -11,6 +11,7 @@
 
 #include "algebra/pencil.hpp"
 #include "algebra/smallness.hpp"
+#include "base/worker_pool.hpp"
 #include "filters/running_bound.hpp"
 #include "scene/certificates.hpp"
 
@@ -393,17 +394,7 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
     counts[w] = local;
   };
 
-  std::vector<std::thread> pool;
-  pool.reserve(threads - 1);
-  try {
-    for (unsigned w = 1; w < threads; ++w) pool.emplace_back(work, w);
-  } catch (...) {  // could not start a thread: stop, join what runs, report
-    next.store(chunks, std::memory_order_relaxed);
-    for (auto& t : pool) t.join();
-    throw;
-  }
-  work(0);
-  for (auto& t : pool) t.join();
+  detail::WorkerPool(threads).run_on_each(work);  // a thread that cannot start throws here, before any work
   for (const auto& err : errors)
     if (err) std::rethrow_exception(err);
   for (const auto& c : counts) result.counts.merge(c);
