@@ -221,4 +221,10 @@ TEST_CASE("The size limit reads each matrix divided by its own content", "[error
   const Ellipsoid e2s = Ellipsoid::from_matrix(e2);
   CHECK(relpos::normalized_pair_bits(e2s, ps) > relpos::kMaxNormalizedBits);
   CHECK_THROWS_WITH(relpos::check_normalized_pair_size(e2s, ps), Contains("kMaxNormalizedBits"));
+  // The library's entry points enforce it themselves (a C++ caller gets the CLI's limit) ...
+  CHECK_THROWS_WITH(relpos::classify(e2s, ps), Contains("kMaxNormalizedBits"));
+  CHECK_THROWS_WITH(relpos::classify_exact(e2s, ps, relpos::Evidence::Minimal), Contains("kMaxNormalizedBits"));
+  CHECK_THROWS_WITH(relpos::decide_position(e2s, ps), Contains("kMaxNormalizedBits"));
+  // ... and answer the independently rescaled pair, whose own forms are tiny.
+  CHECK(relpos::decide_position(es, ps).position == relpos::classify_exact(es, ps).verdict.position);
 }
