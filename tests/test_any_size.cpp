@@ -1,10 +1,10 @@
-// Any size (math.md section 8, issue 11): a corpus of pairs whose position is known by construction
+// Any size (math.md §8): a corpus of pairs whose position is known by construction
 // (support/large_cases.hpp), judged by an independent exact second method (support/secular.hpp), by dense
 // sampling (a check of the constructions themselves), and finally by relpos::classify / classify_exact.
 //
 // The seed of the random parts is printed; RELPOS_SEED=<n> reruns or varies it.
-// Tags: [secular] [sampling] are fast; [anysize] runs the classifier (fails until section 8 is implemented in
-// classify) and includes the 2000 random pairs ([random], a few seconds in Release).
+// Tags: [secular] [sampling] are fast; [anysize] runs the classifier and includes the 2000 random
+// pairs ([random], a few seconds in Release).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -246,7 +246,7 @@ TEST_CASE("sampling agrees with the constructed answer", "[sampling]") {
       ++contact_checks;
     }
   }
-  // math.md section 3's C and E examples also have exact certificates (test_classify_constructed).
+  // math.md §3's C and E examples also have exact certificates (test_classify_constructed).
   std::cout << "test_any_size: sampled " << base.size() << " base cases x 20000 points, " << contact_checks
             << " exact contact points" << std::endl;
 }

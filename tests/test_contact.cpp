@@ -137,7 +137,7 @@ TEST_CASE("the discriminant case on exact signs reproduces classify_exact", "[co
     ++decided;
     const auto v = relpos::verdict_from_discriminant_case(dc, x.verdict.rho_vs_one);
     // The case alone may decline a pair that is not small with four real roots (I or C by math.md
-    // section 8 needs the roots' location relative to lambda_s); whatever it answers is classify's.
+    // §8 needs the roots' location relative to lambda_s); whatever it answers is classify's.
     if (!v) {
       CHECK(x.verdict.rho_vs_one > 0);
       CHECK(dc == DiscriminantCase::AllNegative);
@@ -204,7 +204,7 @@ TEST_CASE("the paper's discriminant tracker is wrong twice; relpos is not", "[co
     Contact contact;
   };
   const std::vector<Case> cases = {
-      // -b^2 = -4 is a double root of f that is not a tangency (math.md section 3).
+      // -b^2 = -4 is a double root of f that is not a tangency (math.md §3).
       {"C with Disc = 0", V(Q(1), Q(0), Q(131, 192)), Position::C, Contact::Crossing},
       {"E with Disc = 0", V(Q(6, 5), Q(0), Q(857, 1600)), Position::E, Contact::None},
       // A body that crossed all the way in: Disc > 0, like E.
@@ -278,7 +278,7 @@ TEST_CASE("contact beyond smallness", "[contact][large]") {
   const Paraboloid p = Paraboloid::from_matrix(paraboloid_matrix(Q(1), Q(1)));
   // rho = 4 r^2 / a^4 = 16 > 1 for r = 2.
   const Rational r(2);
-  {  // Deep inside: I for any size (math.md section 8), and the containment certificate agrees.
+  {  // Deep inside: I for any size (math.md §8), and the containment certificate agrees.
     const Ellipsoid e = Ellipsoid::from_matrix(sphere_matrix(V(Q(0), Q(0), Q(100)), r));
     const Verdict v = relpos::decide_position(e, p);
     CHECK(v.position == Position::I);
@@ -286,7 +286,7 @@ TEST_CASE("contact beyond smallness", "[contact][large]") {
     CHECK(v.meets() == std::optional<bool>(false));
     const ContactAnswer c = relpos::contact(e, p);
     CHECK(c.contact == Contact::None);
-    // Not small with four negative roots: the gap test of section 8 runs in the classifier (the
+    // Not small with four negative roots: the gap test of math.md §8 runs in the classifier (the
     // discriminant-only path declines), so the full classifier decides.
     CHECK(c.by == DecidedBy::FullClassifier);
     const ContactAnswer s = relpos::ContactChecker(p).contact(e);
@@ -377,7 +377,7 @@ TEST_CASE("tracker equals decide_position at every frame of translated paths", "
     }
     INFO("filter " << tr.counts().by_filter << " of " << tr.counts().frames);
     if (dyadic) {  // exact doubles: most frames by the discriminant alone (frames of a body that is
-      // not small with four negative roots need section 8's gap test: the full classifier)
+      // not small with four negative roots need math.md §8's gap test: the full classifier)
       frames += tr.counts().frames;
       by_filter += tr.counts().by_filter;
       CHECK(tr.counts().by_filter * 10 > tr.counts().frames * 6);
@@ -419,8 +419,8 @@ TEST_CASE("tracker: frames that are not translates still get the right answer", 
   const Ellipsoid big = Ellipsoid::sphere(V(Q(0), Q(0), Q(8)), Q(2));
   const auto fr = tr.update(big);
   CHECK(fr.position == relpos::decide_position(big, p).position);
-  CHECK(fr.position == Position::I);          // not small, yet decided (math.md section 8)
-  CHECK(fr.by == DecidedBy::FullClassifier);  // the gap test of section 8 is the classifier's
+  CHECK(fr.position == Position::I);          // not small, yet decided (math.md §8)
+  CHECK(fr.by == DecidedBy::FullClassifier);  // the gap test of math.md §8 is the classifier's
   CHECK(tr.counts().rho_recomputed == 1);
   // A different shape block (ellipsoid) crossing the wall.
   const Ellipsoid ell = Ellipsoid::from_axes(V(Q(1), Q(0), Q(1)), V(Q(1, 4), Q(1, 8), Q(1, 8)),
@@ -568,5 +568,5 @@ TEST_CASE("tracker update(translation) equals decide_position on the moved body"
   INFO("by filter " << by_filter << " of " << frames);
   CHECK(tangent_frames >= 2);           // the sphere's path hits TE and TI exactly
   CHECK(by_filter * 10 >= frames * 8);  // the translated filter decides the generic frames (not the
-                                        // not-small interior ones: section 8's gap test)
+                                        // not-small interior ones: math.md §8's gap test)
 }

@@ -1,5 +1,5 @@
 // Every input that is not an ellipsoid / elliptic paraboloid pair gets relpos::InputError with a
-// message that names what was found (math.md section 1).
+// message that names what was found (math.md §1).
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>

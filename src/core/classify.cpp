@@ -57,23 +57,23 @@ std::string describe(Rule r) {
       return "f has two distinct positive roots (0 < lambda3 < lambda4): separated";
     case Rule::RootsAboveLambdaS:
       return "f is square-free with four real negative roots, two of them in (lambda_s, 0): interior (any size, "
-             "math.md section 8)";
+             "math.md §8)";
     case Rule::NoRootAboveLambdaS:
       return "f is square-free with four real roots, none above lambda_s (the root of s nearest 0) and none "
-             "positive: crossing (any size, math.md section 8)";
+             "positive: crossing (any size, math.md §8)";
     case Rule::OddPositiveRoot:
-      return "f has a positive root of odd multiplicity: separated (math.md section 8, rule 1)";
+      return "f has a positive root of odd multiplicity: separated (math.md §8, rule 1)";
     case Rule::EvenPositiveRoot:
-      return "f has a positive root, of even multiplicity: tangent from outside (math.md section 8, rule 2)";
+      return "f has a positive root, of even multiplicity: tangent from outside (math.md §8, rule 2)";
     case Rule::OddGapRoot:
-      return "f has a root of odd multiplicity in (lambda_s, 0): interior (math.md section 8, rule 3)";
+      return "f has a root of odd multiplicity in (lambda_s, 0): interior (math.md §8, rule 3)";
     case Rule::EvenGapRoot:
-      return "f~ has a multiple root in (lambda_s, 0): tangent from inside (math.md section 8, rule 4)";
+      return "f~ has a multiple root in (lambda_s, 0): tangent from inside (math.md §8, rule 4)";
     case Rule::HardCase:
       return "f~ vanishes at lambda_s, the root of s nearest 0: tangent from inside along two points or a conic "
-             "(the hard case, math.md section 8, rule 4)";
+             "(the hard case, math.md §8, rule 4)";
     case Rule::NoRootInGap:
-      return "no positive root and no root of f~ in [lambda_s, 0): crossing (math.md section 8, rule 5)";
+      return "no positive root and no root of f~ in [lambda_s, 0): crossing (math.md §8, rule 5)";
   }
   return "";
 }
@@ -102,11 +102,11 @@ std::string to_string(Stage s) {
 
 namespace {
 
-/// The classification (math.md sections 3, 6 and 8), written once for every stage. Reads the root
+/// The classification (math.md §3, §6 and §8), written once for every stage. Reads the root
 /// facts of v and its rho comparison; writes position, contact and rule. Leaves rule None (the
 /// position undecided) when the facts do not suffice: a pair that is not small with four real
-/// negative roots needs roots_above_lambda_s (section 8), and a multiple root outside the proven
-/// small-pair table needs the exact facts of section 8 (decide_any_size).
+/// negative roots needs roots_above_lambda_s (math.md §8), and a multiple root outside the proven
+/// small-pair table needs the exact facts of math.md §8 (decide_any_size).
 void decide(Verdict& v) {
   v.small = v.rho_vs_one <= 0;
   const int tangencies = v.tangent_negative + v.tangent_positive;
@@ -119,22 +119,22 @@ void decide(Verdict& v) {
   v.contact = -1;
   const bool square_free = tangencies == 0 && v.nonreal_multiple == 0 && v.sign_disc_f != 0;
   if (square_free) {
-    // f has >= 2 real roots at or below lambda_s (section 8); the other two decide, for any size.
+    // f has >= 2 real roots at or below lambda_s (math.md §8); the other two decide, for any size.
     if (v.nonreal_roots == 2 && v.positive_roots == 0) return set(Position::C, 1, Rule::NonRealPairCrossing);
     if (v.nonreal_roots == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
     if (v.nonreal_roots == 0 && v.positive_roots == 0) {
-      if (v.small) return set(Position::I, 0, Rule::AllRootsNegative);  // section 3, proven for small pairs
+      if (v.small) return set(Position::I, 0, Rule::AllRootsNegative);  // math.md §3, proven for small pairs
       if (v.roots_above_lambda_s == 1) return set(Position::I, 0, Rule::RootsAboveLambdaS);
       if (v.roots_above_lambda_s == 0) return set(Position::C, 1, Rule::NoRootAboveLambdaS);
     }
     return;  // undecided: the gap test, or a pattern the theorem excludes (decide_any_size reports it)
   }
-  if (v.nonreal_multiple == 0 && v.nonreal_roots == 0) {  // any size (math.md section 6, Wang-Wang-Kim)
+  if (v.nonreal_multiple == 0 && v.nonreal_roots == 0) {  // any size (math.md §6, Wang-Wang-Kim)
     if (tangencies == 1 && v.tangent_positive == 1) return set(Position::TE, 1, Rule::PositiveMultipleRoot);
     if (tangencies == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
   }
-  if (!v.small || v.nonreal_multiple > 0) return;  // section 8, exactly (decide_any_size)
-  // Small pairs with a multiple root: the rest of the table of math.md section 3.
+  if (!v.small || v.nonreal_multiple > 0) return;  // math.md §8, exactly (decide_any_size)
+  // Small pairs with a multiple root: the rest of the table of math.md §3.
   if (tangencies == 0 && v.nonreal_roots == 2 && v.positive_roots == 0)
     return set(Position::C, 1, Rule::NonRealPairCrossing);
   if (tangencies == 1 && v.tangent_negative == 1 && v.nonreal_roots == 0 && v.positive_roots == 0)
@@ -382,7 +382,7 @@ void settle_gap(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdic
 }
 
 /// A stage certified the root counts: finish the decision (the gap test when it is needed). False
-/// when the exact facts of section 8 are needed (multiple roots outside the small-pair table).
+/// when the exact facts of math.md §8 are needed (multiple roots outside the small-pair table).
 bool finish(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v, std::optional<ExactData>& exact) {
   if (decided(v)) return true;
   if (!needs_gap(v)) return false;
@@ -462,7 +462,7 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   }
   decide_from_facts(x, *compare_rho_with_one(exact->f, exact->s), v);  // exact: certain
   if (!decided(v) && needs_gap(v)) settle_gap(e, p, false, v, exact);
-  if (!decided(v)) decide_any_size(fi, si, v);  // math.md section 8: every pair gets an answer
+  if (!decided(v)) decide_any_size(fi, si, v);  // math.md §8: every pair gets an answer
   return v;
 }
 

@@ -100,7 +100,7 @@ MatZ integer_matrix(const Matrix4& p) {
 }
 
 /// The pencil of the moving pair with coefficients in Z[t] and the polynomials in t that decide
-/// (math.md "Motion"). f = det(l P + E(t)) and s = det(l A + M(t)) up to positive factors.
+/// (math.md §7). f = det(l P + E(t)) and s = det(l A + M(t)) up to positive factors.
 struct MovingPencil {
   Quartic<PolyZ> f;
   Quadratic<PolyZ> s;
@@ -149,7 +149,7 @@ struct MovingPencil {
       merge = disc;
       events.emplace_back(disc, kCauseDiscriminant);
       // For a body that is not small the position also changes where a root of f crosses lambda_s
-      // (math.md sections 7 and 8): the real zeros of Res_l(f^, s), f^ = f / gcd(f, s) over Q(t).
+      // (math.md §7 and §8): the real zeros of Res_l(f^, s), f^ = f / gcd(f, s) over Q(t).
       const BiZ bf(f.begin(), f.end()), bs(s.begin(), s.end());
       const BiZ fhat = CGAL::integral_division_up_to_constant_factor(bf, CGAL::gcd_up_to_constant_factor(bf, bs));
       if (fhat.degree() >= 1) {
@@ -171,7 +171,7 @@ struct MovingPencil {
       if (!CGAL::is_zero(ds)) events.emplace_back(ds, kCauseSpecialRoot);
     }
     // For a pure translation s and det E are constant, so both quantities are constants: rho does
-    // not change (math.md "Motion"). A rotation can change it.
+    // not change (math.md §7). A rotation can change it.
     events.emplace_back(vertex, kCauseSmallness);
     events.emplace_back(graeffe, kCauseSmallness);
   }
@@ -460,7 +460,7 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
     return out;
   }
   // Separation (two distinct positive roots) is open and is decided for any size; it can only end
-  // where two roots of f meet, i.e. at a real zero of `merge` (math.md "Motion").
+  // where two roots of f meet, i.e. at a real zero of `merge` (math.md §7).
   const MovingPencil mp(e0, motion, p);
   AK ak;
   std::vector<Candidate> zeros;

@@ -26,7 +26,7 @@ TimePolynomial from_poly(const PolyQ& p) {
   return out;
 }
 
-/// The 4x4 matrix K = N T^-1 = [[Q^T, N p - Q^T (p + c)], [0, N]] (math.md "Motion"), over NT.
+/// The 4x4 matrix K = N T^-1 = [[Q^T, N p - Q^T (p + c)], [0, N]] (math.md §7), over NT.
 /// `q` empty means no rotation (Q = I, N = 1).
 template <class NT>
 std::array<NT, 16> scaled_inverse(const std::array<NT, 4>* q, const std::array<NT, 3>& c, const std::array<NT, 3>& p) {

@@ -1,4 +1,4 @@
-// The certificate polynomials of the scene early-outs (math.md "Scenes").
+// The certificate polynomials of the scene early-outs (math.md §13).
 //
 // P(x) on the ellipsoid (x - c)^T M (x - c) <= k is bounded through P(c + d) = P(c) + g.d + d^T A d
 // (g = grad P(c)): max g.d = sqrt(k g^T M^-1 g), 0 <= d^T A d <= k * mu_max with mu_max the largest
