@@ -540,7 +540,7 @@ int main(int argc, char** argv) {
     const Row* ad_b = find("b", "adaptive");
     std::ofstream js(out_dir + "/summary.json");
     js << "{\n  \"seed\": " << seed << ",\n";
-    // The bars of issue 3 are per-pair medians, naive and adaptive timed back to back on each pair;
+    // The targets are per-pair medians, naive and adaptive timed back to back on each pair;
     // the per-method medians (measured minutes apart) and batch means are reported alongside.
     const double ratio_a = paired_a.second / paired_a.first;
     js << "  \"adaptive_over_naive_double_family_a\": " << fmt(ratio_a) << ",\n";

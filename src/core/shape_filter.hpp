@@ -1,4 +1,4 @@
-// The shape of a quadric given as 16 finite doubles, decided as a filtered predicate (issue 12):
+// The shape of a quadric given as 16 finite doubles, decided as a filtered predicate:
 // interval arithmetic certifies the signs of the minors that classify_quadric reads exactly, and the
 // one exact zero a paraboloid needs (det Q3 = 0) is tested on floating-point expansions (Shewchuk:
 // error-free products and sums), so the whole test runs without GMP and without heap allocation.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Input, output and limits of the relpos CLI (issues 14, 15, 12; doc/cli.md): ids echoed byte for byte,
+"""Input, output and limits of the relpos CLI (doc/cli.md): ids echoed byte for byte,
 duplicate keys, BOM/CRLF/NUL/trailing separators alike in JSON Lines and CSV, bounded memory per line,
 allocation failure on one line, write failures and closed pipes, the same message and exit code from
 every command, scene and batch agreeing line by line, motion limits, batch options.
