@@ -24,7 +24,7 @@
 
 #include <string>
 
-#include "core/roots.hpp"
+#include "algebra/roots.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/quadric.hpp"
 

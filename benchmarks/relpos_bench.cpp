@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
-#include "core/pencil.hpp"
-#include "core/smallness.hpp"
-#include "core/sturm.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/smallness.hpp"
+#include "algebra/sturm.hpp"
 #include "flint_reference.hpp"
 #include "float_baseline.hpp"
 #include "relpos/classify.hpp"

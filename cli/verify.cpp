@@ -1,5 +1,5 @@
 // relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]: checks every certificate of a `relpos batch`
-// output against its input with the independent verifier (include/relpos/classify.hpp, "Certificates").
+// output against its input with the independent verifier (include/relpos/position.hpp).
 //
 // Line N of ANSWERS answers line N of INPUT. An answer with "error" is skipped when its input line is
 // not a valid pair, and counted as unanswered when it is. Prints `line N: <reason>` per failure

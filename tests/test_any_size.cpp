@@ -260,7 +260,7 @@ int count_classifier_failures(const std::vector<LargeCase>& cases, bool exact) {
     const auto cl = exact ? relpos::classify_exact(c.e, c.p) : relpos::classify(c.e, c.p);
     ++got_hist[relpos::to_string(cl.verdict.position)];
     if (cl.verdict.position == c.expected) {
-      // Every answer's certificate verifies with rational arithmetic alone (classify.hpp, "Certificates").
+      // Every answer's certificate verifies with rational arithmetic alone (position.hpp).
       const auto why = relpos::verify_certificate(c.e, c.p, cl.verdict.position, cl.certificate);
       if (why) {
         ++failures;

@@ -10,8 +10,8 @@
 #include <relpos/scene.hpp>
 #include <vector>
 
+#include "algebra/smallness.hpp"
 #include "contact/discriminant_case.hpp"
-#include "core/smallness.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 #include "support/secular.hpp"

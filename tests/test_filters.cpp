@@ -10,8 +10,8 @@
 #include <relpos/classify.hpp>
 #include <relpos/scene.hpp>
 
+#include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
-#include "core/smallness.hpp"
 #include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"
 #include "scene/certificates.hpp"

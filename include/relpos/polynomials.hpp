@@ -1,7 +1,7 @@
 // The plain data types of the public API that describe polynomials and their roots: coefficient
 // arrays of the quartic f and the quadratic s (math.md §2), one certified real root, and the
 // root facts the classification table reads (math.md §3 and §6). The algorithms that compute
-// them are private (src/core/pencil.hpp, src/core/roots.hpp).
+// them are private (src/algebra/pencil.hpp, src/algebra/roots.hpp).
 #pragma once
 
 #include <array>

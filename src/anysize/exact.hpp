@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/pencil.hpp"
+#include "algebra/pencil.hpp"
 #include "relpos/numbers.hpp"
 
 namespace relpos::anysize {

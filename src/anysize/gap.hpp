@@ -20,8 +20,8 @@
 
 #include <optional>
 
-#include "core/pencil.hpp"
-#include "core/sturm.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/sturm.hpp"
 
 namespace relpos::anysize {
 

@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algebra/forms.hpp"
+#include "algebra/pencil.hpp"
 #include "anysize/exact.hpp"
-#include "core/pencil.hpp"
-#include "forms/forms.hpp"
 
 namespace relpos::certificate {
 namespace {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "algebra/rounding.hpp"
+#include "algebra/smallness.hpp"
 #include "contact/discriminant_case.hpp"
-#include "core/smallness.hpp"
-#include "filters/rounding.hpp"
 #include "filters/running_bound.hpp"
 #include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"

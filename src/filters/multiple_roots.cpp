@@ -1,12 +1,12 @@
 #include "filters/multiple_roots.hpp"
-#include "forms/forms.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
-#include "core/small_factor.hpp"
+#include "algebra/forms.hpp"
+#include "algebra/small_factor.hpp"
 
 namespace relpos {
 namespace {

@@ -22,8 +22,8 @@
 
 #include <optional>
 
-#include "core/pencil.hpp"
-#include "core/roots.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/roots.hpp"
 #include "filters/checked_int.hpp"
 #include "relpos/quadric.hpp"
 

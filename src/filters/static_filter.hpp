@@ -14,17 +14,10 @@
 // uncertain for the interval and exact stages. Compile with -frounding-math and no FP contraction.
 #pragma once
 
-#include "core/sturm.hpp"
+#include "algebra/sturm.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos {
-
-/// Every sign the decision uses (root counting and smallness).
-struct DecisionSigns {
-  QuarticSigns quartic;
-  USign vertex = USign::indeterminate();
-  USign graeffe = USign::indeterminate();
-};
 
 /// Certified signs from double arithmetic; uncertain where the static bound does not separate the
 /// value from zero (or the input is out of the filter's range).

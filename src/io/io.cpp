@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/roots.hpp"
+#include "algebra/roots.hpp"
 #include "io/json_read.hpp"
 #include "io/json_write.hpp"
 #include "relpos/error.hpp"
@@ -758,7 +758,7 @@ Json classification_to_json(const Classification& c, const RenderOptions& option
 
 namespace {
 
-/// One line saying what the certificate is and why it proves the position (classify.hpp, "Certificates").
+/// One line saying what the certificate is and why it proves the position (position.hpp).
 std::string certificate_text(const Certificate& c) {
   switch (c.kind) {
     case Certificate::Kind::Definite:

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "forms/forms.hpp"
+#include "algebra/forms.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/numbers.hpp"
 

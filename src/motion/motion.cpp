@@ -12,11 +12,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/pencil.hpp"
-#include "core/roots.hpp"
-#include "core/smallness.hpp"
-#include "core/sturm.hpp"
-#include "forms/forms.hpp"
+#include "algebra/forms.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/roots.hpp"
+#include "algebra/smallness.hpp"
+#include "algebra/sturm.hpp"
 #include "motion/instant_position.hpp"
 #include "motion/subresultant_position.hpp"
 #include "relpos/error.hpp"

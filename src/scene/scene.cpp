@@ -9,8 +9,8 @@
 #include <limits>
 #include <thread>
 
-#include "core/pencil.hpp"
-#include "core/smallness.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/smallness.hpp"
 #include "filters/running_bound.hpp"
 #include "scene/certificates.hpp"
 

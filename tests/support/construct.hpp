@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/pencil.hpp"
+#include "algebra/pencil.hpp"
 
 namespace rt {
 

@@ -22,8 +22,8 @@
 #include <optional>
 #include <string>
 
-#include "core/pencil.hpp"
-#include "core/sturm.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/sturm.hpp"
 
 namespace relpos {
 

@@ -9,36 +9,20 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "algebra/forms.hpp"
+#include "algebra/rounding.hpp"
+#include "algebra/smallness.hpp"
+#include "algebra/sturm.hpp"
 #include "anysize/exact.hpp"
 #include "anysize/gap.hpp"
 #include "certificate/build.hpp"
-#include "core/smallness.hpp"
-#include "core/sturm.hpp"
 #include "filters/multiple_roots.hpp"
 #include "filters/pooled_integer.hpp"
-#include "filters/rounding.hpp"
 #include "filters/running_bound.hpp"
 #include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"
-#include "forms/forms.hpp"
 
 namespace relpos {
-
-std::string to_string(Position p) {
-  switch (p) {
-    case Position::I:
-      return "I";
-    case Position::TI:
-      return "TI";
-    case Position::C:
-      return "C";
-    case Position::TE:
-      return "TE";
-    case Position::E:
-      return "E";
-  }
-  throw std::logic_error("internal error: to_string: not a Position");
-}
 
 std::string describe(Rule r) {
   switch (r) {

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "core/pencil.hpp"
+#include "algebra/pencil.hpp"
 #include "relpos/numbers.hpp"
 
 namespace relpos {

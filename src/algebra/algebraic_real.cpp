@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/flint_thread.hpp"
+#include "algebra/flint_thread.hpp"
 
 namespace relpos {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/roots.hpp"
+#include "algebra/roots.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Polynomial.h>
@@ -13,9 +13,9 @@
 #include <cmath>
 #include <utility>
 
-#include "core/flint_thread.hpp"
-#include "core/small_factor.hpp"
-#include "core/sturm_habicht_quartic.hpp"
+#include "algebra/flint_thread.hpp"
+#include "algebra/small_factor.hpp"
+#include "algebra/sturm_habicht_quartic.hpp"
 
 namespace relpos {
 namespace {

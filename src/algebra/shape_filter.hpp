@@ -13,7 +13,7 @@
 #include <cmath>
 #include <optional>
 
-#include "filters/rounding.hpp"
+#include "algebra/rounding.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos::shape_filter {
