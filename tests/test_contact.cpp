@@ -14,6 +14,7 @@
 #include "contact/discriminant_case.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
+#include "support/random_pairs.hpp"
 #include "support/secular.hpp"
 
 using namespace rt;
@@ -69,39 +70,8 @@ struct DoublePairs {
   std::mt19937_64 rng;
   explicit DoublePairs(std::uint64_t seed) : rng(seed) {}
   std::pair<Matrix4, Matrix4> next() {
-    std::uniform_real_distribution<double> u11(-1, 1), uc(-2, 2), uk(0.01, 2), uab(0.3, 2);
-    double L[3][3], M[3][3], c[3], Mc[3];
-    for (auto& r : L)
-      for (auto& x : r) x = u11(rng);
-    for (int i = 0; i < 3; ++i)
-      for (int j = i; j < 3; ++j) {
-        M[i][j] = 0;
-        for (int k = 0; k < 3; ++k) M[i][j] += L[i][k] * L[j][k];
-        if (i == j) M[i][j] += 0.05;
-        M[j][i] = M[i][j];
-      }
-    for (double& x : c) x = uc(rng);
-    const double k = uk(rng);
-    double cMc = 0;
-    for (int i = 0; i < 3; ++i) {
-      Mc[i] = 0;
-      for (int j = 0; j < 3; ++j) Mc[i] += M[i][j] * c[j];
-      cMc += c[i] * Mc[i];
-    }
-    Matrix4 E, P;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) E(i, j) = Rational(M[i][j]);
-      E(i, 3) = E(3, i) = Rational(-Mc[i]);
-    }
-    E(3, 3) = Rational(cMc - k);
-    const double alpha = uab(rng), beta = uab(rng), uu = u11(rng), vv = u11(rng), w = uc(rng);
-    P(0, 0) = Rational(alpha);
-    P(1, 1) = Rational(beta);
-    P(0, 3) = P(3, 0) = Rational(uu * alpha);
-    P(1, 3) = P(3, 1) = Rational(vv * beta);
-    P(2, 3) = P(3, 2) = Rational(-0.5);
-    P(3, 3) = Rational(w);
-    return {E, P};
+    const Matrix4 E = random_double_ellipsoid_matrix(rng, 0.01);  // drawn before the paraboloid
+    return {E, random_double_paraboloid_matrix(rng)};
   }
 };
 

@@ -170,12 +170,7 @@ TEST_CASE("scene: the certificate polynomials are det M, -det E, D^2 P(c), s(l) 
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m3(i, j) = em(i, j);
     const Rational dm = det3(m3);
-    Vector3 c;
-    for (int col = 0; col < 3; ++col) {
-      Matrix3 mc = m3;
-      for (int i = 0; i < 3; ++i) mc(i, col) = -em(i, 3);
-      c[static_cast<std::size_t>(col)] = det3(mc) / dm;
-    }
+    const Vector3 c = solve3(m3, {-em(0, 3), -em(1, 3), -em(2, 3)});
     Rational pc = pm(3, 3);
     for (int i = 0; i < 3; ++i) {
       pc += 2 * pm(i, 3) * c[static_cast<std::size_t>(i)];
@@ -189,12 +184,7 @@ TEST_CASE("scene: the certificate polynomials are det M, -det E, D^2 P(c), s(l) 
       for (int j = 0; j < 3; ++j) v += pm(i, j) * c[static_cast<std::size_t>(j)];
       grad[static_cast<std::size_t>(i)] = 2 * v;
     }
-    Vector3 sol;
-    for (int col = 0; col < 3; ++col) {
-      Matrix3 mc = m3;
-      for (int i = 0; i < 3; ++i) mc(i, col) = grad[static_cast<std::size_t>(i)];
-      sol[static_cast<std::size_t>(col)] = det3(mc) / dm;
-    }
+    const Vector3 sol = solve3(m3, grad);
     const Rational gmg = grad[0] * sol[0] + grad[1] * sol[1] + grad[2] * sol[2];
     CHECK(q.W == dm * dm * dm * gmg / 4);
     if (trial % 2 == 0) {  // sphere: the reduced quantities

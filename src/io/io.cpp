@@ -11,6 +11,9 @@
 #include <utility>
 #include <vector>
 
+#include "algebra/cramer.hpp"
+#include "algebra/forms.hpp"
+#include "algebra/polynomial_text.hpp"
 #include "algebra/roots.hpp"
 #include "io/json_read.hpp"
 #include "io/json_write.hpp"
@@ -73,28 +76,10 @@ class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
   }
   // Nesting is limited: copying and printing a JSON value recurse, so a line of 100000 '[' would
   // otherwise overflow the stack when its "id" is echoed.
-  bool start_object(std::size_t n) {
-    if (!counted() || !enter()) return false;
-    keys_.emplace_back();
-    counts_.push_back(0);
-    return Base::start_object(n);
-  }
-  bool end_object() {
-    keys_.pop_back();
-    counts_.pop_back();
-    return leave() && Base::end_object();
-  }
-  bool start_array(std::size_t n) {
-    if (!counted() || !enter()) return false;
-    keys_.emplace_back();
-    counts_.push_back(0);
-    return Base::start_array(n);
-  }
-  bool end_array() {
-    keys_.pop_back();
-    counts_.pop_back();
-    return leave() && Base::end_array();
-  }
+  bool start_object(std::size_t n) { return open() && Base::start_object(n); }
+  bool end_object() { return close() && Base::end_object(); }
+  bool start_array(std::size_t n) { return open() && Base::start_array(n); }
+  bool end_array() { return close() && Base::end_array(); }
 
  private:
   static Json::string_t double_text(double d) {
@@ -116,6 +101,18 @@ class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
   bool leave() {
     --depth_;
     return true;
+  }
+  /// A new array or object: counted in its parent, one level deeper, with its own keys and count.
+  bool open() {
+    if (!counted() || !enter()) return false;
+    keys_.emplace_back();
+    counts_.push_back(0);
+    return true;
+  }
+  bool close() {
+    keys_.pop_back();
+    counts_.pop_back();
+    return leave();
   }
   detail::JsonReadOptions options_;
   std::size_t depth_ = 0;
@@ -360,8 +357,7 @@ auto with_role(const std::string& role, F&& make) -> decltype(make()) {
 
 /// Determinant of a symmetric 3x3 block given by its entries.
 Rational det3(const Rational (&b)[3][3]) {
-  return b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1]) - b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0]) +
-         b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0]);
+  return relpos::detail::det3<Rational>([&b](int i, int j) -> const Rational& { return b[i][j]; });
 }
 
 /// A paraboloid from a matrix or coefficients, whose 3x3 block is `block`: when the library refuses
@@ -597,7 +593,7 @@ std::string stage_meaning(Stage s) {
 /// f scaled by the positive lcm of its denominators: same roots, integer coefficients.
 Quartic<Integer> integer_quartic(const Quartic<Rational>& f) {
   Integer l(1);
-  for (const auto& q : f) mpz_lcm(l.mpz(), l.mpz(), q.denominator().mpz());
+  forms::lcm_of_denominators(f.begin(), f.end(), l);
   Quartic<Integer> out;
   for (std::size_t i = 0; i < 5; ++i) out[i] = f[i].numerator() * (l / f[i].denominator());
   return out;
@@ -639,25 +635,7 @@ std::string count_text(int n, const char* one, const char* many) {
 }  // namespace
 
 std::string polynomial_to_text(const Rational* c, int size, const std::string& var) {
-  std::string out;
-  for (int k = size - 1; k >= 0; --k) {
-    const Rational& q = c[k];
-    if (q == 0) continue;
-    const bool neg = q < 0;
-    const Rational a = neg ? -q : q;
-    if (out.empty())
-      out += neg ? "-" : "";
-    else
-      out += neg ? " - " : " + ";
-    std::string mono = k == 0 ? "" : (k == 1 ? var : var + "^" + std::to_string(k));
-    if (k == 0)
-      out += to_string(a);
-    else if (a == 1)
-      out += mono;
-    else
-      out += to_string(a) + "*" + mono;
-  }
-  return out.empty() ? "0" : out;
+  return relpos::detail::polynomial_text(c, size < 0 ? 0 : static_cast<std::size_t>(size), var);
 }
 
 namespace detail {

@@ -32,13 +32,6 @@ using Alg = AK::Algebraic_real_1;
 /// Matrix view for the generic pencil code (pencil.hpp) with entries in Z[t].
 using MatZ = forms::MatrixOf<PolyZ>;
 
-/// lcm of l and d, into a fresh object (Gmpz shares representations).
-Integer lcm(const Integer& l, const Integer& d) {
-  Integer r;
-  mpz_lcm(r.mpz(), l.mpz(), d.mpz());
-  return r;
-}
-
 /// gcd of the integer coefficients of several polynomials in t (0 for no non-zero coefficient).
 template <class Range>
 Integer integer_content(const Range& polys) {
@@ -78,8 +71,7 @@ void make_primitive(Array& polys) {
 /// positive multiple, same roots.
 MatZ integer_matrix(const TimeMatrix4& e) {
   Integer l(1);
-  for (const auto& p : e)
-    for (const auto& c : p) l = lcm(l, c.denominator());
+  for (const auto& p : e) forms::lcm_of_denominators(p.begin(), p.end(), l);
   MatZ out;
   for (std::size_t i = 0; i < 16; ++i) {
     std::vector<Integer> c;
@@ -92,7 +84,7 @@ MatZ integer_matrix(const TimeMatrix4& e) {
 
 MatZ integer_matrix(const Matrix4& p) {
   Integer l(1);
-  for (const auto& c : p.a) l = lcm(l, c.denominator());
+  forms::lcm_of_denominators(p.a.begin(), p.a.end(), l);
   MatZ out;
   for (std::size_t i = 0; i < 16; ++i) out.a[i] = PolyZ(Integer(p.a[i].numerator() * (l / p.a[i].denominator())));
   make_primitive(out.a);

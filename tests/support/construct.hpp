@@ -96,6 +96,19 @@ inline Rational det3(const Matrix3& m) {
          m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
 }
 
+/// The solution of m x = b by Cramer's rule, exactly (det m != 0; the tests' own, independent of
+/// the library's).
+inline Vector3 solve3(const Matrix3& m, const Vector3& b) {
+  const Rational d = det3(m);
+  Vector3 x;
+  for (int col = 0; col < 3; ++col) {
+    Matrix3 mc = m;
+    for (int i = 0; i < 3; ++i) mc(i, col) = b[static_cast<std::size_t>(i)];
+    x[static_cast<std::size_t>(col)] = det3(mc) / d;
+  }
+  return x;
+}
+
 /// Determinant by exact Gaussian elimination (independent of the library's Laplace expansion).
 inline Rational det4(Matrix4 m) {
   Rational det(1);
