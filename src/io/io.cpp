@@ -33,16 +33,35 @@ std::string strip_exception_prefix(const std::string& what) {
   return what;
 }
 
+/// The nesting depth of a parse, limited to kMaxJsonDepth: copying and printing a JSON value recurse,
+/// so a line of 100000 '[' would otherwise overflow the stack when its "id" is echoed.
+class DepthLimit {
+ protected:
+  explicit DepthLimit(std::size_t start_depth) : depth_(start_depth) {}
+  bool enter() {
+    if (++depth_ > kMaxJsonDepth)
+      throw InputError("invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    return true;
+  }
+  bool leave() {
+    --depth_;
+    return true;
+  }
+
+ private:
+  std::size_t depth_;
+};
+
 /// The DOM builder of nlohmann::json, except that a floating-point number is stored as a string
 /// holding its original text (the lexer hands the text to the SAX callback), so that no number is
 /// ever rounded to a double; with `doubles`, every number becomes the exact value of the IEEE double
 /// nearest its text instead. Duplicate keys are rejected; with max_elements, so are arrays and
 /// objects of more entries (a quadric needs at most 16), which bounds the DOM of a batch line.
-class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
+class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json>, DepthLimit {
  public:
   using Base = nlohmann::detail::json_sax_dom_parser<Json>;
   ExactSax(Json& document, const detail::JsonReadOptions& options)
-      : Base(document, /*allow_exceptions=*/true), options_(options), depth_(options.start_depth) {}
+      : Base(document, /*allow_exceptions=*/true), DepthLimit(options.start_depth), options_(options) {}
   bool number_float(Json::number_float_t rounded, const Json::string_t& text) {
     if (!counted()) return false;
     Json::string_t copy = options_.doubles ? double_text(rounded) : text;
@@ -74,8 +93,7 @@ class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
     keys.push_back(k);
     return Base::key(k);
   }
-  // Nesting is limited: copying and printing a JSON value recurse, so a line of 100000 '[' would
-  // otherwise overflow the stack when its "id" is echoed.
+  // Nesting is limited (DepthLimit).
   bool start_object(std::size_t n) { return open() && Base::start_object(n); }
   bool end_object() { return close() && Base::end_object(); }
   bool start_array(std::size_t n) { return open() && Base::start_array(n); }
@@ -93,15 +111,6 @@ class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
                        " entries (a quadric needs at most 16: a 4x4 matrix)");
     return true;
   }
-  bool enter() {
-    if (++depth_ > kMaxJsonDepth)
-      throw InputError("invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-    return true;
-  }
-  bool leave() {
-    --depth_;
-    return true;
-  }
   /// A new array or object: counted in its parent, one level deeper, with its own keys and count.
   bool open() {
     if (!counted() || !enter()) return false;
@@ -115,15 +124,14 @@ class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
     return leave();
   }
   detail::JsonReadOptions options_;
-  std::size_t depth_ = 0;
   std::vector<std::vector<std::string>> keys_;
   std::vector<std::size_t> counts_;
 };
 
 /// Validates JSON without storing anything (memory independent of the text's size): ignored content.
-class ValidatingSax : public nlohmann::json_sax<Json> {
+class ValidatingSax : public nlohmann::json_sax<Json>, DepthLimit {
  public:
-  explicit ValidatingSax(std::size_t start_depth) : depth_(start_depth) {}
+  explicit ValidatingSax(std::size_t start_depth) : DepthLimit(start_depth) {}
   bool null() override { return true; }
   bool boolean(bool) override { return true; }
   bool number_integer(number_integer_t) override { return true; }
@@ -144,18 +152,6 @@ class ValidatingSax : public nlohmann::json_sax<Json> {
     throw detail::JsonSyntaxError("invalid JSON: " + strip_exception_prefix(e.what()));
   }
   bool overflow = false;  ///< a number beyond double range stopped the parse (valid JSON so far)
-
- private:
-  bool enter() {
-    if (++depth_ > kMaxJsonDepth)
-      throw InputError("invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-    return true;
-  }
-  bool leave() {
-    --depth_;
-    return true;
-  }
-  std::size_t depth_;
 };
 
 std::string shorten(const std::string& s, std::size_t limit = 40) {
