@@ -7,7 +7,9 @@ This check fails when
   - a `§N` inside doc/math.md itself points at no section,
   - the headings of doc/math.md are not numbered 1, 2, 3, ... in order,
   - an old-style citation remains: `math.md section N`, `math.md sections N and M`,
-    `math.md "Title"`, `math.md, section "Title"`, `section N of math.md`.
+    `math.md "Title"`, `math.md, section "Title"`, `section N of math.md`,
+  - a bare "section N" names no document (the paper's sections are cited as "the paper's section N"
+    or "paper section N").
 
 Usage: check_citations.py SOURCE_DIR. A self-test on synthetic text runs first, so a checker that
 stops finding anything fails too.
@@ -31,8 +33,15 @@ def line_of(text, pos):
     return text.count("\n", 0, pos) + 1
 
 
+BARE = re.compile(r"\bsections? \d+")
+
+
 def problems_in(text, where, sections):
     out = []
+    for m in BARE.finditer(text):
+        before = text[max(0, m.start() - 30):m.start()]
+        if "paper" not in before.split("\n")[-1] and not re.search(r"math\.md[,\s/#*]*$", before):
+            out.append(f"{where}:{line_of(text, m.start())}: bare {m.group(0)!r}: write math.md §N")
     for m in CITE.finditer(text):
         for n in re.findall(r"§(\d+)", m.group(1)):
             if int(n) not in sections:
@@ -67,8 +76,10 @@ def self_test():
         '// (math.md "Motion")',
         '(doc/math.md, section "Motion")',
         "(section 4 of math.md)",
+        "// the gap test (section 8)",
     ]
-    good = ["// (math.md §8)", "// math.md §1–§3", "// math.md §3 and §8", "(math.md\n// §2)", "see math.md."]
+    good = ["// (math.md §8)", "// math.md §1–§3", "// math.md §3 and §8", "(math.md\n// §2)", "see math.md.",
+            "(the paper's section 2)", "The paper (section 2) tracks", "(paper section 2.1)"]
     for text in bad:
         if not problems_in(text, "self-test", sections):
             sys.exit(f"check_citations.py self-test: {text!r} was not flagged")

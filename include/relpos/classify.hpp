@@ -55,12 +55,12 @@ enum class Rule : unsigned char {
   TwoPositiveRoots,      ///< E: two distinct positive roots (any size)
   RootsAboveLambdaS,     ///< I: f square-free, roots real, none positive, two in (lambda_s, 0) (any size)
   NoRootAboveLambdaS,    ///< C: f square-free, roots real, none above lambda_s (any size)
-  OddPositiveRoot,       ///< E: a root of odd multiplicity in (0, oo) (section 8 rule 1)
-  EvenPositiveRoot,      ///< TE: a positive root, every one of even multiplicity (section 8 rule 2)
-  OddGapRoot,            ///< I: a root of odd multiplicity in (lambda_s, 0) (section 8 rule 3)
-  EvenGapRoot,           ///< TI: f~ has a multiple root in (lambda_s, 0) (section 8 rule 4)
-  HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (section 8 rule 4)
-  NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (section 8 rule 5)
+  OddPositiveRoot,       ///< E: a root of odd multiplicity in (0, oo) (math.md §8 rule 1)
+  EvenPositiveRoot,      ///< TE: a positive root, every one of even multiplicity (math.md §8 rule 2)
+  OddGapRoot,            ///< I: a root of odd multiplicity in (lambda_s, 0) (math.md §8 rule 3)
+  EvenGapRoot,           ///< TI: f~ has a multiple root in (lambda_s, 0) (math.md §8 rule 4)
+  HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (math.md §8 rule 4)
+  NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (math.md §8 rule 5)
 };
 /// Number of rules, None included (tables indexed by Rule take their size from here).
 inline constexpr std::size_t kRuleCount = static_cast<std::size_t>(Rule::NoRootInGap) + 1;
