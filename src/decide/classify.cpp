@@ -46,18 +46,18 @@ std::string describe(Rule r) {
       return "f is square-free with four real roots, none above lambda_s (the root of s nearest 0) and none "
              "positive: crossing (any size, math.md §8)";
     case Rule::OddPositiveRoot:
-      return "f has a positive root of odd multiplicity: separated (math.md §8, rule 1)";
+      return "f has a positive root of odd multiplicity: separated (math.md section 8, rule 1)";
     case Rule::EvenPositiveRoot:
-      return "f has a positive root, of even multiplicity: tangent from outside (math.md §8, rule 2)";
+      return "f has a positive root, of even multiplicity: tangent from outside (math.md section 8, rule 2)";
     case Rule::OddGapRoot:
-      return "f has a root of odd multiplicity in (lambda_s, 0): interior (math.md §8, rule 3)";
+      return "f has a root of odd multiplicity in (lambda_s, 0): interior (math.md section 8, rule 3)";
     case Rule::EvenGapRoot:
-      return "f~ has a multiple root in (lambda_s, 0): tangent from inside (math.md §8, rule 4)";
+      return "f~ has a multiple root in (lambda_s, 0): tangent from inside (math.md section 8, rule 4)";
     case Rule::HardCase:
       return "f~ vanishes at lambda_s, the root of s nearest 0: tangent from inside along two points or a conic "
-             "(the hard case, math.md §8, rule 4)";
+             "(the hard case, math.md section 8, rule 4)";
     case Rule::NoRootInGap:
-      return "no positive root and no root of f~ in [lambda_s, 0): crossing (math.md §8, rule 5)";
+      return "no positive root and no root of f~ in [lambda_s, 0): crossing (math.md section 8, rule 5)";
   }
   return "";
 }
