@@ -41,10 +41,10 @@ std::string describe(Rule r) {
       return "f has two distinct positive roots (0 < lambda3 < lambda4): separated";
     case Rule::RootsAboveLambdaS:
       return "f is square-free with four real negative roots, two of them in (lambda_s, 0): interior (any size, "
-             "math.md §8)";
+             "math.md section 8)";
     case Rule::NoRootAboveLambdaS:
       return "f is square-free with four real roots, none above lambda_s (the root of s nearest 0) and none "
-             "positive: crossing (any size, math.md §8)";
+             "positive: crossing (any size, math.md section 8)";
     case Rule::OddPositiveRoot:
       return "f has a positive root of odd multiplicity: separated (math.md section 8, rule 1)";
     case Rule::EvenPositiveRoot:
