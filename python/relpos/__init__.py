@@ -13,6 +13,7 @@ double. doc/python.md describes the package.
 """
 
 import json as _json
+import operator as _operator
 
 from . import _cli, _relpos
 from ._build import version as __version__
@@ -26,6 +27,7 @@ __all__ = [
     "decide_positions",
     "POSITION_NAMES",
     "POSITION_MEANINGS",
+    "INVALID",
     "plot",
     "distributed",
     "__version__",
@@ -44,6 +46,36 @@ POSITION_MEANINGS = {
 }
 
 
+def _is_set(obj, slot):
+    try:
+        getattr(obj, slot)
+    except AttributeError:
+        return False
+    return True
+
+
+def _refuse_second_init(cls):
+    """cls.__init__ raising TypeError on an object already built (pybind11 would ignore the call)."""
+    built_init = cls.__init__
+
+    def __init__(self, *args, **kwargs):
+        if _relpos._is_built(self):
+            raise TypeError("relpos.%s: the object is already built; make a new one" % cls.__name__)
+        built_init(self, *args, **kwargs)
+
+    __init__.__doc__ = built_init.__doc__
+    cls.__init__ = __init__
+
+
+def _rebuild(cls, texts):
+    """Unpickles an Ellipsoid or Paraboloid (its __reduce__ names this function)."""
+    return _relpos._rebuild(cls, texts)
+
+
+_refuse_second_init(Ellipsoid)
+_refuse_second_init(Paraboloid)
+
+
 class Classification:
     """The answer for one pair, with its evidence: the fields of the JSON object `relpos batch` writes.
 
@@ -53,10 +85,18 @@ class Classification:
     as_dict() returns every field.
     """
 
-    __slots__ = ("_fields",)
+    __slots__ = ("_data",)
 
     def __init__(self, fields):
-        self._fields = fields
+        if _is_set(self, "_data"):
+            raise TypeError("relpos.Classification: the object is already built; make a new one")
+        self._data = fields
+
+    @property
+    def _fields(self):
+        if not _is_set(self, "_data"):
+            raise TypeError("relpos.Classification: the object was made by __new__ without __init__ (not built)")
+        return self._data
 
     position = property(lambda self: self._fields["position"])
     small = property(lambda self: self._fields["small"])
@@ -71,7 +111,11 @@ class Classification:
         return _json.loads(_json.dumps(self._fields))
 
     def __eq__(self, other):
-        return isinstance(other, Classification) and self._fields == other._fields
+        if not isinstance(other, Classification):
+            return NotImplemented
+        return self._fields == other._fields
+
+    __hash__ = None
 
     def __repr__(self):
         return "relpos.Classification(position=%r, small=%r, contact=%r, stage=%r)" % (
@@ -98,29 +142,32 @@ def classify(e, p, evidence="full"):
     return Classification(_json.loads(_relpos._classify_json(e, p, evidence == "full")))
 
 
-def _float64_array(a, name):
-    import numpy
-
-    a = numpy.asarray(a)
-    if a.dtype != numpy.float64:
-        if a.dtype.kind not in "iuf":
-            raise ValueError("%s: expected a float64 array, got dtype %s" % (name, a.dtype))
-        converted = a.astype(numpy.float64)
-        if a.dtype.kind in "iu" and not numpy.array_equal(converted.astype(a.dtype), a):
-            raise ValueError("%s: integer entries not exactly representable as float64" % name)
-        a = converted
-    return numpy.ascontiguousarray(a)
+#: The code decide_positions(..., errors="code") gives a pair it cannot read (no position uses it).
+INVALID = _relpos._INVALID
 
 
-def decide_positions(E, P, threads=0):
-    """Positions of many pairs given as float64 matrices, exactly, on all cores.
+def _thread_count(threads):
+    if isinstance(threads, bool) or not hasattr(type(threads), "__index__"):
+        raise TypeError("threads: expected a non-negative int, got %s" % type(threads).__name__)
+    threads = _operator.index(threads)
+    if threads < 0:
+        raise ValueError("threads: expected a non-negative int, got %d" % threads)
+    return threads
+
+
+def decide_positions(E, P, threads=0, errors="raise"):
+    """Positions of many pairs given as numpy matrices, exactly, on all cores.
 
     E: array (n, 4, 4) of ellipsoid matrices; P: array (n, 4, 4), or one (4, 4) matrix shared by all.
-    Each double is taken as its exact value. Returns a numpy int8 array of codes into
-    POSITION_NAMES (0 = "I" ... 4 = "E"). threads=0 uses every core; the GIL is released while deciding.
-    Raises ValueError naming the index of an invalid matrix ("E[17]: ellipsoid: ...").
+    Every entry is read exactly: float64, float32, float16, numpy.longdouble and integer arrays (of
+    any width) as the numbers they hold; any other dtype raises TypeError. Returns a numpy int8 array
+    of codes into POSITION_NAMES (0 = "I" ... 4 = "E"). threads=0 uses every core; the GIL is
+    released while deciding. errors="raise" raises ValueError naming the first invalid matrix
+    ("E[17]: ellipsoid: ..."); errors="code" gives such a pair the code INVALID (-1) instead.
     """
-    return _relpos._decide_positions(_float64_array(E, "E"), _float64_array(P, "P"), int(threads))
+    if errors not in ("raise", "code"):
+        raise ValueError("errors: expected 'raise' or 'code', got %r" % (errors,))
+    return _relpos._decide_positions(E, P, _thread_count(threads), errors == "raise")
 
 
 def plot(e, p, ax=None, **kwargs):
