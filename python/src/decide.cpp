@@ -9,6 +9,7 @@
 #include <optional>
 #include <relpos/classify.hpp>
 #include <relpos/numbers.hpp>
+#include <relpos/scene.hpp>
 #include <string>
 #include <thread>
 #include <vector>
@@ -182,9 +183,60 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
   return out;
 }
 
+/// The bodies of a scene: a sequence of relpos.Ellipsoid, or matrices as for decide_positions.
+std::vector<relpos::Ellipsoid> scene_bodies(py::handle bodies) {
+  std::vector<relpos::Ellipsoid> out;
+  if (py::isinstance<py::sequence>(bodies) && !py::isinstance<py::array>(bodies) && py::len(bodies) > 0 &&
+      py::isinstance<relpos::Ellipsoid>(py::reinterpret_borrow<py::sequence>(bodies)[0])) {
+    for (py::handle b : bodies) out.push_back(b.cast<const relpos::Ellipsoid&>());
+    return out;
+  }
+  const Matrices e = read_array(bodies, "E");
+  const std::size_t n = *batch_size(e.array, "E", false);
+  out.reserve(n);
+  py::gil_scoped_release release;
+  for (std::size_t i = 0; i < n; ++i) {
+    try {
+      out.push_back(e.ellipsoid(i));
+    } catch (const relpos::InputError& err) {
+      throw relpos::InputError("E[" + std::to_string(i) + "]: ellipsoid: " + err.what());
+    }
+  }
+  return out;
+}
+
+/// relpos::Scene on the bodies: (position codes, contact (1, 0, -1), stage codes, threads used).
+py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads, bool early_outs) {
+  const std::vector<relpos::Ellipsoid> e = scene_bodies(bodies);
+  const std::size_t n = e.size();
+  py::array_t<std::int8_t> positions(static_cast<py::ssize_t>(n)), contact(static_cast<py::ssize_t>(n)),
+      stages(static_cast<py::ssize_t>(n));
+  relpos::SceneOptions options;
+  options.threads = threads;
+  options.early_outs = early_outs;
+  relpos::SceneResult result;
+  {
+    py::gil_scoped_release release;
+    result = relpos::Scene(p).classify(e, options);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const relpos::SceneVerdict& v = result.verdicts[i];
+    positions.mutable_at(static_cast<py::ssize_t>(i)) = position_code(v.position);
+    contact.mutable_at(static_cast<py::ssize_t>(i)) = v.contact;
+    stages.mutable_at(static_cast<py::ssize_t>(i)) = static_cast<std::int8_t>(v.stage);
+  }
+  return py::make_tuple(positions, contact, stages, result.threads);
+}
+
 }  // namespace
 
 void bind_decide(py::module_& m) {
+  py::list stage_names;
+  for (std::size_t s = 0; s < relpos::kAllStages.size(); ++s)
+    stage_names.append(relpos::to_string(static_cast<relpos::Stage>(s)));
+  m.attr("_STAGE_NAMES") = py::tuple(stage_names);
+  m.def("_scene", &scene, "p"_a, "bodies"_a, "threads"_a, "early_outs"_a,
+        "relpos::Scene on the bodies: (position codes, contact codes, stage codes, threads used).");
   m.attr("_INVALID") = kInvalid;
   m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a, "raise_errors"_a,
         "Position codes (int8, 0 = I ... 4 = E, -1 = invalid pair) of the matrices E (n, 4, 4) against P "

@@ -7,7 +7,9 @@
 #include <pybind11/pybind11.h>
 
 #include <nlohmann/json.hpp>
+#include <relpos/algebraic_real.hpp>
 #include <relpos/error.hpp>
+#include <relpos/motion.hpp>
 #include <relpos/quadric.hpp>
 #include <string>
 #include <typeinfo>
@@ -65,7 +67,8 @@ struct built_caster : py::detail::type_caster_base<T> {
 };
 
 // Binding functions of the module's files (called from PYBIND11_MODULE in relpos_module.cpp).
-void bind_decide(py::module_& m);
+void bind_decide(py::module_& m);  // decide_positions, scene (decide.cpp)
+void bind_motion(py::module_& m);  // first contact, timeline (motion.cpp)
 
 }  // namespace relpos_python
 
@@ -74,4 +77,10 @@ template <>
 class type_caster<relpos::Ellipsoid> : public relpos_python::built_caster<relpos::Ellipsoid> {};
 template <>
 class type_caster<relpos::Paraboloid> : public relpos_python::built_caster<relpos::Paraboloid> {};
+template <>
+class type_caster<relpos::AlgebraicReal> : public relpos_python::built_caster<relpos::AlgebraicReal> {};
+template <>
+class type_caster<relpos::FirstContact> : public relpos_python::built_caster<relpos::FirstContact> {};
+template <>
+class type_caster<relpos::Timeline> : public relpos_python::built_caster<relpos::Timeline> {};
 }  // namespace pybind11::detail

@@ -5,7 +5,10 @@
 // numbers are exact and messages are the CLI's. relpos::InputError becomes ValueError.
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <optional>
 #include <relpos/classify.hpp>
+#include <relpos/contact.hpp>
 #include <relpos/io.hpp>
 #include <relpos/numbers.hpp>
 #include <string>
@@ -71,7 +74,7 @@ std::string matrix_repr(const char* name, const relpos::Matrix4& m) {
 template <class Q>
 void bind_quadric_common(py::class_<Q>& c, const char* repr_name) {
   c.def(
-       "matrix", [](const Q& q) { return matrix_to_python(q.matrix()); },
+       "_matrix", [](const Q& q) { return matrix_to_python(q.matrix()); },
        "The validated, sign-normalized matrix (inside is negative) as a list of 4 lists of fractions.Fraction.")
       .def("__repr__", [repr_name](const Q& q) { return matrix_repr(repr_name, q.matrix()); })
       .def(
@@ -109,57 +112,20 @@ PYBIND11_MODULE(_relpos, m) {
       m, "Ellipsoid",
       "A validated ellipsoid: a symmetric 4x4 matrix E with X^T E X = 0 on the surface, X = (x, y, z, 1) "
       "(sign-normalized: inside is negative).");
-  ellipsoid
-      .def(py::init([](py::handle description) {
-             return relpos_python::ellipsoid_from_python(to_json(description, "ellipsoid"));
-           }),
-           "description"_a,
-           "From a 4x4 matrix (nested lists/tuples or a numpy array) or a dict in any JSON form of the CLI "
-           "(doc/cli.md, \"Quadric formats\"). Numbers: int, float, fractions.Fraction, decimal.Decimal, numpy "
-           "scalars (all exact) or str ('p/q', decimals).")
-      .def_static(
-          "sphere",
-          [](py::handle center, py::handle radius) {
-            Json sphere = Json::object();
-            sphere["center"] = to_json(center, "ellipsoid.sphere.center");
-            sphere["radius"] = to_json(radius, "ellipsoid.sphere.radius");
-            return relpos_python::ellipsoid_from_python(Json{{"sphere", std::move(sphere)}});
-          },
-          "center"_a, "radius"_a, "The sphere |x - center| = radius.")
-      .def_static(
-          "from_axes",
-          [](py::handle center, py::handle axes, py::handle rotation) {
-            Json d = Json::object();
-            d["center"] = to_json(center, "ellipsoid.center");
-            d["axes"] = to_json(axes, "ellipsoid.axes");
-            d["rotation"] = to_json(rotation, "ellipsoid.rotation");
-            return relpos_python::ellipsoid_from_python(d);
-          },
-          "center"_a, "axes"_a, "rotation"_a = py::make_tuple(1, 0, 0, 0),
-          "Semi-axes `axes` along the columns of the rotation R(q)/|q|^2 of the quaternion q = (w, x, y, z).");
+  ellipsoid.def(py::init([](py::handle description) {
+                  return relpos_python::ellipsoid_from_python(to_json(description, "ellipsoid"));
+                }),
+                "description"_a,
+                "From a 4x4 matrix or a dict in any JSON form of the CLI (relpos.Ellipsoid.__init__).");
   bind_quadric_common(ellipsoid, "relpos.Ellipsoid");
 
   py::class_<relpos::Paraboloid> paraboloid(
       m, "Paraboloid", "A validated elliptic paraboloid: a symmetric 4x4 matrix (inside the cup is negative).");
-  paraboloid
-      .def(py::init([](py::handle description) {
-             return relpos_python::paraboloid_from_python(to_json(description, "paraboloid"));
-           }),
-           "description"_a,
-           "From a 4x4 matrix (nested lists/tuples or a numpy array) or a dict in any JSON form of the CLI "
-           "(doc/cli.md, \"Quadric formats\").")
-      .def_static(
-          "standard",
-          [](py::handle vertex, py::handle a, py::handle b, py::handle rotation) {
-            Json d = Json::object();
-            d["vertex"] = to_json(vertex, "paraboloid.vertex");
-            d["a"] = to_json(a, "paraboloid.a");
-            d["b"] = to_json(b, "paraboloid.b");
-            d["rotation"] = to_json(rotation, "paraboloid.rotation");
-            return relpos_python::paraboloid_from_python(d);
-          },
-          "vertex"_a, "a"_a, "b"_a, "rotation"_a = py::make_tuple(1, 0, 0, 0),
-          "x'^2/a^2 + y'^2/b^2 = z' in the frame with origin `vertex` and axes the columns of R(q)/|q|^2.");
+  paraboloid.def(py::init([](py::handle description) {
+                   return relpos_python::paraboloid_from_python(to_json(description, "paraboloid"));
+                 }),
+                 "description"_a,
+                 "From a 4x4 matrix or a dict in any JSON form of the CLI (relpos.Paraboloid.__init__).");
   bind_quadric_common(paraboloid, "relpos.Paraboloid");
 
   m.def(
@@ -195,5 +161,34 @@ PYBIND11_MODULE(_relpos, m) {
       },
       "e"_a, "p"_a, "full"_a = true, "The JSON object of `relpos batch` for the pair (without \"id\"), as text.");
 
+  m.def(
+      "_verify",
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, const std::string& position,
+         const std::string& certificate) -> std::optional<std::string> {
+        const auto* found = std::find_if(relpos::kAllPositions.begin(), relpos::kAllPositions.end(),
+                                         [&](relpos::Position q) { return relpos::to_string(q) == position; });
+        if (found == relpos::kAllPositions.end())
+          throw relpos::InputError("position \"" + position + "\" is not one of I, TI, C, TE, E");
+        const relpos::Certificate c = relpos::certificate_from_json(relpos::io::parse_json_exact(certificate));
+        py::gil_scoped_release release;
+        return relpos::verify_certificate(e, p, *found, c);
+      },
+      "e"_a, "p"_a, "position"_a, "certificate"_a,
+      "The independent verifier's reason why the certificate (JSON text) does not prove the position, or None.");
+
+  m.def(
+      "_contact_json",
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p) {
+        std::string text;
+        {
+          py::gil_scoped_release release;
+          relpos::check_normalized_pair_size(e, p);
+          text = relpos::io::dump_json(relpos::io::contact_to_json(relpos::contact(e, p)));
+        }
+        return text;
+      },
+      "e"_a, "p"_a, "The JSON object of `relpos classify --contact-only --json` for the pair, as text.");
+
   relpos_python::bind_decide(m);
+  relpos_python::bind_motion(m);
 }

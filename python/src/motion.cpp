@@ -1,0 +1,226 @@
+// relpos._relpos motion bindings (doc/python.md, "Motion"): the certified first contact and the
+// timeline of positions of an ellipsoid moved by a rigid polynomial motion (relpos/motion.hpp),
+// with exact instants (relpos::AlgebraicReal).
+#include <pybind11/stl.h>
+
+#include <relpos/algebraic_real.hpp>
+#include <relpos/io.hpp>
+#include <relpos/motion.hpp>
+#include <string>
+
+#include "module.hpp"
+
+namespace relpos_python {
+
+namespace {
+
+using namespace pybind11::literals;
+
+// The CLI's limits on a motion (doc/cli.md, Limits; cli/motion.cpp): the event polynomials' degree
+// and coefficient sizes grow with these, and the cost with them.
+constexpr std::size_t kMaxMotionDegree = 12;
+constexpr std::size_t kMaxCoefficientBits = 512;
+
+/// `count` polynomials in t (each a sequence of exact coefficients, lowest degree first, or one
+/// number for a constant), read and limited as `relpos motion` reads --translation / --rotation.
+std::vector<relpos::TimePolynomial> polynomials(py::handle x, std::size_t count, const std::string& role) {
+  const Json v = to_json(x, role);
+  if (!v.is_array() || v.size() != count)
+    throw relpos::InputError(role + ": expected an array of " + std::to_string(count) +
+                             " polynomials (arrays of coefficients, lowest degree first)");
+  std::vector<relpos::TimePolynomial> out(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string path = role + "[" + std::to_string(i) + "]";
+    if (v[i].is_array()) {
+      for (std::size_t k = 0; k < v[i].size(); ++k)
+        out[i].push_back(relpos::io::rational_from_json(v[i][k], path + "[" + std::to_string(k) + "]"));
+    } else {
+      out[i].push_back(relpos::io::rational_from_json(v[i], path));
+    }
+    while (!out[i].empty() && out[i].back() == 0) out[i].pop_back();
+    if (out[i].size() > kMaxMotionDegree + 1)
+      throw relpos::InputError(path + ": degree " + std::to_string(out[i].size() - 1) + " is beyond the limit of " +
+                               std::to_string(kMaxMotionDegree) + " (doc/cli.md, Limits)");
+    for (std::size_t k = 0; k < out[i].size(); ++k) {
+      const relpos::Rational& c = out[i][k];
+      const std::size_t bits =
+          std::max(mpz_sizeinbase(c.numerator().mpz(), 2), mpz_sizeinbase(c.denominator().mpz(), 2));
+      if (bits > kMaxCoefficientBits)
+        throw relpos::InputError(path + "[" + std::to_string(k) + "]: a " + std::to_string(bits) +
+                                 "-bit numerator or denominator, beyond the limit of " +
+                                 std::to_string(kMaxCoefficientBits) + " bits (doc/cli.md, Limits)");
+    }
+  }
+  return out;
+}
+
+relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py::handle pivot) {
+  relpos::RigidMotion m;
+  if (!translation.is_none()) {
+    const auto c = polynomials(translation, 3, "translation");
+    std::copy(c.begin(), c.end(), m.translation.begin());
+  }
+  if (!rotation.is_none()) {
+    const auto q = polynomials(rotation, 4, "rotation");
+    m.rotation.emplace();
+    std::copy(q.begin(), q.end(), m.rotation->begin());
+  }
+  if (PyUnicode_Check(pivot.ptr())) {
+    const std::string p = pivot.cast<std::string>();
+    if (p == "origin") {
+      m.pivot = relpos::Pivot::Origin;
+    } else if (p == "center") {
+      m.pivot = relpos::Pivot::Centre;
+    } else {
+      throw relpos::InputError("pivot: expected origin, center or a point, got " + p);
+    }
+  } else {
+    m.pivot = relpos::Pivot::Point;
+    const Json point = to_json(pivot, "pivot");
+    if (!point.is_array() || point.size() != 3) throw relpos::InputError("pivot: expected origin, center or a point");
+    for (std::size_t i = 0; i < 3; ++i)
+      m.pivot_point[i] = relpos::io::rational_from_json(point[i], "pivot[" + std::to_string(i) + "]");
+  }
+  return m;
+}
+
+py::object position_name(const std::optional<relpos::Position>& p) {
+  return p ? py::object(py::str(relpos::to_string(*p))) : py::object(py::none());
+}
+
+std::string first_contact_kind(relpos::FirstContact::Kind k) {
+  switch (k) {
+    case relpos::FirstContact::Kind::NotExteriorAtStart:
+      return "not-exterior-at-start";
+    case relpos::FirstContact::Kind::Contact:
+      return "contact";
+    case relpos::FirstContact::Kind::None:
+      return "none";
+  }
+  throw std::logic_error("internal error: first_contact_kind");
+}
+
+}  // namespace
+
+void bind_motion(py::module_& m) {
+  py::class_<relpos::AlgebraicReal>(
+      m, "Instant",
+      "An exact real time: a rational, or the only root of an irreducible integer polynomial in an isolating "
+      "interval (relpos::AlgebraicReal).")
+      .def_property_readonly(
+          "exact",
+          [](const relpos::AlgebraicReal& t) -> py::object {
+            return t.is_rational() ? to_python(*t.exact()) : py::object(py::none());
+          },
+          "The value as a fractions.Fraction when it is rational, else None.")
+      .def_property_readonly(
+          "interval",
+          [](const relpos::AlgebraicReal& t) { return py::make_tuple(to_python(t.lower()), to_python(t.upper())); },
+          "(lower, upper): Fractions with lower <= t <= upper (strictly inside when t is irrational).")
+      .def_property_readonly(
+          "polynomial",
+          [](const relpos::AlgebraicReal& t) {
+            py::list out;
+            for (const relpos::Integer& c : t.polynomial()) out.append(to_python(c));
+            return out;
+          },
+          "The minimal polynomial (integer coefficients, lowest degree first) of which t is a root.")
+      .def(
+          "_decimal",
+          [](const relpos::AlgebraicReal& t, int digits) {
+            if (digits < 1 || digits > 1000) throw relpos::InputError("digits: expected 1..1000");
+            py::gil_scoped_release release;
+            return t.decimals(digits);
+          },
+          "digits"_a = 12, "The correctly rounded decimal with `digits` significant digits.")
+      .def("__float__", &relpos::AlgebraicReal::to_double, "The nearest double.")
+      .def("__repr__", [](const relpos::AlgebraicReal& t) {
+        return "relpos.Instant(" + (t.is_rational() ? relpos::to_string(*t.exact()) : "~" + t.decimals(17)) + ")";
+      });
+
+  py::class_<relpos::FirstContact>(m, "FirstContact", "The certified first contact of a body that starts exterior.")
+      .def_property_readonly(
+          "kind", [](const relpos::FirstContact& f) { return first_contact_kind(f.kind); },
+          "'contact' (exterior at t0, `time` is the first t in (t0, t1] where it is not), 'none' (exterior on all "
+          "of [t0, t1]) or 'not-exterior-at-start'.")
+      .def_property_readonly(
+          "start_position", [](const relpos::FirstContact& f) { return relpos::to_string(f.start_position); },
+          "The position at t0.")
+      .def_property_readonly(
+          "time", [](const relpos::FirstContact& f) { return f.time; }, "The instant (an Instant), or None.")
+      .def_property_readonly(
+          "position", [](const relpos::FirstContact& f) { return relpos::to_string(f.position); },
+          "The position at `time`.")
+      .def_readonly("how", &relpos::FirstContact::how, "How that position was decided, one sentence.");
+
+  py::class_<relpos::Timeline>(m, "Timeline", "Every change of position of the moving body on [t0, t1].")
+      .def_property_readonly(
+          "instants",
+          [](const relpos::Timeline& tl) {
+            py::list out;
+            for (const relpos::MotionInstant& i : tl.instants)
+              out.append(py::dict("time"_a = i.time, "position"_a = relpos::to_string(i.position), "small"_a = i.small,
+                                  "causes"_a = relpos::cause_names(i.causes), "how"_a = i.how));
+            return out;
+          },
+          "The candidate instants in increasing order (t0 first, t1 last): dicts time, position, small, causes, how.")
+      .def_property_readonly(
+          "intervals",
+          [](const relpos::Timeline& tl) {
+            py::list out;
+            for (const relpos::MotionInterval& i : tl.intervals)
+              out.append(py::dict("sample"_a = to_python(i.sample), "position"_a = relpos::to_string(i.position),
+                                  "small"_a = i.small));
+            return out;
+          },
+          "The open intervals between consecutive instants: dicts sample (a Fraction inside), position, small.")
+      .def_property_readonly(
+          "spans",
+          [](const relpos::Timeline& tl) {
+            py::list out;
+            for (const relpos::PositionSpan& s : tl.spans())
+              out.append(py::dict("from"_a = s.from, "to"_a = s.to, "from_closed"_a = s.from_closed,
+                                  "to_closed"_a = s.to_closed, "position"_a = relpos::to_string(s.position)));
+            return out;
+          },
+          "Maximal stretches of one position covering [t0, t1]: dicts from, to, from_closed, to_closed, position.")
+      .def_property_readonly(
+          "changes",
+          [](const relpos::Timeline& tl) {
+            py::list out;
+            for (const relpos::PositionChange& c : tl.changes())
+              out.append(py::dict("time"_a = c.time, "before"_a = position_name(c.before),
+                                  "at"_a = relpos::to_string(c.at), "after"_a = position_name(c.after)));
+            return out;
+          },
+          "The instants where the position changes: dicts time, before, at, after (None at t0 / t1).")
+      .def(
+          "_position_at",
+          [](const relpos::Timeline& tl, py::handle t) {
+            return relpos::to_string(tl.position_at(to_rational(t, "t")));
+          },
+          "t"_a, "The position at an exact time t in [t0, t1].");
+
+  m.def(
+      "_first_contact",
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, py::handle t0, py::handle t1, py::handle translation,
+         py::handle rotation, py::handle pivot) {
+        const relpos::RigidMotion motion = rigid_motion(translation, rotation, pivot);
+        const relpos::Rational a = to_rational(t0, "t0"), b = to_rational(t1, "t1");
+        py::gil_scoped_release release;
+        return relpos::first_contact(e, motion, p, a, b);
+      },
+      "e"_a, "p"_a, "t0"_a, "t1"_a, "translation"_a, "rotation"_a, "pivot"_a);
+  m.def(
+      "_timeline",
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, py::handle t0, py::handle t1, py::handle translation,
+         py::handle rotation, py::handle pivot) {
+        const relpos::RigidMotion motion = rigid_motion(translation, rotation, pivot);
+        const relpos::Rational a = to_rational(t0, "t0"), b = to_rational(t1, "t1");
+        py::gil_scoped_release release;
+        return relpos::timeline(e, motion, p, a, b);
+      },
+      "e"_a, "p"_a, "t0"_a, "t1"_a, "translation"_a, "rotation"_a, "pivot"_a);
+}
+
+}  // namespace relpos_python
