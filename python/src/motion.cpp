@@ -16,42 +16,9 @@ namespace {
 
 using namespace pybind11::literals;
 
-// The CLI's limits on a motion (doc/cli.md, Limits; cli/motion.cpp): the event polynomials' degree
-// and coefficient sizes grow with these, and the cost with them.
-constexpr std::size_t kMaxMotionDegree = 12;
-constexpr std::size_t kMaxCoefficientBits = 512;
-
-/// `count` polynomials in t (each a sequence of exact coefficients, lowest degree first, or one
-/// number for a constant), read and limited as `relpos motion` reads --translation / --rotation.
+/// `count` polynomials in t, read and limited as `relpos motion` reads --translation / --rotation.
 std::vector<relpos::TimePolynomial> polynomials(py::handle x, std::size_t count, const std::string& role) {
-  const Json v = to_json(x, role);
-  if (!v.is_array() || v.size() != count)
-    throw relpos::InputError(role + ": expected an array of " + std::to_string(count) +
-                             " polynomials (arrays of coefficients, lowest degree first)");
-  std::vector<relpos::TimePolynomial> out(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::string path = role + "[" + std::to_string(i) + "]";
-    if (v[i].is_array()) {
-      for (std::size_t k = 0; k < v[i].size(); ++k)
-        out[i].push_back(relpos::io::rational_from_json(v[i][k], path + "[" + std::to_string(k) + "]"));
-    } else {
-      out[i].push_back(relpos::io::rational_from_json(v[i], path));
-    }
-    while (!out[i].empty() && out[i].back() == 0) out[i].pop_back();
-    if (out[i].size() > kMaxMotionDegree + 1)
-      throw relpos::InputError(path + ": degree " + std::to_string(out[i].size() - 1) + " is beyond the limit of " +
-                               std::to_string(kMaxMotionDegree) + " (doc/cli.md, Limits)");
-    for (std::size_t k = 0; k < out[i].size(); ++k) {
-      const relpos::Rational& c = out[i][k];
-      const std::size_t bits =
-          std::max(mpz_sizeinbase(c.numerator().mpz(), 2), mpz_sizeinbase(c.denominator().mpz(), 2));
-      if (bits > kMaxCoefficientBits)
-        throw relpos::InputError(path + "[" + std::to_string(k) + "]: a " + std::to_string(bits) +
-                                 "-bit numerator or denominator, beyond the limit of " +
-                                 std::to_string(kMaxCoefficientBits) + " bits (doc/cli.md, Limits)");
-    }
-  }
-  return out;
+  return relpos::io::motion_polynomials(to_json(x, role), count, role);
 }
 
 relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py::handle pivot) {
