@@ -150,21 +150,9 @@ std::string time_exact_text(const relpos::AlgebraicReal& t) {
   return "the only root of " + poly + " in " + interval;
 }
 
-const char* kind_name(relpos::FirstContact::Kind k) {
-  switch (k) {
-    case relpos::FirstContact::Kind::NotExteriorAtStart:
-      return "not-exterior-at-start";
-    case relpos::FirstContact::Kind::Contact:
-      return "contact";
-    case relpos::FirstContact::Kind::None:
-      return "none";
-  }
-  return "?";
-}
-
 Json first_contact_json(const relpos::FirstContact& fc, int digits) {
   Json j;
-  j["kind"] = kind_name(fc.kind);
+  j["kind"] = relpos::to_string(fc.kind);
   j["start_position"] = relpos::to_string(fc.start_position);
   j["time"] = fc.time ? time_json(*fc.time, digits) : Json(nullptr);
   j["position"] = fc.time ? Json(relpos::to_string(fc.position)) : Json(nullptr);

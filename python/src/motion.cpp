@@ -55,16 +55,22 @@ py::object position_name(const std::optional<relpos::Position>& p) {
   return p ? py::object(py::str(relpos::to_string(*p))) : py::object(py::none());
 }
 
-std::string first_contact_kind(relpos::FirstContact::Kind k) {
-  switch (k) {
-    case relpos::FirstContact::Kind::NotExteriorAtStart:
-      return "not-exterior-at-start";
-    case relpos::FirstContact::Kind::Contact:
-      return "contact";
-    case relpos::FirstContact::Kind::None:
-      return "none";
-  }
-  throw std::logic_error("internal error: first_contact_kind");
+/// Binds `name` to a motion computation of the library (first_contact, timeline): the motion read
+/// from Python as `relpos motion` reads it, the GIL released while it runs.
+template <class Result>
+void def_motion(py::module_& m, const char* name,
+                Result (*run)(const relpos::Ellipsoid&, const relpos::RigidMotion&, const relpos::Paraboloid&,
+                              const relpos::Rational&, const relpos::Rational&)) {
+  m.def(
+      name,
+      [run](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, py::handle t0, py::handle t1,
+            py::handle translation, py::handle rotation, py::handle pivot) {
+        const relpos::RigidMotion motion = rigid_motion(translation, rotation, pivot);
+        const relpos::Rational a = to_rational(t0, "t0"), b = to_rational(t1, "t1");
+        py::gil_scoped_release release;
+        return run(e, motion, p, a, b);
+      },
+      "e"_a, "p"_a, "t0"_a, "t1"_a, "translation"_a, "rotation"_a, "pivot"_a);
 }
 
 }  // namespace
@@ -107,7 +113,7 @@ void bind_motion(py::module_& m) {
 
   py::class_<relpos::FirstContact>(m, "FirstContact", "The certified first contact of a body that starts exterior.")
       .def_property_readonly(
-          "kind", [](const relpos::FirstContact& f) { return first_contact_kind(f.kind); },
+          "kind", [](const relpos::FirstContact& f) { return relpos::to_string(f.kind); },
           "'contact' (exterior at t0, `time` is the first t in (t0, t1] where it is not), 'none' (exterior on all "
           "of [t0, t1]) or 'not-exterior-at-start'.")
       .def_property_readonly(
@@ -168,26 +174,8 @@ void bind_motion(py::module_& m) {
           },
           "t"_a, "The position at an exact time t in [t0, t1].");
 
-  m.def(
-      "_first_contact",
-      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, py::handle t0, py::handle t1, py::handle translation,
-         py::handle rotation, py::handle pivot) {
-        const relpos::RigidMotion motion = rigid_motion(translation, rotation, pivot);
-        const relpos::Rational a = to_rational(t0, "t0"), b = to_rational(t1, "t1");
-        py::gil_scoped_release release;
-        return relpos::first_contact(e, motion, p, a, b);
-      },
-      "e"_a, "p"_a, "t0"_a, "t1"_a, "translation"_a, "rotation"_a, "pivot"_a);
-  m.def(
-      "_timeline",
-      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, py::handle t0, py::handle t1, py::handle translation,
-         py::handle rotation, py::handle pivot) {
-        const relpos::RigidMotion motion = rigid_motion(translation, rotation, pivot);
-        const relpos::Rational a = to_rational(t0, "t0"), b = to_rational(t1, "t1");
-        py::gil_scoped_release release;
-        return relpos::timeline(e, motion, p, a, b);
-      },
-      "e"_a, "p"_a, "t0"_a, "t1"_a, "translation"_a, "rotation"_a, "pivot"_a);
+  def_motion(m, "_first_contact", &relpos::first_contact);
+  def_motion(m, "_timeline", &relpos::timeline);
 }
 
 }  // namespace relpos_python
