@@ -459,39 +459,42 @@ _MOTION_DOC = """
 Pivot = Union[Literal["origin", "center"], Vector3]
 
 
-def first_contact(
-    e: Ellipsoid,
-    p: Paraboloid,
-    t0: Number,
-    t1: Number,
-    translation: Optional[Sequence[TimePolynomial]] = None,
-    rotation: Optional[Sequence[TimePolynomial]] = None,
-    pivot: Pivot = "origin",
-) -> FirstContact:
-    """The certified first contact on [t0, t1] of a body exterior at t0 (`relpos motion --first-contact`)."""
-    _check_pair(e, p, "first_contact")
-    return _relpos._first_contact(e, p, t0, t1, translation, rotation, pivot)
+def _motion_function(name, compute, result, summary):
+    """The public motion function `name`: checks the pair and runs the compiled `compute`."""
+
+    def function(
+        e: Ellipsoid,
+        p: Paraboloid,
+        t0: Number,
+        t1: Number,
+        translation: Optional[Sequence[TimePolynomial]] = None,
+        rotation: Optional[Sequence[TimePolynomial]] = None,
+        pivot: Pivot = "origin",
+    ) -> result:
+        _check_pair(e, p, name)
+        return compute(e, p, t0, t1, translation, rotation, pivot)
+
+    function.__name__ = function.__qualname__ = name
+    function.__doc__ = summary + "\n" + _MOTION_DOC
+    return function
 
 
-def timeline(
-    e: Ellipsoid,
-    p: Paraboloid,
-    t0: Number,
-    t1: Number,
-    translation: Optional[Sequence[TimePolynomial]] = None,
-    rotation: Optional[Sequence[TimePolynomial]] = None,
-    pivot: Pivot = "origin",
-) -> Timeline:
-    """Every change of position on [t0, t1], for an ellipsoid of any size (`relpos motion`)."""
-    _check_pair(e, p, "timeline")
-    return _relpos._timeline(e, p, t0, t1, translation, rotation, pivot)
-
+first_contact = _motion_function(
+    "first_contact",
+    _relpos._first_contact,
+    FirstContact,
+    "The certified first contact on [t0, t1] of a body exterior at t0 (`relpos motion --first-contact`).",
+)
+timeline = _motion_function(
+    "timeline",
+    _relpos._timeline,
+    Timeline,
+    "Every change of position on [t0, t1], for an ellipsoid of any size (`relpos motion`).",
+)
 
 for _cls in (Instant, FirstContact, Timeline):
     _cls.__module__ = "relpos"
 
-first_contact.__doc__ += _MOTION_DOC
-timeline.__doc__ += _MOTION_DOC
 
 
 @_method(Instant, "decimal")

@@ -117,11 +117,15 @@ relpos::Rational to_rational(py::handle x, const std::string& path) {
   return relpos::io::rational_from_json(to_json(x, path), path);
 }
 
+// The exact validation (inertia of matrices whose numbers may have thousands of digits) runs
+// without the GIL.
 relpos::Ellipsoid ellipsoid_from_python(const Json& description) {
+  py::gil_scoped_release release;
   return relpos::io::ellipsoid_from_json(description, "ellipsoid");
 }
 
 relpos::Paraboloid paraboloid_from_python(const Json& description) {
+  py::gil_scoped_release release;
   return relpos::io::paraboloid_from_json(description, "paraboloid");
 }
 

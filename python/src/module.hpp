@@ -36,7 +36,7 @@ py::object to_python(const relpos::Rational& q);
 
 /// The quadric a Python description denotes: a 4x4 matrix, or a dict in any of the CLI's JSON forms
 /// (doc/cli.md, "Quadric formats"), read by the CLI's reader: the same value and the same error
-/// message as `relpos batch` for the same input.
+/// message as `relpos batch` for the same input. Called with the GIL held; validates without it.
 relpos::Ellipsoid ellipsoid_from_python(const Json& description);
 relpos::Paraboloid paraboloid_from_python(const Json& description);
 
