@@ -131,9 +131,9 @@ PYBIND11_MODULE(_relpos, m) {
   m.def(
       "_rebuild",
       [](py::handle cls, const py::tuple& texts) -> py::object {
-        const relpos::Matrix4 m = matrix_from_texts(texts);
-        if (cls.is(py::type::of<relpos::Ellipsoid>())) return py::cast(relpos::Ellipsoid::from_matrix(m));
-        if (cls.is(py::type::of<relpos::Paraboloid>())) return py::cast(relpos::Paraboloid::from_matrix(m));
+        const relpos::Matrix4 matrix = matrix_from_texts(texts);
+        if (cls.is(py::type::of<relpos::Ellipsoid>())) return py::cast(relpos::Ellipsoid::from_matrix(matrix));
+        if (cls.is(py::type::of<relpos::Paraboloid>())) return py::cast(relpos::Paraboloid::from_matrix(matrix));
         throw py::type_error("relpos._rebuild: not a relpos quadric class");
       },
       "cls"_a, "texts"_a, "The quadric pickled by __reduce__.");
