@@ -66,6 +66,11 @@ Json to_json(py::handle x, const std::string& path) {
     }
     return out;
   }
+  static const py::handle numpy_bool = py::object(py::module_::import("numpy").attr("bool_")).release();
+  static const py::handle numpy_array = py::object(py::module_::import("numpy").attr("ndarray")).release();
+  if (py::isinstance(x, numpy_bool)) return Json(PyObject_IsTrue(x.ptr()) == 1);  // refused as a bool
+  if (py::isinstance(x, numpy_array) && x.attr("ndim").cast<int>() == 0)
+    return to_json(x[py::tuple()], path);  // a 0-d array: its scalar
   if (is_sequence(x)) {
     Json out = Json::array();
     const py::ssize_t n = PySequence_Size(x.ptr());

@@ -196,8 +196,13 @@ def test_exact_scalar_types():
     m = e.matrix()
     assert m[0][3] == -F(1, 10) and m[1][3] == -F(float(numpy.float32(0.1)))
     assert m[2][3] == -F(*(numpy.longdouble(1) / 3).as_integer_ratio())
+    third = relpos.Ellipsoid.sphere((0, 0, 0), F(1, 3))
+    assert relpos.Ellipsoid.sphere((0, 0, 0), numpy.array(F(1, 3), dtype=object)) == third  # 0-d: its scalar
+    assert relpos.Ellipsoid.sphere((0, 0, 0), numpy.array(0.5)) == relpos.Ellipsoid.sphere((0, 0, 0), 0.5)
     with pytest.raises(TypeError, match=r"ellipsoid.sphere.radius: expected int, float"):
         relpos.Ellipsoid.sphere((0, 0, 0), object())
+    with pytest.raises(ValueError, match=r"ellipsoid.sphere.radius: expected a number, got true"):
+        relpos.Ellipsoid.sphere((0, 0, 0), numpy.True_)  # as True: a bool is not a number
 
 
 # Bad inputs given to the Python API and, as the same JSON, to the CLI: identical messages.
