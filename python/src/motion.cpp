@@ -73,13 +73,24 @@ void def_motion(py::module_& m, const char* name,
       "e"_a, "p"_a, "t0"_a, "t1"_a, "translation"_a, "rotation"_a, "pivot"_a);
 }
 
+/// __reduce__ of a result class that does not pickle: a TypeError at every protocol (without it,
+/// protocols 0 and 1 would build the object through copyreg, which pybind11 cannot do).
+template <class T>
+void refuse_pickling(py::class_<T>& c) {
+  c.def("__reduce__", [](py::handle self) -> py::object {
+    throw py::type_error("cannot pickle 'relpos." +
+                         py::str(py::type::handle_of(self).attr("__name__")).cast<std::string>() + "' object");
+  });
+}
+
 }  // namespace
 
 void bind_motion(py::module_& m) {
-  py::class_<relpos::AlgebraicReal>(
+  py::class_<relpos::AlgebraicReal> instant(
       m, "Instant",
       "An exact real time: a rational, or the only root of an irreducible integer polynomial in an isolating "
-      "interval (relpos::AlgebraicReal).")
+      "interval (relpos::AlgebraicReal).");
+  instant
       .def_property_readonly(
           "exact",
           [](const relpos::AlgebraicReal& t) -> py::object {
@@ -111,7 +122,11 @@ void bind_motion(py::module_& m) {
         return "relpos.Instant(" + (t.is_rational() ? relpos::to_string(*t.exact()) : "~" + t.decimals(17)) + ")";
       });
 
-  py::class_<relpos::FirstContact>(m, "FirstContact", "The certified first contact of a body that starts exterior.")
+  refuse_pickling(instant);
+  py::class_<relpos::FirstContact> first(m, "FirstContact",
+                                         "The certified first contact of a body that starts exterior.");
+  refuse_pickling(first);
+  first
       .def_property_readonly(
           "kind", [](const relpos::FirstContact& f) { return relpos::to_string(f.kind); },
           "'contact' (exterior at t0, `time` is the first t in (t0, t1] where it is not), 'none' (exterior on all "
@@ -126,7 +141,9 @@ void bind_motion(py::module_& m) {
           "The position at `time`.")
       .def_readonly("how", &relpos::FirstContact::how, "How that position was decided, one sentence.");
 
-  py::class_<relpos::Timeline>(m, "Timeline", "Every change of position of the moving body on [t0, t1].")
+  py::class_<relpos::Timeline> timeline(m, "Timeline", "Every change of position of the moving body on [t0, t1].");
+  refuse_pickling(timeline);
+  timeline
       .def_property_readonly(
           "instants",
           [](const relpos::Timeline& tl) {

@@ -236,3 +236,38 @@ def test_unbuilt_motion_objects():
         t.decimal()
     with pytest.raises(TypeError, match="not built"):
         relpos.Timeline.__new__(relpos.Timeline).position_at(0)
+
+
+PICKLE_EVERY_RESULT = """
+import pickle, relpos
+e = relpos.Ellipsoid.sphere((0, 0, 0), "1/4")
+p = relpos.Paraboloid.standard((0, 0, 0), 1, 2)
+rise = [[], [], ["-9/4", 0, 1]]
+fc = relpos.first_contact(e, p, 0, 2, translation=rise)
+objects = [relpos.classify(e, p), relpos.classify(e, p).certificate, relpos.contact(e, p),
+           relpos.scene(p, [e]), fc, fc.time, relpos.timeline(e, p, 0, 2, translation=rise)]
+for protocol in range(pickle.HIGHEST_PROTOCOL + 1):
+    for x in objects:
+        try:
+            back = pickle.loads(pickle.dumps(x, protocol=protocol))
+        except TypeError:
+            print(protocol, type(x).__name__, "refused")
+            continue
+        same = back == x if hasattr(type(x), "as_dict") else repr(back) == repr(x)
+        print(protocol, type(x).__name__, "round trip" if same else "DIFFERENT")
+"""
+
+
+def test_every_result_pickles_or_refuses():
+    """Pickling a result object at any protocol round-trips or raises TypeError (never aborts)."""
+    import os
+    import sys
+
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(os.path.abspath(relpos.__file__))))
+    run = subprocess.run([sys.executable, "-c", PICKLE_EVERY_RESULT], env=env, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, timeout=120)
+    assert run.returncode == 0, run.stderr.decode()
+    lines = run.stdout.decode().splitlines()
+    assert len(lines) == 7 * (__import__("pickle").HIGHEST_PROTOCOL + 1)
+    assert not any("DIFFERENT" in line for line in lines), lines
+    assert any(line.endswith("Classification round trip") for line in lines)
