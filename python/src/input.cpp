@@ -1,5 +1,6 @@
 // Python objects read exactly (module.hpp): every description goes through the CLI's JSON reader
 // (relpos/io.hpp), so a value reads and fails exactly as the same text does in `relpos batch`.
+#include <optional>
 #include <relpos/io.hpp>
 #include <relpos/numbers.hpp>
 #include <string>
@@ -12,34 +13,33 @@ namespace {
 
 std::string type_name(py::handle x) { return py::str(py::type::handle_of(x).attr("__name__")).cast<std::string>(); }
 
+/// The value of a Python int when it fits in a long long.
+std::optional<long long> small_int(py::handle x) {
+  int overflow = 0;
+  const long long value = PyLong_AsLongLongAndOverflow(x.ptr(), &overflow);
+  if (overflow) return std::nullopt;
+  if (value == -1 && PyErr_Occurred()) throw py::error_already_set();
+  return value;
+}
+
 /// The decimal digits of a Python int of any size. str(int) is refused beyond
 /// sys.get_int_max_str_digits() digits; the bytes of the int are not, and GMP writes the digits.
 std::string int_text(py::handle x) {
-  int overflow = 0;
-  const long long small = PyLong_AsLongLongAndOverflow(x.ptr(), &overflow);
-  if (!overflow) {
-    if (small == -1 && PyErr_Occurred()) throw py::error_already_set();
-    return std::to_string(small);
-  }
+  if (const auto small = small_int(x)) return std::to_string(*small);
   const py::object magnitude = py::reinterpret_steal<py::object>(PyNumber_Absolute(x.ptr()));
   if (!magnitude) throw py::error_already_set();
   const std::size_t bytes = (magnitude.attr("bit_length")().cast<std::size_t>() + 7) / 8;
   const std::string data = magnitude.attr("to_bytes")(bytes, "little").cast<py::bytes>();
   relpos::Integer z;
   mpz_import(z.mpz(), data.size(), -1, 1, 0, 0, data.data());
-  if (overflow < 0) mpz_neg(z.mpz(), z.mpz());
+  if (!magnitude.equal(x)) mpz_neg(z.mpz(), z.mpz());
   return relpos::to_string(z);
 }
 
 /// An integer JSON value: the int itself when it fits in 64 bits, else its exact digits (which the
 /// reader parses as the CLI parses a long integer, with the same size limit).
 Json int_json(py::handle x) {
-  int overflow = 0;
-  const long long small = PyLong_AsLongLongAndOverflow(x.ptr(), &overflow);
-  if (!overflow) {
-    if (small == -1 && PyErr_Occurred()) throw py::error_already_set();
-    return Json(static_cast<std::int64_t>(small));
-  }
+  if (const auto small = small_int(x)) return Json(static_cast<std::int64_t>(*small));
   return Json(int_text(x));
 }
 
