@@ -32,8 +32,8 @@ py::list matrix_to_python(const relpos::Matrix4& m) {
   return rows;
 }
 
-/// The matrix __reduce__ stored (16 exact texts, row-major), read by GMP: no length limit, since a
-/// validated matrix may hold longer numbers than an input number may (math.md §1).
+/// The matrix __reduce__ stored (16 exact texts, row-major), read by GMP without the parser's limit
+/// on one input number: a validated matrix (a sphere's e0 = |c|^2 - r^2, say) may hold longer ones.
 relpos::Matrix4 matrix_from_texts(const py::tuple& texts) {
   if (texts.size() != 16) throw py::type_error("relpos: a pickled quadric holds 16 numbers");
   relpos::Matrix4 m;
@@ -53,8 +53,8 @@ py::tuple matrix_to_texts(const relpos::Matrix4& m) {
   return out;
 }
 
-/// The exact entries as text ("p/q"), rows of four: what __reduce__ and __repr__ hand back to the
-/// constructor, which reads them exactly.
+/// The exact entries as text ("p/q"), rows of four: what __repr__ shows and the constructor reads
+/// back exactly.
 py::list matrix_to_strings(const relpos::Matrix4& m) {
   py::list rows;
   for (int i = 0; i < 4; ++i) {
@@ -69,8 +69,9 @@ std::string matrix_repr(const char* name, const relpos::Matrix4& m) {
   return std::string(name) + "(" + py::repr(matrix_to_strings(m)).cast<std::string>() + ")";
 }
 
-/// The methods Ellipsoid and Paraboloid share: matrix, repr, pickling (by the constructor on the
-/// exact text of the matrix: every protocol), == on the exact matrices, and a hash consistent with it.
+/// The methods Ellipsoid and Paraboloid share: the matrix, repr, pickling (relpos._rebuild on the
+/// exact texts of the matrix, at every protocol), == on the exact matrices, and a hash consistent
+/// with it.
 template <class Q>
 void bind_quadric_common(py::class_<Q>& c, const char* repr_name) {
   c.def(
