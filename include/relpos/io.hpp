@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
@@ -33,6 +34,18 @@ nlohmann::ordered_json parse_json_exact(std::string_view text);
 /// parse_json_exact). `path` names the field in error messages, e.g. "ellipsoid.matrix[2][3]".
 /// Throws InputError "<path>: expected a number, got true" and the like.
 Rational rational_from_json(const nlohmann::ordered_json& value, const std::string& path);
+
+/// Limits on the polynomials of a rigid motion (doc/cli.md, Limits): the event polynomials' degree
+/// and coefficient sizes grow with these, and the cost with them.
+inline constexpr std::size_t kMaxMotionDegree = 12;
+inline constexpr std::size_t kMaxMotionCoefficientBits = 512;
+
+/// The `count` polynomials in t of a rigid motion's translation (3) or quaternion (4), as
+/// `relpos motion` and the Python package read them: a JSON array of `count` entries, each an array
+/// of exact coefficients (lowest degree first) or one number (a constant); trailing zeros dropped.
+/// Throws InputError naming the field (`role`[i][k]) on a non-number or beyond the limits above.
+std::vector<std::vector<Rational>> motion_polynomials(const nlohmann::ordered_json& value, std::size_t count,
+                                                      const std::string& role);
 
 /// Quadric descriptions (doc/cli.md, "Quadric formats"). `role` prefixes every message and names
 /// the field paths ("ellipsoid", "paraboloid"). Library errors (not an ellipsoid, singular map,

@@ -183,6 +183,9 @@ struct FirstContact {
   std::string how;                        ///< how that position was decided
 };
 
+/// "not-exterior-at-start", "contact", "none".
+std::string to_string(FirstContact::Kind kind);
+
 /// Certified first contact on [t0, t1]. Separation (E) and its end are decided for an ellipsoid of
 /// any size (math.md §6), so this needs no smallness. Throws InputError on invalid input
 /// (t0 > t1, a quaternion that vanishes on [t0, t1]).

@@ -438,6 +438,18 @@ std::vector<std::string> cause_names(unsigned causes) {
   return out;
 }
 
+std::string to_string(FirstContact::Kind kind) {
+  switch (kind) {
+    case FirstContact::Kind::NotExteriorAtStart:
+      return "not-exterior-at-start";
+    case FirstContact::Kind::Contact:
+      return "contact";
+    case FirstContact::Kind::None:
+      return "none";
+  }
+  throw std::logic_error("internal error: to_string: not a FirstContact::Kind");
+}
+
 FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
                            const Rational& t1) {
   validate_motion(motion, t0, t1);
