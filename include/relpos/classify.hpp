@@ -1,7 +1,7 @@
-// The relative position of an ellipsoid and an elliptic paraboloid (math.md sections 3-6; paper
-// Theorem 1 with the corrections of math.md section 3), decided exactly, with its evidence.
+// The relative position of an ellipsoid and an elliptic paraboloid (math.md §3–§6; paper
+// Theorem 1 with the corrections of math.md §3), decided exactly, with its evidence.
 //
-// Every decision is the sign of a polynomial in the input entries (section 4 of math.md). classify()
+// Every decision is the sign of a polynomial in the input entries (math.md §4). classify()
 // evaluates them first in doubles with static error bounds (static_filter.hpp). When that leaves Disc(f)
 // uncertain on exact-double input it looks for a witness of Disc(f) = 0 -- exact rational multiple roots -- on
 // machine integers (multiple_roots.hpp). Then interval arithmetic certifies what it can; only the signs no filter
@@ -55,12 +55,12 @@ enum class Rule : unsigned char {
   TwoPositiveRoots,      ///< E: two distinct positive roots (any size)
   RootsAboveLambdaS,     ///< I: f square-free, roots real, none positive, two in (lambda_s, 0) (any size)
   NoRootAboveLambdaS,    ///< C: f square-free, roots real, none above lambda_s (any size)
-  OddPositiveRoot,       ///< E: a root of odd multiplicity in (0, oo) (section 8 rule 1)
-  EvenPositiveRoot,      ///< TE: a positive root, every one of even multiplicity (section 8 rule 2)
-  OddGapRoot,            ///< I: a root of odd multiplicity in (lambda_s, 0) (section 8 rule 3)
-  EvenGapRoot,           ///< TI: f~ has a multiple root in (lambda_s, 0) (section 8 rule 4)
-  HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (section 8 rule 4)
-  NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (section 8 rule 5)
+  OddPositiveRoot,       ///< E: a root of odd multiplicity in (0, oo) (math.md §8 rule 1)
+  EvenPositiveRoot,      ///< TE: a positive root, every one of even multiplicity (math.md §8 rule 2)
+  OddGapRoot,            ///< I: a root of odd multiplicity in (lambda_s, 0) (math.md §8 rule 3)
+  EvenGapRoot,           ///< TI: f~ has a multiple root in (lambda_s, 0) (math.md §8 rule 4)
+  HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (math.md §8 rule 4)
+  NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (math.md §8 rule 5)
 };
 /// Number of rules, None included (tables indexed by Rule take their size from here).
 inline constexpr std::size_t kRuleCount = static_cast<std::size_t>(Rule::NoRootInGap) + 1;
@@ -77,7 +77,7 @@ struct Verdict {
   signed char sign_disc_f = 0, sign_disc_ftilde = 0;
   signed char real_roots = 0, negative_roots = 0, positive_roots = 0, nonreal_roots = 0;
   signed char tangent_negative = 0, tangent_positive = 0, nonreal_multiple = 0;
-  /// Whether f has roots in (lambda_s, 0) (math.md section 8): 1 yes, 0 no, -1 not computed (only
+  /// Whether f has roots in (lambda_s, 0) (math.md §8): 1 yes, 0 no, -1 not computed (only
   /// pairs that are not small with four real negative roots need it).
   signed char roots_above_lambda_s = -1;
 };
@@ -87,10 +87,10 @@ struct Verdict {
 /// as classify() and classify_exact() do.
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p);
 
-/// The classification table itself (math.md sections 3 and 6), applied to exact root facts and the
+/// The classification table itself (math.md §3 and §6), applied to exact root facts and the
 /// comparison of rho with 1: the one written decision, for callers that obtain the facts another
 /// way (the contact-only discriminant test). Stage is left at its default. nullopt when the facts do
-/// not decide (a pair that is not small needs the exact facts of math.md section 8 -- the gap test
+/// not decide (a pair that is not small needs the exact facts of math.md §8 -- the gap test
 /// against lambda_s or the five rules -- which decide_position computes).
 std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs_one);
 

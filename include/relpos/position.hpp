@@ -1,4 +1,4 @@
-// The five relative positions of an ellipsoid and an elliptic paraboloid (math.md section 3) and the
+// The five relative positions of an ellipsoid and an elliptic paraboloid (math.md §3) and the
 // certificate that proves each one with exact rational arithmetic alone, with its independent checker.
 #pragma once
 
@@ -65,7 +65,7 @@ constexpr Contact contact_of(Position p) {
 }
 
 // Certificates: evidence for each position that anyone can check with exact rational arithmetic
-// alone (math.md section 8; doc/certificates.md). The matrices are the sign-normalized ones the
+// alone (math.md §8; doc/certificates.md). The matrices are the sign-normalized ones the
 // library stores (Ellipsoid::matrix(): 3x3 block positive definite, det < 0; Paraboloid::matrix():
 // 3x3 block positive semidefinite with positive trace); no rescaling, so lambda refers to exactly
 // the matrices built from the input.
@@ -74,7 +74,7 @@ constexpr Contact contact_of(Position p) {
 //                      then lambda p(x) + e(x) > 0 everywhere, so p has one sign on the solid ellipsoid.
 //   TE, TI  Tangent:   rational lambda (> 0 TE, < 0 TI) with lambda P + E positive semidefinite and a
 //                      rational contact point X = (x, y, z, 1) with X^T P X = 0 and X^T E X = 0.
-//   TI      HardTangent (math.md section 8, the hard case): lambda = lambda_s = a + b sqrt(d) (< 0),
+//   TI      HardTangent (math.md §8, the hard case): lambda = lambda_s = a + b sqrt(d) (< 0),
 //                      lambda P + E positive semidefinite, and the contact set
 //                      { centre + w : w in span(directions), w^T M w = radius2 } where
 //                      K (centre, 1) = 0, (lambda A + M) w = 0 for each direction, radius2 = -e(centre) >= 0

@@ -504,7 +504,7 @@ std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, cons
     const int ms = multiplicity_in(sq, x.x);
     const int sign = CGAL::sign(x.x);
     (sign < 0 ? r.negative : r.positive) += 1;
-    if (x.mult - ms >= 2) {  // math.md section 3: mult_f - mult_s >= 2
+    if (x.mult - ms >= 2) {  // math.md §3: mult_f - mult_s >= 2
       (sign < 0 ? r.tangent_negative : r.tangent_positive) += 1;
       tangent = true;
     }

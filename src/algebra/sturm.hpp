@@ -1,5 +1,5 @@
 // Root counting for the characteristic quartic from the signs of its Sturm-Habicht sequence
-// (math.md section 3: "count real, negative and positive roots with Sturm (or Sturm-Habicht)
+// (math.md §4: "count real, negative and positive roots with Sturm (or Sturm-Habicht)
 // sequences"). The sequence is generated and verified by tools/gen_sturm_habicht.py
 // (sturm_habicht_quartic.hpp) and evaluated generically over NT.
 //

@@ -18,8 +18,8 @@ namespace relpos::detail {
 /// starting threads for each chunk cost more than the work of a short one).
 class WorkerPool {
  public:
-  /// threads - 1 workers (none for 0 or 1). If a thread cannot be started, those already started
-  /// are stopped and joined and the exception (std::system_error) propagates.
+  /// threads - 1 workers (none for 0 or 1). A thread that cannot be started (too little memory for
+  /// its stack) leaves the work to the others: threads() says how many there are.
   explicit WorkerPool(unsigned threads);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;

@@ -1,4 +1,4 @@
-// The independent certificate verifier (include/relpos/position.hpp; math.md section 8).
+// The independent certificate verifier (include/relpos/position.hpp; math.md §8).
 //
 // Only exact rational arithmetic (relpos::Rational / Integer) on the two 4x4 matrices and a few lines
 // of Q(sqrt d) arithmetic of its own: no code of the classifier (pencil, Sturm sequences, roots,

@@ -1,5 +1,5 @@
 // Stage 1 of classify(): the decision signs in plain double arithmetic, certified by static error
-// bounds (the CGAL static-filter / Shewchuk "fast" stage; math.md section 4).
+// bounds (the CGAL static-filter / Shewchuk "fast" stage; math.md §11).
 //
 // Both matrices must hold exact doubles (Ellipsoid::doubles(), Paraboloid::doubles()). Each matrix
 // is scaled by a power of two so its largest entry lies in [1/2, 1) -- exact, and a positive scaling

@@ -23,8 +23,8 @@ struct BatchLine {
 std::string too_long_message(std::size_t max_line_bytes);
 
 /// The line without what every input format ignores: a UTF-8 byte order mark on line 1 and one
-/// trailing '\r'. Throws InputError for a line longer than max_line_bytes or holding a NUL byte
-/// (the message names the column).
+/// trailing '\r'. Throws InputError for a line longer than max_line_bytes, a byte order mark on a
+/// later line, or a NUL byte (the message names the column).
 std::string_view normalize_line(std::string_view line, long line_number, std::size_t max_line_bytes);
 
 /// Read one JSON Lines line {"id", "ellipsoid", "paraboloid", "comment"} (with `fixed`, a scene line:
@@ -35,8 +35,7 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
                      BatchLine& out);
 
-/// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced. Never throws std::bad_alloc
-/// beyond a fixed small message.
+/// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced (std::bad_alloc when out of memory).
 std::string error_line(const std::string& id_text, const std::string& message);
 
 }  // namespace relpos::io

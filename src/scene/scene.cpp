@@ -70,7 +70,7 @@ SymmetricEntries<RB> bounded(const SymmetricEntries<Rational>& s) {
 }
 
 /// Power of two 2^k with the largest |entry| of m times 2^k in [1/2, 1): a positive scaling of P
-/// changes no sign the certificates or the core look at (math.md section 1).
+/// changes no sign the certificates or the core look at (math.md §1).
 long balancing_exponent(const Matrix4& m) {
   double mx = 0;
   for (const auto& q : m.a) mx = std::max(mx, std::fabs(CGAL::to_double(q)));
@@ -175,7 +175,7 @@ namespace {
 
 Early inside_verdict(int rho_sign) {
   // Interior: the core's table gives I with the rule AllRootsNegative when rho < 1. A body that is
-  // not small is interior too (p < 0 on it), but the core names its rule from section 8's root
+  // not small is interior too (p < 0 on it), but the core names its rule from math.md §8's root
   // location (RootsAboveLambdaS or OddGapRoot): the core decides, so a scene and batch agree.
   if (rho_sign < 0) return Early::InsideSmall;
   return Early::None;  // not small, rho = 1 or too close to tell: the core decides
@@ -345,7 +345,6 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
   const std::size_t chunks = (count + chunk - 1) / chunk;
   unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
   threads = static_cast<unsigned>(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, chunks)));
-  result.threads = threads;
 
   std::atomic<std::size_t> next{0};
   std::vector<SceneCounts> counts(threads);
@@ -394,7 +393,9 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
     counts[w] = local;
   };
 
-  detail::WorkerPool(threads).run_on_each(work);  // a thread that cannot start throws here, before any work
+  detail::WorkerPool pool(threads);
+  result.threads = pool.threads();  // fewer when a thread cannot start: the others do its work
+  pool.run_on_each(work);
   for (const auto& err : errors)
     if (err) std::rethrow_exception(err);
   for (const auto& c : counts) result.counts.merge(c);
