@@ -174,6 +174,19 @@ TEST_CASE("the sphere resting in the cup, lowered or raised by 1e-5 ... 1e-100")
   check_all(cases);
 }
 
+TEST_CASE("spheres touching along a circle (the hard case) or 1e-3 ... 1e-100 from it, at scales 1e-30 ... 1e30") {
+  Rng g(2106);
+  std::vector<EdgeCase> cases;
+  for (const Rational& d : nearness()) {
+    const Rational a = Q(g.uniform(1, 3)), h = a * a * Q(g.uniform(3, 6), 4);  // h > a^2 / 2
+    for (const EdgeCase& c : sphere_on_circle(a, h, d)) {
+      cases.push_back(c);
+      for (int s : kScales) cases.push_back(similar(g, c, pow10(s), pow10(s + 6), "moved"));
+    }
+  }
+  check_all(cases);
+}
+
 TEST_CASE("ordinary pairs around a tangency scaled by 1e-3 and translated by 1e6, or 1e-6 and 1e3") {
   Rng g(2105);
   std::vector<EdgeCase> cases;

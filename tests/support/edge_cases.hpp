@@ -168,6 +168,19 @@ inline std::vector<EdgeCase> sphere_in_cup(const Rational& eps) {
           {"sphere in the cup, resting", sphere_matrix(V(Q(0), Q(0), r), r), p, Position::TI}};
 }
 
+/// A sphere centred on the axis of the circular cup z = (x^2 + y^2)/a^2 at height h > a^2/2: its
+/// squared distance to the surface, min over u = x^2 + y^2 of u + (u/a^2 - h)^2, is a^2 h - a^4/4,
+/// reached along the circle u = a^2 h - a^4/2: TI along a circle (the hard case) at that squared
+/// radius, I below it, C above.
+inline std::vector<EdgeCase> sphere_on_circle(const Rational& a, const Rational& h, const Rational& d) {
+  const Matrix4 p = paraboloid_matrix(a, a);
+  const Rational r2 = a * a * h - a * a * a * a / 4;
+  const Vector3 c{Q(0), Q(0), h};
+  return {{"sphere touching along a circle", ellipsoid_matrix(c, identity3(), r2), p, Position::TI},
+          {"sphere inside, near a circle", ellipsoid_matrix(c, identity3(), r2 * (1 - d)), p, Position::I},
+          {"sphere crossing near a circle", ellipsoid_matrix(c, identity3(), r2 * (1 + d)), p, Position::C}};
+}
+
 /// A similarity x = s R u + t with R from an integer quaternion and t of size ~ shift.
 inline EdgeCase similar(Rng& g, const EdgeCase& c, const Rational& s, const Rational& shift, const std::string& how) {
   const Vector3 t{shift * g.rational(-9, 9, 7), shift * g.rational(-9, 9, 7), shift * g.rational(-9, 9, 7)};
