@@ -108,6 +108,45 @@ class IntegerPoly {
     }
     return mpz_sgn(acc.mpz());
   }
+  /// The Newton step t - q(t)/q'(t) from t = n/d rounded down to a multiple of 2^e, on integers
+  /// (one division, no canonicalization); nullopt where q' vanishes.
+  std::optional<Rational> newton_floor(const Rational& t, long e) const {
+    if (z_.size() < 2) return std::nullopt;
+    const mpz_srcptr n = mpq_numref(t.mpq()), d = mpq_denref(t.mpq());
+    // v = d^deg q(t) and s = d^(deg - 1) q'(t) by Horner on the homogenized forms: v <- v n + z_k d^(deg - k)
+    // and, differentiating the non-homogeneous step, s <- s n + v (the old v).
+    Integer v, s, t1, dp(1);  // fresh objects: Gmpz shares its value on copy, mpz() does not unshare
+    mpz_set(v.mpz(), z_.back().mpz());
+    for (std::size_t k = z_.size() - 1; k-- > 0;) {
+      mpz_mul(s.mpz(), s.mpz(), n);
+      mpz_add(s.mpz(), s.mpz(), v.mpz());
+      mpz_mul(dp.mpz(), dp.mpz(), d);
+      mpz_mul(v.mpz(), v.mpz(), n);
+      mpz_mul(t1.mpz(), z_[k].mpz(), dp.mpz());
+      mpz_add(v.mpz(), v.mpz(), t1.mpz());
+    }
+    if (mpz_sgn(s.mpz()) == 0) return std::nullopt;
+    // t - v / (s d) = (n s - v) / (s d), then divided by 2^e and floored.
+    Integer num, den;
+    mpz_mul(num.mpz(), n, s.mpz());
+    mpz_sub(num.mpz(), num.mpz(), v.mpz());
+    mpz_mul(den.mpz(), s.mpz(), d);
+    if (mpz_sgn(den.mpz()) < 0) {
+      mpz_neg(den.mpz(), den.mpz());
+      mpz_neg(num.mpz(), num.mpz());
+    }
+    if (e >= 0)
+      mpz_mul_2exp(den.mpz(), den.mpz(), static_cast<mp_bitcnt_t>(e));
+    else
+      mpz_mul_2exp(num.mpz(), num.mpz(), static_cast<mp_bitcnt_t>(-e));
+    mpz_fdiv_q(num.mpz(), num.mpz(), den.mpz());
+    Rational out(num);
+    if (e >= 0)
+      mpq_mul_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(e));
+    else
+      mpq_div_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(-e));
+    return out;
+  }
   std::size_t degree() const { return z_.empty() ? 0 : z_.size() - 1; }
   std::size_t bits() const { return bits_; }  ///< the largest coefficient's bit length
 
@@ -632,6 +671,67 @@ Rational power_of_two(long k) {
   return r;
 }
 
+/// floor(log2 |x|) up to one, for x != 0.
+long log2_of(const Rational& x) {
+  return static_cast<long>(mpz_sizeinbase(mpq_numref(x.mpq()), 2)) -
+         static_cast<long>(mpz_sizeinbase(mpq_denref(x.mpq()), 2));
+}
+
+/// x rounded down to a multiple of 2^e.
+Rational floor_to(const Rational& x, long e) {
+  Rational scaled = x;
+  if (e >= 0)
+    mpq_div_2exp(scaled.mpq(), scaled.mpq(), static_cast<mp_bitcnt_t>(e));
+  else
+    mpq_mul_2exp(scaled.mpq(), scaled.mpq(), static_cast<mp_bitcnt_t>(-e));
+  Integer n;
+  mpz_fdiv_q(n.mpz(), mpq_numref(scaled.mpq()), mpq_denref(scaled.mpq()));
+  return Rational(n) * power_of_two(e);
+}
+
+/// Shrinks the bracket of the one sign change of q between `good` (q <= 0) and `bad` (q > 0),
+/// calling `accept` at every new good end until it returns true; false after `budget` rounds.
+/// Each round takes a Newton step from the midpoint (exact) and probes a dyadic neighbourhood of
+/// width |bad - good| 2^-k around it: when the probes bracket the sign change, the bracket becomes
+/// that neighbourhood and k doubles (quadratic convergence at a simple root), otherwise k halves
+/// and a bisection keeps the bracket at least halving. A root wanted to b bits costs O(log b)
+/// rounds near a simple root, and never more than b.
+template <class Accept>
+bool refine_root(const IntegerPoly& q, Rational good, Rational bad, Accept accept, std::size_t budget) {
+  if (accept(good)) return true;
+  long k = 2;
+  auto inside = [&](const Rational& x) { return good < bad ? good < x && x < bad : bad < x && x < good; };
+  auto step = [&](const Rational& x) {  // moves one end to x (inside the bracket); true if `good` moved
+    if (q.sign(x) <= 0) {
+      good = x;
+      return true;
+    }
+    bad = x;
+    return false;
+  };
+  for (std::size_t round = 0; round < budget; ++round) {
+    const Rational width = good < bad ? bad - good : good - bad;
+    const Rational mid = (good + bad) / 2;
+    const long e = log2_of(width) - k;
+    const Rational delta = power_of_two(e);
+    std::optional<Rational> x0 = q.newton_floor(mid, e);
+    if (!x0 || !inside(*x0)) x0 = floor_to(mid, e);
+    // The probes in the order from good to bad.
+    Rational a = *x0 - delta, b = *x0 + 2 * delta;
+    if (bad < good) std::swap(a, b);
+    bool moved = false, bracketed = false;
+    if (inside(a)) {
+      moved = step(a);
+      if (moved && inside(b)) bracketed = !step(b), moved = true;
+    }
+    if (moved && accept(good)) return true;
+    const Rational now = good < bad ? bad - good : good - bad;
+    k = bracketed ? 2 * k : std::max(2L, k / 2);
+    if (2 * now > width && step((good + bad) / 2) && accept(good)) return true;
+  }
+  return false;
+}
+
 /// The point of the solid with p < 0 from the min side (lambda > 0). x(0) is the centre; else the
 /// minimiser x(lambda*) lies on the surface, lambda* > 0 the root of e(x(lambda)). Its bracket is
 /// found on powers of two (galloping exponents: a body of size 2^-k costs O(log k) steps to reach
@@ -654,14 +754,20 @@ void min_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
     prev = k;
     k = up * step;
   }
-  Rational lo = power_of_two(up > 0 ? prev : k), hi = power_of_two(up > 0 ? k : prev);
-  bool moved = true;
-  for (std::size_t i = 0; i <= sec.budget && !found; ++i) {
-    if (moved) try_lambda(lo);
-    const Rational mid = (lo + hi) / 2;
-    moved = sec.e.sign(mid) <= 0;
-    (moved ? lo : hi) = mid;
+  // Down to one binade: binary search on the exponent between prev and k.
+  long lo_exp = std::min(prev, k), hi_exp = std::max(prev, k);
+  while (hi_exp - lo_exp > 1) {
+    const long mid = lo_exp + (hi_exp - lo_exp) / 2;
+    (sec.e.sign(power_of_two(mid)) <= 0 ? lo_exp : hi_exp) = mid;
   }
+  refine_root(
+      sec.e, power_of_two(lo_exp), power_of_two(hi_exp),
+      [&](const Rational& l) {
+        if (sec.p.sign(l) < 0)
+          if (const auto x = pr.x_of(l)) consider(*x);
+        return found.has_value();
+      },
+      sec.budget);
 }
 
 /// A rational in (lambda_s, 0) within about 2^-bits of lambda_s (relative to lambda_s, or to the
@@ -742,14 +848,14 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
     kernel_walk(pr, *hard, bits, consider);
   }
   if (!lo) return;
-  Rational hi(0);  // e(x(lo)) > 0 >= e(x(hi))
-  bool moved = true;
-  for (std::size_t i = 0; i <= sec.budget && !found; ++i) {
-    if (moved) try_lambda(hi);
-    const Rational mid = (*lo + hi) / 2;
-    moved = sec.e.sign(mid) <= 0;
-    (moved ? hi : *lo) = mid;
-  }
+  refine_root(
+      sec.e, Rational(0), *lo,
+      [&](const Rational& l) {
+        if (sec.p.sign(l) > 0)
+          if (const auto x = pr.x_of(l)) consider(*x);
+        return found.has_value();
+      },
+      sec.budget);
 }
 
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
