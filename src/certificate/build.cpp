@@ -968,7 +968,9 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, co
         c.contact = *x;
         return c;
       }
-      if (position == Position::TI && hard_case(pr, c)) return c;
+      // The hard case's contact set exists whenever its linear system is consistent; only the
+      // semidefiniteness at lambda_s makes it a tangency, which the verifier's check decides (rare).
+      if (position == Position::TI && hard_case(pr, c) && !verify_certificate(e, p, position, c)) return c;
       throw internal_error("no contact point for a pair classified " + name);
     }
     case Position::C:

@@ -41,13 +41,6 @@ inline Rational pow2(int k) {
   return k < 0 ? Rational(1) / r : r;
 }
 
-inline Matrix3 transpose3(const Matrix3& a) {
-  Matrix3 out;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) out(i, j) = a(j, i);
-  return out;
-}
-
 inline Vector3 apply(const Matrix3& m, const Vector3& v) {
   Vector3 out;
   for (int i = 0; i < 3; ++i) {
@@ -78,7 +71,7 @@ struct Shape {
 };
 
 inline Shape shape(const Vector3& axes, const Quaternion& q) {
-  const Matrix3 r = rotation(q), rt = transpose3(r);
+  const Matrix3 r = rotation(q), rt = rotation({q[0], -q[1], -q[2], -q[3]});  // R^T: the conjugate's rotation
   const Rational &x = axes[0], &y = axes[1], &z = axes[2];
   return {mul(rt, mul(diag3(1 / (x * x), 1 / (y * y), 1 / (z * z)), r)), mul(rt, mul(diag3(x * x, y * y, z * z), r))};
 }
