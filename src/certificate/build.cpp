@@ -458,13 +458,14 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// point and lambda in (lambda_s, 0) for the outside one; the point found, and the same point
 /// pulled towards the centre (exact rationals), are tried. Most crossings end here, without the
 /// exact bisection on rationals.
-void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V3>& inside,
-                         const std::optional<V3>& outside, const std::function<void(const V3&)>& consider) {
+void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& lambda_s, const V3& centre,
+                         const std::optional<V3>& inside, const std::optional<V3>& outside,
+                         const std::function<void(const V3&)>& consider) {
   double E[4][4], P[4][4];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
-      E[i][j] = CGAL::to_double(pr.E(i, j));
-      P[i][j] = CGAL::to_double(pr.P(i, j));
+      E[i][j] = CGAL::to_double(em(i, j));
+      P[i][j] = CGAL::to_double(pm(i, j));
       if (!std::isfinite(E[i][j]) || !std::isfinite(P[i][j])) return;
     }
   auto x_of = [&](double l, double x[3]) {
@@ -564,9 +565,9 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
   if (!outside) {
     // lambda_s from above: the upper end of its stored enclosure (a search needs no more), else a
     // rational approximation.
-    const double ls = std::isfinite(pr.ls.hi) && pr.ls.hi - pr.ls.lo <= 0x1p-40 * std::fabs(pr.ls.hi)
-                          ? pr.ls.hi
-                          : CGAL::to_double(approximate(pr.ls, pr.ls.value, 64, true));
+    const double ls = std::isfinite(lambda_s.hi) && lambda_s.hi - lambda_s.lo <= 0x1p-40 * std::fabs(lambda_s.hi)
+                          ? lambda_s.hi
+                          : CGAL::to_double(approximate(lambda_s, lambda_s.value, 64, true));
     if (std::isfinite(ls) && ls < 0) {
       // approach lambda_s from 0: the first lambda with e(x(lambda)) > 0
       for (double l = ls / 2, step = ls / 4; l > ls && l < 0; l += step, step /= 2) {
@@ -858,6 +859,44 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
       sec.budget);
 }
 
+/// Whether the body is below 2^-20 of its distance to the origin (or its size is not a finite
+/// double): then doubles around its centre cannot resolve it, and the search runs in its frame.
+bool small_for_doubles(const Matrix4& e, const V3& centre) {
+  double c[3], least = HUGE_VAL, far = 0, r2 = CGAL::to_double(e(3, 3));
+  for (int i = 0; i < 3; ++i) c[i] = CGAL::to_double(centre[i]);
+  for (int i = 0; i < 3; ++i) {
+    r2 += 2 * CGAL::to_double(e(i, 3)) * c[i];
+    for (int j = 0; j < 3; ++j) r2 += c[i] * CGAL::to_double(e(i, j)) * c[j];
+    least = std::min(least, CGAL::to_double(e(i, i)));
+    far = std::max(far, std::fabs(c[i]));
+  }
+  const double size = std::sqrt(-r2 / least);  // -e(c) = r2 up to rounding
+  return !(std::isfinite(size) && size > 0x1p-20 * far);
+}
+
+/// Q in the frame x = c + s u: H^T Q H for H = [[s I, c], [0, 1]].
+Matrix4 in_frame(const Matrix4& q, const V3& c, const Rational& s) {
+  Matrix4 out;
+  std::array<Rational, 3> g;  // Q's block times c plus its last column: half the gradient at c
+  for (int i = 0; i < 3; ++i) {
+    g[i] = q(i, 3);
+    for (int j = 0; j < 3; ++j) g[i] += q(i, j) * c[j];
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out(i, j) = s * s * q(i, j);
+    out(i, 3) = out(3, i) = s * g[i];
+  }
+  out(3, 3) = Pair::form(q, c);
+  return out;
+}
+
+/// A power of two near the body's largest semi-axis, sqrt(-e(c) / min_i M_ii) (bit lengths only).
+Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
+  long least = 0;
+  for (int i = 0; i < 3; ++i) least = i == 0 ? log2_of(e(0, 0)) : std::min(least, log2_of(e(i, i)));
+  return power_of_two((log2_of(-e_at_centre) - least) / 2);
+}
+
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
@@ -873,11 +912,22 @@ void crossing_points(const Pair& pr, Certificate& c) {
   // doubles, taken exactly, when it is strictly inside the solid (almost always); else the exact
   // centre (Cramer's rule on integers, several times dearer).
   std::optional<V3> pull = approximate_centre(pr.E);
-  if (pull && ez.sign(IntegerForm::Point(*pull)) >= 0) pull.reset();
-  if (!pull) pull = centre_of(pr.E);
-  if (pull) {
+  if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(pr.E, *pull)) {
     consider(*pull);
-    double_curve_search(pr, *pull, inside, outside, consider);
+    double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider);
+  } else if (const std::optional<V3> ctr = centre_of(pr.E)) {
+    // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
+    // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
+    // the points found are mapped back exactly.
+    const V3& at = *ctr;
+    consider(at);
+    const Rational scale = body_scale(pr.E, pr.e_at(at));
+    const std::function<void(const V3&)> mapped = [&](const V3& u) {
+      V3 x;
+      for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
+      consider(x);
+    };
+    double_curve_search(in_frame(pr.E, at, scale), in_frame(pr.P, at, scale), pr.ls, V3{}, inside, outside, mapped);
   }
   // What the double search missed, the exact optimisers give (they always exist in a crossing).
   if (!inside || !outside) {
