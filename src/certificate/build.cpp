@@ -691,7 +691,8 @@ Rational floor_to(const Rational& x, long e) {
 }
 
 /// Shrinks the bracket of the one sign change of q between `good` (q <= 0) and `bad` (q > 0),
-/// calling `accept` at every new good end until it returns true; false after `budget` rounds.
+/// calling `accept` at every new good end until it returns true; false after `budget` rounds or
+/// once the bracket is `budget` bits below the scale of `bad`.
 /// Each round takes a Newton step from the midpoint (exact) and probes a dyadic neighbourhood of
 /// width |bad - good| 2^-k around it: when the probes bracket the sign change, the bracket becomes
 /// that neighbourhood and k doubles (quadratic convergence at a simple root), otherwise k halves
@@ -710,8 +711,10 @@ bool refine_root(const IntegerPoly& q, Rational good, Rational bad, Accept accep
     bad = x;
     return false;
   };
+  const long top = log2_of(bad);  // bad != 0 (good may be 0): the scale the budget counts bits from
   for (std::size_t round = 0; round < budget; ++round) {
     const Rational width = good < bad ? bad - good : good - bad;
+    if (log2_of(width) < top - static_cast<long>(budget)) return false;  // as many bits as allowed
     const Rational mid = (good + bad) / 2;
     const long e = log2_of(width) - k;
     const Rational delta = power_of_two(e);
