@@ -186,6 +186,17 @@ USign certified(const Lanes& x, int count) {
   return usign(RunningBound::certain_sign(x.value(), x.magnitude(), count));
 }
 
+/// How far below its error bound a value must lie for its sign to be called hopeless in doubles:
+/// an interval evaluation of the same program from the same double entries has an error at least
+/// the rounding of the entries, at most a few thousand times smaller than the running bound (whose
+/// count is a few hundred for Disc(f)), so below 2^-24 of the bound the interval stage only adds
+/// its cost. A heuristic for skipping a stage, never for a sign: skipping is always sound.
+constexpr double kHopeless = 0x1p-24;
+
+bool hopeless(double value, double magnitude, int count) {
+  return std::fabs(value) < kHopeless * RunningBound::error_bound(magnitude, count);
+}
+
 DecisionSigns assemble(const USign c[kQuantities]) {
   DecisionSigns out;
   for (int i = 0; i < 5; ++i) out.quartic.f[i] = c[i];
@@ -254,7 +265,9 @@ DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const
   if (!evaluate(pn, en, q)) return DecisionSigns{};  // uncertain
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], d[static_cast<std::size_t>(i)]);
-  return assemble(c);
+  DecisionSigns out = assemble(c);
+  out.disc_hopeless = hopeless(q[10].value(), q[10].magnitude(), d[10]);
+  return out;
 }
 
 std::optional<bool> semi_static_roots_above_lambda_s(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
@@ -305,7 +318,9 @@ DecisionSigns enclosed_signs(const M& p, const M& e) {
   if (!enclosed(p, vp) || !enclosed(e, ve) || !evaluate(vp, ve, q)) return DecisionSigns{};
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = usign(q[i].sign());
-  return assemble(c);
+  DecisionSigns out = assemble(c);
+  out.disc_hopeless = hopeless(q[10].value(), q[10].magnitude(), q[10].count());
+  return out;
 }
 
 }  // namespace
