@@ -260,6 +260,29 @@ bool certainly_no_rational_root(const fmpz_poly_t f) {
   return false;
 }
 
+/// The rational roots of f, from its linear factors over Z (FLINT's factorisation; a quartic's is a
+/// few microseconds), after the modular test that usually shows there are none. Refining each real
+/// root below 1/|lc(f)| to test for a rational value (rational_value) costs hundreds of microseconds
+/// on the long coefficients of near-tangent pairs.
+std::vector<Rational> rational_roots(const Quartic<Integer>& fc) {
+  std::vector<Rational> out;
+  const FlintPoly f(fc);
+  if (certainly_no_rational_root(f.p)) return out;
+  fmpz_poly_factor_t fac;
+  fmpz_poly_factor_init(fac);
+  fmpz_poly_factor(fac, f.p);
+  for (slong i = 0; i < fac->num; ++i) {
+    const fmpz_poly_struct* h = fac->p + i;
+    if (fmpz_poly_degree(h) != 1) continue;
+    Integer num, den;  // fresh: written through mpz()
+    fmpz_get_mpz(num.mpz(), fmpz_poly_get_coeff_ptr(h, 0));
+    fmpz_get_mpz(den.mpz(), fmpz_poly_get_coeff_ptr(h, 1));
+    out.push_back(Rational(-num, den));
+  }
+  fmpz_poly_factor_clear(fac);
+  return out;
+}
+
 }  // namespace
 
 std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc,
@@ -377,7 +400,6 @@ RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<I
     r.multiplicity_f = static_cast<int>(mult);
     if (s.degree() >= 0 && ak.is_zero_at_1_object()(s, root))
       r.multiplicity_s = ak.is_zero_at_1_object()(ds, root) ? 2 : 1;
-    r.exact = rational_value(ak, root, fc);
     real_with_mult += r.multiplicity_f;
     rs.real_roots.push_back(std::move(r));
   }
@@ -392,6 +414,19 @@ RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<I
     for (std::size_t i = 1; i < roots.size(); ++i)
       if (!(rs.real_roots[i - 1].upper < rs.real_roots[i].lower)) disjoint = false;
     if (disjoint || bits > 4096) break;
+  }
+  // The exact value of each rational root: the one rational root of f in its isolating interval.
+  const std::vector<Rational> rational = rational_roots(fc);
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    RealRoot& r = rs.real_roots[i];
+    const bool isolated = (i == 0 || rs.real_roots[i - 1].upper < r.lower) &&
+                          (i + 1 == roots.size() || r.upper < rs.real_roots[i + 1].lower);
+    if (!isolated) {  // intervals still overlapping (never seen): test this root on its own
+      r.exact = rational_value(ak, roots[i].first, fc);
+      continue;
+    }
+    for (const Rational& q : rational)
+      if (r.lower <= q && q <= r.upper) r.exact = q;
   }
   rs.nonreal = 4 - real_with_mult;
   // Non-real roots of multiplicity >= 2: look at the square-free factors of multiplicity >= 2.
