@@ -19,6 +19,7 @@
 // median over the pairs of each method; the ratios are of these medians, within the same run.
 //
 //   edge_bench [--quick] [--out DIR]   (DIR/edge.csv; a table on stdout)
+//   edge_bench --profile METHOD K [R]  (METHOD on the pairs at 2^-K, R rounds (default: ~5 s), for perf)
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
@@ -208,25 +209,46 @@ double certificate_ns(const Pair& x, int reps) {
 int main(int argc, char** argv) {
   std::string out_dir = "benchmarks/results";
   bool quick = false;
+  std::string profile;
+  int profile_k = 0, profile_rounds = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--quick")
       quick = true;
     else if (a == "--out" && i + 1 < argc)
       out_dir = argv[++i];
-    else {
-      std::cerr << "usage: edge_bench [--quick] [--out DIR]\n";
+    else if (a == "--profile" && i + 2 < argc) {
+      profile = argv[++i], profile_k = std::stoi(argv[++i]);
+      if (i + 1 < argc && argv[i + 1][0] != '-') profile_rounds = std::stoi(argv[++i]);
+    } else {
+      std::cerr << "usage: edge_bench [--quick] [--out DIR] | --profile METHOD K\n";
       return 2;
     }
   }
   const std::vector<Tangency> ts = tangencies();
   const auto ms = methods();
+  if (!profile.empty()) {
+    const std::vector<Pair> pairs = family(ts, profile_k);
+    for (const auto& m : ms)
+      if (m.name == profile) {
+        const auto start = Clock::now();
+        for (int round = 0;
+             profile_rounds ? round < profile_rounds : std::chrono::duration<double>(Clock::now() - start).count() < 5;
+             ++round)
+          for (const auto& x : pairs) g_sink = g_sink + static_cast<int>(m.run(x).value_or(Position::TI));
+        return 0;
+      }
+    std::cerr << "no method " << profile << "\n";
+    return 2;
+  }
   std::vector<std::string> header{"k"};
   for (const auto& m : ms) header.push_back(m.name + "_ns");
   header.push_back("certificate_ns");
+  header.push_back("certificate_share");  // sum over pairs of certificate time / of full evidence time
   for (const auto& m : ms)
     if (!m.exact) header.push_back(m.name + "_error_rate");
   header.push_back("n");
+  for (const Stage st : kClassifierStages) header.push_back("stage_" + to_string(st));
   std::ofstream csv(out_dir + "/edge.csv");
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << header[i];
   csv << "\n";
@@ -240,6 +262,8 @@ int main(int argc, char** argv) {
     int hist[5] = {0, 0, 0, 0, 0};
     for (const auto& p : pairs) ++hist[static_cast<int>(p.truth)];
     std::vector<int> errors(ms.size(), 0);
+    std::array<int, kAllStages.size()> stages{};  // pairs per stage that decided them (decide_position)
+    for (const auto& x : pairs) ++stages[static_cast<std::size_t>(decide_position(x.e, x.p).stage)];
     std::vector<std::vector<double>> t(ms.size() + 1, std::vector<double>(pairs.size()));
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const Pair& x = pairs[i];
@@ -269,6 +293,11 @@ int main(int argc, char** argv) {
     }
     std::vector<double> med(ms.size() + 1);
     for (std::size_t j = 0; j <= ms.size(); ++j) med[j] = median(t[j]);
+    std::size_t full = 0;
+    while (ms[full].name != "full") ++full;
+    double cert_sum = 0, full_sum = 0;
+    for (std::size_t i = 0; i < pairs.size(); ++i) cert_sum += t[ms.size()][i], full_sum += t[full][i];
+    const double cert_share = cert_sum / full_sum;
     auto col = [&](const std::string& name) {
       for (std::size_t j = 0; j < ms.size(); ++j)
         if (ms[j].name == name) return med[j];
@@ -282,13 +311,20 @@ int main(int argc, char** argv) {
       else
         std::printf(" %6.3f/%4.0f%%", med[j] / 1000, 100 * errors[j] / n);
     std::printf(" %9.2f %9.2f %9.0f %8.0f%%   (I/C/E %d/%d/%d)\n", col("decide") / col("exact"),
-                col("exact") / col("flint"), col("full") / col("exact"), 100 * med[ms.size()] / col("full"), hist[0],
-                hist[2], hist[4]);
+                col("exact") / col("flint"), col("full") / col("exact"), 100 * cert_share, hist[0], hist[2], hist[4]);
     csv << k;
     for (double x : med) csv << "," << x;
+    csv << "," << cert_share;
     for (std::size_t j = 0; j < ms.size(); ++j)
       if (!ms[j].exact) csv << "," << errors[j] / n;
-    csv << "," << pairs.size() << "\n";
+    csv << "," << pairs.size();
+    for (const Stage st : kClassifierStages) csv << "," << stages[static_cast<std::size_t>(st)];
+    csv << "\n";
+    std::printf("       decided by:");
+    for (const Stage st : kClassifierStages)
+      if (stages[static_cast<std::size_t>(st)])
+        std::printf(" %s %d", to_string(st).c_str(), stages[static_cast<std::size_t>(st)]);
+    std::printf("\n");
     std::fflush(stdout);
   }
   if (wrong_exact) {
