@@ -444,62 +444,64 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   // f is square-free. Its common roots with s (special roots: every sphere has one) are divided
   // out when they are rational: g = gcd(f, s) of degree 1, or 2 with a square discriminant. Each is
   // a simple root of f, and the cofactor h = f / g (= f~ up to a constant) is coprime to s.
-  fmpz_poly_t g, h;
-  fmpz_poly_init(g);
-  fmpz_poly_init(h);
-  if (certainly_coprime(f.p, s.p)) {
-    fmpz_poly_set_ui(g, 1);
-  } else {
-    fmpz_poly_gcd(g, f.p, s.p);
-  }
-  const slong dg = fmpz_poly_degree(g);
   std::vector<RealRoot> common;
-  bool ok = fmpz_poly_divides(h, f.p, g) && !fmpz_is_zero(fmpz_poly_get_coeff_ptr(h, 0));
-  if (ok && dg >= 1) {
-    Integer gc[5];
-    integer_coefficients(g, gc);
-    auto add = [&](const Rational& x) {
-      RealRoot r;
-      r.exact = x;
-      r.lower = r.upper = x;
-      r.sign = CGAL::sign(x) < 0 ? -1 : 1;
-      r.multiplicity_s = (2 * sc[2] * x + sc[1] == 0) ? 2 : 1;  // 2 when s is a square
-      ok = ok && x != 0;
-      common.push_back(std::move(r));
-    };
-    if (dg == 1) {
-      add(Rational(-gc[0], gc[1]));
-    } else {
-      Integer d = gc[1] * gc[1] - 4 * gc[2] * gc[0], root;  // root: fresh, written through mpz()
-      ok = ok && d > 0 && mpz_perfect_square_p(d.mpz());
-      if (ok) {
-        mpz_sqrt(root.mpz(), d.mpz());
-        const Integer den = 2 * gc[2];
-        add(Rational(-gc[1] - root, den));
-        add(Rational(-gc[1] + root, den));
-        if (common[1].exact < common[0].exact) std::swap(common[0], common[1]);
+  Integer hc[5];
+  const Integer* hp = fc.data();  // h's coefficients: f's own when f and s are coprime
+  int n = 4, disc_h = disc;
+  bool ok = true;
+  if (!certainly_coprime(f.p, s.p)) {
+    fmpz_poly_t g, h;
+    fmpz_poly_init(g);
+    fmpz_poly_init(h);
+    fmpz_poly_gcd(g, f.p, s.p);
+    const slong dg = fmpz_poly_degree(g);
+    ok = dg <= 2 && fmpz_poly_divides(h, f.p, g) && fmpz_poly_degree(h) >= 2;
+    if (ok && dg >= 1) {
+      Integer gc[5];
+      integer_coefficients(g, gc);
+      auto add = [&](const Rational& x) {
+        RealRoot r;
+        r.exact = x;
+        r.lower = r.upper = x;
+        r.sign = CGAL::sign(x) < 0 ? -1 : 1;
+        r.multiplicity_s = (2 * sc[2] * x + sc[1] == 0) ? 2 : 1;  // 2 when s is a square
+        common.push_back(std::move(r));
+      };
+      if (dg == 1) {
+        add(Rational(-gc[0], gc[1]));
+      } else {
+        Integer d = gc[1] * gc[1] - 4 * gc[2] * gc[0], root;  // root: fresh, written through mpz()
+        ok = d > 0 && mpz_perfect_square_p(d.mpz());
+        if (ok) {
+          mpz_sqrt(root.mpz(), d.mpz());
+          const Integer den = 2 * gc[2];
+          add(Rational(-gc[1] - root, den));
+          add(Rational(-gc[1] + root, den));
+          if (common[1].exact < common[0].exact) std::swap(common[0], common[1]);
+        }
       }
+      fmpz_poly_discriminant(z, h);
+      disc_h = fmpz_sgn(z);
+      ok = ok && disc_h != 0 && certainly_no_rational_root(h);  // f(0) != 0: no root of g is 0
+      n = integer_coefficients(h, hc);
+      hp = hc;
+    } else if (ok) {  // gcd 1 after all
+      ok = certainly_no_rational_root(f.p);
     }
-  }
-  int disc_h = disc;
-  if (ok && dg >= 1) {
-    fmpz_poly_discriminant(z, h);
-    disc_h = fmpz_sgn(z);
+    fmpz_poly_clear(g);
+    fmpz_poly_clear(h);
+  } else {
+    ok = certainly_no_rational_root(f.p);
   }
   fmpz_clear(z);
-  ok = ok && disc_h != 0 && (fmpz_poly_degree(h) < 2 ? false : certainly_no_rational_root(h));
-  Integer hc[5];
-  const int n = ok ? integer_coefficients(h, hc) : 0;
-  fmpz_poly_clear(g);
-  fmpz_poly_clear(h);
   if (!ok) return std::nullopt;
   // Square-free h of degree n: n real roots when Disc(h) > 0 (for n = 4 also none: then the doubles
   // find none, and the general path decides), else 1 for a cubic, n - 2 otherwise.
   const std::size_t expected = static_cast<std::size_t>(disc_h > 0 ? n : (n == 3 ? 1 : n - 2));
   RootStructure rs;
-  if (!certified_real_roots(hc, n, expected, rs.real_roots)) {
+  if (!certified_real_roots(hp, n, expected, rs.real_roots)) {
     rs.real_roots.clear();
-    if (!zoomed_real_roots(hc, n, expected, rs.real_roots)) return std::nullopt;
+    if (!zoomed_real_roots(hp, n, expected, rs.real_roots)) return std::nullopt;
   }
   for (RealRoot& r : common) {  // the rational roots between the certified intervals (never inside one)
     auto at = rs.real_roots.begin();
