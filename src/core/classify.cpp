@@ -331,12 +331,10 @@ struct ExactData {
   Quartic<PooledInteger> f;
   Quadratic<PooledInteger> s;
   ExactData(const Ellipsoid& e, const Paraboloid& p) {
-    const auto [pz, ez] = to_compact_integers(p.matrix(), e.matrix());
     MatrixOf<PooledInteger> pp, ep;
-    for (std::size_t i = 0; i < 16; ++i) {
-      pp.a[i] = PooledInteger(pz.a[i]);
-      ep.a[i] = PooledInteger(ez.a[i]);
-    }
+    std::array<mpz_ptr, 16> pz, ez;
+    for (std::size_t i = 0; i < 16; ++i) pz[i] = pp.a[i].mpz(), ez[i] = ep.a[i].mpz();
+    to_compact_integers(p.matrix(), e.matrix(), pz, ez);
     f = characteristic_polynomial<PooledInteger>(pp, ep);
     s = special_polynomial<PooledInteger>(pp, ep);
   }
