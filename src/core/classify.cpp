@@ -456,9 +456,8 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   v.stage = Stage::ExactSigns;  // stage 3: exact integer signs of the same polynomials
   if (use_filter && only_disc_uncertain(d)) {
     d.quartic.g0 = sign_of(discriminant_times_27(exact->f));
-    if (CGAL::certainly_not(d.quartic.g0 == CGAL::ZERO) && decide_from_signs(d, v) &&
-        finish(e, p, use_filter, v, exact))
-      return v;
+    // Disc(f) = 0 needs the subresultants below (stage 4): computed in full then.
+    if (d.quartic.g0 != CGAL::ZERO && decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
   }
   const SturmHabicht<PooledInteger> sh(exact->f);  // kept: stage 4 reads the subresultants
   {

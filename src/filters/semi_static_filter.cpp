@@ -186,12 +186,15 @@ USign certified(const Lanes& x, int count) {
   return usign(RunningBound::certain_sign(x.value(), x.magnitude(), count));
 }
 
-/// How far below its error bound a value must lie for its sign to be called hopeless in doubles:
-/// an interval evaluation of the same program from the same double entries has an error at least
-/// the rounding of the entries, at most a few thousand times smaller than the running bound (whose
-/// count is a few hundred for Disc(f)), so below 2^-24 of the bound the interval stage only adds
-/// its cost. A heuristic for skipping a stage, never for a sign: skipping is always sound.
-constexpr double kHopeless = 0x1p-24;
+/// How far below its error bound a value must lie for its sign to be called hopeless in doubles.
+/// Below 1/64 of the running bound the computed value is rounding noise of the same order as the
+/// width an interval evaluation from the same double data would have (the running bound is a
+/// worst case over a few hundred operations for Disc(f); the actual error is typically a few dozen
+/// times smaller), so the interval stage would only add its cost. Chosen on the near-tangent
+/// benchmark (doc/performance.md, "Near tangency"). A heuristic for skipping a stage, never for a
+/// sign: skipping a stage is always sound.
+constexpr double kHopeless = 0x1p-6;
+constexpr int kDisc = 10;  // Disc(f) = g0 in evaluate()'s order
 
 bool hopeless(double value, double magnitude, int count) {
   return std::fabs(value) < kHopeless * RunningBound::error_bound(magnitude, count);
@@ -266,7 +269,7 @@ DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], d[static_cast<std::size_t>(i)]);
   DecisionSigns out = assemble(c);
-  out.disc_hopeless = hopeless(q[10].value(), q[10].magnitude(), d[10]);
+  out.disc_hopeless = hopeless(q[kDisc].value(), q[kDisc].magnitude(), d[kDisc]);
   return out;
 }
 
@@ -319,7 +322,7 @@ DecisionSigns enclosed_signs(const M& p, const M& e) {
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = usign(q[i].sign());
   DecisionSigns out = assemble(c);
-  out.disc_hopeless = hopeless(q[10].value(), q[10].magnitude(), q[10].count());
+  out.disc_hopeless = hopeless(q[kDisc].value(), q[kDisc].magnitude(), q[kDisc].count());
   return out;
 }
 
