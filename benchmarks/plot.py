@@ -1,6 +1,10 @@
-"""Charts for benchmarks/results (doc/performance.md). Usage: plot.py RESULTS_DIR"""
+"""Charts for benchmarks/results (doc/performance.md). Usage: plot.py [--edge] RESULTS_DIR
+
+--edge: only the near-tangency chart, from edge.csv (edge_bench).
+"""
 import csv
 import json
+import os
 import sys
 from collections import defaultdict
 
@@ -9,7 +13,51 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-out = sys.argv[1] if len(sys.argv) > 1 else "benchmarks/results"
+
+def near_tangency(out, colors):
+    """(6) the near-tangent regime (edge_bench, edge.csv): time per delta of the exact methods and of
+    the float pipelines, and each float pipeline's error rate against its time."""
+    ed = sorted(csv.DictReader(open(f"{out}/edge.csv")), key=lambda r: int(r["k"]))
+    ks = [int(r["k"]) for r in ed]
+    exact_cols = [("decide", "decide_position", "black"), ("exact", "classify_exact, minimal", "tab:brown"),
+                  ("flint", "FLINT reference", "tab:pink"), ("full", "classify, full evidence", "tab:purple")]
+    floats = [c[: -len("_error_rate")] for c in ed[0] if c.endswith("_error_rate")]
+    fig, axes = plt.subplots(1, 2, figsize=(13, 4.8))
+    for name, label, color in exact_cols:
+        axes[0].plot(ks, [float(r[name + "_ns"]) / 1000 for r in ed], marker="o", label=label, color=color)
+    for m in floats:
+        axes[0].plot(ks, [float(r[m + "_ns"]) / 1000 for r in ed], marker="x", ls="--", label=m + " (not exact)",
+                     color=colors.get(m))
+    axes[0].set_yscale("log")
+    axes[0].set_xticks(ks, ["2^-%d" % k for k in ks])
+    axes[0].set_xlabel("distance delta of the sphere from an exact tangency")
+    axes[0].set_ylabel("per-pair median [us] (log), timed back to back")
+    axes[0].set_title("Near tangency: time per delta (400 spheres each)")
+    axes[0].grid(alpha=0.3, which="both")
+    axes[0].legend(fontsize=7)
+    for m in floats + ["decide"]:
+        xs = [float(r[m + "_ns"]) / 1000 for r in ed]
+        ys = [float(r[m + "_error_rate"]) if m != "decide" else 0.0 for r in ed]
+        axes[1].plot(xs, ys, marker="o", label=m if m != "decide" else "decide_position (exact)",
+                     color="black" if m == "decide" else colors.get(m))
+        for x, y, k in list(zip(xs, ys, ks))[:: len(ks) - 1]:  # the first and last delta
+            axes[1].annotate("2^-%d" % k, (x, y), textcoords="offset points", xytext=(4, 3), fontsize=7)
+    axes[1].set_xscale("log")
+    axes[1].set_xlabel("per-pair median [us] (log)")
+    axes[1].set_ylabel("error rate (wrong or undecided)")
+    axes[1].set_title("Near tangency: speed vs accuracy per delta")
+    axes[1].grid(alpha=0.3)
+    axes[1].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(f"{out}/near_tangency.png", dpi=110)
+
+
+args = [a for a in sys.argv[1:] if a != "--edge"]
+out = args[0] if args else "benchmarks/results"
+if "--edge" in sys.argv:  # only the near-tangency chart (edge_bench's edge.csv)
+    near_tangency(out, dict(zip(["naive-double", "long-double", "float128", "mpfr-256", "interval", "exact", "flint",
+                                 "adaptive"], plt.cm.tab10.colors)))
+    sys.exit(0)
 rows = list(csv.DictReader(open(f"{out}/results.csv")))
 methods = []
 for r in rows:
@@ -138,6 +186,9 @@ ax.set_title("Deciding stage of the adaptive method")
 ax.legend(fontsize=8, ncol=len(stage_cols))
 fig.tight_layout()
 fig.savefig(f"{out}/stages.png", dpi=110)
+
+if os.path.exists(f"{out}/edge.csv"):
+    near_tangency(out, colors)
 
 s = json.load(open(f"{out}/summary.json"))
 print("adaptive/naive-double on (a): %.2f   adaptive median on (b): %.2f us" %

@@ -4,6 +4,7 @@
 #   benchmarks/run.sh            # full run (~1-2 minutes on 2 cores), seed 20240601
 #   benchmarks/run.sh --quick    # smaller family (a), fewer batches
 #   benchmarks/run.sh --scene    # only the scene benchmark (scene_bench, 10^6 bodies)
+#   benchmarks/run.sh --edge     # only the near-tangent benchmark (edge_bench) and its chart
 #
 # Outputs: benchmarks/results/{results.csv,stages.csv,summary.json,*.png}.
 # Plotting needs matplotlib for /usr/bin/python3 (Debian python3-matplotlib, benchmark-only
@@ -22,6 +23,16 @@ if [ "${1:-}" = "--scene" ]; then
   mkdir -p "$OUT"
   "$BUILD/benchmarks/scene_bench" --n "${2:-1000000}" --seed "$SEED" --out "$OUT" 2>&1 | tee "$OUT/scene_log.txt"
   exit "${PIPESTATUS[0]}"
+fi
+# benchmarks/run.sh --edge: spheres at 2^-k from exact tangencies (a few minutes) ->
+# benchmarks/results/edge.csv, edge_log.txt and near_tangency.png (doc/performance.md, "Near tangency").
+if [ "${1:-}" = "--edge" ]; then
+  cmake --build "$BUILD" -j2 --target edge_bench
+  mkdir -p "$OUT"
+  "$BUILD/benchmarks/edge_bench" --out "$OUT" 2>&1 | tee "$OUT/edge_log.txt"
+  /usr/bin/python3 "$ROOT/benchmarks/plot.py" --edge "$OUT"
+  /usr/bin/python3 "$ROOT/benchmarks/tables.py" --edge "$OUT"
+  exit 0
 fi
 cmake --build "$BUILD" -j2 --target relpos_bench
 mkdir -p "$OUT"

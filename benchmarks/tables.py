@@ -2,12 +2,37 @@
 """Print the markdown tables of doc/performance.md from benchmarks/results/{results,flint}.csv.
 
     /usr/bin/python3 benchmarks/tables.py [RESULTS_DIR]
+    /usr/bin/python3 benchmarks/tables.py --edge [RESULTS_DIR]   # "Near tangency", from edge.csv
 """
 import csv
 import os
 import sys
 
-out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "results")
+args = sys.argv[1:]
+edge = "--edge" in args
+args = [a for a in args if a != "--edge"]
+out = args[0] if args else os.path.join(os.path.dirname(__file__), "results")
+
+if edge:
+    ed = sorted(csv.DictReader(open(os.path.join(out, "edge.csv"))), key=lambda r: int(r["k"]))
+    floats = [c[: -len("_error_rate")] for c in ed[0] if c.endswith("_error_rate")]
+    us = lambda r, m: float(r[m + "_ns"]) / 1000  # noqa: E731
+    print("| δ | decide_position (µs) | classify_exact, minimal (µs) | FLINT reference (µs) | decide / exact "
+          "| exact / FLINT | classify, full evidence (µs) | certificate's share of the full evidence time |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in ed:
+        print(f"| 2^-{r['k']} | {us(r, 'decide'):.1f} | {us(r, 'exact'):.1f} | {us(r, 'flint'):.1f} "
+              f"| {us(r, 'decide') / us(r, 'exact'):.2f} | {us(r, 'exact') / us(r, 'flint'):.2f} "
+              f"| {us(r, 'full'):.0f} | {100 * float(r['certificate_share']):.0f} % |")
+    print()
+    print("| δ | " + " | ".join(f"{m}: µs / error rate" for m in floats) + " | decided by (decide_position) |")
+    print("|---" * (len(floats) + 2) + "|")
+    for r in ed:
+        stages = ", ".join(f"{c[len('stage_'):]} {r[c]}" for c in r if c.startswith("stage_") and int(r[c]) > 0)
+        print(f"| 2^-{r['k']} | " + " | ".join(f"{us(r, m):.2f} / {float(r[m + '_error_rate']):.2f}" for m in floats)
+              + f" | {stages} |")
+    sys.exit(0)
+
 rows = list(csv.DictReader(open(os.path.join(out, "results.csv"))))
 flint = list(csv.DictReader(open(os.path.join(out, "flint.csv"))))
 

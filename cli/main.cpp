@@ -31,10 +31,7 @@
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
-
-#ifndef RELPOS_VERSION
-#define RELPOS_VERSION "unknown"
-#endif
+#include "relpos/version.hpp"
 
 namespace relpos_cli {
 

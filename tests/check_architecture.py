@@ -76,6 +76,10 @@ def main() -> int:
             candidate = (base / target).resolve()
             if candidate.is_file():
                 return candidate
+        # A public header CMake generates (relpos/version.hpp) is its template cmake/NAME.in.
+        template = root / "cmake" / (Path(target).name + ".in")
+        if target.startswith("relpos/") and template.is_file():
+            return template
         return None
 
     edges = {}

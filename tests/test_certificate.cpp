@@ -6,8 +6,10 @@
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
 #include <relpos/io.hpp>
+#include <stdexcept>
 #include <string>
 
+#include "certificate/build.hpp"
 #include "certificate/verify.hpp"
 
 using relpos::Certificate;
@@ -327,6 +329,18 @@ TEST_CASE("C: unit sphere at the origin crossing the cup", "[certificate]") {
   require_rejected(e, p, Position::C, crossing(in, {q(0), q(0), q(0)}), "not outside");  // on the paraboloid
   require_rejected(e, p, Position::E, crossing(in, out), "cannot prove");
   require_rejected(e, p, Position::C, definite(q(1)), "cannot prove");
+}
+
+TEST_CASE("a certificate that cannot be built is an internal error, never a null certificate", "[certificate]") {
+  // The unit sphere at the origin crosses the cup: no rational double root of f proves a tangency.
+  const Ellipsoid e = sphere(q(0), q(1));
+  const Paraboloid p = cup();
+  CHECK_THROWS_AS(relpos::certificate::build(e, p, Position::TE), std::logic_error);
+  CHECK_THROWS_WITH(relpos::certificate::build(e, p, Position::TI),
+                    Catch::Contains("internal error") && Catch::Contains("classified TI"));
+  const Certificate c = relpos::certificate::build(e, p, Position::C);
+  CHECK(c.kind == Kind::Crossing);
+  CHECK_FALSE(relpos::verify_certificate(e, p, Position::C, c));
 }
 
 TEST_CASE("certificates survive JSON exactly", "[certificate]") {

@@ -338,3 +338,30 @@ TEST_CASE("semi-static gap test (math.md §8): every certified answer is the exa
   std::cout << "[filters] gap: " << pairs << " pairs, answered by the double filter on " << answered << "\n";
   CHECK(answered * 10 >= pairs * 9);
 }
+
+TEST_CASE("semi-static filter: Disc(f) hopeless near a tangency, the ladder goes straight to exact signs",
+          "[filters]") {
+  // A sphere of radius 1/4 tangent from inside at the vertex (0, 0, -1) of z = x^2 + y^2 / 2 - 1
+  // (smallest radius of curvature 1/2), moved by delta along the axis: I into the cup, C out of it
+  // (positions by construction). Every decision needs the sign of Disc(f), about delta in relative
+  // terms; every entry is far from 0, so the semi-static stage runs on their enclosures.
+  relpos::Matrix4 P;
+  for (auto& x : P.a) x = Q(0);
+  P(0, 0) = Q(1), P(1, 1) = Q(1, 2), P(2, 3) = P(3, 2) = Q(-1, 2), P(3, 3) = Q(-1);
+  const Paraboloid p = Paraboloid::from_matrix(P);
+  for (int k : {100, 130})
+    for (int side : {1, -1}) {
+      CAPTURE(k, side);
+      const Rational delta = Q(1) / pow_q(Q(2), k);
+      const Ellipsoid e = Ellipsoid::sphere({Q(0), Q(0), Q(-3, 4) + side * delta}, Q(1, 4));
+      const DecisionSigns d = relpos::semi_static_filter_signs(P, e.matrix());
+      CHECK(!CGAL::is_certain(d.quartic.g0));
+      CHECK(d.disc_hopeless);
+      const relpos::Verdict v = relpos::decide_position(e, p);
+      CHECK(v.position == (side > 0 ? relpos::Position::I : relpos::Position::C));
+      CHECK(v.stage == relpos::Stage::ExactSigns);
+    }
+  // Far from any tangency the flag stays down, whether or not every sign is certified.
+  const Ellipsoid far = Ellipsoid::sphere({Q(0), Q(0), Q(0)}, Q(1, 3));
+  CHECK_FALSE(relpos::semi_static_filter_signs(P, far.matrix()).disc_hopeless);
+}

@@ -330,6 +330,88 @@ TEST_CASE("exact_root_structure on polynomials with known factorizations", "[roo
   }
 }
 
+namespace {
+
+/// The product of two quadratics (coefficients low to high) as a quartic.
+Quartic<Rational> product(const std::array<Rational, 3>& p, const std::array<Rational, 3>& q) {
+  Quartic<Rational> f{};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) f[i + j] += p[i] * q[j];
+  return f;
+}
+
+/// Every interval of rs brackets a sign change of f, the intervals are disjoint and increasing,
+/// and a rational root is reported exactly.
+void check_isolation(const Quartic<Rational>& f, const relpos::RootStructure& rs) {
+  for (std::size_t i = 0; i < rs.real_roots.size(); ++i) {
+    const auto& r = rs.real_roots[i];
+    CAPTURE(i);
+    if (r.exact) {
+      CHECK(eval(f, *r.exact) == 0);
+      CHECK(r.lower <= *r.exact);
+      CHECK(*r.exact <= r.upper);
+    } else {
+      CHECK(eval(f, r.lower) * eval(f, r.upper) < 0);
+    }
+    CHECK(r.sign == CGAL::sign(r.lower));
+    CHECK(r.sign == CGAL::sign(r.upper));
+    if (i > 0) CHECK(rs.real_roots[i - 1].upper < r.lower);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("simple_root_structure: close roots, and common roots with s divided out", "[roots]") {
+  using relpos::simple_root_structure;
+  SECTION("two irrational roots 2^-69 sqrt 2 apart (closer than doubles resolve)") {
+    // 2^139 (l^2 + l + 1/4 - 2^-139) (l^2 + 3 l + 1): roots -1/2 -+ sqrt(2) 2^-70, (-3 -+ sqrt 5) / 2.
+    const Rational t(CGAL::Gmpz(1) << 139);
+    const Quartic<Rational> f = product({t / 4 - 1, t, t}, {Q(1), Q(3), Q(1)});
+    const auto rs = simple_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(6), Q(5), Q(1)}));
+    REQUIRE(rs.has_value());
+    REQUIRE(rs->real_roots.size() == 4);
+    CHECK(rs->nonreal == 0);
+    CHECK(rs->degree_ftilde == 4);
+    CHECK(rs->sign_disc_f == 1);
+    check_isolation(f, *rs);
+    // The cluster straddles -1/2, the minimum of its quadratic factor.
+    CHECK(rs->real_roots[1].upper < Q(-1, 2));
+    CHECK(Q(-1, 2) < rs->real_roots[2].lower);
+  }
+  SECTION("gcd(f, s) quadratic with rational roots: both divided out, reported exactly") {
+    // f = (l + 1)(l + 4)(l^2 + 3 l + 1), s = (l + 1)(l + 4).
+    const Quartic<Rational> f = product({Q(4), Q(5), Q(1)}, {Q(1), Q(3), Q(1)});
+    const auto rs = simple_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(4), Q(5), Q(1)}));
+    REQUIRE(rs.has_value());
+    REQUIRE(rs->real_roots.size() == 4);
+    CHECK(rs->degree_ftilde == 2);
+    CHECK(rs->sign_disc_ftilde == 1);
+    check_isolation(f, *rs);
+    REQUIRE(rs->real_roots[0].exact.has_value());
+    CHECK(*rs->real_roots[0].exact == -4);
+    CHECK(rs->real_roots[0].multiplicity_s == 1);
+    REQUIRE(rs->real_roots[2].exact.has_value());
+    CHECK(*rs->real_roots[2].exact == -1);
+    CHECK_FALSE(rs->real_roots[1].exact.has_value());
+  }
+  SECTION("gcd(f, s) linear, s a square there: multiplicity 2 in s, the cofactor a cubic") {
+    // f = (l + 4)(l^3 - 2), s = (l + 4)^2: one more real root, 2^(1/3), and a non-real pair.
+    const Quartic<Rational> f{Q(-8), Q(-2), Q(0), Q(4), Q(1)};
+    const auto rs = simple_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(16), Q(8), Q(1)}));
+    REQUIRE(rs.has_value());
+    REQUIRE(rs->real_roots.size() == 2);
+    CHECK(rs->nonreal == 2);
+    CHECK(rs->degree_ftilde == 3);
+    CHECK(rs->sign_disc_ftilde == -1);
+    check_isolation(f, *rs);
+    REQUIRE(rs->real_roots[0].exact.has_value());
+    CHECK(*rs->real_roots[0].exact == -4);
+    CHECK(rs->real_roots[0].multiplicity_s == 2);
+    CHECK(rs->real_roots[1].lower < Q(126, 100));
+    CHECK(Q(125, 100) < rs->real_roots[1].upper);
+  }
+}
+
 TEST_CASE("RealRoot::exact is set for every rational root, simple ones included", "[roots][bug]") {
   // roots.hpp documents RealRoot::exact as "the root itself when it is rational". A square-free
   // quartic that splits over Q has four rational simple roots.

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "relpos/error.hpp"
 #include "relpos/polynomials.hpp"
 #include "relpos/position.hpp"
 #include "relpos/quadric.hpp"

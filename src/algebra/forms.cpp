@@ -69,33 +69,66 @@ MatrixOf<Interval> to_intervals(const Matrix4& m) {
   return out;
 }
 
-std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix4& p, const Matrix4& e) {
-  Integer t(1);
+void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mpz_ptr, 16>& pz,
+                         const std::array<mpz_ptr, 16>& ez) {
+  // On mpz_t throughout, written into the caller's integers: the entries of D M D in lowest terms
+  // without rational or Integer temporaries (their allocations were most of the cost on long
+  // near-tangent inputs).
+  mpz_t t[3], g, den, l, content, dens[16];
+  for (auto& x : t) mpz_init(x);
+  for (auto& x : dens) mpz_init(x);
+  for (mpz_ptr x : {g, den, l, content}) mpz_init(x);
+  // lcm(l, d) costs a gcd; most denominators of a pair are equal, or divide one already taken.
+  auto fold_lcm = [](mpz_ptr acc, mpz_srcptr d) {
+    if (mpz_cmp_ui(d, 1) != 0 && !mpz_divisible_p(acc, d)) mpz_lcm(acc, acc, d);
+  };
+  mpz_set_ui(t[0], 1);
+  mpz_set_ui(t[1], 1);
   for (const auto* m : {&p, &e})
-    for (int i = 0; i < 3; ++i) mpz_lcm(t.mpz(), t.mpz(), (*m)(i, 3).denominator().mpz());
-  const Rational tq(t), t2(t * t);
-  auto form = [&](const Matrix4& m) {
-    Matrix4 c;
-    Integer l(1);
+    for (int i = 0; i < 3; ++i) fold_lcm(t[1], mpq_denref((*m)(i, 3).mpq()));
+  mpz_mul(t[2], t[1], t[1]);
+  auto form = [&](const Matrix4& m, const std::array<mpz_ptr, 16>& out) {
+    // x t^k = (n t^k / g) / (d / g) with g = gcd(d, t^k): lowest terms (each prime divides only one
+    // of d / g and t^k / g). The numerators go into `out`, the denominators' lcm into l.
+    mpz_set_ui(l, 1);
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) {
-        const Rational& x = m(i, j);
-        c(i, j) = (i == 3 && j == 3) ? x * t2 : (i == 3 || j == 3) ? x * tq : x;
-        mpz_lcm(l.mpz(), l.mpz(), mpq_denref(c(i, j).mpq()));
+        const std::size_t at = static_cast<std::size_t>(4 * i + j);
+        const mpq_srcptr x = m.a[at].mpq();
+        const int k = (i == 3) + (j == 3);
+        const mpz_ptr n = out[at], d = dens[at];
+        if (k == 0 || mpz_cmp_ui(t[1], 1) == 0) {
+          mpz_set(n, mpq_numref(x));
+          mpz_set(d, mpq_denref(x));
+        } else if (mpz_cmp_ui(mpq_denref(x), 1) == 0) {
+          mpz_mul(n, mpq_numref(x), t[k]);
+          mpz_set_ui(d, 1);
+        } else {
+          mpz_gcd(g, mpq_denref(x), t[k]);
+          mpz_divexact(d, mpq_denref(x), g);
+          mpz_divexact(n, t[k], g);
+          mpz_mul(n, n, mpq_numref(x));
+        }
+        fold_lcm(l, d);
       }
-    MatrixOf<Integer> out;
-    Integer g(0);
+    mpz_set_ui(content, 0);
     for (std::size_t i = 0; i < 16; ++i) {
-      out.a[i] = c.a[i].numerator() * (l / c.a[i].denominator());
-      mpz_gcd(g.mpz(), g.mpz(), out.a[i].mpz());
+      if (mpz_cmp(l, dens[i]) != 0) {
+        mpz_divexact(den, l, dens[i]);
+        mpz_mul(out[i], out[i], den);
+      }
+      if (mpz_cmp_ui(content, 1) != 0) mpz_gcd(content, content, out[i]);  // 1 stays 1
     }
     // Divided by its content (a positive factor): the primitive form, whatever the scale of the
     // input matrix, so that the size limit on normalized forms bounds what the exact stages see.
-    if (g > 1)
-      for (auto& x : out.a) mpz_divexact(x.mpz(), x.mpz(), g.mpz());
-    return out;
+    if (mpz_cmp_ui(content, 1) > 0)
+      for (mpz_ptr x : out) mpz_divexact(x, x, content);
   };
-  return {form(p), form(e)};
+  form(p, pz);
+  form(e, ez);
+  for (auto& x : t) mpz_clear(x);
+  for (auto& x : dens) mpz_clear(x);
+  for (mpz_ptr x : {g, den, l, content}) mpz_clear(x);
 }
 
 SplitScale split_scale(const Integer& scale) {

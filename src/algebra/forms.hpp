@@ -110,6 +110,8 @@ MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l);
 ///   det(lambda beta A + alpha M)     = alpha^3 s(beta lambda / alpha),
 /// so every root of f and s is multiplied by the same alpha / beta > 0: signs, multiplicities,
 /// common roots and rho are unchanged, with far smaller integers than one common lcm.
-std::pair<MatrixOf<Integer>, MatrixOf<Integer>> to_compact_integers(const Matrix4& p, const Matrix4& e);
+/// The two forms are written into the caller's integers (16 distinct mpz each, row-major).
+void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mpz_ptr, 16>& pz,
+                         const std::array<mpz_ptr, 16>& ez);
 
 }  // namespace relpos::forms

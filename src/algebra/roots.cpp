@@ -99,10 +99,10 @@ struct FlintPoly {
   FlintPoly& operator=(const FlintPoly&) = delete;
 };
 
-/// Sign of f(x) for a finite double x (a dyadic rational m 2^e), exactly: the sign of
-/// sum f_i m^i 2^(e i), homogenised to integers.
-int sign_at_double(const Quartic<Integer>& f, double x) {
-  if (x == 0) return sgn(f[0]);
+/// Sign of h(x) = h[0] + ... + h[n] x^n for a finite double x (a dyadic rational m 2^e), exactly:
+/// the sign of sum h_i m^i 2^(e i), homogenised to integers.
+int sign_at_double(const Integer* h, int n, double x) {
+  if (x == 0) return sgn(h[0]);
   int e = 0;
   const double frac = std::frexp(x, &e);                        // x = frac 2^e, frac in [1/2, 1)
   const auto m = static_cast<long long>(std::ldexp(frac, 53));  // exact
@@ -110,16 +110,15 @@ int sign_at_double(const Quartic<Integer>& f, double x) {
   mpz_t v, t;
   mpz_init(v);
   mpz_init(t);
-  // Horner on m with powers of two: e >= 0: v = v m 2^e + f_i; e < 0: v = v m + f_i 2^(-e k).
-  mpz_set(v, f[4].mpz());
-  for (int i = 3; i >= 0; --i) {
+  // Horner on m with powers of two: e >= 0: v = v m 2^e + h_i; e < 0: v = v m + h_i 2^(-e (n - i)).
+  mpz_set(v, h[n].mpz());
+  for (int i = n - 1; i >= 0; --i) {
     mpz_mul_si(v, v, static_cast<long>(m));
     if (e >= 0) {
       mpz_mul_2exp(v, v, static_cast<mp_bitcnt_t>(e));
-      mpz_add(v, v, f[static_cast<std::size_t>(i)].mpz());
+      mpz_add(v, v, h[i].mpz());
     } else {
-      mpz_mul_2exp(t, f[static_cast<std::size_t>(i)].mpz(),
-                   static_cast<mp_bitcnt_t>(-e) * static_cast<mp_bitcnt_t>(4 - i));
+      mpz_mul_2exp(t, h[i].mpz(), static_cast<mp_bitcnt_t>(-e) * static_cast<mp_bitcnt_t>(n - i));
       mpz_add(v, v, t);
     }
   }
@@ -260,6 +259,170 @@ bool certainly_no_rational_root(const fmpz_poly_t f) {
   return false;
 }
 
+/// The rational roots of f, from its linear factors over Z (FLINT's factorisation; a quartic's is a
+/// few microseconds), after the modular test that usually shows there are none. Refining each real
+/// root below 1/|lc(f)| to test for a rational value (rational_value) costs hundreds of microseconds
+/// on the long coefficients of near-tangent pairs.
+std::vector<Rational> rational_roots(const Quartic<Integer>& fc) {
+  std::vector<Rational> out;
+  const FlintPoly f(fc);
+  if (certainly_no_rational_root(f.p)) return out;
+  fmpz_poly_factor_t fac;
+  fmpz_poly_factor_init(fac);
+  fmpz_poly_factor(fac, f.p);
+  for (slong i = 0; i < fac->num; ++i) {
+    const fmpz_poly_struct* h = fac->p + i;
+    if (fmpz_poly_degree(h) != 1) continue;
+    Integer num, den;  // fresh: written through mpz()
+    fmpz_get_mpz(num.mpz(), fmpz_poly_get_coeff_ptr(h, 0));
+    fmpz_get_mpz(den.mpz(), fmpz_poly_get_coeff_ptr(h, 1));
+    out.push_back(Rational(-num, den));
+  }
+  fmpz_poly_factor_clear(fac);
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+/// The real roots of h (integer coefficients h[0..n], n <= 4, square-free, no rational root, h(0) != 0),
+/// `expected` of them: approximated in doubles, each certified by exact opposite signs of h at the
+/// (dyadic) ends of disjoint intervals, as many as there are real roots, so each isolates exactly
+/// one (simple, irrational) root. False when the doubles do not separate them.
+/// h's coefficients as doubles, all divided by one power of two (the roots do not move), into c;
+/// returns the Cauchy bound 2 (1 + max |c_i / c_n|) on the roots, or 0 when it is not a finite double.
+double scaled_doubles(const Integer* h, int n, double* c) {
+  long top = 0;
+  for (int i = 0; i <= n; ++i)
+    if (h[i] != 0) top = std::max<long>(top, static_cast<long>(mpz_sizeinbase(h[i].mpz(), 2)));
+  for (int i = 0; i <= n; ++i) {
+    long ex = 0;
+    const double m = mpz_get_d_2exp(&ex, h[i].mpz());
+    c[i] = std::ldexp(m, static_cast<int>(std::max<long>(ex - top, -2000)));
+  }
+  double bound = 0;
+  for (int i = 0; i < n; ++i) bound = std::max(bound, std::fabs(c[i] / c[n]));
+  bound = 2 * (1 + bound);
+  return std::isfinite(bound) && bound <= 1e300 ? bound : 0;
+}
+
+bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::vector<RealRoot>& out) {
+  double c[5];
+  const double bound = scaled_doubles(h, n, c);
+  if (bound == 0) return false;  // roots beyond the double range: no fast path
+  double roots[4];
+  const std::size_t count = static_cast<std::size_t>(approximate_real_roots(c, n, bound, roots));
+  if (count != expected) return false;
+  // The sign of h at a double: the double Horner value when it exceeds its error bound (each c_i
+  // is h_i 2^-top truncated, relative error < 2^-52, plus at most 8 roundings: 2^-48 times the
+  // magnitude covers both with room), else exactly. Only when no coefficient was flushed towards 0.
+  bool relative = true;
+  for (int i = 0; i <= n; ++i)
+    if (h[i] != 0 && !(std::fabs(c[i]) >= 0x1p-900)) relative = false;
+  auto sign_at = [&](double x) {
+    if (relative) {
+      double v = c[n], mag = std::fabs(c[n]);
+      for (int i = n - 1; i >= 0; --i) {
+        v = v * x + c[i];
+        mag = mag * std::fabs(x) + std::fabs(c[i]);
+      }
+      const double error = 0x1p-48 * mag;
+      if (std::isfinite(mag) && mag >= 0x1p-900) {
+        if (v > error) return 1;
+        if (v < -error) return -1;
+      }
+    }
+    return sign_at_double(h, n, x);
+  };
+  double prev_hi = -HUGE_VAL;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double r = roots[k];
+    if (r == 0 || !std::isfinite(r)) return false;
+    bool ok = false;
+    for (int widen = 0; widen < 4 && !ok; ++widen) {
+      const double delta = std::fabs(r) * std::ldexp(1.0, -44 + 10 * widen);
+      const double lo = r - delta, hi = r + delta;
+      if (!(lo > prev_hi) || (lo < 0) != (r < 0) || (hi < 0) != (r < 0)) break;
+      if (k + 1 < count && !(hi < roots[k + 1])) break;
+      const int sl = sign_at(lo), sh = sign_at(hi);
+      if (sl != 0 && sh != 0 && sl != sh) {
+        RealRoot root;
+        root.sign = r < 0 ? -1 : 1;
+        root.lower = Rational(lo);
+        root.upper = Rational(hi);
+        out.push_back(std::move(root));
+        prev_hi = hi;
+        ok = true;
+      }
+    }
+    if (!ok) return false;
+  }
+  return true;
+}
+
+/// The coefficients of a FLINT polynomial (degree <= 4) as Integers.
+int integer_coefficients(const fmpz_poly_t p, Integer (&out)[5]) {
+  const slong n = fmpz_poly_degree(p);
+  for (slong i = 0; i <= n; ++i) fmpz_get_mpz(out[i].mpz(), fmpz_poly_get_coeff_ptr(p, i));
+  return static_cast<int>(n);
+}
+
+/// The real roots of h as certified_real_roots(), when two of them are closer than doubles resolve
+/// (near a tangency, two roots of f~ about sqrt(delta) apart): h is moved exactly to a critical point
+/// c = M 2^e (a double approximation of a root of h', M an integer, 2^e its last place), as
+///   Q(z) = 2^(-e n) h((M + z) 2^e)   (integer coefficients; a FLINT Taylor shift),
+/// whose roots z = (x - c) / 2^e put the cluster at O(1) with a separation doubles resolve; Q's roots
+/// are certified as h's were (Q has h's signs at corresponding points, a positive factor) and mapped
+/// back exactly. Each critical point is tried in turn.
+bool zoomed_real_roots(const Integer* h, int n, std::size_t expected, std::vector<RealRoot>& out) {
+  if (n < 2) return false;
+  double c[5], d[4], critical[4];
+  const double bound = scaled_doubles(h, n, c);
+  if (bound == 0) return false;
+  for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
+  const int m = approximate_real_roots(d, n - 1, bound, critical);
+  fmpz_poly_t p, q;
+  fmpz_poly_init(p);
+  fmpz_poly_init(q);
+  fmpz_t shift, coeff;
+  fmpz_init(shift);
+  fmpz_init(coeff);
+  bool ok = false;
+  for (int k = 0; k < m && !ok; ++k) {
+    const double x = critical[k];
+    if (x == 0 || !std::isfinite(x)) continue;
+    const int e = std::ilogb(x) - 52;  // x = M 2^e with |M| < 2^53
+    if (e >= 0) continue;
+    fmpz_set_si(shift, static_cast<slong>(std::ldexp(x, -e)));
+    for (int i = 0; i <= n; ++i) {  // P(y) = sum h_i 2^(-e (n - i)) y^i, then Q(z) = P(M + z)
+      fmpz_set_mpz(coeff, h[i].mpz());
+      fmpz_mul_2exp(coeff, coeff, static_cast<ulong>(-e) * static_cast<ulong>(n - i));
+      fmpz_poly_set_coeff_fmpz(p, i, coeff);
+    }
+    fmpz_poly_taylor_shift(q, p, shift);
+    Integer qc[5];
+    integer_coefficients(q, qc);
+    std::vector<RealRoot> zs;
+    if (qc[0] == 0 || !certified_real_roots(qc, n, expected, zs)) continue;
+    const Rational centre(x), unit(std::ldexp(1.0, e));
+    ok = true;
+    for (RealRoot& r : zs) {
+      r.lower = centre + r.lower * unit;
+      r.upper = centre + r.upper * unit;
+      const int sl = CGAL::sign(r.lower), su = CGAL::sign(r.upper);
+      if (sl == 0 || sl != su) ok = false;
+      r.sign = sl;
+    }
+    if (ok) out.insert(out.end(), zs.begin(), zs.end());
+  }
+  fmpz_clear(shift);
+  fmpz_clear(coeff);
+  fmpz_poly_clear(p);
+  fmpz_poly_clear(q);
+  return ok;
+}
+
 }  // namespace
 
 std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc,
@@ -274,79 +437,82 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
     fmpz_poly_discriminant(z, f.p);
     disc = fmpz_sgn(z);
   }
-  const bool coprime = certainly_coprime(f.p, s.p) || (fmpz_poly_resultant(z, f.p, s.p), !fmpz_is_zero(z));
+  if (disc == 0) {
+    fmpz_clear(z);
+    return std::nullopt;
+  }
+  // f is square-free. Its common roots with s (special roots: every sphere has one) are divided
+  // out when they are rational: g = gcd(f, s) of degree 1, or 2 with a square discriminant. Each is
+  // a simple root of f, and the cofactor h = f / g (= f~ up to a constant) is coprime to s.
+  std::vector<RealRoot> common;
+  Integer hc[5];
+  const Integer* hp = fc.data();  // h's coefficients: f's own when f and s are coprime
+  int n = 4, disc_h = disc;
+  bool ok = true;
+  if (!certainly_coprime(f.p, s.p)) {
+    fmpz_poly_t g, h;
+    fmpz_poly_init(g);
+    fmpz_poly_init(h);
+    fmpz_poly_gcd(g, f.p, s.p);
+    const slong dg = fmpz_poly_degree(g);
+    ok = dg <= 2 && fmpz_poly_divides(h, f.p, g) && fmpz_poly_degree(h) >= 2;
+    if (ok && dg >= 1) {
+      Integer gc[5];
+      integer_coefficients(g, gc);
+      auto add = [&](const Rational& x) {
+        RealRoot r;
+        r.exact = x;
+        r.lower = r.upper = x;
+        r.sign = CGAL::sign(x) < 0 ? -1 : 1;
+        r.multiplicity_s = (2 * sc[2] * x + sc[1] == 0) ? 2 : 1;  // 2 when s is a square
+        common.push_back(std::move(r));
+      };
+      if (dg == 1) {
+        add(Rational(-gc[0], gc[1]));
+      } else {
+        Integer d = gc[1] * gc[1] - 4 * gc[2] * gc[0], root;  // root: fresh, written through mpz()
+        ok = d > 0 && mpz_perfect_square_p(d.mpz());
+        if (ok) {
+          mpz_sqrt(root.mpz(), d.mpz());
+          const Integer den = 2 * gc[2];
+          add(Rational(-gc[1] - root, den));
+          add(Rational(-gc[1] + root, den));
+          if (common[1].exact < common[0].exact) std::swap(common[0], common[1]);
+        }
+      }
+      fmpz_poly_discriminant(z, h);
+      disc_h = fmpz_sgn(z);
+      ok = ok && disc_h != 0 && certainly_no_rational_root(h);  // f(0) != 0: no root of g is 0
+      n = integer_coefficients(h, hc);
+      hp = hc;
+    } else if (ok) {  // gcd 1 after all
+      ok = certainly_no_rational_root(f.p);
+    }
+    fmpz_poly_clear(g);
+    fmpz_poly_clear(h);
+  } else {
+    ok = certainly_no_rational_root(f.p);
+  }
   fmpz_clear(z);
-  if (disc == 0 || !coprime) return std::nullopt;
-  if (!certainly_no_rational_root(f.p)) return std::nullopt;
-  // Coefficients as doubles, all divided by one power of two (the roots do not move).
-  long top = 0;
-  for (const auto& c : fc)
-    if (c != 0) top = std::max<long>(top, static_cast<long>(mpz_sizeinbase(c.mpz(), 2)));
-  double c[5];
-  for (std::size_t i = 0; i < 5; ++i) {
-    long ex = 0;
-    const double m = mpz_get_d_2exp(&ex, fc[i].mpz());
-    c[i] = std::ldexp(m, static_cast<int>(std::max<long>(ex - top, -2000)));
-  }
-  // Cauchy bound 1 + max |c_i / c_4|, as a double (roots beyond the double range: no fast path).
-  double bound = 0;
-  for (int i = 0; i < 4; ++i) bound = std::max(bound, std::fabs(c[i] / c[4]));
-  bound = 2 * (1 + bound);
-  if (!std::isfinite(bound) || bound > 1e300) return std::nullopt;
-  double roots[4];
-  const std::size_t count = static_cast<std::size_t>(approximate_real_roots(c, 4, bound, roots));
-  // The sign of f at a double: the double Horner value when it exceeds its error bound (each c_i
-  // is f_i 2^-top truncated, relative error < 2^-52, plus at most 8 roundings: 2^-48 times the
-  // magnitude covers both with room), else exactly. Only when no coefficient was flushed towards 0.
-  bool relative = true;
-  for (std::size_t i = 0; i < 5; ++i)
-    if (fc[i] != 0 && !(std::fabs(c[i]) >= 0x1p-900)) relative = false;
-  auto sign_at = [&](double x) {
-    if (relative) {
-      double v = c[4], mag = std::fabs(c[4]);
-      for (int i = 3; i >= 0; --i) {
-        v = v * x + c[i];
-        mag = mag * std::fabs(x) + std::fabs(c[i]);
-      }
-      const double error = 0x1p-48 * mag;
-      if (std::isfinite(mag) && mag >= 0x1p-900) {
-        if (v > error) return 1;
-        if (v < -error) return -1;
-      }
-    }
-    return sign_at_double(fc, x);
-  };
-  const std::size_t expected = disc > 0 ? 4 : 2;  // square-free: 4 or 0 real roots, or exactly 2
-  if (count != expected) return std::nullopt;
+  if (!ok) return std::nullopt;
+  // Square-free h of degree n: n real roots when Disc(h) > 0 (for n = 4 also none: then the doubles
+  // find none, and the general path decides), else 1 for a cubic, n - 2 otherwise.
+  const std::size_t expected = static_cast<std::size_t>(disc_h > 0 ? n : (n == 3 ? 1 : n - 2));
   RootStructure rs;
-  rs.degree_ftilde = 4;
-  rs.sign_disc_f = rs.sign_disc_ftilde = disc;
-  rs.nonreal = static_cast<int>(4 - expected);
-  // Certify: disjoint intervals around the approximations with exact opposite signs at the ends; as
-  // many as there are real roots, so each isolates exactly one (simple, irrational) root.
-  double prev_hi = -HUGE_VAL;
-  for (std::size_t k = 0; k < count; ++k) {
-    const double r = roots[k];
-    if (r == 0 || !std::isfinite(r)) return std::nullopt;
-    bool ok = false;
-    for (int widen = 0; widen < 4 && !ok; ++widen) {
-      const double delta = std::fabs(r) * std::ldexp(1.0, -44 + 10 * widen);
-      const double lo = r - delta, hi = r + delta;
-      if (!(lo > prev_hi) || (lo < 0) != (r < 0) || (hi < 0) != (r < 0)) break;
-      if (k + 1 < count && !(hi < roots[k + 1])) break;
-      const int sl = sign_at(lo), sh = sign_at(hi);
-      if (sl != 0 && sh != 0 && sl != sh) {
-        RealRoot root;
-        root.sign = r < 0 ? -1 : 1;
-        root.lower = Rational(lo);
-        root.upper = Rational(hi);
-        rs.real_roots.push_back(std::move(root));
-        prev_hi = hi;
-        ok = true;
-      }
-    }
-    if (!ok) return std::nullopt;
+  if (!certified_real_roots(hp, n, expected, rs.real_roots)) {
+    rs.real_roots.clear();
+    if (!zoomed_real_roots(hp, n, expected, rs.real_roots)) return std::nullopt;
   }
+  for (RealRoot& r : common) {  // the rational roots between the certified intervals (never inside one)
+    auto at = rs.real_roots.begin();
+    while (at != rs.real_roots.end() && at->upper < *r.exact) ++at;
+    if (at != rs.real_roots.end() && at->lower <= *r.exact) return std::nullopt;
+    rs.real_roots.insert(at, std::move(r));
+  }
+  rs.degree_ftilde = n;
+  rs.sign_disc_f = disc;
+  rs.sign_disc_ftilde = disc_h;
+  rs.nonreal = 4 - static_cast<int>(rs.real_roots.size());
   return rs;
 }
 
@@ -377,7 +543,6 @@ RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<I
     r.multiplicity_f = static_cast<int>(mult);
     if (s.degree() >= 0 && ak.is_zero_at_1_object()(s, root))
       r.multiplicity_s = ak.is_zero_at_1_object()(ds, root) ? 2 : 1;
-    r.exact = rational_value(ak, root, fc);
     real_with_mult += r.multiplicity_f;
     rs.real_roots.push_back(std::move(r));
   }
@@ -392,6 +557,19 @@ RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<I
     for (std::size_t i = 1; i < roots.size(); ++i)
       if (!(rs.real_roots[i - 1].upper < rs.real_roots[i].lower)) disjoint = false;
     if (disjoint || bits > 4096) break;
+  }
+  // The exact value of each rational root: the one rational root of f in its isolating interval.
+  const std::vector<Rational> rational = rational_roots(fc);
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    RealRoot& r = rs.real_roots[i];
+    const bool isolated = (i == 0 || rs.real_roots[i - 1].upper < r.lower) &&
+                          (i + 1 == roots.size() || r.upper < rs.real_roots[i + 1].lower);
+    if (!isolated) {  // intervals still overlapping (never seen): test this root on its own
+      r.exact = rational_value(ak, roots[i].first, fc);
+      continue;
+    }
+    for (const Rational& q : rational)
+      if (r.lower <= q && q <= r.upper) r.exact = q;
   }
   rs.nonreal = 4 - real_with_mult;
   // Non-real roots of multiplicity >= 2: look at the square-free factors of multiplicity >= 2.

@@ -73,6 +73,11 @@ struct DecisionSigns {
   QuarticSigns quartic;
   USign vertex = USign::indeterminate();
   USign graeffe = USign::indeterminate();
+  /// Set by the semi-static stage when Disc(f) is uncertain and its computed value lies far inside
+  /// its error bound (below 1/64 of it, semi_static_filter.cpp): the pair is within rounding of a
+  /// multiple root, and no other evaluation from the same double data (intervals) is expected to
+  /// certify that sign -- the ladder goes straight to the exact stage (math.md §11).
+  bool disc_hopeless = false;
 };
 
 template <class NT>

@@ -81,6 +81,80 @@ class IntegerForm {
   mpz_t z_[4][4];
 };
 
+/// A positive multiple of a polynomial over Q with integer coefficients: exact signs at rationals by
+/// sum z_k n^k d^(deg - k) for x = n / d, d > 0 (integer products only, where a rational Horner
+/// scheme canonicalizes at every step).
+class IntegerPoly {
+ public:
+  IntegerPoly() = default;
+  explicit IntegerPoly(const Poly& q) {
+    Integer l(1);
+    forms::lcm_of_denominators(q.begin(), q.end(), l);
+    z_.resize(q.size());
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      forms::scaled_numerator(q[k], l, z_[k].mpz());
+      bits_ = std::max(bits_, mpz_sizeinbase(z_[k].mpz(), 2));
+    }
+  }
+  int sign(const Rational& x) const {
+    if (z_.empty()) return 0;
+    Integer acc, dp(1), t;  // fresh objects: Gmpz shares its value on copy, mpz() does not unshare
+    mpz_set(acc.mpz(), z_.back().mpz());
+    for (std::size_t k = z_.size() - 1; k-- > 0;) {
+      mpz_mul(dp.mpz(), dp.mpz(), mpq_denref(x.mpq()));
+      mpz_mul(acc.mpz(), acc.mpz(), mpq_numref(x.mpq()));
+      mpz_mul(t.mpz(), z_[k].mpz(), dp.mpz());
+      mpz_add(acc.mpz(), acc.mpz(), t.mpz());
+    }
+    return mpz_sgn(acc.mpz());
+  }
+  /// The Newton step t - q(t)/q'(t) from t = n/d rounded down to a multiple of 2^e, on integers
+  /// (one division, no canonicalization); nullopt where q' vanishes.
+  std::optional<Rational> newton_floor(const Rational& t, long e) const {
+    if (z_.size() < 2) return std::nullopt;
+    const mpz_srcptr n = mpq_numref(t.mpq()), d = mpq_denref(t.mpq());
+    // v = d^deg q(t) and s = d^(deg - 1) q'(t) by Horner on the homogenized forms: v <- v n + z_k d^(deg - k)
+    // and, differentiating the non-homogeneous step, s <- s n + v (the old v).
+    Integer v, s, t1, dp(1);  // fresh objects: Gmpz shares its value on copy, mpz() does not unshare
+    mpz_set(v.mpz(), z_.back().mpz());
+    for (std::size_t k = z_.size() - 1; k-- > 0;) {
+      mpz_mul(s.mpz(), s.mpz(), n);
+      mpz_add(s.mpz(), s.mpz(), v.mpz());
+      mpz_mul(dp.mpz(), dp.mpz(), d);
+      mpz_mul(v.mpz(), v.mpz(), n);
+      mpz_mul(t1.mpz(), z_[k].mpz(), dp.mpz());
+      mpz_add(v.mpz(), v.mpz(), t1.mpz());
+    }
+    if (mpz_sgn(s.mpz()) == 0) return std::nullopt;
+    // t - v / (s d) = (n s - v) / (s d), then divided by 2^e and floored.
+    Integer num, den;
+    mpz_mul(num.mpz(), n, s.mpz());
+    mpz_sub(num.mpz(), num.mpz(), v.mpz());
+    mpz_mul(den.mpz(), s.mpz(), d);
+    if (mpz_sgn(den.mpz()) < 0) {
+      mpz_neg(den.mpz(), den.mpz());
+      mpz_neg(num.mpz(), num.mpz());
+    }
+    if (e >= 0)
+      mpz_mul_2exp(den.mpz(), den.mpz(), static_cast<mp_bitcnt_t>(e));
+    else
+      mpz_mul_2exp(num.mpz(), num.mpz(), static_cast<mp_bitcnt_t>(-e));
+    mpz_fdiv_q(num.mpz(), num.mpz(), den.mpz());
+    Rational out(num);
+    if (e >= 0)
+      mpq_mul_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(e));
+    else
+      mpq_div_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(-e));
+    return out;
+  }
+  std::size_t degree() const { return z_.empty() ? 0 : z_.size() - 1; }
+  std::size_t bits() const { return bits_; }  ///< the largest coefficient's bit length
+
+ private:
+  std::vector<Integer> z_;
+  std::size_t bits_ = 0;
+};
+
 /// A quadric's exact matrix, asked for on first use: the certificates of E and I with known roots
 /// never read the matrices, so a quadric made from doubles builds no rationals for them.
 template <class Quadric>
@@ -116,26 +190,10 @@ struct Pair {
       s = anysize::to_poly(sq.data(), 3);
     }
     ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s);
-    Integer l(1);  // f times the lcm of its denominators: integer coefficients for f_sign
-    forms::lcm_of_denominators(f.begin(), f.end(), l);
-    fz.resize(f.size());
-    for (std::size_t k = 0; k < f.size(); ++k) forms::scaled_numerator(f[k], l, fz[k].mpz());
+    fz = IntegerPoly(f);
   }
-  std::vector<Integer> fz;
-  /// The sign of f(l), from the integer coefficients: sum fz_k n^k d^(deg - k) for l = n / d, d > 0
-  /// (integer products only, where a rational Horner scheme canonicalizes at every step).
-  int f_sign(const Rational& x) const {
-    if (fz.empty()) return 0;
-    Integer acc, dp(1), t;  // fresh objects: Gmpz shares its value on copy, mpz() does not unshare
-    mpz_set(acc.mpz(), fz.back().mpz());
-    for (std::size_t k = fz.size() - 1; k-- > 0;) {
-      mpz_mul(dp.mpz(), dp.mpz(), mpq_denref(x.mpq()));
-      mpz_mul(acc.mpz(), acc.mpz(), mpq_numref(x.mpq()));
-      mpz_mul(t.mpz(), fz[k].mpz(), dp.mpz());
-      mpz_add(acc.mpz(), acc.mpz(), t.mpz());
-    }
-    return mpz_sgn(acc.mpz());
-  }
+  IntegerPoly fz;  ///< f with integer coefficients, for exact signs
+  int f_sign(const Rational& x) const { return fz.sign(x); }
   /// X^T Q X for X = (x, 1).
   static Rational form(const Matrix4& q, const V3& x) {
     Rational acc = q(3, 3);
@@ -239,7 +297,7 @@ struct Sturm {
 /// The real roots of q (any degree <= 3 here) refined jointly: returns, level by level, dyadic
 /// points converging to every real root; `accept` is tried on each and the first accepted is returned.
 template <class Accept>
-std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, int max_bits = 700) {
+std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, std::size_t max_bits) {
   if (q_in.size() <= 1) return std::nullopt;
   const Poly q = anysize::quotient(q_in, anysize::monic_gcd(q_in, anysize::derivative(q_in)));  // square-free part
   if (q.size() <= 1) return std::nullopt;
@@ -257,7 +315,7 @@ std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, int m
   };
   std::vector<Box> boxes{{-b, b}}, isolated;
   // Isolate (bisection on Sturm counts), then refine every isolating interval one bit per round.
-  for (int round = 0; round < max_bits && !boxes.empty(); ++round) {
+  for (std::size_t round = 0; round < max_bits && !boxes.empty(); ++round) {
     std::vector<Box> next;
     for (const Box& box : boxes) {
       const Rational mid = (box.lo + box.hi) / 2;
@@ -383,84 +441,16 @@ bool hard_case(const Pair& pr, Certificate& c) {
   return true;
 }
 
-/// Last resort for the witness points of a crossing: the extremes of p on the ellipsoid's surface
-/// sought in double precision (a grid over the sphere mapped onto the surface, then local steps),
-/// each candidate pulled towards the centre until it lies in the solid ellipsoid exactly and tried
-/// exactly. Only a search: nothing is claimed unless the exact checks pass.
-void search_surface(const Pair& pr, const V3& centre, bool want_inside, std::optional<V3>& found,
-                    const std::function<void(const V3&)>& consider) {
-  double m[3][3], c[3];
-  for (int i = 0; i < 3; ++i) {
-    c[i] = CGAL::to_double(centre[i]);
-    for (int j = 0; j < 3; ++j) m[i][j] = CGAL::to_double(pr.E(i, j));
-  }
-  const double r2 = -CGAL::to_double(pr.e_at(centre));
-  if (!std::isfinite(r2) || !(r2 > 0)) return;
-  // Cholesky M = G G^T; x = c + sqrt(r2) G^{-T} u, |u| = 1, lies on the surface.
-  double g[3][3] = {};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j <= i; ++j) {
-      double sum = m[i][j];
-      for (int k = 0; k < j; ++k) sum -= g[i][k] * g[j][k];
-      g[i][j] = i == j ? std::sqrt(std::max(sum, 1e-300)) : sum / g[j][j];
-    }
-  auto point = [&](double th, double ph, double out[3]) {
-    const double u[3] = {std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
-    double y[3];  // solve G^T y = u (back substitution)
-    for (int i = 2; i >= 0; --i) {
-      double sum = u[i];
-      for (int k = i + 1; k < 3; ++k) sum -= g[k][i] * y[k];
-      y[i] = sum / g[i][i];
-    }
-    for (int i = 0; i < 3; ++i) out[i] = c[i] + std::sqrt(std::max(r2, 0.0)) * y[i];
-  };
-  auto p_of = [&](const double x[3]) {
-    double acc = CGAL::to_double(pr.P(3, 3));
-    for (int i = 0; i < 3; ++i) {
-      acc += 2 * CGAL::to_double(pr.P(i, 3)) * x[i];
-      for (int j = 0; j < 3; ++j) acc += x[i] * CGAL::to_double(pr.P(i, j)) * x[j];
-    }
-    return want_inside ? -acc : acc;  // maximise
-  };
-  const double pi = 3.14159265358979323846;
-  double best_th = 0, best_ph = 0, best = -HUGE_VAL, x[3];
-  for (int i = 0; i <= 64; ++i)
-    for (int j = 0; j < 128; ++j) {
-      const double th = pi * i / 64, ph = 2 * pi * j / 128;
-      point(th, ph, x);
-      const double v = p_of(x);
-      if (v > best) best = v, best_th = th, best_ph = ph;
-    }
-  for (double step = pi / 64; step > 1e-15; step /= 2)
-    for (int k = 0; k < 8; ++k) {
-      bool moved = false;
-      for (const auto& d : {std::pair<double, double>{step, 0}, {-step, 0}, {0, step}, {0, -step}}) {
-        point(best_th + d.first, best_ph + d.second, x);
-        const double v = p_of(x);
-        if (v > best) best = v, best_th += d.first, best_ph += d.second, moved = true;
-      }
-      if (!moved) break;
-    }
-  point(best_th, best_ph, x);
-  for (double xi : x)
-    if (!std::isfinite(xi)) return;
-  for (int k = 1; k <= 60 && !found; ++k) {
-    Integer two_k(1);
-    mpz_mul_2exp(two_k.mpz(), two_k.mpz(), static_cast<mp_bitcnt_t>(k));
-    const Rational t = Rational(1) - Rational(1) / Rational(two_k);
-    V3 q;
-    for (int i = 0; i < 3; ++i) q[i] = centre[i] + t * (exact_rational(x[i]) - centre[i]);
-    consider(q);
-  }
-}
-
 /// lambda with f(lambda) > 0 in the domain: then lambda P + E is positive definite (lambda A + M is,
 /// and det = f(lambda) > 0). The maximum of f over the domain is positive and attained at a root
 /// of f', so points converging to the roots of f' find one.
 template <class InDomain>
 std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
-  return search_near_roots(anysize::derivative(pr.f),
-                           [&](const Rational& l) { return in_domain(l) && pr.f_sign(l) > 0; });
+  // The positive maximum of f sits at a root of f'; its margin, like a crossing's, needs at most a
+  // multiple of the coefficient bits.
+  return search_near_roots(
+      anysize::derivative(pr.f), [&](const Rational& l) { return in_domain(l) && pr.f_sign(l) > 0; },
+      1024 + 16 * pr.fz.bits());
 }
 
 /// The curve search of crossing_points first in doubles (a search only: every candidate is checked
@@ -468,13 +458,14 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// point and lambda in (lambda_s, 0) for the outside one; the point found, and the same point
 /// pulled towards the centre (exact rationals), are tried. Most crossings end here, without the
 /// exact bisection on rationals.
-void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V3>& inside,
-                         const std::optional<V3>& outside, const std::function<void(const V3&)>& consider) {
+void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& lambda_s, const V3& centre,
+                         const std::optional<V3>& inside, const std::optional<V3>& outside,
+                         const std::function<void(const V3&)>& consider) {
   double E[4][4], P[4][4];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
-      E[i][j] = CGAL::to_double(pr.E(i, j));
-      P[i][j] = CGAL::to_double(pr.P(i, j));
+      E[i][j] = CGAL::to_double(em(i, j));
+      P[i][j] = CGAL::to_double(pm(i, j));
       if (!std::isfinite(E[i][j]) || !std::isfinite(P[i][j])) return;
     }
   auto x_of = [&](double l, double x[3]) {
@@ -574,9 +565,9 @@ void double_curve_search(const Pair& pr, const V3& centre, const std::optional<V
   if (!outside) {
     // lambda_s from above: the upper end of its stored enclosure (a search needs no more), else a
     // rational approximation.
-    const double ls = std::isfinite(pr.ls.hi) && pr.ls.hi - pr.ls.lo <= 0x1p-40 * std::fabs(pr.ls.hi)
-                          ? pr.ls.hi
-                          : CGAL::to_double(approximate(pr.ls, pr.ls.value, 64, true));
+    const double ls = std::isfinite(lambda_s.hi) && lambda_s.hi - lambda_s.lo <= 0x1p-40 * std::fabs(lambda_s.hi)
+                          ? lambda_s.hi
+                          : CGAL::to_double(approximate(lambda_s, lambda_s.value, 64, true));
     if (std::isfinite(ls) && ls < 0) {
       // approach lambda_s from 0: the first lambda with e(x(lambda)) > 0
       for (double l = ls / 2, step = ls / 4; l > ls && l < 0; l += step, step /= 2) {
@@ -631,8 +622,286 @@ std::optional<V3> approximate_centre(const Matrix4& e) {
   return out;
 }
 
+Poly product(const Poly& a, const Poly& b) {
+  if (a.empty() || b.empty()) return {};
+  Poly out(a.size() + b.size() - 1, Rational(0));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
+  return anysize::trimmed(std::move(out));
+}
+
+Poly difference(Poly a, const Poly& b) {
+  if (a.size() < b.size()) a.resize(b.size(), Rational(0));
+  for (std::size_t i = 0; i < b.size(); ++i) a[i] -= b[i];
+  return anysize::trimmed(std::move(a));
+}
+
+std::logic_error internal_error(const std::string& what) {
+  return std::logic_error("relpos internal error: " + what + " (please report the input)");
+}
+
+/// The signs of e and p along the curve x(lambda), lambda in (lambda_s, oo), from two polynomials
+/// (math.md §8): lambda p + e is f/s at x(lambda), and its derivative in lambda is p(x(lambda))
+/// (the envelope theorem), so with s > 0 there
+///   p(x(lambda)) s^2 = f' s - f s'   and   e(x(lambda)) s^2 = f s - lambda (f' s - f s').
+/// e(x(lambda)) increases on (0, oo) and decreases on (lambda_s, 0) while p(x(lambda)) decreases on
+/// both (f/s is concave): the optimisers of p over the solid are x(lambda*) at the root lambda* of
+/// the second polynomial, or the limit at lambda_s in the hard case.
+struct Secular {
+  IntegerPoly e, p;
+  /// The most bisection steps or approximation bits a witness may take before the search is
+  /// declared broken: the margin of p at its optimiser and the distance of lambda* to the other
+  /// polynomial's roots are algebraic numbers whose size the coefficients bound (root separation),
+  /// so a crossing never needs more than a multiple of the coefficient bits.
+  std::size_t budget;
+  explicit Secular(const Pair& pr) {
+    const Poly gp = difference(product(anysize::derivative(pr.f), pr.s), product(pr.f, anysize::derivative(pr.s)));
+    const Poly ge = difference(product(pr.f, pr.s), product(Poly{Rational(0), Rational(1)}, gp));
+    e = IntegerPoly(ge);
+    p = IntegerPoly(gp);
+    budget = 1024 + 16 * (e.bits() + p.bits() + pr.fz.bits());
+  }
+};
+
+Rational power_of_two(long k) {
+  Rational r(1);
+  if (k >= 0)
+    mpq_mul_2exp(r.mpq(), r.mpq(), static_cast<mp_bitcnt_t>(k));
+  else
+    mpq_div_2exp(r.mpq(), r.mpq(), static_cast<mp_bitcnt_t>(-k));
+  return r;
+}
+
+/// floor(log2 |x|) up to one, for x != 0.
+long log2_of(const Rational& x) {
+  return static_cast<long>(mpz_sizeinbase(mpq_numref(x.mpq()), 2)) -
+         static_cast<long>(mpz_sizeinbase(mpq_denref(x.mpq()), 2));
+}
+
+/// x rounded down to a multiple of 2^e.
+Rational floor_to(const Rational& x, long e) {
+  Rational scaled = x;
+  if (e >= 0)
+    mpq_div_2exp(scaled.mpq(), scaled.mpq(), static_cast<mp_bitcnt_t>(e));
+  else
+    mpq_mul_2exp(scaled.mpq(), scaled.mpq(), static_cast<mp_bitcnt_t>(-e));
+  Integer n;
+  mpz_fdiv_q(n.mpz(), mpq_numref(scaled.mpq()), mpq_denref(scaled.mpq()));
+  return Rational(n) * power_of_two(e);
+}
+
+/// Shrinks the bracket of the one sign change of q between `good` (q <= 0) and `bad` (q > 0),
+/// calling `accept` at every new good end until it returns true; false after `budget` rounds or
+/// once the bracket is `budget` bits below the scale of `bad`.
+/// Each round takes a Newton step from the midpoint (exact) and probes a dyadic neighbourhood of
+/// width |bad - good| 2^-k around it: when the probes bracket the sign change, the bracket becomes
+/// that neighbourhood and k doubles (quadratic convergence at a simple root), otherwise k halves
+/// and a bisection keeps the bracket at least halving. A root wanted to b bits costs O(log b)
+/// rounds near a simple root, and never more than b.
+template <class Accept>
+bool refine_root(const IntegerPoly& q, Rational good, Rational bad, Accept accept, std::size_t budget) {
+  if (accept(good)) return true;
+  long k = 2;
+  auto inside = [&](const Rational& x) { return good < bad ? good < x && x < bad : bad < x && x < good; };
+  auto step = [&](const Rational& x) {  // moves one end to x (inside the bracket); true if `good` moved
+    if (q.sign(x) <= 0) {
+      good = x;
+      return true;
+    }
+    bad = x;
+    return false;
+  };
+  const long top = log2_of(bad);  // bad != 0 (good may be 0): the scale the budget counts bits from
+  for (std::size_t round = 0; round < budget; ++round) {
+    const Rational width = good < bad ? bad - good : good - bad;
+    if (log2_of(width) < top - static_cast<long>(budget)) return false;  // as many bits as allowed
+    const Rational mid = (good + bad) / 2;
+    const long e = log2_of(width) - k;
+    const Rational delta = power_of_two(e);
+    std::optional<Rational> x0 = q.newton_floor(mid, e);
+    if (!x0 || !inside(*x0)) x0 = floor_to(mid, e);
+    // The probes in the order from good to bad.
+    Rational a = *x0 - delta, b = *x0 + 2 * delta;
+    if (bad < good) std::swap(a, b);
+    bool moved = false, bracketed = false;
+    if (inside(a)) {
+      moved = step(a);
+      if (moved && inside(b)) bracketed = !step(b), moved = true;
+    }
+    if (moved && accept(good)) return true;
+    const Rational now = good < bad ? bad - good : good - bad;
+    k = bracketed ? 2 * k : std::max(2L, k / 2);
+    if (2 * now > width && step((good + bad) / 2) && accept(good)) return true;
+  }
+  return false;
+}
+
+/// The point of the solid with p < 0 from the min side (lambda > 0). x(0) is the centre; else the
+/// minimiser x(lambda*) lies on the surface, lambda* > 0 the root of e(x(lambda)). Its bracket is
+/// found on powers of two (galloping exponents: a body of size 2^-k costs O(log k) steps to reach
+/// its scale), then bisected; every lower end lambda has e(x(lambda)) <= 0, and as it tends to
+/// lambda* p(x(lambda)) tends to min p < 0, so the first lower end with p(x(lambda)) < 0 gives the
+/// point, exactly on the curve and inside the solid, after as many bits as the margin of p needs.
+void min_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found,
+                    const std::function<void(const V3&)>& consider) {
+  auto try_lambda = [&](const Rational& l) {
+    if (sec.e.sign(l) <= 0 && sec.p.sign(l) < 0)
+      if (const auto x = pr.x_of(l)) consider(*x);
+  };
+  try_lambda(Rational(0));
+  if (found) return;
+  // lo, hi > 0 with e(x(lo)) <= 0 < e(x(hi)).
+  const int up = sec.e.sign(Rational(1)) <= 0 ? 1 : -1;
+  long k = 0, prev = 0;
+  for (long step = 1; (sec.e.sign(power_of_two(k)) <= 0) == (up > 0); step *= 2) {
+    if (static_cast<std::size_t>(step) > sec.budget) throw internal_error("no bracket of the minimiser's multiplier");
+    prev = k;
+    k = up * step;
+  }
+  // Down to one binade: binary search on the exponent between prev and k.
+  long lo_exp = std::min(prev, k), hi_exp = std::max(prev, k);
+  while (hi_exp - lo_exp > 1) {
+    const long mid = lo_exp + (hi_exp - lo_exp) / 2;
+    (sec.e.sign(power_of_two(mid)) <= 0 ? lo_exp : hi_exp) = mid;
+  }
+  refine_root(
+      sec.e, power_of_two(lo_exp), power_of_two(hi_exp),
+      [&](const Rational& l) {
+        if (sec.p.sign(l) < 0)
+          if (const auto x = pr.x_of(l)) consider(*x);
+        return found.has_value();
+      },
+      sec.budget);
+}
+
+/// A rational in (lambda_s, 0) within about 2^-bits of lambda_s (relative to lambda_s, or to the
+/// irrational part's coefficient); nullopt while the approximation is too coarse.
+std::optional<Rational> above_lambda_s(const LambdaS& ls, unsigned bits) {
+  Rational l = approximate(ls, ls.value, bits, true);
+  if (ls.rational()) {
+    Rational step = l < 0 ? -l : l;
+    mpq_div_2exp(step.mpq(), step.mpq(), bits);
+    l += step;
+  }
+  if (!(l < 0) || ls.compare(l) <= 0) return std::nullopt;
+  return l;
+}
+
+/// Hard case of the max side: the maximisers are x^ + w, w in the kernel of lambda_s A + M with
+/// w^T M w = -e(x^) (hard_case); x^ and the kernel's basis are rounded to `bits` and the point
+/// x0 + t w0 taken with t a rational just inside the roots of e(x0 + t w0) = 0 (exact).
+void kernel_walk(const Pair& pr, const Certificate& hard, unsigned bits,
+                 const std::function<void(const V3&)>& consider) {
+  V3 x0;
+  for (int i = 0; i < 3; ++i) x0[i] = approximate(pr.ls, {hard.centre[i].a, hard.centre[i].b}, bits, true);
+  for (const auto& dir : hard.directions) {
+    V3 w;
+    for (int i = 0; i < 3; ++i) w[i] = approximate(pr.ls, {dir[i].a, dir[i].b}, bits, true);
+    // e(x0 + t w) = e(x0) + 2 t w^T (M x0 + m) + t^2 w^T M w <= 0 between its roots.
+    Rational mw(0), g(0);
+    for (int i = 0; i < 3; ++i) {
+      Rational mi = pr.E(i, 3), wi(0);
+      for (int j = 0; j < 3; ++j) {
+        mi += pr.E(i, j) * x0[j];
+        wi += pr.E(i, j) * w[j];
+      }
+      g += w[i] * mi;
+      mw += w[i] * wi;
+    }
+    const Rational disc = g * g - mw * pr.e_at(x0);
+    if (disc < 0 || mw == 0) continue;
+    const Rational r = sqrt_below(disc, bits);
+    for (int sign : {1, -1}) {
+      V3 x;
+      const Rational t = (-g + sign * r) / mw;  // |r| <= sqrt(disc): inside the roots
+      for (int i = 0; i < 3; ++i) x[i] = x0[i] + t * w[i];
+      consider(x);
+    }
+  }
+}
+
+/// The point of the solid with p > 0 from the max side (lambda in (lambda_s, 0)), as the min side
+/// with the order reversed: lambda* in (lambda_s, 0) is bracketed by 0 and rationals approaching
+/// lambda_s from above with doubling precision. When e(x(lambda)) stays <= 0 up to lambda_s (the
+/// hard case), the maximiser is a limit point: the approach itself reaches it when p > 0 at
+/// x^ = lim x(lambda), and the walk along the kernel of lambda_s A + M otherwise; both are tried
+/// at every precision, so the search ends whichever case holds.
+void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found,
+                    const std::function<void(const V3&)>& consider) {
+  auto try_lambda = [&](const Rational& l) {
+    if (sec.e.sign(l) <= 0 && sec.p.sign(l) > 0)
+      if (const auto x = pr.x_of(l)) consider(*x);
+  };
+  try_lambda(Rational(0));
+  if (found) return;
+  std::optional<Rational> lo;
+  std::optional<Certificate> hard;
+  for (unsigned bits = 4; bits <= sec.budget && !found && !lo; bits *= 2) {
+    const std::optional<Rational> l = above_lambda_s(pr.ls, bits);
+    if (!l) continue;
+    if (sec.e.sign(*l) > 0) {
+      lo = l;
+      break;
+    }
+    try_lambda(*l);
+    if (found) return;
+    if (!hard) {
+      hard.emplace();
+      if (!hard_case(pr, *hard)) hard->directions.clear();
+    }
+    kernel_walk(pr, *hard, bits, consider);
+  }
+  if (!lo) return;
+  refine_root(
+      sec.e, Rational(0), *lo,
+      [&](const Rational& l) {
+        if (sec.p.sign(l) > 0)
+          if (const auto x = pr.x_of(l)) consider(*x);
+        return found.has_value();
+      },
+      sec.budget);
+}
+
+/// Whether the body is below 2^-20 of its distance to the origin (or its size is not a finite
+/// double): then doubles around its centre cannot resolve it, and the search runs in its frame.
+bool small_for_doubles(const Matrix4& e, const V3& centre) {
+  double c[3], least = HUGE_VAL, far = 0, r2 = CGAL::to_double(e(3, 3));
+  for (int i = 0; i < 3; ++i) c[i] = CGAL::to_double(centre[i]);
+  for (int i = 0; i < 3; ++i) {
+    r2 += 2 * CGAL::to_double(e(i, 3)) * c[i];
+    for (int j = 0; j < 3; ++j) r2 += c[i] * CGAL::to_double(e(i, j)) * c[j];
+    least = std::min(least, CGAL::to_double(e(i, i)));
+    far = std::max(far, std::fabs(c[i]));
+  }
+  const double size = std::sqrt(-r2 / least);  // -e(c) = r2 up to rounding
+  return !(std::isfinite(size) && size > 0x1p-20 * far);
+}
+
+/// Q in the frame x = c + s u: H^T Q H for H = [[s I, c], [0, 1]].
+Matrix4 in_frame(const Matrix4& q, const V3& c, const Rational& s) {
+  Matrix4 out;
+  std::array<Rational, 3> g;  // Q's block times c plus its last column: half the gradient at c
+  for (int i = 0; i < 3; ++i) {
+    g[i] = q(i, 3);
+    for (int j = 0; j < 3; ++j) g[i] += q(i, j) * c[j];
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out(i, j) = s * s * q(i, j);
+    out(i, 3) = out(3, i) = s * g[i];
+  }
+  out(3, 3) = Pair::form(q, c);
+  return out;
+}
+
+/// A power of two near the body's largest semi-axis, sqrt(-e(c) / min_i M_ii) (bit lengths only).
+Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
+  long least = 0;
+  for (int i = 0; i < 3; ++i) least = i == 0 ? log2_of(e(0, 0)) : std::min(least, log2_of(e(i, i)));
+  return power_of_two((log2_of(-e_at_centre) - least) / 2);
+}
+
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
-bool crossing_points(const Pair& pr, Certificate& c) {
+void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   const IntegerForm ez(pr.E), pz(pr.P);  // exact signs of e and p at the candidates
   std::function<void(const V3&)> consider = [&](const V3& x) {
@@ -644,108 +913,37 @@ bool crossing_points(const Pair& pr, Certificate& c) {
   };
   // Candidates are pulled towards a dyadic centre (short exact arithmetic): the centre solved in
   // doubles, taken exactly, when it is strictly inside the solid (almost always); else the exact
-  // centre (Cramer's rule on integers, several times dearer), which the surface search below also
-  // needs, and then only.
-  std::optional<V3> centre;
-  bool centre_known = false;
-  auto exact_centre = [&] {
-    if (!centre_known) centre = centre_of(pr.E);
-    centre_known = true;
-  };
+  // centre (Cramer's rule on integers, several times dearer).
   std::optional<V3> pull = approximate_centre(pr.E);
-  if (pull && ez.sign(IntegerForm::Point(*pull)) >= 0) pull.reset();
-  if (!pull) {
-    exact_centre();
-    pull = centre;
-  }
-  if (pull) {
+  if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(pr.E, *pull)) {
     consider(*pull);
-    double_curve_search(pr, *pull, inside, outside, consider);
+    double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider);
+  } else if (const std::optional<V3> ctr = centre_of(pr.E)) {
+    // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
+    // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
+    // the points found are mapped back exactly.
+    const V3& at = *ctr;
+    consider(at);
+    const Rational scale = body_scale(pr.E, pr.e_at(at));
+    const std::function<void(const V3&)> mapped = [&](const V3& u) {
+      V3 x;
+      for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
+      consider(x);
+    };
+    double_curve_search(in_frame(pr.E, at, scale), in_frame(pr.P, at, scale), pr.ls, V3{}, inside, outside, mapped);
   }
-  // Along the curve x(lambda): for lambda > 0 it minimises lambda p + e, so while e(x(lambda)) <= 0
-  // it is the minimiser of p over a smaller solid, tending to the minimiser over the solid ellipsoid
-  // as e(x(lambda)) -> 0 (math.md §8, min side); for lambda in (lambda_s, 0) likewise the maximiser.
-  // Bisection on e(x(lambda)) = 0 with every point tried.
-  auto along = [&](Rational lo, Rational hi, bool want_inside) {
-    // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side.
-    for (int i = 0; i < 2000 && !(want_inside ? inside : outside); ++i) {
-      const Rational mid = (lo + hi) / 2;
-      const auto x = pr.x_of(mid);
-      if (!x) return;
-      consider(*x);
-      if (pr.e_at(*x) <= 0)
-        lo = mid;
-      else
-        hi = mid;
-    }
-  };
-  if (!inside) {  // lambda > 0: find hi with e(x(hi)) > 0 by doubling
-    Rational hi(1);
-    int k = 0;
-    while (k++ < 4000) {
-      const auto x = pr.x_of(hi);
-      if (x) {
-        consider(*x);
-        if (inside || pr.e_at(*x) > 0) break;
-      }
-      hi *= 2;
-    }
-    if (!inside) along(Rational(0), hi, true);
+  // What the double search missed, the exact optimisers give (they always exist in a crossing).
+  if (!inside || !outside) {
+    const Secular sec(pr);
+    if (!inside) min_side_point(pr, sec, inside, consider);
+    if (!outside) max_side_point(pr, sec, outside, consider);
   }
-  if (!outside) {  // lambda in (lambda_s, 0), approached from 0 towards lambda_s
-    for (unsigned bits = 4; bits <= 1024 && !outside; bits *= 2) {
-      const Rational lo = approximate(pr.ls, pr.ls.value, bits, true);
-      if (!(lo < 0) || pr.ls.compare(lo) <= 0) continue;
-      const auto x = pr.x_of(lo);
-      if (!x) continue;
-      consider(*x);
-      if (!outside && pr.e_at(*x) > 0) along(Rational(0), lo, false);
-    }
-  }
-  if (!outside) {  // the hard case of the max side: leave x(lambda) along the kernel of lambda_s A + M
-    Certificate hard;
-    const bool is_hard = hard_case(pr, hard);
-    for (unsigned bits = 8; is_hard && bits <= 1024 && !outside; bits *= 2) {
-      V3 x0;
-      for (int i = 0; i < 3; ++i) x0[i] = approximate(pr.ls, {hard.centre[i].a, hard.centre[i].b}, bits, true);
-      for (const auto& dir : hard.directions) {
-        V3 w;
-        for (int i = 0; i < 3; ++i) w[i] = approximate(pr.ls, {dir[i].a, dir[i].b}, bits, true);
-        // e(x0 + t w) = e(x0) + 2 t w^T (M x0 + m) + t^2 w^T M w <= 0 between its roots.
-        Rational mw(0), g(0);
-        for (int i = 0; i < 3; ++i) {
-          Rational mi = pr.E(i, 3), wi(0);
-          for (int j = 0; j < 3; ++j) {
-            mi += pr.E(i, j) * x0[j];
-            wi += pr.E(i, j) * w[j];
-          }
-          g += w[i] * mi;
-          mw += w[i] * wi;
-        }
-        const Rational e0 = pr.e_at(x0);
-        const Rational disc = g * g - mw * e0;
-        if (disc < 0 || mw == 0) continue;
-        for (int sign : {1, -1}) {
-          // t = (-g +- sqrt(disc)) / mw, pulled slightly inwards.
-          for (unsigned shrink = bits; shrink >= 4 && !outside; shrink /= 2) {
-            const Rational r = sqrt_below(disc, shrink);
-            const Rational t = (-g + sign * r) / mw;
-            V3 x;
-            for (int i = 0; i < 3; ++i) x[i] = x0[i] + t * w[i];
-            consider(x);
-          }
-        }
-      }
-    }
-  }
-  if (!inside || !outside) exact_centre();
-  if (centre && !inside) search_surface(pr, *centre, true, inside, consider);
-  if (centre && !outside) search_surface(pr, *centre, false, outside, consider);
-  if (!inside || !outside) return false;
+  if (!inside || !outside)
+    throw internal_error(std::string("no point of the solid ellipsoid with p ") + (inside ? "> 0" : "< 0") +
+                         " for a pair classified C");
   c.kind = Certificate::Kind::Crossing;
   c.inside = *inside;
   c.outside = *outside;
-  return true;
 }
 
 /// The rational with the fewest bits in the open interval (lo, hi), lo < hi: a dyadic found by
@@ -791,6 +989,7 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) { 
 
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known) {
   const Pair pr(e, p, known);
+  const std::string name = to_string(position);
   Certificate c;
   auto in_gap = [&](const Rational& l) { return l < 0 && pr.ls.compare(l) > 0; };
   switch (position) {
@@ -802,10 +1001,9 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, co
       if (known.roots)
         l = ext ? lambda_between_roots(pr, *known.roots, positive) : lambda_between_roots(pr, *known.roots, in_gap);
       if (!l) l = ext ? definite_lambda(pr, positive) : definite_lambda(pr, in_gap);
-      if (l) {
-        c.kind = Certificate::Kind::Definite;
-        c.lambda = *l;
-      }
+      if (!l) throw internal_error("no multiplier lambda with lambda P + E definite for a pair classified " + name);
+      c.kind = Certificate::Kind::Definite;
+      c.lambda = *l;
       return c;
     }
     case Position::TE:
@@ -823,14 +1021,16 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, co
         c.contact = *x;
         return c;
       }
-      if (position == Position::TI && !hard_case(pr, c)) c = Certificate{};
-      return c;
+      // The hard case's contact set exists whenever its linear system is consistent; only the
+      // semidefiniteness at lambda_s makes it a tangency, which the verifier's check decides (rare).
+      if (position == Position::TI && hard_case(pr, c) && !verify_certificate(e, p, position, c)) return c;
+      throw internal_error("no contact point for a pair classified " + name);
     }
     case Position::C:
       crossing_points(pr, c);
       return c;
   }
-  return c;
+  throw internal_error("no certificate for a pair classified " + name);
 }
 
 }  // namespace relpos::certificate

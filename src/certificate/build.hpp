@@ -9,8 +9,8 @@
 
 namespace relpos::certificate {
 
-/// The certificate of `position` for the pair (which must be the pair's position). Kind::None only
-/// if the search for the points of a crossing fails (never observed; see doc/certificates.md).
+/// The certificate of `position` for the pair (which must be the pair's position). Never Kind::None:
+/// a certificate that cannot be built throws std::logic_error (an internal error, doc/certificates.md).
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position);
 
 /// What the caller already knows about the pair, reused instead of recomputed: f = det(lambda P + E)

@@ -242,6 +242,7 @@ void merge_certain(DecisionSigns& d, const DecisionSigns& more) {
   take(d.quartic.g0, more.quartic.g0);
   take(d.vertex, more.vertex);
   take(d.graeffe, more.graeffe);
+  d.disc_hopeless = d.disc_hopeless || more.disc_hopeless;
 }
 
 /// Decision from exact root facts (Disc(f) = 0 or a defective sequence) and the rho comparison.
@@ -311,12 +312,10 @@ struct ExactData {
   Quartic<PooledInteger> f;
   Quadratic<PooledInteger> s;
   ExactData(const Ellipsoid& e, const Paraboloid& p) {
-    const auto [pz, ez] = to_compact_integers(p.matrix(), e.matrix());
     MatrixOf<PooledInteger> pp, ep;
-    for (std::size_t i = 0; i < 16; ++i) {
-      pp.a[i] = PooledInteger(pz.a[i]);
-      ep.a[i] = PooledInteger(ez.a[i]);
-    }
+    std::array<mpz_ptr, 16> pz, ez;
+    for (std::size_t i = 0; i < 16; ++i) pz[i] = pp.a[i].mpz(), ez[i] = ep.a[i].mpz();
+    to_compact_integers(p.matrix(), e.matrix(), pz, ez);
     f = characteristic_polynomial<PooledInteger>(pp, ep);
     s = special_polynomial<PooledInteger>(pp, ep);
   }
@@ -325,6 +324,27 @@ struct ExactData {
   }
   Quadratic<Integer> s_integer() const { return {s[0].to_integer(), s[1].to_integer(), s[2].to_integer()}; }
 };
+
+/// Disc(f) up to the positive factor 27, from the invariants of the quartic f4 x^4 + ... + f0:
+/// 27 Disc(f) = 4 I^3 - J^2 with I = 12 f4 f0 - 3 f3 f1 + f2^2 and
+/// J = 72 f4 f2 f0 + 9 f3 f2 f1 - 27 f4 f1^2 - 27 f0 f3^2 - 2 f2^3: a dozen products where the
+/// expanded Sturm-Habicht g0 (= Disc(f)) takes about eighty.
+template <class NT>
+NT discriminant_times_27(const Quartic<NT>& f) {
+  const NT i = NT(12) * f[4] * f[0] - NT(3) * f[3] * f[1] + f[2] * f[2];
+  const NT j = (NT(72) * f[4] * f[0] - NT(2) * f[2] * f[2]) * f[2] + NT(9) * f[3] * f[2] * f[1] -
+               NT(27) * (f[4] * f[1] * f[1] + f[0] * f[3] * f[3]);
+  return NT(4) * i * i * i - j * j;
+}
+
+/// True when a float stage certified every sign the decision reads except Disc(f)'s: the usual state
+/// near a tangency, where the exact stage then needs that one sign only.
+bool only_disc_uncertain(const DecisionSigns& d) {
+  const QuarticSigns& q = d.quartic;
+  auto ok = [](const USign& x) { return CGAL::is_certain(x); };
+  return !ok(q.g0) && ok(q.f[0]) && ok(q.f[1]) && ok(q.f[2]) && ok(q.f[3]) && ok(q.f[4]) && ok(q.g2[0]) &&
+         ok(q.g2[1]) && ok(q.g2[2]) && ok(q.g1[0]) && ok(q.g1[1]) && ok(d.vertex) && ok(d.graeffe);
+}
 
 /// A square-free f with four real negative roots and a pair that is not small: the position depends
 /// on where two roots lie against lambda_s (anysize/gap.hpp).
@@ -405,14 +425,23 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
         d = semi_static_filter_signs(p.matrix(), e.matrix());
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
     }
-    v.stage = Stage::Interval;               // stage 2: interval arithmetic
-    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false> needs rounding towards +inf
-    const MatrixOf<Interval> pi = interval_entries(p), ei = interval_entries(e);
-    merge_certain(d, signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)));
-    if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
+    // Stage 2 only while Disc(f) is within reach of intervals: near a multiple root its value sits
+    // orders of magnitude inside the semi-static bound, and every decision needs its sign.
+    if (!d.disc_hopeless) {
+      v.stage = Stage::Interval;               // stage 2: interval arithmetic
+      CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false> needs rounding towards +inf
+      const MatrixOf<Interval> pi = interval_entries(p), ei = interval_entries(e);
+      merge_certain(d, signs_in(characteristic_polynomial<Interval>(pi, ei), special_polynomial<Interval>(pi, ei)));
+      if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
+    }
   }
   if (!exact) exact.emplace(e, p);
-  v.stage = Stage::ExactSigns;                     // stage 3: exact integer signs of the same polynomials
+  v.stage = Stage::ExactSigns;  // stage 3: exact integer signs of the same polynomials
+  if (use_filter && only_disc_uncertain(d)) {
+    d.quartic.g0 = sign_of(discriminant_times_27(exact->f));
+    // Disc(f) = 0 needs the subresultants below (stage 4): computed in full then.
+    if (d.quartic.g0 != CGAL::ZERO && decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
+  }
   const SturmHabicht<PooledInteger> sh(exact->f);  // kept: stage 4 reads the subresultants
   {
     const SmallnessQuantities<PooledInteger> sq(exact->f, exact->s);

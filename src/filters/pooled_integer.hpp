@@ -52,6 +52,8 @@ class PooledInteger {
     return r;
   }
   int sign() const { return mpz_sgn(z_); }
+  /// The value, to be written in place (e.g. by forms::to_compact_integers).
+  mpz_ptr mpz() { return z_; }
 
   friend PooledInteger operator+(const PooledInteger& a, const PooledInteger& b) {
     PooledInteger r(Raw{});

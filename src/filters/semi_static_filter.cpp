@@ -186,6 +186,20 @@ USign certified(const Lanes& x, int count) {
   return usign(RunningBound::certain_sign(x.value(), x.magnitude(), count));
 }
 
+/// How far below its error bound a value must lie for its sign to be called hopeless in doubles.
+/// Below 1/64 of the running bound the computed value is rounding noise of the same order as the
+/// width an interval evaluation from the same double data would have (the running bound is a
+/// worst case over a few hundred operations for Disc(f); the actual error is typically a few dozen
+/// times smaller), so the interval stage would only add its cost. Chosen on the near-tangent
+/// benchmark (doc/performance.md, "Near tangency"). A heuristic for skipping a stage, never for a
+/// sign: skipping a stage is always sound.
+constexpr double kHopeless = 0x1p-6;
+constexpr int kDisc = 10;  // Disc(f) = g0 in evaluate()'s order
+
+bool hopeless(double value, double magnitude, int count) {
+  return std::fabs(value) < kHopeless * RunningBound::error_bound(magnitude, count);
+}
+
 DecisionSigns assemble(const USign c[kQuantities]) {
   DecisionSigns out;
   for (int i = 0; i < 5; ++i) out.quartic.f[i] = c[i];
@@ -254,7 +268,9 @@ DecisionSigns semi_static_filter_signs_normalized(const DoubleMatrix4& pn, const
   if (!evaluate(pn, en, q)) return DecisionSigns{};  // uncertain
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], d[static_cast<std::size_t>(i)]);
-  return assemble(c);
+  DecisionSigns out = assemble(c);
+  out.disc_hopeless = hopeless(q[kDisc].value(), q[kDisc].magnitude(), d[kDisc]);
+  return out;
 }
 
 std::optional<bool> semi_static_roots_above_lambda_s(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
@@ -305,7 +321,9 @@ DecisionSigns enclosed_signs(const M& p, const M& e) {
   if (!enclosed(p, vp) || !enclosed(e, ve) || !evaluate(vp, ve, q)) return DecisionSigns{};
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = usign(q[i].sign());
-  return assemble(c);
+  DecisionSigns out = assemble(c);
+  out.disc_hopeless = hopeless(q[kDisc].value(), q[kDisc].magnitude(), q[kDisc].count());
+  return out;
 }
 
 }  // namespace

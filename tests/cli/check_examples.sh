@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Check `relpos batch examples/mixed.jsonl` against the expectations encoded in the input.
+# Check `relpos batch --evidence full INPUT` against the expectations encoded in the input.
 #
-# Usage: tests/cli/check_examples.sh PATH/TO/relpos REPO_ROOT
+# Usage: tests/cli/check_examples.sh PATH/TO/relpos REPO_ROOT [INPUT]   (INPUT: examples/mixed.jsonl)
 #
 # The expected answer of each input line comes from, in this order:
 #   1. its "id", when it is a string starting with I-, TI-, C-, TE-, E- or ERR-;
@@ -17,13 +17,13 @@
 # Exits 0 when everything matches, 1 on any mismatch, 2 on a usage error or a failed run.
 set -u
 
-if [ $# -ne 2 ]; then
-  echo "usage: $0 PATH/TO/relpos REPO_ROOT" >&2
+if [ $# -ne 2 ] && [ $# -ne 3 ]; then
+  echo "usage: $0 PATH/TO/relpos REPO_ROOT [INPUT]" >&2
   exit 2
 fi
 relpos=$1
 root=$2
-input="$root/examples/mixed.jsonl"
+input="${3:-$root/examples/mixed.jsonl}"
 if [ ! -x "$relpos" ]; then
   echo "check_examples: '$relpos' is not an executable" >&2
   exit 2
@@ -35,7 +35,7 @@ fi
 
 output=$(mktemp)
 trap 'rm -f "$output"' EXIT
-"$relpos" batch "$input" >"$output"
+"$relpos" batch --evidence full "$input" >"$output"
 rc=$?
 if [ $rc -ne 0 ]; then
   echo "check_examples: relpos batch exited with status $rc (expected 0)" >&2
