@@ -364,4 +364,6 @@ PYBIND11_MODULE(_relpos, m) {
 
   m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a = 0,
         "Position codes (int8, 0 = I ... 4 = E) of float64 matrices E (n, 4, 4) against P (n, 4, 4) or (4, 4).");
+  void bind_batch(py::module_&);  // python/src/batch_binding.cpp
+  bind_batch(m);
 }
