@@ -49,9 +49,9 @@ def _count_newlines(path, begin, end):
     return count
 
 
-def _first_line_numbers(*counts):
-    """1 + the number of '\\n' before each block (a task): the number of the line that starts at
-    the block's first byte, or that would."""
+def _first_line_numbers(counts):
+    """1 + the number of '\\n' before each block: the number of the line that starts at the block's
+    first byte, or that would."""
     numbers = [1]
     for c in counts[:-1]:
         numbers.append(numbers[-1] + c)
@@ -75,15 +75,16 @@ def _line_start(f, offset, size, path):
     return size
 
 
-def _answer_block(path, index, block, size, first_numbers, part, options):
+def _answer_block(path, index, block, size, first_number, part, options):
     """Answer the lines that start in bytes [index * block, (index + 1) * block) of the file into the
-    existing file `part` (a task). Returns the bytes written."""
+    existing file `part` (a task); first_number: that of the line starting at index * block, or that
+    would. Returns the bytes written."""
     begin = index * block
     written = 0
     with open(path, "rb") as f:
         start = _line_start(f, begin, size, path)
         end = _line_start(f, begin + block, size, path)
-        number = first_numbers[index] + (start > begin)  # a '\n' in [begin, start) ends a line of the previous block
+        number = first_number + (start > begin)  # a '\n' in [begin, start) ends a line of the previous block
         # No O_CREAT: after a cancellation the caller removes `part`, and a late task must not re-create it.
         with os.fdopen(os.open(part, os.O_WRONLY | os.O_TRUNC), "wb") as out:
             f.seek(start)
@@ -107,14 +108,28 @@ def _answer_block(path, index, block, size, first_numbers, part, options):
     return written
 
 
-def _join(parts, target, *blocks_done):
-    """Concatenate the parts, in order, into the existing file `target` (a task; runs once every
-    block is answered)."""
+def _join(parts, target):
+    """Concatenate the parts, in order, into the existing file `target` (a task)."""
     with os.fdopen(os.open(target, os.O_WRONLY | os.O_TRUNC), "wb") as out:
         for part in parts:
             with open(part, "rb") as f:
                 shutil.copyfileobj(f, out, _PIECE)
     return target
+
+
+def _run(client, submitted, rounds):
+    """Wait for the futures of `rounds` (a list per file) and return their results, list by list;
+    the first error is raised as soon as its task fails. `submitted` collects every future (for
+    cancellation)."""
+    import distributed
+
+    flat = [f for per_file in rounds for f in per_file]
+    submitted += flat
+    for f in distributed.as_completed(flat):
+        if f.status == "error":
+            f.result()  # raises the task's error, before the tasks still running finish
+    results = iter(client.gather(flat))
+    return [[next(results) for _ in per_file] for per_file in rounds]
 
 
 def _check_inputs(paths, out_dir):
@@ -191,22 +206,19 @@ def batch(paths, out_dir, client=None, evidence="full", numbers="exact", contact
             temps.append(tmp)
             return tmp
 
-        targets, joins = [], []
-        for path, out, size in zip(paths, outs, sizes):
-            name = os.path.basename(out)
-            blocks = -(-size // block_bytes)
-            targets.append(temporary(name))
-            parts = [temporary(name) for _ in range(blocks)]
-            counts = [client.submit(_count_newlines, path, k * block_bytes, min(size, (k + 1) * block_bytes),
-                                    pure=False) for k in range(blocks)]
-            first = client.submit(_first_line_numbers, *counts, pure=False)
-            answered = [client.submit(_answer_block, path, k, block_bytes, size, first, parts[k], options, pure=False)
-                        for k in range(blocks)]
-            joins.append(client.submit(_join, parts, targets[-1], *answered, pure=False))
-            futures += counts + [first] + answered + [joins[-1]]
-        for f in distributed.as_completed(futures):
-            if f.status == "error":
-                f.result()  # raises the task's error, before the tasks still running finish
+        # Three rounds, each waited for here: no task depends on another's result, so a worker lost
+        # in the middle only loses its running task, which Dask runs again elsewhere.
+        targets = [temporary(os.path.basename(out)) for out in outs]
+        blocks = [-(-size // block_bytes) for size in sizes]
+        parts = [[temporary(os.path.basename(out)) for _ in range(n)] for out, n in zip(outs, blocks)]
+        counts = _run(client, futures, [
+            [client.submit(_count_newlines, path, k * block_bytes, min(size, (k + 1) * block_bytes), pure=False)
+             for k in range(n)] for path, size, n in zip(paths, sizes, blocks)])
+        _run(client, futures, [
+            [client.submit(_answer_block, path, k, block_bytes, size, first, part, options, pure=False)
+             for k, (first, part) in enumerate(zip(_first_line_numbers(c), file_parts))]
+            for path, size, c, file_parts in zip(paths, sizes, counts, parts)])
+        _run(client, futures, [[client.submit(_join, p, t, pure=False)] for p, t in zip(parts, targets)])
         mode = 0o666 & ~_umask()
         for tmp, out in zip(targets, outs):
             os.chmod(tmp, mode)  # as a file the CLI's output is redirected to (mkstemp makes 0600)
