@@ -111,7 +111,7 @@ def dask_bench(args):
             medians[workers] = statistics.median(times)
             print("distributed.batch, %d worker process(es): median %.2f s of %s; output identical to relpos batch"
                   % (workers, medians[workers], ", ".join("%.2f" % x for x in times)))
-        print("speed-up 1 -> 2 workers: %.2fx" % (medians[1] / medians[2]))
+        print("speed-up 1 -> 2 workers: %.2fx (load average now %.1f)" % (medians[1] / medians[2], os.getloadavg()[0]))
 
 
 if __name__ == "__main__":
