@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Lines per second of `relpos batch` against CPython's json.loads on the same file (issue 12's bar),
-all measured in one run (doc/performance.md, "relpos batch lines per second").
+"""Lines per second of `relpos batch` against CPython's json.loads on the same file, all measured in
+one run (doc/performance.md, "relpos batch lines per second").
 
     /usr/bin/python3 benchmarks/batch_bench.py --cli build/cli/relpos [--lines 20000] [--repeat 3]
 

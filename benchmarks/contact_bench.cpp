@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "support/random_pairs.hpp"
+
 using namespace relpos;
 using Clock = std::chrono::steady_clock;
 
@@ -29,53 +31,19 @@ struct Pair {
   Ellipsoid e;
 };
 
-/// Random ellipsoid M = L L^T + 0.05 I, centre in [-2, 2]^3, level in [0.01, 2]; paraboloids
-/// alpha x^2 + beta y^2 + ... - z, as relpos_bench's family A. All entries exact doubles.
+/// Random ellipsoids (level k in [0.01, 2]) and paraboloids of relpos_bench's family (a), all
+/// entries exact doubles (tests/support/random_pairs.hpp).
 Ellipsoid random_ellipsoid(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u11(-1, 1), uc(-2, 2), uk(0.01, 2);
   for (;;) {
-    double L[3][3], M[3][3], c[3], Mc[3];
-    for (auto& r : L)
-      for (auto& x : r) x = u11(rng);
-    for (int i = 0; i < 3; ++i)
-      for (int j = i; j < 3; ++j) {
-        M[i][j] = 0;
-        for (int k = 0; k < 3; ++k) M[i][j] += L[i][k] * L[j][k];
-        if (i == j) M[i][j] += 0.05;
-        M[j][i] = M[i][j];
-      }
-    for (double& x : c) x = uc(rng);
-    const double k = uk(rng);
-    double cMc = 0;
-    for (int i = 0; i < 3; ++i) {
-      Mc[i] = 0;
-      for (int j = 0; j < 3; ++j) Mc[i] += M[i][j] * c[j];
-      cMc += c[i] * Mc[i];
-    }
-    Matrix4 E;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) E(i, j) = Rational(M[i][j]);
-      E(i, 3) = E(3, i) = Rational(-Mc[i]);
-    }
-    E(3, 3) = Rational(cMc - k);
     try {
-      return Ellipsoid::from_matrix(E);
+      return Ellipsoid::from_matrix(rt::random_double_ellipsoid_matrix(rng, 0.01));
     } catch (const std::exception&) {
     }
   }
 }
 
 Paraboloid random_paraboloid(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u11(-1, 1), uc(-2, 2), uab(0.3, 2);
-  const double alpha = uab(rng), beta = uab(rng), uu = u11(rng), vv = u11(rng), w = uc(rng);
-  Matrix4 P;
-  P(0, 0) = Rational(alpha);
-  P(1, 1) = Rational(beta);
-  P(0, 3) = P(3, 0) = Rational(uu * alpha);
-  P(1, 3) = P(3, 1) = Rational(vv * beta);
-  P(2, 3) = P(3, 2) = Rational(-0.5);
-  P(3, 3) = Rational(w);
-  return Paraboloid::from_matrix(P);
+  return Paraboloid::from_matrix(rt::random_double_paraboloid_matrix(rng));
 }
 
 double median(std::vector<double> v) {

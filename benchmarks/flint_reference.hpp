@@ -24,7 +24,7 @@
 
 #include <string>
 
-#include "core/roots.hpp"
+#include "algebra/roots.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/quadric.hpp"
 
@@ -35,7 +35,7 @@ struct FlintAnswer {
   relpos::RootFacts facts;
   int rho_vs_one = 0;
   bool ok = false;  ///< false when the input is not in the expected normal form (never for valid quadrics), or when
-                    ///< the facts do not decide (not small: math.md section 8)
+                    ///< the facts do not decide (not small: math.md §8)
 };
 
 /// The FLINT pipeline on the exact matrices of a validated ellipsoid and paraboloid.

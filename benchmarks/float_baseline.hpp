@@ -5,9 +5,9 @@
 #include <array>
 #include <optional>
 
-#include "core/pencil.hpp"
-#include "core/smallness.hpp"
-#include "core/sturm.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/smallness.hpp"
+#include "algebra/sturm.hpp"
 #include "relpos/classify.hpp"
 
 namespace bench {

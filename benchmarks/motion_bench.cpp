@@ -30,8 +30,8 @@
 #include <string>
 #include <vector>
 
-#include "core/pencil.hpp"
-#include "core/sturm.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/sturm.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/motion.hpp"
 

@@ -5,7 +5,7 @@
 //   naive      the float pipeline on the 32 doubles (no certification)
 //   decide     relpos::decide_position on prebuilt objects
 //   doubles    32 doubles -> Ellipsoid/Paraboloid::from_doubles -> decide_position
-//   matrix     32 doubles -> exact_rational -> from_matrix -> decide_position (the old road)
+//   matrix     32 doubles -> exact_rational -> from_matrix -> decide_position (the rational road)
 //   full       relpos::classify(e, p) with full evidence (f, s, roots, rho, certificate)
 //
 //   regime_bench [--n N] [--full N] [--seed S] [--batches B] [--rounds R] [--only POSITION]

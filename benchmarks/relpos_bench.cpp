@@ -26,14 +26,15 @@
 #include <string>
 #include <vector>
 
-#include "core/pencil.hpp"
-#include "core/smallness.hpp"
-#include "core/sturm.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/smallness.hpp"
+#include "algebra/sturm.hpp"
 #include "flint_reference.hpp"
 #include "float_baseline.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/quadric.hpp"
+#include "support/random_pairs.hpp"
 
 using namespace relpos;
 using Clock = std::chrono::steady_clock;
@@ -66,46 +67,13 @@ struct Pair {
   }
 };
 
-Rational Q(double x) { return Rational(x); }
-
 std::vector<Pair> family_a(std::mt19937_64& rng, int n) {
-  std::uniform_real_distribution<double> u11(-1, 1), uc(-2, 2), uk(0.1, 2), uab(0.3, 2);
   std::vector<Pair> out;
   int attempts = 0;
   while (static_cast<int>(out.size()) < n && attempts < 20 * n) {
     ++attempts;
-    double L[3][3], M[3][3], c[3], Mc[3];
-    for (auto& r : L)
-      for (auto& x : r) x = u11(rng);
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        M[i][j] = 0;
-        for (int k = 0; k < 3; ++k) M[i][j] += L[i][k] * L[j][k];
-        if (i == j) M[i][j] += 0.05;
-      }
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < j; ++i) M[j][i] = M[i][j];  // exact symmetry
-    for (double& x : c) x = uc(rng);
-    const double k = uk(rng);
-    double cMc = 0;
-    for (int i = 0; i < 3; ++i) {
-      Mc[i] = 0;
-      for (int j = 0; j < 3; ++j) Mc[i] += M[i][j] * c[j];
-      cMc += c[i] * Mc[i];
-    }
-    Matrix4 E, P;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) E(i, j) = Q(M[i][j]);
-      E(i, 3) = E(3, i) = Q(-Mc[i]);
-    }
-    E(3, 3) = Q(cMc - k);
-    const double alpha = uab(rng), beta = uab(rng), uu = u11(rng), vv = u11(rng), w = uc(rng);
-    P(0, 0) = Q(alpha);
-    P(1, 1) = Q(beta);
-    P(0, 3) = P(3, 0) = Q(uu * alpha);
-    P(1, 3) = P(3, 1) = Q(vv * beta);
-    P(2, 3) = P(3, 2) = Q(-0.5);
-    P(3, 3) = Q(w);
+    const Matrix4 E = rt::random_double_ellipsoid_matrix(rng, 0.1);  // drawn before the paraboloid
+    const Matrix4 P = rt::random_double_paraboloid_matrix(rng);
     try {
       out.emplace_back(Ellipsoid::from_matrix(E), Paraboloid::from_matrix(P));
     } catch (const std::exception&) {
@@ -540,7 +508,7 @@ int main(int argc, char** argv) {
     const Row* ad_b = find("b", "adaptive");
     std::ofstream js(out_dir + "/summary.json");
     js << "{\n  \"seed\": " << seed << ",\n";
-    // The bars of issue 3 are per-pair medians, naive and adaptive timed back to back on each pair;
+    // The targets are per-pair medians, naive and adaptive timed back to back on each pair;
     // the per-method medians (measured minutes apart) and batch means are reported alongside.
     const double ratio_a = paired_a.second / paired_a.first;
     js << "  \"adaptive_over_naive_double_family_a\": " << fmt(ratio_a) << ",\n";

@@ -41,6 +41,17 @@ LineReader::Status LineReader::next(std::string& line) {
           begin_ = nl == std::string::npos ? buffer_.size() : nl + 1;
           return Status::TooLong;
         }
+        if (end - begin_ > kMoveAbove) {
+          // A long line is handed over, not copied: the buffer becomes the line and what follows
+          // it (at most one block) a new buffer, so a line costs its own size once.
+          std::string rest(buffer_, nl == std::string::npos ? buffer_.size() : nl + 1);
+          buffer_.resize(end);
+          buffer_.erase(0, begin_);
+          line.swap(buffer_);
+          buffer_.swap(rest);
+          begin_ = 0;
+          return Status::Line;
+        }
         line.assign(buffer_, begin_, end - begin_);
         begin_ = nl == std::string::npos ? buffer_.size() : nl + 1;
         return Status::Line;
@@ -59,18 +70,23 @@ LineReader::Status LineReader::next(std::string& line) {
     }
   } catch (const std::bad_alloc&) {
     // Skip the rest of this line in small blocks; the run goes on.
-    buffer_.clear();
-    buffer_.shrink_to_fit();
+    std::string().swap(buffer_);
+    line.clear();
     begin_ = 0;
-    while (fill()) {
-      const std::size_t nl = buffer_.find('\n');
-      if (nl != std::string::npos) {
-        begin_ = nl + 1;
-        break;
+    try {
+      while (fill()) {
+        const std::size_t nl = buffer_.find('\n');
+        if (nl != std::string::npos) {
+          begin_ = nl + 1;
+          break;
+        }
+        buffer_.clear();
       }
-      buffer_.clear();
+    } catch (const std::bad_alloc&) {  // not even one block: the input cannot be read on
+      error_ = ENOMEM;
+      return Status::Error;
     }
-    return Status::OutOfMemory;
+    return error_ != 0 ? Status::Error : Status::OutOfMemory;
   }
 }
 
@@ -80,15 +96,23 @@ bool LineReader::ready() {
   return ::poll(&p, 1, 0) > 0;
 }
 
+Output::Output(int fd) : fd_(fd) { buffer_.reserve(kBuffer); }
+
 void Output::write(std::string_view text) {
-  buffer_.append(text);
-  if (buffer_.size() >= (std::size_t(1) << 16)) flush();
+  if (buffer_.size() + text.size() > kBuffer) {
+    flush();
+    if (text.size() > kBuffer / 2) {  // long text goes out as it is: no copy
+      put(text);
+      return;
+    }
+  }
+  buffer_.append(text);  // within the capacity reserved once: no allocation
 }
 
-bool Output::flush() {
+void Output::put(std::string_view text) {
   std::size_t done = 0;
-  while (!failed_ && done < buffer_.size()) {
-    const ssize_t n = ::write(STDOUT_FILENO, buffer_.data() + done, buffer_.size() - done);
+  while (!failed_ && done < text.size()) {
+    const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       failed_ = true;
@@ -97,6 +121,10 @@ bool Output::flush() {
       done += static_cast<std::size_t>(n);
     }
   }
+}
+
+bool Output::flush() {
+  put(buffer_);
   buffer_.clear();
   return !failed_;
 }
@@ -129,7 +157,11 @@ int open_input(const std::string& file) {
 }
 
 WorkerPool::WorkerPool(unsigned threads) {
-  for (unsigned w = 1; w < threads; ++w) workers_.emplace_back([this] { work(); });
+  try {
+    for (unsigned w = 1; w < threads; ++w) workers_.emplace_back([this] { work(); });
+  } catch (const std::exception&) {
+    // Too little memory for another thread's stack: the threads started do the work.
+  }
 }
 
 WorkerPool::~WorkerPool() {

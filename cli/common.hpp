@@ -35,6 +35,7 @@ class LineReader {
 
  private:
   bool fill();
+  static constexpr std::size_t kMoveAbove = std::size_t(1) << 20;  ///< longer lines are moved out
   int fd_;
   std::size_t max_;
   std::string buffer_;
@@ -43,16 +44,21 @@ class LineReader {
   int error_ = 0;
 };
 
-/// Buffered standard output through write(2): a closed pipe or a full disk is seen (SIGPIPE is
-/// ignored) and reported once, with exit code kExitIo.
+/// Buffered output through write(2) (standard output unless told): a closed pipe or a full disk is
+/// seen (SIGPIPE is ignored) and reported once, with exit code kExitIo. Allocates only when made:
+/// a long text is written as it is, so that writing never runs out of memory.
 class Output {
  public:
+  explicit Output(int fd = 1);
   void write(std::string_view text);
   bool flush();  ///< false once a write has failed
   bool failed() const { return failed_; }
   int report_failure();  ///< prints "relpos: cannot write the output: ..." and returns kExitIo
 
  private:
+  static constexpr std::size_t kBuffer = std::size_t(1) << 16;
+  void put(std::string_view text);
+  int fd_;
   std::string buffer_;
   bool failed_ = false;
   int error_ = 0;

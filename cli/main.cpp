@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <csignal>
 #include <cstring>
 #include <exception>
@@ -29,10 +30,7 @@
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
-
-#ifndef RELPOS_VERSION
-#define RELPOS_VERSION "unknown"
-#endif
+#include "relpos/version.hpp"
 
 namespace relpos_cli {
 
@@ -50,18 +48,19 @@ constexpr const char* kExitCodes =
 
 namespace {
 
+/// One screen: the commands, one line each; `relpos COMMAND --help` tells the rest.
 void print_main_help(std::ostream& os) {
   os << "relpos " RELPOS_VERSION
         " - exact relative position of an ellipsoid and an elliptic paraboloid\n"
         "\n"
-        "Usage:\n"
-        "  relpos classify --ellipsoid Q --paraboloid Q [--digits N] [--json]\n"
-        "  relpos batch [FILE|-] [--digits N] [--evidence full|minimal] [--threads N] ...\n"
-        "  relpos scene (--paraboloid Q | --standard-paraboloid A,B) [FILE|-] [options]\n"
-        "  relpos motion (--ellipsoid Q | --sphere ..) (--paraboloid Q | ..) [--translation P3] [--rotation P4] ...\n"
-        "  relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]   (check the certificates of a batch output)\n"
-        "  relpos --help | --version\n"
-        "  relpos COMMAND --help\n"
+        "Usage: relpos COMMAND [options]      relpos COMMAND --help      relpos --help | --version\n"
+        "\n"
+        "Commands:\n"
+        "  classify  one pair from the command line: position, rule, smallness, roots of f\n"
+        "  batch     JSON Lines of pairs, one answer line per input line (--evidence, --threads, ...)\n"
+        "  scene     one paraboloid against many ellipsoids (JSON Lines or CSV), on all cores\n"
+        "  motion    a body moving by a polynomial translation and rotation: when the position changes\n"
+        "  verify    check the certificates of a batch output against its input\n"
         "\n"
         "Positions: I (interior), TI (tangent from inside), C (crossing), TE (tangent from outside),\n"
         "E (exterior): every valid pair gets one of them, whatever the ellipsoid's size.\n"
@@ -69,13 +68,6 @@ void print_main_help(std::ostream& os) {
         "such as \"92281/129600\" or \"1.5e-7\" are accepted anywhere a number is. See doc/cli.md.\n"
         "\n"
      << kExitCodes;
-  // Every command with every option (the same text as `relpos COMMAND --help`).
-  void (*const helps[])(std::ostream&) = {print_classify_help, print_batch_help, print_scene_help, print_motion_help,
-                                          print_verify_help};
-  for (auto* help : helps) {
-    os << "\n----------------------------------------------------------------------------------------------\n";
-    help(os);
-  }
 }
 
 }  // namespace
@@ -103,10 +95,8 @@ void print_classify_help(std::ostream& os) {
         "  --standard-paraboloid A,B  shorthand: x^2/A^2 + y^2/B^2 = z (vertex at the origin, axis z)\n"
         "  --digits N                 significant digits of the approximations (default 12, 1..1000)\n"
         "  --json                     print the JSON object of `relpos batch` instead of the report\n"
-        "  --contact-only             answer only whether the surfaces meet: none, touching, crossing,\n"
-        "                             meet (kind not certified) or unknown; certified like the position,\n"
-        "                             and also for bodies that are not small when a containment\n"
-        "                             certificate proves they do not meet (doc/contact.md)\n"
+        "  --contact-only             answer only whether the surfaces meet: none, touching or crossing,\n"
+        "                             certified like the position (doc/contact.md)\n"
         "  -h, --help                 this help\n"
         "\n"
         "Example:\n"
@@ -129,12 +119,12 @@ void print_batch_help(std::ostream& os) {
         "   \"rho_vs_one\": ..., \"rho\": ..., \"rho_approx\": ..., \"rule\": ..., \"stage\": ..., ...}\n"
         "or {\"id\": ..., \"error\": \"...\"} for a line that cannot be classified (blank lines included).\n"
         "The id is echoed back byte for byte; a missing id is replaced by the 1-based line number.\n"
-        "Duplicate keys are errors; a UTF-8 byte order mark and CRLF line ends are accepted.\n"
+        "Duplicate keys are errors; CRLF line ends and a UTF-8 byte order mark at the start are accepted.\n"
         "\n"
         "Options:\n"
         "  --digits N       significant digits of root approximations (default 12, 1..1000)\n"
         "  --contact-only   answer {\"id\", \"contact\", \"position\", \"rule\", \"decided_by\"} only:\n"
-        "                   contact is none, touching, crossing, meet or unknown (doc/contact.md)\n"
+        "                   contact is none, touching or crossing (doc/contact.md)\n"
         "  --evidence full|minimal   full (default): the whole report with its certificate;\n"
         "                   minimal: id, position, small, contact, rule, stage\n"
         "  --threads N      worker threads (default: all cores); output stays in input order\n"
@@ -211,6 +201,20 @@ namespace {
 /// Answer lines[i] into answers[i] for i < n, on the pool's threads. Both vectors keep their
 /// strings from chunk to chunk: a line costs no allocation once the buffers have grown (with two
 /// threads, every malloc takes an arena lock).
+/// Capacity kept in every answer buffer: an out-of-memory error line fits without allocating.
+constexpr std::size_t kAnswerReserve = 256;
+
+/// {"id":N,"error":"message"} and a newline, written in pieces (no allocation); message is plain ASCII.
+void write_error_line(Output& out, long number, std::string_view message) {
+  char digits[24];
+  const auto end = std::to_chars(digits, digits + sizeof digits, number).ptr;
+  out.write("{\"id\":");
+  out.write(std::string_view(digits, static_cast<std::size_t>(end - digits)));
+  out.write(",\"error\":\"");
+  out.write(message);
+  out.write("\"}");
+}
+
 void answer_all(const std::vector<std::string>& lines, std::size_t n, long first_number,
                 const relpos::io::BatchOptions& options, WorkerPool& pool, std::vector<std::string>& answers) {
   if (answers.size() < n) answers.resize(n);
@@ -257,42 +261,53 @@ int run_batch(Args& args) {
   LineReader reader(fd, options.max_line_bytes);
   Output out;
   WorkerPool pool(threads);
+  const std::string too_long = relpos::io::too_long_message(options.max_line_bytes);
   // Lines are answered in chunks (on the threads) and written in input order; the output is flushed
   // whenever the input has nothing more ready, so interactive use is answered line by line.
   const std::size_t chunk = threads > 1 ? 64 * std::size_t(threads) : 16;
   std::vector<std::string> lines(chunk), answers(chunk);  // reused: see answer_all
-  std::vector<std::string> refused;                       // per line: an error found while reading, or empty
+  std::vector<LineReader::Status> status(chunk);          // per line: read, or refused while reading
+  for (auto& a : answers) a.reserve(kAnswerReserve);      // room for an out-of-memory line
   long number = 0;
   for (bool more = true; more;) {
     std::size_t n = 0;
-    refused.clear();
     while (n < chunk && (n == 0 || reader.ready())) {
-      const LineReader::Status status = reader.next(lines[n]);
-      if (status == LineReader::Status::End) {
+      status[n] = reader.next(lines[n]);
+      if (status[n] == LineReader::Status::End) {
         more = false;
         break;
       }
-      if (status == LineReader::Status::Error) {
-        std::cerr << "relpos: error reading '" << name << "': " << std::strerror(reader.error()) << "\n";
+      if (status[n] == LineReader::Status::Error) {
         out.flush();
+        std::cerr << "relpos: error reading '" << name << "': " << std::strerror(reader.error()) << "\n";
         return kExitIo;
       }
-      refused.push_back(status == LineReader::Status::TooLong ? relpos::io::too_long_message(options.max_line_bytes)
-                        : status == LineReader::Status::OutOfMemory ? "out of memory while reading this line"
-                                                                    : std::string());
-      if (status != LineReader::Status::Line) lines[n].clear();
+      if (status[n] != LineReader::Status::Line) lines[n].clear();
       ++n;
     }
     answer_all(lines, n, number + 1, options, pool, answers);
     for (std::size_t i = 0; i < n; ++i) {
-      out.write(refused[i].empty() ? answers[i]
-                                   : relpos::io::error_line(std::to_string(number + 1 + long(i)), refused[i]));
+      const long line_number = number + 1 + static_cast<long>(i);
+      if (status[i] == LineReader::Status::TooLong)
+        write_error_line(out, line_number, too_long);
+      else if (status[i] == LineReader::Status::OutOfMemory)
+        write_error_line(out, line_number, "out of memory while reading this line");
+      else if (answers[i].empty())  // not even the short error fitted (relpos::io::answer_batch_line)
+        write_error_line(out, line_number, relpos::io::kOutOfMemoryNoIdMessage);
+      else
+        out.write(answers[i]);
       out.write("\n");
     }
     number += static_cast<long>(n);
     for (std::size_t i = 0; i < n; ++i) {  // a rare long line does not hold its memory for the whole run
       if (lines[i].capacity() > (std::size_t(1) << 20)) std::string().swap(lines[i]);
-      if (answers[i].capacity() > (std::size_t(1) << 20)) std::string().swap(answers[i]);
+      if (answers[i].capacity() > (std::size_t(1) << 20)) {
+        std::string().swap(answers[i]);
+        try {
+          answers[i].reserve(kAnswerReserve);
+        } catch (const std::bad_alloc&) {  // answer_batch_line tries again
+        }
+      }
     }
     if (!more || !reader.ready()) out.flush();
     if (out.failed()) return out.report_failure();
@@ -317,6 +332,8 @@ int main(int argc, char** argv) {
   const bool known =
       command == "classify" || command == "batch" || command == "scene" || command == "motion" || command == "verify";
   try {
+    const bool about = command == "--help" || command == "-h" || command == "help" || command == "--version";
+    if (about && !args.done()) throw UsageError{command + " takes no argument, got '" + args.peek() + "'"};
     if (command == "--help" || command == "-h" || command == "help") {
       print_main_help(std::cout);
       return finish_cout();

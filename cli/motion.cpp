@@ -87,43 +87,17 @@ void print_motion_help(std::ostream& os) {
 
 namespace {
 
-/// Limits of `relpos motion` (doc/cli.md, "Limits"): the exact instants are roots of polynomials
-/// whose degree and coefficient sizes grow with these, and the cost with them.
-constexpr std::size_t kMaxMotionDegree = 12;
-constexpr std::size_t kMaxCoefficientBits = 512;
+/// Limits of `relpos motion` (doc/cli.md, "Limits"; those on the polynomials are
+/// relpos::io::kMaxMotionDegree and kMaxMotionCoefficientBits).
 constexpr int kMaxMotionDigits = 200;
 constexpr unsigned long long kDefaultMaxSeconds = 60;
 
-/// A JSON array of `count` polynomials, each an array of exact coefficients (low degree first).
+/// A JSON array of `N` polynomials (relpos::io::motion_polynomials).
 template <std::size_t N>
 std::array<relpos::TimePolynomial, N> polynomials(const std::string& text, const std::string& role) {
-  const Json v = parse_inline(text, role);
-  if (!v.is_array() || v.size() != N)
-    throw relpos::InputError(role + ": expected an array of " + std::to_string(N) +
-                             " polynomials (arrays of coefficients, lowest degree first)");
+  const std::vector<relpos::TimePolynomial> p = relpos::io::motion_polynomials(parse_inline(text, role), N, role);
   std::array<relpos::TimePolynomial, N> out;
-  for (std::size_t i = 0; i < N; ++i) {
-    const std::string path = role + "[" + std::to_string(i) + "]";
-    if (v[i].is_array()) {
-      for (std::size_t k = 0; k < v[i].size(); ++k)
-        out[i].push_back(relpos::io::rational_from_json(v[i][k], path + "[" + std::to_string(k) + "]"));
-    } else {
-      out[i].push_back(relpos::io::rational_from_json(v[i], path));  // a constant
-    }
-    while (!out[i].empty() && out[i].back() == 0) out[i].pop_back();
-    if (out[i].size() > kMaxMotionDegree + 1)
-      throw relpos::InputError(path + ": degree " + std::to_string(out[i].size() - 1) + " is beyond the limit of " +
-                               std::to_string(kMaxMotionDegree) + " (doc/cli.md, Limits)");
-    for (std::size_t k = 0; k < out[i].size(); ++k) {
-      const relpos::Rational& c = out[i][k];
-      const std::size_t bits =
-          std::max(mpz_sizeinbase(c.numerator().mpz(), 2), mpz_sizeinbase(c.denominator().mpz(), 2));
-      if (bits > kMaxCoefficientBits)
-        throw relpos::InputError(path + "[" + std::to_string(k) + "]: a " + std::to_string(bits) +
-                                 "-bit numerator or denominator, beyond the limit of " +
-                                 std::to_string(kMaxCoefficientBits) + " bits (doc/cli.md, Limits)");
-    }
-  }
+  std::copy(p.begin(), p.end(), out.begin());
   return out;
 }
 
@@ -176,21 +150,9 @@ std::string time_exact_text(const relpos::AlgebraicReal& t) {
   return "the only root of " + poly + " in " + interval;
 }
 
-const char* kind_name(relpos::FirstContact::Kind k) {
-  switch (k) {
-    case relpos::FirstContact::Kind::NotExteriorAtStart:
-      return "not-exterior-at-start";
-    case relpos::FirstContact::Kind::Contact:
-      return "contact";
-    case relpos::FirstContact::Kind::None:
-      return "none";
-  }
-  return "?";
-}
-
 Json first_contact_json(const relpos::FirstContact& fc, int digits) {
   Json j;
-  j["kind"] = kind_name(fc.kind);
+  j["kind"] = relpos::to_string(fc.kind);
   j["start_position"] = relpos::to_string(fc.start_position);
   j["time"] = fc.time ? time_json(*fc.time, digits) : Json(nullptr);
   j["position"] = fc.time ? Json(relpos::to_string(fc.position)) : Json(nullptr);

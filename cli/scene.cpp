@@ -16,6 +16,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <fstream>
@@ -183,10 +184,10 @@ void parse_line(const std::string& line, Format format, const relpos::io::BatchO
       try {
         relpos::io::read_batch_line(line, out.line, options, &p, in);
       } catch (...) {
-        out.id = in.id;
+        out.id = std::move(in.id);
         throw;
       }
-      out.id = in.id;
+      out.id = std::move(in.id);
       out.body = std::move(in.ellipsoid);
     } else {
       parse_csv(line, options, p, out);
@@ -216,6 +217,17 @@ void parallel_for(std::size_t n, unsigned threads, F f) {
 
 // ------------------------------------------------------------------------------------------------
 // Progress bar (stderr, only when it is a terminal)
+
+/// Seconds as m:ss (h:mm:ss from an hour on).
+std::string clock_text(double seconds) {
+  const long s = static_cast<long>(seconds + 0.5);
+  char text[32];
+  if (s >= 3600)
+    std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  else
+    std::snprintf(text, sizeof text, "%ld:%02ld", s / 60, s % 60);
+  return text;
+}
 
 class Progress {
  public:
@@ -250,10 +262,12 @@ class Progress {
         const double frac = std::min(1.0, static_cast<double>(done) / static_cast<double>(total_));
         const std::size_t shown = std::min(done, total_);
         const int width = 30, fill = static_cast<int>(frac * width);
-        std::fprintf(stderr, "\r[%s%s] %3d%% %zu/%zu lines, %.3g lines/s\033[K", std::string(fill, '#').c_str(),
-                     std::string(width - fill, '.').c_str(), static_cast<int>(frac * 100), shown, total_, rate);
+        const std::string eta = rate > 0 ? ", ETA " + clock_text((total_ - shown) / rate) : std::string();
+        std::fprintf(stderr, "\r[%s%s] %3d%% %zu/%zu lines, %.3g lines/s, %s elapsed%s\033[K",
+                     std::string(fill, '#').c_str(), std::string(width - fill, '.').c_str(),
+                     static_cast<int>(frac * 100), shown, total_, rate, clock_text(secs).c_str(), eta.c_str());
       } else {
-        std::fprintf(stderr, "\r%zu lines, %.3g lines/s\033[K", done, rate);
+        std::fprintf(stderr, "\r%zu lines, %.3g lines/s, %s elapsed\033[K", done, rate, clock_text(secs).c_str());
       }
       std::fflush(stderr);
     }
@@ -285,6 +299,13 @@ std::size_t count_lines(const std::string& path) {
 // ------------------------------------------------------------------------------------------------
 
 std::string dump(const Json& j) { return relpos::io::dump_json(j); }
+
+/// A measured time or rate to 3 significant digits (more would be noise).
+double significant(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return std::strtod(text, nullptr);
+}
 
 int run_generate(unsigned long long n, unsigned long long seed, const ShapeOptions& shapes) {
   relpos::Rational a(1), b(2);
@@ -434,6 +455,7 @@ int run_scene(Args& args) {
     if (lines.empty()) break;
     parallel_for(lines.size(), threads, [&](std::size_t i) {
       if (parsed[i].error.empty()) parse_line(lines[i], format, options_line, *p, parsed[i]);
+      if (lines[i].capacity() > (std::size_t(1) << 20)) std::string().swap(lines[i]);  // read: not kept
       bar.counter().fetch_add(1, std::memory_order_relaxed);  // progress: one unit when read...
     });
     line_number += static_cast<long>(lines.size());
@@ -464,11 +486,12 @@ int run_scene(Args& args) {
     if (!summary_only) {
       std::vector<const relpos::SceneVerdict*> verdict_of(parsed.size(), nullptr);
       for (std::size_t k = 0; k < where.size(); ++k) verdict_of[where[k]] = &result.verdicts[k];
-      out.clear();
-      for (std::size_t i = 0; i < parsed.size(); ++i) {
+      for (std::size_t i = 0; i < parsed.size(); ++i) {  // in pieces: a long id is not copied
         const Parsed& x = parsed[i];
         if (x.skip) continue;
-        out += "{\"id\":" + x.id;
+        output.write("{\"id\":");
+        output.write(x.id);
+        out.clear();
         if (const relpos::SceneVerdict* v = verdict_of[i]) {
           out += ",\"position\":\"";
           out += relpos::to_string(v->position);
@@ -478,8 +501,8 @@ int run_scene(Args& args) {
         } else {
           out += ",\"line\":" + std::to_string(x.line) + ",\"error\":" + dump(Json(x.error)) + "}\n";
         }
+        output.write(out);
       }
-      output.write(out);
       if (!more || !reader.ready()) output.flush();
       if (output.failed()) {
         bar.finish();
@@ -499,11 +522,13 @@ int run_scene(Args& args) {
   summary["positions"] = positions;
   summary["stages"] = stages;
   summary["threads"] = used_threads;
-  summary["seconds"] = Json{{"classify", classify_seconds}, {"total", total_seconds}};
-  summary["bodies_per_second"] = Json{{"classify", classify_seconds > 0 ? counts.bodies / classify_seconds : 0.0},
-                                      {"total", total_seconds > 0 ? counts.bodies / total_seconds : 0.0}};
-  std::cerr << dump(Json{{"summary", summary}}) << "\n";
-  return kExitOk;
+  summary["seconds"] = Json{{"classify", significant(classify_seconds)}, {"total", significant(total_seconds)}};
+  summary["bodies_per_second"] =
+      Json{{"classify", significant(classify_seconds > 0 ? counts.bodies / classify_seconds : 0.0)},
+           {"total", significant(total_seconds > 0 ? counts.bodies / total_seconds : 0.0)}};
+  relpos_cli::Output err(STDERR_FILENO);  // the summary may be the only output: its loss is an error
+  err.write(dump(Json{{"summary", summary}}) + "\n");
+  return err.flush() ? kExitOk : err.report_failure();
 }
 
 }  // namespace relpos_cli

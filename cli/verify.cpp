@@ -1,11 +1,13 @@
 // relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]: checks every certificate of a `relpos batch`
-// output against its input with the independent verifier (include/relpos/classify.hpp, "Certificates").
+// output against its input with the independent verifier (include/relpos/position.hpp).
 //
 // Line N of ANSWERS answers line N of INPUT. An answer with "error" is skipped when its input line is
 // not a valid pair, and counted as unanswered when it is. Prints `line N: <reason>` per failure
 // (unless --quiet) and `verified N, failed N, skipped N[, unanswered N]`.
 // Exit: 0 iff nothing failed and nothing valid was left unanswered, 1 otherwise, 2 on usage errors
 // (unknown option, missing or unreadable file).
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <exception>
@@ -17,7 +19,6 @@
 
 #include "commands.hpp"
 #include "common.hpp"
-#include "relpos/io.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
@@ -44,6 +45,19 @@ std::optional<relpos::Position> position_from_text(const std::string& s) {
   if (s == "E") return relpos::Position::E;
   return std::nullopt;
 }
+
+/// A value or message echoed in a reason, shortened when long: its start, an ellipsis and its length
+/// (a 100 000-digit number is not printed whole).
+std::string clip(const std::string& text) {
+  constexpr std::size_t kKeep = 100;
+  if (text.size() <= kKeep + 40) return text;
+  std::size_t cut = kKeep;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) >> 6) == 2) --cut;  // not inside a UTF-8 sequence
+  return text.substr(0, cut) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
+/// A line holding nothing but blanks.
+bool blank(const std::string& line) { return line.find_first_not_of(" \t\r") == std::string::npos; }
 
 struct InputPair {
   std::optional<relpos::Ellipsoid> e;
@@ -93,14 +107,15 @@ int run_verify(Args& args) {
     }
   }
   if (files.size() != 2) throw UsageError{"expected INPUT.jsonl and ANSWERS.jsonl"};
-  std::ifstream input(files[0], std::ios::binary), answers(files[1], std::ios::binary);
-  for (int k = 0; k < 2; ++k) {
-    if (!(k == 0 ? input : answers)) {
-      std::cerr << "relpos verify: cannot open '" << files[static_cast<std::size_t>(k)] << "': " << std::strerror(errno)
-                << "\n";
+  for (const std::string& file : files) {  // both readable files before anything is printed
+    const int fd = file == "-" ? -1 : open_input(file);
+    if (fd < 0) {
+      if (file == "-") std::cerr << "relpos: verify reads two files, not standard input\n";
       return 2;
     }
+    ::close(fd);
   }
+  std::ifstream input(files[0], std::ios::binary), answers(files[1], std::ios::binary);
   long verified = 0, failed = 0, skipped = 0, unanswered = 0, number = 0;
   auto fail = [&](long n, const std::string& reason) {
     ++failed;
@@ -112,6 +127,7 @@ int run_verify(Args& args) {
     const bool has_answer = static_cast<bool>(std::getline(answers, answer_line));
     if (!has_in && !has_answer) break;
     ++number;
+    if ((!has_in && blank(answer_line)) || (!has_answer && blank(in_line))) continue;  // a trailing blank line
     if (!has_in) {
       fail(number, "an answer line without an input line (the files have different numbers of lines)");
       continue;
@@ -125,7 +141,7 @@ int run_verify(Args& args) {
     try {
       answer = relpos::io::parse_json_exact(answer_line);
     } catch (const std::exception& err) {
-      fail(number, std::string("the answer is not JSON: ") + err.what());
+      fail(number, std::string("the answer is not JSON: ") + clip(err.what()));
       continue;
     }
     if (!answer.is_object()) {
@@ -140,7 +156,7 @@ int run_verify(Args& args) {
         answer_id = in.id;  // not comparable
       }
       if (answer_id != in.id) {
-        fail(number, "the answer's id " + answer_id.dump() + " is not the input's " + in.id.dump());
+        fail(number, "the answer's id " + clip(answer_id.dump()) + " is not the input's " + clip(in.id.dump()));
         continue;
       }
     }
@@ -149,14 +165,14 @@ int run_verify(Args& args) {
         ++unanswered;
         if (!quiet)
           std::cout << "line " << number << ": unanswered: the input is a valid pair but the answer is an error ("
-                    << answer["error"].dump() << ")\n";
+                    << clip(answer["error"].dump()) << ")\n";
       } else {
         ++skipped;
       }
       continue;
     }
     if (!in.e) {
-      fail(number, "the input is not a valid pair (" + in.error + ") but the answer is not an error");
+      fail(number, "the input is not a valid pair (" + clip(in.error) + ") but the answer is not an error");
       continue;
     }
     if (!answer.contains("position") || !answer["position"].is_string()) {
@@ -166,7 +182,7 @@ int run_verify(Args& args) {
     const std::string position_text = answer["position"].get<std::string>();
     const std::optional<relpos::Position> position = position_from_text(position_text);
     if (!position) {
-      fail(number, "position \"" + position_text + "\" is not one of I, TI, C, TE, E");
+      fail(number, "position \"" + clip(position_text) + "\" is not one of I, TI, C, TE, E");
       continue;
     }
     if (!answer.contains("certificate")) {
@@ -176,11 +192,11 @@ int run_verify(Args& args) {
     try {
       const relpos::Certificate c = relpos::certificate_from_json(answer["certificate"]);
       if (auto reason = relpos::verify_certificate(*in.e, *in.p, *position, c))
-        fail(number, position_text + ": " + *reason);
+        fail(number, position_text + ": " + clip(*reason));
       else
         ++verified;
     } catch (const std::exception& err) {
-      fail(number, position_text + ": " + err.what());
+      fail(number, position_text + ": " + clip(err.what()));
     }
   }
   if (input.bad() || answers.bad()) {

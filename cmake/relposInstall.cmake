@@ -1,17 +1,19 @@
-# Install rules: the library, its public headers, the relpos CLI, the CMake package (relposConfig.cmake,
-# relposConfigVersion.cmake, relposTargets.cmake exporting relpos::relpos) and relpos.pc for pkg-config
-# (doc/install.md). Included from the top-level CMakeLists.txt.
+# Install rules: the libraries, their public headers, the relpos CLI, the CMake package
+# (relposConfig.cmake, relposConfigVersion.cmake, relposTargets.cmake exporting relpos::relpos and
+# relpos::relpos_shared) and relpos.pc for pkg-config (doc/install.md). Included from the top-level
+# CMakeLists.txt.
 include(CMakePackageConfigHelpers)
 
 set(RELPOS_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/relpos" CACHE STRING
     "Where relposConfig.cmake is installed (relative to the prefix)")
 
-install(TARGETS relpos EXPORT relposTargets
+install(TARGETS ${RELPOS_LIBRARY_TARGETS} EXPORT relposTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # Every header left in include/relpos/ is public (private ones live next to the sources).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/relpos DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES ${PROJECT_BINARY_DIR}/include/relpos/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/relpos)
 install(TARGETS relpos_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 install(EXPORT relposTargets NAMESPACE relpos:: DESTINATION ${RELPOS_INSTALL_CMAKEDIR})
@@ -48,6 +50,6 @@ install(CODE "
 if(RELPOS_BUILD_TESTS AND BUILD_TESTING AND NOT RELPOS_SANITIZE)
   add_test(NAME package
            COMMAND bash ${PROJECT_SOURCE_DIR}/tests/package/check_package.sh ${PROJECT_BINARY_DIR}
-                   ${PROJECT_SOURCE_DIR}/tests/package/consumer ${CMAKE_COMMAND})
+                   ${PROJECT_SOURCE_DIR}/tests/package/consumer ${CMAKE_COMMAND} ${RELPOS_BUILD_SHARED})
   set_tests_properties(package PROPERTIES LABELS package TIMEOUT 600)
 endif()

@@ -288,7 +288,7 @@ inline bool build_pair(Bytes& in, Built& out) {
       case 3:
         k.r = k.amin() * k.amin() / 2;  // rho = 1
         break;
-      case 4: {  // -a^2 or -b^2 double root of f (math.md section 3), when a != b
+      case 4: {  // -a^2 or -b^2 double root of f (math.md §3), when a != b
         if (k.a == k.b) break;
         const Rational a2 = k.a * k.a, b2 = k.b * k.b;
         if (in.flag())
@@ -443,7 +443,7 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
   if (c.verdict.sign_disc_f == 0)
     expect(c.verdict.stage == relpos::Stage::ExactRoots || c.verdict.stage == relpos::Stage::MultipleRootWitness,
            what + ": Disc(f) = 0 decided by a filter");
-  // Every valid pair gets I, TI, C, TE or E whatever its size, with contact decided (math.md section 8).
+  // Every valid pair gets I, TI, C, TE or E whatever its size, with contact decided (math.md §8).
   expect(c.verdict.meets().has_value(), what + ": contact undecided");
   const bool meets =
       c.verdict.position == Position::TI || c.verdict.position == Position::C || c.verdict.position == Position::TE;
@@ -462,7 +462,7 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
     expect(c.verdict.position == want,
            what + ": position " + name(c.verdict.position) + ", secular oracle says " + name(want));
   }
-  // The independent tangency test on every rational multiple root (small pairs; math.md section 3).
+  // The independent tangency test on every rational multiple root (small pairs; math.md §3).
   if (c.verdict.small)
     for (const auto& r : c.roots)
       if (r.multiplicity_f >= 2 && r.exact)
@@ -470,7 +470,7 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
                what + ": kernel test disagrees at the root " + relpos::to_string(*r.exact));
 
   // Invariance: a signed permutation + translation, a random congruence, positive rescaling and sign
-  // flips of either matrix change nothing (math.md section 1).
+  // flips of either matrix change nothing (math.md §1).
   const rt::Matrix4 h = signed_permutation(in);
   const Ellipsoid e1 = Ellipsoid::from_matrix(rt::congruence(b.e, h));
   const Paraboloid p1 = Paraboloid::from_matrix(rt::congruence(b.p, h));

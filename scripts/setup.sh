@@ -10,9 +10,11 @@ shift || true
 # libflint-dev: irreducible factors of integer polynomials (minimal polynomials of motion instants).
 # pybind11-dev .. python3-distributed: the Python package relpos and its tests (doc/python.md);
 # pkg-config: the installed-package test (tests/package).
+# python3-setuptools python3-wheel python3-venv: `pip install .` into a venv (pyproject.toml; the venv
+# brings its own pip).
 PACKAGES=(g++ make cmake libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev catch2 nlohmann-json3-dev python3
           libflint-dev pkg-config pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-dask
-          python3-distributed)
+          python3-distributed python3-setuptools python3-wheel python3-venv)
 scripts/install-packages.sh "${PACKAGES[@]}"
 
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null

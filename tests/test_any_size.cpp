@@ -1,10 +1,10 @@
-// Any size (math.md section 8, issue 11): a corpus of pairs whose position is known by construction
+// Any size (math.md §8): a corpus of pairs whose position is known by construction
 // (support/large_cases.hpp), judged by an independent exact second method (support/secular.hpp), by dense
 // sampling (a check of the constructions themselves), and finally by relpos::classify / classify_exact.
 //
 // The seed of the random parts is printed; RELPOS_SEED=<n> reruns or varies it.
-// Tags: [secular] [sampling] are fast; [anysize] runs the classifier (fails until section 8 is implemented in
-// classify) and includes the 2000 random pairs ([random], a few seconds in Release).
+// Tags: [secular] [sampling] are fast; [anysize] runs the classifier and includes the 2000 random
+// pairs ([random], a few seconds in Release).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -90,13 +90,7 @@ SampleResult sample(const LargeCase& c, std::mt19937_64& gen, int n) {
   rt::Matrix3 m;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) m(i, j) = em(i, j);
-  const Rational det = rt::det3(m);
-  Vector3 centre;
-  for (int k = 0; k < 3; ++k) {
-    rt::Matrix3 mk = m;
-    for (int i = 0; i < 3; ++i) mk(i, k) = -em(i, 3);
-    centre[static_cast<std::size_t>(k)] = rt::det3(mk) / det;
-  }
+  const Vector3 centre = rt::solve3(m, {-em(0, 3), -em(1, 3), -em(2, 3)});
   const Rational kappa = -xtqx(em, centre);  // X^T E X at the centre = -kappa
   REQUIRE(kappa > 0);
   long double M[3][3], L[3][3] = {}, P[4][4], ctr[3];
@@ -166,12 +160,9 @@ TEST_CASE("the secular polynomial is D^2 e(x(t)) (one case, exact rational t)", 
         for (int j = 0; j < 3; ++j) k(i, j) = pm(i, j) + t * em(i, j);
       const Rational det = rt::det3(k);
       REQUIRE(det != 0);
-      Vector3 x;
-      for (int col = 0; col < 3; ++col) {
-        rt::Matrix3 kc = k;
-        for (int i = 0; i < 3; ++i) kc(i, col) = -(pm(i, 3) + t * em(i, 3));
-        x[static_cast<std::size_t>(col)] = rt::det3(kc) / det;
-      }
+      Vector3 rhs;
+      for (int i = 0; i < 3; ++i) rhs[static_cast<std::size_t>(i)] = -(pm(i, 3) + t * em(i, 3));
+      const Vector3 x = rt::solve3(k, rhs);
       const Field f{Rational(0)};
       const Rational D = f.eval(sp.D, {t, Rational(0)}).u, S = f.eval(sp.S, {t, Rational(0)}).u;
       const Rational F = f.eval(sp.F, {t, Rational(0)}).u;
@@ -246,7 +237,7 @@ TEST_CASE("sampling agrees with the constructed answer", "[sampling]") {
       ++contact_checks;
     }
   }
-  // math.md section 3's C and E examples also have exact certificates (test_classify_constructed).
+  // math.md §3's C and E examples also have exact certificates (test_classify_constructed).
   std::cout << "test_any_size: sampled " << base.size() << " base cases x 20000 points, " << contact_checks
             << " exact contact points" << std::endl;
 }
@@ -260,7 +251,7 @@ int count_classifier_failures(const std::vector<LargeCase>& cases, bool exact) {
     const auto cl = exact ? relpos::classify_exact(c.e, c.p) : relpos::classify(c.e, c.p);
     ++got_hist[relpos::to_string(cl.verdict.position)];
     if (cl.verdict.position == c.expected) {
-      // Every answer's certificate verifies with rational arithmetic alone (classify.hpp, "Certificates").
+      // Every answer's certificate verifies with rational arithmetic alone (position.hpp).
       const auto why = relpos::verify_certificate(c.e, c.p, cl.verdict.position, cl.certificate);
       if (why) {
         ++failures;

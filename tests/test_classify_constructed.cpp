@@ -149,7 +149,7 @@ TEST_CASE("tangencies at vertices and symmetry planes survive congruences", "[cl
 
 TEST_CASE("the paper's Remark example: I with -a^2 a double root of f and a root of s", "[classify][paper]") {
   const Rational a(6, 5), b(3, 2), r(1, 4), yc(1, 2);
-  // z_c = y_c^2/(b^2 - a^2) + r^2/a^2 + a^2/4 makes -a^2 a double root (math.md section 3).
+  // z_c = y_c^2/(b^2 - a^2) + r^2/a^2 + a^2/4 makes -a^2 a double root (math.md §3).
   const Rational zc = yc * yc / (b * b - a * a) + r * r / (a * a) + a * a / 4;
   REQUIRE(zc == Q(92281, 129600));
   const Config k = config("Remark", a, b, V(Q(0), yc, zc), r, Position::I);
@@ -339,7 +339,7 @@ TEST_CASE("a != b: triple -a^2 at centre (0,0,a^2/2), r = a^2/2 is TI with rho =
 // 7. -b^2 double in C and in E: Disc(f) = 0 without tangency; Table 2 is wrong here
 // ---------------------------------------------------------------------------------------------
 
-TEST_CASE("-b^2 double root with the centre crossing or outside (math.md section 3)", "[classify][special][table2]") {
+TEST_CASE("-b^2 double root with the centre crossing or outside (math.md §3)", "[classify][special][table2]") {
   // y_c = 0 and z_c = x_c^2/(a^2 - b^2) + r^2/b^2 + b^2/4 make -b^2 a double root of f.
   const Rational a(1), b(2), r(1, 4);
   auto zc = [&](const Rational& xc) { return xc * xc / (a * a - b * b) + r * r / (b * b) + b * b / 4; };
@@ -416,7 +416,7 @@ TEST_CASE("2r = a^2 exactly: rho == 1, small", "[classify][smallness]") {
   check_config(config("rho = 1, TE off-axis", a, b, tp.along(r), r, Position::TE));
   check_config(config("rho = 1, C", a, b, tp.along(-r / 2), r, Position::C));
   check_config(config("rho = 1, E", a, b, tp.along(2 * r), r, Position::E));
-  // Just beyond: not small, and still the true position (math.md section 8).
+  // Just beyond: not small, and still the true position (math.md §8).
   const Config beyond = config("rho > 1, axis", a, b, V(Q(0), Q(0), Q(5)), r + Q(1, 1000), Position::I);
   const Classification cb = check_config(beyond);
   CHECK_FALSE(cb.verdict.small);
@@ -479,14 +479,14 @@ TEST_CASE("double inputs: dyadic centres on the axis give exact tangencies", "[c
 }
 
 // ---------------------------------------------------------------------------------------------
-// 12. Not-small pairs (math.md section 6)
+// 12. Not-small pairs (math.md §6)
 // ---------------------------------------------------------------------------------------------
 
-TEST_CASE("not small: every position is decided (math.md section 8)", "[classify][smallness]") {
+TEST_CASE("not small: every position is decided (math.md §8)", "[classify][smallness]") {
   const Rational one(1), r(2);  // 2r = 4 > a^2 = 1
   SECTION("centre (0,0,3): crossing, although the root pattern alone cannot tell") {
     // f = -(l + 1)^2 (l^2 + 12 l + 16) / 4: all roots real and negative, so neither a non-real
-    // root (contact) nor two positive roots (separation) is available; section 8 decides C.
+    // root (contact) nor two positive roots (separation) is available; math.md §8 decides C.
     const Classification c = check_config(config("big, (0,0,3)", one, one, V(Q(0), Q(0), Q(3)), r, Position::C));
     CHECK_FALSE(c.verdict.small);
     CHECK(c.verdict.rho_vs_one == 1);
@@ -523,7 +523,7 @@ TEST_CASE("not small: every position is decided (math.md section 8)", "[classify
     // common tangent plane, while in the narrower section x = 0 the parabola z = 4 y^2 comes within
     // distance^2 = b^2 z - b^4/4 = 19/64 < r^2 of the centre: the surfaces cross. Beyond
     // smallness, then, the kernel test sees a genuine tangential contact point that the
-    // multiplicity rule does not call a tangency; the pair is crossing, and reported C (section 8).
+    // multiplicity rule does not call a tangency; the pair is crossing, and reported C (math.md §8).
     const Config k = config("big, touching section", one, Q(1, 2), V(Q(0), Q(0), Q(5, 4)), one, Position::C);
     const auto f = paper_f(k.a, k.b, k.c, k.r);
     REQUIRE(multiplicity(f, Q(-1)) == 2);

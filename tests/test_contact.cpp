@@ -10,10 +10,11 @@
 #include <relpos/scene.hpp>
 #include <vector>
 
+#include "algebra/smallness.hpp"
 #include "contact/discriminant_case.hpp"
-#include "core/smallness.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
+#include "support/random_pairs.hpp"
 #include "support/secular.hpp"
 
 using namespace rt;
@@ -69,39 +70,8 @@ struct DoublePairs {
   std::mt19937_64 rng;
   explicit DoublePairs(std::uint64_t seed) : rng(seed) {}
   std::pair<Matrix4, Matrix4> next() {
-    std::uniform_real_distribution<double> u11(-1, 1), uc(-2, 2), uk(0.01, 2), uab(0.3, 2);
-    double L[3][3], M[3][3], c[3], Mc[3];
-    for (auto& r : L)
-      for (auto& x : r) x = u11(rng);
-    for (int i = 0; i < 3; ++i)
-      for (int j = i; j < 3; ++j) {
-        M[i][j] = 0;
-        for (int k = 0; k < 3; ++k) M[i][j] += L[i][k] * L[j][k];
-        if (i == j) M[i][j] += 0.05;
-        M[j][i] = M[i][j];
-      }
-    for (double& x : c) x = uc(rng);
-    const double k = uk(rng);
-    double cMc = 0;
-    for (int i = 0; i < 3; ++i) {
-      Mc[i] = 0;
-      for (int j = 0; j < 3; ++j) Mc[i] += M[i][j] * c[j];
-      cMc += c[i] * Mc[i];
-    }
-    Matrix4 E, P;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) E(i, j) = Rational(M[i][j]);
-      E(i, 3) = E(3, i) = Rational(-Mc[i]);
-    }
-    E(3, 3) = Rational(cMc - k);
-    const double alpha = uab(rng), beta = uab(rng), uu = u11(rng), vv = u11(rng), w = uc(rng);
-    P(0, 0) = Rational(alpha);
-    P(1, 1) = Rational(beta);
-    P(0, 3) = P(3, 0) = Rational(uu * alpha);
-    P(1, 3) = P(3, 1) = Rational(vv * beta);
-    P(2, 3) = P(3, 2) = Rational(-0.5);
-    P(3, 3) = Rational(w);
-    return {E, P};
+    const Matrix4 E = random_double_ellipsoid_matrix(rng, 0.01);  // drawn before the paraboloid
+    return {E, random_double_paraboloid_matrix(rng)};
   }
 };
 
@@ -137,7 +107,7 @@ TEST_CASE("the discriminant case on exact signs reproduces classify_exact", "[co
     ++decided;
     const auto v = relpos::verdict_from_discriminant_case(dc, x.verdict.rho_vs_one);
     // The case alone may decline a pair that is not small with four real roots (I or C by math.md
-    // section 8 needs the roots' location relative to lambda_s); whatever it answers is classify's.
+    // §8 needs the roots' location relative to lambda_s); whatever it answers is classify's.
     if (!v) {
       CHECK(x.verdict.rho_vs_one > 0);
       CHECK(dc == DiscriminantCase::AllNegative);
@@ -204,7 +174,7 @@ TEST_CASE("the paper's discriminant tracker is wrong twice; relpos is not", "[co
     Contact contact;
   };
   const std::vector<Case> cases = {
-      // -b^2 = -4 is a double root of f that is not a tangency (math.md section 3).
+      // -b^2 = -4 is a double root of f that is not a tangency (math.md §3).
       {"C with Disc = 0", V(Q(1), Q(0), Q(131, 192)), Position::C, Contact::Crossing},
       {"E with Disc = 0", V(Q(6, 5), Q(0), Q(857, 1600)), Position::E, Contact::None},
       // A body that crossed all the way in: Disc > 0, like E.
@@ -278,7 +248,7 @@ TEST_CASE("contact beyond smallness", "[contact][large]") {
   const Paraboloid p = Paraboloid::from_matrix(paraboloid_matrix(Q(1), Q(1)));
   // rho = 4 r^2 / a^4 = 16 > 1 for r = 2.
   const Rational r(2);
-  {  // Deep inside: I for any size (math.md section 8), and the containment certificate agrees.
+  {  // Deep inside: I for any size (math.md §8), and the containment certificate agrees.
     const Ellipsoid e = Ellipsoid::from_matrix(sphere_matrix(V(Q(0), Q(0), Q(100)), r));
     const Verdict v = relpos::decide_position(e, p);
     CHECK(v.position == Position::I);
@@ -286,7 +256,7 @@ TEST_CASE("contact beyond smallness", "[contact][large]") {
     CHECK(v.meets() == std::optional<bool>(false));
     const ContactAnswer c = relpos::contact(e, p);
     CHECK(c.contact == Contact::None);
-    // Not small with four negative roots: the gap test of section 8 runs in the classifier (the
+    // Not small with four negative roots: the gap test of math.md §8 runs in the classifier (the
     // discriminant-only path declines), so the full classifier decides.
     CHECK(c.by == DecidedBy::FullClassifier);
     const ContactAnswer s = relpos::ContactChecker(p).contact(e);
@@ -377,7 +347,7 @@ TEST_CASE("tracker equals decide_position at every frame of translated paths", "
     }
     INFO("filter " << tr.counts().by_filter << " of " << tr.counts().frames);
     if (dyadic) {  // exact doubles: most frames by the discriminant alone (frames of a body that is
-      // not small with four negative roots need section 8's gap test: the full classifier)
+      // not small with four negative roots need math.md §8's gap test: the full classifier)
       frames += tr.counts().frames;
       by_filter += tr.counts().by_filter;
       CHECK(tr.counts().by_filter * 10 > tr.counts().frames * 6);
@@ -419,8 +389,8 @@ TEST_CASE("tracker: frames that are not translates still get the right answer", 
   const Ellipsoid big = Ellipsoid::sphere(V(Q(0), Q(0), Q(8)), Q(2));
   const auto fr = tr.update(big);
   CHECK(fr.position == relpos::decide_position(big, p).position);
-  CHECK(fr.position == Position::I);          // not small, yet decided (math.md section 8)
-  CHECK(fr.by == DecidedBy::FullClassifier);  // the gap test of section 8 is the classifier's
+  CHECK(fr.position == Position::I);          // not small, yet decided (math.md §8)
+  CHECK(fr.by == DecidedBy::FullClassifier);  // the gap test of math.md §8 is the classifier's
   CHECK(tr.counts().rho_recomputed == 1);
   // A different shape block (ellipsoid) crossing the wall.
   const Ellipsoid ell = Ellipsoid::from_axes(V(Q(1), Q(0), Q(1)), V(Q(1, 4), Q(1, 8), Q(1, 8)),
@@ -568,5 +538,5 @@ TEST_CASE("tracker update(translation) equals decide_position on the moved body"
   INFO("by filter " << by_filter << " of " << frames);
   CHECK(tangent_frames >= 2);           // the sphere's path hits TE and TI exactly
   CHECK(by_filter * 10 >= frames * 8);  // the translated filter decides the generic frames (not the
-                                        // not-small interior ones: section 8's gap test)
+                                        // not-small interior ones: math.md §8's gap test)
 }

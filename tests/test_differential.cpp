@@ -4,7 +4,7 @@
 //     by the closed-form root of s, and the roots of f located by MPFR Aberth iteration and certified
 //     by the Gerschgorin / Braess-Hadeler inclusion theorem evaluated in exact arithmetic
 //     (support/certified_roots.hpp); where every root is isolated and its kind and sign decided, the
-//     position follows from the table of math.md sections 3 and 6 (f is then square-free);
+//     position follows from the table of math.md §3 and §6 (f is then square-free);
 //   - the kernel tangency test (kernel_has_common_point) on every rational multiple root;
 //   - the position known by construction (exact tangencies and their neighbours, near-tangent
 //     perturbations, spheres on the axis, geometric certificates);
@@ -12,7 +12,7 @@
 //     permutations of the coordinates, and exact conversions of double inputs (doubles vs the same
 //     numbers as exact decimal strings or fractions through the JSON reader, and vs a non-dyadic
 //     rescaling that bypasses the double filter).
-// Pairs that are not small (math.md section 6) are included: only E, TE and contact: true may be
+// Pairs that are not small (math.md §6) are included: only E, TE and contact: true may be
 // claimed for them.
 //
 // The seed is printed; RELPOS_SEED=<n> reruns or varies it.
@@ -71,7 +71,7 @@ Stats& stats() {
 
 // ---- the independent position -------------------------------------------------------------------
 
-/// The table of math.md sections 3 and 6 for a square-free f whose roots are all certified; nullopt
+/// The table of math.md §3 and §6 for a square-free f whose roots are all certified; nullopt
 /// when the root pattern alone does not decide (not small and not E, or outside the table).
 std::optional<Position> position_from_certificate(const RootCertificate& c, int rho_sign,
                                                   std::optional<bool>* contact) {
@@ -123,7 +123,7 @@ void check_independent(const Ellipsoid& e, const Paraboloid& p, const Classifica
     std::optional<Position> want = position_from_certificate(cert, rho, &contact);
     if (!want && rho > 0) {
       // Not small and not E: the root pattern alone does not decide; the secular method does
-      // (math.md section 8), for any size.
+      // (math.md §8), for any size.
       want = secular_position(e, p);
       contact = truth_has_contact(*want);
     }
@@ -219,7 +219,7 @@ Classification run_case(const Case& k, Rng& g) {
 
   check_independent(e, p, c);
 
-  // Every size is classified (math.md section 8), contact always decided.
+  // Every size is classified (math.md §8), contact always decided.
   REQUIRE(c.verdict.meets().has_value());
   CHECK(*c.verdict.meets() == truth_has_contact(c.verdict.position));
   if (!c.verdict.small) {
@@ -407,7 +407,7 @@ void near_tangent_cases(Rng& g, int n) {
 }
 
 /// -a^2 (plane x = 0) and -b^2 (plane y = 0) double roots of f that are roots of s (math.md
-/// section 3): no tangency unless f~ keeps a multiple root.
+/// §3): no tangency unless f~ keeps a multiple root.
 void special_root_cases(Rng& g, int n) {
   for (int i = 0; i < n; ++i) {
     Config k;

@@ -1,5 +1,5 @@
 // Every input that is not an ellipsoid / elliptic paraboloid pair gets relpos::InputError with a
-// message that names what was found (math.md section 1).
+// message that names what was found (math.md §1).
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -162,7 +162,7 @@ TEST_CASE("InputError is the one exception type and an std::invalid_argument", "
   }
 }
 
-// ---- API misuse (issue 15) ----------------------------------------------------------------------
+// ---- API misuse ---------------------------------------------------------------------------------
 
 TEST_CASE("AlgebraicReal::refine rejects a width that is not positive", "[errors][api]") {
   auto sqrt2 = relpos::AlgebraicReal::root({Integer(-2), Integer(0), Integer(1)}, Rational(1), Rational(2));

@@ -10,8 +10,8 @@
 #include <relpos/classify.hpp>
 #include <relpos/scene.hpp>
 
+#include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
-#include "core/smallness.hpp"
 #include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"
 #include "scene/certificates.hpp"
@@ -289,7 +289,7 @@ TEST_CASE("translated semi-static filter: every certified sign is the exact sign
   CHECK(certified * 10 >= quantities * 8);
 }
 
-TEST_CASE("semi-static gap test (math.md section 8): every certified answer is the exact one", "[filters][random]") {
+TEST_CASE("semi-static gap test (math.md §8): every certified answer is the exact one", "[filters][random]") {
   // Large spheres and ellipsoids near the cup (most pairs are not small, many need the gap test),
   // and random matrices with wide exponents: whenever the double filter answers, the exact gap test
   // on the same f and s answers the same.

@@ -1,5 +1,5 @@
-// Ellipsoid/Paraboloid::from_doubles against from_matrix on the exact rationals of the same doubles
-// (issue 12): the same acceptance, the same InputError messages, the same stored matrices and the
+// Ellipsoid/Paraboloid::from_doubles against from_matrix on the exact rationals of the same doubles:
+// the same acceptance, the same InputError messages, the same stored matrices and the
 // same positions, on random and degenerate matrices (rank-deficient blocks, one-ulp perturbations,
 // asymmetry, non-finite entries, extreme exponents).
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 // motion.hpp, polynomial_motion.hpp, algebraic_real.hpp: positions along polynomial motions
-// (math.md "Motion"). Every expected instant is known by construction (see each case); every
+// (math.md §7). Every expected instant is known by construction (see each case); every
 // timeline is cross-checked against relpos::classify at dense rational samples, and the method used
 // at irrational instants (subresultants) against classify at rational instants.
 #include <gmp.h>
@@ -612,7 +612,7 @@ TEST_CASE("a rotation can change smallness; spans without it are classified too"
   CHECK(smallness_instant);
   CHECK(small_interval);
   CHECK(large_interval);
-  // Every interval, small or not, carries classify's position at its sample (math.md section 8).
+  // Every interval, small or not, carries classify's position at its sample (math.md §8).
   for (const auto& iv : tl.intervals) {
     INFO("interval sample t = " << relpos::to_string(iv.sample) << (iv.small ? " (small)" : " (not small)"));
     const Position want = relpos::classify(relpos::placed_ellipsoid(e0, m, iv.sample), p).verdict.position;
@@ -711,7 +711,7 @@ TEST_CASE("random paths: timelines agree with dense classification; both methods
 }
 
 // ------------------------------------------------------------------------------------------------
-// Bodies that are not small (math.md section 8): every instant is decided, irrational ones included
+// Bodies that are not small (math.md §8): every instant is decided, irrational ones included
 // (definiteness of l P + E(t*) at the roots of f, instant_position.hpp).
 
 /// A timeline over [0, t1] whose instants respect the closure, that agrees with classify() at 40

@@ -3,17 +3,16 @@
 // known factorisations; and the adaptive classifier on exactly degenerate double inputs (tangencies
 // and special double roots under random dyadic affine maps) against classify_exact.
 #include <catch2/catch.hpp>
-
-#include "support/seed.hpp"
 #include <cstdlib>
 #include <iostream>
 
-#include "core/roots.hpp"
+#include "algebra/roots.hpp"
 #include "filters/checked_int.hpp"
 #include "filters/multiple_roots.hpp"
 #include "filters/static_filter.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
+#include "support/seed.hpp"
 
 using namespace rt;
 using relpos::CheckedInt;

@@ -34,7 +34,6 @@ TEST_CASE("parse_rational: integers", "[numbers][parse]") {
   CHECK(parse_rational("+12") == Q(12));
   CHECK(parse_rational("-0") == Q(0));
   CHECK(parse_rational("000123") == Q(123));
-  CHECK(parse_rational("  42\t") == Q(42));  // surrounding blanks are trimmed
   // Beyond 64 bits: exact.
   Rational big = parse_rational("123456789012345678901234567890");
   CHECK(big == Rational(Integer("123456789012345678901234567890")));
@@ -76,9 +75,10 @@ TEST_CASE("parse_rational: decimals and exponents are exact", "[numbers][parse]"
 
 TEST_CASE("parse_rational: malformed text throws InputError naming the text", "[numbers][parse][errors]") {
   using Catch::Matchers::Contains;
-  for (const char* bad : {"1.2.3", "1/0",      "",    "   ",   "abc", "1e",    "0x10",  "1/2/3", "--1", "+-1",
-                          "1e+",   ".",        "e5",  "1 2",   "1/",  "/2",    "1.5/2", "nan",   "NaN", "inf",
-                          "-inf",  "Infinity", "1,5", "1e1.5", "½",   "1/0.5", "0x1p3", "1ee2",  "12a"}) {
+  for (const char* bad :
+       {"1.2.3", "1/0",   "",      "   ",  "abc",   "1e",  "0x10", "1/2/3", "--1",  "+-1",      "1e+",  ".",
+        "e5",    "1 2",   "1/",    "/2",   "1.5/2", "nan", "NaN",  "inf",   "-inf", "Infinity", "1,5",  "1e1.5",
+        "½",     "1/0.5", "0x1p3", "1ee2", "12a",   " 1",  "1 ",   "\t42",  "1/-2", "1/+2",     "-1/-2"}) {
     CAPTURE(bad);
     CHECK_THROWS_AS(parse_rational(bad), InputError);
   }

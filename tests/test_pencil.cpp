@@ -6,11 +6,11 @@
 #include <relpos/classify.hpp>
 #include <vector>
 
-#include "core/pencil.hpp"
-#include "core/roots.hpp"
-#include "core/smallness.hpp"
-#include "core/sturm.hpp"
-#include "forms/forms.hpp"
+#include "algebra/forms.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/roots.hpp"
+#include "algebra/smallness.hpp"
+#include "algebra/sturm.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 

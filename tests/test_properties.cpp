@@ -122,7 +122,7 @@ TEST_CASE("random small configurations: exact algebra, classify == classify_exac
     ++seen[static_cast<int>(c.verdict.position)];
   }
   // The oracles fix a good share of the cases and every position occurs (every pair gets one of the
-  // five, math.md section 8).
+  // five, math.md §8).
   CHECK(known * 2 > total);
   for (const Position q : {Position::I, Position::TI, Position::C, Position::TE, Position::E})
     CHECK(seen[static_cast<int>(q)] > 20);
@@ -214,7 +214,7 @@ TEST_CASE("-a^2 double root in the plane x = 0 (the Remark family), random", "[p
 }
 
 TEST_CASE("-b^2 double root in the plane y = 0, random: C, E or I without tangency", "[properties][special][random]") {
-  // y_c = 0, z_c = x_c^2/(a^2 - b^2) + r^2/b^2 + b^2/4 (math.md section 3).
+  // y_c = 0, z_c = x_c^2/(a^2 - b^2) + r^2/b^2 + b^2/4 (math.md §3).
   const std::uint64_t seed = 0xB0B;
   Rng g(seed);
   CAPTURE(seed);

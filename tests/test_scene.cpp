@@ -1,6 +1,6 @@
 // Scenes (include/relpos/scene.hpp): every scene answer equals per-pair classify_exact (position,
 // rule, contact), the early-outs never fire on a body with contact or of uncertified smallness, the
-// certificate polynomials are what math.md says they are (cross-checked in exact arithmetic against
+// certificate polynomials are what math.md §13 says they are (cross-checked in exact arithmetic against
 // the pencil code), and 1, 2, 3 threads give identical answers and consistent counts.
 #include <CGAL/FPU.h>
 
@@ -128,7 +128,7 @@ std::vector<Body> constructed_bodies(Rng& g, const Rational& a, const Rational& 
   out.push_back({"deep inside", sphere(V(Q(0), Q(0), 4 * a2), r), true, Position::I});
   out.push_back({"far below", sphere(V(Q(0), Q(0), -4 * a2), r), true, Position::E});
   // Not small: inside (I: distance^2 to the cup a^2 z - a^4/4 = 31/4 a^4 > r^2 = 4 a^4), outside
-  // (E), crossing at the vertex (C); math.md section 8 classifies every size.
+  // (E), crossing at the vertex (C); math.md §8 classifies every size.
   out.push_back({"big sphere inside, not small", sphere(V(Q(0), Q(0), 8 * a2), 2 * a2), true, Position::I});
   out.push_back({"big sphere below, not small", sphere(V(Q(0), Q(0), -3 * a2), 2 * a2), true, Position::E});
   out.push_back({"big sphere at the vertex", sphere(V(Q(0), Q(0), Q(0)), 2 * a2), true, Position::C});
@@ -170,12 +170,7 @@ TEST_CASE("scene: the certificate polynomials are det M, -det E, D^2 P(c), s(l) 
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m3(i, j) = em(i, j);
     const Rational dm = det3(m3);
-    Vector3 c;
-    for (int col = 0; col < 3; ++col) {
-      Matrix3 mc = m3;
-      for (int i = 0; i < 3; ++i) mc(i, col) = -em(i, 3);
-      c[static_cast<std::size_t>(col)] = det3(mc) / dm;
-    }
+    const Vector3 c = solve3(m3, {-em(0, 3), -em(1, 3), -em(2, 3)});
     Rational pc = pm(3, 3);
     for (int i = 0; i < 3; ++i) {
       pc += 2 * pm(i, 3) * c[static_cast<std::size_t>(i)];
@@ -189,12 +184,7 @@ TEST_CASE("scene: the certificate polynomials are det M, -det E, D^2 P(c), s(l) 
       for (int j = 0; j < 3; ++j) v += pm(i, j) * c[static_cast<std::size_t>(j)];
       grad[static_cast<std::size_t>(i)] = 2 * v;
     }
-    Vector3 sol;
-    for (int col = 0; col < 3; ++col) {
-      Matrix3 mc = m3;
-      for (int i = 0; i < 3; ++i) mc(i, col) = grad[static_cast<std::size_t>(i)];
-      sol[static_cast<std::size_t>(col)] = det3(mc) / dm;
-    }
+    const Vector3 sol = solve3(m3, grad);
     const Rational gmg = grad[0] * sol[0] + grad[1] * sol[1] + grad[2] * sol[2];
     CHECK(q.W == dm * dm * dm * gmg / 4);
     if (trial % 2 == 0) {  // sphere: the reduced quantities
@@ -308,7 +298,7 @@ TEST_CASE("scene: the early-outs fire on bodies well inside or outside, small or
     check_against_exact(scene, {c.name, c.e, true, c.expected}, *v);
   }
   // Interior bodies that are not small: the inside certificate holds, but the core names their rule
-  // (math.md section 8), so the early-out leaves them to it; Scene::classify still answers I.
+  // (math.md §8), so the early-out leaves them to it; Scene::classify still answers I.
   const std::vector<Case> not_small = {
       // mixed.jsonl I-flat-ellipsoid-inside: inside but rho > 1.
       {"flat ellipsoid inside, not small", &p, axes(V(Q(0), Q(0), Q(3)), Q(1), Q(2), Q(1, 10)), Position::I,
@@ -478,7 +468,7 @@ TEST_CASE("scene: RunningBound bounds the rounding error of the certificate prog
 
 TEST_CASE("scene: transformed configurations (general path, non-dyadic inputs) keep their answers") {
   // Q -> k H^T Q H with the same random affine H for both surfaces preserves the position
-  // (math.md section 1); a non-rigid H turns every sphere into a general ellipsoid with rational,
+  // (math.md §1); a non-rigid H turns every sphere into a general ellipsoid with rational,
   // non-dyadic entries, so this exercises the general certificates and the rational loader.
   const std::uint64_t seed = 0x5CE7E006;
   Rng g(seed);

@@ -15,7 +15,7 @@ is used for in relpos (for non-defective sequences: real roots in (a,b) = Var(a)
 sympy's exact real-root isolation on random integer quartics, and refuses to write the header if a
 single case disagrees.
 
-Usage: python3 tools/gen_sturm_habicht.py > src/core/sturm_habicht_quartic.hpp
+Usage: python3 tools/gen_sturm_habicht.py > src/algebra/sturm_habicht_quartic.hpp
 """
 import random
 import sys

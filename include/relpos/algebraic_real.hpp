@@ -1,5 +1,5 @@
 // An exact real algebraic number given by a square-free integer polynomial and an isolating
-// interval: how relpos reports instants that are roots of polynomials in time (math.md "Motion"),
+// interval: how relpos reports instants that are roots of polynomials in time (math.md §7),
 // such as a first-contact time t* = sqrt(2).
 //
 // Nothing here is decided in floating point. Refinement bisects the isolating interval on the exact

@@ -1,7 +1,7 @@
-// The relative position of an ellipsoid and an elliptic paraboloid (math.md sections 3-6; paper
-// Theorem 1 with the corrections of math.md section 3), decided exactly, with its evidence.
+// The relative position of an ellipsoid and an elliptic paraboloid (math.md §3–§6; paper
+// Theorem 1 with the corrections of math.md §3), decided exactly, with its evidence.
 //
-// Every decision is the sign of a polynomial in the input entries (section 4 of math.md). classify()
+// Every decision is the sign of a polynomial in the input entries (math.md §4). classify()
 // evaluates them first in doubles with static error bounds (static_filter.hpp). When that leaves Disc(f)
 // uncertain on exact-double input it looks for a witness of Disc(f) = 0 -- exact rational multiple roots -- on
 // machine integers (multiple_roots.hpp). Then interval arithmetic certifies what it can; only the signs no filter
@@ -16,21 +16,12 @@
 #include <string>
 #include <vector>
 
+#include "relpos/error.hpp"
 #include "relpos/polynomials.hpp"
+#include "relpos/position.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos {
-
-enum class Position {
-  I,   ///< the ellipsoid is interior to the paraboloid
-  TI,  ///< tangent from inside
-  C,   ///< the surfaces cross (non-tangent contact)
-  TE,  ///< tangent from outside
-  E,   ///< exterior
-};
-/// Every position, in enum order (tables indexed by Position take their size from here).
-inline constexpr std::array kAllPositions{Position::I, Position::TI, Position::C, Position::TE, Position::E};
-std::string to_string(Position p);
 
 /// What settled the answer, in the order the stages run: the scene's certified early-outs (scene.hpp)
 /// first, then the classifier's cascade (decide_position). One enum for pairs and scenes.
@@ -65,12 +56,12 @@ enum class Rule : unsigned char {
   TwoPositiveRoots,      ///< E: two distinct positive roots (any size)
   RootsAboveLambdaS,     ///< I: f square-free, roots real, none positive, two in (lambda_s, 0) (any size)
   NoRootAboveLambdaS,    ///< C: f square-free, roots real, none above lambda_s (any size)
-  OddPositiveRoot,       ///< E: a root of odd multiplicity in (0, oo) (section 8 rule 1)
-  EvenPositiveRoot,      ///< TE: a positive root, every one of even multiplicity (section 8 rule 2)
-  OddGapRoot,            ///< I: a root of odd multiplicity in (lambda_s, 0) (section 8 rule 3)
-  EvenGapRoot,           ///< TI: f~ has a multiple root in (lambda_s, 0) (section 8 rule 4)
-  HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (section 8 rule 4)
-  NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (section 8 rule 5)
+  OddPositiveRoot,       ///< E: a root of odd multiplicity in (0, oo) (math.md §8 rule 1)
+  EvenPositiveRoot,      ///< TE: a positive root, every one of even multiplicity (math.md §8 rule 2)
+  OddGapRoot,            ///< I: a root of odd multiplicity in (lambda_s, 0) (math.md §8 rule 3)
+  EvenGapRoot,           ///< TI: f~ has a multiple root in (lambda_s, 0) (math.md §8 rule 4)
+  HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (math.md §8 rule 4)
+  NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (math.md §8 rule 5)
 };
 /// Number of rules, None included (tables indexed by Rule take their size from here).
 inline constexpr std::size_t kRuleCount = static_cast<std::size_t>(Rule::NoRootInGap) + 1;
@@ -88,7 +79,7 @@ struct Verdict {
   signed char sign_disc_f = 0, sign_disc_ftilde = 0;
   signed char real_roots = 0, negative_roots = 0, positive_roots = 0, nonreal_roots = 0;
   signed char tangent_negative = 0, tangent_positive = 0, nonreal_multiple = 0;
-  /// Whether f has roots in (lambda_s, 0) (math.md section 8): 1 yes, 0 no, -1 not computed (only
+  /// Whether f has roots in (lambda_s, 0) (math.md §8): 1 yes, 0 no, -1 not computed (only
   /// pairs that are not small with four real negative roots need it).
   signed char roots_above_lambda_s = -1;
   /// contact as "do the surfaces meet?": empty when not decidable.
@@ -101,10 +92,10 @@ struct Verdict {
 /// Adaptive exact verdict (static double filter, intervals, exact integers, exact roots).
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p);
 
-/// The classification table itself (math.md sections 3 and 6), applied to exact root facts and the
+/// The classification table itself (math.md §3 and §6), applied to exact root facts and the
 /// comparison of rho with 1: the one written decision, for callers that obtain the facts another
 /// way (the contact-only discriminant test). Stage is left at its default. nullopt when the facts do
-/// not decide (a pair that is not small needs the exact facts of math.md section 8 -- the gap test
+/// not decide (a pair that is not small needs the exact facts of math.md §8 -- the gap test
 /// against lambda_s or the five rules -- which decide_position computes).
 std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs_one);
 
@@ -113,45 +104,6 @@ std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs
 enum class Evidence { Minimal, Full };
 
 /// The verdict with its evidence: what classify() returns and the reports render.
-
-// Certificates: evidence for each position that anyone can check with exact rational arithmetic
-// alone (math.md section 8; doc/certificates.md). The matrices are the sign-normalized ones the
-// library stores (Ellipsoid::matrix(): 3x3 block positive definite, det < 0; Paraboloid::matrix():
-// 3x3 block positive semidefinite with positive trace); no rescaling, so lambda refers to exactly
-// the matrices built from the input.
-//
-//   E, I    Definite:  rational lambda (> 0 for E, < 0 for I) with lambda P + E positive definite:
-//                      then lambda p(x) + e(x) > 0 everywhere, so p has one sign on the solid ellipsoid.
-//   TE, TI  Tangent:   rational lambda (> 0 TE, < 0 TI) with lambda P + E positive semidefinite and a
-//                      rational contact point X = (x, y, z, 1) with X^T P X = 0 and X^T E X = 0.
-//   TI      HardTangent (math.md section 8, the hard case): lambda = lambda_s = a + b sqrt(d) (< 0),
-//                      lambda P + E positive semidefinite, and the contact set
-//                      { centre + w : w in span(directions), w^T M w = radius2 } where
-//                      K (centre, 1) = 0, (lambda A + M) w = 0 for each direction, radius2 = -e(centre) >= 0
-//                      (when radius2 > 0 there is at least one direction). Numbers are in Q(sqrt d).
-//   C       Crossing:  two rational points of the solid ellipsoid (X^T E X <= 0), `inside` with
-//                      X^T P X < 0 and `outside` with X^T P X > 0.
-/// a + b sqrt(d) with rational a, b; d is a non-negative integer shared by all the numbers of one
-/// certificate (b = 0 whenever d is a perfect square or the number is rational).
-struct QuadraticNumber {
-  Rational a, b;
-};
-using QuadraticVector3 = std::array<QuadraticNumber, 3>;
-
-struct Certificate {
-  enum class Kind { None, Definite, Tangent, HardTangent, Crossing };
-  Kind kind = Kind::None;
-  Rational lambda;  ///< Definite, Tangent
-  Vector3 contact;  ///< Tangent: the contact point
-  // HardTangent: lambda_s = lambda_q.a + lambda_q.b sqrt(d) and the contact set.
-  Integer d;
-  QuadraticNumber lambda_q;
-  QuadraticVector3 centre;
-  std::vector<QuadraticVector3> directions;
-  QuadraticNumber radius2;
-  Vector3 inside, outside;  ///< Crossing
-};
-
 struct Classification {
   Verdict verdict;  ///< position, stage, rule, smallness, contact and the root counts (the one copy)
   /// The rule that decided, in one sentence (describe(verdict.rule)).
@@ -165,7 +117,7 @@ struct Classification {
   std::vector<RealRoot> roots;  ///< distinct real roots of f with multiplicities (Full only)
   std::optional<Rational> rho;  ///< rho exactly, when it is rational
   double rho_approx = 0;        ///< rho to double precision: the nearest double when rho is rational
-  /// Evidence anyone can check with rational arithmetic (classify.hpp, "Certificates"; Evidence::Full only).
+  /// Evidence anyone can check with rational arithmetic (position.hpp; Evidence::Full only).
   Certificate certificate;
 };
 
@@ -174,18 +126,5 @@ Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence eviden
 
 /// Exact classification without the filter (reference path for tests and benchmarks).
 Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence = Evidence::Full);
-
-/// Checks a certificate with exact rational arithmetic only (no code of the classifier): nullopt
-/// when it proves `position` for the pair, otherwise the reason it does not.
-std::optional<std::string> verify_certificate(const Ellipsoid& e, const Paraboloid& p, Position position,
-                                              const Certificate& c);
-/// The same on raw matrices (normalized here: E's 3x3 block made positive definite, P's made of positive
-/// trace, by negation only).
-std::optional<std::string> verify_certificate(const Matrix4& e, const Matrix4& p, Position position,
-                                              const Certificate& c);
-
-/// The exact sign (-1, 0, 1) of x.a + x.b sqrt(d), d >= 0 (the verifier's own Q(sqrt d) arithmetic,
-/// exposed for tests).
-int quadratic_sign(const QuadraticNumber& x, const Integer& d);
 
 }  // namespace relpos

@@ -11,7 +11,7 @@
 // of f1, f2, f3 alone -- no Sturm-Habicht sequence:
 //   Disc < 0         -> f square-free with a non-real pair: C when small, "the surfaces cross" for any size;
 //   Disc > 0, V = 2  -> two distinct positive roots: E for any size;
-//   Disc > 0, V = 0  -> four distinct negative roots: I when small (not small: the gap test of section 8);
+//   Disc > 0, V = 0  -> four distinct negative roots: I when small (not small: the gap test of math.md §8);
 //   Disc = 0         -> undecided here; the full classifier decide_position() answers.
 // The table applied is classify's own (decide_from_root_facts), so every answer is decide_position's.
 #pragma once
@@ -70,7 +70,7 @@ struct ContactAnswer {
 };
 
 /// The contact of a classifier verdict (what classify's position / contact field say; a not-small
-/// crossing with f~ square-free is Crossing, math.md section 3).
+/// crossing with f~ square-free is Crossing, math.md §3).
 Contact contact_of(const Verdict& v);
 
 /// Contact of the two surfaces: the discriminant test, then decide_position(), then (for an answer
@@ -99,7 +99,7 @@ class ContactChecker {
 /// The paper (section 2) tracks a body coming from the exterior by the sign of Disc(f) alone
 /// ("< 0: C, > 0: E, = 0: TE"). That is wrong twice: Disc > 0 also holds for I (a body that has gone
 /// all the way in), and Disc = 0 also holds for C and E with a special double root -a^2 or -b^2
-/// (math.md section 3). This tracker reads sign(Disc(f)) and the signs of f1, f2, f3, takes the
+/// (math.md §3). This tracker reads sign(Disc(f)) and the signs of f1, f2, f3, takes the
 /// smallness of the body from its reference placement (rho depends on M, A, det P and det E, and a
 /// translation changes neither M nor det E = -det M * k, k the level), and falls back to
 /// decide_position() when Disc(f) = 0 or a sign is uncertain. Every frame's answer is exactly

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
@@ -33,6 +34,18 @@ nlohmann::ordered_json parse_json_exact(std::string_view text);
 /// parse_json_exact). `path` names the field in error messages, e.g. "ellipsoid.matrix[2][3]".
 /// Throws InputError "<path>: expected a number, got true" and the like.
 Rational rational_from_json(const nlohmann::ordered_json& value, const std::string& path);
+
+/// Limits on the polynomials of a rigid motion (doc/cli.md, Limits): the event polynomials' degree
+/// and coefficient sizes grow with these, and the cost with them.
+inline constexpr std::size_t kMaxMotionDegree = 12;
+inline constexpr std::size_t kMaxMotionCoefficientBits = 512;
+
+/// The `count` polynomials in t of a rigid motion's translation (3) or quaternion (4), as
+/// `relpos motion` and the Python package read them: a JSON array of `count` entries, each an array
+/// of exact coefficients (lowest degree first) or one number (a constant); trailing zeros dropped.
+/// Throws InputError naming the field (`role`[i][k]) on a non-number or beyond the limits above.
+std::vector<std::vector<Rational>> motion_polynomials(const nlohmann::ordered_json& value, std::size_t count,
+                                                      const std::string& role);
 
 /// Quadric descriptions (doc/cli.md, "Quadric formats"). `role` prefixes every message and names
 /// the field paths ("ellipsoid", "paraboloid"). Library errors (not an ellipsoid, singular map,
@@ -101,8 +114,8 @@ struct BatchLine {
 std::string too_long_message(std::size_t max_line_bytes);
 
 /// The line without what every input format ignores: a UTF-8 byte order mark on line 1 and one
-/// trailing '\r'. Throws InputError for a line longer than max_line_bytes or holding a NUL byte
-/// (the message names the column).
+/// trailing '\r'. Throws InputError for a line longer than max_line_bytes, a byte order mark on a
+/// later line, or a NUL byte (the message names the column).
 std::string_view normalize_line(std::string_view line, long line_number, std::size_t max_line_bytes);
 
 /// Read one JSON Lines line {"id", "ellipsoid", "paraboloid", "comment"} (with `fixed`, a scene line:
@@ -113,17 +126,24 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
                      BatchLine& out);
 
+/// The error of a line that ran out of memory, and the error of one whose id could not even be
+/// echoed: its id is then the line number (doc/cli.md, "Out of memory").
+inline constexpr const char* kOutOfMemoryMessage = "out of memory while answering this line";
+inline constexpr const char* kOutOfMemoryNoIdMessage =
+    "out of memory while answering this line (its id is replaced by the line number)";
+
 /// The one JSON output line (no newline) answering an input line of `relpos batch`: the
-/// classification or {"id": ..., "error": "..."}. Never throws (out of memory on the line is that
-/// line's error).
+/// classification or {"id": ..., "error": "..."}. Out of memory on the line is that line's error.
+/// Memory: the answer and small bounded parts; the id is not copied (doc/cli.md, "Memory").
 std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options);
 
 /// The same line written into `out` (replacing its text, keeping its capacity: a caller answering
-/// many lines reuses its buffers).
+/// many lines reuses its buffers). Never throws: out of memory gives the line's error with the id,
+/// else with the line number (kOutOfMemoryNoIdMessage), and `out` is left empty only when not even
+/// that fits (a caller keeping some capacity in `out` never sees it).
 void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out);
 
-/// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced. Never throws std::bad_alloc
-/// beyond a fixed small message.
+/// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced (std::bad_alloc when out of memory).
 std::string error_line(const std::string& id_text, const std::string& message);
 
 /// A JSON value as one line of text, invalid UTF-8 replaced by U+FFFD (the one JSON writer).

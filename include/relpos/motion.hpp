@@ -1,4 +1,4 @@
-// Positions along a rigid polynomial motion (math.md "Motion"): the certified first-contact time
+// Positions along a rigid polynomial motion (math.md §7): the certified first-contact time
 // of an ellipsoid that starts exterior to a fixed paraboloid, and the full timeline of positions on
 // a time interval [t0, t1].
 //
@@ -15,7 +15,7 @@
 // algebraic number t*.
 //
 // Rigid motions:
-// Rigid motions whose matrices are polynomial in time (math.md "Motion").
+// Rigid motions whose matrices are polynomial in time (math.md §7).
 //
 // The ellipsoid is given in a reference placement E0 (a validated Ellipsoid). At time t it is the
 // image of E0 under the rigid map
@@ -36,7 +36,7 @@
 //   N T^-1 = [[Q^T, N p - Q^T (p + c)], [0, N]]
 // is polynomial in t, so E(t) = (N T^-1)^T E0 (N T^-1) = N^2 T^-T E0 T^-1 is a polynomial matrix: the
 // placed ellipsoid times the positive factor N^2, which changes no sign and no root multiplicity
-// relpos looks at (math.md section 1).
+// relpos looks at (math.md §1).
 #pragma once
 
 #include <array>
@@ -183,14 +183,17 @@ struct FirstContact {
   std::string how;                        ///< how that position was decided
 };
 
+/// "not-exterior-at-start", "contact", "none".
+std::string to_string(FirstContact::Kind kind);
+
 /// Certified first contact on [t0, t1]. Separation (E) and its end are decided for an ellipsoid of
-/// any size (math.md section 6), so this needs no smallness. Throws InputError on invalid input
+/// any size (math.md §6), so this needs no smallness. Throws InputError on invalid input
 /// (t0 > t1, a quaternion that vanishes on [t0, t1]).
 FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
                            const Rational& t1);
 
 /// Every change of position on [t0, t1], with the position on each open interval and at each
-/// instant, for an ellipsoid of any size (math.md "Motion"). Throws InputError on invalid input and
+/// instant, for an ellipsoid of any size (math.md §7). Throws InputError on invalid input and
 /// std::logic_error ("internal error") if an instant contradicts its neighbouring intervals.
 Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
                   const Rational& t1);

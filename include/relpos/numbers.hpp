@@ -22,7 +22,8 @@ inline constexpr std::size_t kMaxNumberChars = 10000;  ///< characters in one nu
 inline constexpr long kMaxDecimalExponent = 4000;      ///< |e| in "1.5e-7"-style exponents
 
 /// Parse an exact rational from text: integers ("-3"), fractions ("p/q"), decimals ("0.712045",
-/// "-.5", "1.5e-7", "2E+10"). Throws relpos::InputError naming the text on anything else.
+/// "-.5", "1.5e-7", "2E+10"). The denominator of a fraction is written without sign, and no blank
+/// surrounds the number. Throws relpos::InputError naming the text on anything else.
 Rational parse_rational(std::string_view text);
 
 /// The exact value of a finite double. Throws relpos::InputError on NaN or infinity.
@@ -40,7 +41,7 @@ std::string to_decimal(const Rational& q, int digits);
 /// evidence allocate and free millions of small limb arrays). Process-wide
 /// (mp_set_memory_functions), so it also serves other GMP users of the process; safe to call at
 /// any time, with GMP numbers alive: a cached block is a malloc block, reused only for its size.
-/// Out of memory prints a message and aborts, as GMP's default allocator does. The relpos CLI
+/// Out of memory throws std::bad_alloc (GMP's default allocator aborts). The relpos CLI
 /// and the Python module call it.
 void install_gmp_block_cache();
 

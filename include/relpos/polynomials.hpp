@@ -1,7 +1,7 @@
 // The plain data types of the public API that describe polynomials and their roots: coefficient
-// arrays of the quartic f and the quadratic s (math.md section 2), one certified real root, and the
-// root facts the classification table reads (math.md sections 3 and 6). The algorithms that compute
-// them are private (src/core/pencil.hpp, src/core/roots.hpp).
+// arrays of the quartic f and the quadratic s (math.md §2), one certified real root, and the
+// root facts the classification table reads (math.md §3 and §6). The algorithms that compute
+// them are private (src/algebra/pencil.hpp, src/algebra/roots.hpp).
 #pragma once
 
 #include <array>
@@ -24,7 +24,7 @@ struct RealRoot {
   int multiplicity_s = 0;         ///< multiplicity as a root of s (0, 1 or 2)
   std::optional<Rational> exact;  ///< the root itself when it is rational
   Rational lower, upper;          ///< isolating interval: the root is the only root of f in it
-  /// The multiplicity rule of math.md section 3. It characterises tangency for *small* pairs; for a
+  /// The multiplicity rule of math.md §3. It characterises tangency for *small* pairs; for a
   /// pair that is not small a root can be a tangency with a smaller excess (e.g. contact along a
   /// circle), so outside smallness read it only as "multiple in f~".
   bool tangency() const { return multiplicity_f - multiplicity_s >= 2; }

@@ -1,5 +1,5 @@
 // Quadrics as symmetric 4x4 rational matrices, their exact affine type, and the two validated input
-// types of relpos: Ellipsoid and Paraboloid (math.md section 1; paper section 2.1).
+// types of relpos: Ellipsoid and Paraboloid (math.md §1; paper section 2.1).
 //
 // A quadric is X^T Q X = 0 with X = (x, y, z, 1)^T and Q = [[Q3, q], [q^T, q0]]. Interior points are
 // those with X^T Q X < 0; constructors negate a matrix given with the other orientation, so that an
@@ -47,7 +47,7 @@ std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m);
 
 /// m times the power of two that brings its largest entry into [1/2, 1) (exact), or nullopt if a
 /// non-zero entry would become subnormal or m is zero or not finite: the input range of the static
-/// filter (static_filter.hpp). A positive scaling changes no decision (math.md section 1).
+/// filter (static_filter.hpp). A positive scaling changes no decision (math.md §1).
 std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m);
 
 /// Exact affine type of a real quadric surface.

@@ -1,4 +1,4 @@
-// Scenes: one elliptic paraboloid against many ellipsoids (math.md section "Scenes").
+// Scenes: one elliptic paraboloid against many ellipsoids (math.md §13).
 //
 // Every body gets exactly the position decide_position() / classify_exact() give for the pair. A body
 // whose answer is cheap to prove is settled by a certified early-out: signs of polynomials in the
@@ -8,9 +8,9 @@
 //   * outside certificate: P(x) > 0 on the whole closed solid ellipsoid  =>  position E;
 //   * inside certificate:  P(x) < 0 on the whole closed solid ellipsoid  =>  position I when the
 //     ellipsoid is small (rho <= 1, the core's rho of smallness.hpp, certified the same way); a body
-//     that is not small goes to the core, which decides it exactly (math.md section 8).
+//     that is not small goes to the core, which decides it exactly (math.md §8).
 //
-// math.md proves that these are the core's answers: for surfaces with no common point f has only
+// math.md §13 proves that these are the core's answers: for surfaces with no common point f has only
 // real roots and f~ = f / gcd(f, s) no multiple root, and the sign pattern of the simultaneous
 // diagonal form gives no positive root (inside) or two distinct ones (outside). Everything the
 // early-outs cannot certify goes to decide_position().

@@ -1,9 +1,9 @@
 """relpos: the exact relative position of an ellipsoid and an elliptic paraboloid.
 
 The five positions are interior (I), tangent from inside (TI), crossing (C), tangent from outside
-(TE) and exterior (E). Every number is taken exactly: int, fractions.Fraction and str ("p/q",
-decimals such as "0.1" = 1/10) as the rational they denote, float as the exact dyadic value of the
-double. doc/python.md describes the package.
+(TE) and exterior (E). Every number is taken exactly: int, fractions.Fraction, decimal.Decimal and
+str ("p/q", decimals such as "0.1" = 1/10) as the rational they denote, float and numpy floats as
+the exact dyadic value they hold. doc/python.md describes the package.
 
     >>> import relpos
     >>> p = relpos.Paraboloid.standard((0, 0, 0), "1.2", "1.5")
@@ -13,26 +13,61 @@ double. doc/python.md describes the package.
 """
 
 import json as _json
+import operator as _operator
+from decimal import Decimal
+from fractions import Fraction
+from typing import Any, Literal, Mapping, Optional, Sequence, Union
+
+import numpy
 
 from . import _cli, _relpos
 from ._build import version as __version__
-from ._relpos import Ellipsoid, Paraboloid
+from ._relpos import Ellipsoid, FirstContact, Instant, Paraboloid, Timeline
 
 __all__ = [
     "Ellipsoid",
     "Paraboloid",
     "Classification",
+    "Certificate",
+    "CertificateError",
+    "ContactAnswer",
+    "SceneResult",
+    "Instant",
+    "FirstContact",
+    "Timeline",
     "classify",
+    "verify",
+    "contact",
     "decide_positions",
+    "scene",
+    "first_contact",
+    "timeline",
     "POSITION_NAMES",
     "POSITION_MEANINGS",
+    "STAGE_NAMES",
+    "INVALID",
     "plot",
     "distributed",
     "__version__",
 ]
 
-#: Position names, indexed by the codes decide_positions returns.
+#: An exact number: int, float (its exact dyadic value), Fraction, Decimal, numpy scalar or str
+#: ("p/q", "-3", "0.1" = 1/10, "1.5e-7").
+Number = Union[int, float, Fraction, Decimal, numpy.number, str]
+#: Three numbers (a point or a vector).
+Vector3 = Union[Sequence[Number], numpy.ndarray]
+#: A 4x4 (or 3x3) matrix: nested sequences of numbers or a numpy array.
+Matrix = Union[Sequence[Sequence[Number]], numpy.ndarray]
+#: A quadric as the CLI reads it: a 4x4 matrix, or a dict in one of its JSON forms (doc/cli.md).
+Description = Union[Matrix, Mapping[str, Any]]
+#: A polynomial in time t: its coefficients, lowest degree first (or one number: a constant).
+TimePolynomial = Union[Sequence[Number], Number]
+
+#: Position names, indexed by the codes decide_positions and scene return.
 POSITION_NAMES = ("I", "TI", "C", "TE", "E")
+
+#: Stage names (what settled an answer), indexed by the stage codes scene returns.
+STAGE_NAMES = _relpos._STAGE_NAMES
 
 #: What each position means.
 POSITION_MEANINGS = {
@@ -43,87 +78,443 @@ POSITION_MEANINGS = {
     "E": "exterior: the ellipsoid lies outside the paraboloid",
 }
 
+#: The code decide_positions(..., errors="code") gives a pair it cannot read (no position uses it).
+INVALID = _relpos._INVALID
 
-class Classification:
-    """The answer for one pair, with its evidence: the fields of the JSON object `relpos batch` writes.
 
-    Attributes: position ("I", "TI", "C", "TE" or "E", for an ellipsoid of any size), small,
-    contact (True or False),
-    rule (the deciding rule in one sentence), stage (which arithmetic settled it), rho_vs_one, rho.
-    as_dict() returns every field.
-    """
+# ------------------------------------------------------------------------------------------------
+# Ellipsoid and Paraboloid: the compiled classes, with typed Python methods. Each constructor hands
+# a JSON form of the CLI to the compiled reader, so every number and every message is the CLI's.
+# ------------------------------------------------------------------------------------------------
 
-    __slots__ = ("_fields",)
 
-    def __init__(self, fields):
-        self._fields = fields
+def _method(cls, name):
+    def attach(function):
+        function.__qualname__ = "%s.%s" % (cls.__name__, name)
+        function.__name__ = name
+        setattr(cls, name, function)
+        return function
 
-    position = property(lambda self: self._fields["position"])
-    small = property(lambda self: self._fields["small"])
-    contact = property(lambda self: self._fields["contact"])
-    rule = property(lambda self: self._fields["rule"])
-    stage = property(lambda self: self._fields["stage"])
-    rho_vs_one = property(lambda self: self._fields["rho_vs_one"])
-    rho = property(lambda self: self._fields["rho"])
+    return attach
 
-    def as_dict(self):
+
+def _define_quadric_methods(cls, role):
+    built_init = cls.__init__
+    built_matrix = cls._matrix
+
+    @_method(cls, "__init__")
+    def __init__(self, description: Description) -> None:
+        if _relpos._is_built(self):
+            raise TypeError("relpos.%s: the object is already built; make a new one" % cls.__name__)
+        built_init(self, description)
+
+    __init__.__doc__ = (
+        "The %s a 4x4 symmetric matrix (nested sequences or a numpy array) describes, X^T m X = 0 with\n"
+        "X = (x, y, z, 1), or a dict in any JSON form of the CLI (doc/cli.md, \"Quadric formats\").\n"
+        "Raises ValueError with the CLI's message when it is not one, TypeError for an entry that is\n"
+        "not a number." % role
+    )
+
+    @_method(cls, "matrix")
+    def matrix(self) -> list:
+        """The validated, sign-normalized matrix (inside is negative): 4 lists of 4 fractions.Fraction."""
+        return built_matrix(self)
+
+    def from_coefficients(coefficients: Sequence[Number]) -> cls:
+        """From A..J of A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0."""
+        return cls({"coefficients": coefficients})
+
+    _method(cls, "from_coefficients")(staticmethod(from_coefficients))
+    cls.__module__ = "relpos"
+
+
+_define_quadric_methods(Ellipsoid, "ellipsoid")
+_define_quadric_methods(Paraboloid, "paraboloid")
+
+
+@_method(Ellipsoid, "sphere")
+@staticmethod
+def _sphere(center: Vector3, radius: Number) -> Ellipsoid:
+    """The sphere |x - center| = radius."""
+    return Ellipsoid({"sphere": {"center": center, "radius": radius}})
+
+
+@_method(Ellipsoid, "from_axes")
+@staticmethod
+def _from_axes(center: Vector3, axes: Vector3, rotation: Union[Sequence[Number], Matrix] = (1, 0, 0, 0)) -> Ellipsoid:
+    """Semi-axes `axes` along the columns of a rotation: the quaternion q = (w, x, y, z) (R(q)/|q|^2,
+    q need not be a unit) or an exactly orthogonal 3x3 matrix."""
+    key = "rotation" if len(rotation) == 4 else "rotation_matrix"
+    return Ellipsoid({"center": center, "axes": axes, key: rotation})
+
+
+@_method(Ellipsoid, "from_map")
+@staticmethod
+def _ellipsoid_from_map(center: Vector3, linear: Matrix) -> Ellipsoid:
+    """The image of the unit ball under x = center + L u (L an invertible 3x3 matrix)."""
+    return Ellipsoid({"center": center, "map": linear})
+
+
+@_method(Paraboloid, "standard")
+@staticmethod
+def _standard(vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = (1, 0, 0, 0)) -> Paraboloid:
+    """x'^2/a^2 + y'^2/b^2 = z' in the frame with origin `vertex` and axes the columns of R(q)/|q|^2
+    of the quaternion q = (w, x, y, z) (the cup opens along the third column)."""
+    return Paraboloid({"vertex": vertex, "a": a, "b": b, "rotation": rotation})
+
+
+@_method(Paraboloid, "from_map")
+@staticmethod
+def _paraboloid_from_map(linear: Matrix, translation: Vector3) -> Paraboloid:
+    """The image of z = x^2 + y^2 under x = T u + t (T an invertible 3x3 matrix)."""
+    return Paraboloid({"map": linear, "translation": translation})
+
+
+def _rebuild(cls, texts):
+    """Unpickles an Ellipsoid or Paraboloid (its __reduce__ names this function)."""
+    return _relpos._rebuild(cls, texts)
+
+
+# ------------------------------------------------------------------------------------------------
+# Answers: plain Python objects over the CLI's JSON objects.
+# ------------------------------------------------------------------------------------------------
+
+
+class _Answer:
+    """Read-only fields of one of the CLI's JSON answers."""
+
+    __slots__ = ("_data",)
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        """From the fields of the CLI's JSON answer (as classify / contact return them)."""
+        if _is_set(self, "_data"):
+            raise TypeError("relpos.%s: the object is already built; make a new one" % type(self).__name__)
+        self._data = dict(fields)
+
+    @property
+    def _fields(self):
+        if not _is_set(self, "_data"):
+            raise TypeError("relpos.%s: the object was made by __new__ without __init__ (not built)" % type(self).__name__)
+        return self._data
+
+    def as_dict(self) -> dict:
         """All fields, as in the CLI's JSON (without "id"); a fresh copy."""
         return _json.loads(_json.dumps(self._fields))
 
     def __eq__(self, other):
-        return isinstance(other, Classification) and self._fields == other._fields
+        if type(other) is not type(self):
+            return NotImplemented
+        return self._fields == other._fields
+
+    __hash__ = None
+
+
+def _is_set(obj, slot):
+    try:
+        getattr(obj, slot)
+    except AttributeError:
+        return False
+    return True
+
+
+def _field(name, doc):
+    return property(lambda self: self._fields[name], doc=doc)
+
+
+class Certificate(_Answer):
+    """Evidence for a position that anyone can check with rational arithmetic (doc/certificates.md).
+
+    kind: "definite" (a lambda with lambda P + E definite: I or E), "tangent" (lambda and the contact
+    point), "hard-tangent" (lambda in Q(sqrt d) and the contact set), "crossing" (a point inside and
+    a point outside the paraboloid on the ellipsoid) or "none". to_json() gives the CLI's JSON form;
+    relpos.verify checks it.
+    """
+
+    __slots__ = ()
+
+    @property
+    def kind(self) -> str:
+        """"definite", "tangent", "hard-tangent", "crossing" or "none"."""
+        f = self._fields
+        if "inside" in f:
+            return "crossing"
+        if "contact_set" in f:
+            return "hard-tangent"
+        if "contact" in f:
+            return "tangent"
+        return "definite" if "lambda" in f else "none"
+
+    def to_json(self) -> dict:
+        """The certificate's JSON object, as in `relpos batch` (numbers as exact strings)."""
+        return self.as_dict()
 
     def __repr__(self):
+        return "relpos.Certificate(kind=%r)" % self.kind
+
+
+class CertificateError(ValueError):
+    """relpos.verify: the certificate does not prove the position (the message says why)."""
+
+
+class Classification(_Answer):
+    """The answer for one pair, with its evidence: the fields of the JSON object `relpos batch` writes.
+
+    position ("I", "TI", "C", "TE" or "E", for an ellipsoid of any size), small, contact (True or
+    False), rule (the deciding rule in one sentence), stage (which arithmetic settled it),
+    rho_vs_one, rho, certificate (a Certificate with full evidence, else None). as_dict() returns
+    every field.
+    """
+
+    __slots__ = ()
+
+    position = _field("position", "The position: 'I', 'TI', 'C', 'TE' or 'E'.")
+    small = _field("small", "Whether the ellipsoid is small (rho <= 1, math.md §5).")
+    contact = _field("contact", "Whether the surfaces meet (TI, C, TE).")
+    rule = _field("rule", "The deciding rule, one sentence.")
+    stage = _field("stage", "The stage that settled the answer (STAGE_NAMES).")
+    rho_vs_one = _field("rho_vs_one", "'<1', '=1' or '>1'.")
+    rho = _field("rho", "rho exactly ('p/q') when it is rational, else None.")
+
+    @property
+    def certificate(self) -> Optional[Certificate]:
+        """The certificate (evidence="full"), else None."""
+        c = self._fields.get("certificate")
+        return None if c is None else Certificate(c)
+
+    def __repr__(self):
+        f = self._fields
         return "relpos.Classification(position=%r, small=%r, contact=%r, stage=%r)" % (
-            self.position,
-            self.small,
-            self.contact,
-            self.stage,
+            f["position"],
+            f["small"],
+            f["contact"],
+            f["stage"],
         )
 
 
-def classify(e, p, evidence="full"):
+class ContactAnswer(_Answer):
+    """Whether the surfaces meet (doc/contact.md): the fields of `relpos classify --contact-only --json`.
+
+    contact: "none", "touching", "crossing", "meet" (kind not certified) or "unknown"; position and
+    rule: the classifier's when it ran; decided_by: what settled it.
+    """
+
+    __slots__ = ()
+
+    contact = _field("contact", "'none', 'touching', 'crossing', 'meet' or 'unknown'.")
+    position = _field("position", "The classifier's position, or None when it did not decide.")
+    rule = _field("rule", "The deciding rule, one sentence (or None).")
+    decided_by = _field("decided_by", "What settled the answer.")
+
+    def __repr__(self):
+        return "relpos.ContactAnswer(contact=%r, position=%r)" % (self.contact, self.position)
+
+
+def _check_pair(e, p, function):
+    if not isinstance(e, Ellipsoid):
+        raise TypeError("%s: e must be a relpos.Ellipsoid, got %s" % (function, type(e).__name__))
+    if not isinstance(p, Paraboloid):
+        raise TypeError("%s: p must be a relpos.Paraboloid, got %s" % (function, type(p).__name__))
+
+
+def classify(e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] = "full") -> Classification:
     """Classify ellipsoid `e` against paraboloid `p` exactly.
 
     evidence="full" gives the same fields as `relpos batch` / `relpos classify --json` (exact
-    coefficients of f and s, multiple roots, rho); "minimal" only what the decision needs.
-    Raises ValueError on bad input (with the CLI's message).
+    coefficients of f and s, multiple roots, rho, the certificate); "minimal" only what the decision
+    needs. Raises ValueError on bad input (with the CLI's message). The GIL is released.
     """
-    if not isinstance(e, Ellipsoid):
-        raise TypeError("classify: e must be a relpos.Ellipsoid, got %s" % type(e).__name__)
-    if not isinstance(p, Paraboloid):
-        raise TypeError("classify: p must be a relpos.Paraboloid, got %s" % type(p).__name__)
+    _check_pair(e, p, "classify")
     if evidence not in ("full", "minimal"):
         raise ValueError("evidence: expected 'full' or 'minimal', got %r" % (evidence,))
     return Classification(_json.loads(_relpos._classify_json(e, p, evidence == "full")))
 
 
-def _float64_array(a, name):
-    import numpy
+def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
+    """Check answer.certificate for answer.position with the library's independent verifier (exact
+    rational arithmetic, no code of the classifier; `relpos verify`). Returns None when it proves
+    the position; raises CertificateError saying why not, ValueError when there is no certificate."""
+    _check_pair(e, p, "verify")
+    if not isinstance(answer, Classification):
+        raise TypeError("verify: answer must be a relpos.Classification, got %s" % type(answer).__name__)
+    certificate = answer.certificate
+    if certificate is None:
+        raise ValueError("verify: the answer has no certificate (classify with evidence='full')")
+    reason = _relpos._verify(e, p, answer.position, _json.dumps(certificate.to_json()))
+    if reason is not None:
+        raise CertificateError(answer.position + ": " + reason)
 
-    a = numpy.asarray(a)
-    if a.dtype != numpy.float64:
-        if a.dtype.kind not in "iuf":
-            raise ValueError("%s: expected a float64 array, got dtype %s" % (name, a.dtype))
-        converted = a.astype(numpy.float64)
-        if a.dtype.kind in "iu" and not numpy.array_equal(converted.astype(a.dtype), a):
-            raise ValueError("%s: integer entries not exactly representable as float64" % name)
-        a = converted
-    return numpy.ascontiguousarray(a)
+
+def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer:
+    """Whether the surfaces meet, certified like the position and also for bodies that are not small
+    (doc/contact.md; `relpos classify --contact-only`). The GIL is released."""
+    _check_pair(e, p, "contact")
+    return ContactAnswer(_json.loads(_relpos._contact_json(e, p)))
 
 
-def decide_positions(E, P, threads=0):
-    """Positions of many pairs given as float64 matrices, exactly, on all cores.
+# ------------------------------------------------------------------------------------------------
+# Many pairs: numpy arrays in, numpy codes out.
+# ------------------------------------------------------------------------------------------------
+
+
+def _thread_count(threads):
+    if isinstance(threads, bool) or not hasattr(type(threads), "__index__"):
+        raise TypeError("threads: expected a non-negative int, got %s" % type(threads).__name__)
+    threads = _operator.index(threads)
+    if threads < 0:
+        raise ValueError("threads: expected a non-negative int, got %d" % threads)
+    return threads
+
+
+def decide_positions(
+    E: numpy.ndarray, P: numpy.ndarray, threads: int = 0, errors: Literal["raise", "code"] = "raise"
+) -> numpy.ndarray:
+    """Positions of many pairs given as numpy matrices, exactly, on all cores.
 
     E: array (n, 4, 4) of ellipsoid matrices; P: array (n, 4, 4), or one (4, 4) matrix shared by all.
-    Each double is taken as its exact value. Returns a numpy int8 array of codes into
-    POSITION_NAMES (0 = "I" ... 4 = "E"). threads=0 uses every core; the GIL is released while deciding.
-    Raises ValueError naming the index of an invalid matrix ("E[17]: ellipsoid: ...").
+    Every entry is read exactly: float64, float32, float16, numpy.longdouble and integer arrays (of
+    any width) as the numbers they hold; any other dtype raises TypeError. Returns a numpy int8 array
+    of codes into POSITION_NAMES (0 = "I" ... 4 = "E"). threads=0 uses every core; the GIL is
+    released while deciding. errors="raise" raises ValueError naming the first invalid matrix
+    ("E[17]: ellipsoid: ..."); errors="code" gives such a pair the code INVALID (-1) instead.
     """
-    return _relpos._decide_positions(_float64_array(E, "E"), _float64_array(P, "P"), int(threads))
+    if errors not in ("raise", "code"):
+        raise ValueError("errors: expected 'raise' or 'code', got %r" % (errors,))
+    return _relpos._decide_positions(E, P, _thread_count(threads), errors == "raise")
 
 
-def plot(e, p, ax=None, **kwargs):
+class SceneResult:
+    """The positions of many bodies against one paraboloid (relpos.scene).
+
+    positions: int8 codes into POSITION_NAMES; contact: int8, 1 the surfaces meet, 0 they do not;
+    stages: int8 codes into STAGE_NAMES (an early-out certificate or the classifier stage);
+    threads: the threads used. counts() and stage_counts() tally them by name.
+    """
+
+    __slots__ = ("_data",)
+
+    def __init__(self, positions: numpy.ndarray, contact: numpy.ndarray, stages: numpy.ndarray, threads: int) -> None:
+        """From the arrays relpos.scene computes."""
+        if _is_set(self, "_data"):
+            raise TypeError("relpos.SceneResult: the object is already built; make a new one")
+        self._data = (positions, contact, stages, threads)
+
+    def _get(self, k):
+        if not _is_set(self, "_data"):
+            raise TypeError("relpos.SceneResult: the object was made by __new__ without __init__ (not built)")
+        return self._data[k]
+
+    positions = property(lambda self: self._get(0), doc="int8 codes into POSITION_NAMES, one per body.")
+    contact = property(lambda self: self._get(1), doc="int8: 1 the surfaces meet, 0 they do not.")
+    stages = property(lambda self: self._get(2), doc="int8 codes into STAGE_NAMES: what settled each body.")
+    threads = property(lambda self: self._get(3), doc="The number of threads used.")
+
+    def names(self) -> numpy.ndarray:
+        """The positions as names ("I" ... "E")."""
+        return numpy.array(POSITION_NAMES)[self.positions]
+
+    def counts(self) -> dict:
+        """{position name: number of bodies}."""
+        return {name: int((self.positions == k).sum()) for k, name in enumerate(POSITION_NAMES)}
+
+    def stage_counts(self) -> dict:
+        """{stage name: number of bodies it settled}."""
+        return {name: int((self.stages == k).sum()) for k, name in enumerate(STAGE_NAMES)}
+
+    def __repr__(self):
+        return "relpos.SceneResult(%d bodies, %r)" % (len(self.positions), self.counts())
+
+
+def scene(
+    p: Union[Paraboloid, Description],
+    bodies: Union[numpy.ndarray, Sequence[Ellipsoid]],
+    threads: int = 0,
+    early_outs: bool = True,
+) -> SceneResult:
+    """Many bodies against one paraboloid with the library's scene (`relpos scene`): the paraboloid is
+    prepared once, certified early-outs settle most bodies without the classifier, the rest go
+    through it, on `threads` threads (0 = every core; the GIL is released).
+
+    bodies: a sequence of Ellipsoid, or matrices (n, 4, 4) read exactly as by decide_positions (a
+    bad one raises ValueError "E[i]: ellipsoid: ..."). early_outs=False sends every body through the
+    classifier (the same positions).
+    """
+    if not isinstance(p, Paraboloid):
+        p = Paraboloid(p)
+    return SceneResult(*_relpos._scene(p, bodies, _thread_count(threads), bool(early_outs)))
+
+
+# ------------------------------------------------------------------------------------------------
+# Motion: exact instants.
+# ------------------------------------------------------------------------------------------------
+
+_MOTION_DOC = """
+    The ellipsoid e (placed as given) moves by x(t) = R(t)(y - pivot) + pivot + c(t): translation
+    c(t) is 3 polynomials in t, rotation q(t) = (w, x, y, z) 4 polynomials (the rotation
+    R(q)/|q|^2; q must not vanish on [t0, t1]), each a list of exact coefficients, lowest degree
+    first (["-9/4", 0, 1] is t^2 - 9/4), or one number. pivot: "origin", "center" (of e) or a
+    point. The paraboloid is fixed. Instants are exact (relpos.Instant). The CLI's limits apply
+    (degree 12, 512-bit coefficients; doc/cli.md); the GIL is released.
+"""
+
+Pivot = Union[Literal["origin", "center"], Vector3]
+
+
+def _motion_function(name, compute, result, summary):
+    """The public motion function `name`: checks the pair and runs the compiled `compute`."""
+
+    def function(
+        e: Ellipsoid,
+        p: Paraboloid,
+        t0: Number,
+        t1: Number,
+        translation: Optional[Sequence[TimePolynomial]] = None,
+        rotation: Optional[Sequence[TimePolynomial]] = None,
+        pivot: Pivot = "origin",
+    ) -> result:
+        _check_pair(e, p, name)
+        return compute(e, p, t0, t1, translation, rotation, pivot)
+
+    function.__name__ = function.__qualname__ = name
+    function.__doc__ = summary + "\n" + _MOTION_DOC
+    return function
+
+
+first_contact = _motion_function(
+    "first_contact",
+    _relpos._first_contact,
+    FirstContact,
+    "The certified first contact on [t0, t1] of a body exterior at t0 (`relpos motion --first-contact`).",
+)
+timeline = _motion_function(
+    "timeline",
+    _relpos._timeline,
+    Timeline,
+    "Every change of position on [t0, t1], for an ellipsoid of any size (`relpos motion`).",
+)
+
+for _cls in (Instant, FirstContact, Timeline):
+    _cls.__module__ = "relpos"
+
+
+
+@_method(Instant, "decimal")
+def _decimal(self, digits: int = 12) -> str:
+    """The correctly rounded decimal with `digits` significant digits (1..1000)."""
+    return self._decimal(_operator.index(digits))
+
+
+@_method(Timeline, "position_at")
+def _position_at(self, t: Number) -> str:
+    """The position at an exact time t in [t0, t1]."""
+    return self._position_at(t)
+
+
+# ------------------------------------------------------------------------------------------------
+# Pictures and the cluster.
+# ------------------------------------------------------------------------------------------------
+
+
+def plot(e: Ellipsoid, p: Paraboloid, ax: Any = None, **kwargs: Any) -> Any:
     """Draw the pair (matplotlib 3D axes) titled with its position; returns the axes. See relpos._plot."""
     from ._plot import plot as _plot
 

@@ -2,6 +2,7 @@
 
 import os
 import shutil
+import sysconfig
 
 from . import _build
 
@@ -10,8 +11,10 @@ def find_cli():
     """Path of the `relpos` executable.
 
     In order: the environment variable RELPOS_CLI; `<prefix>/bin/relpos` when this package is
-    installed under `<prefix>/lib/python3/dist-packages/relpos`; the CLI of the build tree that
-    built this package; `relpos` on PATH. Raises FileNotFoundError naming what was tried.
+    installed under `<prefix>/lib/python3/dist-packages/relpos` (cmake --install) or
+    `<venv>/lib/python3.X/site-packages/relpos` (pip); the scripts directory of the running
+    interpreter (pip puts the CLI there); the CLI of the build tree that built this package;
+    `relpos` on PATH. Raises FileNotFoundError naming what was tried.
     """
     tried = []
     env = os.environ.get("RELPOS_CLI")
@@ -21,10 +24,11 @@ def find_cli():
         raise FileNotFoundError("RELPOS_CLI=%s is not an executable file" % env)
     here = os.path.dirname(os.path.abspath(__file__))
     candidates = [
-        os.path.join(here, "bin", "relpos"),
         os.path.normpath(os.path.join(here, "..", "..", "..", "..", "bin", "relpos")),
-        _build.build_tree_cli,
+        os.path.join(sysconfig.get_path("scripts"), "relpos"),
     ]
+    if _build.build_tree_cli:
+        candidates.append(_build.build_tree_cli)
     for c in candidates:
         tried.append(c)
         if os.path.isfile(c) and os.access(c, os.X_OK):

@@ -7,8 +7,6 @@
 // followed by '\n'. The BOM, a trailing '\r', blank lines, NUL bytes and over-long lines are the
 // library's business (relpos::io::normalize_line), so a block answered here gives the bytes the CLI
 // writes for the same lines with the same numbers.
-#include <pybind11/pybind11.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -19,7 +17,10 @@
 #include <thread>
 #include <vector>
 
-namespace py = pybind11;
+#include "module.hpp"
+
+namespace relpos_python {
+
 using namespace pybind11::literals;
 
 namespace {
@@ -105,3 +106,5 @@ void bind_batch(py::module_& m) {
       "line number `first_line`), as bytes: one answer and '\\n' per line. The options are those of `relpos batch` "
       "(--evidence, --numbers, --contact-only, --digits, --max-line-bytes); `threads` std::threads answer the lines.");
 }
+
+}  // namespace relpos_python

@@ -5,7 +5,7 @@
 
 #include <stdexcept>
 
-#include "forms/forms.hpp"
+#include "algebra/forms.hpp"
 
 namespace relpos::anysize {
 

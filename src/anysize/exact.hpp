@@ -1,4 +1,4 @@
-// Exact pieces of math.md section 8 that the sign ladder does not cover: the decision when f has
+// Exact pieces of math.md §8 that the sign ladder does not cover: the decision when f has
 // multiple roots (f is not square-free), and the arithmetic of lambda_s, the root of s nearest 0, a
 // rational or a quadratic irrational. Small dense polynomials over Q (degree <= 4): these paths run
 // only for exact tangencies, special roots and certificates, never on the filtered path.
@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/pencil.hpp"
+#include "algebra/pencil.hpp"
 #include "relpos/numbers.hpp"
 
 namespace relpos::anysize {
@@ -53,7 +53,7 @@ struct LambdaS {
 /// lambda_s from s = s0 + s1 l + s2 l^2 (two negative roots, s2 > 0).
 LambdaS lambda_s_of(const Poly& s);
 
-/// The five rules of math.md section 8 as exact facts of f = det(l P + E) and s = det(l A + M):
+/// The five rules of math.md §8 as exact facts of f = det(l P + E) and s = det(l A + M):
 /// 1 E: a root of odd multiplicity in (0, oo);  2 TE: any other root in (0, oo);
 /// 3 I: a root of odd multiplicity in (lambda_s, 0);  4 TI: f~ = f / gcd(f, s) has a root in
 /// [lambda_s, 0);  5 C otherwise. `rule` is 1..5; `hard` says that rule 4 was met only at lambda_s

@@ -1,11 +1,11 @@
-// The one sign test math.md section 8 adds to the root counts: where the roots of f lie against
+// The one sign test math.md §8 adds to the root counts: where the roots of f lie against
 // lambda_s, the root of s(lambda) = det(lambda A + M) nearest 0.
 //
-// f always has a root in [lambda_s2, lambda_s] and one below lambda_s2 (section 8). When the
+// f always has a root in [lambda_s2, lambda_s] and one below lambda_s2 (math.md §8). When the
 // Sturm-Habicht counts say that f is square-free with four real roots, none positive, the other two
 // lie either both in (lambda_s, 0) -- I -- or both at or below lambda_s -- C. Taylor-expand f at
 // lambda_s: f(lambda_s + mu) = c0 + c1 mu + c2 mu^2 + c3 mu^3 + c4 mu^4 with c0 = f(lambda_s) <= 0
-// (Sylvester, section 8) and c4 = f4 = det P < 0. All its roots are real, so Descartes' rule counts
+// (Sylvester, math.md §8) and c4 = f4 = det P < 0. All its roots are real, so Descartes' rule counts
 // the roots in (lambda_s, oo) exactly: there is one iff some c1, c2, c3 is positive (with c0 <= 0 and
 // c4 < 0 the sign of c0 never changes whether the count is zero). So
 //   I  <=>  f'(lambda_s) > 0 or f''(lambda_s) > 0 or f'''(lambda_s) > 0,   C otherwise.
@@ -20,8 +20,8 @@
 
 #include <optional>
 
-#include "core/pencil.hpp"
-#include "core/sturm.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/sturm.hpp"
 
 namespace relpos::anysize {
 

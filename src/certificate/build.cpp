@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algebra/forms.hpp"
+#include "algebra/pencil.hpp"
 #include "anysize/exact.hpp"
-#include "core/pencil.hpp"
-#include "forms/forms.hpp"
 
 namespace relpos::certificate {
 namespace {
@@ -147,7 +147,7 @@ struct Pair {
   }
   Rational e_at(const V3& x) const { return form(E, x); }
   Rational p_at(const V3& x) const { return form(P, x); }
-  /// x(lambda) = -(lambda A + M)^{-1} (lambda a + m): the stationary point of lambda p + e (section 8);
+  /// x(lambda) = -(lambda A + M)^{-1} (lambda a + m): the stationary point of lambda p + e (math.md §8);
   /// nullopt when lambda A + M is singular.
   std::optional<V3> x_of(const Rational& l) const {
     Rational k[3][3], r[3];
@@ -326,7 +326,7 @@ QuadraticReal e_at(const LambdaS& ls, const Matrix4& E, const std::array<Quadrat
   return acc;
 }
 
-/// Hard case (section 8): contact set x^ + {w in ker(lambda_s A + M): w^T M w = -e(x^)}, x^ the
+/// Hard case (math.md §8): contact set x^ + {w in ker(lambda_s A + M): w^T M w = -e(x^)}, x^ the
 /// minimiser of e on the solutions of (lambda_s A + M) x = -(lambda_s a + m).
 bool hard_case(const Pair& pr, Certificate& c) {
   const LambdaS& ls = pr.ls;
@@ -664,7 +664,7 @@ bool crossing_points(const Pair& pr, Certificate& c) {
   }
   // Along the curve x(lambda): for lambda > 0 it minimises lambda p + e, so while e(x(lambda)) <= 0
   // it is the minimiser of p over a smaller solid, tending to the minimiser over the solid ellipsoid
-  // as e(x(lambda)) -> 0 (section 8, min side); for lambda in (lambda_s, 0) likewise the maximiser.
+  // as e(x(lambda)) -> 0 (math.md §8, min side); for lambda in (lambda_s, 0) likewise the maximiser.
   // Bisection on e(x(lambda)) = 0 with every point tried.
   auto along = [&](Rational lo, Rational hi, bool want_inside) {
     // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side.
@@ -810,7 +810,7 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, co
     }
     case Position::TE:
     case Position::TI: {
-      // The double root lambda* of f is rational (section 8), and (x(lambda*), 1) spans the kernel.
+      // The double root lambda* of f is rational (math.md §8), and (x(lambda*), 1) spans the kernel.
       const Poly g = anysize::monic_gcd(pr.f, anysize::derivative(pr.f));
       const Poly q = anysize::quotient(g, anysize::monic_gcd(g, anysize::derivative(g)));
       for (const Rational& l : rational_roots(q)) {

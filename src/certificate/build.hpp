@@ -1,10 +1,11 @@
-// Building the certificate of an answer (include/relpos/classify.hpp, "Certificates", math.md section 8): the
+// Building the certificate of an answer (include/relpos/position.hpp, math.md §8): the
 // dual multiplier lambda of the trust-region duality for E, I, TE, TI; lambda_s and the contact set
 // in the hard case; two witness points for C. Runs on exact rationals after the position is known.
 #pragma once
 
 #include "anysize/exact.hpp"
-#include "relpos/classify.hpp"
+#include "relpos/polynomials.hpp"
+#include "relpos/position.hpp"
 
 namespace relpos::certificate {
 

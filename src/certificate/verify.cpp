@@ -1,4 +1,4 @@
-// The independent certificate verifier (include/relpos/classify.hpp, "Certificates"; math.md section 8).
+// The independent certificate verifier (include/relpos/position.hpp; math.md §8).
 //
 // Only exact rational arithmetic (relpos::Rational / Integer) on the two 4x4 matrices and a few lines
 // of Q(sqrt d) arithmetic of its own: no code of the classifier (pencil, Sturm sequences, roots,
@@ -11,8 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "relpos/classify.hpp"
-#include "relpos/classify.hpp"  // enum Position only
+#include "relpos/position.hpp"
 
 namespace relpos {
 namespace {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "algebra/rounding.hpp"
+#include "algebra/smallness.hpp"
 #include "contact/discriminant_case.hpp"
-#include "core/smallness.hpp"
-#include "filters/rounding.hpp"
 #include "filters/running_bound.hpp"
 #include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"
@@ -92,7 +92,7 @@ namespace {
 
 std::optional<Verdict> verdict_of_case(DiscriminantCase c, int rho_vs_one) {
   // The root facts of the case; f is square-free (Disc != 0), so f~ = f has no multiple root and
-  // Disc(f~) has the sign of Disc(f) (math.md section 3). The table is classify's own.
+  // Disc(f~) has the sign of Disc(f) (math.md §3). The table is classify's own.
   RootFacts x;
   x.degree_ftilde = 4;
   switch (c) {
@@ -115,7 +115,7 @@ std::optional<Verdict> verdict_of_case(DiscriminantCase c, int rho_vs_one) {
 /// The 3 decided cases x 3 outcomes of rho, generated once from classify's table (verdict_of_case):
 /// the hot path is a lookup, nothing is decided twice.
 struct CaseTable {
-  std::optional<Verdict> v[4][3];  // nullopt: not small, all negative (the gap test decides, section 8)
+  std::optional<Verdict> v[4][3];  // nullopt: not small, all negative (the gap test decides, math.md §8)
   CaseTable() {
     for (int c = 1; c < 4; ++c)
       for (int r = -1; r <= 1; ++r) v[c][r + 1] = verdict_of_case(static_cast<DiscriminantCase>(c), r);

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "core/sturm.hpp"
+#include "algebra/sturm.hpp"
 #include "relpos/classify.hpp"
 
 namespace relpos {

@@ -1,12 +1,12 @@
 #include "filters/multiple_roots.hpp"
-#include "forms/forms.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
-#include "core/small_factor.hpp"
+#include "algebra/forms.hpp"
+#include "algebra/small_factor.hpp"
 
 namespace relpos {
 namespace {
@@ -329,7 +329,7 @@ std::optional<RootFacts> rational_multiple_root_facts(const Quartic<CheckedInt>&
     const int ms = multiplicity_in_s(s, x.p, x.q);
     if (ms < 0) return std::nullopt;
     (x.p.value() < 0 ? r.negative : r.positive) += 1;
-    // math.md section 3: tangency <=> mult_f - mult_s >= 2.
+    // math.md §3: tangency <=> mult_f - mult_s >= 2.
     if (x.mult_f - ms >= 2) (x.p.value() < 0 ? r.tangent_negative : r.tangent_positive) += 1;
     gcd_degree += std::min(x.mult_f, ms);
     for (int k = 0; k < ms; ++k) {

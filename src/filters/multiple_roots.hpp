@@ -1,7 +1,7 @@
 // Disc(f) = 0 certified by a witness, on machine integers: the fast exact path for exactly
 // degenerate inputs (tangencies, special double roots) given as doubles.
 //
-// A float filter can never certify a zero (math.md section 4), and computing Disc(f) exactly is
+// A float filter can never certify a zero (math.md §9), and computing Disc(f) exactly is
 // expensive: it has degree 6 in the coefficients of f. But Disc(f) = 0 has a short certificate --
 // a multiple root. When f has a rational multiple root p/q (always the case for a single double,
 // triple or quadruple root; two double roots are rational or a conjugate pair), we
@@ -22,8 +22,8 @@
 
 #include <optional>
 
-#include "core/pencil.hpp"
-#include "core/roots.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/roots.hpp"
 #include "filters/checked_int.hpp"
 #include "relpos/quadric.hpp"
 

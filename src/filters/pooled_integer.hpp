@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/sturm.hpp"
+#include "algebra/sturm.hpp"
 #include "relpos/numbers.hpp"
 
 namespace relpos {

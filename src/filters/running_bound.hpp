@@ -1,5 +1,5 @@
 // A double that carries a certified bound on its rounding error: the filter number type of the
-// scene early-outs (scene.hpp; math.md, "Scenes", for the derivation).
+// scene early-outs (scene.hpp; math.md §13, for the derivation).
 //
 // For a straight-line program of +, -, * evaluated in IEEE double with rounding to nearest, each
 // RunningBound holds the computed value v, a computed magnitude a (the same program on absolute

@@ -6,10 +6,10 @@
 #include <cfloat>
 #include <cmath>
 
+#include "algebra/forms.hpp"
+#include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
-#include "core/smallness.hpp"
 #include "filters/running_bound.hpp"
-#include "forms/forms.hpp"
 
 namespace relpos {
 namespace {

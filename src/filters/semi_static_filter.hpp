@@ -32,7 +32,7 @@ DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e);
 /// The same from stored enclosures (a quadric read from decimal text, io's fast reader).
 DecisionSigns semi_static_filter_signs(const detail::EnclosureMatrix4& p, const detail::EnclosureMatrix4& e);
 
-/// The gap test of math.md section 8 (anysize/gap.hpp) on RunningBoundLanes from power-of-two
+/// The gap test of math.md §8 (anysize/gap.hpp) on RunningBoundLanes from power-of-two
 /// normalized matrices: true (a root of f above lambda_s), false, or nullopt when uncertain.
 std::optional<bool> semi_static_roots_above_lambda_s(const DoubleMatrix4& p, const DoubleMatrix4& e);
 

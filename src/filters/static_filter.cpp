@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <cstring>
 
-#include "core/smallness.hpp"
-#include "forms/forms.hpp"
+#include "algebra/forms.hpp"
+#include "algebra/smallness.hpp"
 
 namespace relpos {
 namespace {

@@ -1,5 +1,5 @@
 // Stage 1 of classify(): the decision signs in plain double arithmetic, certified by static error
-// bounds (the CGAL static-filter / Shewchuk "fast" stage; math.md section 4).
+// bounds (the CGAL static-filter / Shewchuk "fast" stage; math.md §11).
 //
 // Both matrices must hold exact doubles (Ellipsoid::doubles(), Paraboloid::doubles()). Each matrix
 // is scaled by a power of two so its largest entry lies in [1/2, 1) -- exact, and a positive scaling
@@ -14,17 +14,10 @@
 // uncertain for the interval and exact stages. Compile with -frounding-math and no FP contraction.
 #pragma once
 
-#include "core/sturm.hpp"
+#include "algebra/sturm.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos {
-
-/// Every sign the decision uses (root counting and smallness).
-struct DecisionSigns {
-  QuarticSigns quartic;
-  USign vertex = USign::indeterminate();
-  USign graeffe = USign::indeterminate();
-};
 
 /// Certified signs from double arithmetic; uncertain where the static bound does not separate the
 /// value from zero (or the input is out of the filter's range).

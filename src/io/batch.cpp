@@ -5,6 +5,8 @@
 // validated by a SAX pass that stores nothing. The two quadrics are read by the fast reader
 // (fast_quadric.hpp: common forms, short numbers, straight to double enclosures) or else parsed
 // into (small, bounded) DOMs by the general reader, which words every error.
+#include <cctype>
+#include <charconv>
 #include <new>
 #include <string>
 #include <string_view>
@@ -104,24 +106,93 @@ std::string key_name(std::string_view key_text) {
   return Json::parse(key_text).get<std::string>();
 }
 
-/// An id or comment that is certainly one valid JSON value without parsing it: an integer, or a
-/// string of printable ASCII without escapes. Anything else goes through the validating parser.
-bool plainly_valid(std::string_view v) {
-  if (v.empty()) return false;
-  if (v.front() == '"') {
-    if (v.size() < 2 || v.back() != '"') return false;
-    for (std::size_t k = 1; k + 1 < v.size(); ++k) {
-      const auto c = static_cast<unsigned char>(v[k]);
-      if (c < 0x20 || c >= 0x80 || c == '\\' || c == '"') return false;
-    }
-    return true;
+/// Length of the valid UTF-8 sequence at s[i] (1 to 4), or 0 (what the JSON parser refuses:
+/// overlong forms, surrogates, code points beyond U+10FFFF).
+std::size_t utf8_length(std::string_view s, std::size_t i) {
+  const auto at = [&](std::size_t k) { return i + k < s.size() ? static_cast<unsigned char>(s[i + k]) : 0u; };
+  const unsigned c = at(0);
+  const auto tail = [&](std::size_t k) { return (at(k) >> 6) == 2; };
+  if (c < 0x80) return 1;
+  if (c >= 0xC2 && c <= 0xDF) return tail(1) ? 2 : 0;
+  if (c >= 0xE0 && c <= 0xEF) {
+    const unsigned lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+    return at(1) >= lo && at(1) <= hi && tail(2) ? 3 : 0;
   }
-  std::size_t k = v.front() == '-' ? 1 : 0;
-  if (k == v.size() || (v[k] == '0' && k + 1 != v.size())) return false;
-  for (; k < v.size(); ++k)
-    if (v[k] < '0' || v[k] > '9') return false;
+  if (c >= 0xF0 && c <= 0xF4) {
+    const unsigned lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+    return at(1) >= lo && at(1) <= hi && tail(2) && tail(3) ? 4 : 0;
+  }
+  return 0;
+}
+
+bool hex4(std::string_view s, std::size_t i) {
+  if (i + 4 > s.size()) return false;
+  for (std::size_t k = i; k < i + 4; ++k)
+    if (!std::isxdigit(static_cast<unsigned char>(s[k]))) return false;
   return true;
 }
+
+/// A JSON string that is certainly valid: escapes well formed, no control character, valid UTF-8,
+/// \u escapes of surrogates only as pairs (else the parser decides and words the error).
+bool plain_string(std::string_view v) {
+  if (v.size() < 2 || v.front() != '"' || v.back() != '"') return false;
+  const std::string_view s = v.substr(1, v.size() - 2);
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == '"' || c < 0x20) return false;
+    if (c != '\\') {
+      const std::size_t n = utf8_length(s, i);
+      if (n == 0) return false;
+      i += n;
+      continue;
+    }
+    if (i + 1 >= s.size()) return false;
+    const char e = s[i + 1];
+    if (e != 'u') {
+      if (std::string_view("\"\\/bfnrt").find(e) == std::string_view::npos) return false;
+      i += 2;
+      continue;
+    }
+    if (!hex4(s, i + 2)) return false;
+    const unsigned long u = std::stoul(std::string(s.substr(i + 2, 4)), nullptr, 16);
+    if (u >= 0xDC00 && u <= 0xDFFF) return false;
+    if (u >= 0xD800 && u <= 0xDBFF) {
+      if (i + 7 >= s.size() || s[i + 6] != '\\' || s[i + 7] != 'u' || !hex4(s, i + 8)) return false;
+      const unsigned long w = std::stoul(std::string(s.substr(i + 8, 4)), nullptr, 16);
+      if (w < 0xDC00 || w > 0xDFFF) return false;
+      i += 6;
+    }
+    i += 6;
+  }
+  return true;
+}
+
+/// A JSON number (RFC 8259 grammar), of any length.
+bool plain_number(std::string_view v) {
+  std::size_t k = 0;
+  const auto digits = [&] {
+    const std::size_t from = k;
+    while (k < v.size() && v[k] >= '0' && v[k] <= '9') ++k;
+    return k > from;
+  };
+  if (k < v.size() && v[k] == '-') ++k;
+  if (k < v.size() && v[k] == '0')
+    ++k;
+  else if (!digits())
+    return false;
+  if (k < v.size() && v[k] == '.' && (++k, !digits())) return false;
+  if (k < v.size() && (v[k] == 'e' || v[k] == 'E')) {
+    ++k;
+    if (k < v.size() && (v[k] == '+' || v[k] == '-')) ++k;
+    if (!digits()) return false;
+  }
+  return k == v.size();
+}
+
+/// An id, comment or unknown member's value that is certainly one valid JSON value, checked in
+/// place: a string or a number of any length (the parser's lexer would hold a copy of a long token,
+/// twice). Anything else goes through the validating parser, which stores one token at a time.
+bool plainly_valid(std::string_view v) { return !v.empty() && (v.front() == '"' ? plain_string(v) : plain_number(v)); }
 
 /// The minimal report's members after the id, in the order of the full report's first members,
 /// by the report writer (the rule and stage texts made once).
@@ -146,6 +217,26 @@ void append_minimal(const Classification& c, std::string& out) {
   out += '}';
 }
 
+/// Room in `out` for a long id and what follows it at once: growing past the id would copy it.
+void reserve_for_id(std::string& out, std::string_view id) {
+  constexpr std::size_t kLong = std::size_t(1) << 16, kReport = std::size_t(1) << 20;  // a report is smaller
+  if (id.size() > kLong) out.reserve(id.size() + kReport);
+}
+
+/// Writes {"id":<id>,"error":<message>} into out (its capacity kept); false when out of memory.
+bool write_error(std::string& out, std::string_view id, std::string_view message) noexcept {
+  try {
+    out.clear();
+    if (out.capacity() < id.size() + message.size() + 32) reserve_for_id(out, id);
+    out.append("{\"id\":").append(id).append(",\"error\":");
+    detail::JsonWriter(out).string(message);
+    out += '}';
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
 }  // namespace
 
 Json contact_to_json(const ContactAnswer& a) {
@@ -160,7 +251,9 @@ Json contact_to_json(const ContactAnswer& a) {
 std::string dump_json(const Json& value) { return value.dump(-1, ' ', false, Json::error_handler_t::replace); }
 
 std::string error_line(const std::string& id_text, const std::string& message) {
-  return "{\"id\":" + id_text + ",\"error\":" + dump_json(Json(message)) + "}";
+  std::string out;
+  if (!write_error(out, id_text, message)) throw std::bad_alloc();
+  return out;
 }
 
 std::string too_long_message(std::size_t max_line_bytes) {
@@ -169,16 +262,24 @@ std::string too_long_message(std::size_t max_line_bytes) {
 
 std::string_view normalize_line(std::string_view line, long line_number, std::size_t max_line_bytes) {
   if (line.size() > max_line_bytes) throw InputError(too_long_message(max_line_bytes));
-  if (line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // on any line: files get concatenated
+  if (line.substr(0, 3) == "\xEF\xBB\xBF") {
+    if (line_number != 1) throw InputError("a UTF-8 byte order mark is accepted only at the start of the input");
+    line.remove_prefix(3);
+  }
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   const std::size_t nul = line.find('\0');
   if (nul != std::string_view::npos) throw InputError("NUL byte at column " + std::to_string(nul + 1));
   return line;
 }
 
-void read_batch_line(std::string_view raw, long line_number, const BatchOptions& options, const Paraboloid* fixed,
-                     BatchLine& out) {
+namespace {
+
+/// read_batch_line; with `id`, the id is not copied into out.id: *id is set to its text instead (a
+/// view into `raw`, or of out.id when it is the line number or re-encoded), before anything is thrown.
+void read_line(std::string_view raw, long line_number, const BatchOptions& options, const Paraboloid* fixed,
+               BatchLine& out, std::string_view* id) {
   out.id = std::to_string(line_number);
+  if (id) *id = out.id;
   const std::string_view line = normalize_line(raw, line_number, options.max_line_bytes);
   std::size_t i = skip_ws(line, 0);
   if (i == line.size()) throw InputError("empty line");
@@ -225,7 +326,7 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
       if (!known) {
         if (unknown.empty()) unknown = key.substr(0, 40);
         try {
-          detail::validate_json(value, 1);  // not stored; still JSON within the limits
+          if (!plainly_valid(value)) detail::validate_json(value, 1);  // not stored; still JSON within the limits
         } catch (const detail::JsonSyntaxError&) {
           invalid_json(line);
         }
@@ -256,10 +357,15 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
   }
   for (std::size_t m = count; m-- > 0;)  // the first "id" when there are two (an error below)
     if (members[m].key == "id") {
-      if (valid_utf8(members[m].value))
-        out.id.assign(members[m].value.data(), members[m].value.size());  // byte for byte
-      else
-        out.id = dump_json(detail::parse_json(members[m].value, detail::JsonReadOptions{}));
+      const std::string_view value = members[m].value;
+      if (!valid_utf8(value)) {
+        out.id = dump_json(detail::parse_json(value, detail::JsonReadOptions{}));
+        if (id) *id = out.id;
+      } else if (id) {
+        *id = value;  // byte for byte, not copied
+      } else {
+        out.id.assign(value.data(), value.size());  // byte for byte
+      }
     }
   // The quadrics: small bounded trees, numbers exact (or the nearest doubles).
   detail::JsonReadOptions read;
@@ -279,6 +385,7 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
       (x.key == "ellipsoid" ? ellipsoid : paraboloid) = detail::parse_json(x.value, read);
     } catch (const detail::JsonSyntaxError&) {
       out.id = std::to_string(line_number);  // as for any line that is not JSON
+      if (id) *id = out.id;
       invalid_json(line);
     } catch (const InputError& e) {
       throw InputError(std::string(x.key) + ": " + e.what());  // a limit: nesting, entries, duplicate key
@@ -296,17 +403,30 @@ void read_batch_line(std::string_view raw, long line_number, const BatchOptions&
   check_normalized_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
 }
 
+}  // namespace
+
+void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
+                     BatchLine& out) {
+  read_line(line, line_number, options, fixed, out, nullptr);
+}
+
 void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out) {
+  // The line's memory: the caller's line, the answer, and no copy of the id (a view into the line).
+  // The answer is computed before the id is written, so that no long id is held meanwhile.
   BatchLine in;
+  std::string_view id;
+  std::string internal;
   try {
-    read_batch_line(line, line_number, options, nullptr, in);
-    out.assign("{\"id\":").append(in.id);  // the id goes first
+    read_line(line, line_number, options, nullptr, in, &id);
     if (options.contact_only) {
       const std::string report = dump_json(contact_to_json(contact(*in.ellipsoid, *in.paraboloid)));
-      out.append(",").append(report, 1, std::string::npos);
+      reserve_for_id(out, id);
+      out.assign("{\"id\":").append(id).append(",").append(report, 1, std::string::npos);
       return;
     }
     const Classification c = classify(*in.ellipsoid, *in.paraboloid, options.evidence);
+    reserve_for_id(out, id);
+    out.assign("{\"id\":").append(id);  // the id goes first
     if (options.evidence == Evidence::Full) {
       detail::JsonWriter w(out);
       detail::append_classification(c, options.render, w);
@@ -315,14 +435,25 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
     }
     return;
   } catch (const InputError& err) {
-    out = error_line(in.id, err.what());
+    if (write_error(out, id, err.what())) return;
   } catch (const std::bad_alloc&) {
-    out = error_line(in.id, "out of memory while answering this line");
   } catch (const std::exception& err) {
-    out = error_line(in.id, std::string("internal error: ") + err.what());
+    try {
+      internal = std::string("internal error: ") + err.what();
+    } catch (...) {
+    }
+    if (!internal.empty() && write_error(out, id, internal)) return;
   } catch (...) {
-    out = error_line(in.id, "internal error: unknown exception");
+    if (write_error(out, id, "internal error: unknown exception")) return;
   }
+  // Out of memory: that line's error, with its id when it can be echoed (the partial answer's
+  // capacity is reused), else with the line number (doc/cli.md, "Out of memory").
+  if (write_error(out, id, kOutOfMemoryMessage)) return;
+  char number[24];
+  const auto end = std::to_chars(number, number + sizeof number, line_number).ptr;
+  if (write_error(out, std::string_view(number, static_cast<std::size_t>(end - number)), kOutOfMemoryNoIdMessage))
+    return;
+  out.clear();  // not even that: the caller writes its own line (doc/cli.md)
 }
 
 std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options) {

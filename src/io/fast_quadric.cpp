@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "core/shape_filter.hpp"
+#include "algebra/shape_filter.hpp"
 
 namespace relpos::io::detail {
 namespace {

@@ -1,4 +1,4 @@
-// The common quadric forms read straight from JSON text into double enclosures (issue 12): no DOM,
+// The common quadric forms read straight from JSON text into double enclosures: no DOM,
 // no rationals, no heap traffic per number. Used by the batch reader (batch.cpp) before the general
 // reader of io.cpp.
 //

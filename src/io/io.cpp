@@ -11,7 +11,10 @@
 #include <utility>
 #include <vector>
 
-#include "core/roots.hpp"
+#include "algebra/cramer.hpp"
+#include "algebra/forms.hpp"
+#include "algebra/polynomial_text.hpp"
+#include "algebra/roots.hpp"
 #include "io/json_read.hpp"
 #include "io/json_write.hpp"
 #include "relpos/error.hpp"
@@ -30,16 +33,35 @@ std::string strip_exception_prefix(const std::string& what) {
   return what;
 }
 
+/// The nesting depth of a parse, limited to kMaxJsonDepth: copying and printing a JSON value recurse,
+/// so a line of 100000 '[' would otherwise overflow the stack when its "id" is echoed.
+class DepthLimit {
+ protected:
+  explicit DepthLimit(std::size_t start_depth) : depth_(start_depth) {}
+  bool enter() {
+    if (++depth_ > kMaxJsonDepth)
+      throw InputError("invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    return true;
+  }
+  bool leave() {
+    --depth_;
+    return true;
+  }
+
+ private:
+  std::size_t depth_;
+};
+
 /// The DOM builder of nlohmann::json, except that a floating-point number is stored as a string
 /// holding its original text (the lexer hands the text to the SAX callback), so that no number is
 /// ever rounded to a double; with `doubles`, every number becomes the exact value of the IEEE double
 /// nearest its text instead. Duplicate keys are rejected; with max_elements, so are arrays and
 /// objects of more entries (a quadric needs at most 16), which bounds the DOM of a batch line.
-class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
+class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json>, DepthLimit {
  public:
   using Base = nlohmann::detail::json_sax_dom_parser<Json>;
   ExactSax(Json& document, const detail::JsonReadOptions& options)
-      : Base(document, /*allow_exceptions=*/true), options_(options), depth_(options.start_depth) {}
+      : Base(document, /*allow_exceptions=*/true), DepthLimit(options.start_depth), options_(options) {}
   bool number_float(Json::number_float_t rounded, const Json::string_t& text) {
     if (!counted()) return false;
     Json::string_t copy = options_.doubles ? double_text(rounded) : text;
@@ -71,30 +93,11 @@ class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
     keys.push_back(k);
     return Base::key(k);
   }
-  // Nesting is limited: copying and printing a JSON value recurse, so a line of 100000 '[' would
-  // otherwise overflow the stack when its "id" is echoed.
-  bool start_object(std::size_t n) {
-    if (!counted() || !enter()) return false;
-    keys_.emplace_back();
-    counts_.push_back(0);
-    return Base::start_object(n);
-  }
-  bool end_object() {
-    keys_.pop_back();
-    counts_.pop_back();
-    return leave() && Base::end_object();
-  }
-  bool start_array(std::size_t n) {
-    if (!counted() || !enter()) return false;
-    keys_.emplace_back();
-    counts_.push_back(0);
-    return Base::start_array(n);
-  }
-  bool end_array() {
-    keys_.pop_back();
-    counts_.pop_back();
-    return leave() && Base::end_array();
-  }
+  // Nesting is limited (DepthLimit).
+  bool start_object(std::size_t n) { return open() && Base::start_object(n); }
+  bool end_object() { return close() && Base::end_object(); }
+  bool start_array(std::size_t n) { return open() && Base::start_array(n); }
+  bool end_array() { return close() && Base::end_array(); }
 
  private:
   static Json::string_t double_text(double d) {
@@ -108,25 +111,27 @@ class ExactSax : public nlohmann::detail::json_sax_dom_parser<Json> {
                        " entries (a quadric needs at most 16: a 4x4 matrix)");
     return true;
   }
-  bool enter() {
-    if (++depth_ > kMaxJsonDepth)
-      throw InputError("invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+  /// A new array or object: counted in its parent, one level deeper, with its own keys and count.
+  bool open() {
+    if (!counted() || !enter()) return false;
+    keys_.emplace_back();
+    counts_.push_back(0);
     return true;
   }
-  bool leave() {
-    --depth_;
-    return true;
+  bool close() {
+    keys_.pop_back();
+    counts_.pop_back();
+    return leave();
   }
   detail::JsonReadOptions options_;
-  std::size_t depth_ = 0;
   std::vector<std::vector<std::string>> keys_;
   std::vector<std::size_t> counts_;
 };
 
 /// Validates JSON without storing anything (memory independent of the text's size): ignored content.
-class ValidatingSax : public nlohmann::json_sax<Json> {
+class ValidatingSax : public nlohmann::json_sax<Json>, DepthLimit {
  public:
-  explicit ValidatingSax(std::size_t start_depth) : depth_(start_depth) {}
+  explicit ValidatingSax(std::size_t start_depth) : DepthLimit(start_depth) {}
   bool null() override { return true; }
   bool boolean(bool) override { return true; }
   bool number_integer(number_integer_t) override { return true; }
@@ -147,18 +152,6 @@ class ValidatingSax : public nlohmann::json_sax<Json> {
     throw detail::JsonSyntaxError("invalid JSON: " + strip_exception_prefix(e.what()));
   }
   bool overflow = false;  ///< a number beyond double range stopped the parse (valid JSON so far)
-
- private:
-  bool enter() {
-    if (++depth_ > kMaxJsonDepth)
-      throw InputError("invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-    return true;
-  }
-  bool leave() {
-    --depth_;
-    return true;
-  }
-  std::size_t depth_;
 };
 
 std::string shorten(const std::string& s, std::size_t limit = 40) {
@@ -360,8 +353,7 @@ auto with_role(const std::string& role, F&& make) -> decltype(make()) {
 
 /// Determinant of a symmetric 3x3 block given by its entries.
 Rational det3(const Rational (&b)[3][3]) {
-  return b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1]) - b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0]) +
-         b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0]);
+  return relpos::detail::det3<Rational>([&b](int i, int j) -> const Rational& { return b[i][j]; });
 }
 
 /// A paraboloid from a matrix or coefficients, whose 3x3 block is `block`: when the library refuses
@@ -459,6 +451,35 @@ Rational rational_from_json(const Json& v, const std::string& path) {
     default:
       fail(path, "expected a number, got " + describe(v));
   }
+}
+
+std::vector<std::vector<Rational>> motion_polynomials(const Json& v, std::size_t count, const std::string& role) {
+  if (!v.is_array() || v.size() != count)
+    throw InputError(role + ": expected an array of " + std::to_string(count) +
+                     " polynomials (arrays of coefficients, lowest degree first)");
+  std::vector<std::vector<Rational>> out(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string path = index_path(role, i);
+    if (v[i].is_array()) {
+      for (std::size_t k = 0; k < v[i].size(); ++k) out[i].push_back(rational_from_json(v[i][k], index_path(path, k)));
+    } else {
+      out[i].push_back(rational_from_json(v[i], path));  // a constant
+    }
+    while (!out[i].empty() && out[i].back() == 0) out[i].pop_back();
+    if (out[i].size() > kMaxMotionDegree + 1)
+      throw InputError(path + ": degree " + std::to_string(out[i].size() - 1) + " is beyond the limit of " +
+                       std::to_string(kMaxMotionDegree) + " (doc/cli.md, Limits)");
+    for (std::size_t k = 0; k < out[i].size(); ++k) {
+      const Rational& c = out[i][k];
+      const std::size_t bits =
+          std::max(mpz_sizeinbase(c.numerator().mpz(), 2), mpz_sizeinbase(c.denominator().mpz(), 2));
+      if (bits > kMaxMotionCoefficientBits)
+        throw InputError(index_path(path, k) + ": a " + std::to_string(bits) +
+                         "-bit numerator or denominator, beyond the limit of " +
+                         std::to_string(kMaxMotionCoefficientBits) + " bits (doc/cli.md, Limits)");
+    }
+  }
+  return out;
 }
 
 Ellipsoid ellipsoid_from_json(const Json& v, const std::string& role) {
@@ -597,7 +618,7 @@ std::string stage_meaning(Stage s) {
 /// f scaled by the positive lcm of its denominators: same roots, integer coefficients.
 Quartic<Integer> integer_quartic(const Quartic<Rational>& f) {
   Integer l(1);
-  for (const auto& q : f) mpz_lcm(l.mpz(), l.mpz(), q.denominator().mpz());
+  forms::lcm_of_denominators(f.begin(), f.end(), l);
   Quartic<Integer> out;
   for (std::size_t i = 0; i < 5; ++i) out[i] = f[i].numerator() * (l / f[i].denominator());
   return out;
@@ -639,25 +660,7 @@ std::string count_text(int n, const char* one, const char* many) {
 }  // namespace
 
 std::string polynomial_to_text(const Rational* c, int size, const std::string& var) {
-  std::string out;
-  for (int k = size - 1; k >= 0; --k) {
-    const Rational& q = c[k];
-    if (q == 0) continue;
-    const bool neg = q < 0;
-    const Rational a = neg ? -q : q;
-    if (out.empty())
-      out += neg ? "-" : "";
-    else
-      out += neg ? " - " : " + ";
-    std::string mono = k == 0 ? "" : (k == 1 ? var : var + "^" + std::to_string(k));
-    if (k == 0)
-      out += to_string(a);
-    else if (a == 1)
-      out += mono;
-    else
-      out += to_string(a) + "*" + mono;
-  }
-  return out.empty() ? "0" : out;
+  return relpos::detail::polynomial_text(c, size < 0 ? 0 : static_cast<std::size_t>(size), var);
 }
 
 namespace detail {
@@ -758,7 +761,7 @@ Json classification_to_json(const Classification& c, const RenderOptions& option
 
 namespace {
 
-/// One line saying what the certificate is and why it proves the position (classify.hpp, "Certificates").
+/// One line saying what the certificate is and why it proves the position (position.hpp).
 std::string certificate_text(const Certificate& c) {
   switch (c.kind) {
     case Certificate::Kind::Definite:

@@ -1,5 +1,5 @@
 // The position at one instant t* of a motion where f(., t*) = det(l P + E(t*)) has a multiple
-// root, for an ellipsoid of any size (math.md "Motion", "The position at an instant").
+// root, for an ellipsoid of any size (math.md §7, "The position at an instant").
 //
 // The decision reads the definiteness of the pencil M(l) = l P + E(t*) (the S-lemma facts behind the
 // certificates):
@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "forms/forms.hpp"
+#include "algebra/forms.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/numbers.hpp"
 

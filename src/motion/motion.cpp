@@ -12,11 +12,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/pencil.hpp"
-#include "core/roots.hpp"
-#include "core/smallness.hpp"
-#include "core/sturm.hpp"
-#include "forms/forms.hpp"
+#include "algebra/forms.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/roots.hpp"
+#include "algebra/smallness.hpp"
+#include "algebra/sturm.hpp"
 #include "motion/instant_position.hpp"
 #include "motion/subresultant_position.hpp"
 #include "relpos/error.hpp"
@@ -31,13 +31,6 @@ using Alg = AK::Algebraic_real_1;
 
 /// Matrix view for the generic pencil code (pencil.hpp) with entries in Z[t].
 using MatZ = forms::MatrixOf<PolyZ>;
-
-/// lcm of l and d, into a fresh object (Gmpz shares representations).
-Integer lcm(const Integer& l, const Integer& d) {
-  Integer r;
-  mpz_lcm(r.mpz(), l.mpz(), d.mpz());
-  return r;
-}
 
 /// gcd of the integer coefficients of several polynomials in t (0 for no non-zero coefficient).
 template <class Range>
@@ -78,8 +71,7 @@ void make_primitive(Array& polys) {
 /// positive multiple, same roots.
 MatZ integer_matrix(const TimeMatrix4& e) {
   Integer l(1);
-  for (const auto& p : e)
-    for (const auto& c : p) l = lcm(l, c.denominator());
+  for (const auto& p : e) forms::lcm_of_denominators(p.begin(), p.end(), l);
   MatZ out;
   for (std::size_t i = 0; i < 16; ++i) {
     std::vector<Integer> c;
@@ -92,7 +84,7 @@ MatZ integer_matrix(const TimeMatrix4& e) {
 
 MatZ integer_matrix(const Matrix4& p) {
   Integer l(1);
-  for (const auto& c : p.a) l = lcm(l, c.denominator());
+  forms::lcm_of_denominators(p.a.begin(), p.a.end(), l);
   MatZ out;
   for (std::size_t i = 0; i < 16; ++i) out.a[i] = PolyZ(Integer(p.a[i].numerator() * (l / p.a[i].denominator())));
   make_primitive(out.a);
@@ -100,7 +92,7 @@ MatZ integer_matrix(const Matrix4& p) {
 }
 
 /// The pencil of the moving pair with coefficients in Z[t] and the polynomials in t that decide
-/// (math.md "Motion"). f = det(l P + E(t)) and s = det(l A + M(t)) up to positive factors.
+/// (math.md §7). f = det(l P + E(t)) and s = det(l A + M(t)) up to positive factors.
 struct MovingPencil {
   Quartic<PolyZ> f;
   Quadratic<PolyZ> s;
@@ -149,7 +141,7 @@ struct MovingPencil {
       merge = disc;
       events.emplace_back(disc, kCauseDiscriminant);
       // For a body that is not small the position also changes where a root of f crosses lambda_s
-      // (math.md sections 7 and 8): the real zeros of Res_l(f^, s), f^ = f / gcd(f, s) over Q(t).
+      // (math.md §7 and §8): the real zeros of Res_l(f^, s), f^ = f / gcd(f, s) over Q(t).
       const BiZ bf(f.begin(), f.end()), bs(s.begin(), s.end());
       const BiZ fhat = CGAL::integral_division_up_to_constant_factor(bf, CGAL::gcd_up_to_constant_factor(bf, bs));
       if (fhat.degree() >= 1) {
@@ -171,7 +163,7 @@ struct MovingPencil {
       if (!CGAL::is_zero(ds)) events.emplace_back(ds, kCauseSpecialRoot);
     }
     // For a pure translation s and det E are constant, so both quantities are constants: rho does
-    // not change (math.md "Motion"). A rotation can change it.
+    // not change (math.md §7). A rotation can change it.
     events.emplace_back(vertex, kCauseSmallness);
     events.emplace_back(graeffe, kCauseSmallness);
   }
@@ -446,6 +438,18 @@ std::vector<std::string> cause_names(unsigned causes) {
   return out;
 }
 
+std::string to_string(FirstContact::Kind kind) {
+  switch (kind) {
+    case FirstContact::Kind::NotExteriorAtStart:
+      return "not-exterior-at-start";
+    case FirstContact::Kind::Contact:
+      return "contact";
+    case FirstContact::Kind::None:
+      return "none";
+  }
+  throw std::logic_error("internal error: to_string: not a FirstContact::Kind");
+}
+
 FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
                            const Rational& t1) {
   validate_motion(motion, t0, t1);
@@ -460,7 +464,7 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
     return out;
   }
   // Separation (two distinct positive roots) is open and is decided for any size; it can only end
-  // where two roots of f meet, i.e. at a real zero of `merge` (math.md "Motion").
+  // where two roots of f meet, i.e. at a real zero of `merge` (math.md §7).
   const MovingPencil mp(e0, motion, p);
   AK ak;
   std::vector<Candidate> zeros;

@@ -5,6 +5,8 @@
 
 #include <utility>
 
+#include "algebra/cramer.hpp"
+#include "algebra/forms.hpp"
 #include "relpos/error.hpp"
 #include "relpos/motion.hpp"
 
@@ -26,7 +28,7 @@ TimePolynomial from_poly(const PolyQ& p) {
   return out;
 }
 
-/// The 4x4 matrix K = N T^-1 = [[Q^T, N p - Q^T (p + c)], [0, N]] (math.md "Motion"), over NT.
+/// The 4x4 matrix K = N T^-1 = [[Q^T, N p - Q^T (p + c)], [0, N]] (math.md §7), over NT.
 /// `q` empty means no rotation (Q = I, N = 1).
 template <class NT>
 std::array<NT, 16> scaled_inverse(const std::array<NT, 4>* q, const std::array<NT, 3>& c, const std::array<NT, 3>& p) {
@@ -92,22 +94,13 @@ RigidMotion RigidMotion::translating(std::array<TimePolynomial, 3> c) {
 Vector3 centre_of(const Ellipsoid& e) {
   // Solve M x = -e by Cramer's rule (M positive definite, so det M > 0).
   const Matrix4& q = e.matrix();
-  auto det3 = [](const Rational a[3][3]) {
-    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-  };
-  Rational m[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m[i][j] = q(i, j);
-  const Rational d = det3(m);
-  Vector3 x;
-  for (int col = 0; col < 3; ++col) {
-    Rational a[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) a[i][j] = j == col ? Rational(-q(i, 3)) : m[i][j];
-    x[static_cast<std::size_t>(col)] = det3(a) / d;
+  Rational k[3][4];  // [M | -e]
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) k[i][j] = q(i, j);
+    k[i][3] = -q(i, 3);
   }
-  return x;
+  const auto d = detail::cramer(k);
+  return {d[1] / d[0], d[2] / d[0], d[3] / d[0]};
 }
 
 Vector3 pivot_of(const Ellipsoid& e0, const RigidMotion& m) {
@@ -169,11 +162,7 @@ void validate_motion(const RigidMotion& m, const Rational& t0, const Rational& t
   if (g.degree() < 1) return;
   // Integer multiple of g (clear denominators) and its real roots in [t0, t1].
   Integer l(1);
-  for (int i = 0; i <= g.degree(); ++i) {
-    Integer r;
-    mpz_lcm(r.mpz(), l.mpz(), g[i].denominator().mpz());
-    l = r;
-  }
+  forms::lcm_of_denominators(g.begin(), g.end(), l);
   std::vector<Integer> zc;
   for (int i = 0; i <= g.degree(); ++i) zc.push_back(g[i].numerator() * (l / g[i].denominator()));
   using AK = CGAL::Algebraic_kernel_d_1<Integer>;

@@ -10,7 +10,7 @@
 namespace relpos {
 
 /// For tests: the position at a rational time decided by the method used at irrational instants
-/// (math.md "Motion"), for any size, instead of classify(). nullopt when f(., t) is square-free
+/// (math.md §7), for any size, instead of classify(). nullopt when f(., t) is square-free
 /// there (that method then takes the position of the neighbouring intervals).
 std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p,
                                                   const Rational& t);

@@ -1,4 +1,4 @@
-// The certificate polynomials of the scene early-outs (math.md "Scenes").
+// The certificate polynomials of the scene early-outs (math.md §13).
 //
 // P(x) on the ellipsoid (x - c)^T M (x - c) <= k is bounded through P(c + d) = P(c) + g.d + d^T A d
 // (g = grad P(c)): max g.d = sqrt(k g^T M^-1 g), 0 <= d^T A d <= k * mu_max with mu_max the largest
@@ -52,44 +52,13 @@ struct ContainmentQuantities {
   /// adj_a: adj(A) of the paraboloid (needed for S2 only).
   ContainmentQuantities(const SymmetricEntries<NT>& e, const SymmetricEntries<NT>& p,
                         const SymmetricEntries<NT>& adj_a) {
-    // adj(M), symmetric.
-    const NT a00 = e.q11 * e.q22 - e.q12 * e.q12, a11 = e.q00 * e.q22 - e.q02 * e.q02,
-             a22 = e.q00 * e.q11 - e.q01 * e.q01;
-    const NT a01 = e.q02 * e.q12 - e.q01 * e.q22, a02 = e.q01 * e.q12 - e.q02 * e.q11,
-             a12 = e.q01 * e.q02 - e.q00 * e.q12;
-    D = e.q00 * a00 + e.q01 * a01 + e.q02 * a02;
-    const NT y0 = a00 * e.q0 + a01 * e.q1 + a02 * e.q2, y1 = a01 * e.q0 + a11 * e.q1 + a12 * e.q2,
-             y2 = a02 * e.q0 + a12 * e.q1 + a22 * e.q2;
-    K = e.q0 * y0 + e.q1 * y1 + e.q2 * y2 - e.q33 * D;
-    const NT ay0 = p.q00 * y0 + p.q01 * y1 + p.q02 * y2, ay1 = p.q01 * y0 + p.q11 * y1 + p.q12 * y2,
-             ay2 = p.q02 * y0 + p.q12 * y1 + p.q22 * y2;
-    Pn = (y0 * ay0 + y1 * ay1 + y2 * ay2) - NT(2) * D * (p.q0 * y0 + p.q1 * y1 + p.q2 * y2) + D * D * p.q33;
-    const NT w0 = D * p.q0 - ay0, w1 = D * p.q1 - ay1, w2 = D * p.q2 - ay2;
-    W = w0 * (a00 * w0 + a01 * w1 + a02 * w2) + w1 * (a01 * w0 + a11 * w1 + a12 * w2) +
-        w2 * (a02 * w0 + a12 * w1 + a22 * w2);
-    S1 = a00 * p.q00 + a11 * p.q11 + a22 * p.q22 + NT(2) * (a01 * p.q01 + a02 * p.q02 + a12 * p.q12);
-    S2 = adj_a.q00 * e.q00 + adj_a.q11 * e.q11 + adj_a.q22 * e.q22 +
-         NT(2) * (adj_a.q01 * e.q01 + adj_a.q02 * e.q02 + adj_a.q12 * e.q12);
+    compute<false>(e, p, adj_a);
   }
   /// The same when A (hence adj(A)) is diagonal: the products with zero entries left out.
   struct DiagonalA {};
   ContainmentQuantities(const SymmetricEntries<NT>& e, const SymmetricEntries<NT>& p, const SymmetricEntries<NT>& adj_a,
                         DiagonalA) {
-    const NT a00 = e.q11 * e.q22 - e.q12 * e.q12, a11 = e.q00 * e.q22 - e.q02 * e.q02,
-             a22 = e.q00 * e.q11 - e.q01 * e.q01;
-    const NT a01 = e.q02 * e.q12 - e.q01 * e.q22, a02 = e.q01 * e.q12 - e.q02 * e.q11,
-             a12 = e.q01 * e.q02 - e.q00 * e.q12;
-    D = e.q00 * a00 + e.q01 * a01 + e.q02 * a02;
-    const NT y0 = a00 * e.q0 + a01 * e.q1 + a02 * e.q2, y1 = a01 * e.q0 + a11 * e.q1 + a12 * e.q2,
-             y2 = a02 * e.q0 + a12 * e.q1 + a22 * e.q2;
-    K = e.q0 * y0 + e.q1 * y1 + e.q2 * y2 - e.q33 * D;
-    const NT ay0 = p.q00 * y0, ay1 = p.q11 * y1, ay2 = p.q22 * y2;
-    Pn = (y0 * ay0 + y1 * ay1 + y2 * ay2) - NT(2) * D * (p.q0 * y0 + p.q1 * y1 + p.q2 * y2) + D * D * p.q33;
-    const NT w0 = D * p.q0 - ay0, w1 = D * p.q1 - ay1, w2 = D * p.q2 - ay2;
-    W = w0 * (a00 * w0 + a01 * w1 + a02 * w2) + w1 * (a01 * w0 + a11 * w1 + a12 * w2) +
-        w2 * (a02 * w0 + a12 * w1 + a22 * w2);
-    S1 = a00 * p.q00 + a11 * p.q11 + a22 * p.q22;
-    S2 = adj_a.q00 * e.q00 + adj_a.q11 * e.q11 + adj_a.q22 * e.q22;
+    compute<true>(e, p, adj_a);
   }
   NT inside_t() const { return Pn + K * S1; }
   /// Must be > 0 (with inside_t() < 0) for the inside certificate.
@@ -99,6 +68,42 @@ struct ContainmentQuantities {
   }
   /// Must be > 0 (with Pn > 0) for the outside certificate.
   NT outside_gap() const { return Pn * Pn - NT(4) * K * W; }
+
+ private:
+  template <bool kDiagonalA>
+  void compute(const SymmetricEntries<NT>& e, const SymmetricEntries<NT>& p, const SymmetricEntries<NT>& adj_a) {
+    // adj(M), symmetric.
+    const NT a00 = e.q11 * e.q22 - e.q12 * e.q12, a11 = e.q00 * e.q22 - e.q02 * e.q02,
+             a22 = e.q00 * e.q11 - e.q01 * e.q01;
+    const NT a01 = e.q02 * e.q12 - e.q01 * e.q22, a02 = e.q01 * e.q12 - e.q02 * e.q11,
+             a12 = e.q01 * e.q02 - e.q00 * e.q12;
+    D = e.q00 * a00 + e.q01 * a01 + e.q02 * a02;
+    const NT y0 = a00 * e.q0 + a01 * e.q1 + a02 * e.q2, y1 = a01 * e.q0 + a11 * e.q1 + a12 * e.q2,
+             y2 = a02 * e.q0 + a12 * e.q1 + a22 * e.q2;
+    K = e.q0 * y0 + e.q1 * y1 + e.q2 * y2 - e.q33 * D;
+    NT ay0, ay1, ay2;  // A y
+    if constexpr (kDiagonalA) {
+      ay0 = p.q00 * y0;
+      ay1 = p.q11 * y1;
+      ay2 = p.q22 * y2;
+    } else {
+      ay0 = p.q00 * y0 + p.q01 * y1 + p.q02 * y2;
+      ay1 = p.q01 * y0 + p.q11 * y1 + p.q12 * y2;
+      ay2 = p.q02 * y0 + p.q12 * y1 + p.q22 * y2;
+    }
+    Pn = (y0 * ay0 + y1 * ay1 + y2 * ay2) - NT(2) * D * (p.q0 * y0 + p.q1 * y1 + p.q2 * y2) + D * D * p.q33;
+    const NT w0 = D * p.q0 - ay0, w1 = D * p.q1 - ay1, w2 = D * p.q2 - ay2;
+    W = w0 * (a00 * w0 + a01 * w1 + a02 * w2) + w1 * (a01 * w0 + a11 * w1 + a12 * w2) +
+        w2 * (a02 * w0 + a12 * w1 + a22 * w2);
+    if constexpr (kDiagonalA) {
+      S1 = a00 * p.q00 + a11 * p.q11 + a22 * p.q22;
+      S2 = adj_a.q00 * e.q00 + adj_a.q11 * e.q11 + adj_a.q22 * e.q22;
+    } else {
+      S1 = a00 * p.q00 + a11 * p.q11 + a22 * p.q22 + NT(2) * (a01 * p.q01 + a02 * p.q02 + a12 * p.q12);
+      S2 = adj_a.q00 * e.q00 + adj_a.q11 * e.q11 + adj_a.q22 * e.q22 +
+           NT(2) * (adj_a.q01 * e.q01 + adj_a.q02 * e.q02 + adj_a.q12 * e.q12);
+    }
+  }
 };
 
 /// The same for a sphere, M = m I (m > 0): with K' = e.e - m e0, Pn' = e^T A e - 2 m p.e + m^2 p0,

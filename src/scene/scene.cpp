@@ -9,8 +9,8 @@
 #include <limits>
 #include <thread>
 
-#include "core/pencil.hpp"
-#include "core/smallness.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/smallness.hpp"
 #include "filters/running_bound.hpp"
 #include "scene/certificates.hpp"
 
@@ -70,7 +70,7 @@ SymmetricEntries<RB> bounded(const SymmetricEntries<Rational>& s) {
 }
 
 /// Power of two 2^k with the largest |entry| of m times 2^k in [1/2, 1): a positive scaling of P
-/// changes no sign the certificates or the core look at (math.md section 1).
+/// changes no sign the certificates or the core look at (math.md §1).
 long balancing_exponent(const Matrix4& m) {
   double mx = 0;
   for (const auto& q : m.a) mx = std::max(mx, std::fabs(CGAL::to_double(q)));
@@ -175,7 +175,7 @@ namespace {
 
 Early inside_verdict(int rho_sign) {
   // Interior: the core's table gives I with the rule AllRootsNegative when rho < 1. A body that is
-  // not small is interior too (p < 0 on it), but the core names its rule from section 8's root
+  // not small is interior too (p < 0 on it), but the core names its rule from math.md §8's root
   // location (RootsAboveLambdaS or OddGapRoot): the core decides, so a scene and batch agree.
   if (rho_sign < 0) return Early::InsideSmall;
   return Early::None;  // not small, rho = 1 or too close to tell: the core decides

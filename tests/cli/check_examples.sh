@@ -10,7 +10,7 @@
 # A line with none of these is itself a failure (every example must state its answer).
 # The output must have exactly one line per input line, in order: the output id must be the input
 # id, or the 1-based line number when the input has none (or cannot be read).
-# Every valid pair has one of the five positions whatever its size (math.md section 8): there is no
+# Every valid pair has one of the five positions whatever its size (math.md §8): there is no
 # "unclassified" answer any more, so an id prefix U- is no expectation.
 # The batch output is then handed to `relpos verify`: every certificate must verify (error lines of
 # invalid input are skipped), and the numbers of verified and skipped lines must add up.

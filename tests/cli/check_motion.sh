@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Check `relpos motion` end to end: answers known by construction (doc/math.md, "Motion"), the JSON
+# Check `relpos motion` end to end: answers known by construction (doc/math.md §7), the JSON
 # fields, the text report and the exit codes.
 #
 # Usage: tests/cli/check_motion.sh PATH/TO/relpos

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Input, output and limits of the relpos CLI (issues 14, 15, 12; doc/cli.md): ids echoed byte for byte,
+"""Input, output and limits of the relpos CLI (doc/cli.md): ids echoed byte for byte,
 duplicate keys, BOM/CRLF/NUL/trailing separators alike in JSON Lines and CSV, bounded memory per line,
 allocation failure on one line, write failures and closed pipes, the same message and exit code from
 every command, scene and batch agreeing line by line, motion limits, batch options.
@@ -216,11 +216,147 @@ p = run(["motion", "--ellipsoid", '{"center":[0,0,-1],"axes":["1/2",1,"1/4"]}', 
 check("motion beyond --max-seconds: a message and exit 5", p.returncode == 5 and b"time budget" in p.stderr,
       (p.returncode, p.stderr))
 
-# --- help lists every command and option ---------------------------------------------------------
+# --- help: one screen for the commands, every option in its command's help ----------------------
 h = run(["--help"]).stdout.decode()
-for word in ["classify", "batch", "scene", "motion", "verify", "--evidence", "--threads", "--numbers",
-             "--max-line-bytes", "--max-seconds", "--pivot", "--generate", "--contact-only", "--quiet"]:
+check("relpos --help fits on one screen (%d lines)" % len(h.splitlines()), len(h.splitlines()) <= 40)
+for word in ["classify", "batch", "scene", "motion", "verify", "COMMAND --help"]:
     check("relpos --help mentions %s" % word, word in h)
+for command, words in [("classify", ["--contact-only", "--digits", "--json"]),
+                       ("batch", ["--evidence", "--threads", "--numbers", "--max-line-bytes", "--contact-only"]),
+                       ("scene", ["--generate", "--summary-only", "--max-line-bytes"]),
+                       ("motion", ["--max-seconds", "--pivot", "--first-contact"]), ("verify", ["--quiet"])]:
+    text = run([command, "--help"]).stdout.decode()
+    for word in words:
+        check("relpos %s --help mentions %s" % (command, word), word in text)
+    check("relpos %s --help offers no contact state that cannot occur" % command,
+          "meet (kind" not in text and "or unknown" not in text, text)
+for extra in (["--version", "extra"], ["--help", "extra"]):
+    p = run(extra)
+    check("relpos %s: a usage error" % " ".join(extra), p.returncode == 2 and p.stdout == b"", (p.returncode, p.stdout))
+
+# --- out of memory on one line, at any memory limit ------------------------------------------------
+# A child's peak resident size starts from its parent's size when it was forked (Linux keeps it
+# across exec), and this script holds large inputs: a small helper process starts each measured run.
+PEAK_HELPER = ("import os, sys; pid = os.posix_spawn(sys.argv[2], sys.argv[2:], os.environ, file_actions=["
+               "(os.POSIX_SPAWN_OPEN, 1, sys.argv[1], os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)]); "
+               "_, status, usage = os.wait4(pid, 0); print(usage.ru_maxrss, os.waitstatus_to_exitcode(status))")
+
+
+def peak_run(args):
+    """(completed process, peak resident KB) of one run."""
+    out_path = os.path.join(tmp, "peak.out")
+    h = subprocess.run(["/usr/bin/python3", "-c", PEAK_HELPER, out_path, relpos] + args, capture_output=True,
+                       timeout=300)
+    peak, code = (int(x) for x in h.stdout.split())
+    with open(out_path, "rb") as f:
+        out = f.read()
+    os.unlink(out_path)
+    return subprocess.CompletedProcess(args, code, out, h.stderr), peak
+
+
+def small_line(i, scene=False):
+    return ('{"id":%d,%s%s}\n' % (i, E, "" if scene else "," + P)).encode()
+
+
+BIG = 50000000
+if not os.environ.get("RELPOS_SANITIZED"):
+    for scene in (False, True):
+        tail = b'",' + E.encode() + (b"" if scene else b"," + P.encode()) + b"}\n"
+        path = write("oom.jsonl", b"".join(small_line(i, scene) for i in (1, 2, 3)) + b'{"id":"' + b"x" * BIG + tail +
+                     b"".join(small_line(i, scene) for i in (5, 6, 7)))
+        cmd = ["scene", "--standard-paraboloid", "1,1", "--no-progress"] if scene else ["batch", "--evidence", "minimal"]
+        for threads in ("1", "2"):
+            for limit_mb in (40, 60, 100, 130, 160, 250):
+                p = run(cmd + ["--threads", threads, path], limit_as=limit_mb << 20)
+                out = lines(p)
+                answers = [json.loads(o) for o in out] if len(out) == 7 else []
+                ok = p.returncode == 0 and len(answers) == 7
+                for k, a in enumerate(answers):
+                    want_id = [k + 1] if k != 3 else ["x" * BIG, 4]
+                    ok = ok and a["id"] in want_id and ("position" in a or "out of memory" in a.get("error", ""))
+                if ok and answers[3]["id"] == 4:  # the id is not echoed only when that is said
+                    ok = "line number" in answers[3]["error"] or "reading" in answers[3]["error"]
+                check("%s --threads %s under %d MB: 7 lines, out of memory only as a line's error" %
+                      (cmd[0], threads, limit_mb), ok,
+                      (p.returncode, [o[:90] for o in out], p.stderr[-300:]))
+    os.unlink(path)
+
+# --- memory per line: O(line), at most 2.5 times the line above a fixed base ------------------------
+# The peak resident size of one run (its own, from wait4) on a file of 6 short lines and one 50 MB
+# line of each shape, against the peak on an empty file. doc/cli.md ("Memory") quotes these figures.
+if not os.environ.get("RELPOS_SANITIZED"):
+    empty = write("empty.jsonl", b"")
+    _, base = peak_run(["batch", "--threads", "1", empty])
+    shapes = {
+        "a string id": b'{"id":"' + b"x" * BIG + b'",%s,%s}\n' % (E.encode(), P.encode()),
+        "an array id": b'{"id":[' + b"1," * (BIG // 2) + b'1],%s,%s}\n' % (E.encode(), P.encode()),
+        "a comment": b'{"id":"c",%s,%s,"comment":"' % (E.encode(), P.encode()) + b"y" * BIG + b'"}\n',
+        "an unknown member": b'{"id":"u",%s,%s,"zz":"' % (E.encode(), P.encode()) + b"y" * BIG + b'"}\n',
+        "whitespace": b'{"id":"w",' + b" " * BIG + b'%s,%s}\n' % (E.encode(), P.encode()),
+        "a number id": b'{"id":1' + b"1" * BIG + b',%s,%s}\n' % (E.encode(), P.encode()),
+        "a float comment": b'{"id":"f",%s,%s,"comment":1.' % (E.encode(), P.encode()) + b"5" * BIG + b'e7}\n',
+    }
+    for name, big_line in shapes.items():
+        path = write("shape.jsonl", b"".join(small_line(i) for i in (1, 2, 3)) + big_line +
+                     b"".join(small_line(i) for i in (5, 6, 7)))
+        p, peak = peak_run(["batch", "--threads", "1", path])
+        ratio = (peak - base) * 1024.0 / len(big_line)
+        print("memory: a 50 MB line of %s peaks %.2f x its size above the base of %d MB" %
+              (name, ratio, base // 1024))
+        check("50 MB line of %s: 7 answers, peak <= 2.5 x the line above the base (%.2f x)" % (name, ratio),
+              p.returncode == 0 and len(lines(p)) == 7 and ratio <= 2.5, (p.returncode, p.stderr[-300:]))
+    scene_line = b'{"id":"' + b"x" * BIG + b'",%s}\n' % E.encode()
+    path = write("shape.jsonl", small_line(1, True) + scene_line + small_line(3, True))
+    p, peak = peak_run(["scene", "--standard-paraboloid", "1,1", "--no-progress", "--threads", "1", path])
+    ratio = (peak - base) * 1024.0 / len(scene_line)
+    print("memory: scene, a 50 MB id peaks %.2f x its size above the base" % ratio)
+    check("scene: 50 MB id, peak <= 2.5 x the line above the base (%.2f x)" % ratio,
+          p.returncode == 0 and len(lines(p)) == 3 and ratio <= 2.5, p.returncode)
+    os.unlink(path)
+
+# --- every output failure: exit 3 ------------------------------------------------------------------
+pair = write("pair.jsonl", small_line(1))
+answer = write("answer.jsonl", run(["batch", pair]).stdout)
+p = run([], shell="%s verify %s %s > /dev/full" % (relpos, pair, answer))
+check("verify > /dev/full: exit 3 with a message", p.returncode == 3 and b"cannot write the output" in p.stderr,
+      (p.returncode, p.stderr))
+p = run([], shell="%s scene --standard-paraboloid 1,1 --no-progress --summary-only %s 2>/dev/full" % (relpos, many))
+check("scene --summary-only 2>/dev/full (its only output lost): exit 3", p.returncode == 3, p.returncode)
+p = run([], shell="%s --help > /dev/full" % relpos)
+check("--help > /dev/full: exit 3", p.returncode == 3, p.returncode)
+
+# --- verify: long echoes shortened, inputs checked before printing, trailing blank lines -----------
+a = json.loads(open(answer).read())
+a["certificate"]["lambda"] = "1" + "2" * 9000
+p = run(["verify", pair, write("long.jsonl", (json.dumps(a) + "\n").encode())])
+check("verify shortens a 9000-digit number in its message, with its length",
+      p.returncode == 1 and len(p.stdout) < 400 and b"characters)" in p.stdout, p.stdout[:500])
+p = run(["verify", tmp, answer])
+check("verify DIR ANSWERS: the error and nothing printed first", p.returncode == 2 and p.stdout == b"" and
+      b"is a directory" in p.stderr, (p.returncode, p.stdout[:200], p.stderr))
+p = run(["verify", pair, write("blank.jsonl", open(answer, "rb").read() + b"\n")])
+check("verify: a trailing blank answer line is not an answer", p.returncode == 0 and
+      p.stdout == b"verified 1, failed 0, skipped 0\n", (p.returncode, p.stdout))
+
+# --- byte order mark only at the start; numbers without blanks or signed denominators --------------
+out = lines(run(["batch", "--evidence", "minimal"],
+                stdin=b"\xef\xbb\xbf" + small_line(1) + b"\xef\xbb\xbf" + small_line(2)))
+check("BOM on line 1 skipped, on line 2 an error", '"position"' in out[0] and "byte order mark" in out[1], out)
+out = lines(run(["scene", "--standard-paraboloid", "1,1", "--no-progress", "--format", "csv"],
+                stdin=b"0,0,1,1/4\n\xef\xbb\xbf0,0,1,1/4\n"))
+check("CSV: BOM on line 2 an error", "byte order mark" in out[1], out)
+for text in ("1/-4", "-1/-4", " 1/4", "1/4 ", "1/+4"):
+    out = lines(run(["batch"], stdin=('{"id":1,"ellipsoid":{"sphere":{"center":[0,0,1],"radius":"%s"}},%s}\n'
+                                      % (text, P)).encode()))
+    check("radius %s refused" % json.dumps(text), "not an exact number" in out[0], out)
+
+# --- scene summary: timings rounded to 3 significant digits ----------------------------------------
+scene_csv = write("scene.csv", run(["scene", "--generate", "3000"]).stdout)
+p = run(["scene", "--standard-paraboloid", "1,2", "--no-progress", "--summary-only", scene_csv])
+summary = json.loads(p.stderr)["summary"]
+timings = list(summary["seconds"].values()) + list(summary["bodies_per_second"].values())
+check("summary timings have at most 3 significant digits", summary["bodies"] == 3000 and
+      all(len(repr(t).split("e")[0].replace(".", "").replace("-", "").strip("0")) <= 3 for t in timings), timings)
 
 print("%d failure(s)" % len(failures))
 sys.exit(1 if failures else 0)

@@ -1,41 +1,68 @@
 #!/usr/bin/env bash
 # The installed package, checked from outside: `cmake --install` into a temporary prefix, then the
-# consumer project (tests/package/consumer) built once with find_package(relpos CONFIG REQUIRED) and
-# once with `g++ $(pkg-config --cflags --libs relpos)`; both must print the README example's answer, I.
-#   check_package.sh BUILD_DIR CONSUMER_SOURCE_DIR [CMAKE]
+# consumer project (tests/package/consumer) built with find_package(relpos CONFIG REQUIRED), linked
+# with librelpos.a and with librelpos.so, configured without a build type and without a warning, and
+# built with `g++ $(pkg-config --cflags --libs relpos)`; each must print what
+# examples/cpp/classify_text.cpp documents. Every installed header must compile on its own with the
+# pkg-config flags.
+#   check_package.sh BUILD_DIR CONSUMER_SOURCE_DIR [CMAKE [SHARED]]   (SHARED: ON unless RELPOS_BUILD_SHARED=OFF)
 set -euo pipefail
 build=$1
 consumer=$2
 cmake=${3:-cmake}
+shared=${4:-ON}
+example=$consumer/../../../examples/cpp/classify_text.cpp
+check_output=$(dirname "$0")/../examples/check_cpp_example.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 prefix=$tmp/prefix
 
 "$cmake" --install "$build" --prefix "$prefix" >"$tmp/install.log" || { cat "$tmp/install.log"; exit 1; }
-for f in include/relpos/classify.hpp bin/relpos; do
+for f in include/relpos/classify.hpp include/relpos/version.hpp bin/relpos; do
   [ -e "$prefix/$f" ] || { echo "not installed: $f"; exit 1; }
 done
 libdir=$(dirname "$(find "$prefix" -name librelpos.a | head -n1)")
+apps=app
+if [ "$shared" = ON ]; then
+  [ -e "$libdir/librelpos.so" ] || { echo "not installed: librelpos.so"; exit 1; }
+  apps="app app_shared"
+fi
 [ -f "$libdir/pkgconfig/relpos.pc" ] || { echo "not installed: relpos.pc"; exit 1; }
 [ -n "$(find "$prefix" -name relposConfig.cmake)" ] || { echo "not installed: relposConfig.cmake"; exit 1; }
 
-# 1. CMake: find_package + relpos::relpos (only the prefix is given).
-"$cmake" -S "$consumer" -B "$tmp/cmake-build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
+# 1. CMake: find_package + relpos::relpos and relpos::relpos_shared (only the prefix is given).
+"$cmake" -S "$consumer" -B "$tmp/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" \
   >"$tmp/configure.log" 2>&1 || { cat "$tmp/configure.log"; exit 1; }
+if grep -q "Warning" "$tmp/configure.log"; then
+  cat "$tmp/configure.log"; echo "find_package(relpos) gave the consumer a warning"; exit 1
+fi
 "$cmake" --build "$tmp/cmake-build" >"$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; exit 1; }
-out=$("$tmp/cmake-build/app")
-[ "$out" = "I" ] || { echo "find_package consumer printed '$out', expected I"; exit 1; }
-echo "find_package consumer: $out"
+for app in $apps; do
+  bash "$check_output" "$tmp/cmake-build/$app" "$example" >/dev/null
+done
+if [ "$shared" = ON ]; then
+  ldd "$tmp/cmake-build/app_shared" | grep -q "librelpos.so" || { echo "app_shared does not load librelpos.so"; exit 1; }
+fi
+! ldd "$tmp/cmake-build/app" | grep -q "librelpos.so" || { echo "app (relpos::relpos) loads librelpos.so"; exit 1; }
+echo "find_package consumers ($apps): output as documented"
 
 # The exported target must not impose build-only flags on its users.
 if grep -rqE "ffp-contract|frounding-math" "$(dirname "$(find "$prefix" -name relposConfig.cmake)")"; then
   echo "build-only flags in the exported usage requirements"; exit 1
 fi
 
-# 2. pkg-config.
+# 2. pkg-config (-lrelpos links librelpos.so when it is installed, so the rpath is given).
 export PKG_CONFIG_PATH=$libdir/pkgconfig
 flags=$(pkg-config --cflags --libs relpos)
-g++ -std=c++17 -O1 "$consumer/main.cpp" -o "$tmp/app-pc" $flags 2>"$tmp/pc.log" || { cat "$tmp/pc.log"; exit 1; }
-out=$("$tmp/app-pc")
-[ "$out" = "I" ] || { echo "pkg-config consumer printed '$out', expected I"; exit 1; }
-echo "pkg-config consumer: $out ($flags)"
+g++ -std=c++17 -O1 "$example" -o "$tmp/app-pc" $flags -Wl,-rpath,"$libdir" 2>"$tmp/pc.log" ||
+  { cat "$tmp/pc.log"; exit 1; }
+bash "$check_output" "$tmp/app-pc" "$example" >/dev/null
+echo "pkg-config consumer: output as documented ($flags)"
+
+# 3. Every installed public header compiles on its own, with only the pkg-config flags.
+for h in "$prefix"/include/relpos/*.hpp; do
+  echo "#include <relpos/$(basename "$h")>" >"$tmp/one.cpp"
+  g++ -std=c++17 -fsyntax-only -Wall -Wextra -Werror $(pkg-config --cflags relpos) "$tmp/one.cpp" 2>"$tmp/one.log" ||
+    { cat "$tmp/one.log"; echo "relpos/$(basename "$h") does not compile on its own"; exit 1; }
+done
+echo "installed headers compile alone: $(ls "$prefix"/include/relpos/*.hpp | wc -l)"

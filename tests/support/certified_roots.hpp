@@ -346,7 +346,7 @@ inline std::optional<Quadratic<Rational>> interpolated_s(const Matrix4& e, const
   return s;
 }
 
-/// Sign of rho - 1 (math.md section 5) from the closed form of the root of s nearest 0:
+/// Sign of rho - 1 (math.md §5) from the closed form of the root of s nearest 0:
 /// l = (-s1 + sqrt(D)) / (2 s2), D = s1^2 - 4 s0 s2, K = (f0 / f4)(s2 / s0), rho = K / l^2.
 /// With sigma = s1/s2 > 0 and pi = s0/s2 > 0 (both roots of s negative), l^2 = (sigma^2 - 2 pi -
 /// sigma sqrt(D')) / 2, D' = sigma^2 - 4 pi, so  K <= l^2  <=>  L := 2K - sigma^2 + 2 pi <= -sigma

@@ -93,7 +93,7 @@ inline Expect expect_from(const Config& k, const Transformed& t) {
   return x;
 }
 
-/// What relpos answers: the truth, whatever the size (math.md section 8).
+/// What relpos answers: the truth, whatever the size (math.md §8).
 inline Position answer_for(const Expect& x) { return x.truth; }
 
 inline bool truth_has_contact(Position p) { return p == Position::TI || p == Position::C || p == Position::TE; }
@@ -122,7 +122,7 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
   CHECK(c.verdict.small == x.small);
   CHECK(c.verdict.rho_vs_one == sgn(x.rho - 1));
   if (x.truth_known && c.verdict.meets().has_value()) CHECK(*c.verdict.meets() == truth_has_contact(x.truth));
-  // Every valid pair gets one of I, TI, C, TE, E, whatever its size (math.md section 8), and contact.
+  // Every valid pair gets one of I, TI, C, TE, E, whatever its size (math.md §8), and contact.
   REQUIRE(c.verdict.meets().has_value());
   CHECK(!c.rule_text().empty());
 
@@ -190,9 +190,9 @@ inline void check_against_expectation(const Classification& c, const Expect& x) 
     CHECK(found == 1);
   }
 
-  // Root pattern of each answer (math.md section 3 table): it characterizes every answer of a small
-  // pair, and TE and E of any size (section 6); I, TI and C of a pair that is not small are decided
-  // by section 8, not by the root pattern.
+  // Root pattern of each answer (math.md §3 table): it characterizes every answer of a small
+  // pair, and TE and E of any size (math.md §6); I, TI and C of a pair that is not small are decided
+  // by math.md §8, not by the root pattern.
   const std::optional<Position> pattern =
       x.small || want == Position::TE || want == Position::E ? std::optional<Position>(want) : std::nullopt;
   if (pattern) switch (*pattern) {
@@ -269,7 +269,7 @@ inline void check_same(const Classification& a, const Classification& b) {
   }
 }
 
-/// The independent tangency test (math.md section 3) on every rational multiple root, for small
+/// The independent tangency test (math.md §3) on every rational multiple root, for small
 /// pairs. (Beyond smallness a root of s can carry a tangential contact point of two crossing
 /// surfaces: the kernel test then finds a common point although mult_f - mult_s < 2; see
 /// test_classify_constructed, "not small".)

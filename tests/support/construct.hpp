@@ -2,7 +2,7 @@
 // library's own constructors), affine congruences, the paper's closed forms, exact polynomial
 // helpers, and geometric certificates in the paper's normalized frame.
 //
-// Conventions (math.md section 1): a quadric is X^T Q X = 0 with X = (x, y, z, 1)^T; interior is
+// Conventions (math.md §1): a quadric is X^T Q X = 0 with X = (x, y, z, 1)^T; interior is
 // X^T Q X < 0. The "standard frame" is the paper's: sphere of radius r centred at c, paraboloid
 // z = x^2/a^2 + y^2/b^2 with vertex at the origin.
 #pragma once
@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/pencil.hpp"
+#include "algebra/pencil.hpp"
 
 namespace rt {
 
@@ -94,6 +94,19 @@ inline Matrix4 congruence(const Matrix4& q, const Matrix4& h) { return mul(trans
 inline Rational det3(const Matrix3& m) {
   return m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) - m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
          m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
+}
+
+/// The solution of m x = b by Cramer's rule, exactly (det m != 0; the tests' own, independent of
+/// the library's).
+inline Vector3 solve3(const Matrix3& m, const Vector3& b) {
+  const Rational d = det3(m);
+  Vector3 x;
+  for (int col = 0; col < 3; ++col) {
+    Matrix3 mc = m;
+    for (int i = 0; i < 3; ++i) mc(i, col) = b[static_cast<std::size_t>(i)];
+    x[static_cast<std::size_t>(col)] = det3(mc) / d;
+  }
+  return x;
 }
 
 /// Determinant by exact Gaussian elimination (independent of the library's Laplace expansion).
@@ -341,7 +354,7 @@ struct Config {
   Position expected = Position::C;  ///< by construction (set by every maker)
 
   Rational amin() const { return rmin(a, b); }
-  /// rho = 4 r^2 / min(a, b)^4 (math.md section 5).
+  /// rho = 4 r^2 / min(a, b)^4 (math.md §5).
   Rational rho() const { return 4 * r * r / pow_q(amin(), 4); }
   bool small() const { return 2 * r <= amin() * amin(); }
   Matrix4 e() const { return sphere_matrix(c, r); }
@@ -421,7 +434,7 @@ inline std::vector<Config> tangency_family(const TangentPoint& tp, const Rationa
   return out;
 }
 
-/// Centre on the axis of the cup (math.md test 4): small spheres give I / TI / C / TE / E by the
+/// Centre on the axis of the cup (the paper's section on the axis): small spheres give I / TI / C / TE / E by the
 /// sign of z - r and z + r (the nearest point of the cup to an axis point at height z <= a^2/2 is
 /// the vertex, and beyond it the distance^2 is a^2 z - a^4/4 > r^2).
 inline Position axis_position(const Rational& z, const Rational& r) {

@@ -1,5 +1,5 @@
 // A corpus of ellipsoid / elliptic paraboloid pairs of ANY size whose relative position is known BY
-// CONSTRUCTION (worked out on paper below, never by running a classifier), for math.md section 8.
+// CONSTRUCTION (worked out on paper below, never by running a classifier), for math.md §8.
 //
 // Families (standard frame unless said otherwise; q(x, y) the quadratic part of the paraboloid z = q):
 //  1. axis spheres, circular cup z = k(x^2 + y^2), centre (0, 0, h), h > 0. Squared distance from the centre
@@ -27,9 +27,9 @@
 //     tall ellipsoid x^2 + y^2 + (z - 6)^2/36 <= 1 satisfies 3(x^2 + y^2) <= z - z^2/12 <= z, with equality only
 //     at the origin: TI at the vertex (I / C for sigma = 1 -+ delta).
 //  6. osculating +-1e-30: in every tangent family, sigma* +- 10^-30 (I / C or E / C) next to the +-1/50 ones.
-//  7. math.md section 3's examples: the paper's Remark (I), and the -b^2 double roots with C and E.
+//  7. math.md §3's examples: the paper's Remark (I), and the -b^2 double roots with C and E.
 // Every case is also available under random rigid motions and general affine congruences, sign flips and
-// positive rescalings (transformed_copies): the answers do not change (math.md section 1).
+// positive rescalings (transformed_copies): the answers do not change (math.md §1).
 #pragma once
 
 #include <functional>
@@ -290,16 +290,16 @@ inline std::vector<LargeCase> irrational_cases() {
   return out;
 }
 
-/// Family 7: math.md section 3's examples (paper's Remark: I; -b^2 double root: C and E).
+/// Family 7: math.md §3's examples (paper's Remark: I; -b^2 double root: C and E).
 inline std::vector<LargeCase> paper_cases() {
   using namespace large_detail;
   std::vector<LargeCase> out;
   out.push_back(make("paper Remark a=6/5 b=3/2 r=1/4 (0,1/2,92281/129600)",
                      sphere2({Q(0), Q(1, 2), Q(92281, 129600)}, Q(1, 16)), rt::paraboloid_matrix(Q(6, 5), Q(3, 2)),
                      Position::I));
-  out.push_back(make("math.md -b^2 double, C: a=1 b=2 r=1/4 (1,0,131/192)",
+  out.push_back(make("math.md §3 -b^2 double, C: a=1 b=2 r=1/4 (1,0,131/192)",
                      sphere2({Q(1), Q(0), Q(131, 192)}, Q(1, 16)), rt::paraboloid_matrix(Q(1), Q(2)), Position::C));
-  out.push_back(make("math.md -b^2 double, E: a=1 b=2 r=1/4 (6/5,0,857/1600)",
+  out.push_back(make("math.md §3 -b^2 double, E: a=1 b=2 r=1/4 (6/5,0,857/1600)",
                      sphere2({Q(6, 5), Q(0), Q(857, 1600)}, Q(1, 16)), rt::paraboloid_matrix(Q(1), Q(2)), Position::E));
   return out;
 }
@@ -315,7 +315,7 @@ inline std::vector<LargeCase> large_cases() {
 
 /// The case moved by a random congruence (rigid: rotation from an integer quaternion and a rational
 /// translation; otherwise a general invertible affine map), with independent positive rescalings and sign
-/// flips of the two matrices. The answer is unchanged (math.md section 1).
+/// flips of the two matrices. The answer is unchanged (math.md §1).
 inline LargeCase transformed_copy(const LargeCase& c, rt::Rng& g, bool rigid) {
   const rt::Transformed t = rt::transform(c.e.matrix(), c.p.matrix(), g, rigid, true);
   return LargeCase{c.name + (rigid ? " [rigid motion]" : " [affine congruence]"),

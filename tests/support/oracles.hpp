@@ -10,7 +10,7 @@
 
 namespace relpos::oracle {
 
-/// Independent tangency check (math.md section 3): lambda0 a real root of f; true iff the kernel of
+/// Independent tangency check (math.md §3): lambda0 a real root of f; true iff the kernel of
 /// lambda0 P + E contains a real X != 0 with X^T E X = 0. lambda0 must be rational.
 inline bool kernel_has_common_point(const Ellipsoid& e, const Paraboloid& p, const Rational& lambda0) {
   // Kernel of K = lambda0 P + E by exact Gaussian elimination over Q; then decide whether the

@@ -1,4 +1,4 @@
-// The second, independent method of math.md section 8 (for tests): the position of an ellipsoid and an
+// The second, independent method of math.md §8 (for tests): the position of an ellipsoid and an
 // elliptic paraboloid of ANY size from the secular polynomial, in exact rational arithmetic only.
 //
 // Everything here is written from scratch (polynomials over Q as coefficient vectors, Euclid's gcd, Sturm
@@ -246,7 +246,7 @@ inline SecularPolynomials secular_polynomials(const Ellipsoid& e, const Parabolo
 }
 
 /// Signs of min and max of p(x) = X^T P X over the solid ellipsoid (first = min, second = max), by the
-/// secular method. Throws std::logic_error when a structural claim of math.md section 8 fails (a finding).
+/// secular method. Throws std::logic_error when a structural claim of math.md §8 fails (a finding).
 /// *hard_case (if given) tells whether the max side was the hard case (no root of S in (-inf, tau)).
 inline std::pair<int, int> secular_extreme_signs(const Ellipsoid& e, const Paraboloid& p, bool* hard_case = nullptr) {
   using namespace secular_detail;
@@ -297,7 +297,7 @@ inline Position position_from_extreme_signs(int smin, int smax) {
   return Position::C;
 }
 
-/// The relative position by the secular method (math.md section 8, second method): I, TI, C, TE or E.
+/// The relative position by the secular method (math.md §8, second method): I, TI, C, TE or E.
 inline Position secular_position(const Ellipsoid& e, const Paraboloid& p) {
   const auto s = secular_extreme_signs(e, p);
   return position_from_extreme_signs(s.first, s.second);

@@ -1,4 +1,4 @@
-// Certificates as JSON (include/relpos/classify.hpp, "Certificates"): exact strings out, exact numbers in.
+// Certificates as JSON (include/relpos/position.hpp): exact strings out, exact numbers in.
 #include <gmp.h>
 
 #include <cstddef>

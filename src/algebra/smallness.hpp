@@ -1,4 +1,4 @@
-// The smallness hypothesis of the paper (section 2.2; math.md section 5): the ellipsoid cannot be
+// The smallness hypothesis of the paper (section 2.2; math.md §5): the ellipsoid cannot be
 // tangent to the paraboloid at two points. In the paper's normalized frame (sphere of radius r,
 // paraboloid x^2/a^2 + y^2/b^2 = z, a <= b) it reads 2r <= a^2; coordinate-free,
 //
@@ -22,8 +22,8 @@
 #include <optional>
 #include <string>
 
-#include "core/pencil.hpp"
-#include "core/sturm.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/sturm.hpp"
 
 namespace relpos {
 

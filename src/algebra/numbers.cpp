@@ -47,13 +47,13 @@ bool is_non_finite(std::string_view s) {
 }  // namespace
 
 Rational parse_rational(std::string_view text) {
-  // Trim surrounding blanks only; everything else must be part of the number.
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
+  // Every character is part of the number: a blank around it is an error, as in a JSON number.
   if (text.empty()) bad(text, "empty");
+  if (std::isspace(static_cast<unsigned char>(text.front())) || std::isspace(static_cast<unsigned char>(text.back())))
+    bad(text, "blank before or after the number");
   if (text.size() > kMaxNumberChars) bad(text, "longer than the 10000-character limit");
 
-  // Fraction p/q, each side an optionally signed integer.
+  // Fraction p/q: an optionally signed integer over a positive integer written without sign.
   if (auto slash = text.find('/'); slash != std::string_view::npos) {
     std::string_view num = text.substr(0, slash), den = text.substr(slash + 1);
     bool neg = false;
@@ -61,10 +61,7 @@ Rational parse_rational(std::string_view text) {
       neg = num[0] == '-';
       num.remove_prefix(1);
     }
-    if (!den.empty() && (den[0] == '+' || den[0] == '-')) {
-      neg = neg != (den[0] == '-');
-      den.remove_prefix(1);
-    }
+    if (!den.empty() && (den[0] == '+' || den[0] == '-')) bad(text, "the denominator takes no sign");
     if (!all_digits(num) || !all_digits(den)) bad(text, "a fraction needs integers on both sides of '/'");
     Integer d = parse_integer_digits(den);
     if (d == 0) bad(text, "zero denominator");

@@ -9,7 +9,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/flint_thread.hpp"
+#include "algebra/flint_thread.hpp"
+#include "algebra/polynomial_text.hpp"
 
 namespace relpos {
 namespace {
@@ -213,24 +214,7 @@ int AlgebraicReal::compare(const Rational& q) const {
 }
 
 std::string polynomial_text(const std::vector<Integer>& c, const std::string& variable) {
-  std::string out;
-  for (std::size_t k = c.size(); k-- > 0;) {
-    if (c[k] == 0) continue;
-    const bool neg = c[k] < 0;
-    const Integer mag = neg ? Integer(-c[k]) : c[k];
-    if (out.empty())
-      out += neg ? "-" : "";
-    else
-      out += neg ? " - " : " + ";
-    const bool one = mag == 1;
-    if (!one || k == 0) out += to_string(mag);
-    if (k > 0) {
-      if (!one) out += "*";
-      out += variable;
-      if (k > 1) out += "^" + std::to_string(k);
-    }
-  }
-  return out.empty() ? "0" : out;
+  return detail::polynomial_text(c.data(), c.size(), variable);
 }
 
 }  // namespace relpos

@@ -1,7 +1,7 @@
 // Exact forms of a quadric's matrix: the one matrix view the generic formulas read, and the
 // conversions every stage needs -- double enclosures for the interval stage, the common-lcm integer
-// form of the reported evidence, and the compact integer form of the exact decisions (math.md,
-// "Certifying a sign in floating point, and the exact form"). Computed here once, for every caller.
+// form of the reported evidence, and the compact integer form of the exact decisions
+// (math.md §11). Computed here once, for every caller.
 #pragma once
 
 #include <CGAL/Interval_nt.h>
@@ -81,7 +81,7 @@ inline Rational divided_by_power(const Integer& z, const SplitScale& scale, unsi
 
 /// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
 /// (guards interval overflow and underflow; a positive scaling of either matrix changes no decision,
-/// math.md section 1): a point interval times a power of two encloses the scaled entry even if the
+/// math.md §1): a point interval times a power of two encloses the scaled entry even if the
 /// product underflows. Call with the rounding mode towards +inf (CGAL::Protect_FPU_rounding).
 MatrixOf<Interval> to_intervals(const DoubleMatrix4& m);
 

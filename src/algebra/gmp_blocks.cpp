@@ -7,9 +7,9 @@
 // exact size needs no header and never hands a block to a request larger than the block.
 #include <gmp.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <new>
 
 #include "relpos/numbers.hpp"
 
@@ -44,10 +44,10 @@ Cache::~Cache() {
     }
 }
 
-[[noreturn]] void out_of_memory(std::size_t n) {
-  std::fprintf(stderr, "relpos: GMP cannot allocate %zu bytes\n", n);  // as GMP's default allocator
-  std::abort();
-}
+/// Thrown through GMP's C frames (built with unwind tables): a number being grown keeps its old
+/// limbs, so the caller's numbers stay valid and out of memory is one answer's error, not the end
+/// of the process (doc/cli.md, "Out of memory").
+[[noreturn]] void out_of_memory() { throw std::bad_alloc(); }
 
 /// The cache holding blocks of exactly n bytes (list c), or nothing: other sizes, or the thread's
 /// cache is already destroyed.
@@ -70,7 +70,7 @@ void* allocate(std::size_t n) {
     return b;
   }
   void* p = std::malloc(n);
-  if (!p) out_of_memory(n);
+  if (!p) out_of_memory();
   return p;
 }
 
@@ -90,7 +90,7 @@ void* reallocate(void* p, std::size_t old_size, std::size_t new_size) {
   std::size_t c;
   if (!cache_for(old_size, c) && !cache_for(new_size, c)) {  // large numbers: realloc may grow in place
     void* q = std::realloc(p, new_size);
-    if (!q) out_of_memory(new_size);
+    if (!q) out_of_memory();
     return q;
   }
   void* q = allocate(new_size);

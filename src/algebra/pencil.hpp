@@ -1,4 +1,4 @@
-// The pencil lambda P + E and its two polynomials (math.md section 2; paper eq. (1)):
+// The pencil lambda P + E and its two polynomials (math.md §2; paper eq. (1)):
 //   characteristic polynomial  f(lambda) = det(lambda P + E)   (quartic, f4 = det P, f0 = det E),
 //   special polynomial         s(lambda) = det(lambda A + M)   (A, M the 3x3 blocks; quadratic,
 //                                                               because rank A = 2).

@@ -4,7 +4,7 @@
 // factorisation, the real-root isolation of CGAL's Algebraic_kernel_d_1); no root is computed in
 // floating point.
 //
-// The multiplicity rule (math.md section 3): with f~ = f / gcd(f, s),
+// The multiplicity rule (math.md §3): with f~ = f / gcd(f, s),
 //   tangency  <=>  mult_f(l0) - mult_s(l0) >= 2 for some real l0  <=>  f~ has a multiple real root.
 // A multiple root of f that is not multiple in f~ is a "special" root of s (paper Remark 2,
 // Theorem 5: -a^2, -b^2 in the normal frame) and is not a tangency.
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "core/pencil.hpp"
+#include "algebra/pencil.hpp"
 #include "relpos/numbers.hpp"
 
 namespace relpos {

@@ -1,4 +1,4 @@
-#include "core/roots.hpp"
+#include "algebra/roots.hpp"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Polynomial.h>
@@ -13,9 +13,9 @@
 #include <cmath>
 #include <utility>
 
-#include "core/flint_thread.hpp"
-#include "core/small_factor.hpp"
-#include "core/sturm_habicht_quartic.hpp"
+#include "algebra/flint_thread.hpp"
+#include "algebra/small_factor.hpp"
+#include "algebra/sturm_habicht_quartic.hpp"
 
 namespace relpos {
 namespace {
@@ -504,7 +504,7 @@ std::optional<RootFacts> subresultant_root_facts(const Quartic<Integer>& f, cons
     const int ms = multiplicity_in(sq, x.x);
     const int sign = CGAL::sign(x.x);
     (sign < 0 ? r.negative : r.positive) += 1;
-    if (x.mult - ms >= 2) {  // math.md section 3: mult_f - mult_s >= 2
+    if (x.mult - ms >= 2) {  // math.md §3: mult_f - mult_s >= 2
       (sign < 0 ? r.tangent_negative : r.tangent_positive) += 1;
       tangent = true;
     }

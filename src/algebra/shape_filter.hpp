@@ -1,4 +1,4 @@
-// The shape of a quadric given as 16 finite doubles, decided as a filtered predicate (issue 12):
+// The shape of a quadric given as 16 finite doubles, decided as a filtered predicate:
 // interval arithmetic certifies the signs of the minors that classify_quadric reads exactly, and the
 // one exact zero a paraboloid needs (det Q3 = 0) is tested on floating-point expansions (Shewchuk:
 // error-free products and sums), so the whole test runs without GMP and without heap allocation.
@@ -13,7 +13,8 @@
 #include <cmath>
 #include <optional>
 
-#include "filters/rounding.hpp"
+#include "algebra/cramer.hpp"
+#include "algebra/rounding.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos::shape_filter {
@@ -53,9 +54,7 @@ T det4(const M& d) {
 
 template <class T, class M>
 T det3(const M& d) {
-  const auto m = entries<T>(d);
-  return m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) - m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
-         m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
+  return detail::det3<T>(entries<T>(d));
 }
 
 /// Magnitudes for a semi-static error bound: a formula evaluated on |entries| with every

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <utility>
 
-#include "core/shape_filter.hpp"
-#include "forms/forms.hpp"
+#include "algebra/forms.hpp"
+#include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos {

@@ -9,36 +9,20 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "algebra/forms.hpp"
+#include "algebra/rounding.hpp"
+#include "algebra/smallness.hpp"
+#include "algebra/sturm.hpp"
 #include "anysize/exact.hpp"
 #include "anysize/gap.hpp"
 #include "certificate/build.hpp"
-#include "core/smallness.hpp"
-#include "core/sturm.hpp"
 #include "filters/multiple_roots.hpp"
 #include "filters/pooled_integer.hpp"
-#include "filters/rounding.hpp"
 #include "filters/running_bound.hpp"
 #include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"
-#include "forms/forms.hpp"
 
 namespace relpos {
-
-std::string to_string(Position p) {
-  switch (p) {
-    case Position::I:
-      return "I";
-    case Position::TI:
-      return "TI";
-    case Position::C:
-      return "C";
-    case Position::TE:
-      return "TE";
-    case Position::E:
-      return "E";
-  }
-  throw std::logic_error("internal error: to_string: not a Position");
-}
 
 std::string describe(Rule r) {
   switch (r) {
@@ -102,11 +86,11 @@ std::string to_string(Stage s) {
 
 namespace {
 
-/// The classification (math.md sections 3, 6 and 8), written once for every stage. Reads the root
+/// The classification (math.md §3, §6 and §8), written once for every stage. Reads the root
 /// facts of v and its rho comparison; writes position, contact and rule. Leaves rule None (the
 /// position undecided) when the facts do not suffice: a pair that is not small with four real
-/// negative roots needs roots_above_lambda_s (section 8), and a multiple root outside the proven
-/// small-pair table needs the exact facts of section 8 (decide_any_size).
+/// negative roots needs roots_above_lambda_s (math.md §8), and a multiple root outside the proven
+/// small-pair table needs the exact facts of math.md §8 (decide_any_size).
 void decide(Verdict& v) {
   v.small = v.rho_vs_one <= 0;
   const int tangencies = v.tangent_negative + v.tangent_positive;
@@ -119,22 +103,22 @@ void decide(Verdict& v) {
   v.contact = -1;
   const bool square_free = tangencies == 0 && v.nonreal_multiple == 0 && v.sign_disc_f != 0;
   if (square_free) {
-    // f has >= 2 real roots at or below lambda_s (section 8); the other two decide, for any size.
+    // f has >= 2 real roots at or below lambda_s (math.md §8); the other two decide, for any size.
     if (v.nonreal_roots == 2 && v.positive_roots == 0) return set(Position::C, 1, Rule::NonRealPairCrossing);
     if (v.nonreal_roots == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
     if (v.nonreal_roots == 0 && v.positive_roots == 0) {
-      if (v.small) return set(Position::I, 0, Rule::AllRootsNegative);  // section 3, proven for small pairs
+      if (v.small) return set(Position::I, 0, Rule::AllRootsNegative);  // math.md §3, proven for small pairs
       if (v.roots_above_lambda_s == 1) return set(Position::I, 0, Rule::RootsAboveLambdaS);
       if (v.roots_above_lambda_s == 0) return set(Position::C, 1, Rule::NoRootAboveLambdaS);
     }
     return;  // undecided: the gap test, or a pattern the theorem excludes (decide_any_size reports it)
   }
-  if (v.nonreal_multiple == 0 && v.nonreal_roots == 0) {  // any size (math.md section 6, Wang-Wang-Kim)
+  if (v.nonreal_multiple == 0 && v.nonreal_roots == 0) {  // any size (math.md §6, Wang-Wang-Kim)
     if (tangencies == 1 && v.tangent_positive == 1) return set(Position::TE, 1, Rule::PositiveMultipleRoot);
     if (tangencies == 0 && v.positive_roots == 2) return set(Position::E, 0, Rule::TwoPositiveRoots);
   }
-  if (!v.small || v.nonreal_multiple > 0) return;  // section 8, exactly (decide_any_size)
-  // Small pairs with a multiple root: the rest of the table of math.md section 3.
+  if (!v.small || v.nonreal_multiple > 0) return;  // math.md §8, exactly (decide_any_size)
+  // Small pairs with a multiple root: the rest of the table of math.md §3.
   if (tangencies == 0 && v.nonreal_roots == 2 && v.positive_roots == 0)
     return set(Position::C, 1, Rule::NonRealPairCrossing);
   if (tangencies == 1 && v.tangent_negative == 1 && v.nonreal_roots == 0 && v.positive_roots == 0)
@@ -382,7 +366,7 @@ void settle_gap(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdic
 }
 
 /// A stage certified the root counts: finish the decision (the gap test when it is needed). False
-/// when the exact facts of section 8 are needed (multiple roots outside the small-pair table).
+/// when the exact facts of math.md §8 are needed (multiple roots outside the small-pair table).
 bool finish(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v, std::optional<ExactData>& exact) {
   if (decided(v)) return true;
   if (!needs_gap(v)) return false;
@@ -462,7 +446,7 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
   }
   decide_from_facts(x, *compare_rho_with_one(exact->f, exact->s), v);  // exact: certain
   if (!decided(v) && needs_gap(v)) settle_gap(e, p, false, v, exact);
-  if (!decided(v)) decide_any_size(fi, si, v);  // math.md section 8: every pair gets an answer
+  if (!decided(v)) decide_any_size(fi, si, v);  // math.md §8: every pair gets an answer
   return v;
 }
 

@@ -1,5 +1,5 @@
 // Root counting for the characteristic quartic from the signs of its Sturm-Habicht sequence
-// (math.md section 3: "count real, negative and positive roots with Sturm (or Sturm-Habicht)
+// (math.md §4: "count real, negative and positive roots with Sturm (or Sturm-Habicht)
 // sequences"). The sequence is generated and verified by tools/gen_sturm_habicht.py
 // (sturm_habicht_quartic.hpp) and evaluated generically over NT.
 //
@@ -19,8 +19,8 @@
 #include <array>
 #include <optional>
 
-#include "core/pencil.hpp"
-#include "core/sturm_habicht_quartic.hpp"
+#include "algebra/pencil.hpp"
+#include "algebra/sturm_habicht_quartic.hpp"
 
 namespace relpos {
 
@@ -65,6 +65,14 @@ struct QuarticSigns {
   USign g2[3] = {USign::indeterminate(), USign::indeterminate(), USign::indeterminate()};
   USign g1[2] = {USign::indeterminate(), USign::indeterminate()};
   USign g0 = USign::indeterminate();
+};
+
+/// Every sign the decision uses (root counting and smallness): what every filter stage
+/// certifies and the decision table reads.
+struct DecisionSigns {
+  QuarticSigns quartic;
+  USign vertex = USign::indeterminate();
+  USign graeffe = USign::indeterminate();
 };
 
 template <class NT>

@@ -1,4 +1,4 @@
-#include "forms/forms.hpp"
+#include "algebra/forms.hpp"
 
 #include <gmp.h>
 

@@ -1,0 +1,139 @@
+# Type stub of the package relpos (doc/python.md): the compiled classes and the Python layer.
+from decimal import Decimal
+from fractions import Fraction
+from typing import Any, Literal, Mapping, Optional, Sequence, Union
+
+import numpy
+
+from . import distributed as distributed
+
+__version__: str
+
+Number = Union[int, float, Fraction, Decimal, numpy.number, str]
+Vector3 = Union[Sequence[Number], numpy.ndarray]
+Matrix = Union[Sequence[Sequence[Number]], numpy.ndarray]
+Description = Union[Matrix, Mapping[str, Any]]
+TimePolynomial = Union[Sequence[Number], Number]
+Pivot = Union[Literal["origin", "center"], Vector3]
+
+POSITION_NAMES: tuple[str, str, str, str, str]
+STAGE_NAMES: tuple[str, ...]
+POSITION_MEANINGS: dict[str, str]
+INVALID: int
+
+class _Quadric:
+    def matrix(self) -> list[list[Fraction]]: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+
+class Ellipsoid(_Quadric):
+    """A validated ellipsoid (sign-normalized: inside is negative)."""
+
+    def __init__(self, description: Description) -> None: ...
+    @staticmethod
+    def sphere(center: Vector3, radius: Number) -> Ellipsoid: ...
+    @staticmethod
+    def from_axes(
+        center: Vector3, axes: Vector3, rotation: Union[Sequence[Number], Matrix] = (1, 0, 0, 0)
+    ) -> Ellipsoid: ...
+    @staticmethod
+    def from_map(center: Vector3, linear: Matrix) -> Ellipsoid: ...
+    @staticmethod
+    def from_coefficients(coefficients: Sequence[Number]) -> Ellipsoid: ...
+
+class Paraboloid(_Quadric):
+    """A validated elliptic paraboloid (inside the cup is negative)."""
+
+    def __init__(self, description: Description) -> None: ...
+    @staticmethod
+    def standard(vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = (1, 0, 0, 0)) -> Paraboloid: ...
+    @staticmethod
+    def from_map(linear: Matrix, translation: Vector3) -> Paraboloid: ...
+    @staticmethod
+    def from_coefficients(coefficients: Sequence[Number]) -> Paraboloid: ...
+
+class Certificate:
+    def __init__(self, fields: Mapping[str, Any]) -> None: ...
+    @property
+    def kind(self) -> Literal["definite", "tangent", "hard-tangent", "crossing", "none"]: ...
+    def to_json(self) -> dict[str, Any]: ...
+    def as_dict(self) -> dict[str, Any]: ...
+
+class CertificateError(ValueError): ...
+
+class Classification:
+    def __init__(self, fields: Mapping[str, Any]) -> None: ...
+    position: str
+    small: bool
+    contact: bool
+    rule: str
+    stage: str
+    rho_vs_one: str
+    rho: Optional[str]
+    @property
+    def certificate(self) -> Optional[Certificate]: ...
+    def as_dict(self) -> dict[str, Any]: ...
+
+class ContactAnswer:
+    def __init__(self, fields: Mapping[str, Any]) -> None: ...
+    contact: str
+    position: Optional[str]
+    rule: Optional[str]
+    decided_by: str
+    def as_dict(self) -> dict[str, Any]: ...
+
+class SceneResult:
+    def __init__(self, positions: numpy.ndarray, contact: numpy.ndarray, stages: numpy.ndarray, threads: int) -> None: ...
+    positions: numpy.ndarray
+    contact: numpy.ndarray
+    stages: numpy.ndarray
+    threads: int
+    def names(self) -> numpy.ndarray: ...
+    def counts(self) -> dict[str, int]: ...
+    def stage_counts(self) -> dict[str, int]: ...
+
+class Instant:
+    @property
+    def exact(self) -> Optional[Fraction]: ...
+    @property
+    def interval(self) -> tuple[Fraction, Fraction]: ...
+    @property
+    def polynomial(self) -> list[int]: ...
+    def decimal(self, digits: int = 12) -> str: ...
+    def __float__(self) -> float: ...
+
+class FirstContact:
+    kind: Literal["contact", "none", "not-exterior-at-start"]
+    start_position: str
+    time: Optional[Instant]
+    position: str
+    how: str
+
+class Timeline:
+    instants: list[dict[str, Any]]
+    intervals: list[dict[str, Any]]
+    spans: list[dict[str, Any]]
+    changes: list[dict[str, Any]]
+    def position_at(self, t: Number) -> str: ...
+
+def classify(e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] = "full") -> Classification: ...
+def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None: ...
+def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer: ...
+def decide_positions(
+    E: numpy.ndarray, P: numpy.ndarray, threads: int = 0, errors: Literal["raise", "code"] = "raise"
+) -> numpy.ndarray: ...
+def scene(
+    p: Union[Paraboloid, Description],
+    bodies: Union[numpy.ndarray, Sequence[Ellipsoid]],
+    threads: int = 0,
+    early_outs: bool = True,
+) -> SceneResult: ...
+def first_contact(
+    e: Ellipsoid, p: Paraboloid, t0: Number, t1: Number, translation: Optional[Sequence[TimePolynomial]] = None,
+    rotation: Optional[Sequence[TimePolynomial]] = None, pivot: Pivot = "origin",
+) -> FirstContact: ...
+def timeline(
+    e: Ellipsoid, p: Paraboloid, t0: Number, t1: Number, translation: Optional[Sequence[TimePolynomial]] = None,
+    rotation: Optional[Sequence[TimePolynomial]] = None, pivot: Pivot = "origin",
+) -> Timeline: ...
+def plot(e: Ellipsoid, p: Paraboloid, ax: Any = None, **kwargs: Any) -> Any: ...
