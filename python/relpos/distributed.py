@@ -164,22 +164,24 @@ def _check_inputs(paths, out_dir):
 
 
 def batch(paths, out_dir, client=None, evidence="full", numbers="exact", contact_only=False, digits=12,
-          max_line_bytes=64 << 20, threads=1, block_bytes=None):
+          max_line_bytes=None, threads=1, block_bytes=None):
     """Answer JSON Lines files on a Dask cluster as `relpos batch` does; returns the written paths.
 
     paths: one input file (str or os.PathLike) or a list of them. out_dir: out_dir/<file name>
     receives the answers of each file, byte for byte the output of `relpos batch FILE` with the same
     options (created if missing; it must not hold an input, and two inputs must not share a name).
     evidence ("full" | "minimal"), numbers ("exact" | "double"), contact_only, digits,
-    max_line_bytes: the options --evidence, --numbers, --contact-only, --digits, --max-line-bytes.
+    max_line_bytes (None: the CLI's default): the options --evidence, --numbers, --contact-only,
+    --digits, --max-line-bytes.
     client: a distributed.Client; None uses the current client (distributed.get_client()) or starts
     a LocalCluster for this call. threads: library threads per task. block_bytes: bytes of a file
     per task (default: about 8 blocks per worker thread, 256 KiB to 64 MiB).
     Returns the output paths in the order of `paths` (a list, also for one path). Raises the first
     failing task's error, after cancelling the others and removing every file the call created.
     """
-    options = dict(evidence=evidence, numbers=numbers, contact_only=contact_only, digits=digits,
-                   max_line_bytes=max_line_bytes, threads=threads)
+    options = dict(evidence=evidence, numbers=numbers, contact_only=contact_only, digits=digits, threads=threads)
+    if max_line_bytes is not None:  # else the CLI's default
+        options["max_line_bytes"] = max_line_bytes
     _relpos._batch_block(b"", **options)  # the options' errors, before anything is submitted
     paths, out_dir, outs = _check_inputs(paths, out_dir)
     if block_bytes is not None and block_bytes < 1:
