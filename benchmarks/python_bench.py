@@ -92,8 +92,8 @@ def dask_bench(args):
         expected = subprocess.run([relpos._cli.find_cli(), "batch", path, "--threads", "1"], stdout=subprocess.PIPE,
                                   check=True).stdout
         cli_time = time.perf_counter() - t
-        print("regime file: %d lines, %.1f MB; relpos batch --threads 1: %.2f s"
-              % (args.dask_lines, os.path.getsize(path) / 1e6, cli_time))
+        print("regime file: %d lines, %.1f MB; relpos batch --threads 1: %.2f s, %.0f MB of answers"
+              % (args.dask_lines, os.path.getsize(path) / 1e6, cli_time, len(expected) / 1e6))
         medians = {}
         for workers in (1, 2):
             with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
