@@ -1,13 +1,13 @@
 #!/usr/bin/python3
 """Speed of the Python package (doc/python.md): decide_positions on random float64 pairs, and
-relpos.distributed.batch on 4 JSON Lines files with 1 and with 2 Dask workers.
+relpos.distributed.batch on one file of the paper's regime (benchmarks/batch_bench.py) with 1 and with
+2 Dask worker processes.
 
     PYTHONPATH=build/python RELPOS_CLI=build/cli/relpos /usr/bin/python3 benchmarks/python_bench.py \
-        [--pairs 20000] [--lines 5000] [--skip-dask]
+        [--pairs 20000] [--dask-lines 200000] [--runs 3] [--skip-dask] [--skip-decide]
 """
 
 import argparse
-import json
 import os
 import tempfile
 import time
@@ -34,7 +34,7 @@ def random_pairs(n, seed=2024):
     P[:, 0, 0] = 1 / (a * a)
     P[:, 1, 1] = 1 / (b * b)
     P[:, 2, 3] = P[:, 3, 2] = -0.5
-    return E, P, (x, y, z, r, a, b)
+    return E, P
 
 
 def best_of(k, f):
@@ -49,14 +49,13 @@ def best_of(k, f):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--pairs", type=int, default=20000)
-    ap.add_argument("--lines", type=int, default=5000)
+    ap.add_argument("--dask-lines", type=int, default=200000, help="lines of the Dask regime file (default 200000)")
+    ap.add_argument("--runs", type=int, default=3, help="Dask runs per worker count; the median is kept (default 3)")
     ap.add_argument("--skip-dask", action="store_true")
     ap.add_argument("--skip-decide", action="store_true")
-    ap.add_argument("--decimals", type=int, default=3,
-                    help="digits after the point of the JSON numbers of the Dask files (default 3; 0: repr of the doubles)")
     args = ap.parse_args()
 
-    E, P, params = random_pairs(args.pairs)
+    E, P = random_pairs(args.pairs)
     shared = P[0]
     for label, p in () if args.skip_decide else (("own P per pair", P), ("one shared P", shared)):
         for threads in (1, 2):
@@ -69,34 +68,50 @@ def main():
 
     if args.skip_dask:
         return
+    dask_bench(args)
+
+
+def dask_bench(args):
+    """relpos.distributed.batch on one regime file (batch_bench.py's generator) with 1 and with 2
+    worker processes (one thread each, one library thread per task), against `relpos batch`."""
+    import statistics
+    import subprocess
+    import sys
+
     import distributed
 
     import relpos.distributed as relpos_distributed
 
-    x, y, z, r, a, b = params
-    num = repr if args.decimals == 0 else (lambda v: "%.*f" % (args.decimals, v))
-    r = numpy.maximum(r, 10.0**-args.decimals) if args.decimals else r
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from batch_bench import write_regime
+
     with tempfile.TemporaryDirectory() as tmp:
-        paths = []
-        for f in range(4):
-            path = os.path.join(tmp, "part-%d.jsonl" % f)
-            with open(path, "w") as out:
-                for i in range(f * args.lines, (f + 1) * args.lines):
-                    k = i % args.pairs
-                    line = {"id": i, "ellipsoid": {"sphere": {"center": [num(x[k]), num(y[k]), num(z[k])],
-                                                              "radius": num(r[k])}},
-                            "paraboloid": {"vertex": [0, 0, 0], "a": num(a[k]), "b": num(b[k])}}
-                    out.write(json.dumps(line) + "\n")
-            paths.append(path)
-        timings = {}
+        path = os.path.join(tmp, "regime.jsonl")
+        write_regime(path, args.dask_lines)
+        t = time.perf_counter()
+        expected = subprocess.run([relpos._cli.find_cli(), "batch", path, "--threads", "1"], stdout=subprocess.PIPE,
+                                  check=True).stdout
+        cli_time = time.perf_counter() - t
+        print("regime file: %d lines, %.1f MB; relpos batch --threads 1: %.2f s, %.0f MB of answers"
+              % (args.dask_lines, os.path.getsize(path) / 1e6, cli_time, len(expected) / 1e6))
+        medians = {}
         for workers in (1, 2):
-            with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=False,
+            with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                           dashboard_address=None) as cluster, distributed.Client(cluster) as client:
-                t = time.perf_counter()
-                relpos_distributed.batch(paths, os.path.join(tmp, "out-%d" % workers), client=client)
-                timings[workers] = time.perf_counter() - t
-            print("distributed.batch 4 files x %d lines, %d worker(s): %.2f s" % (args.lines, workers, timings[workers]))
-        print("speed-up 1 -> 2 workers: %.2fx" % (timings[1] / timings[2]))
+                times = []
+                for run in range(args.runs):
+                    out = os.path.join(tmp, "out-%d-%d" % (workers, run))
+                    t = time.perf_counter()
+                    written = relpos_distributed.batch(path, out, client=client, threads=1)
+                    times.append(time.perf_counter() - t)
+                    with open(written[0], "rb") as f:
+                        if f.read() != expected:
+                            raise SystemExit("distributed.batch output differs from relpos batch")
+                    os.unlink(written[0])
+            medians[workers] = statistics.median(times)
+            print("distributed.batch, %d worker process(es): median %.2f s of %s; output identical to relpos batch"
+                  % (workers, medians[workers], ", ".join("%.2f" % x for x in times)))
+        print("speed-up 1 -> 2 workers: %.2fx (load average now %.1f)" % (medians[1] / medians[2], os.getloadavg()[0]))
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "algebra/polynomial_text.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "options.hpp"
@@ -102,16 +103,7 @@ std::array<relpos::TimePolynomial, N> polynomials(const std::string& text, const
 }
 
 std::string poly_text(const relpos::TimePolynomial& p) {
-  std::string out;
-  for (std::size_t k = p.size(); k-- > 0;) {
-    if (p[k] == 0) continue;
-    const bool neg = p[k] < 0;
-    const Rational mag = neg ? Rational(-p[k]) : p[k];
-    out += out.empty() ? (neg ? "-" : "") : (neg ? " - " : " + ");
-    if (mag != 1 || k == 0) out += relpos::to_string(mag) + (k > 0 ? "*" : "");
-    if (k > 0) out += k > 1 ? "t^" + std::to_string(k) : "t";
-  }
-  return out.empty() ? "0" : out;
+  return relpos::detail::polynomial_text(p.data(), p.size(), "t");
 }
 
 Json poly_json(const relpos::TimePolynomial& p) {

@@ -70,6 +70,7 @@ struct built_caster : py::detail::type_caster_base<T> {
 // Binding functions of the module's files (called from PYBIND11_MODULE in relpos_module.cpp).
 void bind_decide(py::module_& m);  // decide_positions, scene (decide.cpp)
 void bind_motion(py::module_& m);  // first contact, timeline (motion.cpp)
+void bind_batch(py::module_& m);   // _batch_block, the lines of `relpos batch` (batch_binding.cpp)
 
 }  // namespace relpos_python
 

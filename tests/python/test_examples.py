@@ -1,6 +1,6 @@
 """Every example of examples/python/ runs and prints what its pairs are known to be, and every
-```python block of doc/python.md runs (the Dask section's need a cluster: test_relpos.py runs
-relpos.distributed on a LocalCluster instead)."""
+```python block of doc/python.md runs (the Dask section's need a cluster: test_distributed.py runs
+them on a LocalCluster)."""
 
 import os
 import re
@@ -22,6 +22,7 @@ EXPECTED = {
     "scene.py": ["bodies: 2001", "last body: TI"],
     "motion.py": ["first contact: contact at t = 1.4142135623730950488 position TE", "E -> TE -> C",
                   "C -> TI -> I", "position at t = 3/2: C"],
+    "dask_batch.py": ["answers/mixed.jsonl: one answer per input line"],
     "certificates.py": ["I definite", "TI tangent", "C crossing", "TE tangent", "E definite", "refused: I:",
                         "contact: none"],
 }

@@ -8,7 +8,6 @@ import io
 import json
 import os
 import subprocess
-import time
 from fractions import Fraction
 
 import numpy
@@ -317,37 +316,6 @@ def test_decide_positions_bad_input():
     with pytest.raises(TypeError, match="dtype"):
         relpos.decide_positions(E.astype(complex), P)
     assert relpos.decide_positions(numpy.empty((0, 4, 4)), paraboloid_doubles(1, 1)).shape == (0,)
-
-
-# ------------------------------------------------------------------------------------------------
-# distributed.batch
-# ------------------------------------------------------------------------------------------------
-
-
-def test_distributed_batch_equals_cli(tmp_path):
-    distributed = pytest.importorskip("distributed")
-    import relpos.distributed
-
-    lines = open(EXAMPLES, encoding="utf-8").read().splitlines()
-    inputs = []
-    for k in range(4):
-        path = tmp_path / "in" / ("part-%d.jsonl" % k)
-        path.parent.mkdir(exist_ok=True)
-        path.write_text("\n".join(lines[k::4]) + "\n", encoding="utf-8")
-        inputs.append(str(path))
-    start = time.monotonic()
-    with distributed.LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
-    ) as cluster, distributed.Client(cluster) as client:
-        written = relpos.distributed.batch(inputs, tmp_path / "out", client=client)
-    assert time.monotonic() - start < 60
-    assert written == [str(tmp_path / "out" / os.path.basename(p)) for p in inputs]
-    for src, out in zip(inputs, written):
-        expected = subprocess.run([cli(), "batch", src], stdout=subprocess.PIPE, check=True).stdout
-        with open(out, "rb") as f:
-            assert f.read() == expected
-    with pytest.raises(ValueError, match="distinct names"):
-        relpos.distributed.batch([inputs[0], inputs[0]], tmp_path / "out2", client=object())
 
 
 # ------------------------------------------------------------------------------------------------
