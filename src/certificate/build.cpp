@@ -457,10 +457,13 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// exactly by `consider`): bisection on lambda for e(x(lambda)) = 0, lambda > 0 for the inside
 /// point and lambda in (lambda_s, 0) for the outside one; the point found, and the same point
 /// pulled towards the centre (exact rationals), are tried. Most crossings end here, without the
-/// exact bisection on rationals.
+/// exact bisection on rationals. Each bisection's last bracket (good end first: e(x) <= 0 there in
+/// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
+/// exact search when the point itself is beyond doubles.
+using DoubleBracket = std::optional<std::pair<double, double>>;
 void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& lambda_s, const V3& centre,
                          const std::optional<V3>& inside, const std::optional<V3>& outside,
-                         const std::function<void(const V3&)>& consider) {
+                         const std::function<void(const V3&)>& consider, DoubleBracket (&brackets)[2]) {
   double E[4][4], P[4][4];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
@@ -521,7 +524,7 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
   // the Illinois modification (the end that stays has its value halved), bisection when the
   // interpolated point is not strictly inside; down to a bracket of one or two doubles, as plain
   // bisection would, in a fraction of the steps.
-  auto bisect = [&](double lo, double hi, const std::optional<V3>& wanted) {
+  auto bisect = [&](double lo, double hi, const std::optional<V3>& wanted, DoubleBracket& bracket) {
     double x[3], best[3];
     bool have = false;
     double glo = 0, ghi = 0;
@@ -551,7 +554,10 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
         side = 1;
       }
     }
-    if (have) try_point(best, wanted);
+    if (have) {
+      bracket.emplace(lo, hi);
+      try_point(best, wanted);
+    }
   };
   double x[3];
   if (!inside) {
@@ -560,7 +566,7 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
       if (!std::isfinite(hi)) return;
       if (x_of(hi, x) && e_of(x) > 0) break;
     }
-    bisect(0, hi, inside);
+    bisect(0, hi, inside, brackets[0]);
   }
   if (!outside) {
     // lambda_s from above: the upper end of its stored enclosure (a search needs no more), else a
@@ -572,7 +578,7 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
       // approach lambda_s from 0: the first lambda with e(x(lambda)) > 0
       for (double l = ls / 2, step = ls / 4; l > ls && l < 0; l += step, step /= 2) {
         if (x_of(l, x) && e_of(x) > 0) {
-          bisect(0, l, outside);
+          bisect(0, l, outside, brackets[1]);
           break;
         }
         if (step > ls * 1e-15) break;  // step is negative: stop once it is negligible
@@ -697,11 +703,11 @@ Rational floor_to(const Rational& x, long e) {
 /// width |bad - good| 2^-k around it: when the probes bracket the sign change, the bracket becomes
 /// that neighbourhood and k doubles (quadratic convergence at a simple root), otherwise k halves
 /// and a bisection keeps the bracket at least halving. A root wanted to b bits costs O(log b)
-/// rounds near a simple root, and never more than b.
+/// rounds near a simple root, and never more than b. `k` is the first round's: a bracket already
+/// narrow (from doubles) starts with long steps.
 template <class Accept>
-bool refine_root(const IntegerPoly& q, Rational good, Rational bad, Accept accept, std::size_t budget) {
+bool refine_root(const IntegerPoly& q, Rational good, Rational bad, Accept accept, std::size_t budget, long k = 2) {
   if (accept(good)) return true;
-  long k = 2;
   auto inside = [&](const Rational& x) { return good < bad ? good < x && x < bad : bad < x && x < good; };
   auto step = [&](const Rational& x) {  // moves one end to x (inside the bracket); true if `good` moved
     if (q.sign(x) <= 0) {
@@ -736,6 +742,31 @@ bool refine_root(const IntegerPoly& q, Rational good, Rational bad, Accept accep
   return false;
 }
 
+/// What refine_root accepts on the curve: a good end lambda where p(x(lambda)) has the sign `want`
+/// gives its point to `consider`; true once `found` holds a point.
+auto curve_accept(const Pair& pr, const Secular& sec, int want, const std::optional<V3>& found,
+                  const std::function<void(const V3&)>& consider) {
+  return [&pr, &sec, want, &found, &consider](const Rational& l) {
+    if (sec.p.sign(l) == want)
+      if (const auto x = pr.x_of(l)) consider(*x);
+    return found.has_value();
+  };
+}
+
+/// The exact search for the point with p of sign `want` (-1: min side, lambda > 0; 1: max side,
+/// lambda in (lambda_s, 0)) from the double search's last bracket of lambda*, its ends taken exactly
+/// and checked (doubles only suggested them). Steps start long: the bracket is a double's width,
+/// where Newton's step is good to about twice as many bits. False when the bracket does not hold.
+bool refine_from_doubles(const Pair& pr, const Secular& sec, const DoubleBracket& bracket, int want,
+                         std::optional<V3>& found, const std::function<void(const V3&)>& consider) {
+  if (!bracket) return false;
+  const Rational good = exact_rational(bracket->first), bad = exact_rational(bracket->second);
+  // good may be 0 (x(0) is the centre); bad strictly on the side searched.
+  const bool sides = want < 0 ? good >= 0 && bad > 0 : good <= 0 && bad < 0 && pr.ls.compare(bad) > 0;
+  if (!sides || sec.e.sign(good) > 0 || sec.e.sign(bad) <= 0) return false;
+  return refine_root(sec.e, good, bad, curve_accept(pr, sec, want, found, consider), sec.budget, 32);
+}
+
 /// The point of the solid with p < 0 from the min side (lambda > 0). x(0) is the centre; else the
 /// minimiser x(lambda*) lies on the surface, lambda* > 0 the root of e(x(lambda)). Its bracket is
 /// found on powers of two (galloping exponents: a body of size 2^-k costs O(log k) steps to reach
@@ -764,14 +795,8 @@ void min_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
     const long mid = lo_exp + (hi_exp - lo_exp) / 2;
     (sec.e.sign(power_of_two(mid)) <= 0 ? lo_exp : hi_exp) = mid;
   }
-  refine_root(
-      sec.e, power_of_two(lo_exp), power_of_two(hi_exp),
-      [&](const Rational& l) {
-        if (sec.p.sign(l) < 0)
-          if (const auto x = pr.x_of(l)) consider(*x);
-        return found.has_value();
-      },
-      sec.budget);
+  refine_root(sec.e, power_of_two(lo_exp), power_of_two(hi_exp), curve_accept(pr, sec, -1, found, consider),
+              sec.budget);
 }
 
 /// A rational in (lambda_s, 0) within about 2^-bits of lambda_s (relative to lambda_s, or to the
@@ -852,14 +877,7 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
     kernel_walk(pr, *hard, bits, consider);
   }
   if (!lo) return;
-  refine_root(
-      sec.e, Rational(0), *lo,
-      [&](const Rational& l) {
-        if (sec.p.sign(l) > 0)
-          if (const auto x = pr.x_of(l)) consider(*x);
-        return found.has_value();
-      },
-      sec.budget);
+  refine_root(sec.e, Rational(0), *lo, curve_accept(pr, sec, 1, found, consider), sec.budget);
 }
 
 /// Whether the body is below 2^-20 of its distance to the origin (or its size is not a finite
@@ -903,6 +921,7 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
+  DoubleBracket brackets[2];
   const IntegerForm ez(pr.E), pz(pr.P);  // exact signs of e and p at the candidates
   std::function<void(const V3&)> consider = [&](const V3& x) {
     const IntegerForm::Point xz(x);
@@ -917,7 +936,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> pull = approximate_centre(pr.E);
   if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(pr.E, *pull)) {
     consider(*pull);
-    double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider);
+    double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider, brackets);
   } else if (const std::optional<V3> ctr = centre_of(pr.E)) {
     // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
     // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
@@ -930,13 +949,16 @@ void crossing_points(const Pair& pr, Certificate& c) {
       for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
       consider(x);
     };
-    double_curve_search(in_frame(pr.E, at, scale), in_frame(pr.P, at, scale), pr.ls, V3{}, inside, outside, mapped);
+    double_curve_search(in_frame(pr.E, at, scale), in_frame(pr.P, at, scale), pr.ls, V3{}, inside, outside, mapped,
+                        brackets);
   }
   // What the double search missed, the exact optimisers give (they always exist in a crossing).
   if (!inside || !outside) {
     const Secular sec(pr);
-    if (!inside) min_side_point(pr, sec, inside, consider);
-    if (!outside) max_side_point(pr, sec, outside, consider);
+    if (!inside && !refine_from_doubles(pr, sec, brackets[0], -1, inside, consider))
+      min_side_point(pr, sec, inside, consider);
+    if (!outside && !refine_from_doubles(pr, sec, brackets[1], 1, outside, consider))
+      max_side_point(pr, sec, outside, consider);
   }
   if (!inside || !outside)
     throw internal_error(std::string("no point of the solid ellipsoid with p ") + (inside ? "> 0" : "< 0") +
