@@ -1,5 +1,6 @@
 #include "certificate/build.hpp"
 
+#include <CGAL/Polynomial.h>
 #include <gmp.h>
 
 #include <array>
@@ -147,6 +148,12 @@ class IntegerPoly {
       mpq_div_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(-e));
     return out;
   }
+  /// From integer coefficients (constant first), kept as they are.
+  explicit IntegerPoly(const CGAL::Polynomial<Integer>& q) : z_(q.begin(), q.end()) {
+    for (const Integer& c : z_) bits_ = std::max(bits_, mpz_sizeinbase(c.mpz(), 2));
+  }
+  /// The integer coefficients, constant first.
+  CGAL::Polynomial<Integer> polynomial() const { return CGAL::Polynomial<Integer>(z_.begin(), z_.end()); }
   std::size_t degree() const { return z_.empty() ? 0 : z_.size() - 1; }
   std::size_t bits() const { return bits_; }  ///< the largest coefficient's bit length
 
@@ -628,20 +635,6 @@ std::optional<V3> approximate_centre(const Matrix4& e) {
   return out;
 }
 
-Poly product(const Poly& a, const Poly& b) {
-  if (a.empty() || b.empty()) return {};
-  Poly out(a.size() + b.size() - 1, Rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
-  return anysize::trimmed(std::move(out));
-}
-
-Poly difference(Poly a, const Poly& b) {
-  if (a.size() < b.size()) a.resize(b.size(), Rational(0));
-  for (std::size_t i = 0; i < b.size(); ++i) a[i] -= b[i];
-  return anysize::trimmed(std::move(a));
-}
-
 std::logic_error internal_error(const std::string& what) {
   return std::logic_error("relpos internal error: " + what + " (please report the input)");
 }
@@ -652,7 +645,8 @@ std::logic_error internal_error(const std::string& what) {
 ///   p(x(lambda)) s^2 = f' s - f s'   and   e(x(lambda)) s^2 = f s - lambda (f' s - f s').
 /// e(x(lambda)) increases on (0, oo) and decreases on (lambda_s, 0) while p(x(lambda)) decreases on
 /// both (f/s is concave): the optimisers of p over the solid are x(lambda*) at the root lambda* of
-/// the second polynomial, or the limit at lambda_s in the hard case.
+/// the second polynomial, or the limit at lambda_s in the hard case. Only their signs are used, so
+/// f and s are taken as positive integer multiples (integer products: no rational canonicalisation).
 struct Secular {
   IntegerPoly e, p;
   /// The most bisection steps or approximation bits a witness may take before the search is
@@ -661,8 +655,10 @@ struct Secular {
   /// so a crossing never needs more than a multiple of the coefficient bits.
   std::size_t budget;
   explicit Secular(const Pair& pr) {
-    const Poly gp = difference(product(anysize::derivative(pr.f), pr.s), product(pr.f, anysize::derivative(pr.s)));
-    const Poly ge = difference(product(pr.f, pr.s), product(Poly{Rational(0), Rational(1)}, gp));
+    using ZPoly = CGAL::Polynomial<Integer>;
+    const ZPoly f = pr.fz.polynomial(), s = IntegerPoly(pr.s).polynomial();
+    const ZPoly gp = CGAL::differentiate(f) * s - f * CGAL::differentiate(s);
+    const ZPoly ge = f * s - ZPoly(Integer(0), Integer(1)) * gp;
     e = IntegerPoly(ge);
     p = IntegerPoly(gp);
     budget = 1024 + 16 * (e.bits() + p.bits() + pr.fz.bits());
