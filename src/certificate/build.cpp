@@ -756,10 +756,18 @@ auto curve_accept(const Pair& pr, const Secular& sec, int want, const std::optio
 bool refine_from_doubles(const Pair& pr, const Secular& sec, const DoubleBracket& bracket, int want,
                          std::optional<V3>& found, const std::function<void(const V3&)>& consider) {
   if (!bracket) return false;
-  const Rational good = exact_rational(bracket->first), bad = exact_rational(bracket->second);
-  // good may be 0 (x(0) is the centre); bad strictly on the side searched.
-  const bool sides = want < 0 ? good >= 0 && bad > 0 : good <= 0 && bad < 0 && pr.ls.compare(bad) > 0;
-  if (!sides || sec.e.sign(good) > 0 || sec.e.sign(bad) <= 0) return false;
+  Rational good = exact_rational(bracket->first), bad = exact_rational(bracket->second);
+  // At a double's width the doubles' signs are rounding noise: each end moves away from the other
+  // by growing multiples of the width until its exact sign holds.
+  const Rational width = bad - good;  // signed: from good towards bad
+  Rational step = width;
+  for (int i = 0; i < 6 && sec.e.sign(good) > 0; ++i, step *= 256) good -= step;
+  step = width;
+  for (int i = 0; i < 6 && sec.e.sign(bad) <= 0; ++i, step *= 256) bad += step;
+  // good past 0 becomes 0 (x(0) is the centre, e < 0 there); bad strictly on the side searched.
+  if (want < 0 ? good < 0 : good > 0) good = 0;
+  const bool side = want < 0 ? bad > 0 : bad < 0 && pr.ls.compare(bad) > 0;
+  if (!side || sec.e.sign(good) > 0 || sec.e.sign(bad) <= 0) return false;
   return refine_root(sec.e, good, bad, curve_accept(pr, sec, want, found, consider), sec.budget, 32);
 }
 
