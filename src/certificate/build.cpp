@@ -180,6 +180,18 @@ class LazyMatrix {
   mutable const Matrix4* m_ = nullptr;
 };
 
+/// Cramer's rule for [K | r] (3x4, the right-hand side in column 3): the determinant of K, then
+/// those with column 0, 1 and 2 replaced by r. Written once for the exact and the double centre.
+template <class T>
+std::array<T, 4> cramer(const T (&k)[3][4]) {
+  auto det3 = [&](int c0, int c1, int c2) {
+    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
+           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
+           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
+  };
+  return {det3(0, 1, 2), det3(3, 1, 2), det3(0, 3, 2), det3(0, 1, 3)};
+}
+
 /// The pair's blocks (E = [[M, m], [m^T, e0]], P = [[A, a], [a^T, p0]]), f, s and lambda_s.
 struct Pair {
   LazyMatrix<Ellipsoid> E;
@@ -213,28 +225,33 @@ struct Pair {
   Rational e_at(const V3& x) const { return form(E, x); }
   Rational p_at(const V3& x) const { return form(P, x); }
   /// x(lambda) = -(lambda A + M)^{-1} (lambda a + m): the stationary point of lambda p + e (math.md §8);
-  /// nullopt when lambda A + M is singular.
+  /// nullopt when lambda A + M is singular. For lambda = n/d the system times d lp le (E = Ez/le,
+  /// P = Pz/lp) has integer entries n le Pz + d lp Ez: Cramer's rule on integers, one rational
+  /// canonicalisation per coordinate.
   std::optional<V3> x_of(const Rational& l) const {
-    Rational k[3][3], r[3];
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) k[i][j] = l * P(i, j) + E(i, j);
-      r[i] = -(l * P(i, 3) + E(i, 3));
+    if (!forms_) {
+      forms_.emplace();
+      forms_->ez = forms::integer_form(E.get(), forms_->le);
+      forms_->pz = forms::integer_form(P.get(), forms_->lp);
     }
-    const Rational det = k[0][0] * (k[1][1] * k[2][2] - k[1][2] * k[2][1]) -
-                         k[0][1] * (k[1][0] * k[2][2] - k[1][2] * k[2][0]) +
-                         k[0][2] * (k[1][0] * k[2][1] - k[1][1] * k[2][0]);
-    if (det == 0) return std::nullopt;
-    V3 x;
-    for (int c = 0; c < 3; ++c) {  // Cramer's rule
-      Rational m[3][3];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) m[i][j] = j == c ? r[i] : k[i][j];
-      x[c] = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-              m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])) /
-             det;
-    }
-    return x;
+    const Integer pf = l.numerator() * forms_->le, ef = l.denominator() * forms_->lp;
+    Integer k[3][4];  // [lambda A + M | -(lambda a + m)], scaled
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j) {
+        k[i][j] = pf * forms_->pz(i, j) + ef * forms_->ez(i, j);
+        if (j == 3) k[i][j] = -k[i][j];
+      }
+    const std::array<Integer, 4> c = cramer(k);
+    if (c[0] == 0) return std::nullopt;
+    return V3{Rational(c[1], c[0]), Rational(c[2], c[0]), Rational(c[3], c[0])};
   }
+
+ private:
+  struct Forms {  // the integer forms of E and P with their scales, on first use by x_of
+    forms::MatrixOf<Integer> ez, pz;
+    Integer le, lp;
+  };
+  mutable std::optional<Forms> forms_;
 };
 
 /// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
@@ -592,18 +609,6 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
       }
     }
   }
-}
-
-/// Cramer's rule for [K | r] (3x4, the right-hand side in column 3): the determinant of K, then
-/// those with column 0, 1 and 2 replaced by r. Written once for the exact and the double centre.
-template <class T>
-std::array<T, 4> cramer(const T (&k)[3][4]) {
-  auto det3 = [&](int c0, int c1, int c2) {
-    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
-           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
-           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
-  };
-  return {det3(0, 1, 2), det3(3, 1, 2), det3(0, 3, 2), det3(0, 1, 3)};
 }
 
 /// The centre -M^{-1} m of the ellipsoid, by Cramer's rule on E times the lcm of its denominators
