@@ -1,6 +1,6 @@
 #include "certificate/build.hpp"
 
-#include <CGAL/Polynomial.h>
+#include <flint/fmpz_poly.h>
 #include <gmp.h>
 
 #include <array>
@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algebra/flint_thread.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "anysize/exact.hpp"
@@ -148,12 +149,17 @@ class IntegerPoly {
       mpq_div_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(-e));
     return out;
   }
-  /// From integer coefficients (constant first), kept as they are.
-  explicit IntegerPoly(const CGAL::Polynomial<Integer>& q) : z_(q.begin(), q.end()) {
-    for (const Integer& c : z_) bits_ = std::max(bits_, mpz_sizeinbase(c.mpz(), 2));
+  /// From a FLINT polynomial's coefficients, kept as they are.
+  explicit IntegerPoly(const fmpz_poly_t q) : z_(static_cast<std::size_t>(fmpz_poly_length(q))) {
+    for (std::size_t k = 0; k < z_.size(); ++k) {
+      fmpz_get_mpz(z_[k].mpz(), fmpz_poly_get_coeff_ptr(q, static_cast<slong>(k)));
+      bits_ = std::max(bits_, mpz_sizeinbase(z_[k].mpz(), 2));
+    }
   }
-  /// The integer coefficients, constant first.
-  CGAL::Polynomial<Integer> polynomial() const { return CGAL::Polynomial<Integer>(z_.begin(), z_.end()); }
+  /// The integer coefficients into a FLINT polynomial.
+  void to_flint(fmpz_poly_t out) const {
+    for (std::size_t k = 0; k < z_.size(); ++k) fmpz_poly_set_coeff_mpz(out, static_cast<slong>(k), z_[k].mpz());
+  }
   std::size_t degree() const { return z_.empty() ? 0 : z_.size() - 1; }
   std::size_t bits() const { return bits_; }  ///< the largest coefficient's bit length
 
@@ -651,7 +657,8 @@ std::logic_error internal_error(const std::string& what) {
 /// e(x(lambda)) increases on (0, oo) and decreases on (lambda_s, 0) while p(x(lambda)) decreases on
 /// both (f/s is concave): the optimisers of p over the solid are x(lambda*) at the root lambda* of
 /// the second polynomial, or the limit at lambda_s in the hard case. Only their signs are used, so
-/// f and s are taken as positive integer multiples (integer products: no rational canonicalisation).
+/// f and s are taken as positive integer multiples (FLINT's integer products: no rational
+/// canonicalisation).
 struct Secular {
   IntegerPoly e, p;
   /// The most bisection steps or approximation bits a witness may take before the search is
@@ -660,12 +667,22 @@ struct Secular {
   /// so a crossing never needs more than a multiple of the coefficient bits.
   std::size_t budget;
   explicit Secular(const Pair& pr) {
-    using ZPoly = CGAL::Polynomial<Integer>;
-    const ZPoly f = pr.fz.polynomial(), s = IntegerPoly(pr.s).polynomial();
-    const ZPoly gp = CGAL::differentiate(f) * s - f * CGAL::differentiate(s);
-    const ZPoly ge = f * s - ZPoly(Integer(0), Integer(1)) * gp;
+    detail::flint_thread_cleanup_at_exit();
+    fmpz_poly_t f, s, d, gp, ge;  // gp = f' s - f s', ge = f s - lambda gp (d: scratch)
+    for (auto* q : {f, s, d, gp, ge}) fmpz_poly_init(q);
+    pr.fz.to_flint(f);
+    IntegerPoly(pr.s).to_flint(s);
+    fmpz_poly_derivative(d, f);
+    fmpz_poly_mul(gp, d, s);
+    fmpz_poly_derivative(d, s);
+    fmpz_poly_mul(d, f, d);
+    fmpz_poly_sub(gp, gp, d);
+    fmpz_poly_mul(ge, f, s);
+    fmpz_poly_shift_left(d, gp, 1);
+    fmpz_poly_sub(ge, ge, d);
     e = IntegerPoly(ge);
     p = IntegerPoly(gp);
+    for (auto* q : {f, s, d, gp, ge}) fmpz_poly_clear(q);
     budget = 1024 + 16 * (e.bits() + p.bits() + pr.fz.bits());
   }
 };
