@@ -1,5 +1,6 @@
 #include "certificate/build.hpp"
 
+#include <flint/fmpz_poly.h>
 #include <gmp.h>
 
 #include <array>
@@ -9,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algebra/flint_thread.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "anysize/exact.hpp"
@@ -147,6 +149,17 @@ class IntegerPoly {
       mpq_div_2exp(out.mpq(), out.mpq(), static_cast<mp_bitcnt_t>(-e));
     return out;
   }
+  /// From a FLINT polynomial's coefficients, kept as they are.
+  explicit IntegerPoly(const fmpz_poly_t q) : z_(static_cast<std::size_t>(fmpz_poly_length(q))) {
+    for (std::size_t k = 0; k < z_.size(); ++k) {
+      fmpz_get_mpz(z_[k].mpz(), fmpz_poly_get_coeff_ptr(q, static_cast<slong>(k)));
+      bits_ = std::max(bits_, mpz_sizeinbase(z_[k].mpz(), 2));
+    }
+  }
+  /// The integer coefficients into a FLINT polynomial.
+  void to_flint(fmpz_poly_t out) const {
+    for (std::size_t k = 0; k < z_.size(); ++k) fmpz_poly_set_coeff_mpz(out, static_cast<slong>(k), z_[k].mpz());
+  }
   std::size_t degree() const { return z_.empty() ? 0 : z_.size() - 1; }
   std::size_t bits() const { return bits_; }  ///< the largest coefficient's bit length
 
@@ -172,6 +185,18 @@ class LazyMatrix {
   const Quadric& q_;
   mutable const Matrix4* m_ = nullptr;
 };
+
+/// Cramer's rule for [K | r] (3x4, the right-hand side in column 3): the determinant of K, then
+/// those with column 0, 1 and 2 replaced by r. Written once for the exact and the double centre.
+template <class T>
+std::array<T, 4> cramer(const T (&k)[3][4]) {
+  auto det3 = [&](int c0, int c1, int c2) {
+    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
+           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
+           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
+  };
+  return {det3(0, 1, 2), det3(3, 1, 2), det3(0, 3, 2), det3(0, 1, 3)};
+}
 
 /// The pair's blocks (E = [[M, m], [m^T, e0]], P = [[A, a], [a^T, p0]]), f, s and lambda_s.
 struct Pair {
@@ -206,28 +231,33 @@ struct Pair {
   Rational e_at(const V3& x) const { return form(E, x); }
   Rational p_at(const V3& x) const { return form(P, x); }
   /// x(lambda) = -(lambda A + M)^{-1} (lambda a + m): the stationary point of lambda p + e (math.md §8);
-  /// nullopt when lambda A + M is singular.
+  /// nullopt when lambda A + M is singular. For lambda = n/d the system times d lp le (E = Ez/le,
+  /// P = Pz/lp) has integer entries n le Pz + d lp Ez: Cramer's rule on integers, one rational
+  /// canonicalisation per coordinate.
   std::optional<V3> x_of(const Rational& l) const {
-    Rational k[3][3], r[3];
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) k[i][j] = l * P(i, j) + E(i, j);
-      r[i] = -(l * P(i, 3) + E(i, 3));
+    if (!forms_) {
+      forms_.emplace();
+      forms_->ez = forms::integer_form(E.get(), forms_->le);
+      forms_->pz = forms::integer_form(P.get(), forms_->lp);
     }
-    const Rational det = k[0][0] * (k[1][1] * k[2][2] - k[1][2] * k[2][1]) -
-                         k[0][1] * (k[1][0] * k[2][2] - k[1][2] * k[2][0]) +
-                         k[0][2] * (k[1][0] * k[2][1] - k[1][1] * k[2][0]);
-    if (det == 0) return std::nullopt;
-    V3 x;
-    for (int c = 0; c < 3; ++c) {  // Cramer's rule
-      Rational m[3][3];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) m[i][j] = j == c ? r[i] : k[i][j];
-      x[c] = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-              m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])) /
-             det;
-    }
-    return x;
+    const Integer pf = l.numerator() * forms_->le, ef = l.denominator() * forms_->lp;
+    Integer k[3][4];  // [lambda A + M | -(lambda a + m)], scaled
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j) {
+        k[i][j] = pf * forms_->pz(i, j) + ef * forms_->ez(i, j);
+        if (j == 3) k[i][j] = -k[i][j];
+      }
+    const std::array<Integer, 4> c = cramer(k);
+    if (c[0] == 0) return std::nullopt;
+    return V3{Rational(c[1], c[0]), Rational(c[2], c[0]), Rational(c[3], c[0])};
   }
+
+ private:
+  struct Forms {  // the integer forms of E and P with their scales, on first use by x_of
+    forms::MatrixOf<Integer> ez, pz;
+    Integer le, lp;
+  };
+  mutable std::optional<Forms> forms_;
 };
 
 /// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
@@ -457,10 +487,13 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// exactly by `consider`): bisection on lambda for e(x(lambda)) = 0, lambda > 0 for the inside
 /// point and lambda in (lambda_s, 0) for the outside one; the point found, and the same point
 /// pulled towards the centre (exact rationals), are tried. Most crossings end here, without the
-/// exact bisection on rationals.
+/// exact bisection on rationals. Each bisection's last bracket (good end first: e(x) <= 0 there in
+/// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
+/// exact search when the point itself is beyond doubles.
+using DoubleBracket = std::optional<std::pair<double, double>>;
 void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& lambda_s, const V3& centre,
                          const std::optional<V3>& inside, const std::optional<V3>& outside,
-                         const std::function<void(const V3&)>& consider) {
+                         const std::function<void(const V3&)>& consider, DoubleBracket (&brackets)[2]) {
   double E[4][4], P[4][4];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
@@ -521,7 +554,7 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
   // the Illinois modification (the end that stays has its value halved), bisection when the
   // interpolated point is not strictly inside; down to a bracket of one or two doubles, as plain
   // bisection would, in a fraction of the steps.
-  auto bisect = [&](double lo, double hi, const std::optional<V3>& wanted) {
+  auto bisect = [&](double lo, double hi, const std::optional<V3>& wanted, DoubleBracket& bracket) {
     double x[3], best[3];
     bool have = false;
     double glo = 0, ghi = 0;
@@ -551,7 +584,10 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
         side = 1;
       }
     }
-    if (have) try_point(best, wanted);
+    if (have) {
+      bracket.emplace(lo, hi);
+      try_point(best, wanted);
+    }
   };
   double x[3];
   if (!inside) {
@@ -560,7 +596,7 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
       if (!std::isfinite(hi)) return;
       if (x_of(hi, x) && e_of(x) > 0) break;
     }
-    bisect(0, hi, inside);
+    bisect(0, hi, inside, brackets[0]);
   }
   if (!outside) {
     // lambda_s from above: the upper end of its stored enclosure (a search needs no more), else a
@@ -572,25 +608,13 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
       // approach lambda_s from 0: the first lambda with e(x(lambda)) > 0
       for (double l = ls / 2, step = ls / 4; l > ls && l < 0; l += step, step /= 2) {
         if (x_of(l, x) && e_of(x) > 0) {
-          bisect(0, l, outside);
+          bisect(0, l, outside, brackets[1]);
           break;
         }
         if (step > ls * 1e-15) break;  // step is negative: stop once it is negligible
       }
     }
   }
-}
-
-/// Cramer's rule for [K | r] (3x4, the right-hand side in column 3): the determinant of K, then
-/// those with column 0, 1 and 2 replaced by r. Written once for the exact and the double centre.
-template <class T>
-std::array<T, 4> cramer(const T (&k)[3][4]) {
-  auto det3 = [&](int c0, int c1, int c2) {
-    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
-           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
-           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
-  };
-  return {det3(0, 1, 2), det3(3, 1, 2), det3(0, 3, 2), det3(0, 1, 3)};
 }
 
 /// The centre -M^{-1} m of the ellipsoid, by Cramer's rule on E times the lcm of its denominators
@@ -622,20 +646,6 @@ std::optional<V3> approximate_centre(const Matrix4& e) {
   return out;
 }
 
-Poly product(const Poly& a, const Poly& b) {
-  if (a.empty() || b.empty()) return {};
-  Poly out(a.size() + b.size() - 1, Rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
-  return anysize::trimmed(std::move(out));
-}
-
-Poly difference(Poly a, const Poly& b) {
-  if (a.size() < b.size()) a.resize(b.size(), Rational(0));
-  for (std::size_t i = 0; i < b.size(); ++i) a[i] -= b[i];
-  return anysize::trimmed(std::move(a));
-}
-
 std::logic_error internal_error(const std::string& what) {
   return std::logic_error("relpos internal error: " + what + " (please report the input)");
 }
@@ -646,7 +656,9 @@ std::logic_error internal_error(const std::string& what) {
 ///   p(x(lambda)) s^2 = f' s - f s'   and   e(x(lambda)) s^2 = f s - lambda (f' s - f s').
 /// e(x(lambda)) increases on (0, oo) and decreases on (lambda_s, 0) while p(x(lambda)) decreases on
 /// both (f/s is concave): the optimisers of p over the solid are x(lambda*) at the root lambda* of
-/// the second polynomial, or the limit at lambda_s in the hard case.
+/// the second polynomial, or the limit at lambda_s in the hard case. Only their signs are used, so
+/// f and s are taken as positive integer multiples (FLINT's integer products: no rational
+/// canonicalisation).
 struct Secular {
   IntegerPoly e, p;
   /// The most bisection steps or approximation bits a witness may take before the search is
@@ -655,10 +667,22 @@ struct Secular {
   /// so a crossing never needs more than a multiple of the coefficient bits.
   std::size_t budget;
   explicit Secular(const Pair& pr) {
-    const Poly gp = difference(product(anysize::derivative(pr.f), pr.s), product(pr.f, anysize::derivative(pr.s)));
-    const Poly ge = difference(product(pr.f, pr.s), product(Poly{Rational(0), Rational(1)}, gp));
+    detail::flint_thread_cleanup_at_exit();
+    fmpz_poly_t f, s, d, gp, ge;  // gp = f' s - f s', ge = f s - lambda gp (d: scratch)
+    for (auto* q : {f, s, d, gp, ge}) fmpz_poly_init(q);
+    pr.fz.to_flint(f);
+    IntegerPoly(pr.s).to_flint(s);
+    fmpz_poly_derivative(d, f);
+    fmpz_poly_mul(gp, d, s);
+    fmpz_poly_derivative(d, s);
+    fmpz_poly_mul(d, f, d);
+    fmpz_poly_sub(gp, gp, d);
+    fmpz_poly_mul(ge, f, s);
+    fmpz_poly_shift_left(d, gp, 1);
+    fmpz_poly_sub(ge, ge, d);
     e = IntegerPoly(ge);
     p = IntegerPoly(gp);
+    for (auto* q : {f, s, d, gp, ge}) fmpz_poly_clear(q);
     budget = 1024 + 16 * (e.bits() + p.bits() + pr.fz.bits());
   }
 };
@@ -697,11 +721,11 @@ Rational floor_to(const Rational& x, long e) {
 /// width |bad - good| 2^-k around it: when the probes bracket the sign change, the bracket becomes
 /// that neighbourhood and k doubles (quadratic convergence at a simple root), otherwise k halves
 /// and a bisection keeps the bracket at least halving. A root wanted to b bits costs O(log b)
-/// rounds near a simple root, and never more than b.
+/// rounds near a simple root, and never more than b. `k` is the first round's: a bracket already
+/// narrow (from doubles) starts with long steps.
 template <class Accept>
-bool refine_root(const IntegerPoly& q, Rational good, Rational bad, Accept accept, std::size_t budget) {
+bool refine_root(const IntegerPoly& q, Rational good, Rational bad, Accept accept, std::size_t budget, long k = 2) {
   if (accept(good)) return true;
-  long k = 2;
   auto inside = [&](const Rational& x) { return good < bad ? good < x && x < bad : bad < x && x < good; };
   auto step = [&](const Rational& x) {  // moves one end to x (inside the bracket); true if `good` moved
     if (q.sign(x) <= 0) {
@@ -736,6 +760,39 @@ bool refine_root(const IntegerPoly& q, Rational good, Rational bad, Accept accep
   return false;
 }
 
+/// What refine_root accepts on the curve: a good end lambda where p(x(lambda)) has the sign `want`
+/// gives its point to `consider`; true once `found` holds a point.
+auto curve_accept(const Pair& pr, const Secular& sec, int want, const std::optional<V3>& found,
+                  const std::function<void(const V3&)>& consider) {
+  return [&pr, &sec, want, &found, &consider](const Rational& l) {
+    if (sec.p.sign(l) == want)
+      if (const auto x = pr.x_of(l)) consider(*x);
+    return found.has_value();
+  };
+}
+
+/// The exact search for the point with p of sign `want` (-1: min side, lambda > 0; 1: max side,
+/// lambda in (lambda_s, 0)) from the double search's last bracket of lambda*, its ends taken exactly
+/// and checked (doubles only suggested them). Steps start long: the bracket is a double's width,
+/// where Newton's step is good to about twice as many bits. False when the bracket does not hold.
+bool refine_from_doubles(const Pair& pr, const Secular& sec, const DoubleBracket& bracket, int want,
+                         std::optional<V3>& found, const std::function<void(const V3&)>& consider) {
+  if (!bracket) return false;
+  Rational good = exact_rational(bracket->first), bad = exact_rational(bracket->second);
+  // At a double's width the doubles' signs are rounding noise: each end moves away from the other
+  // by growing multiples of the width until its exact sign holds.
+  const Rational width = bad - good;  // signed: from good towards bad
+  Rational step = width;
+  for (int i = 0; i < 6 && sec.e.sign(good) > 0; ++i, step *= 256) good -= step;
+  step = width;
+  for (int i = 0; i < 6 && sec.e.sign(bad) <= 0; ++i, step *= 256) bad += step;
+  // good past 0 becomes 0 (x(0) is the centre, e < 0 there); bad strictly on the side searched.
+  if (want < 0 ? good < 0 : good > 0) good = 0;
+  const bool side = want < 0 ? bad > 0 : bad < 0 && pr.ls.compare(bad) > 0;
+  if (!side || sec.e.sign(good) > 0 || sec.e.sign(bad) <= 0) return false;
+  return refine_root(sec.e, good, bad, curve_accept(pr, sec, want, found, consider), sec.budget, 32);
+}
+
 /// The point of the solid with p < 0 from the min side (lambda > 0). x(0) is the centre; else the
 /// minimiser x(lambda*) lies on the surface, lambda* > 0 the root of e(x(lambda)). Its bracket is
 /// found on powers of two (galloping exponents: a body of size 2^-k costs O(log k) steps to reach
@@ -764,14 +821,8 @@ void min_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
     const long mid = lo_exp + (hi_exp - lo_exp) / 2;
     (sec.e.sign(power_of_two(mid)) <= 0 ? lo_exp : hi_exp) = mid;
   }
-  refine_root(
-      sec.e, power_of_two(lo_exp), power_of_two(hi_exp),
-      [&](const Rational& l) {
-        if (sec.p.sign(l) < 0)
-          if (const auto x = pr.x_of(l)) consider(*x);
-        return found.has_value();
-      },
-      sec.budget);
+  refine_root(sec.e, power_of_two(lo_exp), power_of_two(hi_exp), curve_accept(pr, sec, -1, found, consider),
+              sec.budget);
 }
 
 /// A rational in (lambda_s, 0) within about 2^-bits of lambda_s (relative to lambda_s, or to the
@@ -852,14 +903,7 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
     kernel_walk(pr, *hard, bits, consider);
   }
   if (!lo) return;
-  refine_root(
-      sec.e, Rational(0), *lo,
-      [&](const Rational& l) {
-        if (sec.p.sign(l) > 0)
-          if (const auto x = pr.x_of(l)) consider(*x);
-        return found.has_value();
-      },
-      sec.budget);
+  refine_root(sec.e, Rational(0), *lo, curve_accept(pr, sec, 1, found, consider), sec.budget);
 }
 
 /// Whether the body is below 2^-20 of its distance to the origin (or its size is not a finite
@@ -903,6 +947,7 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
+  DoubleBracket brackets[2];
   const IntegerForm ez(pr.E), pz(pr.P);  // exact signs of e and p at the candidates
   std::function<void(const V3&)> consider = [&](const V3& x) {
     const IntegerForm::Point xz(x);
@@ -917,7 +962,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> pull = approximate_centre(pr.E);
   if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(pr.E, *pull)) {
     consider(*pull);
-    double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider);
+    double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider, brackets);
   } else if (const std::optional<V3> ctr = centre_of(pr.E)) {
     // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
     // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
@@ -930,13 +975,16 @@ void crossing_points(const Pair& pr, Certificate& c) {
       for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
       consider(x);
     };
-    double_curve_search(in_frame(pr.E, at, scale), in_frame(pr.P, at, scale), pr.ls, V3{}, inside, outside, mapped);
+    double_curve_search(in_frame(pr.E, at, scale), in_frame(pr.P, at, scale), pr.ls, V3{}, inside, outside, mapped,
+                        brackets);
   }
   // What the double search missed, the exact optimisers give (they always exist in a crossing).
   if (!inside || !outside) {
     const Secular sec(pr);
-    if (!inside) min_side_point(pr, sec, inside, consider);
-    if (!outside) max_side_point(pr, sec, outside, consider);
+    if (!inside && !refine_from_doubles(pr, sec, brackets[0], -1, inside, consider))
+      min_side_point(pr, sec, inside, consider);
+    if (!outside && !refine_from_doubles(pr, sec, brackets[1], 1, outside, consider))
+      max_side_point(pr, sec, outside, consider);
   }
   if (!inside || !outside)
     throw internal_error(std::string("no point of the solid ellipsoid with p ") + (inside ? "> 0" : "< 0") +
