@@ -11,6 +11,7 @@
 #include "algebra/roots.hpp"
 #include "algebra/smallness.hpp"
 #include "algebra/sturm.hpp"
+#include "filters/pooled_integer.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 
@@ -97,7 +98,8 @@ TEST_CASE("f and s are congruence invariants: f_H = det(H)^2 f, s_H = det(L)^2 s
 }
 
 TEST_CASE("the generic pencil code gives the same polynomial over Z, Q and doubles", "[pencil]") {
-  // Integer matrices: the Integer and double instantiations must agree exactly (small values).
+  // Integer matrices: the Integer and double instantiations must agree exactly (small values), and
+  // PooledInteger (its fused add_product / sub_product) with Integer (the generic ones).
   Rng g(31337);
   for (int i = 0; i < 30; ++i) {
     std::array<Integer, 16> ei{}, pi{};
@@ -124,13 +126,24 @@ TEST_CASE("the generic pencil code gives the same polynomial over Z, Q and doubl
       std::array<double, 16> a;
       const double& operator()(int r, int c) const { return a[static_cast<std::size_t>(4 * r + c)]; }
     };
+    struct MP {
+      std::array<relpos::PooledInteger, 16> a;
+      const relpos::PooledInteger& operator()(int r, int c) const { return a[static_cast<std::size_t>(4 * r + c)]; }
+    };
+    MP pp, ep;
+    for (std::size_t k = 0; k < 16; ++k) pp.a[k] = relpos::PooledInteger(pi[k]), ep.a[k] = relpos::PooledInteger(ei[k]);
     const auto fz = characteristic_polynomial<Integer>(MI{pi}, MI{ei});
     const auto fd = characteristic_polynomial<double>(MD{pd}, MD{ed});
     const auto fq = characteristic_polynomial<Rational>(pq, eq);
+    const auto fp = characteristic_polynomial<relpos::PooledInteger>(pp, ep);
     for (std::size_t k = 0; k < 5; ++k) {
       CHECK(Rational(fz[k]) == fq[k]);
       CHECK(Rational(fd[k]) == fq[k]);  // all values are small integers: exact in double
+      CHECK(fp[k].to_integer() == fz[k]);
     }
+    const auto sz = special_polynomial<Integer>(MI{pi}, MI{ei});
+    const auto sp = special_polynomial<relpos::PooledInteger>(pp, ep);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(sp[k].to_integer() == sz[k]);
   }
 }
 

@@ -173,13 +173,22 @@ out.append("")
 for j in (2, 1, 0):
     out.append(f"inline constexpr int kStHaF4Power{j} = {f4_power[j]};")
 out.append("")
+out.append("/// g2 and g1 only, for a caller that has Disc(f) by a shorter formula (the invariants I, J).")
+out.append("template <class NT>")
+out.append("void sturm_habicht_quartic_g2_g1(const NT& f0, const NT& f1, const NT& f2, const NT& f3, const NT& f4, NT g2[3],")
+out.append("                                 NT g1[2]) {")
+for j in (2, 1):
+    for i, c in enumerate(reduced[j]):
+        out.append(f"  g{j}[{i}] = {cxx(c)};")
+out.append("}")
+out.append("")
 out.append("/// g_j coefficients, highest power first: g2[0..2], g1[0..1], g0[0]. Ring operations only.")
 out.append("template <class NT>")
 out.append("void sturm_habicht_quartic(const NT& f0, const NT& f1, const NT& f2, const NT& f3, const NT& f4,")
 out.append("                           NT g2[3], NT g1[2], NT g0[1]) {")
-for j in (2, 1, 0):
-    for i, c in enumerate(reduced[j]):
-        out.append(f"  g{j}[{i}] = {cxx(c)};")
+out.append("  sturm_habicht_quartic_g2_g1(f0, f1, f2, f3, f4, g2, g1);")
+for i, c in enumerate(reduced[0]):
+    out.append(f"  g0[{i}] = {cxx(c)};")
 out.append("}")
 out.append("")
 out.append("}  // namespace relpos::detail")

@@ -69,15 +69,37 @@ MatrixOf<Interval> to_intervals(const Matrix4& m) {
   return out;
 }
 
+namespace {
+
+/// The scratch integers of to_compact_integers, one set per thread: they keep their limbs between
+/// calls, so a warm thread converts a pair without malloc (a fresh mpz_t allocates on first write).
+struct CompactScratch {
+  mpz_t t[3], g, den, l, content, dens[16];
+  CompactScratch() {
+    for (auto& x : t) mpz_init(x);
+    for (auto& x : dens) mpz_init(x);
+    for (mpz_ptr x : {g, den, l, content}) mpz_init(x);
+  }
+  ~CompactScratch() {
+    for (auto& x : t) mpz_clear(x);
+    for (auto& x : dens) mpz_clear(x);
+    for (mpz_ptr x : {g, den, l, content}) mpz_clear(x);
+  }
+  CompactScratch(const CompactScratch&) = delete;
+  CompactScratch& operator=(const CompactScratch&) = delete;
+};
+
+}  // namespace
+
 void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mpz_ptr, 16>& pz,
                          const std::array<mpz_ptr, 16>& ez) {
   // On mpz_t throughout, written into the caller's integers: the entries of D M D in lowest terms
   // without rational or Integer temporaries (their allocations were most of the cost on long
   // near-tangent inputs).
-  mpz_t t[3], g, den, l, content, dens[16];
-  for (auto& x : t) mpz_init(x);
-  for (auto& x : dens) mpz_init(x);
-  for (mpz_ptr x : {g, den, l, content}) mpz_init(x);
+  thread_local CompactScratch scratch;
+  auto& t = scratch.t;
+  auto &g = scratch.g, &den = scratch.den, &l = scratch.l, &content = scratch.content;
+  auto& dens = scratch.dens;
   // lcm(l, d) costs a gcd; most denominators of a pair are equal, or divide one already taken.
   auto fold_lcm = [](mpz_ptr acc, mpz_srcptr d) {
     if (mpz_cmp_ui(d, 1) != 0 && !mpz_divisible_p(acc, d)) mpz_lcm(acc, acc, d);
@@ -126,9 +148,6 @@ void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mp
   };
   form(p, pz);
   form(e, ez);
-  for (auto& x : t) mpz_clear(x);
-  for (auto& x : dens) mpz_clear(x);
-  for (mpz_ptr x : {g, den, l, content}) mpz_clear(x);
 }
 
 SplitScale split_scale(const Integer& scale) {

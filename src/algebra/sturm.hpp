@@ -18,6 +18,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 
 #include "algebra/pencil.hpp"
 #include "algebra/sturm_habicht_quartic.hpp"
@@ -52,6 +53,10 @@ struct SturmHabicht {
   NT g2[3], g1[2], g0[1];
   explicit SturmHabicht(const Quartic<NT>& f) {
     detail::sturm_habicht_quartic(f[0], f[1], f[2], f[3], f[4], g2, g1, g0);
+  }
+  /// With Disc(f) already known (e.g. from the invariants of f, far fewer products than g0's expansion).
+  SturmHabicht(const Quartic<NT>& f, NT discriminant) : g0{std::move(discriminant)} {
+    detail::sturm_habicht_quartic_g2_g1(f[0], f[1], f[2], f[3], f[4], g2, g1);
   }
   const NT& discriminant() const { return g0[0]; }
 };

@@ -15,10 +15,10 @@ inline constexpr int kStHaF4Power2 = 1;
 inline constexpr int kStHaF4Power1 = 1;
 inline constexpr int kStHaF4Power0 = 1;
 
-/// g_j coefficients, highest power first: g2[0..2], g1[0..1], g0[0]. Ring operations only.
+/// g2 and g1 only, for a caller that has Disc(f) by a shorter formula (the invariants I, J).
 template <class NT>
-void sturm_habicht_quartic(const NT& f0, const NT& f1, const NT& f2, const NT& f3, const NT& f4, NT g2[3], NT g1[2],
-                           NT g0[1]) {
+void sturm_habicht_quartic_g2_g1(const NT& f0, const NT& f1, const NT& f2, const NT& f3, const NT& f4, NT g2[3],
+                                 NT g1[2]) {
   g2[0] = -NT(8) * f2 * f4 + NT(3) * f3 * f3;
   g2[1] = -NT(12) * f1 * f4 + NT(2) * f2 * f3;
   g2[2] = -NT(16) * f0 * f4 + f1 * f3;
@@ -27,6 +27,13 @@ void sturm_habicht_quartic(const NT& f0, const NT& f1, const NT& f2, const NT& f
           NT(2) * f2 * f2 * f3 * f3;
   g1[1] = -NT(48) * f0 * f1 * f4 * f4 + NT(32) * f0 * f2 * f3 * f4 - NT(9) * f0 * f3 * f3 * f3 +
           NT(3) * f1 * f1 * f3 * f4 - NT(4) * f1 * f2 * f2 * f4 + f1 * f2 * f3 * f3;
+}
+
+/// g_j coefficients, highest power first: g2[0..2], g1[0..1], g0[0]. Ring operations only.
+template <class NT>
+void sturm_habicht_quartic(const NT& f0, const NT& f1, const NT& f2, const NT& f3, const NT& f4, NT g2[3], NT g1[2],
+                           NT g0[1]) {
+  sturm_habicht_quartic_g2_g1(f0, f1, f2, f3, f4, g2, g1);
   g0[0] = NT(256) * f0 * f0 * f0 * f4 * f4 * f4 - NT(192) * f0 * f0 * f1 * f3 * f4 * f4 -
           NT(128) * f0 * f0 * f2 * f2 * f4 * f4 + NT(144) * f0 * f0 * f2 * f3 * f3 * f4 -
           NT(27) * f0 * f0 * f3 * f3 * f3 * f3 + NT(144) * f0 * f1 * f1 * f2 * f4 * f4 -

@@ -107,6 +107,13 @@ class PooledInteger {
     mpz_neg(a.z_, a.z_);
     return std::move(a);
   }
+  // The fused forms of the generic formulas' acc +/- x y (pencil.hpp): no temporary at all.
+  friend void add_product(PooledInteger& acc, const PooledInteger& x, const PooledInteger& y) {
+    mpz_addmul(acc.z_, x.z_, y.z_);
+  }
+  friend void sub_product(PooledInteger& acc, const PooledInteger& x, const PooledInteger& y) {
+    mpz_submul(acc.z_, x.z_, y.z_);
+  }
 
  private:
   struct Raw {};
