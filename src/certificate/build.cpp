@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algebra/cramer.hpp"
 #include "algebra/flint_thread.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
@@ -21,6 +22,7 @@ namespace {
 using anysize::LambdaS;
 using anysize::Poly;
 using anysize::QuadraticReal;
+using detail::cramer;
 using V3 = std::array<Rational, 3>;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
@@ -185,18 +187,6 @@ class LazyMatrix {
   const Quadric& q_;
   mutable const Matrix4* m_ = nullptr;
 };
-
-/// Cramer's rule for [K | r] (3x4, the right-hand side in column 3): the determinant of K, then
-/// those with column 0, 1 and 2 replaced by r. Written once for the exact and the double centre.
-template <class T>
-std::array<T, 4> cramer(const T (&k)[3][4]) {
-  auto det3 = [&](int c0, int c1, int c2) {
-    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
-           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
-           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
-  };
-  return {det3(0, 1, 2), det3(3, 1, 2), det3(0, 3, 2), det3(0, 1, 3)};
-}
 
 /// The pair's blocks (E = [[M, m], [m^T, e0]], P = [[A, a], [a^T, p0]]), f, s and lambda_s.
 struct Pair {
