@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algebra/centre.hpp"
 #include "algebra/cramer.hpp"
 #include "algebra/flint_thread.hpp"
 #include "algebra/forms.hpp"
@@ -237,9 +238,7 @@ struct Pair {
         k[i][j] = pf * forms_->pz(i, j) + ef * forms_->ez(i, j);
         if (j == 3) k[i][j] = -k[i][j];
       }
-    const std::array<Integer, 4> c = cramer(k);
-    if (c[0] == 0) return std::nullopt;
-    return V3{Rational(c[1], c[0]), Rational(c[2], c[0]), Rational(c[3], c[0])};
+    return detail::solve_integer_system(k);
   }
 
  private:
@@ -607,19 +606,6 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
   }
 }
 
-/// The centre -M^{-1} m of the ellipsoid, by Cramer's rule on E times the lcm of its denominators
-/// (integer determinants, one rational canonicalisation per coordinate); nullopt if M is singular.
-std::optional<V3> centre_of(const Matrix4& e) {
-  Integer l;
-  const forms::MatrixOf<Integer> z = forms::integer_form(e, l);
-  Integer k[3][4];  // [M | -m] times l
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 4; ++j) k[i][j] = j == 3 ? -z(i, j) : z(i, j);
-  const std::array<Integer, 4> d = cramer(k);
-  if (d[0] == 0) return std::nullopt;
-  return V3{Rational(d[1], d[0]), Rational(d[2], d[0]), Rational(d[3], d[0])};
-}
-
 /// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals; nullopt when it is
 /// not finite. An approximation: the caller checks it exactly.
 std::optional<V3> approximate_centre(const Matrix4& e) {
@@ -953,7 +939,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
   if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(pr.E, *pull)) {
     consider(*pull);
     double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider, brackets);
-  } else if (const std::optional<V3> ctr = centre_of(pr.E)) {
+  } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
     // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
     // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
     // the points found are mapped back exactly.
