@@ -52,6 +52,10 @@ Poly sub(const Poly& a, const Poly& b) {
   return trimmed(std::move(r));
 }
 
+int sign_of_rational(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+
+}  // namespace
+
 /// Sturm sequence of a square-free p: p, p', -rem(...), ...
 std::vector<Poly> sturm_sequence(const Poly& p) {
   std::vector<Poly> seq{p, derivative(p)};
@@ -74,10 +78,6 @@ int variations(const std::vector<int>& signs) {
   }
   return v;
 }
-
-int sign_of_rational(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
-
-}  // namespace
 
 Poly remainder(const Poly& a, const Poly& b) {
   Poly q, r;

@@ -289,30 +289,6 @@ std::vector<Rational> rational_roots(const Poly& q) {
   return out;
 }
 
-/// Count of distinct real roots of square-free q in (lo, hi], by Sturm's theorem.
-struct Sturm {
-  std::vector<Poly> seq;
-  explicit Sturm(const Poly& q) {
-    seq = {q, anysize::derivative(q)};
-    while (seq.back().size() > 1) {
-      Poly r = anysize::remainder(seq[seq.size() - 2], seq.back());
-      if (r.empty()) break;
-      for (auto& c : r) c = -c;
-      seq.push_back(std::move(r));
-    }
-  }
-  int variations(const Rational& x) const {
-    int v = 0, last = 0;
-    for (const Poly& q : seq) {
-      const int s = sgn(anysize::evaluate(q, x));
-      if (s == 0) continue;
-      if (last && s != last) ++v;
-      last = s;
-    }
-    return v;
-  }
-};
-
 /// The real roots of q (any degree <= 3 here) refined jointly: returns, level by level, dyadic
 /// points converging to every real root; `accept` is tried on each and the first accepted is returned.
 template <class Accept>
@@ -328,7 +304,12 @@ std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, std::
   }
   Rational b(1);
   while (b < bound) b *= 2;
-  const Sturm st(q);
+  const std::vector<Poly> sturm = anysize::sturm_sequence(q);
+  std::vector<int> signs(sturm.size());
+  auto variations = [&](const Rational& x) {  // sign changes of the Sturm sequence at x
+    for (std::size_t i = 0; i < sturm.size(); ++i) signs[i] = sgn(anysize::evaluate(sturm[i], x));
+    return anysize::variations(signs);
+  };
   struct Box {
     Rational lo, hi;
   };
@@ -340,7 +321,7 @@ std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, std::
       const Rational mid = (box.lo + box.hi) / 2;
       if (accept(mid)) return mid;
       for (const Box& half : {Box{box.lo, mid}, Box{mid, box.hi}}) {
-        if (st.variations(half.lo) - st.variations(half.hi) > 0) next.push_back(half);
+        if (variations(half.lo) - variations(half.hi) > 0) next.push_back(half);
       }
     }
     boxes = std::move(next);
