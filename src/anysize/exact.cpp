@@ -102,12 +102,6 @@ Poly monic_gcd(Poly a, Poly b) {
   return monic(std::move(a));
 }
 
-Rational evaluate(const Poly& p, const Rational& x) {
-  Rational acc(0);
-  for (std::size_t i = p.size(); i-- > 0;) acc = acc * x + p[i];
-  return acc;
-}
-
 std::vector<Poly> square_free_decomposition(const Poly& p) {
   // Yun's algorithm over Q (characteristic 0).
   std::vector<Poly> out;

@@ -307,7 +307,7 @@ std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, std::
   const std::vector<Poly> sturm = anysize::sturm_sequence(q);
   std::vector<int> signs(sturm.size());
   auto variations = [&](const Rational& x) {  // sign changes of the Sturm sequence at x
-    for (std::size_t i = 0; i < sturm.size(); ++i) signs[i] = sgn(anysize::evaluate(sturm[i], x));
+    for (std::size_t i = 0; i < sturm.size(); ++i) signs[i] = sgn(evaluate(sturm[i], x));
     return anysize::variations(signs);
   };
   struct Box {

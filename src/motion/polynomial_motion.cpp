@@ -81,12 +81,6 @@ std::array<NT, 16> congruence(const std::array<NT, 16>& k, const Matrix4& e0) {
 
 }  // namespace
 
-Rational evaluate(const TimePolynomial& p, const Rational& t) {
-  Rational v(0);
-  for (std::size_t i = p.size(); i-- > 0;) v = v * t + p[i];
-  return v;
-}
-
 RigidMotion RigidMotion::translating(std::array<TimePolynomial, 3> c) {
   RigidMotion m;
   m.translation = std::move(c);
