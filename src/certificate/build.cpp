@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algebra/between.hpp"
 #include "algebra/centre.hpp"
 #include "algebra/cramer.hpp"
 #include "algebra/flint_thread.hpp"
@@ -951,29 +952,6 @@ void crossing_points(const Pair& pr, Certificate& c) {
   c.outside = *outside;
 }
 
-/// The rational with the fewest bits in the open interval (lo, hi), lo < hi: a dyadic found by
-/// rounding the midpoint to ever more bits (short multipliers make short certificates). The tests
-/// compare integers (cross-multiplied, denominators positive): no rational is canonicalized until
-/// the answer.
-Rational short_between(const Rational& lo, const Rational& hi) {
-  const Rational mid = (lo + hi) / 2;
-  Integer scaled, a, b;
-  for (unsigned bits = 0; bits <= 2048; bits += 4) {
-    mpz_mul_2exp(a.mpz(), mpq_numref(mid.mpq()), bits);  // scaled = floor(mid 2^bits)
-    mpz_fdiv_q(scaled.mpz(), a.mpz(), mpq_denref(mid.mpq()));
-    mpz_mul_2exp(a.mpz(), mpq_numref(lo.mpq()), bits);  // lo < scaled / 2^bits
-    mpz_mul(b.mpz(), scaled.mpz(), mpq_denref(lo.mpq()));
-    if (mpz_cmp(a.mpz(), b.mpz()) >= 0) continue;
-    mpz_mul(a.mpz(), scaled.mpz(), mpq_denref(hi.mpq()));  // scaled / 2^bits < hi
-    mpz_mul_2exp(b.mpz(), mpq_numref(hi.mpq()), bits);
-    if (mpz_cmp(a.mpz(), b.mpz()) >= 0) continue;
-    Integer den(1);
-    mpz_mul_2exp(den.mpz(), den.mpz(), bits);
-    return Rational(scaled, den);
-  }
-  return mid;
-}
-
 /// A lambda in the domain with f(lambda) > 0 from the isolating intervals of f's real roots: f has
 /// one sign between consecutive intervals, so one exact evaluation per gap decides.
 template <class InDomain>
@@ -982,7 +960,7 @@ std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<R
     const Rational& lo = roots[i].exact ? *roots[i].exact : roots[i].upper;
     const Rational& hi = roots[i + 1].exact ? *roots[i + 1].exact : roots[i + 1].lower;
     if (!(lo < hi)) continue;
-    const Rational l = short_between(lo, hi);
+    const Rational l = detail::rational_inside(lo, hi, detail::Shortest::Bits);
     if (in_domain(l) && pr.f_sign(l) > 0) return l;
   }
   return std::nullopt;
