@@ -46,6 +46,7 @@
 
 #include "relpos/algebraic_real.hpp"
 #include "relpos/classify.hpp"
+#include "relpos/polynomials.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos {
@@ -53,11 +54,8 @@ namespace relpos {
 // ---- Rigid motions whose matrices are polynomial in time
 
 /// A polynomial in time t with exact rational coefficients, index = power of t (low degree first).
-/// The empty vector is the zero polynomial.
-using TimePolynomial = std::vector<Rational>;
-
-/// p(t), exactly.
-Rational evaluate(const TimePolynomial& p, const Rational& t);
+/// The empty vector is the zero polynomial. p(t) is evaluate(p, t) (relpos/polynomials.hpp).
+using TimePolynomial = RationalPolynomial;
 
 /// Where the rotation R(t) is applied.
 enum class Pivot {

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "relpos/numbers.hpp"
 
@@ -16,6 +17,14 @@ template <class NT>
 using Quartic = std::array<NT, 5>;
 template <class NT>
 using Quadratic = std::array<NT, 3>;
+
+/// A polynomial over Q, index = power of its variable (low degree first); the empty vector is the
+/// zero polynomial. The one type of the motions' polynomials in time and of the exact polynomials
+/// in lambda of math.md §8.
+using RationalPolynomial = std::vector<Rational>;
+
+/// p(x), exactly (Horner's scheme).
+Rational evaluate(const RationalPolynomial& p, const Rational& x);
 
 /// One distinct real root of f with certified information.
 struct RealRoot {

@@ -787,4 +787,10 @@ std::vector<std::string> real_root_decimals(const Quartic<Integer>& fc, int digi
   return out;
 }
 
+Rational evaluate(const RationalPolynomial& p, const Rational& x) {
+  Rational acc(0);
+  for (std::size_t i = p.size(); i-- > 0;) acc = acc * x + p[i];
+  return acc;
+}
+
 }  // namespace relpos

@@ -52,6 +52,10 @@ Poly sub(const Poly& a, const Poly& b) {
   return trimmed(std::move(r));
 }
 
+int sign_of_rational(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+
+}  // namespace
+
 /// Sturm sequence of a square-free p: p, p', -rem(...), ...
 std::vector<Poly> sturm_sequence(const Poly& p) {
   std::vector<Poly> seq{p, derivative(p)};
@@ -75,10 +79,6 @@ int variations(const std::vector<int>& signs) {
   return v;
 }
 
-int sign_of_rational(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
-
-}  // namespace
-
 Poly remainder(const Poly& a, const Poly& b) {
   Poly q, r;
   divide(a, b, q, r);
@@ -100,12 +100,6 @@ Poly monic_gcd(Poly a, Poly b) {
     b = std::move(r);
   }
   return monic(std::move(a));
-}
-
-Rational evaluate(const Poly& p, const Rational& x) {
-  Rational acc(0);
-  for (std::size_t i = p.size(); i-- > 0;) acc = acc * x + p[i];
-  return acc;
 }
 
 std::vector<Poly> square_free_decomposition(const Poly& p) {

@@ -10,18 +10,24 @@
 
 #include "algebra/pencil.hpp"
 #include "relpos/numbers.hpp"
+#include "relpos/polynomials.hpp"
 
 namespace relpos::anysize {
 
-/// Polynomial over Q, index = power; no trailing zeros (the zero polynomial is empty).
-using Poly = std::vector<Rational>;
+/// Polynomial over Q, index = power; no trailing zeros (the zero polynomial is empty). Evaluated by
+/// relpos::evaluate (relpos/polynomials.hpp).
+using Poly = RationalPolynomial;
 
 Poly trimmed(Poly p);
 Poly derivative(const Poly& p);
 Poly remainder(const Poly& a, const Poly& b);
 Poly quotient(const Poly& a, const Poly& b);  ///< exact division expected
 Poly monic_gcd(Poly a, Poly b);
-Rational evaluate(const Poly& p, const Rational& x);
+/// The Sturm sequence of a square-free p: p, p', then the negated remainders.
+std::vector<Poly> sturm_sequence(const Poly& p);
+/// Sign changes of a sequence of signs, zeros dropped: evaluated on a Sturm sequence at a < b, the
+/// difference counts the distinct real roots in (a, b].
+int variations(const std::vector<int>& signs);
 /// Square-free decomposition (Yun): factors[k] is the product of the irreducible factors of
 /// multiplicity k + 1, monic; constant factors dropped.
 std::vector<Poly> square_free_decomposition(const Poly& p);

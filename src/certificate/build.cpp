@@ -10,6 +10,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "algebra/between.hpp"
+#include "algebra/centre.hpp"
+#include "algebra/cramer.hpp"
 #include "algebra/flint_thread.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
@@ -21,6 +24,7 @@ namespace {
 using anysize::LambdaS;
 using anysize::Poly;
 using anysize::QuadraticReal;
+using detail::cramer;
 using V3 = std::array<Rational, 3>;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
@@ -186,18 +190,6 @@ class LazyMatrix {
   mutable const Matrix4* m_ = nullptr;
 };
 
-/// Cramer's rule for [K | r] (3x4, the right-hand side in column 3): the determinant of K, then
-/// those with column 0, 1 and 2 replaced by r. Written once for the exact and the double centre.
-template <class T>
-std::array<T, 4> cramer(const T (&k)[3][4]) {
-  auto det3 = [&](int c0, int c1, int c2) {
-    return k[0][c0] * (k[1][c1] * k[2][c2] - k[1][c2] * k[2][c1]) -
-           k[0][c1] * (k[1][c0] * k[2][c2] - k[1][c2] * k[2][c0]) +
-           k[0][c2] * (k[1][c0] * k[2][c1] - k[1][c1] * k[2][c0]);
-  };
-  return {det3(0, 1, 2), det3(3, 1, 2), det3(0, 3, 2), det3(0, 1, 3)};
-}
-
 /// The pair's blocks (E = [[M, m], [m^T, e0]], P = [[A, a], [a^T, p0]]), f, s and lambda_s.
 struct Pair {
   LazyMatrix<Ellipsoid> E;
@@ -247,9 +239,7 @@ struct Pair {
         k[i][j] = pf * forms_->pz(i, j) + ef * forms_->ez(i, j);
         if (j == 3) k[i][j] = -k[i][j];
       }
-    const std::array<Integer, 4> c = cramer(k);
-    if (c[0] == 0) return std::nullopt;
-    return V3{Rational(c[1], c[0]), Rational(c[2], c[0]), Rational(c[3], c[0])};
+    return detail::solve_integer_system(k);
   }
 
  private:
@@ -300,30 +290,6 @@ std::vector<Rational> rational_roots(const Poly& q) {
   return out;
 }
 
-/// Count of distinct real roots of square-free q in (lo, hi], by Sturm's theorem.
-struct Sturm {
-  std::vector<Poly> seq;
-  explicit Sturm(const Poly& q) {
-    seq = {q, anysize::derivative(q)};
-    while (seq.back().size() > 1) {
-      Poly r = anysize::remainder(seq[seq.size() - 2], seq.back());
-      if (r.empty()) break;
-      for (auto& c : r) c = -c;
-      seq.push_back(std::move(r));
-    }
-  }
-  int variations(const Rational& x) const {
-    int v = 0, last = 0;
-    for (const Poly& q : seq) {
-      const int s = sgn(anysize::evaluate(q, x));
-      if (s == 0) continue;
-      if (last && s != last) ++v;
-      last = s;
-    }
-    return v;
-  }
-};
-
 /// The real roots of q (any degree <= 3 here) refined jointly: returns, level by level, dyadic
 /// points converging to every real root; `accept` is tried on each and the first accepted is returned.
 template <class Accept>
@@ -339,7 +305,12 @@ std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, std::
   }
   Rational b(1);
   while (b < bound) b *= 2;
-  const Sturm st(q);
+  const std::vector<Poly> sturm = anysize::sturm_sequence(q);
+  std::vector<int> signs(sturm.size());
+  auto variations = [&](const Rational& x) {  // sign changes of the Sturm sequence at x
+    for (std::size_t i = 0; i < sturm.size(); ++i) signs[i] = sgn(evaluate(sturm[i], x));
+    return anysize::variations(signs);
+  };
   struct Box {
     Rational lo, hi;
   };
@@ -351,7 +322,7 @@ std::optional<Rational> search_near_roots(const Poly& q_in, Accept accept, std::
       const Rational mid = (box.lo + box.hi) / 2;
       if (accept(mid)) return mid;
       for (const Box& half : {Box{box.lo, mid}, Box{mid, box.hi}}) {
-        if (st.variations(half.lo) - st.variations(half.hi) > 0) next.push_back(half);
+        if (variations(half.lo) - variations(half.hi) > 0) next.push_back(half);
       }
     }
     boxes = std::move(next);
@@ -615,19 +586,6 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
       }
     }
   }
-}
-
-/// The centre -M^{-1} m of the ellipsoid, by Cramer's rule on E times the lcm of its denominators
-/// (integer determinants, one rational canonicalisation per coordinate); nullopt if M is singular.
-std::optional<V3> centre_of(const Matrix4& e) {
-  Integer l;
-  const forms::MatrixOf<Integer> z = forms::integer_form(e, l);
-  Integer k[3][4];  // [M | -m] times l
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 4; ++j) k[i][j] = j == 3 ? -z(i, j) : z(i, j);
-  const std::array<Integer, 4> d = cramer(k);
-  if (d[0] == 0) return std::nullopt;
-  return V3{Rational(d[1], d[0]), Rational(d[2], d[0]), Rational(d[3], d[0])};
 }
 
 /// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals; nullopt when it is
@@ -963,7 +921,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
   if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(pr.E, *pull)) {
     consider(*pull);
     double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider, brackets);
-  } else if (const std::optional<V3> ctr = centre_of(pr.E)) {
+  } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
     // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
     // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
     // the points found are mapped back exactly.
@@ -994,29 +952,6 @@ void crossing_points(const Pair& pr, Certificate& c) {
   c.outside = *outside;
 }
 
-/// The rational with the fewest bits in the open interval (lo, hi), lo < hi: a dyadic found by
-/// rounding the midpoint to ever more bits (short multipliers make short certificates). The tests
-/// compare integers (cross-multiplied, denominators positive): no rational is canonicalized until
-/// the answer.
-Rational short_between(const Rational& lo, const Rational& hi) {
-  const Rational mid = (lo + hi) / 2;
-  Integer scaled, a, b;
-  for (unsigned bits = 0; bits <= 2048; bits += 4) {
-    mpz_mul_2exp(a.mpz(), mpq_numref(mid.mpq()), bits);  // scaled = floor(mid 2^bits)
-    mpz_fdiv_q(scaled.mpz(), a.mpz(), mpq_denref(mid.mpq()));
-    mpz_mul_2exp(a.mpz(), mpq_numref(lo.mpq()), bits);  // lo < scaled / 2^bits
-    mpz_mul(b.mpz(), scaled.mpz(), mpq_denref(lo.mpq()));
-    if (mpz_cmp(a.mpz(), b.mpz()) >= 0) continue;
-    mpz_mul(a.mpz(), scaled.mpz(), mpq_denref(hi.mpq()));  // scaled / 2^bits < hi
-    mpz_mul_2exp(b.mpz(), mpq_numref(hi.mpq()), bits);
-    if (mpz_cmp(a.mpz(), b.mpz()) >= 0) continue;
-    Integer den(1);
-    mpz_mul_2exp(den.mpz(), den.mpz(), bits);
-    return Rational(scaled, den);
-  }
-  return mid;
-}
-
 /// A lambda in the domain with f(lambda) > 0 from the isolating intervals of f's real roots: f has
 /// one sign between consecutive intervals, so one exact evaluation per gap decides.
 template <class InDomain>
@@ -1025,7 +960,7 @@ std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<R
     const Rational& lo = roots[i].exact ? *roots[i].exact : roots[i].upper;
     const Rational& hi = roots[i + 1].exact ? *roots[i + 1].exact : roots[i + 1].lower;
     if (!(lo < hi)) continue;
-    const Rational l = short_between(lo, hi);
+    const Rational l = detail::rational_inside(lo, hi, detail::Shortest::Bits);
     if (in_domain(l) && pr.f_sign(l) > 0) return l;
   }
   return std::nullopt;

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "algebra/between.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "algebra/roots.hpp"
@@ -304,27 +305,6 @@ int sign_at(const AK& ak, const PolyZ& p, const Candidate& z) {
   return static_cast<int>(ak.sign_at_1_object()(PolyZ(r.begin(), r.end()), z.t));
 }
 
-Integer floor_of(const Rational& q) {
-  Integer r;
-  mpz_fdiv_q(r.mpz(), q.numerator().mpz(), q.denominator().mpz());
-  return r;
-}
-
-/// The simplest rational (smallest denominator, then numerator) in the open interval (x, y), x < y;
-/// y empty means +infinity. Continued fractions (Stern-Brocot descent).
-Rational simplest_between(const Rational& x, const std::optional<Rational>& y) {
-  if (y && x < 0 && *y > 0) return Rational(0);
-  if (y && *y <= 0) return -simplest_between(-*y, Rational(-x));
-  const Integer n = floor_of(x);  // x >= 0 here
-  const Rational next(n + 1);
-  if (!y || next < *y) return next;
-  // (x, y) lies in [n, n + 1]: recurse on the reciprocals of the fractional parts.
-  const Rational lo = Rational(1) / (*y - Rational(n));
-  std::optional<Rational> hi;
-  if (x > Rational(n)) hi = Rational(1) / (x - Rational(n));
-  return Rational(n) + Rational(1) / simplest_between(lo, hi);
-}
-
 /// A simple rational strictly between two algebraic reals a < b (their isolating intervals are
 /// refined until disjoint). CGAL's Bound_between needs a big-float interval type; this does not.
 Rational rational_between(const Alg& a, const Alg& b) {
@@ -333,7 +313,7 @@ Rational rational_between(const Alg& a, const Alg& b) {
     if (b.low() != b.high()) b.refine();
   }
   // a <= a.high() < b.low() <= b: any number strictly between the two ends will do.
-  return simplest_between(a.high(), Rational(b.low()));
+  return detail::rational_inside(a.high(), Rational(b.low()), detail::Shortest::Denominator);
 }
 
 /// Merge the real zeros of p in [lo, hi] into the sorted list `out` (exact comparisons; a zero

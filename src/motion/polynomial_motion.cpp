@@ -7,7 +7,7 @@
 
 #include <utility>
 
-#include "algebra/cramer.hpp"
+#include "algebra/centre.hpp"
 #include "algebra/forms.hpp"
 #include "relpos/error.hpp"
 #include "relpos/motion.hpp"
@@ -81,12 +81,6 @@ std::array<NT, 16> congruence(const std::array<NT, 16>& k, const Matrix4& e0) {
 
 }  // namespace
 
-Rational evaluate(const TimePolynomial& p, const Rational& t) {
-  Rational v(0);
-  for (std::size_t i = p.size(); i-- > 0;) v = v * t + p[i];
-  return v;
-}
-
 RigidMotion RigidMotion::translating(std::array<TimePolynomial, 3> c) {
   RigidMotion m;
   m.translation = std::move(c);
@@ -94,15 +88,7 @@ RigidMotion RigidMotion::translating(std::array<TimePolynomial, 3> c) {
 }
 
 Vector3 centre_of(const Ellipsoid& e) {
-  // Solve M x = -e by Cramer's rule (M positive definite, so det M > 0).
-  const Matrix4& q = e.matrix();
-  Rational k[3][4];  // [M | -e]
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) k[i][j] = q(i, j);
-    k[i][3] = -q(i, 3);
-  }
-  const auto d = detail::cramer(k);
-  return {d[1] / d[0], d[2] / d[0], d[3] / d[0]};
+  return *detail::centre_of(e.matrix());  // M is positive definite: never singular
 }
 
 Vector3 pivot_of(const Ellipsoid& e0, const RigidMotion& m) {
