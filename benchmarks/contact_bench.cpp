@@ -73,8 +73,8 @@ int main(int argc, char** argv) {
   for (const auto& q : pairs) trackers.emplace_back(paras[q.para], q.e);
 
   // Correctness and path fractions (one untimed pass).
-  std::array<std::size_t, kDecidedByCount> by_disc{}, by_contact{}, by_checker{};
-  std::array<std::size_t, 5> positions{};  // I, TI, C, TE, E
+  std::array<std::size_t, kAllStages.size()> by_disc{}, by_contact{}, by_checker{};  // per Stage
+  std::array<std::size_t, 5> positions{};                                            // I, TI, C, TE, E
   std::size_t mismatches = 0, tracker_filter = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const Paraboloid& p = paras[pairs[i].para];
@@ -82,13 +82,13 @@ int main(int argc, char** argv) {
     const Verdict v = decide_position(e, p);
     ++positions[static_cast<std::size_t>(v.position)];
     const auto d = decide_by_discriminant(e, p);
-    ++by_disc[static_cast<std::size_t>(d.by)];
+    ++by_disc[static_cast<std::size_t>(d.verdict.stage)];
     const ContactAnswer c = contact(e, p), s = checkers[pairs[i].para].contact(e);
-    ++by_contact[static_cast<std::size_t>(c.by)];
-    ++by_checker[static_cast<std::size_t>(s.by)];
+    ++by_contact[static_cast<std::size_t>(c.stage)];
+    ++by_checker[static_cast<std::size_t>(s.stage)];
     ExteriorTracker t(p, e);
     const auto fr = t.update(e);
-    tracker_filter += fr.by == DecidedBy::DiscriminantFilter;
+    tracker_filter += fr.stage == Stage::DiscriminantFilter;
     if (d.verdict.position != v.position || d.verdict.rule != v.rule || fr.position != v.position ||
         c.position != v.position || c.contact != contact_of(v.position) || s.contact != c.contact)
       ++mismatches;
@@ -128,16 +128,20 @@ int main(int argc, char** argv) {
     std::printf("%-26s %12.1f %12.1f %12.1f %9.2f\n", methods[m].first.c_str(), median(v),
                 *std::min_element(v.begin(), v.end()), *std::max_element(v.begin(), v.end()), base / median(v));
   }
-  auto frac = [&](const std::array<std::size_t, kDecidedByCount>& a, DecidedBy b) {
-    return 100.0 * static_cast<double>(a[static_cast<std::size_t>(b)]) / static_cast<double>(n);
+  // Percent of the pairs whose stage has the given decided_by text (scene-certificate, ...).
+  auto frac = [&](const std::array<std::size_t, kAllStages.size()>& a, const char* by) {
+    std::size_t k = 0;
+    for (const Stage s : kAllStages)
+      if (decided_by(s) == by) k += a[static_cast<std::size_t>(s)];
+    return 100.0 * static_cast<double>(k) / static_cast<double>(n);
   };
   std::printf("decided by (%%):            scene-cert  disc-filter  full-classifier\n");
   for (const auto& [name, a] :
-       {std::pair<const char*, const std::array<std::size_t, kDecidedByCount>*>{"decide_by_discriminant", &by_disc},
+       {std::pair<const char*, const std::array<std::size_t, kAllStages.size()>*>{"decide_by_discriminant", &by_disc},
         {"contact()", &by_contact},
         {"ContactChecker::contact", &by_checker}})
-    std::printf("%-26s %10.2f %12.2f %16.2f\n", name, frac(*a, DecidedBy::SceneCertificate),
-                frac(*a, DecidedBy::DiscriminantFilter), frac(*a, DecidedBy::FullClassifier));
+    std::printf("%-26s %10.2f %12.2f %16.2f\n", name, frac(*a, "scene-certificate"), frac(*a, "discriminant-filter"),
+                frac(*a, "full-classifier"));
   std::printf("%-26s %23.2f\n", "ExteriorTracker::update",
               100.0 * static_cast<double>(tracker_filter) / static_cast<double>(n));
 

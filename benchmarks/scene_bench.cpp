@@ -266,9 +266,9 @@ int main(int argc, char** argv) {
   std::printf("positions: I %zu, TI %zu, C %zu, TE %zu, E %zu\n", c.count(Position::I), c.count(Position::TI),
               c.count(Position::C), c.count(Position::TE), c.count(Position::E));
   std::printf("settled by:");
-  for (const Stage s : kAllStages)
+  for (const Stage s : kSceneStages)
     std::printf(" %s %.3f %%%s", to_string(s).c_str(), 100.0 * static_cast<double>(c.count(s)) / static_cast<double>(n),
-                s != kAllStages.back() ? "," : "\n");
+                s != kSceneStages.back() ? "," : "\n");
 
   // Determinism: every run gives the same verdicts.
   bool runs_agree = true;
@@ -371,8 +371,8 @@ int main(int argc, char** argv) {
     js << "\n  ],\n  \"positions\": {\"I\": " << c.count(Position::I) << ", \"TI\": " << c.count(Position::TI)
        << ", \"C\": " << c.count(Position::C) << ", \"TE\": " << c.count(Position::TE)
        << ", \"E\": " << c.count(Position::E) << "},\n  \"stages\": {";
-    for (const Stage s : kAllStages)
-      js << (s != kAllStages.front() ? ", " : "") << "\"" << to_string(s) << "\": " << c.count(s);
+    for (const Stage s : kSceneStages)
+      js << (s != kSceneStages.front() ? ", " : "") << "\"" << to_string(s) << "\": " << c.count(s);
     js << "},\n  \"runs_agree\": " << (runs_agree ? "true" : "false") << ", \"differences_vs_pairs\": " << vs_pairs
        << ",\n  \"verified\": " << (verify ? "true" : "false") << ", \"verify_seconds\": " << verify_s
        << ", \"mismatches_vs_classify_exact\": " << mismatches

@@ -504,7 +504,7 @@ int run_scene(Args& args) {
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Json positions, stages;
   for (const relpos::Position pos : relpos::kAllPositions) positions[relpos::to_string(pos)] = counts.count(pos);
-  for (const relpos::Stage s : relpos::kAllStages) stages[relpos::to_string(s)] = counts.count(s);
+  for (const relpos::Stage s : relpos::kSceneStages) stages[relpos::to_string(s)] = counts.count(s);
   Json summary;
   summary["bodies"] = counts.bodies;
   summary["errors"] = errors;

@@ -2,6 +2,7 @@
 // (doc/contact.md). Every answer is compared with classify / decide_position, the exact expectations
 // come from constructions (support/construct.hpp), and the fast path is required to decide most
 // generic pairs, so a silent "always fall back" fails the suite.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <iostream>
@@ -21,12 +22,12 @@ using namespace rt;
 using relpos::Classification;
 using relpos::Contact;
 using relpos::ContactAnswer;
-using relpos::DecidedBy;
 using relpos::DiscriminantCase;
 using relpos::Ellipsoid;
 using relpos::Evidence;
 using relpos::Paraboloid;
 using relpos::Rule;
+using relpos::Stage;
 using relpos::Verdict;
 using relpos::testing::secular_position;
 
@@ -256,10 +257,10 @@ TEST_CASE("contact beyond smallness", "[contact][large]") {
     CHECK(c.contact == Contact::None);
     // Not small with four negative roots: the gap test of math.md §8 runs in the classifier (the
     // discriminant-only path declines), so the full classifier decides.
-    CHECK(c.by == DecidedBy::FullClassifier);
+    CHECK(c.stage == v.stage);
     const ContactAnswer s = relpos::ContactChecker(p).contact(e);
     CHECK(s.contact == Contact::None);
-    CHECK(s.by == DecidedBy::FullClassifier);
+    CHECK(s.stage == v.stage);  // no early-out either
     check_contact_consistent(c, v);
   }
   {  // Across the vertex: non-real roots, crossing for any size.
@@ -386,9 +387,10 @@ TEST_CASE("tracker: frames that are not translates still get the right answer", 
   // 8 the filter certifies Disc(f) > 0; much deeper the roots spread and the filter leaves it.)
   const Ellipsoid big = Ellipsoid::sphere(V(Q(0), Q(0), Q(8)), Q(2));
   const auto fr = tr.update(big);
-  CHECK(fr.position == relpos::decide_position(big, p).position);
-  CHECK(fr.position == Position::I);          // not small, yet decided (math.md §8)
-  CHECK(fr.by == DecidedBy::FullClassifier);  // the gap test of math.md §8 is the classifier's
+  const Verdict vb = relpos::decide_position(big, p);
+  CHECK(fr.position == vb.position);
+  CHECK(fr.position == Position::I);  // not small, yet decided (math.md §8)
+  CHECK(fr.stage == vb.stage);        // the gap test of math.md §8 is the classifier's
   CHECK(tr.counts().rho_recomputed == 1);
   // A different shape block (ellipsoid) crossing the wall.
   const Ellipsoid ell = Ellipsoid::from_axes(V(Q(1), Q(0), Q(1)), V(Q(1, 4), Q(1, 8), Q(1, 8)),
@@ -396,11 +398,24 @@ TEST_CASE("tracker: frames that are not translates still get the right answer", 
   CHECK(tr.update(ell).position == relpos::decide_position(ell, p).position);
 }
 
+TEST_CASE("decided_by: the part of the contact-only path each stage belongs to", "[contact]") {
+  for (const Stage s : relpos::kAllStages) {
+    INFO(relpos::to_string(s));
+    const bool early_out = s == Stage::InsideCertificate || s == Stage::OutsideCertificate;
+    const bool classifier = std::find(relpos::kClassifierStages.begin(), relpos::kClassifierStages.end(), s) !=
+                            relpos::kClassifierStages.end();
+    CHECK(relpos::decided_by(s) == (early_out                        ? "scene-certificate"
+                                    : s == Stage::DiscriminantFilter ? "discriminant-filter"
+                                                                     : "full-classifier"));
+    CHECK(early_out + classifier + (s == Stage::DiscriminantFilter) == 1);  // the three parts partition the stages
+  }
+}
+
 TEST_CASE("random agreement with classify; the discriminant path decides most pairs", "[contact][random]") {
   DoublePairs gen(987654321);
   Rng g(5);
   std::size_t n = 0, by_disc = 0, exact_checked = 0, tracker_filter = 0;
-  std::array<std::size_t, relpos::kDecidedByCount> checker_by{};
+  std::array<std::size_t, relpos::kAllStages.size()> checker_by{};
   const int total = 3000;
   for (int i = 0; i < total; ++i) {
     auto [E, P] = gen.next();
@@ -417,7 +432,7 @@ TEST_CASE("random agreement with classify; the discriminant path decides most pa
     const Verdict v = relpos::decide_position(*e, *p);
     const auto d = relpos::decide_by_discriminant(*e, *p);
     check_same(d.verdict, v);
-    if (d.by == DecidedBy::DiscriminantFilter) {
+    if (d.verdict.stage == Stage::DiscriminantFilter) {
       ++by_disc;
       CHECK(int(d.verdict.real_roots) == int(v.real_roots));
       CHECK(int(d.verdict.positive_roots) == int(v.positive_roots));
@@ -428,13 +443,17 @@ TEST_CASE("random agreement with classify; the discriminant path decides most pa
     check_contact_consistent(c, v);
     const relpos::ContactChecker checker(*p);
     const ContactAnswer cs = checker.contact(*e);
-    ++checker_by[static_cast<std::size_t>(cs.by)];
+    ++checker_by[static_cast<std::size_t>(cs.stage)];
+    // What settled an answer is the discriminant test, a scene early-out (the checker) or decide_position.
+    CHECK((c.stage == Stage::DiscriminantFilter || c.stage == v.stage));
+    CHECK((cs.stage == Stage::DiscriminantFilter || cs.stage == Stage::InsideCertificate ||
+           cs.stage == Stage::OutsideCertificate || cs.stage == v.stage));
     check_contact_consistent(cs, v);
     CHECK(cs.contact == c.contact);
     relpos::ExteriorTracker tr(*p, *e);
     const auto fr = tr.update(*e);
     CHECK(fr.position == v.position);
-    if (fr.by == DecidedBy::DiscriminantFilter) ++tracker_filter;
+    if (fr.stage == Stage::DiscriminantFilter) ++tracker_filter;
     if (i % 25 == 0) {  // the reference path, without any filter
       const Classification x = relpos::classify_exact(*e, *p, Evidence::Minimal);
       CHECK(x.verdict.position == v.position);
@@ -447,7 +466,9 @@ TEST_CASE("random agreement with classify; the discriminant path decides most pa
   CHECK(by_disc * 100 > n * 90);
   CHECK(tracker_filter * 100 > n * 90);
   CHECK(exact_checked > 80);
-  CHECK(checker_by[static_cast<std::size_t>(DecidedBy::SceneCertificate)] > 0);
+  CHECK(checker_by[static_cast<std::size_t>(Stage::InsideCertificate)] +
+            checker_by[static_cast<std::size_t>(Stage::OutsideCertificate)] >
+        0);
 }
 
 TEST_CASE("random near-tangent and exactly tangent dyadic spheres", "[contact][random]") {

@@ -24,10 +24,12 @@
 namespace relpos {
 
 /// What settled the answer, in the order the stages run: the scene's certified early-outs (scene.hpp)
-/// first, then the classifier's cascade (decide_position). One enum for pairs and scenes.
+/// first, then the contact-only discriminant test (contact.hpp), then the classifier's cascade
+/// (decide_position). One enum for pairs, scenes and contact-only answers.
 enum class Stage : unsigned char {
   InsideCertificate,    ///< scene early-out: P < 0 on the solid ellipsoid (I, for a small ellipsoid)
   OutsideCertificate,   ///< scene early-out: P > 0 on the solid ellipsoid (E)
+  DiscriminantFilter,   ///< contact only: signs of f and Disc(f) in doubles (+ smallness when needed)
   StaticDouble,         ///< double arithmetic with static error bounds (inputs that are exact doubles)
   SemiStaticDouble,     ///< double arithmetic with error bounds from the operands' magnitudes
   MultipleRootWitness,  ///< Disc(f) = 0 certified by exact rational multiple roots, machine integers
@@ -36,13 +38,17 @@ enum class Stage : unsigned char {
   ExactRoots,           ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
 };
 /// Every stage, in order (tables indexed by Stage take their size from here).
-inline constexpr std::array kAllStages{Stage::InsideCertificate, Stage::OutsideCertificate,  Stage::StaticDouble,
-                                       Stage::SemiStaticDouble,  Stage::MultipleRootWitness, Stage::Interval,
-                                       Stage::ExactSigns,        Stage::ExactRoots};
+inline constexpr std::array kAllStages{Stage::InsideCertificate, Stage::OutsideCertificate, Stage::DiscriminantFilter,
+                                       Stage::StaticDouble,      Stage::SemiStaticDouble,   Stage::MultipleRootWitness,
+                                       Stage::Interval,          Stage::ExactSigns,         Stage::ExactRoots};
 /// The stages of decide_position / classify, in order (a pair classified alone never ends in an early-out).
 inline constexpr std::array kClassifierStages{Stage::StaticDouble, Stage::SemiStaticDouble, Stage::MultipleRootWitness,
                                               Stage::Interval,     Stage::ExactSigns,       Stage::ExactRoots};
-/// "inside-certificate", "outside-certificate", "static-double", "semi-static-double",
+/// The stages a scene body can end in (scene.hpp), in order: the early-outs, then the classifier's.
+inline constexpr std::array kSceneStages{Stage::InsideCertificate, Stage::OutsideCertificate,  Stage::StaticDouble,
+                                         Stage::SemiStaticDouble,  Stage::MultipleRootWitness, Stage::Interval,
+                                         Stage::ExactSigns,        Stage::ExactRoots};
+/// "inside-certificate", "outside-certificate", "discriminant-filter", "static-double", "semi-static-double",
 /// "multiple-root-witness", "interval", "exact-signs", "exact-roots".
 std::string to_string(Stage s);
 

@@ -33,19 +33,16 @@ class Scene;
 // One-shot discriminant decision with exact fallback.
 // ------------------------------------------------------------------------------------------------
 
-/// What settled an answer.
-enum class DecidedBy : unsigned char {
-  SceneCertificate,    ///< Scene::early_out: P has one strict sign on the solid ellipsoid
-  DiscriminantFilter,  ///< static filter on f and Disc(f) only (+ smallness when needed)
-  FullClassifier,      ///< decide_position() (static filter, witness, intervals, exact)
-};
-inline constexpr std::size_t kDecidedByCount = 3;
-std::string to_string(DecidedBy d);
+/// The "decided_by" text of a contact-only answer (doc/contact.md), by the part of the path its stage
+/// belongs to: "scene-certificate" (an early-out of ContactChecker), "discriminant-filter"
+/// (Stage::DiscriminantFilter) or "full-classifier" (a stage of decide_position()).
+std::string decided_by(Stage s);
 
 struct DiscriminantVerdict {
-  Verdict verdict;        ///< position, rule, contact identical to decide_position()
+  /// Position, rule, contact identical to decide_position(); stage: Stage::DiscriminantFilter, or the
+  /// stage of decide_position() when the test declined.
+  Verdict verdict;
   bool rho_known = true;  ///< false when verdict.small / rho_vs_one were not computed (answer E)
-  DecidedBy by = DecidedBy::FullClassifier;
 };
 
 /// The discriminant test on exact-double inputs (static filter), falling back to decide_position().
@@ -59,7 +56,8 @@ struct ContactAnswer {
   Contact contact = Contact::None;
   Position position = Position::C;  ///< classify's position
   Rule rule = Rule::None;           ///< classify's rule
-  DecidedBy by = DecidedBy::FullClassifier;
+  /// What settled it: a scene early-out (ContactChecker), Stage::DiscriminantFilter or a stage of decide_position().
+  Stage stage = Stage::StaticDouble;
 };
 
 /// Contact of the two surfaces: the discriminant test, then decide_position(), then (for an answer
@@ -107,8 +105,8 @@ class ExteriorTracker {
   struct FrameVerdict {
     Position position = Position::C;
     Rule rule = Rule::None;
-    bool changed = false;      ///< position differs from the previous frame's (false on the first)
-    DecidedBy by = DecidedBy::FullClassifier;
+    bool changed = false;               ///< position differs from the previous frame's (false on the first)
+    Stage stage = Stage::StaticDouble;  ///< Stage::DiscriminantFilter or a stage of decide_position()
   };
   /// The certified position of this frame (decide_position(placed, p)).
   FrameVerdict update(const Ellipsoid& placed);
@@ -131,7 +129,7 @@ class ExteriorTracker {
 
  private:
   std::optional<int> frame_rho(const Ellipsoid& placed);
-  FrameVerdict finish(const Verdict& v, DecidedBy by);
+  FrameVerdict finish(const Verdict& v);
   Paraboloid p_;
   Ellipsoid body_;  ///< the reference placement (update(translation) moves it)
   Matrix4 m_ref_;   ///< reference 3x3 block (in a 4x4 for convenience)

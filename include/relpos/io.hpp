@@ -79,7 +79,7 @@ nlohmann::ordered_json classification_to_json(const Classification& c, const Ren
 /// written directly (what `relpos classify --json`, `relpos batch` and the Python module print).
 std::string classification_json_text(const Classification& c, const RenderOptions& options = {});
 
-/// The contact-only answer (doc/contact.md): contact, position, rule, decided_by.
+/// The contact-only answer (doc/contact.md): contact, position, rule, decided_by (decided_by(stage)).
 nlohmann::ordered_json contact_to_json(const ContactAnswer& a);
 
 /// A multi-line human-readable report (ends with a newline).

@@ -46,7 +46,7 @@ inline constexpr std::size_t kPositionCount = kAllPositions.size();  ///< I, TI,
 struct SceneVerdict {
   Position position = Position::C;
   Rule rule = Rule::None;
-  Stage stage = Stage::StaticDouble;  ///< an early-out or the classifier stage that decided
+  Stage stage = Stage::StaticDouble;  ///< an early-out or the classifier stage that decided (kSceneStages)
 };
 
 /// The scene view of a core verdict.

@@ -66,7 +66,7 @@ TimePolynomial = Union[Sequence[Number], Number]
 #: Position names, indexed by the codes decide_positions and scene return.
 POSITION_NAMES = ("I", "TI", "C", "TE", "E")
 
-#: Stage names (what settled an answer), indexed by the stage codes scene returns.
+#: Stage names (what settled a scene body), indexed by the stage codes scene returns.
 STAGE_NAMES = _relpos._STAGE_NAMES
 
 #: What each position means.

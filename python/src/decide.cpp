@@ -10,6 +10,7 @@
 #include <relpos/classify.hpp>
 #include <relpos/numbers.hpp>
 #include <relpos/scene.hpp>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -205,6 +206,13 @@ std::vector<relpos::Ellipsoid> scene_bodies(py::handle bodies) {
   return out;
 }
 
+/// The stage code of a scene body: its index in kSceneStages (and in relpos.STAGE_NAMES).
+std::int8_t scene_stage_code(relpos::Stage s) {
+  for (std::size_t k = 0; k < relpos::kSceneStages.size(); ++k)
+    if (relpos::kSceneStages[k] == s) return static_cast<std::int8_t>(k);
+  throw std::logic_error("scene: a stage a scene never ends in");
+}
+
 /// relpos::Scene on the bodies: (position codes, contact (1, 0), stage codes, threads used).
 py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads, bool early_outs) {
   const std::vector<relpos::Ellipsoid> e = scene_bodies(bodies);
@@ -224,7 +232,7 @@ py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads
     positions.mutable_at(static_cast<py::ssize_t>(i)) = position_code(v.position);
     contact.mutable_at(static_cast<py::ssize_t>(i)) =
         static_cast<std::int8_t>(relpos::contact_of(v.position) != relpos::Contact::None);
-    stages.mutable_at(static_cast<py::ssize_t>(i)) = static_cast<std::int8_t>(v.stage);
+    stages.mutable_at(static_cast<py::ssize_t>(i)) = scene_stage_code(v.stage);
   }
   return py::make_tuple(positions, contact, stages, result.threads);
 }
@@ -233,8 +241,7 @@ py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads
 
 void bind_decide(py::module_& m) {
   py::list stage_names;
-  for (std::size_t s = 0; s < relpos::kAllStages.size(); ++s)
-    stage_names.append(relpos::to_string(static_cast<relpos::Stage>(s)));
+  for (const relpos::Stage s : relpos::kSceneStages) stage_names.append(relpos::to_string(s));
   m.attr("_STAGE_NAMES") = py::tuple(stage_names);
   m.def("_scene", &scene, "p"_a, "bodies"_a, "threads"_a, "early_outs"_a,
         "relpos::Scene on the bodies: (position codes, contact codes, stage codes, threads used).");

@@ -30,13 +30,19 @@ std::string to_string(DiscriminantCase c) {
   return "?";
 }
 
-std::string to_string(DecidedBy d) {
-  switch (d) {
-    case DecidedBy::SceneCertificate:
+std::string decided_by(Stage s) {
+  switch (s) {
+    case Stage::InsideCertificate:
+    case Stage::OutsideCertificate:
       return "scene-certificate";
-    case DecidedBy::DiscriminantFilter:
+    case Stage::DiscriminantFilter:
       return "discriminant-filter";
-    case DecidedBy::FullClassifier:
+    case Stage::StaticDouble:
+    case Stage::SemiStaticDouble:
+    case Stage::MultipleRootWitness:
+    case Stage::Interval:
+    case Stage::ExactSigns:
+    case Stage::ExactRoots:
       return "full-classifier";
   }
   return "?";
@@ -97,7 +103,9 @@ std::optional<Verdict> verdict_of_case(DiscriminantCase c, int rho_vs_one) {
       break;
   }
   x.sign_disc_ftilde = x.sign_disc_f;
-  return decide_from_root_facts(x, rho_vs_one);
+  std::optional<Verdict> v = decide_from_root_facts(x, rho_vs_one);
+  if (v) v->stage = Stage::DiscriminantFilter;
+  return v;
 }
 
 /// The 3 decided cases x 3 outcomes of rho, generated once from classify's table (verdict_of_case):
@@ -132,8 +140,8 @@ SymmetricEntries<NT> entries(Get get) {
   return {get(0, 0), get(1, 1), get(2, 2), get(0, 1), get(0, 2), get(1, 2), get(0, 3), get(1, 3), get(2, 3), get(3, 3)};
 }
 
-/// The answer of a classifier verdict, by what settled it.
-ContactAnswer finish(const Verdict& v, DecidedBy by) { return {contact_of(v.position), v.position, v.rule, by}; }
+/// The contact-only answer of a verdict.
+ContactAnswer finish(const Verdict& v) { return {contact_of(v.position), v.position, v.rule, v.stage}; }
 
 }  // namespace
 
@@ -144,16 +152,12 @@ DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid&
     const DiscriminantCase c = discriminant_case(d.quartic);
     std::optional<int> rho;
     if (discriminant_case_needs_rho(c)) rho = compare_rho_with_one(d.vertex, d.graeffe);
-    if (auto v = verdict_from_discriminant_case(c, rho))
-      return {*v, c != DiscriminantCase::TwoPositive, DecidedBy::DiscriminantFilter};
+    if (auto v = verdict_from_discriminant_case(c, rho)) return {*v, c != DiscriminantCase::TwoPositive};
   }
-  return {decide_position(e, p), true, DecidedBy::FullClassifier};
+  return {decide_position(e, p), true};
 }
 
-ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p) {
-  const DiscriminantVerdict d = decide_by_discriminant(e, p);
-  return finish(d.verdict, d.by);
-}
+ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p) { return finish(decide_by_discriminant(e, p).verdict); }
 
 ContactChecker::ContactChecker(const Paraboloid& p) : scene_(std::make_unique<Scene>(p)) {}
 ContactChecker::~ContactChecker() = default;
@@ -164,11 +168,9 @@ const Paraboloid& ContactChecker::paraboloid() const { return scene_->paraboloid
 ContactAnswer ContactChecker::contact(const Ellipsoid& e) const {
   if (const auto s = scene_->early_out(e)) {
     // Inside (I) or outside (E): no common point in either case.
-    ContactAnswer a{Contact::None, s->position, s->rule, DecidedBy::SceneCertificate};
-    return a;
+    return ContactAnswer{Contact::None, s->position, s->rule, s->stage};
   }
-  const DiscriminantVerdict d = decide_by_discriminant(e, scene_->paraboloid());
-  return finish(d.verdict, d.by);
+  return finish(decide_by_discriminant(e, scene_->paraboloid()).verdict);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -249,7 +251,6 @@ std::optional<int> ExteriorTracker::frame_rho(const Ellipsoid& placed) {
 ExteriorTracker::FrameVerdict ExteriorTracker::update(const Ellipsoid& placed) {
   ++counts_.frames;
   std::optional<Verdict> v;
-  DecidedBy by = DecidedBy::FullClassifier;
   bool filter_tried = false;
   if (storage_of(placed).filter_doubles() && storage_of(p_).filter_doubles() && rounding_to_nearest()) {
     // f and Disc(f) only: smallness comes from the reference (frame_rho), never from the filter.
@@ -263,25 +264,20 @@ ExteriorTracker::FrameVerdict ExteriorTracker::update(const Ellipsoid& placed) {
       if (!rho) ++counts_.rho_recomputed;
     }
     v = verdict_from_discriminant_case(c, rho);
-    if (v) by = DecidedBy::DiscriminantFilter;
   }
   if (!v) {
     // The case was decided but rho was not: the one-shot path computes smallness in the filter.
-    const DiscriminantVerdict r =
-        filter_tried ? decide_by_discriminant(placed, p_)
-                     : DiscriminantVerdict{decide_position(placed, p_), true, DecidedBy::FullClassifier};
-    v = r.verdict;
-    by = r.by;
+    v = filter_tried ? decide_by_discriminant(placed, p_).verdict : decide_position(placed, p_);
   }
-  return finish(*v, by);
+  return finish(*v);
 }
 
-ExteriorTracker::FrameVerdict ExteriorTracker::finish(const Verdict& v, DecidedBy by) {
-  ++(by == DecidedBy::DiscriminantFilter ? counts_.by_filter : counts_.by_fallback);
+ExteriorTracker::FrameVerdict ExteriorTracker::finish(const Verdict& v) {
+  ++(v.stage == Stage::DiscriminantFilter ? counts_.by_filter : counts_.by_fallback);
   FrameVerdict out;
   out.position = v.position;
   out.rule = v.rule;
-  out.by = by;
+  out.stage = v.stage;
   out.changed = last_ && *last_ != out.position;
   last_ = out.position;
   return out;
@@ -301,7 +297,7 @@ ExteriorTracker::FrameVerdict ExteriorTracker::update(const std::array<double, 3
     const DiscriminantCase c = discriminant_case(d.quartic);
     if (auto v = verdict_from_discriminant_case(c, rho_vs_one_)) {
       ++counts_.frames;
-      return finish(*v, DecidedBy::DiscriminantFilter);
+      return finish(*v);
     }
   }
   const Vector3 t{exact_rational(translation[0]), exact_rational(translation[1]), exact_rational(translation[2])};

@@ -31,7 +31,7 @@ bool discriminant_case_needs_rho(DiscriminantCase c);
 
 /// classify's verdict for the case (position, rule, contact, root counts, sign of Disc(f)), applied
 /// through classify's own table; rho_vs_one is read only when the case needs it. nullopt when the
-/// case is Undecided or a needed rho is missing. The stage is left at StaticDouble. For TwoPositive
+/// case is Undecided or a needed rho is missing. The stage is Stage::DiscriminantFilter. For TwoPositive
 /// the fields small / rho_vs_one are not meaningful (rho was not looked at).
 std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::optional<int> rho_vs_one);
 

@@ -69,6 +69,8 @@ std::string to_string(Stage s) {
       return "inside-certificate";
     case Stage::OutsideCertificate:
       return "outside-certificate";
+    case Stage::DiscriminantFilter:
+      return "discriminant-filter";
     case Stage::StaticDouble:
       return "static-double";
     case Stage::SemiStaticDouble:

@@ -246,7 +246,7 @@ Json contact_to_json(const ContactAnswer& a) {
   j["contact"] = to_string(a.contact);
   j["position"] = to_string(a.position);
   j["rule"] = describe(a.rule);
-  j["decided_by"] = to_string(a.by);
+  j["decided_by"] = decided_by(a.stage);
   return j;
 }
 

@@ -599,6 +599,8 @@ std::string stage_meaning(Stage s) {
       return "certified inside: P < 0 on the solid ellipsoid (scene early-out)";
     case Stage::OutsideCertificate:
       return "certified outside: P > 0 on the solid ellipsoid (scene early-out)";
+    case Stage::DiscriminantFilter:
+      return "signs of f and Disc(f) certified in double arithmetic, no Sturm-Habicht sequence (contact only)";
     case Stage::StaticDouble:
       return "all signs certified in double arithmetic with static error bounds";
     case Stage::SemiStaticDouble:
