@@ -399,25 +399,18 @@ std::optional<DoubleMatrix4> negated(const std::optional<DoubleMatrix4>& d) {
   return negated(*d);
 }
 
-/// A quadric from a matrix of doubles: its shape and orientation certified in floating point
-/// (`certify`, shape_filter.hpp), the matrix kept as given or negated. Not certified (or not of that
-/// shape): the exact path decides and names what the matrix is.
-template <class Q, class Certify, class Make>
-Q quadric_from_doubles(const DoubleMatrix4& m, Certify certify, Make make) {
-  if (all_finite(m)) {
-    const std::optional<DoubleMatrix4> n = power_of_two_normalized(m);
-    const int orientation = certify(m, n);
-    if (orientation > 0) return make(detail::QuadricMatrix(m, n));
-    if (orientation < 0) return make(detail::QuadricMatrix(negated(m), negated(n)));
-  }
-  const Q exact = Q::from_matrix(exact_matrix(m));
-  return make(detail::QuadricMatrix(*exact.doubles()));
-}
-
 }  // namespace
 
 Ellipsoid Ellipsoid::from_doubles(const DoubleMatrix4& e) {
-  return quadric_from_doubles<Ellipsoid>(e, shape_filter::certified_ellipsoid, detail::make_ellipsoid);
+  if (all_finite(e)) {
+    const std::optional<DoubleMatrix4> n = power_of_two_normalized(e);
+    const int orientation = shape_filter::certified_ellipsoid(e, n);
+    if (orientation > 0) return Ellipsoid(detail::QuadricMatrix(e, n));
+    if (orientation < 0) return Ellipsoid(detail::QuadricMatrix(negated(e), negated(n)));
+  }
+  // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
+  const Ellipsoid exact = from_matrix(exact_matrix(e));
+  return Ellipsoid(*exact.doubles());
 }
 
 Ellipsoid Ellipsoid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
@@ -493,7 +486,14 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
 }
 
 Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
-  return quadric_from_doubles<Paraboloid>(p, shape_filter::certified_paraboloid, detail::make_paraboloid);
+  if (all_finite(p)) {
+    const std::optional<DoubleMatrix4> n = power_of_two_normalized(p);
+    const int orientation = shape_filter::certified_paraboloid(p, n);
+    if (orientation > 0) return Paraboloid(detail::QuadricMatrix(p, n));
+    if (orientation < 0) return Paraboloid(detail::QuadricMatrix(negated(p), negated(n)));
+  }
+  const Paraboloid exact = from_matrix(exact_matrix(p));
+  return Paraboloid(*exact.doubles());
 }
 
 Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
