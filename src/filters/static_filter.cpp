@@ -151,66 +151,36 @@ namespace {
 
 using View = forms::DoubleView;
 
-/// f of the pencil with its error bounds, balanced (lambda = step mu: f_i gains step^i, exact) and
-/// brought into [-1, 1]; eps is the largest error bound.
-struct ScaledQuartic {
-  Quartic<double> f;
-  double ef[5];
-  double step = 0, eps = 0;
-};
-
-/// The first part of both pipelines below; false when f is out of the filter's range (uncertain).
-inline bool scaled_quartic(const View& p, const View& e, const Bounds& b, ScaledQuartic& q) {
-  q.f = characteristic_polynomial<double>(p, e);
-  for (int i = 0; i < 5; ++i) q.ef[i] = b.f[i];
-  // Balance the quartic: lambda = 2^t mu with |f4| 2^(4t) ~ |f0|.
-  q.step = balancing_step(q.f);
-  if (q.step == 0) return false;
-  double w = 1;
-  for (int i = 0; i < 5; ++i, w *= q.step) {
-    q.f[static_cast<std::size_t>(i)] *= w;
-    q.ef[i] *= w;
-  }
-  if (!scale_into_unit(q.f.data(), q.ef, 5)) return false;
-  for (int i = 0; i < 5; ++i) q.eps = std::max(q.eps, q.ef[i]);
-  return true;
-}
-
-/// s with the same balancing step (s_i gains step^i), brought into [-1, 1] on its own (every
-/// quantity is homogeneous in f and in s); eps raised to its largest error bound. False when s is
-/// out of the filter's range.
-inline bool scaled_special(const View& p, const View& e, const Bounds& b, double step, Quadratic<double>& s,
-                           double& eps) {
-  s = special_polynomial<double>(p, e);
-  double es[3];
-  double w = 1;
-  for (int i = 0; i < 3; ++i, w *= step) {
-    s[static_cast<std::size_t>(i)] *= w;
-    es[i] = b.s[i] * w;
-  }
-  if (!scale_into_unit(s.data(), es, 3)) return false;
-  for (int i = 0; i < 3; ++i) eps = std::max(eps, es[i]);
-  return true;
-}
-
-/// The certified signs of the scaled f.
-void certify_f(const ScaledQuartic& q, DecisionSigns& out) {
-  for (int i = 0; i < 5; ++i) out.quartic.f[i] = certified(q.f[static_cast<std::size_t>(i)], q.ef[i]);
-}
-
 }  // namespace
 
 DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
   const Bounds& b = bounds();
   const View p{pn}, e{en};
-  ScaledQuartic fq;
-  if (!scaled_quartic(p, e, b, fq)) return uncertain();
-  double eps = fq.eps;
-  Quadratic<double> s;
-  if (!scaled_special(p, e, b, fq.step, s, eps)) return uncertain();
-  const Quartic<double>& f = fq.f;
+  auto f = characteristic_polynomial<double>(p, e);
+  auto s = special_polynomial<double>(p, e);
+  double ef[5], es[3];
+  for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
+  for (int i = 0; i < 3; ++i) es[i] = b.s[i];
+  // Balance the quartic: lambda = 2^t mu with |f4| 2^(4t) ~ |f0|. f_i, s_i gain 2^(t i): exact.
+  const double step = balancing_step(f);
+  if (step == 0) return uncertain();
+  double w = 1;
+  for (int i = 0; i < 5; ++i, w *= step) {
+    f[static_cast<std::size_t>(i)] *= w;
+    ef[i] *= w;
+    if (i < 3) {
+      s[static_cast<std::size_t>(i)] *= w;
+      es[i] *= w;
+    }
+  }
+  // Bring f and s into [-1, 1] (separately: every quantity is homogeneous in f and in s).
+  if (!scale_into_unit(f.data(), ef, 5) || !scale_into_unit(s.data(), es, 3)) return uncertain();
+
   DecisionSigns out;
-  certify_f(fq, out);
+  for (int i = 0; i < 5; ++i) out.quartic.f[i] = certified(f[static_cast<std::size_t>(i)], ef[i]);
+  double eps = 0;
+  for (int i = 0; i < 5; ++i) eps = std::max(eps, ef[i]);
+  for (int i = 0; i < 3; ++i) eps = std::max(eps, es[i]);
   if (!(eps <= kEps0)) return out;  // coefficients too inaccurate for the second stage
   SturmHabicht<double> sh(f);
   SmallnessQuantities<double> sq(f, s);
@@ -236,20 +206,36 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   // only on demand. Index 5 of the a/r arrays is g0, 6 and 7 are vertex and graeffe.
   const Bounds& b = bounds();
   const View p{pn}, e{en};
-  ScaledQuartic fq;
-  if (!scaled_quartic(p, e, b, fq)) return uncertain();
-  const Quartic<double>& f = fq.f;
+  auto f = characteristic_polynomial<double>(p, e);
+  double ef[5];
+  for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
+  const double step = balancing_step(f);
+  if (step == 0) return uncertain();
+  double w = 1;
+  for (int i = 0; i < 5; ++i, w *= step) {
+    f[static_cast<std::size_t>(i)] *= w;
+    ef[i] *= w;
+  }
+  if (!scale_into_unit(f.data(), ef, 5)) return uncertain();
   DecisionSigns out;
-  certify_f(fq, out);
-  double eps = fq.eps;
+  for (int i = 0; i < 5; ++i) out.quartic.f[i] = certified(f[static_cast<std::size_t>(i)], ef[i]);
+  double eps = 0;
+  for (int i = 0; i < 5; ++i) eps = std::max(eps, ef[i]);
   if (!(eps <= kEps0)) return out;
   // The generated sequence is evaluated whole so that g0 is exactly the program its bound was derived
   // from; inlined (flatten), its dead g2 and g1 are dropped by the optimiser.
   const SturmHabicht<double> sh(f);
   out.quartic.g0 = certified(sh.g0[0], b.a[5] + b.r[5] * eps);
   if (!need_smallness || !need_smallness(out.quartic)) return out;
-  Quadratic<double> s;
-  if (!scaled_special(p, e, b, fq.step, s, eps)) return out;
+  auto s = special_polynomial<double>(p, e);
+  double es[3];
+  w = 1;
+  for (int i = 0; i < 3; ++i, w *= step) {
+    s[static_cast<std::size_t>(i)] *= w;
+    es[i] = b.s[i] * w;
+  }
+  if (!scale_into_unit(s.data(), es, 3)) return out;
+  for (int i = 0; i < 3; ++i) eps = std::max(eps, es[i]);
   if (!(eps <= kEps0)) return out;
   SmallnessQuantities<double> sq(f, s);
   out.vertex = certified(sq.vertex, b.a[6] + b.r[6] * eps);
