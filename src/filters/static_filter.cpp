@@ -203,7 +203,9 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
     const DoubleMatrix4& pn, const DoubleMatrix4& en, bool (*need_smallness)(const QuarticSigns&)) {
   // The same pipeline as static_filter_signs_normalized() (f, balancing, scaling into [-1, 1], the
   // second-stage bound a + r * eps), restricted to f and g0 = Disc(f); s and the smallness quantities
-  // only on demand. Index 5 of the a/r arrays is g0, 6 and 7 are vertex and graeffe.
+  // only on demand. Index 5 of the a/r arrays is g0, 6 and 7 are vertex and graeffe. Its balancing and
+  // scaling are written out here rather than shared with the full pipeline: a shared helper measured
+  // 5-12 % slower on decide_position (benchmarks/regime_bench).
   const Bounds& b = bounds();
   const View p{pn}, e{en};
   auto f = characteristic_polynomial<double>(p, e);
