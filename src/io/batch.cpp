@@ -310,6 +310,8 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
       const std::size_t end = value_end(line, i);
       if (end == std::string_view::npos) invalid_json(line);
       const std::string_view value = line.substr(i, end - i);
+      // nlohmann skips a byte order mark at the start of what it parses; inside a line it is not JSON.
+      if (value.substr(0, 3) == "\xEF\xBB\xBF") invalid_json(line);
       std::string key;
       try {
         key = key_name(key_text);
