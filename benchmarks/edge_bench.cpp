@@ -39,6 +39,7 @@
 #include "float_baseline.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/quadric.hpp"
+#include "support/random_pairs.hpp"
 
 using namespace relpos;
 using Clock = std::chrono::steady_clock;
@@ -71,14 +72,6 @@ struct Pair {
   }
 };
 
-Matrix4 paraboloid(const Rational& a, const Rational& b) {
-  Matrix4 P;
-  P(0, 0) = a;
-  P(1, 1) = b;
-  P(2, 3) = P(3, 2) = Rational(-1, 2);
-  return P;
-}
-
 /// Every radius is below the smallest radius of curvature (small pairs, math.md §5), so that the FLINT
 // reference, which implements the small-pair table only, decides every pair too.
 // 100 tangencies from inside and 100 from outside.
@@ -92,8 +85,10 @@ std::vector<Tangency> tangencies() {
   for (const auto& [a, b] : ab) {
     const Rational rmin = Rational(1) / (2 * std::max(a, b));
     const Vector3 o{Rational(0), Rational(0), Rational(0)}, n{Rational(0), Rational(0), Rational(1)};
-    for (int j = 1; j <= 9; ++j) ts.push_back({paraboloid(a, b), o, n, Rational(1), rmin * Rational(j, 10), true});
-    for (int j = 1; j <= 9; ++j) ts.push_back({paraboloid(a, b), o, n, Rational(1), rmin * Rational(j, 10), false});
+    for (int j = 1; j <= 9; ++j)
+      ts.push_back({rt::axis_paraboloid(a, b), o, n, Rational(1), rmin * Rational(j, 10), true});
+    for (int j = 1; j <= 9; ++j)
+      ts.push_back({rt::axis_paraboloid(a, b), o, n, Rational(1), rmin * Rational(j, 10), false});
   }
   // Off the axis of z = x^2 + y^2 (smallest radius of curvature 1/2): 16 points x (4 inside + 4 outside).
   struct Pt {
@@ -109,9 +104,9 @@ std::vector<Tangency> tangencies() {
         const Rational x = sx * q.x, y = sy * q.y;
         const Vector3 pt{x, y, x * x + y * y}, n{-2 * x, -2 * y, Rational(1)};
         for (int j = 1; j <= 4; ++j)
-          ts.push_back({paraboloid(Rational(1), Rational(1)), pt, n, q.m, Rational(j, 9), true});
+          ts.push_back({rt::axis_paraboloid(Rational(1), Rational(1)), pt, n, q.m, Rational(j, 9), true});
         for (int j = 1; j <= 4; ++j)
-          ts.push_back({paraboloid(Rational(1), Rational(1)), pt, n, q.m, Rational(j, 9), false});
+          ts.push_back({rt::axis_paraboloid(Rational(1), Rational(1)), pt, n, q.m, Rational(j, 9), false});
       }
   return ts;
 }

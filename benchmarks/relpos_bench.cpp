@@ -92,14 +92,6 @@ struct Config {
   bool sym = false;  ///< sphere on the axis of a paraboloid of revolution: Disc(f) = 0 for every shift
 };
 
-Matrix4 axis_paraboloid(const Rational& ia, const Rational& ib) {
-  Matrix4 P;
-  P(0, 0) = ia;
-  P(1, 1) = ib;
-  P(2, 3) = P(3, 2) = Rational(-1, 2);
-  return P;
-}
-
 std::vector<Config> tangent_configs() {
   std::vector<Config> cs;
   const Rational inv[4] = {Rational(1), Rational(1, 2), Rational(1, 4), Rational(2)};
@@ -107,7 +99,7 @@ std::vector<Config> tangent_configs() {
   for (const auto& ia : inv)
     for (const auto& ib : inv) {
       const Rational rmin = Rational(1) / (2 * std::max(ia, ib));
-      Matrix4 P = axis_paraboloid(ia, ib);
+      Matrix4 P = rt::axis_paraboloid(ia, ib);
       for (int k : {1, 2, 3}) {  // TI: centre (0, 0, r), r <= rmin (small)
         Rational r = rmin / Rational(1 << k);
         cs.push_back({P, {Rational(0), Rational(0), r}, r, {Rational(0), Rational(0), Rational(1)}, ia == ib});
@@ -121,7 +113,7 @@ std::vector<Config> tangent_configs() {
     int x, y, m;
   };
   const Pt pts[4] = {{1, 1, 3}, {2, 4, 9}, {4, 2, 9}, {6, 6, 17}};
-  Matrix4 P = axis_paraboloid(Rational(1), Rational(1));
+  Matrix4 P = rt::axis_paraboloid(Rational(1), Rational(1));
   for (const Pt& q : pts)
     for (int sx : {1, -1})
       for (int sy : {1, -1}) {

@@ -1,6 +1,6 @@
 // Random ellipsoid and paraboloid matrices whose entries are all doubles: family (a) of relpos_bench
 // (doc/performance.md), also drawn by contact_bench and test_contact. One draw order, so a seed
-// gives the same pairs everywhere.
+// gives the same pairs everywhere. Also the axis paraboloid z = a x^2 + b y^2 of the benchmarks.
 //
 //   ellipsoid  E = [[M, -Mc], [-c^T M, c^T M c - k]], M = L L^T + 0.05 I, L in [-1, 1]^9,
 //              c in [-2, 2]^3, k in [k_min, 2] (computed in doubles, then read exactly)
@@ -13,6 +13,15 @@
 #include <relpos/quadric.hpp>
 
 namespace rt {
+
+/// The matrix of the paraboloid z = a x^2 + b y^2 (vertex at the origin, axis z), a, b > 0.
+inline relpos::Matrix4 axis_paraboloid(const relpos::Rational& a, const relpos::Rational& b) {
+  relpos::Matrix4 P;
+  P(0, 0) = a;
+  P(1, 1) = b;
+  P(2, 3) = P(3, 2) = relpos::Rational(-1, 2);
+  return P;
+}
 
 /// A random ellipsoid matrix (draws L, c, k in that order); the caller validates it.
 inline relpos::Matrix4 random_double_ellipsoid_matrix(std::mt19937_64& rng, double k_min) {
