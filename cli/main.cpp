@@ -10,11 +10,13 @@
 #include <atomic>
 #include <cerrno>
 #include <charconv>
+#include <condition_variable>
 #include <csignal>
 #include <cstring>
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <string>
@@ -198,9 +200,6 @@ int run_classify(Args& args) {
 
 namespace {
 
-/// Answer lines[i] into answers[i] for i < n, on the pool's threads. Both vectors keep their
-/// strings from chunk to chunk: a line costs no allocation once the buffers have grown (with two
-/// threads, every malloc takes an arena lock).
 /// Capacity kept in every answer buffer: an out-of-memory error line fits without allocating.
 constexpr std::size_t kAnswerReserve = 256;
 
@@ -215,13 +214,157 @@ void write_error_line(Output& out, long number, std::string_view message) {
   out.write("\"}");
 }
 
-void answer_all(const std::vector<std::string>& lines, std::size_t n, long first_number,
-                const relpos::io::BatchOptions& options, WorkerPool& pool, std::vector<std::string>& answers) {
-  if (answers.size() < n) answers.resize(n);
-  pool.run(n, [&](std::size_t i) {
-    relpos::io::answer_batch_line(lines[i], first_number + static_cast<long>(i), options, answers[i]);
-  });
-}
+/// The lines of `relpos batch` answered on the pool's threads and written in input order. Each
+/// thread takes the next few lines from the reader (one thread reads at a time), answers them with
+/// no lock held, and writes every answered group that is next in input order: reading, answering
+/// and writing overlap, and no thread waits for a round to end (a slow line holds back only the
+/// writing of the groups after it, up to kSlotsPerThread groups a thread). The output is flushed
+/// after a group whose last line left the input with nothing more ready, so interactive use is
+/// answered line by line.
+class BatchPipeline {
+ public:
+  BatchPipeline(LineReader& reader, Output& out, const relpos::io::BatchOptions& options, unsigned threads,
+                std::string too_long)
+      : reader_(reader), out_(out), options_(options), too_long_(std::move(too_long)),
+        slots_(kSlotsPerThread * std::size_t(threads)) {
+    const std::size_t size = threads > 1 ? kGroup : kGroupOneThread;
+    for (Slot& s : slots_) {  // every buffer kept from group to group: a line costs no allocation
+      s.lines.resize(size);
+      s.answers.resize(size);
+      s.status.resize(size);
+      for (auto& a : s.answers) a.reserve(kAnswerReserve);  // room for an out-of-memory line
+    }
+  }
+
+  /// Thread w's part: take, answer and write groups until the input ends or cannot be read or written.
+  void work() {
+    for (;;) {
+      Slot* slot = take();
+      if (!slot) return;
+      for (std::size_t i = 0; i < slot->n; ++i)
+        if (slot->status[i] == LineReader::Status::Line)
+          relpos::io::answer_batch_line(slot->lines[i], slot->first + static_cast<long>(i), options_,
+                                        slot->answers[i]);
+      finish(*slot);
+    }
+  }
+
+  int read_error() const { return read_error_; }
+
+ private:
+  static constexpr std::size_t kGroup = 32, kGroupOneThread = 64, kSlotsPerThread = 4;
+  static constexpr std::size_t kKeep = std::size_t(1) << 16;  ///< buffers longer than this are released
+
+  struct Slot {
+    std::vector<std::string> lines, answers;
+    std::vector<LineReader::Status> status;  // per line: read, or refused while reading
+    std::size_t n = 0;
+    long first = 0;     // the number of the first line
+    bool flush = false;  // flush the output after this group
+    bool done = false;   // answered, not yet written
+  };
+
+  /// The next group read into a free slot, or nullptr at the end of the input (or after a failure).
+  Slot* take() {
+    std::lock_guard<std::mutex> reading(read_mutex_);
+    unsigned long seq;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      free_.wait(lock, [&] { return stop_ || next_read_ - next_write_ < slots_.size(); });
+      if (stop_) return nullptr;
+      seq = next_read_;
+    }
+    Slot& s = slots_[seq % slots_.size()];
+    s.n = 0;
+    s.first = lines_read_ + 1;
+    bool end = false;
+    while (s.n < s.lines.size() && (s.n == 0 || reader_.ready())) {
+      const LineReader::Status st = reader_.next(s.lines[s.n]);
+      if (st == LineReader::Status::End || st == LineReader::Status::Error) {
+        if (st == LineReader::Status::Error) read_error_ = reader_.error();
+        end = true;
+        break;
+      }
+      s.status[s.n] = st;
+      if (st != LineReader::Status::Line) s.lines[s.n].clear();
+      ++s.n;
+    }
+    lines_read_ += static_cast<long>(s.n);
+    s.flush = end || !reader_.ready();
+    s.done = false;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (end) stop_ = true;  // the threads stop taking; the groups taken are answered and written
+    if (s.n == 0) {  // nothing to answer: written (a flush) as soon as the groups before it are
+      s.done = true;
+      ++next_read_;
+      write_ready();
+      return nullptr;
+    }
+    ++next_read_;
+    return &s;
+  }
+
+  /// Marks the slot answered and writes every answered group that is next in input order.
+  void finish(Slot& s) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    s.done = true;
+    write_ready();
+  }
+
+  /// Writes the answered groups from next_write_ on (mutex_ held).
+  void write_ready() {
+    bool freed = false;
+    while (next_write_ < next_read_) {
+      Slot& s = slots_[next_write_ % slots_.size()];
+      if (!s.done) break;
+      write(s);
+      s.done = false;
+      ++next_write_;
+      freed = true;
+      if (out_.failed()) stop_ = true;
+    }
+    if (freed) free_.notify_all();
+  }
+
+  void write(Slot& s) {
+    for (std::size_t i = 0; i < s.n; ++i) {
+      const long line_number = s.first + static_cast<long>(i);
+      if (s.status[i] == LineReader::Status::TooLong)
+        write_error_line(out_, line_number, too_long_);
+      else if (s.status[i] == LineReader::Status::OutOfMemory)
+        write_error_line(out_, line_number, "out of memory while reading this line");
+      else if (s.answers[i].empty())  // not even the short error fitted (relpos::io::answer_batch_line)
+        write_error_line(out_, line_number, relpos::io::kOutOfMemoryNoIdMessage);
+      else
+        out_.write(s.answers[i]);
+      out_.write("\n");
+    }
+    for (std::size_t i = 0; i < s.n; ++i) {  // a rare long line does not hold its memory for the whole run
+      if (s.lines[i].capacity() > kKeep) std::string().swap(s.lines[i]);
+      if (s.answers[i].capacity() > kKeep) {
+        std::string().swap(s.answers[i]);
+        try {
+          s.answers[i].reserve(kAnswerReserve);
+        } catch (const std::bad_alloc&) {  // answer_batch_line tries again
+        }
+      }
+    }
+    if (s.flush) out_.flush();
+  }
+
+  LineReader& reader_;
+  Output& out_;
+  const relpos::io::BatchOptions& options_;
+  const std::string too_long_;
+  std::vector<Slot> slots_;  // group seq is in slots_[seq % size]
+  std::mutex read_mutex_;    // one reader at a time; held before mutex_, never after
+  std::mutex mutex_;         // the slots' states, the counters and the output
+  std::condition_variable free_;
+  unsigned long next_read_ = 0, next_write_ = 0;  // groups taken; groups written
+  long lines_read_ = 0;                           // under read_mutex_
+  int read_error_ = 0;                            // under read_mutex_
+  bool stop_ = false;
+};
 
 }  // namespace
 
@@ -261,56 +404,13 @@ int run_batch(Args& args) {
   LineReader reader(fd, options.max_line_bytes);
   Output out;
   WorkerPool pool(threads);
-  const std::string too_long = relpos::io::too_long_message(options.max_line_bytes);
-  // Lines are answered in chunks (on the threads) and written in input order; the output is flushed
-  // whenever the input has nothing more ready, so interactive use is answered line by line.
-  const std::size_t chunk = threads > 1 ? 64 * std::size_t(threads) : 16;
-  std::vector<std::string> lines(chunk), answers(chunk);  // reused: see answer_all
-  std::vector<LineReader::Status> status(chunk);          // per line: read, or refused while reading
-  for (auto& a : answers) a.reserve(kAnswerReserve);      // room for an out-of-memory line
-  long number = 0;
-  for (bool more = true; more;) {
-    std::size_t n = 0;
-    while (n < chunk && (n == 0 || reader.ready())) {
-      status[n] = reader.next(lines[n]);
-      if (status[n] == LineReader::Status::End) {
-        more = false;
-        break;
-      }
-      if (status[n] == LineReader::Status::Error) {
-        out.flush();
-        std::cerr << "relpos: error reading '" << name << "': " << std::strerror(reader.error()) << "\n";
-        return kExitIo;
-      }
-      if (status[n] != LineReader::Status::Line) lines[n].clear();
-      ++n;
-    }
-    answer_all(lines, n, number + 1, options, pool, answers);
-    for (std::size_t i = 0; i < n; ++i) {
-      const long line_number = number + 1 + static_cast<long>(i);
-      if (status[i] == LineReader::Status::TooLong)
-        write_error_line(out, line_number, too_long);
-      else if (status[i] == LineReader::Status::OutOfMemory)
-        write_error_line(out, line_number, "out of memory while reading this line");
-      else if (answers[i].empty())  // not even the short error fitted (relpos::io::answer_batch_line)
-        write_error_line(out, line_number, relpos::io::kOutOfMemoryNoIdMessage);
-      else
-        out.write(answers[i]);
-      out.write("\n");
-    }
-    number += static_cast<long>(n);
-    for (std::size_t i = 0; i < n; ++i) {  // a rare long line does not hold its memory for the whole run
-      if (lines[i].capacity() > (std::size_t(1) << 20)) std::string().swap(lines[i]);
-      if (answers[i].capacity() > (std::size_t(1) << 20)) {
-        std::string().swap(answers[i]);
-        try {
-          answers[i].reserve(kAnswerReserve);
-        } catch (const std::bad_alloc&) {  // answer_batch_line tries again
-        }
-      }
-    }
-    if (!more || !reader.ready()) out.flush();
-    if (out.failed()) return out.report_failure();
+  BatchPipeline pipeline(reader, out, options, pool.threads(), relpos::io::too_long_message(options.max_line_bytes));
+  pool.run_on_each([&](unsigned) { pipeline.work(); });
+  if (out.failed()) return out.report_failure();
+  if (pipeline.read_error() != 0) {
+    out.flush();
+    std::cerr << "relpos: error reading '" << name << "': " << std::strerror(pipeline.read_error()) << "\n";
+    return kExitIo;
   }
   return out.flush() ? kExitOk : out.report_failure();
 }
