@@ -80,6 +80,13 @@ std::size_t value_end(std::string_view s, std::size_t i) {
 struct Member {
   std::string_view key;  ///< one of the known keys
   std::string_view value;
+  bool fast = false;  ///< a quadric the fast reader took (FastQuadrics holds the last one of each key)
+};
+
+/// The quadrics of a line as the fast reader took them while the line was scanned.
+struct FastQuadrics {
+  std::optional<Ellipsoid> ellipsoid;
+  std::optional<Paraboloid> paraboloid;
 };
 
 bool valid_utf8(std::string_view s) {
@@ -97,15 +104,16 @@ bool valid_utf8(std::string_view s) {
 
 /// The name of a key given as its JSON text "...": the text between the quotes when it has no
 /// escape, control character or non-ASCII byte (what every key of a well-formed line is), else the
-/// general parser's reading.
-std::string key_name(std::string_view key_text) {
+/// general parser's reading, kept in `storage`.
+std::string_view key_name(std::string_view key_text, std::string& storage) {
   bool plain = true;
   for (std::size_t k = 1; k + 1 < key_text.size() && plain; ++k) {
     const auto c = static_cast<unsigned char>(key_text[k]);
     plain = c >= 0x20 && c < 0x80 && c != '\\';
   }
-  if (plain) return std::string(key_text.substr(1, key_text.size() - 2));
-  return Json::parse(key_text).get<std::string>();
+  if (plain) return key_text.substr(1, key_text.size() - 2);
+  storage = Json::parse(key_text).get<std::string>();
+  return storage;
 }
 
 /// Length of the valid UTF-8 sequence at s[i] (1 to 4), or 0 (what the JSON parser refuses:
@@ -294,7 +302,8 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
   // Scan the members; all structural errors are reported by the parser's message on the whole line.
   Member members[4];
   std::size_t count = 0;
-  std::string unknown, duplicate;
+  std::string unknown, duplicate, key_storage;
+  FastQuadrics fast;
   i = skip_ws(line, i + 1);
   if (i < line.size() && line[i] == '}') {
     i = skip_ws(line, i + 1);
@@ -307,25 +316,32 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
       i = skip_ws(line, key_end);
       if (i >= line.size() || line[i] != ':') invalid_json(line);
       i = skip_ws(line, i + 1);
-      const std::size_t end = value_end(line, i);
+      std::string_view key;
+      try {
+        key = key_name(key_text, key_storage);
+      } catch (const nlohmann::json::exception&) {
+        invalid_json(line);
+      }
+      // A quadric is read by the fast reader as the line is scanned: its end comes with it.
+      std::size_t end = std::string_view::npos;
+      bool taken = false;
+      if (key == "ellipsoid")
+        taken = (fast.ellipsoid = detail::fast_ellipsoid(line.substr(i), options.numbers_as_doubles, &end)).has_value();
+      else if (key == "paraboloid" && !fixed)
+        taken = (fast.paraboloid = detail::fast_paraboloid(line.substr(i), options.numbers_as_doubles, &end)).has_value();
+      end = end == std::string_view::npos ? value_end(line, i) : i + end;
       if (end == std::string_view::npos) invalid_json(line);
       const std::string_view value = line.substr(i, end - i);
       // nlohmann skips a byte order mark at the start of what it parses; inside a line it is not JSON.
       if (value.substr(0, 3) == "\xEF\xBB\xBF") invalid_json(line);
-      std::string key;
-      try {
-        key = key_name(key_text);
-      } catch (const nlohmann::json::exception&) {
-        invalid_json(line);
-      }
-      static const char* const kKeys[] = {"id", "ellipsoid", "paraboloid", "comment"};
+      static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment"};
       bool known = false;
-      for (const char* k : kKeys) {
+      for (const std::string_view k : kKeys) {
         if (key != k || (fixed && key == "paraboloid")) continue;
         known = true;
         for (std::size_t m = 0; m < count; ++m)
           if (members[m].key == k && duplicate.empty()) duplicate = key;
-        if (count < 4) members[count++] = Member{k, value};
+        if (count < 4) members[count++] = Member{k, value, taken};
       }
       if (!known) {
         if (unknown.empty()) unknown = key.substr(0, 40);
@@ -377,14 +393,9 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
   read.max_elements = kMaxQuadricEntries;
   read.start_depth = 1;
   Json ellipsoid, paraboloid;
-  std::optional<Ellipsoid> fast_e;
-  std::optional<Paraboloid> fast_p;
   for (std::size_t m = 0; m < count; ++m) {
     const Member& x = members[m];
-    if (x.key != "ellipsoid" && x.key != "paraboloid") continue;
-    if (x.key == "ellipsoid" ? (fast_e = detail::fast_ellipsoid(x.value, read.doubles)).has_value()
-                             : (fast_p = detail::fast_paraboloid(x.value, read.doubles)).has_value())
-      continue;
+    if ((x.key != "ellipsoid" && x.key != "paraboloid") || x.fast) continue;
     try {
       (x.key == "ellipsoid" ? ellipsoid : paraboloid) = detail::parse_json(x.value, read);
     } catch (const detail::JsonSyntaxError&) {
@@ -400,10 +411,11 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
     throw InputError("unknown key \"" + unknown + "\"" +
                      (fixed ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
                             : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")"));
-  if (!fast_e && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
-  if (!fixed && !fast_p && paraboloid.is_null()) throw InputError("paraboloid: missing");
-  out.ellipsoid = fast_e ? std::move(fast_e) : ellipsoid_from_json(ellipsoid, "ellipsoid");
-  if (!fixed) out.paraboloid = fast_p ? std::move(fast_p) : paraboloid_from_json(paraboloid, "paraboloid");
+  if (!fast.ellipsoid && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
+  if (!fixed && !fast.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
+  out.ellipsoid = fast.ellipsoid ? std::move(fast.ellipsoid) : ellipsoid_from_json(ellipsoid, "ellipsoid");
+  if (!fixed)
+    out.paraboloid = fast.paraboloid ? std::move(fast.paraboloid) : paraboloid_from_json(paraboloid, "paraboloid");
   check_normalized_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
 }
 

@@ -64,6 +64,9 @@ class Reader {
     skip_ws();
     return root >= 0 && i_ == s_.size() ? root : -1;
   }
+  /// The root node of the value at the start of the text, or -1; the value ends at end().
+  int parse_prefix() { return value(0); }
+  std::size_t end() const { return i_; }
   const Node& node(int k) const { return nodes_[k]; }
 
  private:
@@ -442,12 +445,15 @@ int paraboloid_entries(const Reader& r, int root, Entries& x, Recipe& recipe) {
 /// The storage of the quadric of the text, or nullopt: `entries` is ellipsoid_entries or
 /// paraboloid_entries.
 template <class Entries_of>
-std::optional<relpos::detail::QuadricMatrix> read_quadric(std::string_view text, bool doubles, Entries_of entries) {
+std::optional<relpos::detail::QuadricMatrix> read_quadric(std::string_view text, bool doubles, std::size_t* end,
+                                                          Entries_of entries) {
   Entries x;
   Recipe recipe;
   recipe.orientation = 0;
   Reader r(text, doubles);
-  if (const int root = r.parse(); root >= 0) {
+  const int root = end ? r.parse_prefix() : r.parse();
+  if (end) *end = root >= 0 ? r.end() : std::string_view::npos;
+  if (root >= 0) {
     CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false>: rounding towards +inf
     r.enclose_decimals();
     recipe.orientation = entries(r, root, x, recipe);
@@ -458,14 +464,14 @@ std::optional<relpos::detail::QuadricMatrix> read_quadric(std::string_view text,
 
 }  // namespace
 
-std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles) {
-  auto m = read_quadric(text, doubles, ellipsoid_entries);
+std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles, std::size_t* end) {
+  auto m = read_quadric(text, doubles, end, ellipsoid_entries);
   if (!m) return std::nullopt;
   return relpos::detail::make_ellipsoid(std::move(*m));
 }
 
-std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles) {
-  auto m = read_quadric(text, doubles, paraboloid_entries);
+std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles, std::size_t* end) {
+  auto m = read_quadric(text, doubles, end, paraboloid_entries);
   if (!m) return std::nullopt;
   return relpos::detail::make_paraboloid(std::move(*m));
 }
