@@ -225,7 +225,10 @@ class BatchPipeline {
  public:
   BatchPipeline(LineReader& reader, Output& out, const relpos::io::BatchOptions& options, unsigned threads,
                 std::string too_long)
-      : reader_(reader), out_(out), options_(options), too_long_(std::move(too_long)),
+      : reader_(reader),
+        out_(out),
+        options_(options),
+        too_long_(std::move(too_long)),
         slots_(kSlotsPerThread * std::size_t(threads)) {
     const std::size_t size = threads > 1 ? kGroup : kGroupOneThread;
     for (Slot& s : slots_) {  // every buffer kept from group to group: a line costs no allocation
@@ -243,8 +246,7 @@ class BatchPipeline {
       if (!slot) return;
       for (std::size_t i = 0; i < slot->n; ++i)
         if (slot->status[i] == LineReader::Status::Line)
-          relpos::io::answer_batch_line(slot->lines[i], slot->first + static_cast<long>(i), options_,
-                                        slot->answers[i]);
+          relpos::io::answer_batch_line(slot->lines[i], slot->first + static_cast<long>(i), options_, slot->answers[i]);
       finish(*slot);
     }
   }
@@ -259,7 +261,7 @@ class BatchPipeline {
     std::vector<std::string> lines, answers;
     std::vector<LineReader::Status> status;  // per line: read, or refused while reading
     std::size_t n = 0;
-    long first = 0;     // the number of the first line
+    long first = 0;      // the number of the first line
     bool flush = false;  // flush the output after this group
     bool done = false;   // answered, not yet written
   };
@@ -294,7 +296,7 @@ class BatchPipeline {
     s.done = false;
     std::lock_guard<std::mutex> lock(mutex_);
     if (end) stop_ = true;  // the threads stop taking; the groups taken are answered and written
-    if (s.n == 0) {  // nothing to answer: written (a flush) as soon as the groups before it are
+    if (s.n == 0) {         // nothing to answer: written (a flush) as soon as the groups before it are
       s.done = true;
       ++next_read_;
       write_ready();

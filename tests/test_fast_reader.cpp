@@ -212,3 +212,46 @@ TEST_CASE("fast reader: its numbers keep the normalized size far below the limit
   REQUIRE(relpos::normalized_bits(p->matrix()) <= 1500);
   relpos::check_normalized_pair_size(*e, *p);  // does not build the matrices, does not throw
 }
+
+TEST_CASE("fast reader: long digit runs, at most 19 significant digits, zeros", "[io][fast]") {
+  // Runs of eight digits and more are read eight at a time: around that and the 19-digit bound, the
+  // numbers taken are the general reader's, and more significant digits go to the general reader.
+  const std::string ok[] = {"0.1234567890123456789",     "1234567890123456789",           "1234567890123456789000000",
+                            "1234567890123456789.000",   "0.000000001234567890123456789", "12345678.12345678",
+                            "1000000000000000001",       "10000000000000000010e-12",      "99999999.9999999990000e-5",
+                            "-0.0000000000012345678E+3", "7.00000000000000000000000000"};
+  for (const std::string& x : ok) {
+    const std::string abs = x.substr(x[0] == '-' ? 1 : 0);
+    check_pair("{\"sphere\":{\"center\":" + vec3(x, "-" + abs, "0.5") + ",\"radius\":" + abs + "}}",
+               "{\"vertex\":" + vec3(x, "0", x) + ",\"a\":1.5,\"b\":" + abs + "}", false);
+  }
+  for (const char* x : {"12345678901234567891", "0.12345678901234567891", "1234567890123456789.1",
+                        "10000000000000000001", "100000000000000000010e-12", "1.2345678901234567891e5"})
+    REQUIRE_FALSE(fast_ellipsoid("{\"sphere\":{\"center\":[0,0,0],\"radius\":" + std::string(x) + "}}", false));
+}
+
+TEST_CASE("fast reader: a value at the start of a longer text, with its end", "[io][fast]") {
+  using relpos::io::detail::fast_ellipsoid_at;
+  using relpos::io::detail::fast_paraboloid_at;
+  const std::string sphere = R"({"sphere":{"center":[0.1,0,12345678.123456789],"radius":1}})";
+  const std::string cup = "[[1,0,0,0],[0,2.5,0,0],[0,0,0,-0.5],[0,0,-0.5,0]]";
+  for (const std::string tail : {"", "}", ",\"id\":1}", " ]", "x"}) {
+    std::size_t end = 0;
+    const auto e = fast_ellipsoid_at(sphere + tail, false, end);
+    REQUIRE(e);
+    REQUIRE(end == sphere.size());
+    REQUIRE(e->matrix() == fast_ellipsoid(sphere, false)->matrix());
+    const auto p = fast_paraboloid_at(cup + tail, false, end);
+    REQUIRE(p);
+    REQUIRE(end == cup.size());
+  }
+  // Scanned but not taken (an ellipsoid's text as a paraboloid): the end is still known.
+  std::size_t end = 0;
+  REQUIRE_FALSE(fast_paraboloid_at(sphere + ",", false, end));
+  REQUIRE(end == sphere.size());
+  // Not scanned (an escape in a key, a string value): no end.
+  for (const char* text : {R"({"sph\u0065re":{"center":[0,0,0],"radius":1}},)", R"("x",)", "[1,2,", "-"}) {
+    REQUIRE_FALSE(fast_ellipsoid_at(text, false, end));
+    REQUIRE(end == std::string::npos);
+  }
+}

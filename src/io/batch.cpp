@@ -326,9 +326,11 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
       std::size_t end = std::string_view::npos;
       bool taken = false;
       if (key == "ellipsoid")
-        taken = (fast.ellipsoid = detail::fast_ellipsoid(line.substr(i), options.numbers_as_doubles, &end)).has_value();
+        taken =
+            (fast.ellipsoid = detail::fast_ellipsoid_at(line.substr(i), options.numbers_as_doubles, end)).has_value();
       else if (key == "paraboloid" && !fixed)
-        taken = (fast.paraboloid = detail::fast_paraboloid(line.substr(i), options.numbers_as_doubles, &end)).has_value();
+        taken =
+            (fast.paraboloid = detail::fast_paraboloid_at(line.substr(i), options.numbers_as_doubles, end)).has_value();
       end = end == std::string_view::npos ? value_end(line, i) : i + end;
       if (end == std::string_view::npos) invalid_json(line);
       const std::string_view value = line.substr(i, end - i);

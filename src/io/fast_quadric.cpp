@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <new>
+#include <type_traits>
 
 #include "algebra/shape_filter.hpp"
 
@@ -26,6 +28,21 @@ constexpr int kMaxNodes = 32;
 constexpr int kMaxDepth = 3;
 constexpr int kMaxDigits = 19;    ///< significant digits: m < 10^19 < 2^64
 constexpr int kMaxExponent = 30;  ///< |e| after trailing zeros are removed (the size bound in the header)
+
+constexpr std::uint64_t kNotDigits = ~std::uint64_t(0);
+
+/// The value of the eight decimal digits at p, or kNotDigits when one of the bytes is not a digit
+/// (eight digits at once: the long numbers of printed doubles are most of a line's bytes).
+std::uint64_t eight_digits(const char* p) {
+  std::uint64_t v = 0;
+  for (int k = 7; k >= 0; --k) v = v << 8 | static_cast<unsigned char>(p[k]);  // little-endian: one load
+  // Each byte is 0x30..0x39: its high nibble is 3 and adding 6 does not carry out of the low nibble.
+  if (((v & 0xF0F0F0F0F0F0F0F0) | (((v + 0x0606060606060606) & 0xF0F0F0F0F0F0F0F0) >> 4)) != 0x3333333333333333)
+    return kNotDigits;
+  v = (v & 0x0F0F0F0F0F0F0F0F) * 2561 >> 8;                // pairs: 10 a + b in each 16-bit lane
+  v = (v & 0x00FF00FF00FF00FF) * 6553601 >> 16;            // quadruples in each 32-bit lane
+  return (v & 0x0000FFFF0000FFFF) * 42949672960001 >> 32;  // the eight digits
+}
 
 /// Powers of ten that are exact doubles.
 constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
@@ -67,7 +84,7 @@ class Reader {
   /// The root node of the value at the start of the text, or -1; the value ends at end().
   int parse_prefix() { return value(0); }
   std::size_t end() const { return i_; }
-  const Node& node(int k) const { return nodes_[k]; }
+  const Node& node(int k) const { return nodes_[k].node; }
 
  private:
   bool at_end() const { return i_ >= s_.size(); }
@@ -79,7 +96,8 @@ class Reader {
 
   int new_node(Kind kind) {
     if (n_ == kMaxNodes) return -1;
-    nodes_[n_].kind = kind;
+    new (&nodes_[n_].node) Node();
+    nodes_[n_].node.kind = kind;
     return n_++;
   }
 
@@ -125,15 +143,15 @@ class Reader {
         if (at_end() || peek() != ':') return -1;
         ++i_;
         skip_ws();
-        for (int k = nodes_[self].child; k >= 0; k = nodes_[k].next)
-          if (nodes_[k].key == name) return -1;  // a duplicate key: the general reader's error
+        for (int k = nodes_[self].node.child; k >= 0; k = nodes_[k].node.next)
+          if (nodes_[k].node.key == name) return -1;  // a duplicate key: the general reader's error
       }
       const int child = value(depth + 1);
       if (child < 0) return -1;
-      nodes_[child].key = name;
-      (last < 0 ? nodes_[self].child : nodes_[last].next) = child;
+      nodes_[child].node.key = name;
+      (last < 0 ? nodes_[self].node.child : nodes_[last].node.next) = child;
       last = child;
-      ++nodes_[self].count;
+      ++nodes_[self].node.count;
       skip_ws();
       if (at_end()) return -1;
       if (peek() == ',') {
@@ -149,61 +167,72 @@ class Reader {
 
   /// A JSON number (RFC 8259 grammar, checked here), read as its decimal or its nearest double.
   int number() {
-    const std::size_t start = i_;
+    const char* const first = s_.data() + i_;
+    const char* const last = s_.data() + s_.size();
+    const char* p = first;
     Number x;
-    if (!at_end() && peek() == '-') {
+    if (p < last && *p == '-') {
       x.neg = true;
-      ++i_;
+      ++p;
     }
-    int zeros = 0, digits = 0, scale = 0;  // pending zeros, significant digits kept, exponent shift
-    auto feed = [&](char c) {
-      if (c == '0') {
-        if (digits > 0) ++zeros;
-        return true;
+    // The significant digits go into m (at most kMaxDigits of them; zeros after those only move the
+    // exponent), `scale` counts the fraction's digits and `zeros` the zeros dropped from m's end.
+    int significant = 0, scale = 0, zeros = 0;
+    const auto digits = [&](bool fraction) {
+      for (;;) {
+        if (x.m != 0 && significant + 8 <= kMaxDigits && last - p >= 8) {
+          if (const std::uint64_t block = eight_digits(p); block != kNotDigits) {
+            x.m = x.m * 100000000 + block;
+            significant += 8;
+            p += 8;
+            if (fraction) scale -= 8;
+            continue;
+          }
+        }
+        if (p == last || static_cast<unsigned>(*p - '0') > 9) return true;
+        const auto d = static_cast<unsigned>(*p++ - '0');
+        if (fraction) --scale;
+        if (x.m == 0 && d == 0) continue;  // a leading zero
+        if (significant == kMaxDigits) {
+          if (d != 0) return false;  // more than kMaxDigits significant digits
+          ++zeros;
+          continue;
+        }
+        x.m = x.m * 10 + d;
+        ++significant;
       }
-      digits += zeros + 1;
-      if (digits > kMaxDigits) return false;
-      for (; zeros > 0; --zeros) x.m *= 10;
-      x.m = x.m * 10 + static_cast<std::uint64_t>(c - '0');
-      return true;
     };
-    if (!digit()) return -1;
-    if (peek() == '0') {
-      ++i_;
-    } else {
-      while (digit())
-        if (!feed(s_[i_++])) return -1;
-    }
-    if (!at_end() && peek() == '.') {
-      ++i_;
-      if (!digit()) return -1;
-      while (digit()) {
-        if (!feed(s_[i_++])) return -1;
-        --scale;
-      }
+    if (p == last || static_cast<unsigned>(*p - '0') > 9) return -1;
+    if (*p == '0')
+      ++p;
+    else if (!digits(false))
+      return -1;
+    if (p < last && *p == '.') {
+      ++p;
+      if (p == last || static_cast<unsigned>(*p - '0') > 9 || !digits(true)) return -1;
     }
     int exponent = 0;
-    if (!at_end() && (peek() == 'e' || peek() == 'E')) {
-      ++i_;
+    if (p < last && (*p == 'e' || *p == 'E')) {
+      ++p;
       bool negative = false;
-      if (!at_end() && (peek() == '+' || peek() == '-')) negative = s_[i_++] == '-';
-      if (!digit()) return -1;
-      int length = 0;
-      while (digit()) {
+      if (p < last && (*p == '+' || *p == '-')) negative = *p++ == '-';
+      if (p == last || static_cast<unsigned>(*p - '0') > 9) return -1;
+      for (int length = 0; p < last && static_cast<unsigned>(*p - '0') <= 9; ++p) {
         if (++length > 5) return -1;
-        exponent = exponent * 10 + (s_[i_++] - '0');
+        exponent = exponent * 10 + (*p - '0');
       }
       if (negative) exponent = -exponent;
     }
-    if (!at_end() && peek() != ',' && peek() != ']' && peek() != '}' && peek() != ' ' && peek() != '\t' &&
-        peek() != '\n' && peek() != '\r')
+    if (p < last && *p != ',' && *p != ']' && *p != '}' && *p != ' ' && *p != '\t' && *p != '\n' && *p != '\r')
       return -1;
+    i_ += static_cast<std::size_t>(p - first);
+    while (x.m != 0 && x.m % 10 == 0) x.m /= 10, ++zeros;  // m without trailing zeros: one identity a value
     const int self = new_node(Kind::Number);
     if (self < 0) return -1;
     if (doubles_) {  // round to nearest here: the caller's guard starts after parse()
       double d = 0;
-      const auto r = std::from_chars(s_.data() + start, s_.data() + i_, d);
-      if (r.ec != std::errc() || r.ptr != s_.data() + i_) return -1;
+      const auto r = std::from_chars(first, p, d);
+      if (r.ec != std::errc() || r.ptr != p) return -1;
       if (d != 0 && !(std::fabs(d) >= 0x1p-100 && std::fabs(d) <= 0x1p100)) return -1;
       // The identity of a double: its bits, read through the same fields (exact symmetry, zeros).
       x = Number{};
@@ -219,7 +248,7 @@ class Reader {
       if (x.e > kMaxExponent || x.e < -kMaxExponent) return -1;
       decimals_ = true;  // enclosed by enclose_decimals()
     }
-    nodes_[self].number = x;
+    nodes_[self].node.number = x;
     return self;
   }
 
@@ -230,8 +259,8 @@ class Reader {
   void enclose_decimals() {
     if (!decimals_) return;
     for (int k = 0; k < n_; ++k) {
-      Number& x = nodes_[k].number;
-      if (nodes_[k].kind != Kind::Number || x.m == 0) continue;
+      Number& x = nodes_[k].node.number;
+      if (nodes_[k].node.kind != Kind::Number || x.m == 0) continue;
       const I m = x.m <= (std::uint64_t(1) << 53)
                       ? I(static_cast<double>(x.m))
                       : I(static_cast<double>(x.m >> 11)) * I(2048.0) + I(static_cast<double>(x.m & 2047));
@@ -248,7 +277,12 @@ class Reader {
   std::size_t i_ = 0;
   int n_ = 0;
   bool decimals_ = false;
-  Node nodes_[kMaxNodes];
+  union Slot {  // storage: a node is made when it is read (most of the kMaxNodes are never used)
+    Slot() {}
+    Node node;
+  };
+  static_assert(std::is_trivially_destructible<Node>::value, "a Slot does not destroy its node");
+  Slot nodes_[kMaxNodes];
 };
 
 /// The child of an object named `name`, or -1.
@@ -443,7 +477,7 @@ int paraboloid_entries(const Reader& r, int root, Entries& x, Recipe& recipe) {
 }
 
 /// The storage of the quadric of the text, or nullopt: `entries` is ellipsoid_entries or
-/// paraboloid_entries.
+/// paraboloid_entries. With `end`, the text starts with the value (fast_ellipsoid_at).
 template <class Entries_of>
 std::optional<relpos::detail::QuadricMatrix> read_quadric(std::string_view text, bool doubles, std::size_t* end,
                                                           Entries_of entries) {
@@ -462,18 +496,34 @@ std::optional<relpos::detail::QuadricMatrix> read_quadric(std::string_view text,
   return storage(x, recipe, doubles);
 }
 
-}  // namespace
-
-std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles, std::size_t* end) {
+std::optional<Ellipsoid> read_ellipsoid(std::string_view text, bool doubles, std::size_t* end) {
   auto m = read_quadric(text, doubles, end, ellipsoid_entries);
   if (!m) return std::nullopt;
   return relpos::detail::make_ellipsoid(std::move(*m));
 }
 
-std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles, std::size_t* end) {
+std::optional<Paraboloid> read_paraboloid(std::string_view text, bool doubles, std::size_t* end) {
   auto m = read_quadric(text, doubles, end, paraboloid_entries);
   if (!m) return std::nullopt;
   return relpos::detail::make_paraboloid(std::move(*m));
+}
+
+}  // namespace
+
+std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles) {
+  return read_ellipsoid(text, doubles, nullptr);
+}
+
+std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles) {
+  return read_paraboloid(text, doubles, nullptr);
+}
+
+std::optional<Ellipsoid> fast_ellipsoid_at(std::string_view text, bool doubles, std::size_t& end) {
+  return read_ellipsoid(text, doubles, &end);
+}
+
+std::optional<Paraboloid> fast_paraboloid_at(std::string_view text, bool doubles, std::size_t& end) {
+  return read_paraboloid(text, doubles, &end);
 }
 
 }  // namespace relpos::io::detail

@@ -34,12 +34,15 @@ namespace relpos::io::detail {
 
 /// The ellipsoid described by the JSON text, or nullopt when this reader does not take it.
 /// `doubles`: each number is the double nearest its text (--numbers double).
-/// With `end`, the text starts with the value and may go on after it (the rest of a batch line):
-/// *end is set to the value's length when the value is one this reader scans (valid JSON, whatever
-/// the form), else to npos; a caller that scans a line needs no second pass over the value.
-std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles, std::size_t* end = nullptr);
+std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles);
 
 /// The elliptic paraboloid described by the JSON text, or nullopt (as fast_ellipsoid).
-std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles, std::size_t* end = nullptr);
+std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles);
+
+/// The same for a text that starts with the value and may go on after it (the rest of a batch
+/// line): `end` is set to the value's length when the value is one this reader scans (valid JSON,
+/// whatever the form), else to npos, so that a caller scanning a line needs no second pass over it.
+std::optional<Ellipsoid> fast_ellipsoid_at(std::string_view text, bool doubles, std::size_t& end);
+std::optional<Paraboloid> fast_paraboloid_at(std::string_view text, bool doubles, std::size_t& end);
 
 }  // namespace relpos::io::detail
