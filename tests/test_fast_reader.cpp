@@ -235,23 +235,28 @@ TEST_CASE("fast reader: a value at the start of a longer text, with its end", "[
   using relpos::io::detail::fast_paraboloid_at;
   const std::string sphere = R"({"sphere":{"center":[0.1,0,12345678.123456789],"radius":1}})";
   const std::string cup = "[[1,0,0,0],[0,2.5,0,0],[0,0,0,-0.5],[0,0,-0.5,0]]";
+  std::optional<Ellipsoid> e;
+  std::optional<Paraboloid> p;
   for (const std::string tail : {"", "}", ",\"id\":1}", " ]", "x"}) {
     std::size_t end = 0;
-    const auto e = fast_ellipsoid_at(sphere + tail, false, end);
+    REQUIRE(fast_ellipsoid_at(sphere + tail, false, end, e));
     REQUIRE(e);
     REQUIRE(end == sphere.size());
     REQUIRE(e->matrix() == fast_ellipsoid(sphere, false)->matrix());
-    const auto p = fast_paraboloid_at(cup + tail, false, end);
+    REQUIRE(fast_paraboloid_at(cup + tail, false, end, p));
     REQUIRE(p);
     REQUIRE(end == cup.size());
   }
-  // Scanned but not taken (an ellipsoid's text as a paraboloid): the end is still known.
+  // Scanned but not taken (an ellipsoid's text as a paraboloid): the end is still known, and the
+  // quadric left empty.
   std::size_t end = 0;
-  REQUIRE_FALSE(fast_paraboloid_at(sphere + ",", false, end));
+  REQUIRE_FALSE(fast_paraboloid_at(sphere + ",", false, end, p));
+  REQUIRE_FALSE(p);
   REQUIRE(end == sphere.size());
   // Not scanned (an escape in a key, a string value): no end.
   for (const char* text : {R"({"sph\u0065re":{"center":[0,0,0],"radius":1}},)", R"("x",)", "[1,2,", "-"}) {
-    REQUIRE_FALSE(fast_ellipsoid_at(text, false, end));
+    REQUIRE_FALSE(fast_ellipsoid_at(text, false, end, e));
+    REQUIRE_FALSE(e);
     REQUIRE(end == std::string::npos);
   }
 }

@@ -80,13 +80,7 @@ std::size_t value_end(std::string_view s, std::size_t i) {
 struct Member {
   std::string_view key;  ///< one of the known keys
   std::string_view value;
-  bool fast = false;  ///< a quadric the fast reader took (FastQuadrics holds the last one of each key)
-};
-
-/// The quadrics of a line as the fast reader took them while the line was scanned.
-struct FastQuadrics {
-  std::optional<Ellipsoid> ellipsoid;
-  std::optional<Paraboloid> paraboloid;
+  bool fast = false;  ///< a quadric the fast reader took (into the line's quadric of that key)
 };
 
 bool valid_utf8(std::string_view s) {
@@ -290,6 +284,8 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
                BatchLine& out, std::string_view* id) {
   out.id = std::to_string(line_number);
   if (id) *id = out.id;
+  out.ellipsoid.reset();  // the fast reader makes the quadrics here as the line is scanned
+  out.paraboloid.reset();
   const std::string_view line = normalize_line(raw, line_number, options.max_line_bytes);
   std::size_t i = skip_ws(line, 0);
   if (i == line.size()) throw InputError("empty line");
@@ -303,7 +299,6 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
   Member members[4];
   std::size_t count = 0;
   std::string unknown, duplicate, key_storage;
-  FastQuadrics fast;
   i = skip_ws(line, i + 1);
   if (i < line.size() && line[i] == '}') {
     i = skip_ws(line, i + 1);
@@ -326,11 +321,9 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
       std::size_t end = std::string_view::npos;
       bool taken = false;
       if (key == "ellipsoid")
-        taken =
-            (fast.ellipsoid = detail::fast_ellipsoid_at(line.substr(i), options.numbers_as_doubles, end)).has_value();
+        taken = detail::fast_ellipsoid_at(line.substr(i), options.numbers_as_doubles, end, out.ellipsoid);
       else if (key == "paraboloid" && !fixed)
-        taken =
-            (fast.paraboloid = detail::fast_paraboloid_at(line.substr(i), options.numbers_as_doubles, end)).has_value();
+        taken = detail::fast_paraboloid_at(line.substr(i), options.numbers_as_doubles, end, out.paraboloid);
       end = end == std::string_view::npos ? value_end(line, i) : i + end;
       if (end == std::string_view::npos) invalid_json(line);
       const std::string_view value = line.substr(i, end - i);
@@ -413,11 +406,10 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
     throw InputError("unknown key \"" + unknown + "\"" +
                      (fixed ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
                             : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")"));
-  if (!fast.ellipsoid && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
-  if (!fixed && !fast.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
-  out.ellipsoid = fast.ellipsoid ? std::move(fast.ellipsoid) : ellipsoid_from_json(ellipsoid, "ellipsoid");
-  if (!fixed)
-    out.paraboloid = fast.paraboloid ? std::move(fast.paraboloid) : paraboloid_from_json(paraboloid, "paraboloid");
+  if (!out.ellipsoid && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
+  if (!fixed && !out.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
+  if (!out.ellipsoid) out.ellipsoid = ellipsoid_from_json(ellipsoid, "ellipsoid");
+  if (!fixed && !out.paraboloid) out.paraboloid = paraboloid_from_json(paraboloid, "paraboloid");
   check_normalized_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
 }
 

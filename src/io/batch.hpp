@@ -31,7 +31,8 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 /// {"id", "ellipsoid", "comment"}, and the size limit is checked against *fixed). The top-level
 /// object is scanned once: the id's text is kept, "comment" is validated without being stored,
 /// duplicate keys are refused. out.id is set (to the line number at first, to the id once it is
-/// read) before any InputError is thrown, so that errors echo the id.
+/// read) before any InputError is thrown, so that errors echo the id; out's quadrics are the line's
+/// only when nothing is thrown.
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
                      BatchLine& out);
 

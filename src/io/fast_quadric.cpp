@@ -96,7 +96,7 @@ class Reader {
 
   int new_node(Kind kind) {
     if (n_ == kMaxNodes) return -1;
-    new (&nodes_[n_].node) Node();
+    new (&nodes_[n_].node) Node;  // its members' initializers; no zeroing of the whole node
     nodes_[n_].node.kind = kind;
     return n_++;
   }
@@ -476,11 +476,12 @@ int paraboloid_entries(const Reader& r, int root, Entries& x, Recipe& recipe) {
   return 1;
 }
 
-/// The storage of the quadric of the text, or nullopt: `entries` is ellipsoid_entries or
-/// paraboloid_entries. With `end`, the text starts with the value (fast_ellipsoid_at).
-template <class Entries_of>
-std::optional<relpos::detail::QuadricMatrix> read_quadric(std::string_view text, bool doubles, std::size_t* end,
-                                                          Entries_of entries) {
+/// The quadric of the text into `out` (made there: a quadric is a few hundred bytes), or false and
+/// `out` empty: `entries` is ellipsoid_entries or paraboloid_entries, `make` the matching
+/// make_ellipsoid or make_paraboloid. With `end`, the text starts with the value (fast_ellipsoid_at).
+template <class Q, class Entries_of, class Make>
+bool read_quadric(std::string_view text, bool doubles, std::size_t* end, Entries_of entries, Make make,
+                  std::optional<Q>& out) {
   Entries x;
   Recipe recipe;
   recipe.orientation = 0;
@@ -492,38 +493,34 @@ std::optional<relpos::detail::QuadricMatrix> read_quadric(std::string_view text,
     r.enclose_decimals();
     recipe.orientation = entries(r, root, x, recipe);
   }
-  if (recipe.orientation == 0) return std::nullopt;
-  return storage(x, recipe, doubles);
-}
-
-std::optional<Ellipsoid> read_ellipsoid(std::string_view text, bool doubles, std::size_t* end) {
-  auto m = read_quadric(text, doubles, end, ellipsoid_entries);
-  if (!m) return std::nullopt;
-  return relpos::detail::make_ellipsoid(std::move(*m));
-}
-
-std::optional<Paraboloid> read_paraboloid(std::string_view text, bool doubles, std::size_t* end) {
-  auto m = read_quadric(text, doubles, end, paraboloid_entries);
-  if (!m) return std::nullopt;
-  return relpos::detail::make_paraboloid(std::move(*m));
+  if (recipe.orientation == 0) {
+    out.reset();
+    return false;
+  }
+  out.emplace(make(storage(x, recipe, doubles)));
+  return true;
 }
 
 }  // namespace
 
 std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles) {
-  return read_ellipsoid(text, doubles, nullptr);
+  std::optional<Ellipsoid> e;
+  read_quadric(text, doubles, nullptr, ellipsoid_entries, relpos::detail::make_ellipsoid, e);
+  return e;
 }
 
 std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles) {
-  return read_paraboloid(text, doubles, nullptr);
+  std::optional<Paraboloid> p;
+  read_quadric(text, doubles, nullptr, paraboloid_entries, relpos::detail::make_paraboloid, p);
+  return p;
 }
 
-std::optional<Ellipsoid> fast_ellipsoid_at(std::string_view text, bool doubles, std::size_t& end) {
-  return read_ellipsoid(text, doubles, &end);
+bool fast_ellipsoid_at(std::string_view text, bool doubles, std::size_t& end, std::optional<Ellipsoid>& out) {
+  return read_quadric(text, doubles, &end, ellipsoid_entries, relpos::detail::make_ellipsoid, out);
 }
 
-std::optional<Paraboloid> fast_paraboloid_at(std::string_view text, bool doubles, std::size_t& end) {
-  return read_paraboloid(text, doubles, &end);
+bool fast_paraboloid_at(std::string_view text, bool doubles, std::size_t& end, std::optional<Paraboloid>& out) {
+  return read_quadric(text, doubles, &end, paraboloid_entries, relpos::detail::make_paraboloid, out);
 }
 
 }  // namespace relpos::io::detail

@@ -40,9 +40,10 @@ std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles);
 std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles);
 
 /// The same for a text that starts with the value and may go on after it (the rest of a batch
-/// line): `end` is set to the value's length when the value is one this reader scans (valid JSON,
-/// whatever the form), else to npos, so that a caller scanning a line needs no second pass over it.
-std::optional<Ellipsoid> fast_ellipsoid_at(std::string_view text, bool doubles, std::size_t& end);
-std::optional<Paraboloid> fast_paraboloid_at(std::string_view text, bool doubles, std::size_t& end);
+/// line), made in `out` (true), or false with `out` empty. `end` is set to the value's length when
+/// the value is one this reader scans (valid JSON, whatever the form), else to npos, so that a
+/// caller scanning a line needs no second pass over it.
+bool fast_ellipsoid_at(std::string_view text, bool doubles, std::size_t& end, std::optional<Ellipsoid>& out);
+bool fast_paraboloid_at(std::string_view text, bool doubles, std::size_t& end, std::optional<Paraboloid>& out);
 
 }  // namespace relpos::io::detail
