@@ -198,27 +198,42 @@ bool plain_number(std::string_view v) {
 /// twice). Anything else goes through the validating parser, which stores one token at a time.
 bool plainly_valid(std::string_view v) { return !v.empty() && (v.front() == '"' ? plain_string(v) : plain_number(v)); }
 
-/// The minimal report's members after the id, in the order of the full report's first members,
-/// by the report writer (the rule and stage texts made once).
-void append_minimal(const Classification& c, std::string& out) {
-  static const std::array<std::string, kRuleCount> rules = [] {
-    std::array<std::string, kRuleCount> r;
-    for (std::size_t k = 0; k < r.size(); ++k) r[k] = describe(static_cast<Rule>(k));
-    return r;
+/// The minimal report's members after the id, in the order of the full report's first members.
+/// Each piece (position and smallness, rule, stage) is written once by the report writer and
+/// copied from then on.
+void append_minimal(const Verdict& v, std::string& out) {
+  struct Texts {
+    std::array<std::array<std::string, 2>, kAllPositions.size()> head;  // by position and smallness
+    std::array<std::string, kRuleCount> rule;
+    std::array<std::string, kAllStages.size()> stage;  // with the closing brace
+  };
+  static const Texts texts = [] {
+    Texts t;
+    for (const Position p : kAllPositions)
+      for (const bool small : {false, true}) {
+        Verdict head;
+        head.position = p;
+        head.small = small;
+        detail::JsonWriter w(t.head[static_cast<std::size_t>(p)][small]);
+        detail::append_verdict_head(head, w);
+      }
+    for (std::size_t k = 0; k < kRuleCount; ++k) {
+      detail::JsonWriter w(t.rule[k]);
+      w.member("rule");
+      w.string(describe(static_cast<Rule>(k)));
+    }
+    for (const Stage st : kAllStages) {
+      std::string& text = t.stage[static_cast<std::size_t>(st)];
+      detail::JsonWriter w(text);
+      w.member("stage");
+      w.string(to_string(st));
+      text += '}';
+    }
+    return t;
   }();
-  static const std::array<std::string, kAllStages.size()> stages = [] {
-    std::array<std::string, kAllStages.size()> names;
-    for (Stage st : kAllStages) names[static_cast<std::size_t>(st)] = to_string(st);
-    return names;
-  }();
-  const Verdict& v = c.verdict;
-  detail::JsonWriter w(out);
-  detail::append_verdict_head(v, w);
-  w.member("rule");
-  w.string(rules.at(static_cast<std::size_t>(v.rule)));
-  w.member("stage");
-  w.string(stages[static_cast<std::size_t>(v.stage)]);
-  out += '}';
+  out += texts.head.at(static_cast<std::size_t>(v.position))[v.small];
+  out += texts.rule.at(static_cast<std::size_t>(v.rule));
+  out += texts.stage.at(static_cast<std::size_t>(v.stage));
 }
 
 /// Room in `out` for a long id and what follows it at once: growing past the id would copy it.
@@ -434,15 +449,18 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
       out.assign("{\"id\":").append(id).append(",").append(report, 1, std::string::npos);
       return;
     }
-    const Classification c = classify(*in.ellipsoid, *in.paraboloid, options.evidence);
-    reserve_for_id(out, id);
-    out.assign("{\"id\":").append(id);  // the id goes first
-    if (options.evidence == Evidence::Full) {
-      detail::JsonWriter w(out);
-      detail::append_classification(c, options.render, w);
-    } else {
-      append_minimal(c, out);
+    if (options.evidence == Evidence::Minimal) {  // the verdict alone: classify's, without its evidence
+      const Verdict v = decide_position(*in.ellipsoid, *in.paraboloid);
+      reserve_for_id(out, id);
+      out.assign("{\"id\":").append(id);  // the id goes first
+      append_minimal(v, out);
+      return;
     }
+    const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full);
+    reserve_for_id(out, id);
+    out.assign("{\"id\":").append(id);
+    detail::JsonWriter w(out);
+    detail::append_classification(c, options.render, w);
     return;
   } catch (const InputError& err) {
     if (write_error(out, id, err.what())) return;
