@@ -260,3 +260,29 @@ TEST_CASE("fast reader: a value at the start of a longer text, with its end", "[
     REQUIRE(end == std::string::npos);
   }
 }
+
+TEST_CASE("fast reader: spheres and paraboloids on the axis over the whole exponent range", "[io][fast]") {
+  // The exact matrices of these forms are written from the decimals' digits and powers of 2 and 5
+  // (fast_quadric.cpp): they must be the constructors' rationals, for mantissas with factors 2 or 5,
+  // exponents of either sign and sums that cancel.
+  std::mt19937_64 rng(23);
+  for (int trial = 0; trial < 400; ++trial) {
+    auto num = [&](bool positive) {
+      const int digits = 1 + static_cast<int>(rng() % 19);
+      const int exponent = static_cast<int>(rng() % 41) - 30 - (digits - 1) / 2;
+      std::string x = decimal(rng, digits, std::max(-30, std::min(exponent, 30 - digits)), false);
+      if (trial % 7 == 0)
+        x = std::to_string((1 + rng() % 9) * (rng() % 2 ? 25 : 16)) + "e-" + std::to_string(rng() % 9);
+      return !positive && rng() % 2 ? "-" + x : x;
+    };
+    const std::string c = num(false), r = trial % 5 == 0 ? c.substr(c[0] == '-' ? 1 : 0) : num(true);
+    const std::string e_text =
+        "{\"sphere\":{\"center\":" + vec3(c, trial % 3 ? num(false) : "0", num(false)) + ",\"radius\":" + r + "}}";
+    const std::string p_text = "{\"vertex\":" + vec3("0", "0", trial % 4 ? num(false) : "0") + ",\"a\":" + num(true) +
+                               ",\"b\":" + num(true) + "}";
+    check_pair(e_text, p_text, false);
+  }
+  // A sum that cancels: the constant entry is exactly zero.
+  check_pair(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})", R"({"vertex":[0,0,-2.5e-3],"a":0.5,"b":125})", false);
+  REQUIRE(fast_ellipsoid(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})", false)->matrix()(3, 3) == 0);
+}

@@ -9,6 +9,7 @@
 
 #include <CGAL/Interval_nt.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -329,52 +330,129 @@ struct Recipe {
   std::array<Number, 16> n;
 };
 
-/// The exact value of a number as read: m 10^e, or the double itself (a point enclosure).
 static_assert(sizeof(unsigned long) >= sizeof(std::uint64_t), "GMP's _ui functions take the 19-digit m");
 
+/// r = n 2^t2 5^t5 in canonical form, n the integer in r's numerator (not zero). The factors 2 and 5
+/// of n cancel against negative powers and the denominator has no other prime: no gcd is needed.
+void times_powers_of_2_and_5(mpq_ptr r, long t2, long t5) {
+  const mpz_ptr num = mpq_numref(r), den = mpq_denref(r);
+  if (t2 < 0) {
+    const long v = std::min<long>(static_cast<long>(mpz_scan1(num, 0)), -t2);
+    mpz_tdiv_q_2exp(num, num, static_cast<unsigned long>(v));
+    t2 += v;
+  }
+  for (; t5 < 0 && mpz_divisible_ui_p(num, 5); ++t5) mpz_divexact_ui(num, num, 5);
+  if (t5 > 0) {
+    mpz_ui_pow_ui(den, 5, static_cast<unsigned long>(t5));
+    mpz_mul(num, num, den);
+  }
+  mpz_ui_pow_ui(den, 5, static_cast<unsigned long>(t5 < 0 ? -t5 : 0));
+  if (t2 > 0) mpz_mul_2exp(num, num, static_cast<unsigned long>(t2));
+  if (t2 < 0) mpz_mul_2exp(den, den, static_cast<unsigned long>(-t2));
+}
+
+/// The exact value of a number as read: m 10^e, or the double itself (a point enclosure).
 Rational exact(const Number& x, bool doubles) {
   if (doubles) return Rational(x.x.inf());
   if (x.m == 0) return Rational(0);
   Rational q;  // fresh: its mpq is not shared
-  const mpq_ptr r = q.mpq();
-  const auto k = static_cast<unsigned long>(x.e < 0 ? -x.e : x.e);
-  if (x.e >= 0) {
-    mpz_ui_pow_ui(mpq_numref(r), 10, k);
-    mpz_mul_ui(mpq_numref(r), mpq_numref(r), x.m);
-  } else {
-    // m has no factor 10 (its trailing zeros are in e), so the canonical form of m / 10^k is
-    // (m / 2^a 5^b) / (2^(k-a) 5^(k-b)), a and b the powers of 2 and 5 in m (capped at k):
-    // written directly, without a gcd.
-    std::uint64_t m = x.m;
-    unsigned long a = 0, b = 0;
-    while (a < k && m % 2 == 0) m /= 2, ++a;
-    while (b < k && m % 5 == 0) m /= 5, ++b;
-    mpz_set_ui(mpq_numref(r), m);
-    mpz_ui_pow_ui(mpq_denref(r), 5, k - b);
-    mpz_mul_2exp(mpq_denref(r), mpq_denref(r), k - a);
-  }
-  if (x.neg) mpq_neg(r, r);
+  mpz_set_ui(mpq_numref(q.mpq()), x.m);
+  if (x.neg) mpz_neg(mpq_numref(q.mpq()), mpq_numref(q.mpq()));
+  times_powers_of_2_and_5(q.mpq(), x.e, x.e);
   return q;
 }
 
-/// The exact matrix, when first needed: the constructor the general reader calls for the form
-/// (Ellipsoid::sphere, Paraboloid::standard), or the matrix with the certified sign normalization
-/// (what from_matrix returns), from the exact values of the numbers.
+/// The entry c0^2 + c1^2 + c2^2 - r^2 of Ellipsoid::sphere for decimal numbers: the integer sum over
+/// the smallest power of ten, then reduced by its factors 2 and 5 alone (no rational additions).
+Rational sphere_constant(const std::array<Number, 16>& n) {
+  int low = 0;
+  bool any = false;
+  for (std::size_t i = 0; i < 4; ++i)
+    if (n[i].m != 0) low = any ? std::min(low, n[i].e) : n[i].e, any = true;
+  Rational q;
+  const mpz_ptr sum = mpq_numref(q.mpq()), term = mpq_denref(q.mpq());
+  mpz_t power;
+  mpz_init(power);
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (n[i].m == 0) continue;
+    mpz_set_ui(term, n[i].m);
+    mpz_mul(term, term, term);
+    if (n[i].e != low) {
+      mpz_ui_pow_ui(power, 10, static_cast<unsigned long>(2 * (n[i].e - low)));
+      mpz_mul(term, term, power);
+    }
+    (i < 3 ? mpz_add : mpz_sub)(sum, sum, term);  // the radius is n[3]
+  }
+  mpz_clear(power);
+  mpz_set_ui(term, 1);
+  if (mpz_sgn(sum) == 0) return Rational(0);
+  times_powers_of_2_and_5(q.mpq(), 2 * low, 2 * low);
+  return q;
+}
+
+/// 1/a^2 for a decimal a = m 10^e > 0: with m = 2^i 5^j m' (m' prime to 10), 2^(-2e-2i) 5^(-2e-2j) / m'^2,
+/// canonical as written (Paraboloid::standard's entry without a rational division).
+Rational inverse_square(const Number& a) {
+  std::uint64_t m = a.m;
+  long i = 0, j = 0;
+  for (; m % 2 == 0; m /= 2) ++i;
+  for (; m % 5 == 0; m /= 5) ++j;
+  Rational q;
+  const mpz_ptr num = mpq_numref(q.mpq()), den = mpq_denref(q.mpq());
+  mpz_set_ui(den, m);
+  mpz_mul(den, den, den);
+  const long t2 = -2L * a.e - 2 * i, t5 = -2L * a.e - 2 * j;
+  mpz_ui_pow_ui(num, 5, static_cast<unsigned long>(std::max(t5, 0L)));
+  mpz_mul_2exp(num, num, static_cast<unsigned long>(std::max(t2, 0L)));
+  if (t5 < 0) {
+    mpz_t p;
+    mpz_init(p);
+    mpz_ui_pow_ui(p, 5, static_cast<unsigned long>(-t5));
+    mpz_mul(den, den, p);
+    mpz_clear(p);
+  }
+  if (t2 < 0) mpz_mul_2exp(den, den, static_cast<unsigned long>(-t2));
+  return q;
+}
+
+/// The exact matrix, when first needed: the matrix of the constructor the general reader calls for
+/// the form (Ellipsoid::sphere, Paraboloid::standard), or the matrix with the certified sign
+/// normalization (what from_matrix returns), from the exact values of the numbers. For decimal
+/// numbers the entries of a sphere and of a standard paraboloid with its vertex on the axis are
+/// written directly in canonical form, their denominators being powers of 2 and 5 (and a's and b's
+/// squared mantissas); the rationals are the constructors' (tests/test_fast_reader.cpp).
 class NumberSource final : public relpos::detail::ExactSource {
  public:
   NumberSource(const Recipe& recipe, bool doubles) : recipe_(recipe), doubles_(doubles) {}
   Matrix4 build() const override {
-    auto q = [&](std::size_t k) { return exact(recipe_.n[k], doubles_); };
+    const auto& n = recipe_.n;
+    auto q = [&](std::size_t k) { return exact(n[k], doubles_); };
+    Matrix4 m;
     switch (recipe_.form) {
       case Recipe::Form::Sphere:
-        return Ellipsoid::sphere(Vector3{q(0), q(1), q(2)}, q(3)).matrix();
+        if (doubles_) return Ellipsoid::sphere(Vector3{q(0), q(1), q(2)}, q(3)).matrix();
+        for (int i = 0; i < 3; ++i) {
+          m(i, i) = Rational(1);
+          m(i, 3) = m(3, i) = -q(static_cast<std::size_t>(i));
+        }
+        m(3, 3) = sphere_constant(n);
+        return m;
       case Recipe::Form::Standard:
-        return Paraboloid::standard(Vector3{q(0), q(1), q(2)}, q(3), q(4)).matrix();
+        if (doubles_ || n[0].m != 0 || n[1].m != 0)
+          return Paraboloid::standard(Vector3{q(0), q(1), q(2)}, q(3), q(4)).matrix();
+        m(0, 0) = inverse_square(n[3]);
+        m(1, 1) = inverse_square(n[4]);
+        m(2, 3) = m(3, 2) = Rational(-1, 2);
+        m(3, 3) = q(2);
+        return m;
       case Recipe::Form::Matrix:
         break;
     }
-    Matrix4 m;
-    for (std::size_t k = 0; k < 16; ++k) m.a[k] = recipe_.orientation > 0 ? q(k) : -q(k);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j) {  // exactly symmetric: each pair once
+        const Rational x = q(static_cast<std::size_t>(4 * i + j));
+        m(i, j) = m(j, i) = recipe_.orientation > 0 ? x : -x;
+      }
     return m;
   }
 
