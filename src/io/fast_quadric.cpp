@@ -171,7 +171,9 @@ class Reader {
     const char* const first = s_.data() + i_;
     const char* const last = s_.data() + s_.size();
     const char* p = first;
-    Number x;
+    const int self = new_node(Kind::Number);
+    if (self < 0) return -1;
+    Number& x = nodes_[self].node.number;  // read in place (a copy of a Number stalls on its parts)
     if (p < last && *p == '-') {
       x.neg = true;
       ++p;
@@ -228,28 +230,25 @@ class Reader {
       return -1;
     i_ += static_cast<std::size_t>(p - first);
     while (x.m != 0 && x.m % 10 == 0) x.m /= 10, ++zeros;  // m without trailing zeros: one identity a value
-    const int self = new_node(Kind::Number);
-    if (self < 0) return -1;
     if (doubles_) {  // round to nearest here: the caller's guard starts after parse()
       double d = 0;
       const auto r = std::from_chars(first, p, d);
       if (r.ec != std::errc() || r.ptr != p) return -1;
       if (d != 0 && !(std::fabs(d) >= 0x1p-100 && std::fabs(d) <= 0x1p100)) return -1;
       // The identity of a double: its bits, read through the same fields (exact symmetry, zeros).
-      x = Number{};
       x.x = I(d);
       x.neg = d < 0;
+      x.e = 0;
       x.m = d == 0 ? 0 : static_cast<std::uint64_t>(std::fabs(std::frexp(d, &x.e)) * 0x1p53);
-      if (d == 0) x.e = 0;
     } else if (x.m == 0) {
-      x = Number{};
       x.x = I(0);
+      x.neg = false;
+      x.e = 0;
     } else {
       x.e = exponent + scale + zeros;
       if (x.e > kMaxExponent || x.e < -kMaxExponent) return -1;
       decimals_ = true;  // enclosed by enclose_decimals()
     }
-    nodes_[self].node.number = x;
     return self;
   }
 
