@@ -49,15 +49,20 @@ std::uint64_t eight_digits(const char* p) {
 constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                              1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
-/// A number as read: its enclosure, and its exact identity for the symmetry test and exact zeros
-/// (value (-1)^neg m 10^e with m free of trailing zeros, or the double itself with --numbers double).
-struct Number {
-  I x;
-  bool neg = false;
+/// The exact identity of a number as read, for the symmetry test, exact zeros and the exact matrix:
+/// (-1)^neg m 10^e with m free of trailing zeros, or with --numbers double the double
+/// (-1)^neg m 2^(e-53) (m < 2^53).
+struct Exact {
   std::uint64_t m = 0;
   int e = 0;
+  bool neg = false;
   bool is_zero() const { return m == 0; }
-  bool same(const Number& o) const { return neg == o.neg && m == o.m && e == o.e; }
+  bool same(const Exact& o) const { return neg == o.neg && m == o.m && e == o.e; }
+};
+
+/// A number as read: its identity and its enclosure.
+struct Number : Exact {
+  I x;
 };
 
 enum class Kind : unsigned char { Number, Array, Object };
@@ -319,14 +324,14 @@ bool symmetric_matrix(const Reader& r, int array, std::array<Number, 16>& out) {
   return true;
 }
 
-bool positive(const Number& x) { return !x.neg && !x.is_zero(); }
+bool positive(const Exact& x) { return !x.neg && !x.is_zero(); }
 
 /// What a quadric was read from: the form and its numbers (a matrix: 16; a sphere: centre, radius;
 /// a standard paraboloid: vertex, a, b), and the orientation the shape test certified.
 struct Recipe {
   enum class Form : unsigned char { Matrix, Sphere, Standard } form = Form::Matrix;
   int orientation = 1;
-  std::array<Number, 16> n;
+  std::array<Exact, 16> n;  // the identities only: the exact source keeps a copy
 };
 
 static_assert(sizeof(unsigned long) >= sizeof(std::uint64_t), "GMP's _ui functions take the 19-digit m");
@@ -351,8 +356,8 @@ void times_powers_of_2_and_5(mpq_ptr r, long t2, long t5) {
 }
 
 /// The exact value of a number as read: m 10^e, or the double itself (a point enclosure).
-Rational exact(const Number& x, bool doubles) {
-  if (doubles) return Rational(x.x.inf());
+Rational exact(const Exact& x, bool doubles) {
+  if (doubles) return Rational(std::ldexp(x.neg ? -double(x.m) : double(x.m), x.e - 53));
   if (x.m == 0) return Rational(0);
   Rational q;  // fresh: its mpq is not shared
   mpz_set_ui(mpq_numref(q.mpq()), x.m);
@@ -363,7 +368,7 @@ Rational exact(const Number& x, bool doubles) {
 
 /// The entry c0^2 + c1^2 + c2^2 - r^2 of Ellipsoid::sphere for decimal numbers: the integer sum over
 /// the smallest power of ten, then reduced by its factors 2 and 5 alone (no rational additions).
-Rational sphere_constant(const std::array<Number, 16>& n) {
+Rational sphere_constant(const std::array<Exact, 16>& n) {
   int low = 0;
   bool any = false;
   for (std::size_t i = 0; i < 4; ++i)
@@ -391,7 +396,7 @@ Rational sphere_constant(const std::array<Number, 16>& n) {
 
 /// 1/a^2 for a decimal a = m 10^e > 0: with m = 2^i 5^j m' (m' prime to 10), 2^(-2e-2i) 5^(-2e-2j) / m'^2,
 /// canonical as written (Paraboloid::standard's entry without a rational division).
-Rational inverse_square(const Number& a) {
+Rational inverse_square(const Exact& a) {
   std::uint64_t m = a.m;
   long i = 0, j = 0;
   for (; m % 2 == 0; m /= 2) ++i;
@@ -497,7 +502,7 @@ int ellipsoid_entries(const Reader& r, int root, Entries& x, Recipe& recipe) {
     if (!symmetric_matrix(r, m, n) || n[0].is_zero()) return 0;
     const int want = n[0].neg ? -1 : 1;
     x = intervals(n);
-    recipe.n = n;
+    std::copy(n.begin(), n.end(), recipe.n.begin());
     return shape_filter::certified_ellipsoid_intervals(x, want) == want ? want : 0;
   }
   // {"sphere": {"center" | "centre": [x, y, z], "radius": r}}: Ellipsoid::sphere, valid when r > 0.
@@ -524,7 +529,7 @@ int paraboloid_entries(const Reader& r, int root, Entries& x, Recipe& recipe) {
   if (const int m = matrix_node(r, root); m >= 0) {
     std::array<Number, 16> n;
     if (!symmetric_matrix(r, m, n)) return 0;
-    recipe.n = n;
+    std::copy(n.begin(), n.end(), recipe.n.begin());
     // det Q3 = 0 exactly, from entries that are exactly zero (axis-aligned cups); else the general reader.
     if (!shape_filter::impl::zero_by_pattern(n[0].is_zero(), n[1].is_zero(), n[2].is_zero(), n[5].is_zero(),
                                              n[6].is_zero(), n[10].is_zero()))
