@@ -14,8 +14,7 @@ namespace relpos::detail {
 
 /// Worker threads kept for the pool's lifetime; the thread that calls run() works too, so a pool of
 /// n threads starts n - 1. Keeping the threads matters to a caller that runs many short rounds
-/// (batch answers its input in short chunks so that interactive use is answered at once, and
-/// starting threads for each chunk cost more than the work of a short one).
+/// (starting threads for each round would cost more than the work of a short one).
 class WorkerPool {
  public:
   /// threads - 1 workers (none for 0 or 1). A thread that cannot be started (too little memory for
