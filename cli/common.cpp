@@ -14,6 +14,7 @@ namespace relpos_cli {
 
 bool LineReader::fill() {
   if (eof_) return false;
+  newline_ = std::string::npos;
   if (begin_ > 0) {
     buffer_.erase(0, begin_);
     begin_ = 0;
@@ -34,7 +35,8 @@ LineReader::Status LineReader::next(std::string& line) {
   bool skipping = false;
   try {
     for (;;) {
-      const std::size_t nl = buffer_.find('\n', begin_);
+      const std::size_t nl = newline_ != std::string::npos ? newline_ : buffer_.find('\n', begin_);
+      newline_ = std::string::npos;
       if (nl != std::string::npos || (eof_ && begin_ < buffer_.size())) {
         const std::size_t end = nl == std::string::npos ? buffer_.size() : nl;
         if (skipping || end - begin_ > max_) {
@@ -73,6 +75,7 @@ LineReader::Status LineReader::next(std::string& line) {
     std::string().swap(buffer_);
     line.clear();
     begin_ = 0;
+    newline_ = std::string::npos;
     try {
       while (fill()) {
         const std::size_t nl = buffer_.find('\n');
@@ -91,7 +94,8 @@ LineReader::Status LineReader::next(std::string& line) {
 }
 
 bool LineReader::ready() {
-  if (buffer_.find('\n', begin_) != std::string::npos || eof_) return true;
+  if (newline_ == std::string::npos) newline_ = buffer_.find('\n', begin_);
+  if (newline_ != std::string::npos || eof_) return true;
   pollfd p{fd_, POLLIN, 0};
   return ::poll(&p, 1, 0) > 0;
 }

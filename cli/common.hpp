@@ -37,6 +37,7 @@ class LineReader {
   std::size_t max_;
   std::string buffer_;
   std::size_t begin_ = 0;
+  std::size_t newline_ = std::string::npos;  ///< the first '\n' from begin_ on, when ready() found it
   bool eof_ = false;
   int error_ = 0;
 };
