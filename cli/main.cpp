@@ -218,7 +218,7 @@ void write_error_line(Output& out, long number, std::string_view message) {
 /// thread takes the next few lines from the reader (one thread reads at a time), answers them with
 /// no lock held, and writes every answered group that is next in input order: reading, answering
 /// and writing overlap, and no thread waits for a round to end (a slow line holds back only the
-/// writing of the groups after it, up to kSlotsPerThread groups a thread). The output is flushed
+/// writing of the groups after it, up to kSlots groups). The output is flushed
 /// after a group whose last line left the input with nothing more ready, so interactive use is
 /// answered line by line.
 class BatchPipeline {
@@ -229,7 +229,7 @@ class BatchPipeline {
         out_(out),
         options_(options),
         too_long_(std::move(too_long)),
-        slots_(kSlotsPerThread * std::size_t(threads)) {
+        slots_(threads > 1 ? std::max(kSlots, 2 * std::size_t(threads)) : 1) {
     const std::size_t size = threads > 1 ? kGroup : kGroupOneThread;
     for (Slot& s : slots_) {  // every buffer kept from group to group: a line costs no allocation
       s.lines.resize(size);
@@ -254,8 +254,10 @@ class BatchPipeline {
   int read_error() const { return read_error_; }
 
  private:
-  static constexpr std::size_t kGroup = 32, kGroupOneThread = 64, kSlotsPerThread = 4;
-  static constexpr std::size_t kKeep = std::size_t(1) << 16;  ///< buffers longer than this are released
+  // Enough slots that a thread the system stops for a time slice holds back only its group while
+  // the others answer up to kSlots * kGroup lines (a few ms) before they wait for it.
+  static constexpr std::size_t kGroup = 32, kGroupOneThread = 64, kSlots = 64;
+  static constexpr std::size_t kKeep = std::size_t(1) << 14;  ///< buffers longer than this are released
 
   struct Slot {
     std::vector<std::string> lines, answers;
