@@ -425,39 +425,41 @@ Rational inverse_square(const Exact& a) {
 /// numbers the entries of a sphere and of a standard paraboloid with its vertex on the axis are
 /// written directly in canonical form, their denominators being powers of 2 and 5 (and a's and b's
 /// squared mantissas); the rationals are the constructors' (tests/test_fast_reader.cpp).
+/// The symmetric matrix of an upper triangle given row by row (00 01 02 03 11 12 13 22 23 33): each
+/// entry made once and shared with its mirror, no default entries made and replaced.
+Matrix4 symmetric(const std::array<Rational, 10>& u) {
+  return Matrix4{{u[0], u[1], u[2], u[3], u[1], u[4], u[5], u[6], u[2], u[5], u[7], u[8], u[3], u[6], u[8], u[9]}};
+}
+
 class NumberSource final : public relpos::detail::ExactSource {
  public:
   NumberSource(const Recipe& recipe, bool doubles) : recipe_(recipe), doubles_(doubles) {}
   Matrix4 build() const override {
     const auto& n = recipe_.n;
-    auto q = [&](std::size_t k) { return exact(n[k], doubles_); };
-    Matrix4 m;
+    // The exact value of n[k], negated when `minus`.
+    auto q = [&](std::size_t k, bool minus = false) {
+      Exact x = n[k];
+      x.neg = x.neg != minus;
+      return exact(x, doubles_);
+    };
+    const Rational zero(0);
     switch (recipe_.form) {
-      case Recipe::Form::Sphere:
+      case Recipe::Form::Sphere: {
         if (doubles_) return Ellipsoid::sphere(Vector3{q(0), q(1), q(2)}, q(3)).matrix();
-        for (int i = 0; i < 3; ++i) {
-          m(i, i) = Rational(1);
-          m(i, 3) = m(3, i) = -q(static_cast<std::size_t>(i));
-        }
-        m(3, 3) = sphere_constant(n);
-        return m;
+        const Rational one(1);
+        return symmetric({one, zero, zero, q(0, true), one, zero, q(1, true), one, q(2, true), sphere_constant(n)});
+      }
       case Recipe::Form::Standard:
         if (doubles_ || n[0].m != 0 || n[1].m != 0)
           return Paraboloid::standard(Vector3{q(0), q(1), q(2)}, q(3), q(4)).matrix();
-        m(0, 0) = inverse_square(n[3]);
-        m(1, 1) = inverse_square(n[4]);
-        m(2, 3) = m(3, 2) = Rational(-1, 2);
-        m(3, 3) = q(2);
-        return m;
+        return symmetric(
+            {inverse_square(n[3]), zero, zero, zero, inverse_square(n[4]), zero, zero, zero, Rational(-1, 2), q(2)});
       case Recipe::Form::Matrix:
         break;
     }
-    for (int i = 0; i < 4; ++i)
-      for (int j = i; j < 4; ++j) {  // exactly symmetric: each pair once
-        const Rational x = q(static_cast<std::size_t>(4 * i + j));
-        m(i, j) = m(j, i) = recipe_.orientation > 0 ? x : -x;
-      }
-    return m;
+    const bool minus = recipe_.orientation < 0;
+    return symmetric({q(0, minus), q(1, minus), q(2, minus), q(3, minus), q(5, minus), q(6, minus), q(7, minus),
+                      q(10, minus), q(11, minus), q(15, minus)});
   }
 
  private:
