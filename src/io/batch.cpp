@@ -199,41 +199,12 @@ bool plain_number(std::string_view v) {
 bool plainly_valid(std::string_view v) { return !v.empty() && (v.front() == '"' ? plain_string(v) : plain_number(v)); }
 
 /// The minimal report's members after the id, in the order of the full report's first members.
-/// Each piece (position and smallness, rule, stage) is written once by the report writer and
-/// copied from then on.
 void append_minimal(const Verdict& v, std::string& out) {
-  struct Texts {
-    std::array<std::array<std::string, 2>, kAllPositions.size()> head;  // by position and smallness
-    std::array<std::string, kRuleCount> rule;
-    std::array<std::string, kAllStages.size()> stage;  // with the closing brace
-  };
-  static const Texts texts = [] {
-    Texts t;
-    for (const Position p : kAllPositions)
-      for (const bool small : {false, true}) {
-        Verdict head;
-        head.position = p;
-        head.small = small;
-        detail::JsonWriter w(t.head[static_cast<std::size_t>(p)][small]);
-        detail::append_verdict_head(head, w);
-      }
-    for (std::size_t k = 0; k < kRuleCount; ++k) {
-      detail::JsonWriter w(t.rule[k]);
-      w.member("rule");
-      w.string(describe(static_cast<Rule>(k)));
-    }
-    for (const Stage st : kAllStages) {
-      std::string& text = t.stage[static_cast<std::size_t>(st)];
-      detail::JsonWriter w(text);
-      w.member("stage");
-      w.string(to_string(st));
-      text += '}';
-    }
-    return t;
-  }();
-  out += texts.head.at(static_cast<std::size_t>(v.position))[v.small];
-  out += texts.rule.at(static_cast<std::size_t>(v.rule));
-  out += texts.stage.at(static_cast<std::size_t>(v.stage));
+  detail::JsonWriter w(out);
+  detail::append_verdict_head(v, w);
+  out += detail::rule_member(v.rule);
+  out += detail::stage_member(v.stage);
+  out += '}';
 }
 
 /// Room in `out` for a long id and what follows it at once: growing past the id would copy it.

@@ -3,6 +3,7 @@
 #include <gmp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -667,14 +668,52 @@ std::string polynomial_to_text(const Rational* c, int size, const std::string& v
 
 namespace detail {
 
-void append_verdict_head(const Verdict& v, JsonWriter& w) {
-  w.member("position");
-  w.string(to_string(v.position));
-  w.member("small");
-  w.boolean(v.small);
-  w.member("contact");
-  w.boolean(contact_of(v.position) != Contact::None);
+namespace {
+
+/// The members of a report that depend on the verdict alone, written once: a batch line copies them.
+struct VerdictTexts {
+  std::array<std::array<std::string, 2>, kAllPositions.size()> head;  // by position and smallness
+  std::array<std::string, kRuleCount> rule;
+  std::array<std::string, kAllStages.size()> stage;
+};
+
+const VerdictTexts& verdict_texts() {
+  static const VerdictTexts texts = [] {
+    VerdictTexts t;
+    for (const Position p : kAllPositions)
+      for (const bool small : {false, true}) {
+        JsonWriter w(t.head[static_cast<std::size_t>(p)][small]);
+        w.member("position");
+        w.string(to_string(p));
+        w.member("small");
+        w.boolean(small);
+        w.member("contact");
+        w.boolean(contact_of(p) != Contact::None);
+      }
+    for (std::size_t k = 0; k < kRuleCount; ++k) {
+      JsonWriter w(t.rule[k]);
+      w.member("rule");
+      w.string(describe(static_cast<Rule>(k)));
+    }
+    for (const Stage st : kAllStages) {
+      JsonWriter w(t.stage[static_cast<std::size_t>(st)]);
+      w.member("stage");
+      w.string(to_string(st));
+    }
+    return t;
+  }();
+  return texts;
 }
+
+}  // namespace
+
+void append_verdict_head(const Verdict& v, JsonWriter& w) {
+  w.raw(verdict_texts().head.at(static_cast<std::size_t>(v.position))[v.small]);
+}
+
+const std::string& rule_member(Rule r) { return verdict_texts().rule.at(static_cast<std::size_t>(r)); }
+
+const std::string& stage_member(Stage st) { return verdict_texts().stage.at(static_cast<std::size_t>(st)); }
 
 void append_classification(const Classification& c, const RenderOptions& options, JsonWriter& w) {
   const Verdict& v = c.verdict;
@@ -686,10 +725,8 @@ void append_classification(const Classification& c, const RenderOptions& options
   w.member("rho_approx");  // the double nearest the exact rho when there is one
   const bool approx = c.has_full_evidence && std::isfinite(c.rho_approx);
   w.or_null(approx ? std::optional<double>(c.rho_approx) : std::nullopt, [&](double x) { w.number(x); });
-  w.member("rule");
-  w.string(c.rule_text());
-  w.member("stage");
-  w.string(to_string(v.stage));
+  w.raw(rule_member(v.rule));
+  w.raw(stage_member(v.stage));
   w.member("disc_sign");
   w.integer(v.sign_disc_f);
   w.member("disc_ftilde_sign");

@@ -49,6 +49,11 @@ class JsonWriter {
 /// preceded by a comma.
 void append_verdict_head(const Verdict& v, JsonWriter& w);
 
+/// ,"rule":"<describe(r)>" and ,"stage":"<to_string(st)>", the reports' members for a verdict's rule
+/// and stage (each text made once).
+const std::string& rule_member(Rule r);
+const std::string& stage_member(Stage st);
+
 /// The members of the classification report, each preceded by a comma (the caller has written the
 /// opening brace and the id), and the closing brace (classification_to_json describes them).
 void append_classification(const Classification& c, const RenderOptions& options, JsonWriter& w);
