@@ -180,6 +180,20 @@ path = write("order.jsonl", data)
 one = run(["batch", "--threads", "1", path]).stdout
 two = run(["batch", "--threads", "2", path]).stdout
 check("--threads 2 answers as --threads 1, in input order", one == two and len(one.splitlines()) == 300)
+# Lines of very different cost (exact tangencies, errors, lines beyond --max-line-bytes, cheap
+# filter answers) finish out of order on many threads: the output is still in input order.
+here = os.path.dirname(os.path.abspath(__file__))
+with open(os.path.join(here, "..", "..", "examples", "mixed.jsonl"), "rb") as f:
+    mixed = [l for l in f.read().split(b"\n") if l]
+with open(os.path.join(here, "hostile.jsonl"), "rb") as f:
+    hostile = [l for l in f.read().split(b"\n") if l]
+varied = [(mixed[i % len(mixed)] if i % 3 else hostile[i % len(hostile)]) for i in range(1500)]
+varied_path = write("varied.jsonl", b"\n".join(varied) + b"\n")
+base = run(["batch", "--threads", "1", "--max-line-bytes", "4000", varied_path]).stdout
+for threads in ("3", "8"):
+    out = run(["batch", "--threads", threads, "--max-line-bytes", "4000", varied_path]).stdout
+    check("--threads %s answers lines of varied cost as --threads 1, in input order" % threads,
+          out == base and len(out.splitlines()) == 1500)
 m = [json.loads(l) for l in run(["batch", "--evidence", "minimal", path]).stdout.splitlines()]
 check("--evidence minimal: id, position, small, contact, rule, stage",
       all(list(x) == ["id", "position", "small", "contact", "rule", "stage"] for x in m), m[0])
