@@ -189,9 +189,9 @@ with open(os.path.join(here, "hostile.jsonl"), "rb") as f:
     hostile = [l for l in f.read().split(b"\n") if l]
 varied = [(mixed[i % len(mixed)] if i % 3 else hostile[i % len(hostile)]) for i in range(1500)]
 varied_path = write("varied.jsonl", b"\n".join(varied) + b"\n")
-base = run(["batch", "--threads", "1", "--max-line-bytes", "4000", varied_path]).stdout
+base = run(["batch", "--threads", "1", "--max-line-bytes", "170", varied_path]).stdout
 for threads in ("3", "8"):
-    out = run(["batch", "--threads", threads, "--max-line-bytes", "4000", varied_path]).stdout
+    out = run(["batch", "--threads", threads, "--max-line-bytes", "170", varied_path]).stdout
     check("--threads %s answers lines of varied cost as --threads 1, in input order" % threads,
           out == base and len(out.splitlines()) == 1500)
 m = [json.loads(l) for l in run(["batch", "--evidence", "minimal", path]).stdout.splitlines()]
