@@ -553,6 +553,51 @@ TEST_CASE("divided_by_powers: two scales with shared prime factors, as rational 
   }
 }
 
+TEST_CASE("split_scale along a matrix's denominators: a coprime base of the rest, same reductions", "[forms]") {
+  // Denominators of the kinds a standard paraboloid with decimal a, b has (squares of mantissas
+  // that may share primes, times 2s and 5s) and others (not squares, powers of one another, shared
+  // primes): the split rest is a product of pairwise coprime bases, and z / scale^k reduces as
+  // rational division does.
+  rt::Rng g(31337);
+  const long parts[] = {3, 7, 9, 11, 21, 1000003, 99991, 6, 10, 25};
+  for (int trial = 0; trial < 1500; ++trial) {
+    relpos::Matrix4 m;
+    for (std::size_t i = 0; i < 16; ++i) {
+      Integer den(1);
+      for (long k = g.uniform(0, 3); k > 0; --k) den *= Integer(parts[g.uniform(0, 9)]);
+      if (trial % 2 == 0) den *= den;  // squares, as 1/a^2 has
+      m.a[i] = g.uniform(0, 3) == 0 ? Rational(0) : Rational(Integer(g.uniform(-50, 50)) * Integer(2), den);
+    }
+    Integer scale;
+    relpos::forms::integer_form(m, scale);
+    const relpos::forms::SplitScale split = relpos::forms::split_scale(scale, m);
+    const relpos::forms::SplitScale plain = relpos::forms::split_scale(scale);
+    CHECK(split.twos == plain.twos);
+    CHECK(split.fives == plain.fives);
+    Integer product(1);
+    for (const auto& f : split.factors)
+      for (unsigned long k = 0; k < f.power; ++k) product *= f.base;
+    CHECK(product == split.rest);
+    for (std::size_t i = 0; i < split.factors.size(); ++i)
+      for (std::size_t j = i + 1; j < split.factors.size(); ++j) {
+        Integer c;
+        mpz_gcd(c.mpz(), split.factors[i].base.mpz(), split.factors[j].base.mpz());
+        CHECK(c == 1);
+      }
+    Integer z(static_cast<long>(g.uniform(-100000, 100000)));
+    for (long i = g.uniform(0, 6); i > 0; --i) z *= Integer(parts[g.uniform(0, 9)]);
+    if (trial % 3 == 0) z *= scale;
+    for (unsigned long k = 0; k <= 4; ++k) {
+      Rational expected(z);
+      for (unsigned long i = 0; i < k; ++i) expected /= Rational(scale);
+      const Rational got = relpos::forms::divided_by_power(z, split, k);
+      CAPTURE(relpos::to_string(z), relpos::to_string(scale), k);
+      CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // same canonical form
+      CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(expected.mpq())) == 0);
+    }
+  }
+}
+
 TEST_CASE("integer_form of doubles equals integer_form of their exact rationals", "[forms]") {
   rt::Rng g(99);
   std::mt19937_64 bits(5);

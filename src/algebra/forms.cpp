@@ -166,6 +166,88 @@ SplitScale split_scale(const Integer& scale) {
   }
   out.rest_power[0] = Integer(1);
   for (std::size_t k = 1; k < out.rest_power.size(); ++k) out.rest_power[k] = out.rest_power[k - 1] * rest;
+  out.factors.push_back({rest, 1});
+  return out;
+}
+
+SplitScale split_scale(const Integer& scale, const Matrix4& m) {
+  SplitScale out = split_scale(scale);
+  if (out.factors.empty()) return out;
+  // The distinct rests of the denominators (2s and 5s removed), each a root to the power 1 or 2.
+  std::vector<SplitScale::Factor> rests;
+  mpz_t r, g;
+  mpz_init(r);
+  mpz_init(g);
+  for (const Rational& q : m.a) {
+    const mpz_srcptr d = mpq_denref(q.mpq());
+    if (mpz_cmp_ui(d, 1) == 0) continue;
+    mpz_tdiv_q_2exp(r, d, mpz_scan1(d, 0));
+    while (mpz_divisible_ui_p(r, 5)) mpz_divexact_ui(r, r, 5);
+    if (mpz_cmp_ui(r, 1) == 0) continue;
+    unsigned long power = 1;
+    if (mpz_perfect_square_p(r)) {
+      mpz_sqrt(r, r);
+      power = 2;
+    }
+    bool seen = false;
+    for (const SplitScale::Factor& x : rests) seen = seen || (x.power == power && mpz_cmp(x.base.mpz(), r) == 0);
+    if (seen) continue;
+    rests.emplace_back();
+    mpz_set(rests.back().base.mpz(), r);  // a fresh Integer: written through mpz()
+    rests.back().power = power;
+  }
+  // Factor refinement: two bases with a common factor c become b / c, b' / c and c, until they are
+  // pairwise coprime. Every rest stays a product of bases; the product of the bases decreases.
+  std::vector<Integer> base;
+  for (const SplitScale::Factor& x : rests) {
+    base.emplace_back();
+    mpz_set(base.back().mpz(), x.base.mpz());
+  }
+  for (bool split = true; split;) {
+    split = false;
+    for (std::size_t i = 0; i < base.size() && !split; ++i)
+      for (std::size_t j = i + 1; j < base.size() && !split; ++j) {
+        mpz_gcd(g, base[i].mpz(), base[j].mpz());
+        if (mpz_cmp_ui(g, 1) == 0) continue;
+        Integer bi, bj, c;  // fresh: written through mpz()
+        mpz_divexact(bi.mpz(), base[i].mpz(), g);
+        mpz_divexact(bj.mpz(), base[j].mpz(), g);
+        mpz_set(c.mpz(), g);
+        std::vector<Integer> next;
+        for (std::size_t k = 0; k < base.size(); ++k)
+          if (k != i && k != j) next.push_back(base[k]);
+        for (const Integer* x : {&bi, &bj, &c}) {
+          bool dup = mpz_cmp_ui(x->mpz(), 1) == 0;
+          for (const Integer& y : next) dup = dup || mpz_cmp(x->mpz(), y.mpz()) == 0;
+          if (!dup) next.push_back(*x);
+        }
+        base = std::move(next);
+        split = true;
+      }
+  }
+  // The exponent of each base in the lcm: the largest in any rest. The product must be the rest.
+  std::vector<unsigned long> power(base.size(), 0);
+  bool exact = true;
+  for (const SplitScale::Factor& x : rests) {
+    mpz_set(r, x.base.mpz());
+    for (std::size_t j = 0; j < base.size(); ++j) {
+      unsigned long e = 0;
+      while (mpz_divisible_p(r, base[j].mpz())) mpz_divexact(r, r, base[j].mpz()), ++e;
+      power[j] = std::max(power[j], e * x.power);
+    }
+    exact = exact && mpz_cmp_ui(r, 1) == 0;
+  }
+  mpz_set_ui(g, 1);
+  for (std::size_t j = 0; j < base.size(); ++j) {
+    mpz_pow_ui(r, base[j].mpz(), power[j]);
+    mpz_mul(g, g, r);
+  }
+  if (exact && mpz_cmp(g, out.rest.mpz()) == 0) {
+    out.factors.clear();
+    for (std::size_t j = 0; j < base.size(); ++j) out.factors.push_back({base[j], power[j]});
+  }
+  mpz_clear(r);
+  mpz_clear(g);
   return out;
 }
 
@@ -201,17 +283,37 @@ Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> d
   // gcd(num, rest^k) = g_1 ... g_j, g_i = gcd(num / (g_1 ... g_(i-1)), rest): each step takes
   // min(v_p(num), v_p(rest)) more of every prime p, so k steps take min(v_p(num), k v_p(rest)).
   // Scale after scale, the caps add up: min(v_p(num), sum_j k_j v_p(rest_j)) in all.
+  // With rest = prod b_j^(e_j), the b_j pairwise coprime, the same holds base by base: k e_j gcds
+  // with b_j take min(v_p(num), k v_p(rest)) of each prime p of b_j. A one-limb base costs a
+  // single-limb remainder and a word gcd per step.
   mpz_t g, common;
   mpz_init(g);
   mpz_init(common);
   for (const ScalePower& d : divisors) {
-    if (d.k == 0 || mpz_cmp_ui(d.scale.rest.mpz(), 1) == 0) continue;
+    if (d.k == 0 || d.scale.factors.empty()) continue;
     mpz_set_ui(common, 1);
-    for (unsigned long i = 0; i < d.k; ++i) {
-      mpz_gcd(g, num, d.scale.rest.mpz());
-      if (mpz_cmp_ui(g, 1) == 0) break;
-      mpz_divexact(num, num, g);
-      mpz_mul(common, common, g);
+    for (const SplitScale::Factor& f : d.scale.factors) {
+      const unsigned long steps = d.k * f.power;
+      if (mpz_fits_ulong_p(f.base.mpz())) {
+        const unsigned long b = mpz_get_ui(f.base.mpz());
+        for (unsigned long i = 0; i < steps; ++i) {
+          const unsigned long c = mpz_gcd_ui(nullptr, num, b);
+          if (c == 1) break;
+          mpz_divexact_ui(num, num, c);
+          mpz_mul_ui(common, common, c);
+        }
+        continue;
+      }
+      for (unsigned long i = 0; i < steps; ++i) {
+        mpz_gcd(g, num, f.base.mpz());
+        if (mpz_cmp_ui(g, 1) == 0) break;
+        mpz_divexact(num, num, g);
+        mpz_mul(common, common, g);
+      }
+    }
+    if (mpz_cmp_ui(common, 1) == 0) {
+      mpz_mul(den, den, d.scale.rest_power[d.k].mpz());
+      continue;
     }
     mpz_divexact(g, d.scale.rest_power[d.k].mpz(), common);
     mpz_mul(den, den, g);

@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
@@ -54,15 +55,29 @@ inline void scaled_numerator(const Rational& q, const Integer& l, mpz_ptr out) {
 }
 
 /// A positive integer scale split as 2^twos 5^fives rest, and rest^k for the powers a caller
-/// divides by: 2 and 5 are what doubles and decimal text put in denominators.
+/// divides by: 2 and 5 are what doubles and decimal text put in denominators. The rest is also
+/// kept as a product of pairwise coprime factors base^power (one factor, rest itself, unless the
+/// scale was split along its denominators), so that a gcd with it is a gcd with a short base.
 struct SplitScale {
+  struct Factor {
+    Integer base;
+    unsigned long power = 1;
+  };
   unsigned long twos = 0, fives = 0;
   Integer rest{1};
   std::array<Integer, 5> rest_power;  ///< rest^k for k = 0..4
+  std::vector<Factor> factors;        ///< rest = prod base^power, bases pairwise coprime; empty for rest 1
 };
 
 /// Splits a positive integer.
 SplitScale split_scale(const Integer& scale);
+
+/// Splits scale = the lcm of the denominators of m's entries (integer_form), its rest kept as a
+/// coprime base of those denominators' rests (square ones by their roots), with the lcm's powers:
+/// for a standard paraboloid with decimal a and b, the rest of lcm(den(1/a^2), den(1/b^2)) becomes
+/// ma^2 mb^2 (or ma'^2 c^2 mb'^2 when ma and mb share c) with one-limb bases instead of one
+/// four-limb number.
+SplitScale split_scale(const Integer& scale, const Matrix4& m);
 
 /// One divisor of divided_by_powers: scale^k, k <= 4.
 struct ScalePower {
@@ -72,8 +87,9 @@ struct ScalePower {
 
 /// z / (scale_1^k_1 scale_2^k_2 ...) in lowest terms without a gcd of the long numbers: the twos
 /// by a bit scan, the fives by single-limb remainders, and the common factor with each rest^k as
-/// at most k gcds with rest itself, usually one that is 1 (a general gcd per coefficient of the
-/// reported f and s was a tenth to a sixth of a decimal batch line's full evidence).
+/// at most k e gcds with each factor b^e of rest, usually one that is 1 (a general gcd per
+/// coefficient of the reported f and s was a tenth to a sixth of a decimal batch line's full
+/// evidence).
 Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors);
 inline Rational divided_by_power(const Integer& z, const SplitScale& scale, unsigned long k) {
   return divided_by_powers(z, {{scale, k}});

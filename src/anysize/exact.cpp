@@ -154,22 +154,27 @@ int LambdaS::compare(const Rational& q) const {
 
 LambdaS lambda_s_of(const Poly& s) {
   if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
-  LambdaS out;
-  // disc = s1^2 - 4 s2 s0 in lowest terms N / Den, from the integer form S = L s (L the lcm of the
+  // disc = s1^2 - 4 s2 s0 in lowest terms, from the integer form S = L s (L the lcm of the
   // denominators): disc = (S1^2 - 4 S2 S0) / L^2, reduced once (forms::divided_by_power) instead
-  // of a canonicalization per rational operation. sqrt(disc) = sqrt(N Den) / Den: rational iff N Den is a perfect
-  // square.
-  Integer l(1), num, den, g;  // fresh objects: written through mpz()
+  // of a canonicalization per rational operation.
+  Integer l(1), num, g;  // fresh objects: written through mpz()
   forms::lcm_of_denominators(s.begin(), s.end(), l);
   Integer si[3];
   for (std::size_t i = 0; i < 3; ++i) forms::scaled_numerator(s[i], l, si[i].mpz());
   mpz_mul(num.mpz(), si[1].mpz(), si[1].mpz());
   mpz_mul(g.mpz(), si[2].mpz(), si[0].mpz());
   mpz_submul_ui(num.mpz(), g.mpz(), 4);
-  if (mpz_sgn(num.mpz()) < 0) throw std::logic_error("s has non-real roots");
-  const Rational disc = forms::divided_by_power(num, forms::split_scale(l), 2);
+  return lambda_s_of(s, forms::divided_by_power(num, forms::split_scale(l), 2));
+}
+
+LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
+  if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
+  if (disc < 0) throw std::logic_error("s has non-real roots");
+  LambdaS out;
+  // disc = N / Den in lowest terms: sqrt(disc) = sqrt(N Den) / Den, rational iff N Den is a perfect
+  // square.
   const Integer& n = disc.numerator();
-  den = disc.denominator();
+  const Integer den = disc.denominator();
   Integer nd = n * den;
   const Rational two_s2 = 2 * s[2];
   if (mpz_perfect_square_p(nd.mpz())) {

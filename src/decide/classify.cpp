@@ -499,9 +499,9 @@ double nearest_double(const Rational& q) {
 ///   f_i = g_i / (lp^i le^(4-i)),  s_i = h_i / (lp^i le^(3-i))   (reported reduced),
 /// and the common-lcm integer forms of the root isolation, S^4 f and S^3 s with S = lcm(lp, le):
 ///   S^4 f_i = g_i (S/lp)^i (S/le)^(4-i),  S^3 s_i = h_i (S/lp)^i (S/le)^(3-i).
-void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h, const Integer& lp, const Integer& le,
-                          Classification& out, Quartic<Integer>& fi, Quadratic<Integer>& si) {
-  const forms::SplitScale sp = forms::split_scale(lp), se = forms::split_scale(le);
+void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h, const forms::SplitScale& sp,
+                          const forms::SplitScale& se, const Integer& lp, const Integer& le, Classification& out,
+                          Quartic<Integer>& fi, Quadratic<Integer>& si) {
   for (unsigned long i = 0; i < 5; ++i) out.f[i] = forms::divided_by_powers(g[i], {{sp, i}, {se, 4 - i}});
   for (unsigned long i = 0; i < 3; ++i) out.s[i] = forms::divided_by_powers(h[i], {{sp, i}, {se, 3 - i}});
   Integer common, a, b;  // fresh: written through mpz()
@@ -529,12 +529,17 @@ void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h
 /// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
 /// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square (from the reduced
 /// f and s, far shorter than the integer forms). lambda_s is computed once here, for rho and for
-/// the certificate.
-void fill_full_evidence(const RootStructure& rs, Classification& out, anysize::LambdaS& ls) {
+/// the certificate, with Disc(s) = Disc(h) / (lp^2 le^4) reduced along the split scales.
+void fill_full_evidence(const RootStructure& rs, const Quadratic<Integer>& h, const forms::SplitScale& sp,
+                        const forms::SplitScale& se, Classification& out, anysize::LambdaS& ls) {
   out.has_full_evidence = true;
   out.degree_ftilde = rs.degree_ftilde;
   out.roots = rs.real_roots;
-  ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3));
+  Integer disc, t;  // fresh: written through mpz()
+  mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
+  mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
+  mpz_submul_ui(disc.mpz(), t.mpz(), 4);
+  ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3), forms::divided_by_powers(disc, {{sp, 2}, {se, 4}}));
   const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
   if (ls.rational()) {
     out.rho = k / (ls.value.a * ls.value.a);
@@ -568,13 +573,16 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const Quartic<Integer> g{gp[0].to_integer(), gp[1].to_integer(), gp[2].to_integer(), gp[3].to_integer(),
                              gp[4].to_integer()};
     const Quadratic<Integer> h{hp[0].to_integer(), hp[1].to_integer(), hp[2].to_integer()};
+    // Each scale's rest kept as its denominators' factors: every gcd of the reduction is short.
+    const forms::SplitScale sp = p.doubles() ? forms::split_scale(lp) : forms::split_scale(lp, p.matrix());
+    const forms::SplitScale se = e.doubles() ? forms::split_scale(le) : forms::split_scale(le, e.matrix());
     Quartic<Integer> f;
     Quadratic<Integer> s;
-    reported_polynomials(g, h, lp, le, out, f, s);
+    reported_polynomials(g, h, sp, se, lp, le, out, f, s);
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
     const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
-    fill_full_evidence(rs, out, ls);
+    fill_full_evidence(rs, h, sp, se, out, ls);
     // The certificate reuses f, s, lambda_s and the isolation instead of recomputing them.
     out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls});
   }
