@@ -29,14 +29,21 @@ using V3 = std::array<Rational, 3>;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
+/// The entries of a matrix as doubles (CGAL::to_double), for the searches in doubles.
+DoubleMatrix4 to_doubles(const Matrix4& m) {
+  DoubleMatrix4 out;
+  for (std::size_t i = 0; i < 16; ++i) out[i] = CGAL::to_double(m.a[i]);
+  return out;
+}
+
 /// Exact signs of X^T Q X, X = (x, 1), on integers: Q times the positive lcm of its denominators,
 /// x over the lcm D of its coordinates' denominators (D^2 X^T Q X = N^T Qz N, N = (D x, D)). No
 /// rational canonicalisation (gcd) per operation, and the temporaries live in reused mpz_t.
 class IntegerForm {
  public:
-  explicit IntegerForm(const Matrix4& q) {
-    Integer l;
-    const forms::MatrixOf<Integer> z = forms::integer_form(q, l);
+  explicit IntegerForm(const Matrix4& q) : IntegerForm(integer_form(q)) {}
+  /// From the integer form itself (forms::integer_form), when the caller has it.
+  explicit IntegerForm(const forms::MatrixOf<Integer>& z) {
     for (int i = 0; i < 4; ++i)
       for (int j = i; j < 4; ++j) {
         mpz_init_set(z_[i][j], z(i, j).mpz());
@@ -84,6 +91,10 @@ class IntegerForm {
   }
 
  private:
+  static forms::MatrixOf<Integer> integer_form(const Matrix4& q) {
+    Integer l;
+    return forms::integer_form(q, l);
+  }
   mpz_t z_[4][4];
 };
 
@@ -184,6 +195,9 @@ class LazyMatrix {
   }
   operator const Matrix4&() const { return get(); }  // NOLINT: reads as the matrix it stands for
   const Rational& operator()(int i, int j) const { return get()(i, j); }
+  /// The entries as doubles (CGAL::to_double of each): the quadric's own doubles when it has them,
+  /// without building its rationals.
+  DoubleMatrix4 doubles() const { return q_.doubles() ? *q_.doubles() : to_doubles(get()); }
 
  private:
   const Quadric& q_;
@@ -208,6 +222,7 @@ struct Pair {
     }
     ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s);
     fz = IntegerPoly(f);
+    if (known.forms) forms_ = *known.forms;
   }
   IntegerPoly fz;  ///< f with integer coefficients, for exact signs
   int f_sign(const Rational& x) const { return fz.sign(x); }
@@ -227,27 +242,29 @@ struct Pair {
   /// P = Pz/lp) has integer entries n le Pz + d lp Ez: Cramer's rule on integers, one rational
   /// canonicalisation per coordinate.
   std::optional<V3> x_of(const Rational& l) const {
-    if (!forms_) {
-      forms_.emplace();
-      forms_->ez = forms::integer_form(E.get(), forms_->le);
-      forms_->pz = forms::integer_form(P.get(), forms_->lp);
-    }
-    const Integer pf = l.numerator() * forms_->le, ef = l.denominator() * forms_->lp;
+    const IntegerForms& z = forms();
+    const Integer pf = l.numerator() * z.le, ef = l.denominator() * z.lp;
     Integer k[3][4];  // [lambda A + M | -(lambda a + m)], scaled
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 4; ++j) {
-        k[i][j] = pf * forms_->pz(i, j) + ef * forms_->ez(i, j);
+        k[i][j] = pf * z.pz(i, j) + ef * z.ez(i, j);
         if (j == 3) k[i][j] = -k[i][j];
       }
     return detail::solve_integer_system(k);
   }
 
+  /// The integer forms of E and P with their scales: the caller's, else computed on first use.
+  const IntegerForms& forms() const {
+    if (!forms_) {
+      forms_.emplace();
+      forms_->ez = forms::integer_form(E.get(), forms_->le);
+      forms_->pz = forms::integer_form(P.get(), forms_->lp);
+    }
+    return *forms_;
+  }
+
  private:
-  struct Forms {  // the integer forms of E and P with their scales, on first use by x_of
-    forms::MatrixOf<Integer> ez, pz;
-    Integer le, lp;
-  };
-  mutable std::optional<Forms> forms_;
+  mutable std::optional<IntegerForms> forms_;
 };
 
 /// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
@@ -462,14 +479,14 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
 /// exact search when the point itself is beyond doubles.
 using DoubleBracket = std::optional<std::pair<double, double>>;
-void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& lambda_s, const V3& centre,
+void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const LambdaS& lambda_s, const V3& centre,
                          const std::optional<V3>& inside, const std::optional<V3>& outside,
                          const std::function<void(const V3&)>& consider, DoubleBracket (&brackets)[2]) {
   double E[4][4], P[4][4];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
-      E[i][j] = CGAL::to_double(em(i, j));
-      P[i][j] = CGAL::to_double(pm(i, j));
+      E[i][j] = em[static_cast<std::size_t>(4 * i + j)];
+      P[i][j] = pm[static_cast<std::size_t>(4 * i + j)];
       if (!std::isfinite(E[i][j]) || !std::isfinite(P[i][j])) return;
     }
   auto x_of = [&](double l, double x[3]) {
@@ -590,10 +607,10 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
 
 /// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals; nullopt when it is
 /// not finite. An approximation: the caller checks it exactly.
-std::optional<V3> approximate_centre(const Matrix4& e) {
+std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
   double k[3][4];
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 4; ++j) k[i][j] = CGAL::to_double(e(i, j)) * (j == 3 ? -1 : 1);
+    for (int j = 0; j < 4; ++j) k[i][j] = e[static_cast<std::size_t>(4 * i + j)] * (j == 3 ? -1 : 1);
   const std::array<double, 4> d = cramer(k);
   V3 out;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -866,13 +883,14 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
 
 /// Whether the body is below 2^-20 of its distance to the origin (or its size is not a finite
 /// double): then doubles around its centre cannot resolve it, and the search runs in its frame.
-bool small_for_doubles(const Matrix4& e, const V3& centre) {
-  double c[3], least = HUGE_VAL, far = 0, r2 = CGAL::to_double(e(3, 3));
+bool small_for_doubles(const DoubleMatrix4& em, const V3& centre) {
+  auto e = [&](int i, int j) { return em[static_cast<std::size_t>(4 * i + j)]; };
+  double c[3], least = HUGE_VAL, far = 0, r2 = e(3, 3);
   for (int i = 0; i < 3; ++i) c[i] = CGAL::to_double(centre[i]);
   for (int i = 0; i < 3; ++i) {
-    r2 += 2 * CGAL::to_double(e(i, 3)) * c[i];
-    for (int j = 0; j < 3; ++j) r2 += c[i] * CGAL::to_double(e(i, j)) * c[j];
-    least = std::min(least, CGAL::to_double(e(i, i)));
+    r2 += 2 * e(i, 3) * c[i];
+    for (int j = 0; j < 3; ++j) r2 += c[i] * e(i, j) * c[j];
+    least = std::min(least, e(i, i));
     far = std::max(far, std::fabs(c[i]));
   }
   const double size = std::sqrt(-r2 / least);  // -e(c) = r2 up to rounding
@@ -906,7 +924,7 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   DoubleBracket brackets[2];
-  const IntegerForm ez(pr.E), pz(pr.P);  // exact signs of e and p at the candidates
+  const IntegerForm ez(pr.forms().ez), pz(pr.forms().pz);  // exact signs of e and p at the candidates
   std::function<void(const V3&)> consider = [&](const V3& x) {
     const IntegerForm::Point xz(x);
     if (ez.sign(xz) > 0) return;
@@ -917,10 +935,11 @@ void crossing_points(const Pair& pr, Certificate& c) {
   // Candidates are pulled towards a dyadic centre (short exact arithmetic): the centre solved in
   // doubles, taken exactly, when it is strictly inside the solid (almost always); else the exact
   // centre (Cramer's rule on integers, several times dearer).
-  std::optional<V3> pull = approximate_centre(pr.E);
-  if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(pr.E, *pull)) {
+  const DoubleMatrix4 ed = pr.E.doubles();
+  std::optional<V3> pull = approximate_centre(ed);
+  if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(ed, *pull)) {
     consider(*pull);
-    double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider, brackets);
+    double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider, brackets);
   } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
     // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
     // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
@@ -933,8 +952,8 @@ void crossing_points(const Pair& pr, Certificate& c) {
       for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
       consider(x);
     };
-    double_curve_search(in_frame(pr.E, at, scale), in_frame(pr.P, at, scale), pr.ls, V3{}, inside, outside, mapped,
-                        brackets);
+    double_curve_search(to_doubles(in_frame(pr.E, at, scale)), to_doubles(in_frame(pr.P, at, scale)), pr.ls, V3{},
+                        inside, outside, mapped, brackets);
   }
   // What the double search missed, the exact optimisers give (they always exist in a crossing).
   if (!inside || !outside) {

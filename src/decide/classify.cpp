@@ -557,16 +557,15 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   Classification out;
   out.verdict = v;
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E), from each matrix's own form
-    Integer lp, le;
+    certificate::IntegerForms z;     // also the certificate's exact signs and points
+    const Integer &lp = z.lp, &le = z.le;
     // From the doubles when the entries are doubles: no rational matrix is built for the evidence.
-    const MatrixOf<Integer> pz =
-        p.doubles() ? forms::integer_form(*p.doubles(), lp) : forms::integer_form(p.matrix(), lp);
-    const MatrixOf<Integer> ez =
-        e.doubles() ? forms::integer_form(*e.doubles(), le) : forms::integer_form(e.matrix(), le);
+    z.pz = p.doubles() ? forms::integer_form(*p.doubles(), z.lp) : forms::integer_form(p.matrix(), z.lp);
+    z.ez = e.doubles() ? forms::integer_form(*e.doubles(), z.le) : forms::integer_form(e.matrix(), z.le);
     MatrixOf<PooledInteger> pp, ep;  // the generic formulas without heap traffic for temporaries
     for (std::size_t i = 0; i < 16; ++i) {
-      pp.a[i] = PooledInteger(pz.a[i]);
-      ep.a[i] = PooledInteger(ez.a[i]);
+      pp.a[i] = PooledInteger(z.pz.a[i]);
+      ep.a[i] = PooledInteger(z.ez.a[i]);
     }
     const Quartic<PooledInteger> gp = characteristic_polynomial<PooledInteger>(pp, ep);
     const Quadratic<PooledInteger> hp = special_polynomial<PooledInteger>(pp, ep);
@@ -583,8 +582,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
     fill_full_evidence(rs, h, sp, se, out, ls);
-    // The certificate reuses f, s, lambda_s and the isolation instead of recomputing them.
-    out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls});
+    // The certificate reuses f, s, lambda_s, the isolation and the integer forms.
+    out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls, &z});
   }
   return out;
 }
