@@ -6,6 +6,7 @@
 #include <relpos/classify.hpp>
 #include <vector>
 
+#include "algebra/between.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "algebra/roots.hpp"
@@ -595,6 +596,42 @@ TEST_CASE("split_scale along a matrix's denominators: a coprime base of the rest
       CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // same canonical form
       CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(expected.mpq())) == 0);
     }
+  }
+}
+
+TEST_CASE("rational_inside, fewest bits: the first dyadic floor(mid 2^b) / 2^b above lo, b = 0, 4, 8, ...", "[forms]") {
+  // Ends that are doubles (isolating intervals), one of them an exact rational or both, of either
+  // sign, close and far apart: the answer is the definition's, computed here on rationals.
+  rt::Rng g(2718);
+  std::mt19937_64 bits(11);
+  auto reference = [](const Rational& lo, const Rational& hi) {
+    const Rational mid = (lo + hi) / 2;
+    for (unsigned b = 0; b <= 2048; b += 4) {
+      Rational step(1);
+      for (unsigned i = 0; i < b; ++i) step /= 2;
+      Integer scaled;
+      const Rational x = mid / step;
+      mpz_fdiv_q(scaled.mpz(), mpq_numref(x.mpq()), mpq_denref(x.mpq()));
+      const Rational y = Rational(scaled) * step;
+      if (lo < y && y < hi) return y;
+    }
+    return mid;
+  };
+  for (int trial = 0; trial < 3000; ++trial) {
+    const double a =
+        std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits), static_cast<int>(g.uniform(-60, 60)));
+    const double w = std::fabs(a) * std::ldexp(1.0, -static_cast<int>(g.uniform(1, 52)));
+    Rational lo(a), hi(a + (w > 0 ? w : 1.0));
+    if (trial % 5 == 1) hi = lo + Rational(Integer(1), Integer(g.uniform(3, 1000)) * Integer(2));  // not dyadic
+    if (trial % 7 == 2) lo = Rational(Integer(1), Integer(3)) - Rational(Integer(2));
+    if (!(lo < hi)) continue;
+    const Rational got = relpos::detail::rational_inside(lo, hi, relpos::detail::Shortest::Bits);
+    const Rational want = reference(lo, hi);
+    CAPTURE(relpos::to_string(lo), relpos::to_string(hi));
+    CHECK(lo < got);
+    CHECK(got < hi);
+    CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(want.mpq())) == 0);  // the same canonical rational
+    CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(want.mpq())) == 0);
   }
 }
 

@@ -100,10 +100,6 @@ void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mp
   auto& t = scratch.t;
   auto &g = scratch.g, &den = scratch.den, &l = scratch.l, &content = scratch.content;
   auto& dens = scratch.dens;
-  // lcm(l, d) costs a gcd; most denominators of a pair are equal, or divide one already taken.
-  auto fold_lcm = [](mpz_ptr acc, mpz_srcptr d) {
-    if (mpz_cmp_ui(d, 1) != 0 && !mpz_divisible_p(acc, d)) mpz_lcm(acc, acc, d);
-  };
   mpz_set_ui(t[0], 1);
   mpz_set_ui(t[1], 1);
   for (const auto* m : {&p, &e})

@@ -41,10 +41,16 @@ struct DoubleView {
 
 using Interval = CGAL::Interval_nt<false>;
 
+/// lcm(l, d) into l (d > 0): a divisibility test first, since most denominators of a matrix or a
+/// polynomial are equal or divide one already taken (powers of 2 and 5), and lcm costs a gcd.
+inline void fold_lcm(mpz_ptr l, mpz_srcptr d) {
+  if (mpz_cmp_ui(d, 1) != 0 && !mpz_divisible_p(l, d)) mpz_lcm(l, l, d);
+}
+
 /// The lcm of the denominators of a range of rationals, folded into `l` (one loop for every caller).
 template <class It>
 void lcm_of_denominators(It first, It last, Integer& l) {
-  for (; first != last; ++first) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(first->mpq()));
+  for (; first != last; ++first) fold_lcm(l.mpz(), mpq_denref(first->mpq()));
 }
 
 /// The integer q l, for l a multiple of q's denominator (lcm_of_denominators), written into `out`

@@ -62,7 +62,7 @@ class IntegerForm {
     explicit Point(const V3& x) {
       for (auto& v : n) mpz_init(v);
       mpz_set_ui(n[3], 1);
-      for (int i = 0; i < 3; ++i) mpz_lcm(n[3], n[3], mpq_denref(x[i].mpq()));
+      for (int i = 0; i < 3; ++i) forms::fold_lcm(n[3], mpq_denref(x[i].mpq()));
       for (int i = 0; i < 3; ++i) {
         mpz_divexact(n[i], n[3], mpq_denref(x[i].mpq()));
         mpz_mul(n[i], n[i], mpq_numref(x[i].mpq()));
