@@ -146,15 +146,39 @@ void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mp
   form(e, ez);
 }
 
+namespace {
+
+/// Divides x (non-zero) by its factors 5, at most `most` of them, and returns how many: 27 at a
+/// time, by x mod 5^27 (< 2^63) in one single-limb pass; when that is not zero, its own valuation
+/// is x's (r = x + k 5^27). No mpz temporaries, unlike mpz_remove.
+unsigned long remove_fives(mpz_ptr x, unsigned long most) {
+  unsigned long removed = 0;
+  while (removed < most) {
+    const unsigned long chunk = std::min<unsigned long>(27, most - removed);
+    std::uint64_t p = 1;
+    for (unsigned long i = 0; i < chunk; ++i) p *= 5;
+    std::uint64_t r = mpz_fdiv_ui(x, p);
+    if (r == 0) {
+      mpz_divexact_ui(x, x, p);
+      removed += chunk;
+      continue;
+    }
+    std::uint64_t q = 1;
+    for (; r % 5 == 0; r /= 5) q *= 5, ++removed;
+    if (q > 1) mpz_divexact_ui(x, x, q);
+    break;
+  }
+  return removed;
+}
+
+}  // namespace
+
 SplitScale split_scale(const Integer& scale) {
   SplitScale out;
   out.twos = mpz_scan1(scale.mpz(), 0);
   Integer rest;  // fresh: written through mpz()
   mpz_tdiv_q_2exp(rest.mpz(), scale.mpz(), out.twos);
-  if (mpz_divisible_ui_p(rest.mpz(), 5)) {  // mpz_remove allocates: only when there are fives
-    const Integer five(5);
-    out.fives = mpz_remove(rest.mpz(), rest.mpz(), five.mpz());
-  }
+  out.fives = remove_fives(rest.mpz(), ~0UL);
   out.rest = rest;
   if (mpz_cmp_ui(rest.mpz(), 1) == 0) {  // doubles and decimal text: every power is 1 (one shared value)
     out.rest_power.fill(rest);
@@ -178,7 +202,7 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m) {
     const mpz_srcptr d = mpq_denref(q.mpq());
     if (mpz_cmp_ui(d, 1) == 0) continue;
     mpz_tdiv_q_2exp(r, d, mpz_scan1(d, 0));
-    while (mpz_divisible_ui_p(r, 5)) mpz_divexact_ui(r, r, 5);
+    remove_fives(r, ~0UL);
     if (mpz_cmp_ui(r, 1) == 0) continue;
     unsigned long power = 1;
     if (mpz_perfect_square_p(r)) {
@@ -256,24 +280,7 @@ Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> d
   for (const ScalePower& d : divisors) twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
   const unsigned long shift = std::min<unsigned long>(mpz_scan1(z.mpz(), 0), twos);
   mpz_tdiv_q_2exp(num, z.mpz(), shift);
-  // The fives, 27 at a time: num mod 5^27 (< 2^63) by one single-limb pass; when it is not zero,
-  // its own valuation is num's (r = num + k 5^27). No mpz temporaries, unlike mpz_remove.
-  unsigned long removed = 0;
-  while (removed < fives) {
-    const unsigned long chunk = std::min<unsigned long>(27, fives - removed);
-    std::uint64_t p = 1;
-    for (unsigned long i = 0; i < chunk; ++i) p *= 5;
-    std::uint64_t r = mpz_fdiv_ui(num, p);
-    if (r == 0) {
-      mpz_divexact_ui(num, num, p);
-      removed += chunk;
-      continue;
-    }
-    std::uint64_t q = 1;
-    for (; r % 5 == 0; r /= 5) q *= 5, ++removed;
-    if (q > 1) mpz_divexact_ui(num, num, q);
-    break;
-  }
+  const unsigned long removed = remove_fives(num, fives);
   mpz_ui_pow_ui(den, 5, fives - removed);
   mpz_mul_2exp(den, den, twos - shift);
   // gcd(num, rest^k) = g_1 ... g_j, g_i = gcd(num / (g_1 ... g_(i-1)), rest): each step takes
