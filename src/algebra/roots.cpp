@@ -195,21 +195,28 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
 }
 
 /// True when Res(f, s) != 0 is shown modulo one word-sized prime p not dividing either leading
-/// coefficient (then Res(f, s) mod p = Res(f mod p, s mod p)); false when that is 0 (the caller
-/// computes the resultant over the integers). A few hundred nanoseconds instead of the integer
-/// resultant's subresultant chain.
-bool certainly_coprime(const fmpz_poly_t f, const fmpz_poly_t s) {
+/// coefficient (then Res(f, s) mod p = Res(f mod p, s mod p)) for a quartic f and a quadratic s;
+/// false when that is 0 (the caller computes the gcd over the integers). On machine words: with
+/// s / s2 = x^2 + m1 x + m0 and f = r1 x + r0 modulo it, Res(f, s) = s2^4 (r0^2 - r0 r1 m1 + r1^2 m0)
+/// (the product of r over the two roots of s). A few dozen word operations, no allocation.
+bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
   static const mp_limb_t p = n_nextprime(UWORD(1) << 62, 1);
-  nmod_poly_t fp, sp;
-  nmod_poly_init(fp, p);
-  nmod_poly_init(sp, p);
-  fmpz_poly_get_nmod_poly(fp, f);
-  fmpz_poly_get_nmod_poly(sp, s);
-  const bool ok = nmod_poly_degree(fp) == fmpz_poly_degree(f) && nmod_poly_degree(sp) == fmpz_poly_degree(s) &&
-                  nmod_poly_resultant(fp, sp) != 0;
-  nmod_poly_clear(fp);
-  nmod_poly_clear(sp);
-  return ok;
+  static const mp_limb_t p_inverse = n_preinvert_limb(p);
+  auto mod = [](const Integer& z) { return static_cast<mp_limb_t>(mpz_fdiv_ui(z.mpz(), p)); };
+  auto mul = [](mp_limb_t a, mp_limb_t b) { return n_mulmod2_preinv(a, b, p, p_inverse); };
+  auto sub = [](mp_limb_t a, mp_limb_t b) { return n_submod(a, b, p); };
+  mp_limb_t f[5];
+  for (int i = 0; i < 5; ++i) f[i] = mod(fc[static_cast<std::size_t>(i)]);
+  const mp_limb_t s2 = mod(sc[2]);
+  if (f[4] == 0 || s2 == 0) return false;
+  const mp_limb_t inv = n_invmod(s2, p);
+  const mp_limb_t m1 = mul(mod(sc[1]), inv), m0 = mul(mod(sc[0]), inv);
+  for (int k = 4; k >= 2; --k) {  // f -= f_k x^(k-2) (x^2 + m1 x + m0)
+    f[k - 1] = sub(f[k - 1], mul(f[k], m1));
+    f[k - 2] = sub(f[k - 2], mul(f[k], m0));
+  }
+  const mp_limb_t r1 = f[1], r0 = f[0];
+  return n_addmod(sub(mul(r0, r0), mul(mul(r0, r1), m1)), mul(mul(r1, r1), m0), p) != 0;
 }
 
 /// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
@@ -449,7 +456,7 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   const Integer* hp = fc.data();  // h's coefficients: f's own when f and s are coprime
   int n = 4, disc_h = disc;
   bool ok = true;
-  if (!certainly_coprime(f.p, s.p)) {
+  if (!certainly_coprime(fc, sc)) {
     fmpz_poly_t g, h;
     fmpz_poly_init(g);
     fmpz_poly_init(h);
