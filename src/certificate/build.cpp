@@ -104,6 +104,11 @@ class IntegerForm {
 class IntegerPoly {
  public:
   IntegerPoly() = default;
+  /// From integer coefficients z[0..n) (a positive multiple of the polynomial: the same signs).
+  IntegerPoly(const Integer* z, std::size_t n) : z_(z, z + n) {
+    while (!z_.empty() && z_.back() == 0) z_.pop_back();
+    for (const Integer& c : z_) bits_ = std::max(bits_, mpz_sizeinbase(c.mpz(), 2));
+  }
   explicit IntegerPoly(const Poly& q) {
     Integer l(1);
     forms::lcm_of_denominators(q.begin(), q.end(), l);
@@ -221,11 +226,16 @@ struct Pair {
       s = anysize::to_poly(sq.data(), 3);
     }
     ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s);
-    fz = IntegerPoly(f);
     if (known.forms) forms_ = *known.forms;
+    if (known.f_multiple) f_multiple_.emplace(known.f_multiple->data(), 5);
   }
-  IntegerPoly fz;  ///< f with integer coefficients, for exact signs
-  int f_sign(const Rational& x) const { return fz.sign(x); }
+  /// f times the lcm of its denominators (its size sets the searches' budgets), on first use.
+  const IntegerPoly& fz() const {
+    if (!fz_) fz_.emplace(f);
+    return *fz_;
+  }
+  /// sign f(x), on the caller's integer multiple of f when it gave one.
+  int f_sign(const Rational& x) const { return (f_multiple_ ? *f_multiple_ : fz()).sign(x); }
   /// X^T Q X for X = (x, 1).
   static Rational form(const Matrix4& q, const V3& x) {
     Rational acc = q(3, 3);
@@ -265,6 +275,8 @@ struct Pair {
 
  private:
   mutable std::optional<IntegerForms> forms_;
+  mutable std::optional<IntegerPoly> fz_;
+  std::optional<IntegerPoly> f_multiple_;
 };
 
 /// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
@@ -468,7 +480,7 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
   // multiple of the coefficient bits.
   return search_near_roots(
       anysize::derivative(pr.f), [&](const Rational& l) { return in_domain(l) && pr.f_sign(l) > 0; },
-      1024 + 16 * pr.fz.bits());
+      1024 + 16 * pr.fz().bits());
 }
 
 /// The curve search of crossing_points first in doubles (a search only: every candidate is checked
@@ -645,7 +657,7 @@ struct Secular {
     detail::flint_thread_cleanup_at_exit();
     fmpz_poly_t f, s, d, gp, ge;  // gp = f' s - f s', ge = f s - lambda gp (d: scratch)
     for (auto* q : {f, s, d, gp, ge}) fmpz_poly_init(q);
-    pr.fz.to_flint(f);
+    pr.fz().to_flint(f);
     IntegerPoly(pr.s).to_flint(s);
     fmpz_poly_derivative(d, f);
     fmpz_poly_mul(gp, d, s);
@@ -658,7 +670,7 @@ struct Secular {
     e = IntegerPoly(ge);
     p = IntegerPoly(gp);
     for (auto* q : {f, s, d, gp, ge}) fmpz_poly_clear(q);
-    budget = 1024 + 16 * (e.bits() + p.bits() + pr.fz.bits());
+    budget = 1024 + 16 * (e.bits() + p.bits() + pr.fz().bits());
   }
 };
 

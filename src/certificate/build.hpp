@@ -28,8 +28,9 @@ struct Known {
   const Quartic<Rational>* f = nullptr;
   const Quadratic<Rational>* s = nullptr;
   const std::vector<RealRoot>* roots = nullptr;
-  const anysize::LambdaS* lambda_s = nullptr;  ///< lambda_s of *s (set only with f and s)
-  const IntegerForms* forms = nullptr;         ///< the integer forms of E and P, with their scales
+  const anysize::LambdaS* lambda_s = nullptr;    ///< lambda_s of *s (set only with f and s)
+  const IntegerForms* forms = nullptr;           ///< the integer forms of E and P, with their scales
+  const Quartic<Integer>* f_multiple = nullptr;  ///< a positive integer multiple of f, for exact signs
 };
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known);
 

@@ -582,8 +582,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
     fill_full_evidence(rs, h, sp, se, out, ls);
-    // The certificate reuses f, s, lambda_s, the isolation and the integer forms.
-    out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls, &z});
+    // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f.
+    out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls, &z, &f});
   }
   return out;
 }
