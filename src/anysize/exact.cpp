@@ -152,6 +152,23 @@ int LambdaS::compare(const Rational& q) const {
   return sign({q - value.a, -value.b});
 }
 
+namespace {
+
+/// The enclosure of lambda_s = a + b sqrt(d) for compare(): interval arithmetic on certified
+/// enclosures of a, b and d (infinite bounds, hence no filtering, beyond the double range).
+void enclose(LambdaS& out) {
+  CGAL::Protect_FPU_rounding<true> guard;
+  using I = CGAL::Interval_nt<false>;
+  const I v = I(CGAL::to_interval(out.value.a)) +
+              (out.d == 0 ? I(0) : I(CGAL::to_interval(out.value.b)) * CGAL::sqrt(I(CGAL::to_interval(out.d))));
+  if (std::isfinite(v.inf()) && std::isfinite(v.sup())) {
+    out.lo = v.inf();
+    out.hi = v.sup();
+  }
+}
+
+}  // namespace
+
 LambdaS lambda_s_of(const Poly& s) {
   if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
   // disc = s1^2 - 4 s2 s0 in lowest terms, from the integer form S = L s (L the lcm of the
@@ -186,16 +203,15 @@ LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
     out.d = nd;
     out.value = {-s[1] / two_s2, Rational(1) / (Rational(den) * two_s2)};
   }
-  // The enclosure of a + b sqrt(d) for compare(): interval arithmetic on certified enclosures of
-  // a, b and d (infinite bounds, hence no filtering, beyond the double range).
-  CGAL::Protect_FPU_rounding<true> guard;
-  using I = CGAL::Interval_nt<false>;
-  const I v = I(CGAL::to_interval(out.value.a)) +
-              (out.d == 0 ? I(0) : I(CGAL::to_interval(out.value.b)) * CGAL::sqrt(I(CGAL::to_interval(out.d))));
-  if (std::isfinite(v.inf()) && std::isfinite(v.sup())) {
-    out.lo = v.inf();
-    out.hi = v.sup();
-  }
+  enclose(out);
+  return out;
+}
+
+LambdaS rational_lambda_s(const Rational& value) {
+  LambdaS out;
+  out.d = 0;
+  out.value = {value, Rational(0)};
+  enclose(out);
   return out;
 }
 

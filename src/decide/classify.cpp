@@ -529,9 +529,12 @@ void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h
 /// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
 /// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square (from the reduced
 /// f and s, far shorter than the integer forms). lambda_s is computed once here, for rho and for
-/// the certificate, with Disc(s) = Disc(h) / (lp^2 le^4) reduced along the split scales.
+/// the certificate, from h: with mu = lambda le / lp, s(lambda) = h(mu) / le^3, so
+/// Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales), rational iff Disc(h) is a
+/// square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2): two short canonicalisations.
 void fill_full_evidence(const RootStructure& rs, const Quadratic<Integer>& h, const forms::SplitScale& sp,
-                        const forms::SplitScale& se, Classification& out, anysize::LambdaS& ls) {
+                        const forms::SplitScale& se, const Integer& lp, const Integer& le, Classification& out,
+                        anysize::LambdaS& ls) {
   out.has_full_evidence = true;
   out.degree_ftilde = rs.degree_ftilde;
   out.roots = rs.real_roots;
@@ -539,7 +542,15 @@ void fill_full_evidence(const RootStructure& rs, const Quadratic<Integer>& h, co
   mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
   mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
   mpz_submul_ui(disc.mpz(), t.mpz(), 4);
-  ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3), forms::divided_by_powers(disc, {{sp, 2}, {se, 4}}));
+  if (h[2] > 0 && mpz_sgn(disc.mpz()) >= 0 && mpz_perfect_square_p(disc.mpz())) {
+    Integer num, den;  // fresh: written through mpz()
+    mpz_sqrt(num.mpz(), disc.mpz());
+    mpz_sub(num.mpz(), num.mpz(), h[1].mpz());
+    mpz_mul_2exp(den.mpz(), h[2].mpz(), 1);
+    ls = anysize::rational_lambda_s(Rational(num, den) * Rational(lp, le));
+  } else {
+    ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3), forms::divided_by_powers(disc, {{sp, 2}, {se, 4}}));
+  }
   const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
   if (ls.rational()) {
     out.rho = k / (ls.value.a * ls.value.a);
@@ -581,7 +592,7 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
     const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
-    fill_full_evidence(rs, h, sp, se, out, ls);
+    fill_full_evidence(rs, h, sp, se, lp, le, out, ls);
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f.
     out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls, &z, &f});
   }
