@@ -196,9 +196,10 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
 
 /// True when Res(f, s) != 0 is shown modulo one word-sized prime p not dividing either leading
 /// coefficient (then Res(f, s) mod p = Res(f mod p, s mod p)) for a quartic f and a quadratic s;
-/// false when that is 0 (the caller computes the gcd over the integers). On machine words: with
-/// s / s2 = x^2 + m1 x + m0 and f = r1 x + r0 modulo it, Res(f, s) = s2^4 (r0^2 - r0 r1 m1 + r1^2 m0)
-/// (the product of r over the two roots of s). A few dozen word operations, no allocation.
+/// false when that is 0 (the caller computes the gcd over the integers). On machine words, by the
+/// pseudo-remainder r = r1 x + r0 of s2^3 f modulo s: Res(f, s) is a non-zero multiple of the
+/// product of r over the two roots of s, r0^2 s2 - r0 r1 s1 + r1^2 s0 (over s2). A few dozen word
+/// operations, no allocation and no inverse.
 bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
   static const mp_limb_t p = n_nextprime(UWORD(1) << 62, 1);
   static const mp_limb_t p_inverse = n_preinvert_limb(p);
@@ -207,16 +208,15 @@ bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc)
   auto sub = [](mp_limb_t a, mp_limb_t b) { return n_submod(a, b, p); };
   mp_limb_t f[5];
   for (int i = 0; i < 5; ++i) f[i] = mod(fc[static_cast<std::size_t>(i)]);
-  const mp_limb_t s2 = mod(sc[2]);
+  const mp_limb_t s2 = mod(sc[2]), s1 = mod(sc[1]), s0 = mod(sc[0]);
   if (f[4] == 0 || s2 == 0) return false;
-  const mp_limb_t inv = n_invmod(s2, p);
-  const mp_limb_t m1 = mul(mod(sc[1]), inv), m0 = mul(mod(sc[0]), inv);
-  for (int k = 4; k >= 2; --k) {  // f -= f_k x^(k-2) (x^2 + m1 x + m0)
-    f[k - 1] = sub(f[k - 1], mul(f[k], m1));
-    f[k - 2] = sub(f[k - 2], mul(f[k], m0));
+  for (int k = 4; k >= 2; --k) {  // f <- s2 f - f_k x^(k-2) s: degree k - 1
+    for (int i = 0; i < k; ++i) f[i] = mul(f[i], s2);
+    f[k - 1] = sub(f[k - 1], mul(f[k], s1));
+    f[k - 2] = sub(f[k - 2], mul(f[k], s0));
   }
   const mp_limb_t r1 = f[1], r0 = f[0];
-  return n_addmod(sub(mul(r0, r0), mul(mul(r0, r1), m1)), mul(mul(r1, r1), m0), p) != 0;
+  return n_addmod(sub(mul(mul(r0, r0), s2), mul(mul(r0, r1), s1)), mul(mul(r1, r1), s0), p) != 0;
 }
 
 /// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
@@ -225,12 +225,17 @@ bool certainly_no_rational_root(const fmpz_poly_t f) {
   detail::flint_thread_cleanup_at_exit();
   // Small primes first, every residue tried by Horner on machine words: most irreducible quartics
   // (and products of irreducible quadratics) have no root modulo one of the first few primes.
+  // The coefficients modulo the product of these primes (< 2^63) in one pass each.
   static const unsigned long small_primes[] = {3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47};
+  static const unsigned long product = 307444891294245705UL;  // 3 5 7 ... 47
   const slong deg = fmpz_poly_degree(f);
+  unsigned long residue[5] = {0, 0, 0, 0, 0};
+  if (deg >= 1 && deg <= 4)
+    for (slong i = 0; i <= deg; ++i) residue[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), product);
   for (unsigned long p : small_primes) {
     unsigned long c[5] = {0, 0, 0, 0, 0};
     if (deg < 1 || deg > 4) break;
-    for (slong i = 0; i <= deg; ++i) c[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), p);
+    for (slong i = 0; i <= deg; ++i) c[i] = residue[i] % p;
     if (c[deg] == 0) continue;  // p divides lc(f): a rational root need not reduce
     bool root = false;
     for (unsigned long x = 0; x < p && !root; ++x) {
