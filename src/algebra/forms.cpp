@@ -353,7 +353,7 @@ MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l) {
   return out;
 }
 
-MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l) {
+void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l) {
   // d[i] = m_i 2^k_i with m_i odd (|m_i| < 2^53): the lcm of the denominators is 2^top with
   // top = max(0, -k_i), and the integer entries are m_i 2^(k_i + top).
   std::int64_t m[16];
@@ -368,17 +368,25 @@ MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l) {
     const double f = std::frexp(d[i], &e);  // d = f 2^e, 0.5 <= |f| < 1: f 2^53 is an integer
     m[i] = static_cast<std::int64_t>(std::ldexp(f, 53));
     k[i] = e - 53;
-    while (m[i] % 2 == 0) m[i] /= 2, ++k[i];
+    const int zeros = __builtin_ctzll(static_cast<unsigned long long>(m[i]));  // m != 0
+    m[i] /= std::int64_t{1} << zeros;                                          // exact
+    k[i] += zeros;
     top = std::max(top, -k[i]);
   }
-  MatrixOf<Integer> out;  // fresh entries: written through mpz()
   for (std::size_t i = 0; i < 16; ++i) {
-    mpz_set_si(out.a[i].mpz(), static_cast<long>(m[i]));
-    if (m[i] != 0) mpz_mul_2exp(out.a[i].mpz(), out.a[i].mpz(), static_cast<mp_bitcnt_t>(k[i] + top));
+    mpz_set_si(out[i], static_cast<long>(m[i]));
+    if (m[i] != 0) mpz_mul_2exp(out[i], out[i], static_cast<mp_bitcnt_t>(k[i] + top));
   }
   Integer lcm(1);  // fresh: written through mpz()
   mpz_mul_2exp(lcm.mpz(), lcm.mpz(), static_cast<mp_bitcnt_t>(top));
   l = lcm;
+}
+
+MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l) {
+  MatrixOf<Integer> out;  // fresh entries: written through mpz()
+  std::array<mpz_ptr, 16> z;
+  for (std::size_t i = 0; i < 16; ++i) z[i] = out.a[i].mpz();
+  integer_form(d, z, l);
   return out;
 }
 

@@ -123,6 +123,8 @@ MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l);
 /// The same for a matrix of exact doubles, read from their bits (no rationals): equal to
 /// integer_form of the matrix of Rational(d[i]).
 MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l);
+/// The same written into the caller's integers (16 distinct mpz, row-major), e.g. pooled ones.
+void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l);
 
 /// The smallest integer form the *decisions* need (not the evidence: the roots move). With
 /// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive

@@ -203,6 +203,10 @@ class LazyMatrix {
   /// The entries as doubles (CGAL::to_double of each): the quadric's own doubles when it has them,
   /// without building its rationals.
   DoubleMatrix4 doubles() const { return q_.doubles() ? *q_.doubles() : to_doubles(get()); }
+  /// forms::integer_form of the matrix, from the doubles when the quadric has them.
+  forms::MatrixOf<Integer> integer_form(Integer& l) const {
+    return q_.doubles() ? forms::integer_form(*q_.doubles(), l) : forms::integer_form(get(), l);
+  }
 
  private:
   const Quadric& q_;
@@ -263,12 +267,13 @@ struct Pair {
     return detail::solve_integer_system(k);
   }
 
-  /// The integer forms of E and P with their scales: the caller's, else computed on first use.
+  /// The integer forms of E and P with their scales: the caller's, else computed on first use
+  /// (from the quadrics' doubles when they have them: no rational matrix).
   const IntegerForms& forms() const {
     if (!forms_) {
       forms_.emplace();
-      forms_->ez = forms::integer_form(E.get(), forms_->le);
-      forms_->pz = forms::integer_form(P.get(), forms_->lp);
+      forms_->ez = E.integer_form(forms_->le);
+      forms_->pz = P.integer_form(forms_->lp);
     }
     return *forms_;
   }

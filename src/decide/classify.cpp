@@ -568,15 +568,30 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   Classification out;
   out.verdict = v;
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E), from each matrix's own form
-    certificate::IntegerForms z;     // also the certificate's exact signs and points
-    const Integer &lp = z.lp, &le = z.le;
-    // From the doubles when the entries are doubles: no rational matrix is built for the evidence.
-    z.pz = p.doubles() ? forms::integer_form(*p.doubles(), z.lp) : forms::integer_form(p.matrix(), z.lp);
-    z.ez = e.doubles() ? forms::integer_form(*e.doubles(), z.le) : forms::integer_form(e.matrix(), z.le);
-    MatrixOf<PooledInteger> pp, ep;  // the generic formulas without heap traffic for temporaries
-    for (std::size_t i = 0; i < 16; ++i) {
-      pp.a[i] = PooledInteger(z.pz.a[i]);
-      ep.a[i] = PooledInteger(z.ez.a[i]);
+    // The integer forms on pooled integers (the generic formulas without heap traffic for
+    // temporaries): from the doubles when the entries are doubles, without a rational matrix;
+    // else kept as Integers for the certificate's exact signs and points too.
+    std::optional<certificate::IntegerForms> z;
+    Integer lp, le;
+    MatrixOf<PooledInteger> pp, ep;
+    auto pooled = [](const DoubleMatrix4& d, MatrixOf<PooledInteger>& m, Integer& l) {
+      std::array<mpz_ptr, 16> to;
+      for (std::size_t i = 0; i < 16; ++i) to[i] = m.a[i].mpz();
+      forms::integer_form(d, to, l);
+    };
+    if (p.doubles() && e.doubles()) {
+      pooled(*p.doubles(), pp, lp);
+      pooled(*e.doubles(), ep, le);
+    } else {
+      z.emplace();
+      z->pz = p.doubles() ? forms::integer_form(*p.doubles(), z->lp) : forms::integer_form(p.matrix(), z->lp);
+      z->ez = e.doubles() ? forms::integer_form(*e.doubles(), z->le) : forms::integer_form(e.matrix(), z->le);
+      lp = z->lp;
+      le = z->le;
+      for (std::size_t i = 0; i < 16; ++i) {
+        pp.a[i] = PooledInteger(z->pz.a[i]);
+        ep.a[i] = PooledInteger(z->ez.a[i]);
+      }
     }
     const Quartic<PooledInteger> gp = characteristic_polynomial<PooledInteger>(pp, ep);
     const Quadratic<PooledInteger> hp = special_polynomial<PooledInteger>(pp, ep);
@@ -594,7 +609,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     anysize::LambdaS ls;
     fill_full_evidence(rs, h, sp, se, lp, le, out, ls);
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f.
-    out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls, &z, &f});
+    out.certificate = certificate::build(e, p, v.position,
+                                         certificate::Known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f});
   }
   return out;
 }
