@@ -153,6 +153,31 @@ std::array<Rational, N> exact_array(const std::array<double, N>& d) {
   return out;
 }
 
+/// |c|^2 - r^2 with one reduction instead of a canonicalisation per operation: over the lcm L of
+/// the denominators, (sum_i (c_i L)^2 - (r L)^2) / L^2, reduced along L's split (decimal text puts
+/// only 2s and 5s there).
+Rational squared_norm_minus(const Vector3& c, const Rational& r) {
+  Integer l(1), num, t;  // fresh: written through mpz()
+  forms::lcm_of_denominators(c.begin(), c.end(), l);
+  forms::fold_lcm(l.mpz(), mpq_denref(r.mpq()));
+  for (const Rational& x : c) {
+    forms::scaled_numerator(x, l, t.mpz());
+    mpz_addmul(num.mpz(), t.mpz(), t.mpz());
+  }
+  forms::scaled_numerator(r, l, t.mpz());
+  mpz_submul(num.mpz(), t.mpz(), t.mpz());
+  return forms::divided_by_power(num, forms::split_scale(l), 2);
+}
+
+/// 1 / a^2 for a canonical a != 0: the squares of its coprime numerator and denominator, swapped,
+/// are already in lowest terms (no gcd).
+Rational inverse_square(const Rational& a) {
+  Rational out;  // fresh: its mpq is not shared, so it is written in place
+  mpz_mul(mpq_numref(out.mpq()), mpq_denref(a.mpq()), mpq_denref(a.mpq()));
+  mpz_mul(mpq_denref(out.mpq()), mpq_numref(a.mpq()), mpq_numref(a.mpq()));
+  return out;
+}
+
 std::string found(QuadricKind k) {
   std::string s = to_string(k);
   const char* article = (s[0] == 'a' || s[0] == 'e' || s[0] == 'i' || s[0] == 'o' || s[0] == 'u') ? "an " : "a ";
@@ -437,7 +462,7 @@ Ellipsoid Ellipsoid::sphere(const Vector3& c, const Rational& r) {
     m(i, i) = Rational(1);
     m(i, 3) = m(3, i) = -c[static_cast<std::size_t>(i)];
   }
-  m(3, 3) = c[0] * c[0] + c[1] * c[1] + c[2] * c[2] - r * r;
+  m(3, 3) = squared_norm_minus(c, r);
   return Ellipsoid(m);
 }
 
@@ -503,7 +528,7 @@ Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_
 Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Rational& b, const Quaternion& q) {
   if (a <= 0 || b <= 0)
     throw InputError("paraboloid parameters a, b must be positive, got a = " + to_string(a) + ", b = " + to_string(b));
-  const Rational ia = Rational(1) / (a * a), ib = Rational(1) / (b * b);
+  const Rational ia = inverse_square(a), ib = inverse_square(b);
   // A congruence of the standard paraboloid by an invertible affine map is an elliptic paraboloid
   // with the same orientation (Sylvester's law of inertia): no validation, no sign normalization.
   if (q[0] != 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) {
