@@ -347,7 +347,21 @@ MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l) {
       mpz_mul_2exp(out.a[i].mpz(), mpq_numref(m.a[i].mpq()), top - mpz_scan1(mpq_denref(m.a[i].mpq()), 0));
   } else {
     lcm_of_denominators(m.a.begin(), m.a.end(), lcm);
-    for (std::size_t i = 0; i < 16; ++i) scaled_numerator(m.a[i], lcm, out.a[i].mpz());
+    // Most entries share their denominator with the previous one, or have the lcm itself.
+    Integer q;  // fresh: written through mpz()
+    mpz_srcptr last = nullptr;
+    for (std::size_t i = 0; i < 16; ++i) {
+      const mpz_srcptr d = mpq_denref(m.a[i].mpq());
+      if (mpz_cmp(d, lcm.mpz()) == 0) {
+        mpz_set(out.a[i].mpz(), mpq_numref(m.a[i].mpq()));
+        continue;
+      }
+      if (!last || mpz_cmp(d, last) != 0) {
+        mpz_divexact(q.mpz(), lcm.mpz(), d);
+        last = d;
+      }
+      mpz_mul(out.a[i].mpz(), q.mpz(), mpq_numref(m.a[i].mpq()));
+    }
   }
   l = lcm;
   return out;
