@@ -271,15 +271,15 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m) {
   return out;
 }
 
-Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors) {
+Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors) {
   Rational out;  // fresh: its mpq is not shared, so it is written in place
   mpz_ptr num = mpq_numref(out.mpq());
   mpz_ptr den = mpq_denref(out.mpq());
-  if (mpz_sgn(z.mpz()) == 0) return out;
+  if (mpz_sgn(z) == 0) return out;
   unsigned long twos = 0, fives = 0;
   for (const ScalePower& d : divisors) twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
-  const unsigned long shift = std::min<unsigned long>(mpz_scan1(z.mpz(), 0), twos);
-  mpz_tdiv_q_2exp(num, z.mpz(), shift);
+  const unsigned long shift = std::min<unsigned long>(mpz_scan1(z, 0), twos);
+  mpz_tdiv_q_2exp(num, z, shift);
   const unsigned long removed = remove_fives(num, fives);
   mpz_ui_pow_ui(den, 5, fives - removed);
   mpz_mul_2exp(den, den, twos - shift);

@@ -96,7 +96,10 @@ struct ScalePower {
 /// at most k e gcds with each factor b^e of rest, usually one that is 1 (a general gcd per
 /// coefficient of the reported f and s was a tenth to a sixth of a decimal batch line's full
 /// evidence).
-Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors);
+Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors);
+inline Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors) {
+  return divided_by_powers(z.mpz(), divisors);
+}
 inline Rational divided_by_power(const Integer& z, const SplitScale& scale, unsigned long k) {
   return divided_by_powers(z, {{scale, k}});
 }

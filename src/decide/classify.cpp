@@ -499,18 +499,18 @@ double nearest_double(const Rational& q) {
 ///   f_i = g_i / (lp^i le^(4-i)),  s_i = h_i / (lp^i le^(3-i))   (reported reduced),
 /// and the common-lcm integer forms of the root isolation, S^4 f and S^3 s with S = lcm(lp, le):
 ///   S^4 f_i = g_i (S/lp)^i (S/le)^(4-i),  S^3 s_i = h_i (S/lp)^i (S/le)^(3-i).
-void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h, const forms::SplitScale& sp,
+void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h, const forms::SplitScale& sp,
                           const forms::SplitScale& se, const Integer& lp, const Integer& le, Classification& out,
                           Quartic<Integer>& fi, Quadratic<Integer>& si) {
-  for (unsigned long i = 0; i < 5; ++i) out.f[i] = forms::divided_by_powers(g[i], {{sp, i}, {se, 4 - i}});
-  for (unsigned long i = 0; i < 3; ++i) out.s[i] = forms::divided_by_powers(h[i], {{sp, i}, {se, 3 - i}});
+  for (unsigned long i = 0; i < 5; ++i) out.f[i] = forms::divided_by_powers(g[i].mpz(), {{sp, i}, {se, 4 - i}});
+  for (unsigned long i = 0; i < 3; ++i) out.s[i] = forms::divided_by_powers(h[i].mpz(), {{sp, i}, {se, 3 - i}});
   Integer common, a, b;  // fresh: written through mpz()
   mpz_lcm(common.mpz(), lp.mpz(), le.mpz());
   mpz_divexact(a.mpz(), common.mpz(), lp.mpz());
   mpz_divexact(b.mpz(), common.mpz(), le.mpz());
   if (mpz_popcount(a.mpz()) == 1 && mpz_popcount(b.mpz()) == 1) {  // doubles: S/lp and S/le are powers of 2
     const mp_bitcnt_t ka = mpz_scan1(a.mpz(), 0), kb = mpz_scan1(b.mpz(), 0);
-    auto shifted = [](const Integer& z, mp_bitcnt_t bits) {
+    auto shifted = [](const PooledInteger& z, mp_bitcnt_t bits) {
       Integer r;  // fresh: written through mpz()
       mpz_mul_2exp(r.mpz(), z.mpz(), bits);
       return r;
@@ -522,8 +522,14 @@ void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h
   Integer pa[5], pb[5];  // powers of S/lp and S/le
   pa[0] = pb[0] = Integer(1);
   for (std::size_t i = 1; i < 5; ++i) pa[i] = pa[i - 1] * a, pb[i] = pb[i - 1] * b;
-  for (std::size_t i = 0; i < 5; ++i) fi[i] = g[i] * pa[i] * pb[4 - i];
-  for (std::size_t i = 0; i < 3; ++i) si[i] = h[i] * pa[i] * pb[3 - i];
+  auto times = [](const PooledInteger& z, const Integer& x, const Integer& y) {
+    Integer r;  // fresh: written through mpz()
+    mpz_mul(r.mpz(), z.mpz(), x.mpz());
+    mpz_mul(r.mpz(), r.mpz(), y.mpz());
+    return r;
+  };
+  for (std::size_t i = 0; i < 5; ++i) fi[i] = times(g[i], pa[i], pb[4 - i]);
+  for (std::size_t i = 0; i < 3; ++i) si[i] = times(h[i], pa[i], pb[3 - i]);
 }
 
 /// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
@@ -532,7 +538,7 @@ void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h
 /// the certificate, from h: with mu = lambda le / lp, s(lambda) = h(mu) / le^3, so
 /// Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales), rational iff Disc(h) is a
 /// square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2): two short canonicalisations.
-void fill_full_evidence(const RootStructure& rs, const Quadratic<Integer>& h, const forms::SplitScale& sp,
+void fill_full_evidence(const RootStructure& rs, const Quadratic<PooledInteger>& h, const forms::SplitScale& sp,
                         const forms::SplitScale& se, const Integer& lp, const Integer& le, Classification& out,
                         anysize::LambdaS& ls) {
   out.has_full_evidence = true;
@@ -542,7 +548,7 @@ void fill_full_evidence(const RootStructure& rs, const Quadratic<Integer>& h, co
   mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
   mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
   mpz_submul_ui(disc.mpz(), t.mpz(), 4);
-  if (h[2] > 0 && mpz_sgn(disc.mpz()) >= 0 && mpz_perfect_square_p(disc.mpz())) {
+  if (h[2].sign() > 0 && mpz_sgn(disc.mpz()) >= 0 && mpz_perfect_square_p(disc.mpz())) {
     Integer num, den;  // fresh: written through mpz()
     mpz_sqrt(num.mpz(), disc.mpz());
     mpz_sub(num.mpz(), num.mpz(), h[1].mpz());
@@ -593,11 +599,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
         ep.a[i] = PooledInteger(z->ez.a[i]);
       }
     }
-    const Quartic<PooledInteger> gp = characteristic_polynomial<PooledInteger>(pp, ep);
-    const Quadratic<PooledInteger> hp = special_polynomial<PooledInteger>(pp, ep);
-    const Quartic<Integer> g{gp[0].to_integer(), gp[1].to_integer(), gp[2].to_integer(), gp[3].to_integer(),
-                             gp[4].to_integer()};
-    const Quadratic<Integer> h{hp[0].to_integer(), hp[1].to_integer(), hp[2].to_integer()};
+    const Quartic<PooledInteger> g = characteristic_polynomial<PooledInteger>(pp, ep);
+    const Quadratic<PooledInteger> h = special_polynomial<PooledInteger>(pp, ep);
     // Each scale's rest kept as its denominators' factors: every gcd of the reduction is short.
     const forms::SplitScale sp = p.doubles() ? forms::split_scale(lp) : forms::split_scale(lp, p.matrix());
     const forms::SplitScale se = e.doubles() ? forms::split_scale(le) : forms::split_scale(le, e.matrix());
