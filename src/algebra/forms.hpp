@@ -53,6 +53,15 @@ void lcm_of_denominators(It first, It last, Integer& l) {
   for (; first != last; ++first) fold_lcm(l.mpz(), mpq_denref(first->mpq()));
 }
 
+/// 1 / a^2 for a != 0: the squares of its coprime numerator and denominator, swapped, are already
+/// in lowest terms (no gcd, where rational division computes two).
+inline Rational inverse_square(const Rational& a) {
+  Rational out;  // fresh: its mpq is not shared, so it is written in place
+  mpz_mul(mpq_numref(out.mpq()), mpq_denref(a.mpq()), mpq_denref(a.mpq()));
+  mpz_mul(mpq_denref(out.mpq()), mpq_numref(a.mpq()), mpq_numref(a.mpq()));
+  return out;
+}
+
 /// The integer q l, for l a multiple of q's denominator (lcm_of_denominators), written into `out`
 /// (a fresh Integer's mpz, or an mpz_t: Gmpz shares its value on copy and mpz() does not unshare).
 inline void scaled_numerator(const Rational& q, const Integer& l, mpz_ptr out) {

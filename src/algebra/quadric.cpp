@@ -169,15 +169,6 @@ Rational squared_norm_minus(const Vector3& c, const Rational& r) {
   return forms::divided_by_power(num, forms::split_scale(l), 2);
 }
 
-/// 1 / a^2 for a canonical a != 0: the squares of its coprime numerator and denominator, swapped,
-/// are already in lowest terms (no gcd).
-Rational inverse_square(const Rational& a) {
-  Rational out;  // fresh: its mpq is not shared, so it is written in place
-  mpz_mul(mpq_numref(out.mpq()), mpq_denref(a.mpq()), mpq_denref(a.mpq()));
-  mpz_mul(mpq_denref(out.mpq()), mpq_numref(a.mpq()), mpq_numref(a.mpq()));
-  return out;
-}
-
 std::string found(QuadricKind k) {
   std::string s = to_string(k);
   const char* article = (s[0] == 'a' || s[0] == 'e' || s[0] == 'i' || s[0] == 'o' || s[0] == 'u') ? "an " : "a ";
@@ -528,7 +519,7 @@ Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_
 Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Rational& b, const Quaternion& q) {
   if (a <= 0 || b <= 0)
     throw InputError("paraboloid parameters a, b must be positive, got a = " + to_string(a) + ", b = " + to_string(b));
-  const Rational ia = inverse_square(a), ib = inverse_square(b);
+  const Rational ia = forms::inverse_square(a), ib = forms::inverse_square(b);
   // A congruence of the standard paraboloid by an invertible affine map is an elliptic paraboloid
   // with the same orientation (Sylvester's law of inertia): no validation, no sign normalization.
   if (q[0] != 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) {

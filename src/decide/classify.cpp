@@ -499,9 +499,9 @@ double nearest_double(const Rational& q) {
 ///   f_i = g_i / (lp^i le^(4-i)),  s_i = h_i / (lp^i le^(3-i))   (reported reduced),
 /// and the common-lcm integer forms of the root isolation, S^4 f and S^3 s with S = lcm(lp, le):
 ///   S^4 f_i = g_i (S/lp)^i (S/le)^(4-i),  S^3 s_i = h_i (S/lp)^i (S/le)^(3-i).
-void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h, const forms::SplitScale& sp,
-                          const forms::SplitScale& se, const Integer& lp, const Integer& le, Classification& out,
-                          Quartic<Integer>& fi, Quadratic<Integer>& si) {
+void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
+                          const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp,
+                          const Integer& le, Classification& out, Quartic<Integer>& fi, Quadratic<Integer>& si) {
   for (unsigned long i = 0; i < 5; ++i) out.f[i] = forms::divided_by_powers(g[i].mpz(), {{sp, i}, {se, 4 - i}});
   for (unsigned long i = 0; i < 3; ++i) out.s[i] = forms::divided_by_powers(h[i].mpz(), {{sp, i}, {se, 3 - i}});
   Integer common, a, b;  // fresh: written through mpz()
@@ -559,7 +559,7 @@ void fill_full_evidence(const RootStructure& rs, const Quadratic<PooledInteger>&
   }
   const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
   if (ls.rational()) {
-    out.rho = k / (ls.value.a * ls.value.a);
+    out.rho = k * forms::inverse_square(ls.value.a);  // lambda_s < 0
     out.rho_approx = nearest_double(*out.rho);
   } else {
     const double s2 = CGAL::to_double(out.s[2]), s1 = CGAL::to_double(out.s[1]), s0 = CGAL::to_double(out.s[0]);
