@@ -1007,9 +1007,14 @@ std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<R
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) { return build(e, p, position, Known{}); }
 
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known) {
+  Certificate c;
+  build(e, p, position, known, c);
+  return c;
+}
+
+void build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known, Certificate& c) {
   const Pair pr(e, p, known);
   const std::string name = to_string(position);
-  Certificate c;
   auto in_gap = [&](const Rational& l) { return l < 0 && pr.ls.compare(l) > 0; };
   switch (position) {
     case Position::E:
@@ -1023,7 +1028,7 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, co
       if (!l) throw internal_error("no multiplier lambda with lambda P + E definite for a pair classified " + name);
       c.kind = Certificate::Kind::Definite;
       c.lambda = *l;
-      return c;
+      return;
     }
     case Position::TE:
     case Position::TI: {
@@ -1038,16 +1043,16 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, co
         c.kind = Certificate::Kind::Tangent;
         c.lambda = l;
         c.contact = *x;
-        return c;
+        return;
       }
       // The hard case's contact set exists whenever its linear system is consistent; only the
       // semidefiniteness at lambda_s makes it a tangency, which the verifier's check decides (rare).
-      if (position == Position::TI && hard_case(pr, c) && !verify_certificate(e, p, position, c)) return c;
+      if (position == Position::TI && hard_case(pr, c) && !verify_certificate(e, p, position, c)) return;
       throw internal_error("no contact point for a pair classified " + name);
     }
     case Position::C:
       crossing_points(pr, c);
-      return c;
+      return;
   }
   throw internal_error("no certificate for a pair classified " + name);
 }

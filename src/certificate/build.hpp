@@ -33,5 +33,8 @@ struct Known {
   const Quartic<Integer>* f_multiple = nullptr;  ///< a positive integer multiple of f, for exact signs
 };
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known);
+/// The same written into `out`, a default-constructed certificate (a caller's member: one
+/// certificate's two dozen exact numbers are not allocated twice).
+void build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known, Certificate& out);
 
 }  // namespace relpos::certificate

@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "algebra/forms.hpp"
 #include "algebra/rounding.hpp"
@@ -538,12 +539,12 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
 /// the certificate, from h: with mu = lambda le / lp, s(lambda) = h(mu) / le^3, so
 /// Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales), rational iff Disc(h) is a
 /// square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2): two short canonicalisations.
-void fill_full_evidence(const RootStructure& rs, const Quadratic<PooledInteger>& h, const forms::SplitScale& sp,
+void fill_full_evidence(RootStructure&& rs, const Quadratic<PooledInteger>& h, const forms::SplitScale& sp,
                         const forms::SplitScale& se, const Integer& lp, const Integer& le, Classification& out,
                         anysize::LambdaS& ls) {
   out.has_full_evidence = true;
   out.degree_ftilde = rs.degree_ftilde;
-  out.roots = rs.real_roots;
+  out.roots = std::move(rs.real_roots);
   Integer disc, t;  // fresh: written through mpz()
   mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
   mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
@@ -608,12 +609,12 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     Quadratic<Integer> s;
     reported_polynomials(g, h, sp, se, lp, le, out, f, s);
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
-    const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
+    RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
-    fill_full_evidence(rs, h, sp, se, lp, le, out, ls);
+    fill_full_evidence(std::move(rs), h, sp, se, lp, le, out, ls);
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f.
-    out.certificate = certificate::build(e, p, v.position,
-                                         certificate::Known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f});
+    certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f},
+                       out.certificate);
   }
   return out;
 }
