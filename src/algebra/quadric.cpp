@@ -527,9 +527,13 @@ Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Ratio
     Matrix4 m;
     m(0, 0) = ia;
     m(1, 1) = ib;
+    m(2, 3) = m(3, 2) = Rational(-1, 2);
+    if (v[0] == 0 && v[1] == 0) {  // a vertex on the z axis (the usual input): no products of zeros
+      m(3, 3) = v[2];
+      return Paraboloid(std::move(m));
+    }
     m(0, 3) = m(3, 0) = -ia * v[0];
     m(1, 3) = m(3, 1) = -ib * v[1];
-    m(2, 3) = m(3, 2) = Rational(-1, 2);
     m(3, 3) = ia * v[0] * v[0] + ib * v[1] * v[1] + v[2];
     return Paraboloid(std::move(m));
   }

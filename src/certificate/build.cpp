@@ -120,15 +120,21 @@ class IntegerPoly {
   }
   int sign(const Rational& x) const {
     if (z_.empty()) return 0;
-    Integer acc, dp(1), t;  // fresh objects: Gmpz shares its value on copy, mpz() does not unshare
-    mpz_set(acc.mpz(), z_.back().mpz());
+    mpz_t acc, dp, t;  // no Integer handles: one exact sign per candidate multiplier
+    mpz_init_set(acc, z_.back().mpz());
+    mpz_init_set_ui(dp, 1);
+    mpz_init(t);
     for (std::size_t k = z_.size() - 1; k-- > 0;) {
-      mpz_mul(dp.mpz(), dp.mpz(), mpq_denref(x.mpq()));
-      mpz_mul(acc.mpz(), acc.mpz(), mpq_numref(x.mpq()));
-      mpz_mul(t.mpz(), z_[k].mpz(), dp.mpz());
-      mpz_add(acc.mpz(), acc.mpz(), t.mpz());
+      mpz_mul(dp, dp, mpq_denref(x.mpq()));
+      mpz_mul(acc, acc, mpq_numref(x.mpq()));
+      mpz_mul(t, z_[k].mpz(), dp);
+      mpz_add(acc, acc, t);
     }
-    return mpz_sgn(acc.mpz());
+    const int out = mpz_sgn(acc);
+    mpz_clear(acc);
+    mpz_clear(dp);
+    mpz_clear(t);
+    return out;
   }
   /// The Newton step t - q(t)/q'(t) from t = n/d rounded down to a multiple of 2^e, on integers
   /// (one division, no canonicalization); nullopt where q' vanishes.
