@@ -103,7 +103,7 @@ struct ScalePower {
 /// z / (scale_1^k_1 scale_2^k_2 ...) in lowest terms without a gcd of the long numbers: the twos
 /// by a bit scan, the fives by single-limb remainders, and the common factor with each rest^k as
 /// at most k e gcds with each factor b^e of rest, usually one that is 1 (a general gcd per
-/// coefficient of the reported f and s was a tenth to a sixth of a decimal batch line's full
+/// coefficient of the reported f and s costs a tenth to a sixth of a decimal batch line's full
 /// evidence).
 Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors);
 inline Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors) {
