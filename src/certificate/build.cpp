@@ -41,14 +41,26 @@ DoubleMatrix4 to_doubles(const Matrix4& m) {
 /// rational canonicalisation (gcd) per operation, and the temporaries live in reused mpz_t.
 class IntegerForm {
  public:
-  explicit IntegerForm(const Matrix4& q) : IntegerForm(integer_form(q)) {}
   /// From the integer form itself (forms::integer_form), when the caller has it.
   explicit IntegerForm(const forms::MatrixOf<Integer>& z) {
     for (int i = 0; i < 4; ++i)
-      for (int j = i; j < 4; ++j) {
-        mpz_init_set(z_[i][j], z(i, j).mpz());
-        if (j > i) mpz_mul_2exp(z_[i][j], z_[i][j], 1);  // off-diagonal entries appear twice
+      for (int j = i; j < 4; ++j) mpz_init_set(z_[i][j], z(i, j).mpz());
+    double_off_diagonal();
+  }
+  /// From a matrix of exact doubles, written straight into the form (no Integer handles).
+  explicit IntegerForm(const DoubleMatrix4& d) {
+    mpz_t lower[6];  // the entries below the diagonal, equal to those above
+    std::array<mpz_ptr, 16> out;
+    for (int i = 0, k = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const mpz_ptr x = j >= i ? z_[i][j] : lower[k++];
+        mpz_init(x);
+        out[static_cast<std::size_t>(4 * i + j)] = x;
       }
+    Integer l;
+    forms::integer_form(d, out, l);
+    for (auto& x : lower) mpz_clear(x);
+    double_off_diagonal();
   }
   IntegerForm(const IntegerForm&) = delete;
   IntegerForm& operator=(const IntegerForm&) = delete;
@@ -91,9 +103,9 @@ class IntegerForm {
   }
 
  private:
-  static forms::MatrixOf<Integer> integer_form(const Matrix4& q) {
-    Integer l;
-    return forms::integer_form(q, l);
+  void double_off_diagonal() {  // off-diagonal entries appear twice in X^T Q X
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) mpz_mul_2exp(z_[i][j], z_[i][j], 1);
   }
   mpz_t z_[4][4];
 };
@@ -209,6 +221,7 @@ class LazyMatrix {
   /// The entries as doubles (CGAL::to_double of each): the quadric's own doubles when it has them,
   /// without building its rationals.
   DoubleMatrix4 doubles() const { return q_.doubles() ? *q_.doubles() : to_doubles(get()); }
+  const std::optional<DoubleMatrix4>& own_doubles() const { return q_.doubles(); }
   /// forms::integer_form of the matrix, from the doubles when the quadric has them.
   forms::MatrixOf<Integer> integer_form(Integer& l) const {
     return q_.doubles() ? forms::integer_form(*q_.doubles(), l) : forms::integer_form(get(), l);
@@ -273,6 +286,7 @@ struct Pair {
     return detail::solve_integer_system(k);
   }
 
+  bool has_forms() const { return forms_.has_value(); }
   /// The integer forms of E and P with their scales: the caller's, else computed on first use
   /// (from the quadrics' doubles when they have them: no rational matrix).
   const IntegerForms& forms() const {
@@ -947,11 +961,18 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   DoubleBracket brackets[2];
-  const IntegerForm ez(pr.forms().ez), pz(pr.forms().pz);  // exact signs of e and p at the candidates
+  std::optional<IntegerForm> ez, pz;  // exact signs of e and p at the candidates
+  if (pr.has_forms() || !pr.E.own_doubles() || !pr.P.own_doubles()) {
+    ez.emplace(pr.forms().ez);
+    pz.emplace(pr.forms().pz);
+  } else {  // from the doubles: the integer forms with their scales are not needed
+    ez.emplace(*pr.E.own_doubles());
+    pz.emplace(*pr.P.own_doubles());
+  }
   std::function<void(const V3&)> consider = [&](const V3& x) {
     const IntegerForm::Point xz(x);
-    if (ez.sign(xz) > 0) return;
-    const int s = pz.sign(xz);
+    if (ez->sign(xz) > 0) return;
+    const int s = pz->sign(xz);
     if (s < 0 && !inside) inside = x;
     if (s > 0 && !outside) outside = x;
   };
@@ -960,7 +981,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
   // centre (Cramer's rule on integers, several times dearer).
   const DoubleMatrix4 ed = pr.E.doubles();
   std::optional<V3> pull = approximate_centre(ed);
-  if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(ed, *pull)) {
+  if (pull && ez->sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(ed, *pull)) {
     consider(*pull);
     double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider, brackets);
   } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
