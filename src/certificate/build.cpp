@@ -236,25 +236,34 @@ class LazyMatrix {
 struct Pair {
   LazyMatrix<Ellipsoid> E;
   LazyMatrix<Paraboloid> P;
-  Poly f, s;
   LambdaS ls;
   Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known) : E(e), P(p) {
     if (known.f && known.s) {
-      f = anysize::to_poly(known.f->data(), 5);
-      s = anysize::to_poly(known.s->data(), 3);
+      known_f_ = known.f;
+      known_s_ = known.s;
     } else {
       const Quartic<Rational> fq = characteristic_polynomial<Rational>(P.get(), E.get());
       const Quadratic<Rational> sq = special_polynomial<Rational>(P.get(), E.get());
-      f = anysize::to_poly(fq.data(), 5);
-      s = anysize::to_poly(sq.data(), 3);
+      f_ = anysize::to_poly(fq.data(), 5);
+      s_ = anysize::to_poly(sq.data(), 3);
     }
-    ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s);
+    ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s());
     if (known.forms) forms_ = *known.forms;
     if (known.f_multiple) f_multiple_.emplace(known.f_multiple->data(), 5);
   }
+  /// f and s as polynomials over Q: the caller's, copied on first use (the certificates of E and I
+  /// with known roots read neither).
+  const Poly& f() const {
+    if (!f_) f_ = anysize::to_poly(known_f_->data(), 5);
+    return *f_;
+  }
+  const Poly& s() const {
+    if (!s_) s_ = anysize::to_poly(known_s_->data(), 3);
+    return *s_;
+  }
   /// f times the lcm of its denominators (its size sets the searches' budgets), on first use.
   const IntegerPoly& fz() const {
-    if (!fz_) fz_.emplace(f);
+    if (!fz_) fz_.emplace(f());
     return *fz_;
   }
   /// sign f(x), on the caller's integer multiple of f when it gave one.
@@ -299,6 +308,9 @@ struct Pair {
   }
 
  private:
+  const Quartic<Rational>* known_f_ = nullptr;
+  const Quadratic<Rational>* known_s_ = nullptr;
+  mutable std::optional<Poly> f_, s_;
   mutable std::optional<IntegerForms> forms_;
   mutable std::optional<IntegerPoly> fz_;
   std::optional<IntegerPoly> f_multiple_;
@@ -504,7 +516,7 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
   // The positive maximum of f sits at a root of f'; its margin, like a crossing's, needs at most a
   // multiple of the coefficient bits.
   return search_near_roots(
-      anysize::derivative(pr.f), [&](const Rational& l) { return in_domain(l) && pr.f_sign(l) > 0; },
+      anysize::derivative(pr.f()), [&](const Rational& l) { return in_domain(l) && pr.f_sign(l) > 0; },
       1024 + 16 * pr.fz().bits());
 }
 
@@ -683,7 +695,7 @@ struct Secular {
     fmpz_poly_t f, s, d, gp, ge;  // gp = f' s - f s', ge = f s - lambda gp (d: scratch)
     for (auto* q : {f, s, d, gp, ge}) fmpz_poly_init(q);
     pr.fz().to_flint(f);
-    IntegerPoly(pr.s).to_flint(s);
+    IntegerPoly(pr.s()).to_flint(s);
     fmpz_poly_derivative(d, f);
     fmpz_poly_mul(gp, d, s);
     fmpz_poly_derivative(d, s);
@@ -1060,7 +1072,7 @@ void build(const Ellipsoid& e, const Paraboloid& p, Position position, const Kno
     case Position::TE:
     case Position::TI: {
       // The double root lambda* of f is rational (math.md §8), and (x(lambda*), 1) spans the kernel.
-      const Poly g = anysize::monic_gcd(pr.f, anysize::derivative(pr.f));
+      const Poly g = anysize::monic_gcd(pr.f(), anysize::derivative(pr.f()));
       const Poly q = anysize::quotient(g, anysize::monic_gcd(g, anysize::derivative(g)));
       for (const Rational& l : rational_roots(q)) {
         const bool ok = position == Position::TE ? l > 0 : in_gap(l);
