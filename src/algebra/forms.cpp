@@ -195,6 +195,7 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m) {
   if (out.factors.empty()) return out;
   // The distinct rests of the denominators (2s and 5s removed), each a root to the power 1 or 2.
   std::vector<SplitScale::Factor> rests;
+  rests.reserve(4);  // a standard paraboloid has two or three
   mpz_t r, g;
   mpz_init(r);
   mpz_init(g);
@@ -219,6 +220,7 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m) {
   // Factor refinement: two bases with a common factor c become b / c, b' / c and c, until they are
   // pairwise coprime. Every rest stays a product of bases; the product of the bases decreases.
   std::vector<Integer> base;
+  base.reserve(rests.size() + 2);
   for (const SplitScale::Factor& x : rests) {
     base.emplace_back();
     mpz_set(base.back().mpz(), x.base.mpz());
@@ -264,6 +266,7 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m) {
   }
   if (exact && mpz_cmp(g, out.rest.mpz()) == 0) {
     out.factors.clear();
+    out.factors.reserve(base.size());
     for (std::size_t j = 0; j < base.size(); ++j) out.factors.push_back({base[j], power[j]});
   }
   mpz_clear(r);
