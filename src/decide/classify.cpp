@@ -262,6 +262,38 @@ void decide_from_facts(const RootFacts& x, int rho_vs_one, Verdict& v) {
   decide(v);
 }
 
+/// The fast route (math.md §8): with Disc(f) != 0 the signs of f's coefficients and of Disc(f) give
+/// every root count (discriminant_case), so the Sturm-Habicht g2 and g1 are not needed; rho is
+/// always compared (the answer reports smallness). The 3 cases x 3 outcomes of rho are generated once
+/// from the one written decision (decide_from_facts). False when the case or rho is uncertain.
+bool decide_from_discriminant(const DecisionSigns& d, Verdict& v) {
+  struct CaseTable {
+    Verdict v[4][3];
+    CaseTable() {
+      for (int c = 1; c < 4; ++c)
+        for (int rho = -1; rho <= 1; ++rho) {
+          const bool two_real = static_cast<DiscriminantCase>(c) == DiscriminantCase::NonRealPair;
+          const bool two_positive = static_cast<DiscriminantCase>(c) == DiscriminantCase::TwoPositive;
+          RootFacts x;
+          x.real = two_real ? 2 : 4;
+          x.positive = two_positive ? 2 : 0;
+          x.negative = x.real - x.positive;
+          x.nonreal = 4 - x.real;
+          x.sign_disc_f = x.sign_disc_ftilde = two_real ? -1 : 1;  // f square-free: f~ = f
+          decide_from_facts(x, rho, v[c][rho + 1]);
+        }
+    }
+  };
+  static const CaseTable table;
+  const DiscriminantCase c = discriminant_case(d.quartic);
+  const auto rho = compare_rho_with_one(d.vertex, d.graeffe);
+  if (c == DiscriminantCase::Undecided || !rho) return false;
+  const Stage stage = v.stage;
+  v = table.v[static_cast<int>(c)][*rho + 1];
+  v.stage = stage;
+  return true;
+}
+
 /// Stage 1b: the static filter left Disc(f) uncertain on exact-double input. If f has rational
 /// multiple roots, exhibit them on machine integers (multiple_roots.hpp): that certifies Disc(f) = 0
 /// and gives every root fact without GMP. rho comes from the static signs, or exactly from the same
@@ -282,7 +314,7 @@ bool decide_from_witness(const DoubleMatrix4& p, const DoubleMatrix4& e, const D
 /// doubles or stored enclosures (scaled by a power of two; rounding towards +inf).
 template <class Q>
 MatrixOf<Interval> interval_entries(const Q& q) {
-  if (q.doubles()) return to_intervals(*q.doubles());
+  if (const std::optional<DoubleMatrix4> d = q.doubles()) return to_intervals(*d);
   if (storage_of(q).enclosure()) return to_intervals(*storage_of(q).enclosure());
   return to_intervals(q.matrix());
 }
@@ -293,8 +325,8 @@ template <class Q>
 detail::EnclosureMatrix4 enclosure_of(const Q& q) {
   if (storage_of(q).enclosure()) return *storage_of(q).enclosure();
   detail::EnclosureMatrix4 out;
-  if (q.doubles()) {
-    out.lo = out.hi = *q.doubles();
+  if (const std::optional<DoubleMatrix4> d = q.doubles()) {
+    out.lo = out.hi = *d;
     return out;
   }
   const Matrix4& m = q.matrix();
@@ -326,18 +358,6 @@ struct ExactData {
   }
   Quadratic<Integer> s_integer() const { return {s[0].to_integer(), s[1].to_integer(), s[2].to_integer()}; }
 };
-
-/// Disc(f) up to the positive factor 27, from the invariants of the quartic f4 x^4 + ... + f0:
-/// 27 Disc(f) = 4 I^3 - J^2 with I = 12 f4 f0 - 3 f3 f1 + f2^2 and
-/// J = 72 f4 f2 f0 + 9 f3 f2 f1 - 27 f4 f1^2 - 27 f0 f3^2 - 2 f2^3: a dozen products where the
-/// expanded Sturm-Habicht g0 (= Disc(f)) takes about eighty.
-template <class NT>
-NT discriminant_times_27(const Quartic<NT>& f) {
-  const NT i = NT(12) * f[4] * f[0] - NT(3) * f[3] * f[1] + f[2] * f[2];
-  const NT j = (NT(72) * f[4] * f[0] - NT(2) * f[2] * f[2]) * f[2] + NT(9) * f[3] * f[2] * f[1] -
-               NT(27) * (f[4] * f[1] * f[1] + f[0] * f[3] * f[3]);
-  return NT(4) * i * i * i - j * j;
-}
 
 /// True when a float stage certified every sign the decision reads except Disc(f)'s: the usual state
 /// near a tangency, where the exact stage then needs that one sign only.
@@ -393,6 +413,8 @@ bool finish(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v
   return decided(v);
 }
 
+bool always_smallness(const QuarticSigns&) { return true; }
+
 /// The whole filter -> exact policy in one place: each stage certifies what it can, the next one
 /// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
 Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact) {
@@ -402,11 +424,18 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
     // The double stages assume round-to-nearest; a caller inside an upward-rounding block (CGAL
     // interval code) gets the interval stage instead.
     const bool nearest = rounding_to_nearest();
-    if (e.doubles() && p.doubles()) {
+    if (storage_of(e).has_doubles() && storage_of(p).has_doubles()) {
       v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
       const bool in_range = storage_of(e).filter_doubles() && storage_of(p).filter_doubles() && nearest;
-      if (in_range)
+      if (in_range) {
+        // The fast route first: f, Disc(f) and smallness only. Anything it leaves open is asked
+        // again of the whole sequence, from the start.
+        const DecisionSigns fast = static_filter_discriminant_signs_normalized(
+            *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), always_smallness);
+        if (decide_from_discriminant(fast, v) && finish(e, p, use_filter, v, exact)) return v;
+        v = Verdict{};
         d = static_filter_signs_normalized(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles());
+      }
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
       if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
         v.stage = Stage::SemiStaticDouble;
@@ -554,10 +583,9 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E), from each matrix's own form
     Integer lp, le;
     // From the doubles when the entries are doubles: no rational matrix is built for the evidence.
-    const MatrixOf<Integer> pz =
-        p.doubles() ? forms::integer_form(*p.doubles(), lp) : forms::integer_form(p.matrix(), lp);
-    const MatrixOf<Integer> ez =
-        e.doubles() ? forms::integer_form(*e.doubles(), le) : forms::integer_form(e.matrix(), le);
+    const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();
+    const MatrixOf<Integer> pz = pd ? forms::integer_form(*pd, lp) : forms::integer_form(p.matrix(), lp);
+    const MatrixOf<Integer> ez = ed ? forms::integer_form(*ed, le) : forms::integer_form(e.matrix(), le);
     MatrixOf<PooledInteger> pp, ep;  // the generic formulas without heap traffic for temporaries
     for (std::size_t i = 0; i < 16; ++i) {
       pp.a[i] = PooledInteger(pz.a[i]);

@@ -27,12 +27,13 @@ DecisionSigns static_filter_signs(const DoubleMatrix4& p, const DoubleMatrix4& e
 /// storage_of(ellipsoid).filter_doubles(): the hot path of classify().
 DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e);
 
-/// Only what the discriminant decision of contact.hpp reads: the signs of f's coefficients and of
-/// Disc(f) (quartic.f and quartic.g0; g2 and g1 stay uncertain -- they are never computed). The
+/// Only what the discriminant decision (discriminant_case, algebra/sturm.hpp) reads: the signs of
+/// f's coefficients and of Disc(f) (quartic.f and quartic.g0, the latter from the invariants; g2 and
+/// g1 stay uncertain -- they are never computed). The
 /// smallness signs (vertex, graeffe) are computed only when `need_smallness` is non-null and returns
 /// true on those signs (the caller's decision says whether its answer depends on rho); otherwise they
-/// stay uncertain. Same input and bounds as static_filter_signs_normalized(): the Disc(f) bound is
-/// that of g0, the smallness bounds those of vertex and graeffe, derived once from the same formulas.
+/// stay uncertain. Same input as static_filter_signs_normalized(); the bounds are derived once from
+/// the same formulas (discriminant_times_27, SmallnessQuantities).
 DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e,
                                                           bool (*need_smallness)(const QuarticSigns&) = nullptr);
 
