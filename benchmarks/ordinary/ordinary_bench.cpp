@@ -32,6 +32,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <random>
@@ -267,6 +269,20 @@ std::vector<double> ratios(const PairSet& s, int path, int base) {
   return r;
 }
 
+/// The first line of `path` that starts with `key` (after it), or "" (Linux: /proc/loadavg, /proc/cpuinfo).
+std::string read_line(const char* path, const std::string& key) {
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);)
+    if (line.compare(0, key.size(), key) == 0) return line.substr(key.size());
+  return "";
+}
+
+/// The machine's state, recorded with the figures: the load is what makes them comparable or not.
+std::string load_average() {
+  const std::string l = read_line("/proc/loadavg", "");
+  return l.substr(0, l.find(' ', l.find(' ', l.find(' ') + 1) + 1));  // the 1, 5 and 15 minute averages
+}
+
 std::size_t parse_size(const char* s) { return static_cast<std::size_t>(std::strtoull(s, nullptr, 10)); }
 
 }  // namespace
@@ -304,6 +320,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  const std::string load_before = load_average();
   std::mt19937_64 rng(seed);
   std::vector<PairSet> sets(3);
   sets[0].name = "cache", sets[0].text = "in cache, looped";
@@ -349,15 +366,25 @@ int main(int argc, char** argv) {
         s.time[static_cast<std::size_t>(path)].push_back(median(batch[static_cast<std::size_t>(path)]));
     }
 
-  std::printf("\n%d rounds of %d batches; per path: median ns per pair, median of the per-round ratios [range]\n",
-              rounds, batches);
+  const std::string load_after = load_average();
+  std::string cpu = read_line("/proc/cpuinfo", "model name");
+  cpu = cpu.substr(std::min(cpu.size(), cpu.find_first_not_of(" \t:")));
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  std::printf("\n%s, %s, load average %s before and %s after\n", date, cpu.c_str(), load_before.c_str(),
+              load_after.c_str());
+  std::printf("%d rounds of %d batches; per path: median ns per pair, median of the per-round ratios [range]\n", rounds,
+              batches);
   std::FILE* json = out.empty() ? nullptr : std::fopen(out.c_str(), "w");
   if (!out.empty() && !json) {
     std::fprintf(stderr, "cannot write %s\n", out.c_str());
     return 2;
   }
   if (json) {
-    std::fprintf(json, "{\n  \"seed\": %lu, \"rounds\": %d, \"batches\": %d, \"pairs_checked\": %zu,\n", seed, rounds,
+    std::fprintf(json, "{\n  \"date\": \"%s\", \"cpu\": \"%s\", \"load_before\": \"%s\", \"load_after\": \"%s\",\n",
+                 date, cpu.c_str(), load_before.c_str(), load_after.c_str());
+    std::fprintf(json, "  \"seed\": %lu, \"rounds\": %d, \"batches\": %d, \"pairs_checked\": %zu,\n", seed, rounds,
                  batches, checks.pairs);
     std::fprintf(json, "  \"library_mismatches\": %zu, \"certificates_rejected\": %zu, \"bytes_per_pair\": %.0f,\n",
                  checks.library_mismatches, checks.certificates_rejected, pair_bytes);
