@@ -23,7 +23,7 @@ SEED="${RELPOS_BENCH_SEED:-20240601}"
 # benchmarks/batch_bench.py on the installed CLI (both files, --threads 2, 20 000 lines) ->
 # benchmarks/results/{ordinary,batch}.json and *_log.txt, and the generated part of the section
 # "Ordinary pairs against the minimal float decision" of doc/performance.md rewritten
-# (tables.py --ordinary). A few minutes; extra arguments go to ordinary_bench.
+# (tables.py --ordinary). About a minute; extra arguments go to ordinary_bench.
 if [ "${1:-}" = "--ordinary" ]; then
   shift
   if [ -n "${RELPOS_ORDINARY_BUILD:-}" ]; then

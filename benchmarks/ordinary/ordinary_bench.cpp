@@ -325,7 +325,7 @@ int main(int argc, char** argv) {
   std::vector<PairSet> sets(3);
   sets[0].name = "cache", sets[0].text = "in cache, looped";
   sets[1].name = "issue", sets[1].text = "held in std::vector";
-  sets[2].name = "large", sets[2].text = "held in std::vector, beyond the last-level cache";
+  sets[2].name = "large", sets[2].text = "held in std::vector";
   const std::size_t sizes[3] = {n_cache, n_issue, n_large};
   Checks checks;
   bool ok = true;
