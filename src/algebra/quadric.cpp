@@ -185,25 +185,23 @@ std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m) {
 
 namespace detail {
 
-void QuadricMatrix::set_doubles(const DoubleMatrix4& d, const std::optional<NormalizedDoubles>& normalized) {
-  flags_ = kDoubles;
-  if (!normalized) {
+QuadricMatrix::QuadricMatrix(Matrix4 m) {
+  if (const std::optional<DoubleMatrix4> d = exact_doubles(m)) *this = QuadricMatrix(*d);
+  m_ = std::make_shared<const Matrix4>(std::move(m));
+}
+
+QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d) : flags_(kDoubles) {
+  bool plain;
+  if (normalize_doubles(d, v_, exponent_, plain)) {
+    flags_ |= kNormalized | (plain ? kPlainScale : 0);
+  } else {
     v_ = d;
-    return;
+    exponent_ = 0;
   }
-  v_ = normalized->v;
-  exponent_ = normalized->exponent;
-  flags_ |= kNormalized | (normalized->plain ? kPlainScale : 0);
 }
 
-QuadricMatrix::QuadricMatrix(Matrix4 m) : m_(std::make_shared<const Matrix4>(std::move(m))) {
-  if (const std::optional<DoubleMatrix4> d = exact_doubles(*m_)) set_doubles(*d, normalized_doubles(*d));
-}
-
-QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d) { set_doubles(d, normalized_doubles(d)); }
-
-QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d, const std::optional<NormalizedDoubles>& normalized) {
-  set_doubles(d, normalized);
+void QuadricMatrix::negate_doubles() {
+  for (double& x : v_) x = -x;
 }
 
 QuadricMatrix::QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source)
@@ -418,25 +416,14 @@ bool all_finite(const DoubleMatrix4& d) {
   return true;
 }
 
-DoubleMatrix4 negated(const DoubleMatrix4& d) {
-  DoubleMatrix4 r;
-  for (std::size_t i = 0; i < 16; ++i) r[i] = -d[i];
-  return r;
-}
-
-std::optional<detail::NormalizedDoubles> negated(const std::optional<detail::NormalizedDoubles>& n) {
-  if (!n) return std::nullopt;
-  return detail::NormalizedDoubles{negated(n->v), n->exponent, n->plain};
-}
-
 }  // namespace
 
 Ellipsoid Ellipsoid::from_doubles(const DoubleMatrix4& e) {
   if (all_finite(e)) {
-    const std::optional<detail::NormalizedDoubles> n = detail::normalized_doubles(e);
-    const int orientation = shape_filter::certified_ellipsoid(e, n ? &n->v : nullptr);
-    if (orientation > 0) return Ellipsoid(detail::QuadricMatrix(e, n));
-    if (orientation < 0) return Ellipsoid(detail::QuadricMatrix(negated(e), negated(n)));
+    Ellipsoid out{detail::QuadricMatrix(e)};  // normalized in place, read by the shape test
+    const int orientation = shape_filter::certified_ellipsoid(e, out.m_.filter_doubles());
+    if (orientation < 0) out.m_.negate_doubles();
+    if (orientation != 0) return out;
   }
   // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
   const Ellipsoid exact = from_matrix(exact_matrix(e));
@@ -519,10 +506,10 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
 // measured 10 % slower on the from-doubles path (benchmarks/regime_bench), so each is written out.
 Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
   if (all_finite(p)) {
-    const std::optional<detail::NormalizedDoubles> n = detail::normalized_doubles(p);
-    const int orientation = shape_filter::certified_paraboloid(p, n ? &n->v : nullptr);
-    if (orientation > 0) return Paraboloid(detail::QuadricMatrix(p, n));
-    if (orientation < 0) return Paraboloid(detail::QuadricMatrix(negated(p), negated(n)));
+    Paraboloid out{detail::QuadricMatrix(p)};  // normalized in place, read by the shape test
+    const int orientation = shape_filter::certified_paraboloid(p, out.m_.filter_doubles());
+    if (orientation < 0) out.m_.negate_doubles();
+    if (orientation != 0) return out;
   }
   const Paraboloid exact = from_matrix(exact_matrix(p));
   return Paraboloid(*exact.doubles());

@@ -120,7 +120,7 @@ bool scale_into_unit(double* v, double* err, int n) {
 /// Scale a matrix so its largest entry is in [1/2, 1); false if an entry would lose bits (subnormal)
 /// or the input is not finite. `exponent`: in = out * 2^exponent; `plain`: no entry of `in` is
 /// subnormal and 2^exponent is normal.
-bool normalize(const DoubleMatrix4& in, Mat<double>& out, int& exponent, bool& plain) {
+bool normalize(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool& plain) {
   // On the bits first (this runs for every quadric made from doubles): for finite doubles, |x|
   // orders as the integer of x's bits with the sign cleared. The largest gives the scaling; the
   // smallest non-zero one says whether every product is exact without looking at the products.
@@ -136,10 +136,11 @@ bool normalize(const DoubleMatrix4& in, Mat<double>& out, int& exponent, bool& p
   const int emax = static_cast<int>(mx >> 52) - 1023;
   const int k = -emax - 1;
   exponent = emax + 1;
+  const int lo = static_cast<int>(mn >> 52);  // 0: some entry is subnormal
   // Common case: every non-zero entry normal, and the smallest stays normal once scaled by 2^k.
-  if (mn >= 0x0010000000000000ULL && static_cast<int>(mn >> 52) - 1023 + k >= -1022 && k >= -1022) {
+  if (lo >= 1 && lo - 1023 + k >= -1022 && k >= -1022) {
     const double scale = power_of_two(k);
-    for (std::size_t i = 0; i < 16; ++i) out.a[i] = in[i] * scale;  // exact
+    for (std::size_t i = 0; i < 16; ++i) out[i] = in[i] * scale;  // exact
     plain = exponent <= 1023;
     return true;
   }
@@ -149,29 +150,25 @@ bool normalize(const DoubleMatrix4& in, Mat<double>& out, int& exponent, bool& p
   const double scale = power_of_two(k < -1022 ? k + 512 : k);  // multiplying by it is exact
   bool lost = false;
   for (std::size_t i = 0; i < 16; ++i) {
-    out.a[i] = in[i] * pre * scale;
-    lost = lost || (in[i] != 0 && std::fabs(out.a[i]) < DBL_MIN);
+    out[i] = in[i] * pre * scale;
+    lost = lost || (in[i] != 0 && std::fabs(out[i]) < DBL_MIN);
   }
-  plain = mn >= 0x0010000000000000ULL && exponent <= 1023;  // no entry subnormal, 2^exponent normal
+  plain = lo >= 1 && exponent <= 1023;  // no entry subnormal, 2^exponent normal
   return !lost;
 }
 
 bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
   int exponent;
   bool plain;
-  return normalize(in, out, exponent, plain);
+  return normalize(in, out.a, exponent, plain);
 }
 
 DecisionSigns uncertain() { return DecisionSigns{}; }
 
 }  // namespace
 
-std::optional<detail::NormalizedDoubles> detail::normalized_doubles(const DoubleMatrix4& d) {
-  Mat<double> out;
-  int exponent;
-  bool plain;
-  if (!normalize(d, out, exponent, plain)) return std::nullopt;
-  return NormalizedDoubles{out.a, exponent, plain};
+bool detail::normalize_doubles(const DoubleMatrix4& d, DoubleMatrix4& out, int& exponent, bool& plain) {
+  return normalize(d, out, exponent, plain);
 }
 
 std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m) {

@@ -23,18 +23,12 @@ struct EnclosureMatrix4 {
   DoubleMatrix4 lo{}, hi{};
 };
 
-/// Doubles scaled by the power of two that brings the largest entry into [1/2, 1) (what
-/// power_of_two_normalized returns), with the exponent that gives them back: d = v * 2^exponent,
-/// exactly; `plain` when that is one multiplication per entry (2^exponent normal, no entry of d
-/// subnormal).
-struct NormalizedDoubles {
-  DoubleMatrix4 v;
-  int exponent;
-  bool plain;
-};
-/// nullopt when an entry would become subnormal, or d is zero or not finite (as
-/// power_of_two_normalized).
-std::optional<NormalizedDoubles> normalized_doubles(const DoubleMatrix4& d);
+/// d scaled by the power of two that brings its largest entry into [1/2, 1) (what
+/// power_of_two_normalized returns), written to `out`, with the exponent that gives it back:
+/// d = out * 2^exponent, exactly; `plain` when that is one multiplication per entry (2^exponent
+/// normal, no entry of d subnormal). False (out unspecified) when an entry would become subnormal,
+/// or d is zero or not finite.
+bool normalize_doubles(const DoubleMatrix4& d, DoubleMatrix4& out, int& exponent, bool& plain);
 
 /// Builds the exact matrix of a quadric on first use (for a quadric read from text: the exact
 /// parse of that text, run only when an exact stage or the evidence asks for the rationals).
@@ -61,8 +55,9 @@ class QuadricMatrix {
   QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source);
   /// From doubles that are all finite (checked by the caller); no heap allocation.
   explicit QuadricMatrix(const DoubleMatrix4& d);
-  /// The same with d's normalized_doubles already computed (by the caller's filter).
-  QuadricMatrix(const DoubleMatrix4& d, const std::optional<NormalizedDoubles>& normalized);
+  /// -Q for a quadric made from doubles whose exact matrix is not built yet (a matrix given with
+  /// the other orientation, found by the caller's shape test).
+  void negate_doubles();
   QuadricMatrix(const QuadricMatrix& o)
       : v_(o.v_), exponent_(o.exponent_), flags_(o.flags_), cold_(o.cold_), m_(std::atomic_load(&o.m_)) {}
   /// Moves take the matrix without atomic operations: a quadric being moved is not shared (vectors
@@ -111,7 +106,6 @@ class QuadricMatrix {
     EnclosureMatrix4 enclosure;
     std::shared_ptr<const ExactSource> source;
   };
-  void set_doubles(const DoubleMatrix4& d, const std::optional<NormalizedDoubles>& normalized);
   const Matrix4& materialize() const;
   /// kNormalized: the normalized doubles, and the doubles are v_ * 2^exponent_; kDoubles alone: the
   /// doubles themselves (exponent_ 0); neither: unused.
