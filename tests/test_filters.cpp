@@ -3,6 +3,7 @@
 // settle what the static bound cannot. Exact signs come from the same generic formulas on exact
 // rationals of the same (power-of-two normalized) matrices.
 #include <catch2/catch.hpp>
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include <relpos/classify.hpp>
 #include <relpos/scene.hpp>
 
+#include "algebra/rounding.hpp"
 #include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
 #include "filters/semi_static_filter.hpp"
@@ -104,6 +106,22 @@ DoubleMatrix4 normalized(const std::optional<DoubleMatrix4>& m) {
 }
 
 }  // namespace
+
+TEST_CASE("the double stages see each of the four rounding modes", "[filters]") {
+  // The double filters run only to nearest; every other mode must be told apart (the interval
+  // stage takes over).
+  const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+  bool nearest[4];
+  for (int i = 0; i < 4; ++i) {
+    REQUIRE(std::fesetround(modes[i]) == 0);
+    nearest[i] = relpos::detail::rounding_to_nearest();
+  }
+  std::fesetround(FE_TONEAREST);
+  CHECK(nearest[0]);
+  CHECK_FALSE(nearest[1]);
+  CHECK_FALSE(nearest[2]);
+  CHECK_FALSE(nearest[3]);
+}
 
 TEST_CASE("double filters: every certified sign is the exact sign (demo scene bodies)", "[filters][random]") {
   const Paraboloid p = Paraboloid::standard({Q(0), Q(0), Q(0)}, Q(1), Q(2));
