@@ -450,10 +450,18 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
       }
     } else if (nearest) {  // stage 1' for other entries: double enclosures (stored, or of the rationals)
       v.stage = Stage::SemiStaticDouble;
-      if (storage_of(p).enclosure() || storage_of(e).enclosure())
-        d = semi_static_filter_signs(enclosure_of(p), enclosure_of(e));
-      else
+      if (storage_of(p).enclosure() || storage_of(e).enclosure()) {
+        const detail::EnclosureMatrix4 ep = enclosure_of(p), ee = enclosure_of(e);
+        // The discriminant route first, as for doubles; then the whole sequence from the start.
+        if (decide_from_discriminant(semi_static_filter_discriminant_signs(ep, ee), v) &&
+            finish(e, p, use_filter, v, exact))
+          return v;
+        v = Verdict{};
+        v.stage = Stage::SemiStaticDouble;
+        d = semi_static_filter_signs(ep, ee);
+      } else {
         d = semi_static_filter_signs(p.matrix(), e.matrix());
+      }
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
     }
     // Stage 2 only while Disc(f) is within reach of intervals: near a multiple root its value sits
