@@ -10,6 +10,7 @@
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/scene.hpp>
+#include <tuple>
 
 #include "algebra/rounding.hpp"
 #include "algebra/smallness.hpp"
@@ -77,10 +78,13 @@ void check_pair(const DoubleMatrix4& pn, const DoubleMatrix4& en, Tally& t) {
   const auto exact = exact_signs(pn, en);
   const auto st = flatten(relpos::static_filter_signs_normalized(pn, en));
   const auto ss = flatten(relpos::semi_static_filter_signs_normalized(pn, en));
+  // The discriminant route (Disc(f) from the invariants, in g0's place; g2 and g1 uncertain).
+  const auto sd = flatten(
+      relpos::static_filter_discriminant_signs_normalized(pn, en, [](const relpos::QuarticSigns&) { return true; }));
   bool all_st = true, all_ss = true;
   for (std::size_t i = 0; i < 13; ++i) {
     ++t.quantities;
-    for (const auto* s : {&st[i], &ss[i]}) {
+    for (const auto* s : {&st[i], &ss[i], &sd[i]}) {
       if (!CGAL::is_certain(*s)) continue;
       const int got = static_cast<int>(CGAL::get_certain(*s));
       CAPTURE(i, got, exact[i]);
@@ -204,14 +208,23 @@ TEST_CASE("semi-static filter on rational entries: every certified sign is the e
     // Exact signs of the same quantities on the rational matrices themselves.
     const auto q = exact_signs(pm, em);
     const auto got = flatten(relpos::semi_static_filter_signs(pm, em));
+    // The discriminant route from enclosures of the same rationals.
+    auto enclosure = [](const relpos::Matrix4& m) {
+      relpos::detail::EnclosureMatrix4 x;
+      for (std::size_t i = 0; i < 16; ++i) std::tie(x.lo[i], x.hi[i]) = CGAL::to_interval(m.a[i]);
+      return x;
+    };
+    const auto disc = flatten(relpos::semi_static_filter_discriminant_signs(enclosure(pm), enclosure(em)));
     for (std::size_t i = 0; i < 13; ++i) {
       ++quantities;
-      if (!CGAL::is_certain(got[i])) continue;
-      ++certified;
-      const int x = static_cast<int>(CGAL::get_certain(got[i]));
-      CAPTURE(i, x);
-      CHECK(x == q[i]);
-      wrong += x != q[i];
+      for (const auto* sign : {&got[i], &disc[i]}) {
+        if (!CGAL::is_certain(*sign)) continue;
+        ++certified;
+        const int x = static_cast<int>(CGAL::get_certain(*sign));
+        CAPTURE(i, x);
+        CHECK(x == q[i]);
+        wrong += x != q[i];
+      }
     }
     ++pairs;
   };
