@@ -430,9 +430,16 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
       if (in_range) {
         // The fast route first: f, Disc(f) and smallness only. Anything it leaves open is asked
         // again of the whole sequence, from the start.
+        std::optional<bool> gap;  // the gap test from the same f and s, when it is the one open question
         const DecisionSigns fast = static_filter_discriminant_signs_normalized(
-            *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), always_smallness);
-        if (decide_from_discriminant(fast, v) && finish(e, p, use_filter, v, exact)) return v;
+            *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), always_smallness, &gap);
+        if (decide_from_discriminant(fast, v)) {
+          if (gap && needs_gap(v)) {
+            v.roots_above_lambda_s = static_cast<signed char>(*gap);
+            decide(v);
+          }
+          if (finish(e, p, use_filter, v, exact)) return v;
+        }
         v = Verdict{};
         d = static_filter_signs_normalized(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles());
       }

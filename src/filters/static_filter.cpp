@@ -10,6 +10,7 @@
 
 #include "algebra/forms.hpp"
 #include "algebra/smallness.hpp"
+#include "anysize/gap.hpp"
 
 namespace relpos {
 namespace {
@@ -29,14 +30,16 @@ constexpr double kEps0 = 0x1p-20;
 /// Error-bound constants, derived once from the generic formulas themselves.
 struct Bounds {
   double f[5], s[3];  // absolute errors of f_i, s_i for entries in [-1, 1]
-  // quantity q: error <= a[q] + r[q] * eps   (q: g2[0..2], g1[0..1], g0, vertex, graeffe, 27 Disc(f))
-  double a[9], r[9];
+  // quantity q: error <= a[q] + r[q] * eps   (q: g2[0..2], g1[0..1], g0, vertex, graeffe, 27 Disc(f),
+  // then the gap test's quantities in GapQuantities::flatten order)
+  double a[19], r[19];
 };
 
-/// Index of 27 Disc(f) from the invariants (discriminant_times_27) in Bounds::a and Bounds::r.
-constexpr int kDisc27 = 8;
+/// Index of 27 Disc(f) from the invariants (discriminant_times_27) in Bounds::a and Bounds::r, and of
+/// the first gap quantity.
+constexpr int kDisc27 = 8, kGap = 9, kSecondStage = kGap + anysize::kGapSigns;
 
-void second_stage(const Sfe& in, double out[9]) {
+void second_stage(const Sfe& in, double out[kSecondStage]) {
   Quartic<Sfe> f;
   Quadratic<Sfe> s;
   for (auto& c : f) c = in;
@@ -46,6 +49,9 @@ void second_stage(const Sfe& in, double out[9]) {
   const Sfe q[9] = {
       sh.g2[0], sh.g2[1], sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe, discriminant_times_27(f)};
   for (int i = 0; i < 9; ++i) out[i] = q[i].error();
+  Sfe gap[anysize::kGapSigns];
+  anysize::GapQuantities<Sfe>(f, s).flatten(gap);
+  for (int i = 0; i < anysize::kGapSigns; ++i) out[kGap + i] = gap[i].error();
 }
 
 // noinline: computed once; kept out of the flattened hot functions below (it is large).
@@ -58,10 +64,10 @@ void second_stage(const Sfe& in, double out[9]) {
     const auto s = special_polynomial<Sfe>(one, one);
     for (int i = 0; i < 5; ++i) r.f[i] = f[static_cast<std::size_t>(i)].error();
     for (int i = 0; i < 3; ++i) r.s[i] = s[static_cast<std::size_t>(i)].error();
-    double exact_in[9], noisy_in[9];
+    double exact_in[kSecondStage], noisy_in[kSecondStage];
     second_stage(Sfe(1.0, 0.0, 1), exact_in);
     second_stage(Sfe(1.0, kEps0, 1), noisy_in);
-    for (int i = 0; i < 9; ++i) {
+    for (int i = 0; i < kSecondStage; ++i) {
       r.a[i] = exact_in[i];
       r.r[i] = (noisy_in[i] - exact_in[i]) / kEps0 * (1 + 0x1p-30);  // round the ratio up
     }
@@ -236,8 +242,10 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
 }
 
 // flatten: the balancing and scaling helpers inlined (out of line they cost 15 % of decide_position).
-[[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(
-    const DoubleMatrix4& pn, const DoubleMatrix4& en, bool (*need_smallness)(const QuarticSigns&)) {
+[[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& pn,
+                                                                           const DoubleMatrix4& en,
+                                                                           bool (*need_smallness)(const QuarticSigns&),
+                                                                           std::optional<bool>* gap) {
   // The same pipeline as static_filter_signs_normalized() (f, balancing, scaling into [-1, 1], the
   // second-stage bound a + r * eps), restricted to f and Disc(f), the latter from the invariants
   // (27 Disc(f), about a dozen products); s and the smallness quantities only on demand. Index
@@ -278,6 +286,16 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   SmallnessQuantities<double> sq(f, s);
   out.vertex = certified(sq.vertex, b.a[6] + b.r[6] * eps);
   out.graeffe = certified(sq.graeffe, b.a[7] + b.r[7] * eps);
+  // The gap test, when the signs leave only it open: four distinct negative roots and rho > 1.
+  if (gap && discriminant_case(out.quartic) == DiscriminantCase::AllNegative &&
+      compare_rho_with_one(out.vertex, out.graeffe) == std::optional<int>(1)) {
+    double q[anysize::kGapSigns];
+    anysize::GapQuantities<double>(f, s).flatten(q);
+    std::optional<int> signs[anysize::kGapSigns];
+    for (int i = 0; i < anysize::kGapSigns; ++i)
+      signs[i] = detail::certain(certified(q[i], b.a[kGap + i] + b.r[kGap + i] * eps));
+    *gap = anysize::roots_above_lambda_s(signs);
+  }
   return out;
 }
 
