@@ -220,11 +220,16 @@ class LazyMatrix {
   const Rational& operator()(int i, int j) const { return get()(i, j); }
   /// The entries as doubles (CGAL::to_double of each): the quadric's own doubles when it has them,
   /// without building its rationals.
-  DoubleMatrix4 doubles() const { return q_.doubles() ? *q_.doubles() : to_doubles(get()); }
-  const std::optional<DoubleMatrix4>& own_doubles() const { return q_.doubles(); }
+  DoubleMatrix4 doubles() const {
+    if (const std::optional<DoubleMatrix4> d = q_.doubles()) return *d;
+    return to_doubles(get());
+  }
+  /// The quadric's own doubles (a copy), if it has them.
+  std::optional<DoubleMatrix4> own_doubles() const { return q_.doubles(); }
   /// forms::integer_form of the matrix, from the doubles when the quadric has them.
   forms::MatrixOf<Integer> integer_form(Integer& l) const {
-    return q_.doubles() ? forms::integer_form(*q_.doubles(), l) : forms::integer_form(get(), l);
+    if (const std::optional<DoubleMatrix4> d = q_.doubles()) return forms::integer_form(*d, l);
+    return forms::integer_form(get(), l);
   }
 
  private:
@@ -974,12 +979,14 @@ void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   DoubleBracket brackets[2];
   std::optional<IntegerForm> ez, pz;  // exact signs of e and p at the candidates
-  if (pr.has_forms() || !pr.E.own_doubles() || !pr.P.own_doubles()) {
+  const std::optional<DoubleMatrix4> ed_own = pr.has_forms() ? std::nullopt : pr.E.own_doubles();
+  const std::optional<DoubleMatrix4> pd_own = ed_own ? pr.P.own_doubles() : std::nullopt;
+  if (ed_own && pd_own) {  // from the doubles: the integer forms with their scales are not needed
+    ez.emplace(*ed_own);
+    pz.emplace(*pd_own);
+  } else {
     ez.emplace(pr.forms().ez);
     pz.emplace(pr.forms().pz);
-  } else {  // from the doubles: the integer forms with their scales are not needed
-    ez.emplace(*pr.E.own_doubles());
-    pz.emplace(*pr.P.own_doubles());
   }
   std::function<void(const V3&)> consider = [&](const V3& x) {
     const IntegerForm::Point xz(x);

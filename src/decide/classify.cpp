@@ -263,6 +263,38 @@ void decide_from_facts(const RootFacts& x, int rho_vs_one, Verdict& v) {
   decide(v);
 }
 
+/// The fast route (math.md §8): with Disc(f) != 0 the signs of f's coefficients and of Disc(f) give
+/// every root count (discriminant_case), so the Sturm-Habicht g2 and g1 are not needed; rho is
+/// always compared (the answer reports smallness). The 3 cases x 3 outcomes of rho are generated once
+/// from the one written decision (decide_from_facts). False when the case or rho is uncertain.
+bool decide_from_discriminant(const DecisionSigns& d, Verdict& v) {
+  struct CaseTable {
+    Verdict v[4][3];
+    CaseTable() {
+      for (int c = 1; c < 4; ++c)
+        for (int rho = -1; rho <= 1; ++rho) {
+          const bool two_real = static_cast<DiscriminantCase>(c) == DiscriminantCase::NonRealPair;
+          const bool two_positive = static_cast<DiscriminantCase>(c) == DiscriminantCase::TwoPositive;
+          RootFacts x;
+          x.real = two_real ? 2 : 4;
+          x.positive = two_positive ? 2 : 0;
+          x.negative = x.real - x.positive;
+          x.nonreal = 4 - x.real;
+          x.sign_disc_f = x.sign_disc_ftilde = two_real ? -1 : 1;  // f square-free: f~ = f
+          decide_from_facts(x, rho, v[c][rho + 1]);
+        }
+    }
+  };
+  static const CaseTable table;
+  const DiscriminantCase c = discriminant_case(d.quartic);
+  const auto rho = compare_rho_with_one(d.vertex, d.graeffe);
+  if (c == DiscriminantCase::Undecided || !rho) return false;
+  const Stage stage = v.stage;
+  v = table.v[static_cast<int>(c)][*rho + 1];
+  v.stage = stage;
+  return true;
+}
+
 /// Stage 1b: the static filter left Disc(f) uncertain on exact-double input. If f has rational
 /// multiple roots, exhibit them on machine integers (multiple_roots.hpp): that certifies Disc(f) = 0
 /// and gives every root fact without GMP. rho comes from the static signs, or exactly from the same
@@ -283,7 +315,7 @@ bool decide_from_witness(const DoubleMatrix4& p, const DoubleMatrix4& e, const D
 /// doubles or stored enclosures (scaled by a power of two; rounding towards +inf).
 template <class Q>
 MatrixOf<Interval> interval_entries(const Q& q) {
-  if (q.doubles()) return to_intervals(*q.doubles());
+  if (const std::optional<DoubleMatrix4> d = q.doubles()) return to_intervals(*d);
   if (storage_of(q).enclosure()) return to_intervals(*storage_of(q).enclosure());
   return to_intervals(q.matrix());
 }
@@ -294,8 +326,8 @@ template <class Q>
 detail::EnclosureMatrix4 enclosure_of(const Q& q) {
   if (storage_of(q).enclosure()) return *storage_of(q).enclosure();
   detail::EnclosureMatrix4 out;
-  if (q.doubles()) {
-    out.lo = out.hi = *q.doubles();
+  if (const std::optional<DoubleMatrix4> d = q.doubles()) {
+    out.lo = out.hi = *d;
     return out;
   }
   const Matrix4& m = q.matrix();
@@ -327,18 +359,6 @@ struct ExactData {
   }
   Quadratic<Integer> s_integer() const { return {s[0].to_integer(), s[1].to_integer(), s[2].to_integer()}; }
 };
-
-/// Disc(f) up to the positive factor 27, from the invariants of the quartic f4 x^4 + ... + f0:
-/// 27 Disc(f) = 4 I^3 - J^2 with I = 12 f4 f0 - 3 f3 f1 + f2^2 and
-/// J = 72 f4 f2 f0 + 9 f3 f2 f1 - 27 f4 f1^2 - 27 f0 f3^2 - 2 f2^3: a dozen products where the
-/// expanded Sturm-Habicht g0 (= Disc(f)) takes about eighty.
-template <class NT>
-NT discriminant_times_27(const Quartic<NT>& f) {
-  const NT i = NT(12) * f[4] * f[0] - NT(3) * f[3] * f[1] + f[2] * f[2];
-  const NT j = (NT(72) * f[4] * f[0] - NT(2) * f[2] * f[2]) * f[2] + NT(9) * f[3] * f[2] * f[1] -
-               NT(27) * (f[4] * f[1] * f[1] + f[0] * f[3] * f[3]);
-  return NT(4) * i * i * i - j * j;
-}
 
 /// True when a float stage certified every sign the decision reads except Disc(f)'s: the usual state
 /// near a tangency, where the exact stage then needs that one sign only.
@@ -394,6 +414,8 @@ bool finish(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v
   return decided(v);
 }
 
+bool always_smallness(const QuarticSigns&) { return true; }
+
 /// The whole filter -> exact policy in one place: each stage certifies what it can, the next one
 /// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
 Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact) {
@@ -403,11 +425,25 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
     // The double stages assume round-to-nearest; a caller inside an upward-rounding block (CGAL
     // interval code) gets the interval stage instead.
     const bool nearest = rounding_to_nearest();
-    if (e.doubles() && p.doubles()) {
+    if (storage_of(e).has_doubles() && storage_of(p).has_doubles()) {
       v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
       const bool in_range = storage_of(e).filter_doubles() && storage_of(p).filter_doubles() && nearest;
-      if (in_range)
+      if (in_range) {
+        // The fast route first: f, Disc(f) and smallness only. Anything it leaves open is asked
+        // again of the whole sequence, from the start.
+        std::optional<bool> gap;  // the gap test from the same f and s, when it is the one open question
+        const DecisionSigns fast = static_filter_discriminant_signs_normalized(
+            *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), always_smallness, &gap);
+        if (decide_from_discriminant(fast, v)) {
+          if (gap && needs_gap(v)) {
+            v.roots_above_lambda_s = static_cast<signed char>(*gap);
+            decide(v);
+          }
+          if (finish(e, p, use_filter, v, exact)) return v;
+        }
+        v = Verdict{};
         d = static_filter_signs_normalized(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles());
+      }
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
       if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
         v.stage = Stage::SemiStaticDouble;
@@ -422,10 +458,18 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
       }
     } else if (nearest) {  // stage 1' for other entries: double enclosures (stored, or of the rationals)
       v.stage = Stage::SemiStaticDouble;
-      if (storage_of(p).enclosure() || storage_of(e).enclosure())
-        d = semi_static_filter_signs(enclosure_of(p), enclosure_of(e));
-      else
+      if (storage_of(p).enclosure() || storage_of(e).enclosure()) {
+        const detail::EnclosureMatrix4 ep = enclosure_of(p), ee = enclosure_of(e);
+        // The discriminant route first, as for doubles; then the whole sequence from the start.
+        if (decide_from_discriminant(semi_static_filter_discriminant_signs(ep, ee), v) &&
+            finish(e, p, use_filter, v, exact))
+          return v;
+        v = Verdict{};
+        v.stage = Stage::SemiStaticDouble;
+        d = semi_static_filter_signs(ep, ee);
+      } else {
         d = semi_static_filter_signs(p.matrix(), e.matrix());
+      }
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
     }
     // Stage 2 only while Disc(f) is within reach of intervals: near a multiple root its value sits
@@ -580,19 +624,20 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // else kept as Integers for the certificate's exact signs and points too.
     std::optional<certificate::IntegerForms> z;
     Integer lp, le;
+    const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();  // copies: read once
     MatrixOf<PooledInteger> pp, ep;
     auto pooled = [](const DoubleMatrix4& d, MatrixOf<PooledInteger>& m, Integer& l) {
       std::array<mpz_ptr, 16> to;
       for (std::size_t i = 0; i < 16; ++i) to[i] = m.a[i].mpz();
       forms::integer_form(d, to, l);
     };
-    if (p.doubles() && e.doubles()) {
-      pooled(*p.doubles(), pp, lp);
-      pooled(*e.doubles(), ep, le);
+    if (pd && ed) {
+      pooled(*pd, pp, lp);
+      pooled(*ed, ep, le);
     } else {
       z.emplace();
-      z->pz = p.doubles() ? forms::integer_form(*p.doubles(), z->lp) : forms::integer_form(p.matrix(), z->lp);
-      z->ez = e.doubles() ? forms::integer_form(*e.doubles(), z->le) : forms::integer_form(e.matrix(), z->le);
+      z->pz = pd ? forms::integer_form(*pd, z->lp) : forms::integer_form(p.matrix(), z->lp);
+      z->ez = ed ? forms::integer_form(*ed, z->le) : forms::integer_form(e.matrix(), z->le);
       lp = z->lp;
       le = z->le;
       for (std::size_t i = 0; i < 16; ++i) {
@@ -603,8 +648,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const Quartic<PooledInteger> g = characteristic_polynomial<PooledInteger>(pp, ep);
     const Quadratic<PooledInteger> h = special_polynomial<PooledInteger>(pp, ep);
     // Each scale's rest kept as its denominators' factors: every gcd of the reduction is short.
-    const forms::SplitScale sp = p.doubles() ? forms::split_scale(lp) : forms::split_scale(lp, p.matrix());
-    const forms::SplitScale se = e.doubles() ? forms::split_scale(le) : forms::split_scale(le, e.matrix());
+    const forms::SplitScale sp = pd ? forms::split_scale(lp) : forms::split_scale(lp, p.matrix());
+    const forms::SplitScale se = ed ? forms::split_scale(le) : forms::split_scale(le, e.matrix());
     Quartic<Integer> f;
     Quadratic<Integer> s;
     reported_polynomials(g, h, sp, se, lp, le, out, f, s);
