@@ -3,19 +3,24 @@
 one run (doc/performance.md, "relpos batch lines per second").
 
     /usr/bin/python3 benchmarks/batch_bench.py --cli build/cli/relpos [--lines 20000] [--repeat 3]
+        [--threads 2] [--form sphere|matrix|both] [--out FILE.json]
 
 The file is the paper's regime written as a user's float code would: small spheres near the cup of
 axis-aligned paraboloids, every number printed with %.17g (decimal text that is not a dyadic, read
-exactly by the default `--numbers exact`). Each command runs --repeat times; the best wall time is
-kept. The baseline is a separate /usr/bin/python3 process that reads the file and calls json.loads
-on every line (interpreter start-up included, as for relpos). The positions of every run must agree
-line by line, and the full-evidence certificates are checked with `relpos verify`.
+exactly by the default `--numbers exact`); by default one file of each form is measured in the same
+run. Each round runs every command once, json.loads included, so that each ratio can also be taken
+within a round; printed per command: the best wall time, its ratio to the best json.loads time, and
+the median and range of the per-round ratios. The baseline is a separate /usr/bin/python3 process
+that reads the file and calls json.loads on every line (interpreter start-up included, as for
+relpos). relpos runs with one thread and with --threads (2 by default). The positions of every run
+must agree line by line, and the full-evidence certificates are checked with `relpos verify`.
 """
 
 import argparse
 import json
 import os
 import random
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -45,15 +50,11 @@ def write_regime(path, lines, seed=12, form="sphere"):
             out.write('{"id":%d,"ellipsoid":{"matrix":%s},"paraboloid":{"matrix":%s}}\n' % (i, m(e), m(p)))
 
 
-def best_time(cmd, repeat, out_path):
-    best = None
-    for _ in range(repeat):
-        with open(out_path, "wb") as out:
-            t = time.perf_counter()
-            subprocess.run(cmd, stdout=out, check=True)
-            dt = time.perf_counter() - t
-        best = dt if best is None else min(best, dt)
-    return best
+def run_time(cmd, out_path):
+    with open(out_path, "wb") as out:
+        t = time.perf_counter()
+        subprocess.run(cmd, stdout=out, check=True)
+        return time.perf_counter() - t
 
 
 def positions(path):
@@ -61,48 +62,81 @@ def positions(path):
         return [(d["id"], d["position"]) for d in map(json.loads, f)]
 
 
+def measure(cli, data, repeat, threads):
+    """Times json.loads and the relpos commands on one file, interleaved round by round; checks the
+    positions and the certificates. Returns the form's entry of the JSON output."""
+    lines = sum(1 for _ in open(data))
+    loads = [sys.executable, "-c", "import json,sys\nfor l in open(sys.argv[1]): json.loads(l)", data]
+    batch = lambda evidence, t: [cli, "batch", "--evidence", evidence, "--threads", str(t), data]  # noqa: E731
+    runs = [
+        ("loads", "json.loads (CPython, one process)", loads),
+        ("minimal1", "relpos batch --evidence minimal --threads 1", batch("minimal", 1)),
+        ("minimal", f"relpos batch --evidence minimal --threads {threads}", batch("minimal", threads)),
+        ("full1", "relpos batch --evidence full --threads 1", batch("full", 1)),
+        ("full", f"relpos batch --evidence full --threads {threads}", batch("full", threads)),
+    ]
+    outs = {tag: data + "." + tag + ".out" for tag, _, _ in runs}
+    times = {tag: [] for tag, _, _ in runs}
+    for _ in range(repeat):  # one round runs every command once: ratios are taken within a round
+        for tag, _, cmd in runs:
+            times[tag].append(run_time(cmd, outs[tag]))
+    # Every run gives the same positions, in input order; every certificate verifies.
+    reference = positions(outs["minimal1"])
+    assert len(reference) == lines and [i for i, _ in reference] == list(range(lines)), "ids out of order"
+    for tag, name, _ in runs[2:]:
+        assert positions(outs[tag]) == reference, f"{name}: positions differ from the minimal run"
+    verify = subprocess.run([cli, "verify", data, outs["full"]], stdout=subprocess.PIPE, text=True)
+    verified = verify.stdout.strip().splitlines()[-1] if verify.stdout else ""
+    if verify.returncode != 0:
+        sys.exit("relpos verify failed: " + verified)
+    commands = []
+    for tag, name, _ in runs:
+        ratio = sorted(a / b for a, b in zip(times["loads"], times[tag]))
+        commands.append({
+            "tag": tag, "command": name, "best_s": min(times[tag]),
+            "ratio_best": min(times["loads"]) / min(times[tag]),
+            "ratio_median": statistics.median(ratio), "ratio_lo": ratio[0], "ratio_hi": ratio[-1],
+        })
+    mix = {p: sum(1 for _, q in reference if q == p) for p in ("I", "TI", "C", "TE", "E")}
+    return {"lines": lines, "commands": commands, "positions": mix, "verify": verified}
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--cli", default="build/cli/relpos")
     ap.add_argument("--lines", type=int, default=20000)
-    ap.add_argument("--repeat", type=int, default=3)
-    ap.add_argument("--file", help="use this JSON Lines file instead of writing the regime file")
-    ap.add_argument("--form", choices=("sphere", "matrix"), default="sphere", help="how the regime file writes the bodies")
+    ap.add_argument("--repeat", type=int, default=3, help="rounds; each runs every command once")
+    ap.add_argument("--threads", type=int, default=2, help="threads of the multi-threaded runs")
+    ap.add_argument("--file", help="use this JSON Lines file instead of writing the regime files")
+    ap.add_argument("--form", choices=("sphere", "matrix", "both"), default="both",
+                    help="how the regime file writes the bodies (both: one file of each, in one run)")
+    ap.add_argument("--out", help="write the figures as JSON to this file")
     args = ap.parse_args()
 
+    load = lambda: " ".join(f"{x:.2f}" for x in os.getloadavg())  # noqa: E731
+    result = {"threads": args.threads, "cores": os.cpu_count(), "rounds": args.repeat, "load_before": load(),
+              "forms": {}}
     with tempfile.TemporaryDirectory() as tmp:
-        data = args.file or os.path.join(tmp, "regime.jsonl")
-        if not args.file:
-            write_regime(data, args.lines, form=args.form)
-        lines = sum(1 for _ in open(data))
-        loads = [sys.executable, "-c", "import json,sys\nfor l in open(sys.argv[1]): json.loads(l)", data]
-        runs = [
-            ("json.loads (CPython, one process)", loads, None),
-            ("relpos batch --evidence minimal --threads 1", [args.cli, "batch", "--evidence", "minimal", "--threads", "1", data], "min1"),
-            ("relpos batch --evidence minimal (all cores)", [args.cli, "batch", "--evidence", "minimal", data], "min"),
-            ("relpos batch --evidence full --threads 1", [args.cli, "batch", "--evidence", "full", "--threads", "1", data], "full1"),
-            ("relpos batch --evidence full (all cores)", [args.cli, "batch", "--evidence", "full", data], "full"),
-        ]
-        results = []
-        for name, cmd, tag in runs:
-            out = os.path.join(tmp, (tag or "loads") + ".out")
-            results.append((name, best_time(cmd, args.repeat, out), tag and out))
-        base = results[0][1]
-        print(f"{lines} lines, {os.cpu_count()} cores, best of {args.repeat}")
-        print(f"{'command':48} {'seconds':>8} {'lines/s':>10} {'vs json.loads':>14}")
-        for name, t, _ in results:
-            print(f"{name:48} {t:8.3f} {lines / t:10.0f} {base / t:13.2f}x")
-        # Every run gives the same positions, in input order; every certificate verifies.
-        reference = positions(results[1][2])
-        assert len(reference) == lines and [i for i, _ in reference] == list(range(lines)), "ids out of order"
-        for name, _, out in results[2:]:
-            assert positions(out) == reference, f"{name}: positions differ from the minimal run"
-        verify = subprocess.run([args.cli, "verify", data, results[-1][2]], stdout=subprocess.PIPE, text=True)
-        print("relpos verify (full evidence):", verify.stdout.strip().splitlines()[-1] if verify.stdout else "")
-        if verify.returncode != 0:
-            sys.exit("relpos verify failed")
-        print("positions: identical in every run (" + ", ".join(
-            f"{p} {sum(1 for _, q in reference if q == p)}" for p in ("I", "TI", "C", "TE", "E")) + ")")
+        forms = ["file"] if args.file else (["sphere", "matrix"] if args.form == "both" else [args.form])
+        for form in forms:
+            data = args.file or os.path.join(tmp, form + ".jsonl")
+            if not args.file:
+                write_regime(data, args.lines, form=form)
+            r = measure(args.cli, data, args.repeat, args.threads)
+            result["forms"][form] = r
+            print(f"{form} file: {r['lines']} lines, {os.cpu_count()} cores, {args.repeat} rounds; "
+                  "ratio = json.loads time / command time (best of the rounds; median of the per-round ratios [range])")
+            print(f"{'command':48} {'best s':>8} {'lines/s':>10} {'vs json.loads':>14} {'per round':>20}")
+            for c in r["commands"]:
+                per_round = f"{c['ratio_median']:.2f} [{c['ratio_lo']:.2f}-{c['ratio_hi']:.2f}]"
+                print(f"{c['command']:48} {c['best_s']:8.3f} {r['lines'] / c['best_s']:10.0f} "
+                      f"{c['ratio_best']:13.2f}x {per_round:>20}")
+            print("relpos verify (full evidence):", r["verify"])
+            print("positions: identical in every run (" + ", ".join(f"{p} {n}" for p, n in r["positions"].items()) + ")")
+    result["load_after"] = load()
+    if args.out:
+        with open(args.out, "w") as f:
+            json.dump(result, f, indent=1)
 
 
 if __name__ == "__main__":

@@ -76,9 +76,34 @@ std::optional<Position> float_classify(const std::array<double, 16>& pd, const s
   return naive_table(q, usign(sq.vertex), usign(sq.graeffe));
 }
 
+/// The cheapest float decision: the characteristic quartic, its discriminant from the invariants
+/// (27 Disc = 4 I^3 - J^2) and the sign rule: Disc < 0 is C (a non-real pair beside the two real
+/// roots every pair has, math.md §8); Disc > 0 means four real roots, and the sign changes of f's
+/// coefficients count the positive ones: 2 is E, 0 is I. No smallness, no Sturm-Habicht sequence,
+/// no certification: what a float program would do.
+template <class NT>
+Position minimal_float(const std::array<double, 16>& pd, const std::array<double, 16>& ed) {
+  Mat<NT> P, E;
+  for (std::size_t i = 0; i < 16; ++i) {
+    P.a[i] = pd[i];
+    E.a[i] = ed[i];
+  }
+  const Quartic<NT> f = characteristic_polynomial<NT>(P, E);
+  const NT a = f[4], b = f[3], c = f[2], d = f[1], e = f[0];
+  const NT I = 12 * a * e - 3 * b * d + c * c;
+  const NT J = 72 * a * c * e + 9 * b * c * d - 27 * a * d * d - 27 * e * b * b - 2 * c * c * c;
+  const NT disc27 = 4 * I * I * I - J * J;
+  if (disc27 < 0) return Position::C;
+  int changes = 0;
+  for (int i = 0; i < 4; ++i)
+    changes += (f[static_cast<std::size_t>(i)] < 0) != (f[static_cast<std::size_t>(i + 1)] < 0);
+  return changes >= 2 ? Position::E : Position::I;
+}
+
 /// The double and long double baselines, compiled in their own translation unit without
 /// -frounding-math (naive_double.cpp): what a user's float code would be.
 std::optional<Position> naive_double(const std::array<double, 16>& pd, const std::array<double, 16>& ed);
 std::optional<Position> naive_long_double(const std::array<double, 16>& pd, const std::array<double, 16>& ed);
+Position minimal_double(const std::array<double, 16>& pd, const std::array<double, 16>& ed);
 
 }  // namespace bench

@@ -13,4 +13,8 @@ std::optional<Position> naive_long_double(const std::array<double, 16>& pd, cons
   return float_classify<long double>(pd, ed, [](double d) { return static_cast<long double>(d); });
 }
 
+Position minimal_double(const std::array<double, 16>& pd, const std::array<double, 16>& ed) {
+  return minimal_float<double>(pd, ed);
+}
+
 }  // namespace bench

@@ -11,7 +11,7 @@
 //   regime_bench [--n N] [--full N] [--seed S] [--batches B] [--rounds R] [--only POSITION]
 //
 // --only POSITION (C, E, I, ...) only repeats full evidence on the pairs in that position (a
-// profiling loop for perf record), then exits.
+// profiling loop for perf record), then exits; --only decide and --only doubles repeat those paths.
 //
 // Prints one line per path: median ns per pair over B batches, and its ratio to the naive pipeline
 // timed in the same round, as the median (and range) over R rounds.
@@ -167,6 +167,21 @@ int main(int argc, char** argv) {
   std::printf("; naive double wrong or undecided on %d\n", naive_wrong);
 
   const auto U = [](int i) { return static_cast<std::size_t>(i); };
+  if (only == "decide" || only == "doubles") {  // profiling loop: one fast path only
+    int acc = 0;
+    for (int rep = 0; rep < batches * 20; ++rep)
+      for (int i = 0; i < n; ++i) {
+        if (only == "decide") {
+          acc += static_cast<int>(decide_position(es[U(i)], ps[U(i)]).position);
+        } else {
+          const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
+          const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
+          acc += static_cast<int>(decide_position(e, p).position);
+        }
+      }
+    std::printf("%s: %d\n", only.c_str(), acc);
+    return 0;
+  }
   if (!only.empty()) {  // profiling loop: full evidence on one position only
     int count = 0;
     for (int rep = 0; rep < batches; ++rep)
@@ -197,10 +212,13 @@ int main(int argc, char** argv) {
       return static_cast<int>(classify(e, p, Evidence::Full).verdict.position);
     });
   };
-  enum { kNaive, kDecide, kDoubles, kMatrix, kFull, kFullCached, kPaths };
-  std::vector<std::array<double, kPaths>> time(static_cast<std::size_t>(rounds)), ratio(time.size());
+  enum { kNaive, kMinimal, kDecide, kDoubles, kMatrix, kFull, kFullCached, kPaths };
+  std::vector<std::array<double, kPaths>> time(static_cast<std::size_t>(rounds)), ratio(time.size()),
+      ratio_min(time.size());
   for (auto& r : time) {
     r[kNaive] = naive_ns();
+    r[kMinimal] =
+        median_ns(n, batches, [&](int i) { return static_cast<int>(bench::minimal_double(raw[U(i)].p, raw[U(i)].e)); });
     r[kDecide] =
         median_ns(n, batches, [&](int i) { return static_cast<int>(decide_position(es[U(i)], ps[U(i)]).position); });
     r[kDoubles] = median_ns(n, batches, [&](int i) {
@@ -220,10 +238,14 @@ int main(int argc, char** argv) {
   relpos::install_gmp_block_cache();
   for (std::size_t k = 0; k < time.size(); ++k) {
     const double base = naive_ns();
+    const double base_min =
+        median_ns(n, batches, [&](int i) { return static_cast<int>(bench::minimal_double(raw[U(i)].p, raw[U(i)].e)); });
     time[k][kFullCached] = full_ns();
-    for (int path = 0; path < kPaths; ++path)
-      ratio[k][static_cast<std::size_t>(path)] =
-          time[k][static_cast<std::size_t>(path)] / (path == kFullCached ? base : time[k][kNaive]);
+    for (int path = 0; path < kPaths; ++path) {
+      const std::size_t q = static_cast<std::size_t>(path);
+      ratio[k][q] = time[k][q] / (path == kFullCached ? base : time[k][kNaive]);
+      ratio_min[k][q] = time[k][q] / (path == kFullCached ? base_min : time[k][kMinimal]);
+    }
   }
   auto median_of = [&](const std::vector<std::array<double, kPaths>>& v, int path) {
     std::vector<double> x;
@@ -257,10 +279,11 @@ int main(int argc, char** argv) {
   std::printf("%d rounds; per path: median time, median of the per-round ratios to naive [range]\n", rounds);
   auto line = [&](const char* name, int path, const char* what) {
     const auto [lo, hi] = range_of(path);
-    std::printf("%-8s %10.0f ns  %8.1fx naive [%.1f-%.1f]   %s\n", name, median_of(time, path), median_of(ratio, path),
-                lo, hi, what);
+    std::printf("%-8s %10.0f ns  %8.1fx naive [%.1f-%.1f] %8.2fx minimal   %s\n", name, median_of(time, path),
+                median_of(ratio, path), lo, hi, median_of(ratio_min, path), what);
   };
   line("naive", kNaive, "naive double pipeline (characteristic quartic + discriminant + sign rule)");
+  line("minimal", kMinimal, "minimal float decision (quartic, its discriminant, sign rule)");
   line("decide", kDecide, "decide_position on prebuilt objects");
   line("doubles", kDoubles, "32 doubles -> from_doubles -> decide_position");
   line("matrix", kMatrix, "32 doubles -> exact_rational -> from_matrix -> decide_position");

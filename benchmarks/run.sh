@@ -5,6 +5,8 @@
 #   benchmarks/run.sh --quick    # smaller family (a), fewer batches
 #   benchmarks/run.sh --scene    # only the scene benchmark (scene_bench, 10^6 bodies)
 #   benchmarks/run.sh --edge     # only the near-tangent benchmark (edge_bench) and its chart
+#   benchmarks/run.sh --ordinary [ordinary_bench options]   # ordinary pairs and relpos batch against
+#                                # the minimal float decision and json.loads, from the installed package
 #
 # Outputs: benchmarks/results/{results.csv,stages.csv,summary.json,*.png}.
 # Plotting needs matplotlib for /usr/bin/python3 (Debian python3-matplotlib, benchmark-only
@@ -15,6 +17,35 @@ BUILD="$ROOT/build-bench"
 OUT="$ROOT/benchmarks/results"
 SEED="${RELPOS_BENCH_SEED:-20240601}"
 
+# benchmarks/run.sh --ordinary: the current sources built (build-ordinary: library and CLI only, or
+# the build directory RELPOS_ORDINARY_BUILD, built as it is configured) and installed into a
+# temporary prefix; benchmarks/ordinary built against that install and run, then
+# benchmarks/batch_bench.py on the installed CLI (both files, --threads 2, 20 000 lines) ->
+# benchmarks/results/{ordinary,batch}.json and *_log.txt, and the generated part of the section
+# "Ordinary pairs against the minimal float decision" of doc/performance.md rewritten
+# (tables.py --ordinary). About a minute; extra arguments go to ordinary_bench.
+if [ "${1:-}" = "--ordinary" ]; then
+  shift
+  if [ -n "${RELPOS_ORDINARY_BUILD:-}" ]; then
+    BUILD=$RELPOS_ORDINARY_BUILD
+  else
+    BUILD="$ROOT/build-ordinary"
+    cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DRELPOS_BUILD_TESTS=OFF -DRELPOS_BUILD_BENCHMARKS=OFF \
+      -DRELPOS_BUILD_PYTHON=OFF >/dev/null
+  fi
+  cmake --build "$BUILD" -j2 >/dev/null
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  bash "$ROOT/benchmarks/ordinary/build.sh" "$BUILD" "$work"
+  mkdir -p "$OUT"
+  "$work/build/ordinary_bench" --out "$OUT/ordinary.json" "$@" 2>&1 | tee "$OUT/ordinary_log.txt"
+  [ "${PIPESTATUS[0]}" = 0 ] || exit 1
+  /usr/bin/python3 "$ROOT/benchmarks/batch_bench.py" --cli "$work/prefix/bin/relpos" --lines 20000 --repeat 5 \
+    --threads 2 --form both --out "$OUT/batch.json" 2>&1 | tee "$OUT/batch_log.txt"
+  [ "${PIPESTATUS[0]}" = 0 ] || exit 1
+  /usr/bin/python3 "$ROOT/benchmarks/tables.py" --ordinary "$OUT"
+  exit 0
+fi
 cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DRELPOS_BUILD_BENCHMARKS=ON -DRELPOS_BUILD_TESTS=OFF >/dev/null
 # benchmarks/run.sh --scene [N]: only the scene benchmark (N bodies, default 10^6; a few minutes,
 # about 3 GB of memory) -> benchmarks/results/scene.json and scene_log.txt (doc/performance.md).

@@ -158,7 +158,7 @@ void check_fast_quadric(std::string_view text, bool doubles, Fast fast, General 
   }
   expect(q->matrix() == g->matrix(), std::string("fast reader: another exact matrix for the ") + role);
   const auto& enc = storage_of(*q).enclosure();
-  expect(q->doubles().has_value() || enc.has_value(), "fast reader: neither doubles nor enclosures");
+  expect(q->doubles().has_value() || enc != nullptr, "fast reader: neither doubles nor enclosures");
   for (std::size_t k = 0; k < 16 && enc; ++k)
     expect(Rational(enc->lo[k]) <= q->matrix().a[k] && q->matrix().a[k] <= Rational(enc->hi[k]),
            std::string("fast reader: an entry outside its enclosure for the ") + role);

@@ -31,7 +31,7 @@ template <class Q>
 void check_storage(const Q& q) {
   const Matrix4& m = q.matrix();
   const auto& enc = storage_of(q).enclosure();
-  REQUIRE((q.doubles().has_value() || enc.has_value()));
+  REQUIRE((q.doubles().has_value() || enc != nullptr));
   for (std::size_t k = 0; k < 16; ++k) {
     if (q.doubles()) {
       REQUIRE(relpos::Rational((*q.doubles())[k]) == m.a[k]);

@@ -3,13 +3,16 @@
 // settle what the static bound cannot. Exact signs come from the same generic formulas on exact
 // rationals of the same (power-of-two normalized) matrices.
 #include <catch2/catch.hpp>
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/scene.hpp>
+#include <tuple>
 
+#include "algebra/rounding.hpp"
 #include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
 #include "filters/semi_static_filter.hpp"
@@ -68,17 +71,42 @@ std::array<int, 13> exact_signs(const DoubleMatrix4& pn, const DoubleMatrix4& en
 struct Tally {
   long quantities = 0, static_certified = 0, semi_certified = 0, wrong = 0;
   long pairs = 0, static_all = 0, semi_all = 0;
+  long gaps = 0, gaps_true = 0;  // static gap tests answered (each checked against the exact one), and true
 };
+
+/// The exact gap test (math.md §8) on the rational pencil.
+std::optional<bool> exact_gap(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
+  relpos::Matrix4 pm, em;
+  for (std::size_t i = 0; i < 16; ++i) {
+    pm.a[i] = relpos::exact_rational(pn[i]);
+    em.a[i] = relpos::exact_rational(en[i]);
+  }
+  const RationalView p{pm}, e{em};
+  return relpos::anysize::roots_above_lambda_s(relpos::characteristic_polynomial<Rational>(p, e),
+                                               relpos::special_polynomial<Rational>(p, e));
+}
 
 /// Check both filters on one pair of normalized matrices against the exact signs.
 void check_pair(const DoubleMatrix4& pn, const DoubleMatrix4& en, Tally& t) {
   const auto exact = exact_signs(pn, en);
   const auto st = flatten(relpos::static_filter_signs_normalized(pn, en));
   const auto ss = flatten(relpos::semi_static_filter_signs_normalized(pn, en));
+  // The discriminant route (Disc(f) from the invariants, in g0's place; g2 and g1 uncertain).
+  std::optional<bool> gap;
+  const auto sd = flatten(relpos::static_filter_discriminant_signs_normalized(
+      pn, en, [](const relpos::QuarticSigns&) { return true; }, &gap));
+  if (gap) {  // answered only for four distinct negative roots and rho > 1: the exact test answers too
+    const std::optional<bool> want = exact_gap(pn, en);
+    REQUIRE(want);
+    CHECK(*gap == *want);
+    t.wrong += *gap != *want;
+    ++t.gaps;
+    t.gaps_true += *gap;
+  }
   bool all_st = true, all_ss = true;
   for (std::size_t i = 0; i < 13; ++i) {
     ++t.quantities;
-    for (const auto* s : {&st[i], &ss[i]}) {
+    for (const auto* s : {&st[i], &ss[i], &sd[i]}) {
       if (!CGAL::is_certain(*s)) continue;
       const int got = static_cast<int>(CGAL::get_certain(*s));
       CAPTURE(i, got, exact[i]);
@@ -104,6 +132,22 @@ DoubleMatrix4 normalized(const std::optional<DoubleMatrix4>& m) {
 }
 
 }  // namespace
+
+TEST_CASE("the double stages see each of the four rounding modes", "[filters]") {
+  // The double filters run only to nearest; every other mode must be told apart (the interval
+  // stage takes over).
+  const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+  bool nearest[4];
+  for (int i = 0; i < 4; ++i) {
+    REQUIRE(std::fesetround(modes[i]) == 0);
+    nearest[i] = relpos::detail::rounding_to_nearest();
+  }
+  std::fesetround(FE_TONEAREST);
+  CHECK(nearest[0]);
+  CHECK_FALSE(nearest[1]);
+  CHECK_FALSE(nearest[2]);
+  CHECK_FALSE(nearest[3]);
+}
 
 TEST_CASE("double filters: every certified sign is the exact sign (demo scene bodies)", "[filters][random]") {
   const Paraboloid p = Paraboloid::standard({Q(0), Q(0), Q(0)}, Q(1), Q(2));
@@ -154,6 +198,28 @@ TEST_CASE("double filters: every certified sign is the exact sign (random matric
   CHECK(t.semi_certified * 10 >= t.quantities * 7);
 }
 
+TEST_CASE("static gap test: large spheres in the cup, against the exact gap test", "[filters][random]") {
+  // Spheres too large to be small (rho > 1) with four negative roots: the position hangs on the gap
+  // test of math.md §8 (I when two roots lie above lambda_s, C otherwise); both outcomes occur.
+  Rng g(seed_from_env(17));
+  const Paraboloid p = Paraboloid::standard({Q(0), Q(0), Q(0)}, Q(1), Q(2));
+  Tally t;
+  for (int n = 0; n < 1500; ++n) {
+    const double r = static_cast<double>(g.uniform(64, 768)) / 256;  // 0.25 .. 3
+    const double z = r + static_cast<double>(g.uniform(-256, 2560)) / 256;
+    const double x = static_cast<double>(g.uniform(-64, 64)) / 256, y = static_cast<double>(g.uniform(-64, 64)) / 256;
+    const Ellipsoid e = Ellipsoid::sphere(std::array<double, 3>{x, y, z}, r);
+    if (!storage_of(e).filter_doubles()) continue;
+    check_pair(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), t);
+  }
+  std::cout << "[filters] large spheres: " << t.pairs << " pairs, static gap test answered on " << t.gaps << " ("
+            << t.gaps_true << " with roots above lambda_s)\n";
+  CHECK(t.wrong == 0);
+  CHECK(t.gaps >= 100);
+  CHECK(t.gaps_true > 0);
+  CHECK(t.gaps_true < t.gaps);
+}
+
 TEST_CASE("double filters on near-tangent and exactly tangent double inputs", "[filters][random]") {
   // Spheres tangent to x^2 + y^2/4 = z at dyadic points with dyadic normals, moved by +-2^-k along
   // the normal: exact zeros (k = infinity) must never be certified, near-zeros only correctly.
@@ -186,14 +252,23 @@ TEST_CASE("semi-static filter on rational entries: every certified sign is the e
     // Exact signs of the same quantities on the rational matrices themselves.
     const auto q = exact_signs(pm, em);
     const auto got = flatten(relpos::semi_static_filter_signs(pm, em));
+    // The discriminant route from enclosures of the same rationals.
+    auto enclosure = [](const relpos::Matrix4& m) {
+      relpos::detail::EnclosureMatrix4 x;
+      for (std::size_t i = 0; i < 16; ++i) std::tie(x.lo[i], x.hi[i]) = CGAL::to_interval(m.a[i]);
+      return x;
+    };
+    const auto disc = flatten(relpos::semi_static_filter_discriminant_signs(enclosure(pm), enclosure(em)));
     for (std::size_t i = 0; i < 13; ++i) {
       ++quantities;
-      if (!CGAL::is_certain(got[i])) continue;
-      ++certified;
-      const int x = static_cast<int>(CGAL::get_certain(got[i]));
-      CAPTURE(i, x);
-      CHECK(x == q[i]);
-      wrong += x != q[i];
+      for (const auto* sign : {&got[i], &disc[i]}) {
+        if (!CGAL::is_certain(*sign)) continue;
+        ++certified;
+        const int x = static_cast<int>(CGAL::get_certain(*sign));
+        CAPTURE(i, x);
+        CHECK(x == q[i]);
+        wrong += x != q[i];
+      }
     }
     ++pairs;
   };

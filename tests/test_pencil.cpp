@@ -6,6 +6,7 @@
 #include <relpos/classify.hpp>
 #include <vector>
 
+#include "algebra/between.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "algebra/roots.hpp"
@@ -550,6 +551,87 @@ TEST_CASE("divided_by_powers: two scales with shared prime factors, as rational 
       CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // same canonical form
       CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(expected.mpq())) == 0);
     }
+  }
+}
+
+TEST_CASE("split_scale along a matrix's denominators: a coprime base of the rest, same reductions", "[forms]") {
+  // Denominators of the kinds a standard paraboloid with decimal a, b has (squares of mantissas
+  // that may share primes, times 2s and 5s) and others (not squares, powers of one another, shared
+  // primes): the split rest is a product of pairwise coprime bases, and z / scale^k reduces as
+  // rational division does.
+  rt::Rng g(31337);
+  const long parts[] = {3, 7, 9, 11, 21, 1000003, 99991, 6, 10, 25};
+  for (int trial = 0; trial < 1500; ++trial) {
+    relpos::Matrix4 m;
+    for (std::size_t i = 0; i < 16; ++i) {
+      Integer den(1);
+      for (long k = g.uniform(0, 3); k > 0; --k) den *= Integer(parts[g.uniform(0, 9)]);
+      if (trial % 2 == 0) den *= den;  // squares, as 1/a^2 has
+      m.a[i] = g.uniform(0, 3) == 0 ? Rational(0) : Rational(Integer(g.uniform(-50, 50)) * Integer(2), den);
+    }
+    Integer scale;
+    relpos::forms::integer_form(m, scale);
+    const relpos::forms::SplitScale split = relpos::forms::split_scale(scale, m);
+    const relpos::forms::SplitScale plain = relpos::forms::split_scale(scale);
+    CHECK(split.twos == plain.twos);
+    CHECK(split.fives == plain.fives);
+    Integer product(1);
+    for (const auto& f : split.factors)
+      for (unsigned long k = 0; k < f.power; ++k) product *= f.base;
+    CHECK(product == split.rest);
+    for (std::size_t i = 0; i < split.factors.size(); ++i)
+      for (std::size_t j = i + 1; j < split.factors.size(); ++j) {
+        Integer c;
+        mpz_gcd(c.mpz(), split.factors[i].base.mpz(), split.factors[j].base.mpz());
+        CHECK(c == 1);
+      }
+    Integer z(static_cast<long>(g.uniform(-100000, 100000)));
+    for (long i = g.uniform(0, 6); i > 0; --i) z *= Integer(parts[g.uniform(0, 9)]);
+    if (trial % 3 == 0) z *= scale;
+    for (unsigned long k = 0; k <= 4; ++k) {
+      Rational expected(z);
+      for (unsigned long i = 0; i < k; ++i) expected /= Rational(scale);
+      const Rational got = relpos::forms::divided_by_power(z, split, k);
+      CAPTURE(relpos::to_string(z), relpos::to_string(scale), k);
+      CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // same canonical form
+      CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(expected.mpq())) == 0);
+    }
+  }
+}
+
+TEST_CASE("rational_inside, fewest bits: the first dyadic floor(mid 2^b) / 2^b above lo, b = 0, 4, 8, ...", "[forms]") {
+  // Ends that are doubles (isolating intervals), one of them an exact rational or both, of either
+  // sign, close and far apart: the answer is the definition's, computed here on rationals.
+  rt::Rng g(2718);
+  std::mt19937_64 bits(11);
+  auto reference = [](const Rational& lo, const Rational& hi) {
+    const Rational mid = (lo + hi) / 2;
+    for (unsigned b = 0; b <= 2048; b += 4) {
+      Rational step(1);
+      for (unsigned i = 0; i < b; ++i) step /= 2;
+      Integer scaled;
+      const Rational x = mid / step;
+      mpz_fdiv_q(scaled.mpz(), mpq_numref(x.mpq()), mpq_denref(x.mpq()));
+      const Rational y = Rational(scaled) * step;
+      if (lo < y && y < hi) return y;
+    }
+    return mid;
+  };
+  for (int trial = 0; trial < 3000; ++trial) {
+    const double a =
+        std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits), static_cast<int>(g.uniform(-60, 60)));
+    const double w = std::fabs(a) * std::ldexp(1.0, -static_cast<int>(g.uniform(1, 52)));
+    Rational lo(a), hi(a + (w > 0 ? w : 1.0));
+    if (trial % 5 == 1) hi = lo + Rational(Integer(1), Integer(g.uniform(3, 1000)) * Integer(2));  // not dyadic
+    if (trial % 7 == 2) lo = Rational(Integer(1), Integer(3)) - Rational(Integer(2));
+    if (!(lo < hi)) continue;
+    const Rational got = relpos::detail::rational_inside(lo, hi, relpos::detail::Shortest::Bits);
+    const Rational want = reference(lo, hi);
+    CAPTURE(relpos::to_string(lo), relpos::to_string(hi));
+    CHECK(lo < got);
+    CHECK(got < hi);
+    CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(want.mpq())) == 0);  // the same canonical rational
+    CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(want.mpq())) == 0);
   }
 }
 

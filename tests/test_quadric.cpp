@@ -193,6 +193,32 @@ TEST_CASE("Ellipsoid constructors agree with hand-built matrices", "[quadric]") 
   CHECK(Ellipsoid::from_map({Q(0), Q(0), Q(0)}, diag3(Q(2), Q(3), Q(5))).matrix() == axes);
 }
 
+TEST_CASE("sphere and standard paraboloid entries: the rational operations' canonical values", "[quadric][random]") {
+  // Decimal-like denominators (2s and 5s) and others, shared or not, of both signs: the constant
+  // |c|^2 - r^2 and the entries 1/a^2, 1/b^2 as rational arithmetic gives them, in lowest terms.
+  Rng g(4711);
+  auto same = [](const Rational& x, const Rational& y) {
+    return mpz_cmp(mpq_numref(x.mpq()), mpq_numref(y.mpq())) == 0 &&
+           mpz_cmp(mpq_denref(x.mpq()), mpq_denref(y.mpq())) == 0;
+  };
+  const long dens[] = {1, 2, 5, 10, 1000, 3, 7, 12, 625, 1024, 99991};
+  auto number = [&](bool positive) {
+    const Rational x(Integer(g.uniform(positive ? 1 : -100000, 100000)), Integer(dens[g.uniform(0, 10)]));
+    return x * Rational(Integer(1), Integer(dens[g.uniform(0, 10)]));
+  };
+  for (int i = 0; i < 500; ++i) {
+    const Vector3 c{number(false), number(false), number(false)};
+    const Rational r = number(true);
+    CAPTURE(relpos::to_string(c[0]), relpos::to_string(c[1]), relpos::to_string(c[2]), relpos::to_string(r));
+    CHECK(same(Ellipsoid::sphere(c, r).matrix()(3, 3), c[0] * c[0] + c[1] * c[1] + c[2] * c[2] - r * r));
+    const Rational a = number(true), b = number(true);
+    const Paraboloid para = Paraboloid::standard({Q(0), Q(0), Q(0)}, a, b);
+    const Matrix4& p = para.matrix();
+    CHECK(same(p(0, 0), Rational(1) / (a * a)));
+    CHECK(same(p(1, 1), Rational(1) / (b * b)));
+  }
+}
+
 TEST_CASE("Ellipsoid normalization: positive definite block, negative determinant", "[quadric]") {
   Rng g(1234);
   for (int i = 0; i < 40; ++i) {

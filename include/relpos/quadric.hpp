@@ -124,7 +124,7 @@ class Ellipsoid {
   /// The exact matrix (built on first use for a quadric made from doubles).
   const Matrix4& matrix() const { return m_.matrix(); }
   /// The matrix as doubles when every entry is exactly a double (enables the static filter).
-  const std::optional<DoubleMatrix4>& doubles() const { return m_.doubles(); }
+  std::optional<DoubleMatrix4> doubles() const { return m_.doubles(); }
 
  private:
   /// The storage of the matrix (internal/quadric_matrix.hpp), found by argument-dependent lookup.
@@ -157,7 +157,7 @@ class Paraboloid {
   /// The exact matrix (built on first use for a quadric made from doubles).
   const Matrix4& matrix() const { return m_.matrix(); }
   /// The matrix as doubles when every entry is exactly a double (enables the static filter).
-  const std::optional<DoubleMatrix4>& doubles() const { return m_.doubles(); }
+  std::optional<DoubleMatrix4> doubles() const { return m_.doubles(); }
 
  private:
   /// The storage of the matrix (internal/quadric_matrix.hpp), found by argument-dependent lookup.

@@ -2,14 +2,53 @@
 
 #include <gmp.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace relpos::detail {
 namespace {
 
+/// The power k of a power-of-two denominator 2^k, or -1.
+long two_exponent(mpz_srcptr d) {
+  const mp_bitcnt_t k = mpz_scan1(d, 0);
+  return k + 1 == mpz_sizeinbase(d, 2) ? static_cast<long>(k) : -1;
+}
+
+/// fewest_bits for dyadic ends (the usual case: ends of isolating intervals, which are doubles),
+/// on shifts only. With mid = M / 2^K and lo = L / 2^K: floor(mid 2^b) = M >> (K - b) for b < K,
+/// and mid itself from b = K on. The test scaled / 2^b < hi always holds (scaled / 2^b <= mid).
+Rational fewest_bits_dyadic(const Rational& lo, const Rational& hi, long kl, long kh) {
+  const long k = std::max(kl, kh) + 1;
+  Integer m, l, t;  // fresh: written through mpz()
+  mpz_mul_2exp(m.mpz(), mpq_numref(lo.mpq()), static_cast<mp_bitcnt_t>(k - 1 - kl));
+  mpz_mul_2exp(t.mpz(), mpq_numref(hi.mpq()), static_cast<mp_bitcnt_t>(k - 1 - kh));
+  mpz_add(m.mpz(), m.mpz(), t.mpz());
+  mpz_mul_2exp(l.mpz(), mpq_numref(lo.mpq()), static_cast<mp_bitcnt_t>(k - kl));
+  Rational out;  // fresh: written in place, then reduced by its common power of two
+  mpz_ptr num = mpq_numref(out.mpq()), den = mpq_denref(out.mpq());
+  long bits = 0;
+  for (; bits <= 2048 && bits < k; bits += 4) {
+    mpz_fdiv_q_2exp(num, m.mpz(), static_cast<mp_bitcnt_t>(k - bits));
+    mpz_mul_2exp(t.mpz(), num, static_cast<mp_bitcnt_t>(k - bits));
+    if (mpz_cmp(l.mpz(), t.mpz()) < 0) break;
+  }
+  if (bits > 2048 || bits >= k) {  // mid
+    mpz_set(num, m.mpz());
+    bits = k;
+  }
+  if (mpz_sgn(num) == 0) return out;  // 0/1
+  const long shift = std::min<long>(static_cast<long>(mpz_scan1(num, 0)), bits);
+  mpz_tdiv_q_2exp(num, num, static_cast<mp_bitcnt_t>(shift));
+  mpz_set_ui(den, 1);
+  mpz_mul_2exp(den, den, static_cast<mp_bitcnt_t>(bits - shift));
+  return out;
+}
+
 /// The tests compare integers (cross-multiplied, denominators positive): no rational is
 /// canonicalized until the answer.
 Rational fewest_bits(const Rational& lo, const Rational& hi) {
+  const long kl = two_exponent(mpq_denref(lo.mpq())), kh = two_exponent(mpq_denref(hi.mpq()));
+  if (kl >= 0 && kh >= 0) return fewest_bits_dyadic(lo, hi, kl, kh);
   const Rational mid = (lo + hi) / 2;
   Integer scaled, a, b;
   for (unsigned bits = 0; bits <= 2048; bits += 4) {

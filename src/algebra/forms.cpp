@@ -100,10 +100,6 @@ void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mp
   auto& t = scratch.t;
   auto &g = scratch.g, &den = scratch.den, &l = scratch.l, &content = scratch.content;
   auto& dens = scratch.dens;
-  // lcm(l, d) costs a gcd; most denominators of a pair are equal, or divide one already taken.
-  auto fold_lcm = [](mpz_ptr acc, mpz_srcptr d) {
-    if (mpz_cmp_ui(d, 1) != 0 && !mpz_divisible_p(acc, d)) mpz_lcm(acc, acc, d);
-  };
   mpz_set_ui(t[0], 1);
   mpz_set_ui(t[1], 1);
   for (const auto* m : {&p, &e})
@@ -150,15 +146,39 @@ void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mp
   form(e, ez);
 }
 
+namespace {
+
+/// Divides x (non-zero) by its factors 5, at most `most` of them, and returns how many: 27 at a
+/// time, by x mod 5^27 (< 2^63) in one single-limb pass; when that is not zero, its own valuation
+/// is x's (r = x + k 5^27). No mpz temporaries, unlike mpz_remove.
+unsigned long remove_fives(mpz_ptr x, unsigned long most) {
+  unsigned long removed = 0;
+  while (removed < most) {
+    const unsigned long chunk = std::min<unsigned long>(27, most - removed);
+    std::uint64_t p = 1;
+    for (unsigned long i = 0; i < chunk; ++i) p *= 5;
+    std::uint64_t r = mpz_fdiv_ui(x, p);
+    if (r == 0) {
+      mpz_divexact_ui(x, x, p);
+      removed += chunk;
+      continue;
+    }
+    std::uint64_t q = 1;
+    for (; r % 5 == 0; r /= 5) q *= 5, ++removed;
+    if (q > 1) mpz_divexact_ui(x, x, q);
+    break;
+  }
+  return removed;
+}
+
+}  // namespace
+
 SplitScale split_scale(const Integer& scale) {
   SplitScale out;
   out.twos = mpz_scan1(scale.mpz(), 0);
   Integer rest;  // fresh: written through mpz()
   mpz_tdiv_q_2exp(rest.mpz(), scale.mpz(), out.twos);
-  if (mpz_divisible_ui_p(rest.mpz(), 5)) {  // mpz_remove allocates: only when there are fives
-    const Integer five(5);
-    out.fives = mpz_remove(rest.mpz(), rest.mpz(), five.mpz());
-  }
+  out.fives = remove_fives(rest.mpz(), ~0UL);
   out.rest = rest;
   if (mpz_cmp_ui(rest.mpz(), 1) == 0) {  // doubles and decimal text: every power is 1 (one shared value)
     out.rest_power.fill(rest);
@@ -166,52 +186,140 @@ SplitScale split_scale(const Integer& scale) {
   }
   out.rest_power[0] = Integer(1);
   for (std::size_t k = 1; k < out.rest_power.size(); ++k) out.rest_power[k] = out.rest_power[k - 1] * rest;
+  out.factors.push_back({rest, 1});
   return out;
 }
 
-Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors) {
+SplitScale split_scale(const Integer& scale, const Matrix4& m) {
+  SplitScale out = split_scale(scale);
+  if (out.factors.empty()) return out;
+  // The distinct rests of the denominators (2s and 5s removed), each a root to the power 1 or 2.
+  std::vector<SplitScale::Factor> rests;
+  rests.reserve(4);  // a standard paraboloid has two or three
+  mpz_t r, g;
+  mpz_init(r);
+  mpz_init(g);
+  for (const Rational& q : m.a) {
+    const mpz_srcptr d = mpq_denref(q.mpq());
+    if (mpz_cmp_ui(d, 1) == 0) continue;
+    mpz_tdiv_q_2exp(r, d, mpz_scan1(d, 0));
+    remove_fives(r, ~0UL);
+    if (mpz_cmp_ui(r, 1) == 0) continue;
+    unsigned long power = 1;
+    if (mpz_perfect_square_p(r)) {
+      mpz_sqrt(r, r);
+      power = 2;
+    }
+    bool seen = false;
+    for (const SplitScale::Factor& x : rests) seen = seen || (x.power == power && mpz_cmp(x.base.mpz(), r) == 0);
+    if (seen) continue;
+    rests.emplace_back();
+    mpz_set(rests.back().base.mpz(), r);  // a fresh Integer: written through mpz()
+    rests.back().power = power;
+  }
+  // Factor refinement: two bases with a common factor c become b / c, b' / c and c, until they are
+  // pairwise coprime. Every rest stays a product of bases; the product of the bases decreases.
+  std::vector<Integer> base;
+  base.reserve(rests.size() + 2);
+  for (const SplitScale::Factor& x : rests) {
+    base.emplace_back();
+    mpz_set(base.back().mpz(), x.base.mpz());
+  }
+  for (bool split = true; split;) {
+    split = false;
+    for (std::size_t i = 0; i < base.size() && !split; ++i)
+      for (std::size_t j = i + 1; j < base.size() && !split; ++j) {
+        mpz_gcd(g, base[i].mpz(), base[j].mpz());
+        if (mpz_cmp_ui(g, 1) == 0) continue;
+        Integer bi, bj, c;  // fresh: written through mpz()
+        mpz_divexact(bi.mpz(), base[i].mpz(), g);
+        mpz_divexact(bj.mpz(), base[j].mpz(), g);
+        mpz_set(c.mpz(), g);
+        std::vector<Integer> next;
+        for (std::size_t k = 0; k < base.size(); ++k)
+          if (k != i && k != j) next.push_back(base[k]);
+        for (const Integer* x : {&bi, &bj, &c}) {
+          bool dup = mpz_cmp_ui(x->mpz(), 1) == 0;
+          for (const Integer& y : next) dup = dup || mpz_cmp(x->mpz(), y.mpz()) == 0;
+          if (!dup) next.push_back(*x);
+        }
+        base = std::move(next);
+        split = true;
+      }
+  }
+  // The exponent of each base in the lcm: the largest in any rest. The product must be the rest.
+  std::vector<unsigned long> power(base.size(), 0);
+  bool exact = true;
+  for (const SplitScale::Factor& x : rests) {
+    mpz_set(r, x.base.mpz());
+    for (std::size_t j = 0; j < base.size(); ++j) {
+      unsigned long e = 0;
+      while (mpz_divisible_p(r, base[j].mpz())) mpz_divexact(r, r, base[j].mpz()), ++e;
+      power[j] = std::max(power[j], e * x.power);
+    }
+    exact = exact && mpz_cmp_ui(r, 1) == 0;
+  }
+  mpz_set_ui(g, 1);
+  for (std::size_t j = 0; j < base.size(); ++j) {
+    mpz_pow_ui(r, base[j].mpz(), power[j]);
+    mpz_mul(g, g, r);
+  }
+  if (exact && mpz_cmp(g, out.rest.mpz()) == 0) {
+    out.factors.clear();
+    out.factors.reserve(base.size());
+    for (std::size_t j = 0; j < base.size(); ++j) out.factors.push_back({base[j], power[j]});
+  }
+  mpz_clear(r);
+  mpz_clear(g);
+  return out;
+}
+
+Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors) {
   Rational out;  // fresh: its mpq is not shared, so it is written in place
   mpz_ptr num = mpq_numref(out.mpq());
   mpz_ptr den = mpq_denref(out.mpq());
-  if (mpz_sgn(z.mpz()) == 0) return out;
+  if (mpz_sgn(z) == 0) return out;
   unsigned long twos = 0, fives = 0;
   for (const ScalePower& d : divisors) twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
-  const unsigned long shift = std::min<unsigned long>(mpz_scan1(z.mpz(), 0), twos);
-  mpz_tdiv_q_2exp(num, z.mpz(), shift);
-  // The fives, 27 at a time: num mod 5^27 (< 2^63) by one single-limb pass; when it is not zero,
-  // its own valuation is num's (r = num + k 5^27). No mpz temporaries, unlike mpz_remove.
-  unsigned long removed = 0;
-  while (removed < fives) {
-    const unsigned long chunk = std::min<unsigned long>(27, fives - removed);
-    std::uint64_t p = 1;
-    for (unsigned long i = 0; i < chunk; ++i) p *= 5;
-    std::uint64_t r = mpz_fdiv_ui(num, p);
-    if (r == 0) {
-      mpz_divexact_ui(num, num, p);
-      removed += chunk;
-      continue;
-    }
-    std::uint64_t q = 1;
-    for (; r % 5 == 0; r /= 5) q *= 5, ++removed;
-    if (q > 1) mpz_divexact_ui(num, num, q);
-    break;
-  }
+  const unsigned long shift = std::min<unsigned long>(mpz_scan1(z, 0), twos);
+  mpz_tdiv_q_2exp(num, z, shift);
+  const unsigned long removed = remove_fives(num, fives);
   mpz_ui_pow_ui(den, 5, fives - removed);
   mpz_mul_2exp(den, den, twos - shift);
   // gcd(num, rest^k) = g_1 ... g_j, g_i = gcd(num / (g_1 ... g_(i-1)), rest): each step takes
   // min(v_p(num), v_p(rest)) more of every prime p, so k steps take min(v_p(num), k v_p(rest)).
   // Scale after scale, the caps add up: min(v_p(num), sum_j k_j v_p(rest_j)) in all.
+  // With rest = prod b_j^(e_j), the b_j pairwise coprime, the same holds base by base: k e_j gcds
+  // with b_j take min(v_p(num), k v_p(rest)) of each prime p of b_j. A one-limb base costs a
+  // single-limb remainder and a word gcd per step.
   mpz_t g, common;
   mpz_init(g);
   mpz_init(common);
   for (const ScalePower& d : divisors) {
-    if (d.k == 0 || mpz_cmp_ui(d.scale.rest.mpz(), 1) == 0) continue;
+    if (d.k == 0 || d.scale.factors.empty()) continue;
     mpz_set_ui(common, 1);
-    for (unsigned long i = 0; i < d.k; ++i) {
-      mpz_gcd(g, num, d.scale.rest.mpz());
-      if (mpz_cmp_ui(g, 1) == 0) break;
-      mpz_divexact(num, num, g);
-      mpz_mul(common, common, g);
+    for (const SplitScale::Factor& f : d.scale.factors) {
+      const unsigned long steps = d.k * f.power;
+      if (mpz_fits_ulong_p(f.base.mpz())) {
+        const unsigned long b = mpz_get_ui(f.base.mpz());
+        for (unsigned long i = 0; i < steps; ++i) {
+          const unsigned long c = mpz_gcd_ui(nullptr, num, b);
+          if (c == 1) break;
+          mpz_divexact_ui(num, num, c);
+          mpz_mul_ui(common, common, c);
+        }
+        continue;
+      }
+      for (unsigned long i = 0; i < steps; ++i) {
+        mpz_gcd(g, num, f.base.mpz());
+        if (mpz_cmp_ui(g, 1) == 0) break;
+        mpz_divexact(num, num, g);
+        mpz_mul(common, common, g);
+      }
+    }
+    if (mpz_cmp_ui(common, 1) == 0) {
+      mpz_mul(den, den, d.scale.rest_power[d.k].mpz());
+      continue;
     }
     mpz_divexact(g, d.scale.rest_power[d.k].mpz(), common);
     mpz_mul(den, den, g);
@@ -242,13 +350,27 @@ MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l) {
       mpz_mul_2exp(out.a[i].mpz(), mpq_numref(m.a[i].mpq()), top - mpz_scan1(mpq_denref(m.a[i].mpq()), 0));
   } else {
     lcm_of_denominators(m.a.begin(), m.a.end(), lcm);
-    for (std::size_t i = 0; i < 16; ++i) scaled_numerator(m.a[i], lcm, out.a[i].mpz());
+    // Most entries share their denominator with the previous one, or have the lcm itself.
+    Integer q;  // fresh: written through mpz()
+    mpz_srcptr last = nullptr;
+    for (std::size_t i = 0; i < 16; ++i) {
+      const mpz_srcptr d = mpq_denref(m.a[i].mpq());
+      if (mpz_cmp(d, lcm.mpz()) == 0) {
+        mpz_set(out.a[i].mpz(), mpq_numref(m.a[i].mpq()));
+        continue;
+      }
+      if (!last || mpz_cmp(d, last) != 0) {
+        mpz_divexact(q.mpz(), lcm.mpz(), d);
+        last = d;
+      }
+      mpz_mul(out.a[i].mpz(), q.mpz(), mpq_numref(m.a[i].mpq()));
+    }
   }
   l = lcm;
   return out;
 }
 
-MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l) {
+void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l) {
   // d[i] = m_i 2^k_i with m_i odd (|m_i| < 2^53): the lcm of the denominators is 2^top with
   // top = max(0, -k_i), and the integer entries are m_i 2^(k_i + top).
   std::int64_t m[16];
@@ -263,17 +385,25 @@ MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l) {
     const double f = std::frexp(d[i], &e);  // d = f 2^e, 0.5 <= |f| < 1: f 2^53 is an integer
     m[i] = static_cast<std::int64_t>(std::ldexp(f, 53));
     k[i] = e - 53;
-    while (m[i] % 2 == 0) m[i] /= 2, ++k[i];
+    const int zeros = __builtin_ctzll(static_cast<unsigned long long>(m[i]));  // m != 0
+    m[i] /= std::int64_t{1} << zeros;                                          // exact
+    k[i] += zeros;
     top = std::max(top, -k[i]);
   }
-  MatrixOf<Integer> out;  // fresh entries: written through mpz()
   for (std::size_t i = 0; i < 16; ++i) {
-    mpz_set_si(out.a[i].mpz(), static_cast<long>(m[i]));
-    if (m[i] != 0) mpz_mul_2exp(out.a[i].mpz(), out.a[i].mpz(), static_cast<mp_bitcnt_t>(k[i] + top));
+    mpz_set_si(out[i], static_cast<long>(m[i]));
+    if (m[i] != 0) mpz_mul_2exp(out[i], out[i], static_cast<mp_bitcnt_t>(k[i] + top));
   }
   Integer lcm(1);  // fresh: written through mpz()
   mpz_mul_2exp(lcm.mpz(), lcm.mpz(), static_cast<mp_bitcnt_t>(top));
   l = lcm;
+}
+
+MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l) {
+  MatrixOf<Integer> out;  // fresh entries: written through mpz()
+  std::array<mpz_ptr, 16> z;
+  for (std::size_t i = 0; i < 16; ++i) z[i] = out.a[i].mpz();
+  integer_form(d, z, l);
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
@@ -40,10 +41,25 @@ struct DoubleView {
 
 using Interval = CGAL::Interval_nt<false>;
 
+/// lcm(l, d) into l (d > 0): a divisibility test first, since most denominators of a matrix or a
+/// polynomial are equal or divide one already taken (powers of 2 and 5), and lcm costs a gcd.
+inline void fold_lcm(mpz_ptr l, mpz_srcptr d) {
+  if (mpz_cmp_ui(d, 1) != 0 && !mpz_divisible_p(l, d)) mpz_lcm(l, l, d);
+}
+
 /// The lcm of the denominators of a range of rationals, folded into `l` (one loop for every caller).
 template <class It>
 void lcm_of_denominators(It first, It last, Integer& l) {
-  for (; first != last; ++first) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(first->mpq()));
+  for (; first != last; ++first) fold_lcm(l.mpz(), mpq_denref(first->mpq()));
+}
+
+/// 1 / a^2 for a != 0: the squares of its coprime numerator and denominator, swapped, are already
+/// in lowest terms (no gcd, where rational division computes two).
+inline Rational inverse_square(const Rational& a) {
+  Rational out;  // fresh: its mpq is not shared, so it is written in place
+  mpz_mul(mpq_numref(out.mpq()), mpq_denref(a.mpq()), mpq_denref(a.mpq()));
+  mpz_mul(mpq_denref(out.mpq()), mpq_numref(a.mpq()), mpq_numref(a.mpq()));
+  return out;
 }
 
 /// The integer q l, for l a multiple of q's denominator (lcm_of_denominators), written into `out`
@@ -54,15 +70,29 @@ inline void scaled_numerator(const Rational& q, const Integer& l, mpz_ptr out) {
 }
 
 /// A positive integer scale split as 2^twos 5^fives rest, and rest^k for the powers a caller
-/// divides by: 2 and 5 are what doubles and decimal text put in denominators.
+/// divides by: 2 and 5 are what doubles and decimal text put in denominators. The rest is also
+/// kept as a product of pairwise coprime factors base^power (one factor, rest itself, unless the
+/// scale was split along its denominators), so that a gcd with it is a gcd with a short base.
 struct SplitScale {
+  struct Factor {
+    Integer base;
+    unsigned long power = 1;
+  };
   unsigned long twos = 0, fives = 0;
   Integer rest{1};
   std::array<Integer, 5> rest_power;  ///< rest^k for k = 0..4
+  std::vector<Factor> factors;        ///< rest = prod base^power, bases pairwise coprime; empty for rest 1
 };
 
 /// Splits a positive integer.
 SplitScale split_scale(const Integer& scale);
+
+/// Splits scale = the lcm of the denominators of m's entries (integer_form), its rest kept as a
+/// coprime base of those denominators' rests (square ones by their roots), with the lcm's powers:
+/// for a standard paraboloid with decimal a and b, the rest of lcm(den(1/a^2), den(1/b^2)) becomes
+/// ma^2 mb^2 (or ma'^2 c^2 mb'^2 when ma and mb share c) with one-limb bases instead of one
+/// four-limb number.
+SplitScale split_scale(const Integer& scale, const Matrix4& m);
 
 /// One divisor of divided_by_powers: scale^k, k <= 4.
 struct ScalePower {
@@ -72,9 +102,13 @@ struct ScalePower {
 
 /// z / (scale_1^k_1 scale_2^k_2 ...) in lowest terms without a gcd of the long numbers: the twos
 /// by a bit scan, the fives by single-limb remainders, and the common factor with each rest^k as
-/// at most k gcds with rest itself, usually one that is 1 (a general gcd per coefficient of the
-/// reported f and s was a tenth to a sixth of a decimal batch line's full evidence).
-Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors);
+/// at most k e gcds with each factor b^e of rest, usually one that is 1 (a general gcd per
+/// coefficient of the reported f and s costs a tenth to a sixth of a decimal batch line's full
+/// evidence).
+Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors);
+inline Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors) {
+  return divided_by_powers(z.mpz(), divisors);
+}
 inline Rational divided_by_power(const Integer& z, const SplitScale& scale, unsigned long k) {
   return divided_by_powers(z, {{scale, k}});
 }
@@ -101,6 +135,8 @@ MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l);
 /// The same for a matrix of exact doubles, read from their bits (no rationals): equal to
 /// integer_form of the matrix of Rational(d[i]).
 MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l);
+/// The same written into the caller's integers (16 distinct mpz, row-major), e.g. pooled ones.
+void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l);
 
 /// The smallest integer form the *decisions* need (not the evidence: the roots move). With
 /// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive

@@ -64,6 +64,9 @@ Quartic<NT> characteristic_polynomial(const M& p, const M& e) {
   static constexpr int kPairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   static constexpr int kSign[6] = {1, -1, 1, 1, -1, 1};
   Quartic<NT> f{NT(0), NT(0), NT(0), NT(0), NT(0)};
+  // Unrolled: the column indices become constants (in doubles, the loop's indexed loads cost more
+  // than its arithmetic).
+#pragma GCC unroll 6
   for (int k = 0; k < 6; ++k) {
     const int* top = kPairs[k];
     const int* bot = kPairs[5 - k];  // complementary columns
@@ -80,6 +83,7 @@ Quartic<NT> characteristic_polynomial(const M& p, const M& e) {
 template <class NT, class M>
 Quadratic<NT> special_polynomial(const M& p, const M& e) {
   Quadratic<NT> s{NT(0), NT(0), NT(0)};
+#pragma GCC unroll 3
   for (int j = 0; j < 3; ++j) {
     const int c0 = j == 0 ? 1 : 0, c1 = j == 2 ? 1 : 2;
     Quadratic<NT> m = detail::linear_minor2<NT>(e, p, 1, 2, c0, c1);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <utility>
 
 #include "algebra/forms.hpp"
@@ -153,6 +155,22 @@ std::array<Rational, N> exact_array(const std::array<double, N>& d) {
   return out;
 }
 
+/// |c|^2 - r^2 with one reduction instead of a canonicalisation per operation: over the lcm L of
+/// the denominators, (sum_i (c_i L)^2 - (r L)^2) / L^2, reduced along L's split (decimal text puts
+/// only 2s and 5s there).
+Rational squared_norm_minus(const Vector3& c, const Rational& r) {
+  Integer l(1), num, t;  // fresh: written through mpz()
+  forms::lcm_of_denominators(c.begin(), c.end(), l);
+  forms::fold_lcm(l.mpz(), mpq_denref(r.mpq()));
+  for (const Rational& x : c) {
+    forms::scaled_numerator(x, l, t.mpz());
+    mpz_addmul(num.mpz(), t.mpz(), t.mpz());
+  }
+  forms::scaled_numerator(r, l, t.mpz());
+  mpz_submul(num.mpz(), t.mpz(), t.mpz());
+  return forms::divided_by_power(num, forms::split_scale(l), 2);
+}
+
 std::string found(QuadricKind k) {
   std::string s = to_string(k);
   const char* article = (s[0] == 'a' || s[0] == 'e' || s[0] == 'i' || s[0] == 'o' || s[0] == 'u') ? "an " : "a ";
@@ -183,23 +201,49 @@ std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m) {
 
 namespace detail {
 
-QuadricMatrix::QuadricMatrix(Matrix4 m)
-    : d_(exact_doubles(m)), n_(power_of_two_normalized(d_)), m_(std::make_shared<const Matrix4>(std::move(m))) {}
+QuadricMatrix::QuadricMatrix(Matrix4 m) {
+  if (const std::optional<DoubleMatrix4> d = exact_doubles(m)) *this = QuadricMatrix(*d);
+  m_ = std::make_shared<const Matrix4>(std::move(m));
+}
 
-QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d) : d_(d), n_(power_of_two_normalized(d_)) {}
+QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d) : flags_(kDoubles) {
+  bool plain;
+  if (normalize_doubles(d, v_, exponent_, plain)) {
+    flags_ |= kNormalized | (plain ? kPlainScale : 0);
+  } else {
+    v_ = d;
+    exponent_ = 0;
+  }
+}
 
-QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized)
-    : d_(d), n_(normalized) {}
+void QuadricMatrix::negate_doubles() {
+  for (double& x : v_) x = -x;
+}
 
 QuadricMatrix::QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source)
-    : enclosure_(enclosure), source_(std::move(source)) {}
+    : cold_(std::make_shared<const Cold>(Cold{enclosure, std::move(source)})) {}
+
+std::optional<DoubleMatrix4> QuadricMatrix::doubles() const {
+  if (!has_doubles()) return std::nullopt;
+  if (!(flags_ & kNormalized)) return v_;
+  DoubleMatrix4 d;
+  if (flags_ & kPlainScale) {
+    const std::uint64_t bits = static_cast<std::uint64_t>(exponent_ + 1023) << 52;
+    double scale;
+    std::memcpy(&scale, &bits, sizeof scale);  // 2^exponent_
+    for (std::size_t i = 0; i < 16; ++i) d[i] = v_[i] * scale;
+  } else {
+    for (std::size_t i = 0; i < 16; ++i) d[i] = std::ldexp(v_[i], exponent_);  // exact: d is representable
+  }
+  return d;
+}
 
 const Matrix4& QuadricMatrix::materialize() const {
   auto built = std::make_shared<Matrix4>();
-  if (d_) {
-    for (std::size_t i = 0; i < 16; ++i) built->a[i] = Rational((*d_)[i]);  // finite: exact
+  if (const std::optional<DoubleMatrix4> d = doubles()) {
+    for (std::size_t i = 0; i < 16; ++i) built->a[i] = Rational((*d)[i]);  // finite: exact
   } else {
-    *built = source_->build();
+    *built = cold_->source->build();
   }
   std::shared_ptr<const Matrix4> expected;
   std::shared_ptr<const Matrix4> desired = std::move(built);
@@ -388,25 +432,14 @@ bool all_finite(const DoubleMatrix4& d) {
   return true;
 }
 
-DoubleMatrix4 negated(const DoubleMatrix4& d) {
-  DoubleMatrix4 r;
-  for (std::size_t i = 0; i < 16; ++i) r[i] = -d[i];
-  return r;
-}
-
-std::optional<DoubleMatrix4> negated(const std::optional<DoubleMatrix4>& d) {
-  if (!d) return std::nullopt;
-  return negated(*d);
-}
-
 }  // namespace
 
 Ellipsoid Ellipsoid::from_doubles(const DoubleMatrix4& e) {
   if (all_finite(e)) {
-    const std::optional<DoubleMatrix4> n = power_of_two_normalized(e);
-    const int orientation = shape_filter::certified_ellipsoid(e, n);
-    if (orientation > 0) return Ellipsoid(detail::QuadricMatrix(e, n));
-    if (orientation < 0) return Ellipsoid(detail::QuadricMatrix(negated(e), negated(n)));
+    Ellipsoid out{detail::QuadricMatrix(e)};  // normalized in place, read by the shape test
+    const int orientation = shape_filter::certified_ellipsoid(e, out.m_.filter_doubles());
+    if (orientation < 0) out.m_.negate_doubles();
+    if (orientation != 0) return out;
   }
   // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
   const Ellipsoid exact = from_matrix(exact_matrix(e));
@@ -437,7 +470,7 @@ Ellipsoid Ellipsoid::sphere(const Vector3& c, const Rational& r) {
     m(i, i) = Rational(1);
     m(i, 3) = m(3, i) = -c[static_cast<std::size_t>(i)];
   }
-  m(3, 3) = c[0] * c[0] + c[1] * c[1] + c[2] * c[2] - r * r;
+  m(3, 3) = squared_norm_minus(c, r);
   return Ellipsoid(m);
 }
 
@@ -489,10 +522,10 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
 // measured 10 % slower on the from-doubles path (benchmarks/regime_bench), so each is written out.
 Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
   if (all_finite(p)) {
-    const std::optional<DoubleMatrix4> n = power_of_two_normalized(p);
-    const int orientation = shape_filter::certified_paraboloid(p, n);
-    if (orientation > 0) return Paraboloid(detail::QuadricMatrix(p, n));
-    if (orientation < 0) return Paraboloid(detail::QuadricMatrix(negated(p), negated(n)));
+    Paraboloid out{detail::QuadricMatrix(p)};  // normalized in place, read by the shape test
+    const int orientation = shape_filter::certified_paraboloid(p, out.m_.filter_doubles());
+    if (orientation < 0) out.m_.negate_doubles();
+    if (orientation != 0) return out;
   }
   const Paraboloid exact = from_matrix(exact_matrix(p));
   return Paraboloid(*exact.doubles());
@@ -503,7 +536,7 @@ Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_
 Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Rational& b, const Quaternion& q) {
   if (a <= 0 || b <= 0)
     throw InputError("paraboloid parameters a, b must be positive, got a = " + to_string(a) + ", b = " + to_string(b));
-  const Rational ia = Rational(1) / (a * a), ib = Rational(1) / (b * b);
+  const Rational ia = forms::inverse_square(a), ib = forms::inverse_square(b);
   // A congruence of the standard paraboloid by an invertible affine map is an elliptic paraboloid
   // with the same orientation (Sylvester's law of inertia): no validation, no sign normalization.
   if (q[0] != 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) {
@@ -511,9 +544,13 @@ Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Ratio
     Matrix4 m;
     m(0, 0) = ia;
     m(1, 1) = ib;
+    m(2, 3) = m(3, 2) = Rational(-1, 2);
+    if (v[0] == 0 && v[1] == 0) {  // a vertex on the z axis (the usual input): no products of zeros
+      m(3, 3) = v[2];
+      return Paraboloid(std::move(m));
+    }
     m(0, 3) = m(3, 0) = -ia * v[0];
     m(1, 3) = m(3, 1) = -ib * v[1];
-    m(2, 3) = m(3, 2) = Rational(-1, 2);
     m(3, 3) = ia * v[0] * v[0] + ib * v[1] * v[1] + v[2];
     return Paraboloid(std::move(m));
   }

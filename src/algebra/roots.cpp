@@ -195,44 +195,71 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
 }
 
 /// True when Res(f, s) != 0 is shown modulo one word-sized prime p not dividing either leading
-/// coefficient (then Res(f, s) mod p = Res(f mod p, s mod p)); false when that is 0 (the caller
-/// computes the resultant over the integers). A few hundred nanoseconds instead of the integer
-/// resultant's subresultant chain.
-bool certainly_coprime(const fmpz_poly_t f, const fmpz_poly_t s) {
+/// coefficient (then Res(f, s) mod p = Res(f mod p, s mod p)) for a quartic f and a quadratic s;
+/// false when that is 0 (the caller computes the gcd over the integers). On machine words, by the
+/// pseudo-remainder r = r1 x + r0 of s2^3 f modulo s: Res(f, s) is a non-zero multiple of the
+/// product of r over the two roots of s, r0^2 s2 - r0 r1 s1 + r1^2 s0 (over s2). A few dozen word
+/// operations, no allocation and no inverse.
+bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
   static const mp_limb_t p = n_nextprime(UWORD(1) << 62, 1);
-  nmod_poly_t fp, sp;
-  nmod_poly_init(fp, p);
-  nmod_poly_init(sp, p);
-  fmpz_poly_get_nmod_poly(fp, f);
-  fmpz_poly_get_nmod_poly(sp, s);
-  const bool ok = nmod_poly_degree(fp) == fmpz_poly_degree(f) && nmod_poly_degree(sp) == fmpz_poly_degree(s) &&
-                  nmod_poly_resultant(fp, sp) != 0;
-  nmod_poly_clear(fp);
-  nmod_poly_clear(sp);
-  return ok;
+  static const mp_limb_t p_inverse = n_preinvert_limb(p);
+  auto mod = [](const Integer& z) { return static_cast<mp_limb_t>(mpz_fdiv_ui(z.mpz(), p)); };
+  auto mul = [](mp_limb_t a, mp_limb_t b) { return n_mulmod2_preinv(a, b, p, p_inverse); };
+  auto sub = [](mp_limb_t a, mp_limb_t b) { return n_submod(a, b, p); };
+  mp_limb_t f[5];
+  for (int i = 0; i < 5; ++i) f[i] = mod(fc[static_cast<std::size_t>(i)]);
+  const mp_limb_t s2 = mod(sc[2]), s1 = mod(sc[1]), s0 = mod(sc[0]);
+  if (f[4] == 0 || s2 == 0) return false;
+  for (int k = 4; k >= 2; --k) {  // f <- s2 f - f_k x^(k-2) s: degree k - 1
+    for (int i = 0; i < k; ++i) f[i] = mul(f[i], s2);
+    f[k - 1] = sub(f[k - 1], mul(f[k], s1));
+    f[k - 2] = sub(f[k - 2], mul(f[k], s0));
+  }
+  const mp_limb_t r1 = f[1], r0 = f[0];
+  return n_addmod(sub(mul(mul(r0, r0), s2), mul(mul(r0, r1), s1)), mul(mul(r1, r1), s0), p) != 0;
 }
 
 /// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
 /// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
-bool certainly_no_rational_root(const fmpz_poly_t f) {
-  detail::flint_thread_cleanup_at_exit();
-  // Small primes first, every residue tried by Horner on machine words: most irreducible quartics
-  // (and products of irreducible quadratics) have no root modulo one of the first few primes.
+/// The product of the small primes 3, 5, ..., 47 of no_root_modulo_small_primes (< 2^63).
+constexpr unsigned long small_prime_product = 307444891294245705UL;
+
+/// True when f (degree 1..4, coefficients given modulo small_prime_product) has no root modulo
+/// one of the primes 3..47 not dividing lc(f), every residue tried by Horner on machine words: most
+/// irreducible quartics (and products of irreducible quadratics) have no root modulo one of them.
+bool no_root_modulo_small_primes(const unsigned long* residue, long deg) {
   static const unsigned long small_primes[] = {3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47};
-  const slong deg = fmpz_poly_degree(f);
+  if (deg < 1 || deg > 4) return false;
   for (unsigned long p : small_primes) {
     unsigned long c[5] = {0, 0, 0, 0, 0};
-    if (deg < 1 || deg > 4) break;
-    for (slong i = 0; i <= deg; ++i) c[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), p);
+    for (long i = 0; i <= deg; ++i) c[i] = residue[i] % p;
     if (c[deg] == 0) continue;  // p divides lc(f): a rational root need not reduce
     bool root = false;
     for (unsigned long x = 0; x < p && !root; ++x) {
       unsigned long v = 0;
-      for (slong i = deg; i >= 0; --i) v = (v * x + c[i]) % p;
+      for (long i = deg; i >= 0; --i) v = (v * x + c[i]) % p;
       root = v == 0;
     }
     if (!root) return true;
   }
+  return false;
+}
+
+/// The small-prime test on integer coefficients (no FLINT polynomial), degree 4.
+bool no_root_modulo_small_primes(const Quartic<Integer>& f) {
+  unsigned long residue[5];
+  for (std::size_t i = 0; i < 5; ++i) residue[i] = mpz_fdiv_ui(f[i].mpz(), small_prime_product);
+  return no_root_modulo_small_primes(residue, 4);
+}
+
+bool certainly_no_rational_root(const fmpz_poly_t f) {
+  detail::flint_thread_cleanup_at_exit();
+  // Small primes first, then word-sized ones by FLINT.
+  const slong deg = fmpz_poly_degree(f);
+  unsigned long residue[5] = {0, 0, 0, 0, 0};
+  if (deg >= 1 && deg <= 4)
+    for (slong i = 0; i <= deg; ++i) residue[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), small_prime_product);
+  if (no_root_modulo_small_primes(residue, deg)) return true;
   static const mp_limb_t primes[] = {1000003, 1000033, 1000037, 1000039, 1000081, 1000099, 1000117, 1000121,
                                      1000133, 1000151, 1000159, 1000171, 1000183, 1000187, 1000193, 1000199};
   bool found = false;
@@ -429,12 +456,17 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
                                                    int sign_disc_f) {
   detail::flint_thread_cleanup_at_exit();
   if (fc[4] == 0 || fc[0] == 0 || sc[2] == 0) return std::nullopt;
-  const FlintPoly f(fc), s(sc);
+  // FLINT's polynomials only when a test on words does not settle it (the usual pair needs none).
+  std::optional<FlintPoly> f_flint, s_flint;
+  auto f = [&]() -> const FlintPoly& {
+    if (!f_flint) f_flint.emplace(fc);
+    return *f_flint;
+  };
   fmpz_t z;
   fmpz_init(z);
   int disc = sign_disc_f;
   if (disc == 0) {
-    fmpz_poly_discriminant(z, f.p);
+    fmpz_poly_discriminant(z, f().p);
     disc = fmpz_sgn(z);
   }
   if (disc == 0) {
@@ -449,13 +481,14 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   const Integer* hp = fc.data();  // h's coefficients: f's own when f and s are coprime
   int n = 4, disc_h = disc;
   bool ok = true;
-  if (!certainly_coprime(f.p, s.p)) {
+  if (!certainly_coprime(fc, sc)) {
     fmpz_poly_t g, h;
     fmpz_poly_init(g);
     fmpz_poly_init(h);
-    fmpz_poly_gcd(g, f.p, s.p);
+    s_flint.emplace(sc);
+    fmpz_poly_gcd(g, f().p, s_flint->p);
     const slong dg = fmpz_poly_degree(g);
-    ok = dg <= 2 && fmpz_poly_divides(h, f.p, g) && fmpz_poly_degree(h) >= 2;
+    ok = dg <= 2 && fmpz_poly_divides(h, f().p, g) && fmpz_poly_degree(h) >= 2;
     if (ok && dg >= 1) {
       Integer gc[5];
       integer_coefficients(g, gc);
@@ -486,12 +519,12 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
       n = integer_coefficients(h, hc);
       hp = hc;
     } else if (ok) {  // gcd 1 after all
-      ok = certainly_no_rational_root(f.p);
+      ok = no_root_modulo_small_primes(fc) || certainly_no_rational_root(f().p);
     }
     fmpz_poly_clear(g);
     fmpz_poly_clear(h);
   } else {
-    ok = certainly_no_rational_root(f.p);
+    ok = no_root_modulo_small_primes(fc) || certainly_no_rational_root(f().p);
   }
   fmpz_clear(z);
   if (!ok) return std::nullopt;

@@ -3,16 +3,18 @@
 #pragma once
 
 #include <cfenv>
-#if defined(__SSE2_MATH__)
-#include <xmmintrin.h>
-#endif
 
 namespace relpos::detail {
 
-/// One stmxcsr on x86-64 (SSE arithmetic), else fegetround.
+/// With b a little over half an ulp of 1, 1 + b rounds away from 1 to nearest and upwards only, and
+/// -1 - b to nearest and downwards only: both do only to nearest. Two additions are cheaper than
+/// reading the control register (stmxcsr stalls the pipeline on x86-64); the asm keeps the compiler
+/// from folding them (it must not anyway under -frounding-math).
 inline bool rounding_to_nearest() {
-#if defined(__SSE2_MATH__)
-  return (_mm_getcsr() & 0x6000u) == 0;  // MXCSR.RC, bits 13-14: 00 = to nearest
+#if defined(__SSE2_MATH__) && defined(__GNUC__)
+  double one = 1.0, b = 0x1.0000000000001p-53;
+  __asm__("" : "+x"(one), "+x"(b));
+  return (one + b) - one == 0x1p-52 && (-one - b) + one == -0x1p-52;
 #else
   return std::fegetround() == FE_TONEAREST;
 #endif

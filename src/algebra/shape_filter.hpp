@@ -204,9 +204,9 @@ inline int certified_paraboloid_intervals(const std::array<impl::I, 16>& d) {
 
 /// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
 /// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
-/// `normalized` is d scaled by a power of two (power_of_two_normalized), when it exists: the
+/// `normalized` is d scaled by a power of two (power_of_two_normalized), or null: the
 /// semi-static stage reads it; the interval stage reads d.
-inline int certified_ellipsoid(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized) {
+inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
   using impl::I;
   if (!impl::symmetric(d)) return 0;
   const double a = d[0];
@@ -230,7 +230,7 @@ inline int certified_ellipsoid(const DoubleMatrix4& d, const std::optional<Doubl
 /// and is semidefinite iff det Q3 = 0 (exact) and E2 > 0 (the sum of its 2x2 principal minors: the
 /// product of the two other eigenvalues); rank Q = 4 iff det Q != 0. `normalized` as for
 /// certified_ellipsoid.
-inline int certified_paraboloid(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized) {
+inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
   using impl::I;
   if (!impl::symmetric(d)) return 0;
   int trace_sign = 0;

@@ -143,4 +143,63 @@ std::optional<RootCounts> count_roots(const Quartic<NT>& f, const SturmHabicht<N
   return count_roots(signs_of(f, sh));
 }
 
+/// Disc(f) up to the positive factor 27, from the invariants of the quartic f4 x^4 + ... + f0:
+/// 27 Disc(f) = 4 I^3 - J^2 with I = 12 f4 f0 - 3 f3 f1 + f2^2 and
+/// J = 72 f4 f2 f0 + 9 f3 f2 f1 - 27 f4 f1^2 - 27 f0 f3^2 - 2 f2^3: a dozen products where the
+/// expanded Sturm-Habicht g0 (= Disc(f)) takes about eighty.
+template <class NT>
+NT discriminant_times_27(const Quartic<NT>& f) {
+  const NT i = NT(12) * f[4] * f[0] - NT(3) * f[3] * f[1] + f[2] * f[2];
+  const NT j = (NT(72) * f[4] * f[0] - NT(2) * f[2] * f[2]) * f[2] + NT(9) * f[3] * f[2] * f[1] -
+               NT(27) * (f[4] * f[1] * f[1] + f[0] * f[3] * f[3]);
+  return NT(4) * i * i * i - j * j;
+}
+
+/// What the signs of f's coefficients and of Disc(f) alone say about the roots of f for a valid
+/// pair (math.md §8: f always has two distinct real roots at or below lambda_s < 0, so g2 and g1
+/// of the Sturm-Habicht sequence are not needed when Disc(f) != 0).
+enum class DiscriminantCase : unsigned char {
+  Undecided,    ///< a needed sign is uncertain, Disc(f) = 0, or f0, f4 not certified negative
+  NonRealPair,  ///< Disc(f) < 0: two distinct negative roots and a non-real pair
+  TwoPositive,  ///< Disc(f) > 0 and V = 2: four distinct real roots, two of them positive
+  AllNegative,  ///< Disc(f) > 0 and V = 0: four distinct negative roots
+};
+
+/// The case from the signs of f[0..4] and of Disc(f) (q.g0); q.g2 and q.g1 are not read.
+inline DiscriminantCase discriminant_case(const QuarticSigns& q) {
+  using detail::certain;
+  const auto f4 = certain(q.f[4]), f0 = certain(q.f[0]), disc = certain(q.g0);
+  // f4 = det P < 0 and f0 = det E < 0 always; a source that cannot certify them is not trusted further.
+  if (!f4 || !f0 || !disc || *f4 >= 0 || *f0 >= 0 || *disc == 0) return DiscriminantCase::Undecided;
+  // Disc < 0: exactly one non-real pair (f has >= 2 negative roots, so never four non-real ones);
+  // the two real roots are the (distinct) negative ones.
+  if (*disc < 0) return DiscriminantCase::NonRealPair;
+  // Disc > 0: four distinct real roots, and Descartes' rule is exact: #positive = V.
+  int s[5] = {*f4, 0, 0, 0, *f0};
+  bool all_certain = true, some_positive = false;
+  for (int i = 1; i <= 3; ++i) {
+    const auto si = certain(q.f[4 - i]);
+    if (!si) {
+      all_certain = false;
+      continue;
+    }
+    s[i] = *si;
+    some_positive = some_positive || *si > 0;
+  }
+  if (all_certain) {
+    const int v = detail::variations(s, 5);
+    if (v == 0) return DiscriminantCase::AllNegative;
+    if (v == 2) return DiscriminantCase::TwoPositive;
+    return DiscriminantCase::Undecided;  // V = 4 is impossible (>= 2 negative roots): never trust it
+  }
+  // A certain positive f_i between f4 < 0 and f0 < 0 gives V >= 2, and V <= 2 always.
+  return some_positive ? DiscriminantCase::TwoPositive : DiscriminantCase::Undecided;
+}
+
+/// Whether the answer for this case depends on rho (NonRealPair and AllNegative; TwoPositive is E
+/// for any size).
+inline bool discriminant_case_needs_rho(DiscriminantCase c) {
+  return c == DiscriminantCase::NonRealPair || c == DiscriminantCase::AllNegative;
+}
+
 }  // namespace relpos

@@ -152,24 +152,46 @@ int LambdaS::compare(const Rational& q) const {
   return sign({q - value.a, -value.b});
 }
 
+namespace {
+
+/// The enclosure of lambda_s = a + b sqrt(d) for compare(): interval arithmetic on certified
+/// enclosures of a, b and d (infinite bounds, hence no filtering, beyond the double range).
+void enclose(LambdaS& out) {
+  CGAL::Protect_FPU_rounding<true> guard;
+  using I = CGAL::Interval_nt<false>;
+  const I v = I(CGAL::to_interval(out.value.a)) +
+              (out.d == 0 ? I(0) : I(CGAL::to_interval(out.value.b)) * CGAL::sqrt(I(CGAL::to_interval(out.d))));
+  if (std::isfinite(v.inf()) && std::isfinite(v.sup())) {
+    out.lo = v.inf();
+    out.hi = v.sup();
+  }
+}
+
+}  // namespace
+
 LambdaS lambda_s_of(const Poly& s) {
   if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
-  LambdaS out;
-  // disc = s1^2 - 4 s2 s0 in lowest terms N / Den, from the integer form S = L s (L the lcm of the
+  // disc = s1^2 - 4 s2 s0 in lowest terms, from the integer form S = L s (L the lcm of the
   // denominators): disc = (S1^2 - 4 S2 S0) / L^2, reduced once (forms::divided_by_power) instead
-  // of a canonicalization per rational operation. sqrt(disc) = sqrt(N Den) / Den: rational iff N Den is a perfect
-  // square.
-  Integer l(1), num, den, g;  // fresh objects: written through mpz()
+  // of a canonicalization per rational operation.
+  Integer l(1), num, g;  // fresh objects: written through mpz()
   forms::lcm_of_denominators(s.begin(), s.end(), l);
   Integer si[3];
   for (std::size_t i = 0; i < 3; ++i) forms::scaled_numerator(s[i], l, si[i].mpz());
   mpz_mul(num.mpz(), si[1].mpz(), si[1].mpz());
   mpz_mul(g.mpz(), si[2].mpz(), si[0].mpz());
   mpz_submul_ui(num.mpz(), g.mpz(), 4);
-  if (mpz_sgn(num.mpz()) < 0) throw std::logic_error("s has non-real roots");
-  const Rational disc = forms::divided_by_power(num, forms::split_scale(l), 2);
+  return lambda_s_of(s, forms::divided_by_power(num, forms::split_scale(l), 2));
+}
+
+LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
+  if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
+  if (disc < 0) throw std::logic_error("s has non-real roots");
+  LambdaS out;
+  // disc = N / Den in lowest terms: sqrt(disc) = sqrt(N Den) / Den, rational iff N Den is a perfect
+  // square.
   const Integer& n = disc.numerator();
-  den = disc.denominator();
+  const Integer den = disc.denominator();
   Integer nd = n * den;
   const Rational two_s2 = 2 * s[2];
   if (mpz_perfect_square_p(nd.mpz())) {
@@ -181,16 +203,15 @@ LambdaS lambda_s_of(const Poly& s) {
     out.d = nd;
     out.value = {-s[1] / two_s2, Rational(1) / (Rational(den) * two_s2)};
   }
-  // The enclosure of a + b sqrt(d) for compare(): interval arithmetic on certified enclosures of
-  // a, b and d (infinite bounds, hence no filtering, beyond the double range).
-  CGAL::Protect_FPU_rounding<true> guard;
-  using I = CGAL::Interval_nt<false>;
-  const I v = I(CGAL::to_interval(out.value.a)) +
-              (out.d == 0 ? I(0) : I(CGAL::to_interval(out.value.b)) * CGAL::sqrt(I(CGAL::to_interval(out.d))));
-  if (std::isfinite(v.inf()) && std::isfinite(v.sup())) {
-    out.lo = v.inf();
-    out.hi = v.sup();
-  }
+  enclose(out);
+  return out;
+}
+
+LambdaS rational_lambda_s(const Rational& value) {
+  LambdaS out;
+  out.d = 0;
+  out.value = {value, Rational(0)};
+  enclose(out);
   return out;
 }
 

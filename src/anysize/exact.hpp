@@ -58,6 +58,10 @@ struct LambdaS {
 
 /// lambda_s from s = s0 + s1 l + s2 l^2 (two negative roots, s2 > 0).
 LambdaS lambda_s_of(const Poly& s);
+/// The same from Disc(s) = s1^2 - 4 s2 s0, known to the caller (a rational: canonical).
+LambdaS lambda_s_of(const Poly& s, const Rational& disc);
+/// lambda_s known to the caller to be the rational `value` (Disc(s) a square).
+LambdaS rational_lambda_s(const Rational& value);
 
 /// The five rules of math.md §8 as exact facts of f = det(l P + E) and s = det(l A + M):
 /// 1 E: a root of odd multiplicity in (0, oo);  2 TE: any other root in (0, oo);

@@ -29,19 +29,38 @@ using V3 = std::array<Rational, 3>;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
+/// The entries of a matrix as doubles (CGAL::to_double), for the searches in doubles.
+DoubleMatrix4 to_doubles(const Matrix4& m) {
+  DoubleMatrix4 out;
+  for (std::size_t i = 0; i < 16; ++i) out[i] = CGAL::to_double(m.a[i]);
+  return out;
+}
+
 /// Exact signs of X^T Q X, X = (x, 1), on integers: Q times the positive lcm of its denominators,
 /// x over the lcm D of its coordinates' denominators (D^2 X^T Q X = N^T Qz N, N = (D x, D)). No
 /// rational canonicalisation (gcd) per operation, and the temporaries live in reused mpz_t.
 class IntegerForm {
  public:
-  explicit IntegerForm(const Matrix4& q) {
-    Integer l;
-    const forms::MatrixOf<Integer> z = forms::integer_form(q, l);
+  /// From the integer form itself (forms::integer_form), when the caller has it.
+  explicit IntegerForm(const forms::MatrixOf<Integer>& z) {
     for (int i = 0; i < 4; ++i)
-      for (int j = i; j < 4; ++j) {
-        mpz_init_set(z_[i][j], z(i, j).mpz());
-        if (j > i) mpz_mul_2exp(z_[i][j], z_[i][j], 1);  // off-diagonal entries appear twice
+      for (int j = i; j < 4; ++j) mpz_init_set(z_[i][j], z(i, j).mpz());
+    double_off_diagonal();
+  }
+  /// From a matrix of exact doubles, written straight into the form (no Integer handles).
+  explicit IntegerForm(const DoubleMatrix4& d) {
+    mpz_t lower[6];  // the entries below the diagonal, equal to those above
+    std::array<mpz_ptr, 16> out;
+    for (int i = 0, k = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const mpz_ptr x = j >= i ? z_[i][j] : lower[k++];
+        mpz_init(x);
+        out[static_cast<std::size_t>(4 * i + j)] = x;
       }
+    Integer l;
+    forms::integer_form(d, out, l);
+    for (auto& x : lower) mpz_clear(x);
+    double_off_diagonal();
   }
   IntegerForm(const IntegerForm&) = delete;
   IntegerForm& operator=(const IntegerForm&) = delete;
@@ -55,7 +74,7 @@ class IntegerForm {
     explicit Point(const V3& x) {
       for (auto& v : n) mpz_init(v);
       mpz_set_ui(n[3], 1);
-      for (int i = 0; i < 3; ++i) mpz_lcm(n[3], n[3], mpq_denref(x[i].mpq()));
+      for (int i = 0; i < 3; ++i) forms::fold_lcm(n[3], mpq_denref(x[i].mpq()));
       for (int i = 0; i < 3; ++i) {
         mpz_divexact(n[i], n[3], mpq_denref(x[i].mpq()));
         mpz_mul(n[i], n[i], mpq_numref(x[i].mpq()));
@@ -84,6 +103,10 @@ class IntegerForm {
   }
 
  private:
+  void double_off_diagonal() {  // off-diagonal entries appear twice in X^T Q X
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) mpz_mul_2exp(z_[i][j], z_[i][j], 1);
+  }
   mpz_t z_[4][4];
 };
 
@@ -93,6 +116,11 @@ class IntegerForm {
 class IntegerPoly {
  public:
   IntegerPoly() = default;
+  /// From integer coefficients z[0..n) (a positive multiple of the polynomial: the same signs).
+  IntegerPoly(const Integer* z, std::size_t n) : z_(z, z + n) {
+    while (!z_.empty() && z_.back() == 0) z_.pop_back();
+    for (const Integer& c : z_) bits_ = std::max(bits_, mpz_sizeinbase(c.mpz(), 2));
+  }
   explicit IntegerPoly(const Poly& q) {
     Integer l(1);
     forms::lcm_of_denominators(q.begin(), q.end(), l);
@@ -104,15 +132,21 @@ class IntegerPoly {
   }
   int sign(const Rational& x) const {
     if (z_.empty()) return 0;
-    Integer acc, dp(1), t;  // fresh objects: Gmpz shares its value on copy, mpz() does not unshare
-    mpz_set(acc.mpz(), z_.back().mpz());
+    mpz_t acc, dp, t;  // no Integer handles: one exact sign per candidate multiplier
+    mpz_init_set(acc, z_.back().mpz());
+    mpz_init_set_ui(dp, 1);
+    mpz_init(t);
     for (std::size_t k = z_.size() - 1; k-- > 0;) {
-      mpz_mul(dp.mpz(), dp.mpz(), mpq_denref(x.mpq()));
-      mpz_mul(acc.mpz(), acc.mpz(), mpq_numref(x.mpq()));
-      mpz_mul(t.mpz(), z_[k].mpz(), dp.mpz());
-      mpz_add(acc.mpz(), acc.mpz(), t.mpz());
+      mpz_mul(dp, dp, mpq_denref(x.mpq()));
+      mpz_mul(acc, acc, mpq_numref(x.mpq()));
+      mpz_mul(t, z_[k].mpz(), dp);
+      mpz_add(acc, acc, t);
     }
-    return mpz_sgn(acc.mpz());
+    const int out = mpz_sgn(acc);
+    mpz_clear(acc);
+    mpz_clear(dp);
+    mpz_clear(t);
+    return out;
   }
   /// The Newton step t - q(t)/q'(t) from t = n/d rounded down to a multiple of 2^e, on integers
   /// (one division, no canonicalization); nullopt where q' vanishes.
@@ -184,6 +218,19 @@ class LazyMatrix {
   }
   operator const Matrix4&() const { return get(); }  // NOLINT: reads as the matrix it stands for
   const Rational& operator()(int i, int j) const { return get()(i, j); }
+  /// The entries as doubles (CGAL::to_double of each): the quadric's own doubles when it has them,
+  /// without building its rationals.
+  DoubleMatrix4 doubles() const {
+    if (const std::optional<DoubleMatrix4> d = q_.doubles()) return *d;
+    return to_doubles(get());
+  }
+  /// The quadric's own doubles (a copy), if it has them.
+  std::optional<DoubleMatrix4> own_doubles() const { return q_.doubles(); }
+  /// forms::integer_form of the matrix, from the doubles when the quadric has them.
+  forms::MatrixOf<Integer> integer_form(Integer& l) const {
+    if (const std::optional<DoubleMatrix4> d = q_.doubles()) return forms::integer_form(*d, l);
+    return forms::integer_form(get(), l);
+  }
 
  private:
   const Quadric& q_;
@@ -194,23 +241,38 @@ class LazyMatrix {
 struct Pair {
   LazyMatrix<Ellipsoid> E;
   LazyMatrix<Paraboloid> P;
-  Poly f, s;
   LambdaS ls;
   Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known) : E(e), P(p) {
     if (known.f && known.s) {
-      f = anysize::to_poly(known.f->data(), 5);
-      s = anysize::to_poly(known.s->data(), 3);
+      known_f_ = known.f;
+      known_s_ = known.s;
     } else {
       const Quartic<Rational> fq = characteristic_polynomial<Rational>(P.get(), E.get());
       const Quadratic<Rational> sq = special_polynomial<Rational>(P.get(), E.get());
-      f = anysize::to_poly(fq.data(), 5);
-      s = anysize::to_poly(sq.data(), 3);
+      f_ = anysize::to_poly(fq.data(), 5);
+      s_ = anysize::to_poly(sq.data(), 3);
     }
-    ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s);
-    fz = IntegerPoly(f);
+    ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s());
+    if (known.forms) forms_ = *known.forms;
+    if (known.f_multiple) f_multiple_.emplace(known.f_multiple->data(), 5);
   }
-  IntegerPoly fz;  ///< f with integer coefficients, for exact signs
-  int f_sign(const Rational& x) const { return fz.sign(x); }
+  /// f and s as polynomials over Q: the caller's, copied on first use (the certificates of E and I
+  /// with known roots read neither).
+  const Poly& f() const {
+    if (!f_) f_ = anysize::to_poly(known_f_->data(), 5);
+    return *f_;
+  }
+  const Poly& s() const {
+    if (!s_) s_ = anysize::to_poly(known_s_->data(), 3);
+    return *s_;
+  }
+  /// f times the lcm of its denominators (its size sets the searches' budgets), on first use.
+  const IntegerPoly& fz() const {
+    if (!fz_) fz_.emplace(f());
+    return *fz_;
+  }
+  /// sign f(x), on the caller's integer multiple of f when it gave one.
+  int f_sign(const Rational& x) const { return (f_multiple_ ? *f_multiple_ : fz()).sign(x); }
   /// X^T Q X for X = (x, 1).
   static Rational form(const Matrix4& q, const V3& x) {
     Rational acc = q(3, 3);
@@ -227,27 +289,36 @@ struct Pair {
   /// P = Pz/lp) has integer entries n le Pz + d lp Ez: Cramer's rule on integers, one rational
   /// canonicalisation per coordinate.
   std::optional<V3> x_of(const Rational& l) const {
-    if (!forms_) {
-      forms_.emplace();
-      forms_->ez = forms::integer_form(E.get(), forms_->le);
-      forms_->pz = forms::integer_form(P.get(), forms_->lp);
-    }
-    const Integer pf = l.numerator() * forms_->le, ef = l.denominator() * forms_->lp;
+    const IntegerForms& z = forms();
+    const Integer pf = l.numerator() * z.le, ef = l.denominator() * z.lp;
     Integer k[3][4];  // [lambda A + M | -(lambda a + m)], scaled
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 4; ++j) {
-        k[i][j] = pf * forms_->pz(i, j) + ef * forms_->ez(i, j);
+        k[i][j] = pf * z.pz(i, j) + ef * z.ez(i, j);
         if (j == 3) k[i][j] = -k[i][j];
       }
     return detail::solve_integer_system(k);
   }
 
+  bool has_forms() const { return forms_.has_value(); }
+  /// The integer forms of E and P with their scales: the caller's, else computed on first use
+  /// (from the quadrics' doubles when they have them: no rational matrix).
+  const IntegerForms& forms() const {
+    if (!forms_) {
+      forms_.emplace();
+      forms_->ez = E.integer_form(forms_->le);
+      forms_->pz = P.integer_form(forms_->lp);
+    }
+    return *forms_;
+  }
+
  private:
-  struct Forms {  // the integer forms of E and P with their scales, on first use by x_of
-    forms::MatrixOf<Integer> ez, pz;
-    Integer le, lp;
-  };
-  mutable std::optional<Forms> forms_;
+  const Quartic<Rational>* known_f_ = nullptr;
+  const Quadratic<Rational>* known_s_ = nullptr;
+  mutable std::optional<Poly> f_, s_;
+  mutable std::optional<IntegerForms> forms_;
+  mutable std::optional<IntegerPoly> fz_;
+  std::optional<IntegerPoly> f_multiple_;
 };
 
 /// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
@@ -450,8 +521,8 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
   // The positive maximum of f sits at a root of f'; its margin, like a crossing's, needs at most a
   // multiple of the coefficient bits.
   return search_near_roots(
-      anysize::derivative(pr.f), [&](const Rational& l) { return in_domain(l) && pr.f_sign(l) > 0; },
-      1024 + 16 * pr.fz.bits());
+      anysize::derivative(pr.f()), [&](const Rational& l) { return in_domain(l) && pr.f_sign(l) > 0; },
+      1024 + 16 * pr.fz().bits());
 }
 
 /// The curve search of crossing_points first in doubles (a search only: every candidate is checked
@@ -462,14 +533,14 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
 /// exact search when the point itself is beyond doubles.
 using DoubleBracket = std::optional<std::pair<double, double>>;
-void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& lambda_s, const V3& centre,
+void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const LambdaS& lambda_s, const V3& centre,
                          const std::optional<V3>& inside, const std::optional<V3>& outside,
                          const std::function<void(const V3&)>& consider, DoubleBracket (&brackets)[2]) {
   double E[4][4], P[4][4];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
-      E[i][j] = CGAL::to_double(em(i, j));
-      P[i][j] = CGAL::to_double(pm(i, j));
+      E[i][j] = em[static_cast<std::size_t>(4 * i + j)];
+      P[i][j] = pm[static_cast<std::size_t>(4 * i + j)];
       if (!std::isfinite(E[i][j]) || !std::isfinite(P[i][j])) return;
     }
   auto x_of = [&](double l, double x[3]) {
@@ -590,10 +661,10 @@ void double_curve_search(const Matrix4& em, const Matrix4& pm, const LambdaS& la
 
 /// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals; nullopt when it is
 /// not finite. An approximation: the caller checks it exactly.
-std::optional<V3> approximate_centre(const Matrix4& e) {
+std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
   double k[3][4];
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 4; ++j) k[i][j] = CGAL::to_double(e(i, j)) * (j == 3 ? -1 : 1);
+    for (int j = 0; j < 4; ++j) k[i][j] = e[static_cast<std::size_t>(4 * i + j)] * (j == 3 ? -1 : 1);
   const std::array<double, 4> d = cramer(k);
   V3 out;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -628,8 +699,8 @@ struct Secular {
     detail::flint_thread_cleanup_at_exit();
     fmpz_poly_t f, s, d, gp, ge;  // gp = f' s - f s', ge = f s - lambda gp (d: scratch)
     for (auto* q : {f, s, d, gp, ge}) fmpz_poly_init(q);
-    pr.fz.to_flint(f);
-    IntegerPoly(pr.s).to_flint(s);
+    pr.fz().to_flint(f);
+    IntegerPoly(pr.s()).to_flint(s);
     fmpz_poly_derivative(d, f);
     fmpz_poly_mul(gp, d, s);
     fmpz_poly_derivative(d, s);
@@ -641,7 +712,7 @@ struct Secular {
     e = IntegerPoly(ge);
     p = IntegerPoly(gp);
     for (auto* q : {f, s, d, gp, ge}) fmpz_poly_clear(q);
-    budget = 1024 + 16 * (e.bits() + p.bits() + pr.fz.bits());
+    budget = 1024 + 16 * (e.bits() + p.bits() + pr.fz().bits());
   }
 };
 
@@ -866,13 +937,14 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
 
 /// Whether the body is below 2^-20 of its distance to the origin (or its size is not a finite
 /// double): then doubles around its centre cannot resolve it, and the search runs in its frame.
-bool small_for_doubles(const Matrix4& e, const V3& centre) {
-  double c[3], least = HUGE_VAL, far = 0, r2 = CGAL::to_double(e(3, 3));
+bool small_for_doubles(const DoubleMatrix4& em, const V3& centre) {
+  auto e = [&](int i, int j) { return em[static_cast<std::size_t>(4 * i + j)]; };
+  double c[3], least = HUGE_VAL, far = 0, r2 = e(3, 3);
   for (int i = 0; i < 3; ++i) c[i] = CGAL::to_double(centre[i]);
   for (int i = 0; i < 3; ++i) {
-    r2 += 2 * CGAL::to_double(e(i, 3)) * c[i];
-    for (int j = 0; j < 3; ++j) r2 += c[i] * CGAL::to_double(e(i, j)) * c[j];
-    least = std::min(least, CGAL::to_double(e(i, i)));
+    r2 += 2 * e(i, 3) * c[i];
+    for (int j = 0; j < 3; ++j) r2 += c[i] * e(i, j) * c[j];
+    least = std::min(least, e(i, i));
     far = std::max(far, std::fabs(c[i]));
   }
   const double size = std::sqrt(-r2 / least);  // -e(c) = r2 up to rounding
@@ -906,21 +978,31 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   DoubleBracket brackets[2];
-  const IntegerForm ez(pr.E), pz(pr.P);  // exact signs of e and p at the candidates
+  std::optional<IntegerForm> ez, pz;  // exact signs of e and p at the candidates
+  const std::optional<DoubleMatrix4> ed_own = pr.has_forms() ? std::nullopt : pr.E.own_doubles();
+  const std::optional<DoubleMatrix4> pd_own = ed_own ? pr.P.own_doubles() : std::nullopt;
+  if (ed_own && pd_own) {  // from the doubles: the integer forms with their scales are not needed
+    ez.emplace(*ed_own);
+    pz.emplace(*pd_own);
+  } else {
+    ez.emplace(pr.forms().ez);
+    pz.emplace(pr.forms().pz);
+  }
   std::function<void(const V3&)> consider = [&](const V3& x) {
     const IntegerForm::Point xz(x);
-    if (ez.sign(xz) > 0) return;
-    const int s = pz.sign(xz);
+    if (ez->sign(xz) > 0) return;
+    const int s = pz->sign(xz);
     if (s < 0 && !inside) inside = x;
     if (s > 0 && !outside) outside = x;
   };
   // Candidates are pulled towards a dyadic centre (short exact arithmetic): the centre solved in
   // doubles, taken exactly, when it is strictly inside the solid (almost always); else the exact
   // centre (Cramer's rule on integers, several times dearer).
-  std::optional<V3> pull = approximate_centre(pr.E);
-  if (pull && ez.sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(pr.E, *pull)) {
+  const DoubleMatrix4 ed = pr.E.doubles();
+  std::optional<V3> pull = approximate_centre(ed);
+  if (pull && ez->sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(ed, *pull)) {
     consider(*pull);
-    double_curve_search(pr.E, pr.P, pr.ls, *pull, inside, outside, consider, brackets);
+    double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider, brackets);
   } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
     // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
     // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
@@ -933,8 +1015,8 @@ void crossing_points(const Pair& pr, Certificate& c) {
       for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
       consider(x);
     };
-    double_curve_search(in_frame(pr.E, at, scale), in_frame(pr.P, at, scale), pr.ls, V3{}, inside, outside, mapped,
-                        brackets);
+    double_curve_search(to_doubles(in_frame(pr.E, at, scale)), to_doubles(in_frame(pr.P, at, scale)), pr.ls, V3{},
+                        inside, outside, mapped, brackets);
   }
   // What the double search missed, the exact optimisers give (they always exist in a crossing).
   if (!inside || !outside) {
@@ -971,9 +1053,14 @@ std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<R
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) { return build(e, p, position, Known{}); }
 
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known) {
+  Certificate c;
+  build(e, p, position, known, c);
+  return c;
+}
+
+void build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known, Certificate& c) {
   const Pair pr(e, p, known);
   const std::string name = to_string(position);
-  Certificate c;
   auto in_gap = [&](const Rational& l) { return l < 0 && pr.ls.compare(l) > 0; };
   switch (position) {
     case Position::E:
@@ -987,12 +1074,12 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, co
       if (!l) throw internal_error("no multiplier lambda with lambda P + E definite for a pair classified " + name);
       c.kind = Certificate::Kind::Definite;
       c.lambda = *l;
-      return c;
+      return;
     }
     case Position::TE:
     case Position::TI: {
       // The double root lambda* of f is rational (math.md §8), and (x(lambda*), 1) spans the kernel.
-      const Poly g = anysize::monic_gcd(pr.f, anysize::derivative(pr.f));
+      const Poly g = anysize::monic_gcd(pr.f(), anysize::derivative(pr.f()));
       const Poly q = anysize::quotient(g, anysize::monic_gcd(g, anysize::derivative(g)));
       for (const Rational& l : rational_roots(q)) {
         const bool ok = position == Position::TE ? l > 0 : in_gap(l);
@@ -1002,16 +1089,16 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, co
         c.kind = Certificate::Kind::Tangent;
         c.lambda = l;
         c.contact = *x;
-        return c;
+        return;
       }
       // The hard case's contact set exists whenever its linear system is consistent; only the
       // semidefiniteness at lambda_s makes it a tangency, which the verifier's check decides (rare).
-      if (position == Position::TI && hard_case(pr, c) && !verify_certificate(e, p, position, c)) return c;
+      if (position == Position::TI && hard_case(pr, c) && !verify_certificate(e, p, position, c)) return;
       throw internal_error("no contact point for a pair classified " + name);
     }
     case Position::C:
       crossing_points(pr, c);
-      return c;
+      return;
   }
   throw internal_error("no certificate for a pair classified " + name);
 }

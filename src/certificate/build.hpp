@@ -3,11 +3,18 @@
 // in the hard case; two witness points for C. Runs on exact rationals after the position is known.
 #pragma once
 
+#include "algebra/forms.hpp"
 #include "anysize/exact.hpp"
 #include "relpos/polynomials.hpp"
 #include "relpos/position.hpp"
 
 namespace relpos::certificate {
+
+/// The integer forms Ez = le E and Pz = lp P of a pair (forms::integer_form), with their scales.
+struct IntegerForms {
+  forms::MatrixOf<Integer> ez, pz;
+  Integer le, lp;
+};
 
 /// The certificate of `position` for the pair (which must be the pair's position). Never Kind::None:
 /// a certificate that cannot be built throws std::logic_error (an internal error, doc/certificates.md).
@@ -21,8 +28,13 @@ struct Known {
   const Quartic<Rational>* f = nullptr;
   const Quadratic<Rational>* s = nullptr;
   const std::vector<RealRoot>* roots = nullptr;
-  const anysize::LambdaS* lambda_s = nullptr;  ///< lambda_s of *s (set only with f and s)
+  const anysize::LambdaS* lambda_s = nullptr;    ///< lambda_s of *s (set only with f and s)
+  const IntegerForms* forms = nullptr;           ///< the integer forms of E and P, with their scales
+  const Quartic<Integer>* f_multiple = nullptr;  ///< a positive integer multiple of f, for exact signs
 };
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known);
+/// The same written into `out`, a default-constructed certificate (a caller's member: one
+/// certificate's two dozen exact numbers are not allocated twice).
+void build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known, Certificate& out);
 
 }  // namespace relpos::certificate

@@ -48,40 +48,6 @@ std::string decided_by(Stage s) {
   return "?";
 }
 
-DiscriminantCase discriminant_case(const QuarticSigns& q) {
-  using detail::certain;
-  const auto f4 = certain(q.f[4]), f0 = certain(q.f[0]), disc = certain(q.g0);
-  // f4 = det P < 0 and f0 = det E < 0 always; a source that cannot certify them is not trusted further.
-  if (!f4 || !f0 || !disc || *f4 >= 0 || *f0 >= 0 || *disc == 0) return DiscriminantCase::Undecided;
-  // Disc < 0: exactly one non-real pair (f has >= 2 negative roots, so never four non-real ones);
-  // the two real roots are the (distinct) negative ones.
-  if (*disc < 0) return DiscriminantCase::NonRealPair;
-  // Disc > 0: four distinct real roots, and Descartes' rule is exact: #positive = V.
-  int s[5] = {*f4, 0, 0, 0, *f0};
-  bool all_certain = true, some_positive = false;
-  for (int i = 1; i <= 3; ++i) {
-    const auto si = certain(q.f[4 - i]);
-    if (!si) {
-      all_certain = false;
-      continue;
-    }
-    s[i] = *si;
-    some_positive = some_positive || *si > 0;
-  }
-  if (all_certain) {
-    const int v = detail::variations(s, 5);
-    if (v == 0) return DiscriminantCase::AllNegative;
-    if (v == 2) return DiscriminantCase::TwoPositive;
-    return DiscriminantCase::Undecided;  // V = 4 is impossible (>= 2 negative roots): never trust it
-  }
-  // A certain positive f_i between f4 < 0 and f0 < 0 gives V >= 2, and V <= 2 always.
-  return some_positive ? DiscriminantCase::TwoPositive : DiscriminantCase::Undecided;
-}
-
-bool discriminant_case_needs_rho(DiscriminantCase c) {
-  return c == DiscriminantCase::NonRealPair || c == DiscriminantCase::AllNegative;
-}
-
 namespace {
 
 std::optional<Verdict> verdict_of_case(DiscriminantCase c, int rho_vs_one) {
@@ -226,7 +192,7 @@ ExteriorTracker::ExteriorTracker(const Paraboloid& p, const Ellipsoid& body) : p
 std::optional<int> ExteriorTracker::frame_rho(const Ellipsoid& placed) {
   if (!ratio_ok_ || !rounding_to_nearest()) return std::nullopt;
   // Same shape block M (exactly)? Otherwise s, and with it rho's relation to det E, changed.
-  const auto& d = placed.doubles();
+  const std::optional<DoubleMatrix4> d = placed.doubles();
   SymmetricEntries<RunningBound> x;
   if (d && m_ref_doubles_) {
     for (std::size_t i : kBlock)

@@ -14,20 +14,9 @@ namespace relpos {
 // intervals, exact integers).
 // ------------------------------------------------------------------------------------------------
 
-enum class DiscriminantCase : unsigned char {
-  Undecided,    ///< a needed sign is uncertain, Disc(f) = 0, or f0, f4 not certified negative
-  NonRealPair,  ///< Disc(f) < 0: two distinct negative roots and a non-real pair
-  TwoPositive,  ///< Disc(f) > 0 and V = 2: four distinct real roots, two of them positive
-  AllNegative,  ///< Disc(f) > 0 and V = 0: four distinct negative roots
-};
+// DiscriminantCase and discriminant_case() are in algebra/sturm.hpp (the classifier's fast route
+// reads them too).
 std::string to_string(DiscriminantCase c);
-
-/// The case from the signs of f[0..4] and of Disc(f) (q.g0); q.g2 and q.g1 are not read.
-DiscriminantCase discriminant_case(const QuarticSigns& q);
-
-/// Whether the answer for this case depends on rho (NonRealPair and AllNegative; TwoPositive is E
-/// for any size).
-bool discriminant_case_needs_rho(DiscriminantCase c);
 
 /// classify's verdict for the case (position, rule, contact, root counts, sign of Disc(f)), applied
 /// through classify's own table; rho_vs_one is read only when the case needs it. nullopt when the

@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "algebra/forms.hpp"
 #include "algebra/rounding.hpp"
@@ -262,6 +263,38 @@ void decide_from_facts(const RootFacts& x, int rho_vs_one, Verdict& v) {
   decide(v);
 }
 
+/// The fast route (math.md §8): with Disc(f) != 0 the signs of f's coefficients and of Disc(f) give
+/// every root count (discriminant_case), so the Sturm-Habicht g2 and g1 are not needed; rho is
+/// always compared (the answer reports smallness). The 3 cases x 3 outcomes of rho are generated once
+/// from the one written decision (decide_from_facts). False when the case or rho is uncertain.
+bool decide_from_discriminant(const DecisionSigns& d, Verdict& v) {
+  struct CaseTable {
+    Verdict v[4][3];
+    CaseTable() {
+      for (int c = 1; c < 4; ++c)
+        for (int rho = -1; rho <= 1; ++rho) {
+          const bool two_real = static_cast<DiscriminantCase>(c) == DiscriminantCase::NonRealPair;
+          const bool two_positive = static_cast<DiscriminantCase>(c) == DiscriminantCase::TwoPositive;
+          RootFacts x;
+          x.real = two_real ? 2 : 4;
+          x.positive = two_positive ? 2 : 0;
+          x.negative = x.real - x.positive;
+          x.nonreal = 4 - x.real;
+          x.sign_disc_f = x.sign_disc_ftilde = two_real ? -1 : 1;  // f square-free: f~ = f
+          decide_from_facts(x, rho, v[c][rho + 1]);
+        }
+    }
+  };
+  static const CaseTable table;
+  const DiscriminantCase c = discriminant_case(d.quartic);
+  const auto rho = compare_rho_with_one(d.vertex, d.graeffe);
+  if (c == DiscriminantCase::Undecided || !rho) return false;
+  const Stage stage = v.stage;
+  v = table.v[static_cast<int>(c)][*rho + 1];
+  v.stage = stage;
+  return true;
+}
+
 /// Stage 1b: the static filter left Disc(f) uncertain on exact-double input. If f has rational
 /// multiple roots, exhibit them on machine integers (multiple_roots.hpp): that certifies Disc(f) = 0
 /// and gives every root fact without GMP. rho comes from the static signs, or exactly from the same
@@ -282,7 +315,7 @@ bool decide_from_witness(const DoubleMatrix4& p, const DoubleMatrix4& e, const D
 /// doubles or stored enclosures (scaled by a power of two; rounding towards +inf).
 template <class Q>
 MatrixOf<Interval> interval_entries(const Q& q) {
-  if (q.doubles()) return to_intervals(*q.doubles());
+  if (const std::optional<DoubleMatrix4> d = q.doubles()) return to_intervals(*d);
   if (storage_of(q).enclosure()) return to_intervals(*storage_of(q).enclosure());
   return to_intervals(q.matrix());
 }
@@ -293,8 +326,8 @@ template <class Q>
 detail::EnclosureMatrix4 enclosure_of(const Q& q) {
   if (storage_of(q).enclosure()) return *storage_of(q).enclosure();
   detail::EnclosureMatrix4 out;
-  if (q.doubles()) {
-    out.lo = out.hi = *q.doubles();
+  if (const std::optional<DoubleMatrix4> d = q.doubles()) {
+    out.lo = out.hi = *d;
     return out;
   }
   const Matrix4& m = q.matrix();
@@ -326,18 +359,6 @@ struct ExactData {
   }
   Quadratic<Integer> s_integer() const { return {s[0].to_integer(), s[1].to_integer(), s[2].to_integer()}; }
 };
-
-/// Disc(f) up to the positive factor 27, from the invariants of the quartic f4 x^4 + ... + f0:
-/// 27 Disc(f) = 4 I^3 - J^2 with I = 12 f4 f0 - 3 f3 f1 + f2^2 and
-/// J = 72 f4 f2 f0 + 9 f3 f2 f1 - 27 f4 f1^2 - 27 f0 f3^2 - 2 f2^3: a dozen products where the
-/// expanded Sturm-Habicht g0 (= Disc(f)) takes about eighty.
-template <class NT>
-NT discriminant_times_27(const Quartic<NT>& f) {
-  const NT i = NT(12) * f[4] * f[0] - NT(3) * f[3] * f[1] + f[2] * f[2];
-  const NT j = (NT(72) * f[4] * f[0] - NT(2) * f[2] * f[2]) * f[2] + NT(9) * f[3] * f[2] * f[1] -
-               NT(27) * (f[4] * f[1] * f[1] + f[0] * f[3] * f[3]);
-  return NT(4) * i * i * i - j * j;
-}
 
 /// True when a float stage certified every sign the decision reads except Disc(f)'s: the usual state
 /// near a tangency, where the exact stage then needs that one sign only.
@@ -393,6 +414,8 @@ bool finish(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v
   return decided(v);
 }
 
+bool always_smallness(const QuarticSigns&) { return true; }
+
 /// The whole filter -> exact policy in one place: each stage certifies what it can, the next one
 /// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
 Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact) {
@@ -402,11 +425,25 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
     // The double stages assume round-to-nearest; a caller inside an upward-rounding block (CGAL
     // interval code) gets the interval stage instead.
     const bool nearest = rounding_to_nearest();
-    if (e.doubles() && p.doubles()) {
+    if (storage_of(e).has_doubles() && storage_of(p).has_doubles()) {
       v.stage = Stage::StaticDouble;  // stage 1: doubles with static error bounds
       const bool in_range = storage_of(e).filter_doubles() && storage_of(p).filter_doubles() && nearest;
-      if (in_range)
+      if (in_range) {
+        // The fast route first: f, Disc(f) and smallness only. Anything it leaves open is asked
+        // again of the whole sequence, from the start.
+        std::optional<bool> gap;  // the gap test from the same f and s, when it is the one open question
+        const DecisionSigns fast = static_filter_discriminant_signs_normalized(
+            *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), always_smallness, &gap);
+        if (decide_from_discriminant(fast, v)) {
+          if (gap && needs_gap(v)) {
+            v.roots_above_lambda_s = static_cast<signed char>(*gap);
+            decide(v);
+          }
+          if (finish(e, p, use_filter, v, exact)) return v;
+        }
+        v = Verdict{};
         d = static_filter_signs_normalized(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles());
+      }
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
       if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
         v.stage = Stage::SemiStaticDouble;
@@ -421,10 +458,18 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
       }
     } else if (nearest) {  // stage 1' for other entries: double enclosures (stored, or of the rationals)
       v.stage = Stage::SemiStaticDouble;
-      if (storage_of(p).enclosure() || storage_of(e).enclosure())
-        d = semi_static_filter_signs(enclosure_of(p), enclosure_of(e));
-      else
+      if (storage_of(p).enclosure() || storage_of(e).enclosure()) {
+        const detail::EnclosureMatrix4 ep = enclosure_of(p), ee = enclosure_of(e);
+        // The discriminant route first, as for doubles; then the whole sequence from the start.
+        if (decide_from_discriminant(semi_static_filter_discriminant_signs(ep, ee), v) &&
+            finish(e, p, use_filter, v, exact))
+          return v;
+        v = Verdict{};
+        v.stage = Stage::SemiStaticDouble;
+        d = semi_static_filter_signs(ep, ee);
+      } else {
         d = semi_static_filter_signs(p.matrix(), e.matrix());
+      }
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
     }
     // Stage 2 only while Disc(f) is within reach of intervals: near a multiple root its value sits
@@ -499,18 +544,18 @@ double nearest_double(const Rational& q) {
 ///   f_i = g_i / (lp^i le^(4-i)),  s_i = h_i / (lp^i le^(3-i))   (reported reduced),
 /// and the common-lcm integer forms of the root isolation, S^4 f and S^3 s with S = lcm(lp, le):
 ///   S^4 f_i = g_i (S/lp)^i (S/le)^(4-i),  S^3 s_i = h_i (S/lp)^i (S/le)^(3-i).
-void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h, const Integer& lp, const Integer& le,
-                          Classification& out, Quartic<Integer>& fi, Quadratic<Integer>& si) {
-  const forms::SplitScale sp = forms::split_scale(lp), se = forms::split_scale(le);
-  for (unsigned long i = 0; i < 5; ++i) out.f[i] = forms::divided_by_powers(g[i], {{sp, i}, {se, 4 - i}});
-  for (unsigned long i = 0; i < 3; ++i) out.s[i] = forms::divided_by_powers(h[i], {{sp, i}, {se, 3 - i}});
+void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
+                          const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp,
+                          const Integer& le, Classification& out, Quartic<Integer>& fi, Quadratic<Integer>& si) {
+  for (unsigned long i = 0; i < 5; ++i) out.f[i] = forms::divided_by_powers(g[i].mpz(), {{sp, i}, {se, 4 - i}});
+  for (unsigned long i = 0; i < 3; ++i) out.s[i] = forms::divided_by_powers(h[i].mpz(), {{sp, i}, {se, 3 - i}});
   Integer common, a, b;  // fresh: written through mpz()
   mpz_lcm(common.mpz(), lp.mpz(), le.mpz());
   mpz_divexact(a.mpz(), common.mpz(), lp.mpz());
   mpz_divexact(b.mpz(), common.mpz(), le.mpz());
   if (mpz_popcount(a.mpz()) == 1 && mpz_popcount(b.mpz()) == 1) {  // doubles: S/lp and S/le are powers of 2
     const mp_bitcnt_t ka = mpz_scan1(a.mpz(), 0), kb = mpz_scan1(b.mpz(), 0);
-    auto shifted = [](const Integer& z, mp_bitcnt_t bits) {
+    auto shifted = [](const PooledInteger& z, mp_bitcnt_t bits) {
       Integer r;  // fresh: written through mpz()
       mpz_mul_2exp(r.mpz(), z.mpz(), bits);
       return r;
@@ -522,22 +567,44 @@ void reported_polynomials(const Quartic<Integer>& g, const Quadratic<Integer>& h
   Integer pa[5], pb[5];  // powers of S/lp and S/le
   pa[0] = pb[0] = Integer(1);
   for (std::size_t i = 1; i < 5; ++i) pa[i] = pa[i - 1] * a, pb[i] = pb[i - 1] * b;
-  for (std::size_t i = 0; i < 5; ++i) fi[i] = g[i] * pa[i] * pb[4 - i];
-  for (std::size_t i = 0; i < 3; ++i) si[i] = h[i] * pa[i] * pb[3 - i];
+  auto times = [](const PooledInteger& z, const Integer& x, const Integer& y) {
+    Integer r;  // fresh: written through mpz()
+    mpz_mul(r.mpz(), z.mpz(), x.mpz());
+    mpz_mul(r.mpz(), r.mpz(), y.mpz());
+    return r;
+  };
+  for (std::size_t i = 0; i < 5; ++i) fi[i] = times(g[i], pa[i], pb[4 - i]);
+  for (std::size_t i = 0; i < 3; ++i) si[i] = times(h[i], pa[i], pb[3 - i]);
 }
 
 /// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
 /// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square (from the reduced
 /// f and s, far shorter than the integer forms). lambda_s is computed once here, for rho and for
-/// the certificate.
-void fill_full_evidence(const RootStructure& rs, Classification& out, anysize::LambdaS& ls) {
+/// the certificate, from h: with mu = lambda le / lp, s(lambda) = h(mu) / le^3, so
+/// Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales), rational iff Disc(h) is a
+/// square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2): two short canonicalisations.
+void fill_full_evidence(RootStructure&& rs, const Quadratic<PooledInteger>& h, const forms::SplitScale& sp,
+                        const forms::SplitScale& se, const Integer& lp, const Integer& le, Classification& out,
+                        anysize::LambdaS& ls) {
   out.has_full_evidence = true;
   out.degree_ftilde = rs.degree_ftilde;
-  out.roots = rs.real_roots;
-  ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3));
+  out.roots = std::move(rs.real_roots);
+  Integer disc, t;  // fresh: written through mpz()
+  mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
+  mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
+  mpz_submul_ui(disc.mpz(), t.mpz(), 4);
+  if (h[2].sign() > 0 && mpz_sgn(disc.mpz()) >= 0 && mpz_perfect_square_p(disc.mpz())) {
+    Integer num, den;  // fresh: written through mpz()
+    mpz_sqrt(num.mpz(), disc.mpz());
+    mpz_sub(num.mpz(), num.mpz(), h[1].mpz());
+    mpz_mul_2exp(den.mpz(), h[2].mpz(), 1);
+    ls = anysize::rational_lambda_s(Rational(num, den) * Rational(lp, le));
+  } else {
+    ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3), forms::divided_by_powers(disc, {{sp, 2}, {se, 4}}));
+  }
   const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
   if (ls.rational()) {
-    out.rho = k / (ls.value.a * ls.value.a);
+    out.rho = k * forms::inverse_square(ls.value.a);  // lambda_s < 0
     out.rho_approx = nearest_double(*out.rho);
   } else {
     const double s2 = CGAL::to_double(out.s[2]), s1 = CGAL::to_double(out.s[1]), s0 = CGAL::to_double(out.s[0]);
@@ -552,31 +619,47 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   Classification out;
   out.verdict = v;
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E), from each matrix's own form
+    // The integer forms on pooled integers (the generic formulas without heap traffic for
+    // temporaries): from the doubles when the entries are doubles, without a rational matrix;
+    // else kept as Integers for the certificate's exact signs and points too.
+    std::optional<certificate::IntegerForms> z;
     Integer lp, le;
-    // From the doubles when the entries are doubles: no rational matrix is built for the evidence.
-    const MatrixOf<Integer> pz =
-        p.doubles() ? forms::integer_form(*p.doubles(), lp) : forms::integer_form(p.matrix(), lp);
-    const MatrixOf<Integer> ez =
-        e.doubles() ? forms::integer_form(*e.doubles(), le) : forms::integer_form(e.matrix(), le);
-    MatrixOf<PooledInteger> pp, ep;  // the generic formulas without heap traffic for temporaries
-    for (std::size_t i = 0; i < 16; ++i) {
-      pp.a[i] = PooledInteger(pz.a[i]);
-      ep.a[i] = PooledInteger(ez.a[i]);
+    const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();  // copies: read once
+    MatrixOf<PooledInteger> pp, ep;
+    auto pooled = [](const DoubleMatrix4& d, MatrixOf<PooledInteger>& m, Integer& l) {
+      std::array<mpz_ptr, 16> to;
+      for (std::size_t i = 0; i < 16; ++i) to[i] = m.a[i].mpz();
+      forms::integer_form(d, to, l);
+    };
+    if (pd && ed) {
+      pooled(*pd, pp, lp);
+      pooled(*ed, ep, le);
+    } else {
+      z.emplace();
+      z->pz = pd ? forms::integer_form(*pd, z->lp) : forms::integer_form(p.matrix(), z->lp);
+      z->ez = ed ? forms::integer_form(*ed, z->le) : forms::integer_form(e.matrix(), z->le);
+      lp = z->lp;
+      le = z->le;
+      for (std::size_t i = 0; i < 16; ++i) {
+        pp.a[i] = PooledInteger(z->pz.a[i]);
+        ep.a[i] = PooledInteger(z->ez.a[i]);
+      }
     }
-    const Quartic<PooledInteger> gp = characteristic_polynomial<PooledInteger>(pp, ep);
-    const Quadratic<PooledInteger> hp = special_polynomial<PooledInteger>(pp, ep);
-    const Quartic<Integer> g{gp[0].to_integer(), gp[1].to_integer(), gp[2].to_integer(), gp[3].to_integer(),
-                             gp[4].to_integer()};
-    const Quadratic<Integer> h{hp[0].to_integer(), hp[1].to_integer(), hp[2].to_integer()};
+    const Quartic<PooledInteger> g = characteristic_polynomial<PooledInteger>(pp, ep);
+    const Quadratic<PooledInteger> h = special_polynomial<PooledInteger>(pp, ep);
+    // Each scale's rest kept as its denominators' factors: every gcd of the reduction is short.
+    const forms::SplitScale sp = pd ? forms::split_scale(lp) : forms::split_scale(lp, p.matrix());
+    const forms::SplitScale se = ed ? forms::split_scale(le) : forms::split_scale(le, e.matrix());
     Quartic<Integer> f;
     Quadratic<Integer> s;
-    reported_polynomials(g, h, lp, le, out, f, s);
+    reported_polynomials(g, h, sp, se, lp, le, out, f, s);
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
-    const RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
+    RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
-    fill_full_evidence(rs, out, ls);
-    // The certificate reuses f, s, lambda_s and the isolation instead of recomputing them.
-    out.certificate = certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls});
+    fill_full_evidence(std::move(rs), h, sp, se, lp, le, out, ls);
+    // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f.
+    certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f},
+                       out.certificate);
   }
   return out;
 }

@@ -54,6 +54,7 @@ class PooledInteger {
   int sign() const { return mpz_sgn(z_); }
   /// The value, to be written in place (e.g. by forms::to_compact_integers).
   mpz_ptr mpz() { return z_; }
+  mpz_srcptr mpz() const { return z_; }
 
   friend PooledInteger operator+(const PooledInteger& a, const PooledInteger& b) {
     PooledInteger r(Raw{});

@@ -87,6 +87,20 @@ bool evaluate(const View<NT>& p, const View<NT>& e, NT out[kQuantities]) {
   return true;
 }
 
+/// The discriminant route's quantities (static_filter_discriminant_signs_normalized): f0..f4,
+/// 27 Disc(f) from the invariants, vertex, graeffe.
+constexpr int kDiscriminantQuantities = 8;
+template <class NT>
+bool evaluate_discriminant(const View<NT>& p, const View<NT>& e, NT out[kDiscriminantQuantities]) {
+  Quartic<NT> f;
+  Quadratic<NT> s;
+  if (!scaled_pencil(p, e, f, s, kCoeffFloor)) return false;  // 27 Disc(f) has degree 6, as g0
+  const SmallnessQuantities<NT> sq(f, s);
+  const NT q[kDiscriminantQuantities] = {f[0], f[1], f[2], f[3], f[4], discriminant_times_27(f), sq.vertex, sq.graeffe};
+  std::copy(q, q + kDiscriminantQuantities, out);
+  return true;
+}
+
 /// The gap test's quantities (anysize/gap.hpp) in NT, in GapQuantities::flatten order.
 template <class NT>
 bool evaluate_gap(const View<NT>& p, const View<NT>& e, NT out[anysize::kGapSigns]) {
@@ -329,6 +343,19 @@ DecisionSigns enclosed_signs(const M& p, const M& e) {
 }  // namespace
 
 DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e) { return enclosed_signs(p, e); }
+
+DecisionSigns semi_static_filter_discriminant_signs(const detail::EnclosureMatrix4& p,
+                                                    const detail::EnclosureMatrix4& e) {
+  View<RunningBound> vp, ve;
+  RunningBound q[kDiscriminantQuantities];
+  DecisionSigns out;
+  if (!enclosed(p, vp) || !enclosed(e, ve) || !evaluate_discriminant(vp, ve, q)) return out;
+  for (int i = 0; i < 5; ++i) out.quartic.f[i] = usign(q[i].sign());
+  out.quartic.g0 = usign(q[5].sign());  // the sign of 27 Disc(f)
+  out.vertex = usign(q[6].sign());
+  out.graeffe = usign(q[7].sign());
+  return out;
+}
 
 DecisionSigns semi_static_filter_signs(const detail::EnclosureMatrix4& p, const detail::EnclosureMatrix4& e) {
   return enclosed_signs(p, e);

@@ -32,6 +32,12 @@ DecisionSigns semi_static_filter_signs(const Matrix4& p, const Matrix4& e);
 /// The same from stored enclosures (a quadric read from decimal text, io's fast reader).
 DecisionSigns semi_static_filter_signs(const detail::EnclosureMatrix4& p, const detail::EnclosureMatrix4& e);
 
+/// Only what the discriminant route reads (as static_filter_discriminant_signs_normalized, with
+/// smallness): the signs of f's coefficients, of Disc(f) from the invariants, vertex and graeffe,
+/// from stored enclosures; g2 and g1 stay uncertain.
+DecisionSigns semi_static_filter_discriminant_signs(const detail::EnclosureMatrix4& p,
+                                                    const detail::EnclosureMatrix4& e);
+
 /// The gap test of math.md §8 (anysize/gap.hpp) on RunningBoundLanes from power-of-two
 /// normalized matrices: true (a root of f above lambda_s), false, or nullopt when uncertain.
 std::optional<bool> semi_static_roots_above_lambda_s(const DoubleMatrix4& p, const DoubleMatrix4& e);

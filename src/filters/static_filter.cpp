@@ -10,6 +10,7 @@
 
 #include "algebra/forms.hpp"
 #include "algebra/smallness.hpp"
+#include "anysize/gap.hpp"
 
 namespace relpos {
 namespace {
@@ -29,18 +30,28 @@ constexpr double kEps0 = 0x1p-20;
 /// Error-bound constants, derived once from the generic formulas themselves.
 struct Bounds {
   double f[5], s[3];  // absolute errors of f_i, s_i for entries in [-1, 1]
-  double a[8], r[8];  // quantity q: error <= a[q] + r[q] * eps   (q: g2[0..2], g1[0..1], g0, vertex, graeffe)
+  // quantity q: error <= a[q] + r[q] * eps   (q: g2[0..2], g1[0..1], g0, vertex, graeffe, 27 Disc(f),
+  // then the gap test's quantities in GapQuantities::flatten order)
+  double a[19], r[19];
 };
 
-void second_stage(const Sfe& in, double out[8]) {
+/// Index of 27 Disc(f) from the invariants (discriminant_times_27) in Bounds::a and Bounds::r, and of
+/// the first gap quantity.
+constexpr int kDisc27 = 8, kGap = 9, kSecondStage = kGap + anysize::kGapSigns;
+
+void second_stage(const Sfe& in, double out[kSecondStage]) {
   Quartic<Sfe> f;
   Quadratic<Sfe> s;
   for (auto& c : f) c = in;
   for (auto& c : s) c = in;
   SturmHabicht<Sfe> sh(f);
   SmallnessQuantities<Sfe> sq(f, s);
-  const Sfe q[8] = {sh.g2[0], sh.g2[1], sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe};
-  for (int i = 0; i < 8; ++i) out[i] = q[i].error();
+  const Sfe q[9] = {
+      sh.g2[0], sh.g2[1], sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe, discriminant_times_27(f)};
+  for (int i = 0; i < 9; ++i) out[i] = q[i].error();
+  Sfe gap[anysize::kGapSigns];
+  anysize::GapQuantities<Sfe>(f, s).flatten(gap);
+  for (int i = 0; i < anysize::kGapSigns; ++i) out[kGap + i] = gap[i].error();
 }
 
 // noinline: computed once; kept out of the flattened hot functions below (it is large).
@@ -53,10 +64,10 @@ void second_stage(const Sfe& in, double out[8]) {
     const auto s = special_polynomial<Sfe>(one, one);
     for (int i = 0; i < 5; ++i) r.f[i] = f[static_cast<std::size_t>(i)].error();
     for (int i = 0; i < 3; ++i) r.s[i] = s[static_cast<std::size_t>(i)].error();
-    double exact_in[8], noisy_in[8];
+    double exact_in[kSecondStage], noisy_in[kSecondStage];
     second_stage(Sfe(1.0, 0.0, 1), exact_in);
     second_stage(Sfe(1.0, kEps0, 1), noisy_in);
-    for (int i = 0; i < 8; ++i) {
+    for (int i = 0; i < kSecondStage; ++i) {
       r.a[i] = exact_in[i];
       r.r[i] = (noisy_in[i] - exact_in[i]) / kEps0 * (1 + 0x1p-30);  // round the ratio up
     }
@@ -113,26 +124,58 @@ bool scale_into_unit(double* v, double* err, int n) {
 }
 
 /// Scale a matrix so its largest entry is in [1/2, 1); false if an entry would lose bits (subnormal)
-/// or the input is not finite.
-bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
-  double mx = 0;
-  for (double x : in) mx = std::max(mx, std::fabs(x));
-  if (!normal_range(mx)) return false;
+/// or the input is not finite. `exponent`: in = out * 2^exponent; `plain`: no entry of `in` is
+/// subnormal and 2^exponent is normal.
+bool normalize(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool& plain) {
+  // On the bits first (this runs for every quadric made from doubles): for finite doubles, |x|
+  // orders as the integer of x's bits with the sign cleared. The largest gives the scaling; the
+  // smallest non-zero one says whether every product is exact without looking at the products.
+  std::uint64_t mx = 0, mn = ~std::uint64_t{0};
+  for (double x : in) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    b &= 0x7fffffffffffffffULL;
+    mx = b > mx ? b : mx;
+    mn = (b != 0 && b < mn) ? b : mn;
+  }
+  if (mx < 0x0010000000000000ULL || mx >= 0x7ff0000000000000ULL) return false;  // zero, subnormal, inf or NaN
+  const int emax = static_cast<int>(mx >> 52) - 1023;
+  const int k = -emax - 1;
+  exponent = emax + 1;
+  const int lo = static_cast<int>(mn >> 52);  // 0: some entry is subnormal
+  // Common case: every non-zero entry normal, and the smallest stays normal once scaled by 2^k.
+  if (lo >= 1 && lo - 1023 + k >= -1022 && k >= -1022) {
+    const double scale = power_of_two(k);
+    for (std::size_t i = 0; i < 16; ++i) out[i] = in[i] * scale;  // exact
+    plain = exponent <= 1023;
+    return true;
+  }
   // 2^-(e+1) is below the normal range when e = 1023: then scale in two exact steps (an entry that
   // turns subnormal on the way stays below DBL_MIN and is refused below).
-  const int k = -exponent_of(mx) - 1;
   const double pre = k < -1022 ? 0x1p-512 : 1.0;
   const double scale = power_of_two(k < -1022 ? k + 512 : k);  // multiplying by it is exact
+  bool lost = false;
   for (std::size_t i = 0; i < 16; ++i) {
-    out.a[i] = in[i] * pre * scale;
-    if (in[i] != 0 && std::fabs(out.a[i]) < DBL_MIN) return false;
+    out[i] = in[i] * pre * scale;
+    lost = lost || (in[i] != 0 && std::fabs(out[i]) < DBL_MIN);
   }
-  return true;
+  plain = lo >= 1 && exponent <= 1023;  // no entry subnormal, 2^exponent normal
+  return !lost;
+}
+
+bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
+  int exponent;
+  bool plain;
+  return normalize(in, out.a, exponent, plain);
 }
 
 DecisionSigns uncertain() { return DecisionSigns{}; }
 
 }  // namespace
+
+bool detail::normalize_doubles(const DoubleMatrix4& d, DoubleMatrix4& out, int& exponent, bool& plain) {
+  return normalize(d, out, exponent, plain);
+}
 
 std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m) {
   if (!m) return std::nullopt;
@@ -198,12 +241,15 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   return out;
 }
 
-// flatten: inlines the generated Sturm-Habicht code, so that its dead g2 and g1 are dropped.
-[[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(
-    const DoubleMatrix4& pn, const DoubleMatrix4& en, bool (*need_smallness)(const QuarticSigns&)) {
+// flatten: the balancing and scaling helpers inlined (out of line they cost 15 % of decide_position).
+[[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& pn,
+                                                                           const DoubleMatrix4& en,
+                                                                           bool (*need_smallness)(const QuarticSigns&),
+                                                                           std::optional<bool>* gap) {
   // The same pipeline as static_filter_signs_normalized() (f, balancing, scaling into [-1, 1], the
-  // second-stage bound a + r * eps), restricted to f and g0 = Disc(f); s and the smallness quantities
-  // only on demand. Index 5 of the a/r arrays is g0, 6 and 7 are vertex and graeffe. Its balancing and
+  // second-stage bound a + r * eps), restricted to f and Disc(f), the latter from the invariants
+  // (27 Disc(f), about a dozen products); s and the smallness quantities only on demand. Index
+  // kDisc27 of the a/r arrays is 27 Disc(f), 6 and 7 are vertex and graeffe. Its balancing and
   // scaling are written out here rather than shared with the full pipeline: a shared helper measured
   // 5-12 % slower on decide_position (benchmarks/regime_bench).
   const Bounds& b = bounds();
@@ -224,10 +270,8 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   double eps = 0;
   for (int i = 0; i < 5; ++i) eps = std::max(eps, ef[i]);
   if (!(eps <= kEps0)) return out;
-  // The generated sequence is evaluated whole so that g0 is exactly the program its bound was derived
-  // from; inlined (flatten), its dead g2 and g1 are dropped by the optimiser.
-  const SturmHabicht<double> sh(f);
-  out.quartic.g0 = certified(sh.g0[0], b.a[5] + b.r[5] * eps);
+  // The same template as the bound was derived from: the same operations in the same order.
+  out.quartic.g0 = certified(discriminant_times_27(f), b.a[kDisc27] + b.r[kDisc27] * eps);
   if (!need_smallness || !need_smallness(out.quartic)) return out;
   auto s = special_polynomial<double>(p, e);
   double es[3];
@@ -242,6 +286,16 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   SmallnessQuantities<double> sq(f, s);
   out.vertex = certified(sq.vertex, b.a[6] + b.r[6] * eps);
   out.graeffe = certified(sq.graeffe, b.a[7] + b.r[7] * eps);
+  // The gap test, when the signs leave only it open: four distinct negative roots and rho > 1.
+  if (gap && discriminant_case(out.quartic) == DiscriminantCase::AllNegative &&
+      compare_rho_with_one(out.vertex, out.graeffe) == std::optional<int>(1)) {
+    double q[anysize::kGapSigns];
+    anysize::GapQuantities<double>(f, s).flatten(q);
+    std::optional<int> signs[anysize::kGapSigns];
+    for (int i = 0; i < anysize::kGapSigns; ++i)
+      signs[i] = detail::certain(certified(q[i], b.a[kGap + i] + b.r[kGap + i] * eps));
+    *gap = anysize::roots_above_lambda_s(signs);
+  }
   return out;
 }
 

@@ -14,6 +14,8 @@
 // uncertain for the interval and exact stages. Compile with -frounding-math and no FP contraction.
 #pragma once
 
+#include <optional>
+
 #include "algebra/sturm.hpp"
 #include "relpos/quadric.hpp"
 
@@ -27,13 +29,20 @@ DecisionSigns static_filter_signs(const DoubleMatrix4& p, const DoubleMatrix4& e
 /// storage_of(ellipsoid).filter_doubles(): the hot path of classify().
 DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e);
 
-/// Only what the discriminant decision of contact.hpp reads: the signs of f's coefficients and of
-/// Disc(f) (quartic.f and quartic.g0; g2 and g1 stay uncertain -- they are never computed). The
+/// Only what the discriminant decision (discriminant_case, algebra/sturm.hpp) reads: the signs of
+/// f's coefficients and of Disc(f) (quartic.f and quartic.g0, the latter from the invariants; g2 and
+/// g1 stay uncertain -- they are never computed). The
 /// smallness signs (vertex, graeffe) are computed only when `need_smallness` is non-null and returns
 /// true on those signs (the caller's decision says whether its answer depends on rho); otherwise they
-/// stay uncertain. Same input and bounds as static_filter_signs_normalized(): the Disc(f) bound is
-/// that of g0, the smallness bounds those of vertex and graeffe, derived once from the same formulas.
+/// stay uncertain. Same input as static_filter_signs_normalized(); the bounds are derived once from
+/// the same formulas (discriminant_times_27, SmallnessQuantities).
+///
+/// When `gap` is non-null and the signs leave only the gap test of math.md §8 open (Disc(f) > 0, no
+/// sign change: four distinct negative roots; rho > 1), the gap test runs on the same f and s with
+/// bounds derived the same way (anysize/gap.hpp): *gap is set to its answer, or left alone when a
+/// sign it needs is uncertain.
 DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e,
-                                                          bool (*need_smallness)(const QuarticSigns&) = nullptr);
+                                                          bool (*need_smallness)(const QuarticSigns&) = nullptr,
+                                                          std::optional<bool>* gap = nullptr);
 
 }  // namespace relpos

@@ -23,6 +23,13 @@ struct EnclosureMatrix4 {
   DoubleMatrix4 lo{}, hi{};
 };
 
+/// d scaled by the power of two that brings its largest entry into [1/2, 1) (what
+/// power_of_two_normalized returns), written to `out`, with the exponent that gives it back:
+/// d = out * 2^exponent, exactly; `plain` when that is one multiplication per entry (2^exponent
+/// normal, no entry of d subnormal). False (out unspecified) when an entry would become subnormal,
+/// or d is zero or not finite.
+bool normalize_doubles(const DoubleMatrix4& d, DoubleMatrix4& out, int& exponent, bool& plain);
+
 /// Builds the exact matrix of a quadric on first use (for a quadric read from text: the exact
 /// parse of that text, run only when an exact stage or the evidence asks for the rationals).
 class ExactSource {
@@ -35,6 +42,11 @@ class ExactSource {
 /// A quadric made from doubles (from_doubles) builds its rationals only on first use by an exact
 /// stage (thread-safe: a quadric shared by several threads materializes once; copies share it);
 /// so does one made from enclosures and an ExactSource.
+///
+/// Compact on purpose (168 bytes): the hot loop of decide_position reads only the 16 normalized
+/// doubles at the start of the object, so the doubles are stored once, normalized, with the power
+/// of two that gives them back exactly; enclosures and the exact source of a quadric read from text
+/// live out of line.
 class QuadricMatrix {
  public:
   explicit QuadricMatrix(Matrix4 m);
@@ -43,32 +55,29 @@ class QuadricMatrix {
   QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source);
   /// From doubles that are all finite (checked by the caller); no heap allocation.
   explicit QuadricMatrix(const DoubleMatrix4& d);
-  /// The same with d's power_of_two_normalized copy already computed (by the caller's filter).
-  QuadricMatrix(const DoubleMatrix4& d, const std::optional<DoubleMatrix4>& normalized);
+  /// -Q for a quadric made from doubles whose exact matrix is not built yet (a matrix given with
+  /// the other orientation, found by the caller's shape test).
+  void negate_doubles();
   QuadricMatrix(const QuadricMatrix& o)
-      : d_(o.d_), n_(o.n_), enclosure_(o.enclosure_), source_(o.source_), m_(std::atomic_load(&o.m_)) {}
+      : v_(o.v_), exponent_(o.exponent_), flags_(o.flags_), cold_(o.cold_), m_(std::atomic_load(&o.m_)) {}
   /// Moves take the matrix without atomic operations: a quadric being moved is not shared (vectors
   /// of quadrics grow by moves, not by copies).
   QuadricMatrix(QuadricMatrix&& o) noexcept
-      : d_(std::move(o.d_)),
-        n_(std::move(o.n_)),
-        enclosure_(std::move(o.enclosure_)),
-        source_(std::move(o.source_)),
-        m_(std::move(o.m_)) {}
+      : v_(o.v_), exponent_(o.exponent_), flags_(o.flags_), cold_(std::move(o.cold_)), m_(std::move(o.m_)) {}
   QuadricMatrix& operator=(QuadricMatrix&& o) noexcept {
-    d_ = std::move(o.d_);
-    n_ = std::move(o.n_);
-    enclosure_ = std::move(o.enclosure_);
-    source_ = std::move(o.source_);
+    v_ = o.v_;
+    exponent_ = o.exponent_;
+    flags_ = o.flags_;
+    cold_ = std::move(o.cold_);
     m_ = std::move(o.m_);
     return *this;
   }
   QuadricMatrix& operator=(const QuadricMatrix& o) {
     if (this != &o) {
-      d_ = o.d_;
-      n_ = o.n_;
-      enclosure_ = o.enclosure_;
-      source_ = o.source_;
+      v_ = o.v_;
+      exponent_ = o.exponent_;
+      flags_ = o.flags_;
+      cold_ = o.cold_;
       std::atomic_store(&m_, std::atomic_load(&o.m_));
     }
     return *this;
@@ -77,21 +86,33 @@ class QuadricMatrix {
     const Matrix4* m = std::atomic_load(&m_).get();
     return m ? *m : materialize();
   }
-  const std::optional<DoubleMatrix4>& doubles() const { return d_; }
-  /// doubles(), power-of-two normalized once for the static filter (cached: a quadric is usually
-  /// classified against many others).
-  const std::optional<DoubleMatrix4>& filter_doubles() const { return n_; }
-  /// Enclosures of the entries when the quadric was made from them (nullopt otherwise).
-  const std::optional<EnclosureMatrix4>& enclosure() const { return enclosure_; }
+  /// Whether every entry is exactly a double.
+  bool has_doubles() const { return (flags_ & kDoubles) != 0; }
+  /// The entries as doubles (nullopt unless has_doubles()), given back exactly from the stored form.
+  std::optional<DoubleMatrix4> doubles() const;
+  /// The doubles, power-of-two normalized once for the static filter (power_of_two_normalized);
+  /// null when there are none or they cannot be normalized without losing bits.
+  const DoubleMatrix4* filter_doubles() const { return (flags_ & kNormalized) ? &v_ : nullptr; }
+  /// Enclosures of the entries when the quadric was made from them (null otherwise).
+  const EnclosureMatrix4* enclosure() const { return cold_ ? &cold_->enclosure : nullptr; }
   /// True when the primitive integer form is known to be within kMaxNormalizedBits without
   /// building it: doubles, or a source whose reader bounds its numbers.
-  bool within_size_limit() const { return d_.has_value() || source_ != nullptr; }
+  bool within_size_limit() const { return has_doubles() || cold_ != nullptr; }
 
  private:
+  static constexpr unsigned char kDoubles = 1, kNormalized = 2, kPlainScale = 4;
+  /// What a quadric read from text keeps besides its enclosures' use in the filters.
+  struct Cold {
+    EnclosureMatrix4 enclosure;
+    std::shared_ptr<const ExactSource> source;
+  };
   const Matrix4& materialize() const;
-  std::optional<DoubleMatrix4> d_, n_;
-  std::optional<EnclosureMatrix4> enclosure_;
-  std::shared_ptr<const ExactSource> source_;
+  /// kNormalized: the normalized doubles, and the doubles are v_ * 2^exponent_; kDoubles alone: the
+  /// doubles themselves (exponent_ 0); neither: unused.
+  DoubleMatrix4 v_{};
+  int exponent_ = 0;
+  unsigned char flags_ = 0;
+  std::shared_ptr<const Cold> cold_;
   mutable std::shared_ptr<const Matrix4> m_;
 };
 
