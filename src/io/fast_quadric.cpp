@@ -17,6 +17,7 @@
 #include <new>
 #include <type_traits>
 
+#include "algebra/forms.hpp"
 #include "algebra/shape_filter.hpp"
 
 namespace relpos::io::detail {
@@ -394,43 +395,19 @@ Rational sphere_constant(const std::array<Exact, 16>& n) {
   return q;
 }
 
-/// 1/a^2 for a decimal a = m 10^e > 0: with m = 2^i 5^j m' (m' prime to 10), 2^(-2e-2i) 5^(-2e-2j) / m'^2,
-/// canonical as written (Paraboloid::standard's entry without a rational division).
-Rational inverse_square(const Exact& a) {
-  std::uint64_t m = a.m;
-  long i = 0, j = 0;
-  for (; m % 2 == 0; m /= 2) ++i;
-  for (; m % 5 == 0; m /= 5) ++j;
-  Rational q;
-  const mpz_ptr num = mpq_numref(q.mpq()), den = mpq_denref(q.mpq());
-  mpz_set_ui(den, m);
-  mpz_mul(den, den, den);
-  const long t2 = -2L * a.e - 2 * i, t5 = -2L * a.e - 2 * j;
-  mpz_ui_pow_ui(num, 5, static_cast<unsigned long>(std::max(t5, 0L)));
-  mpz_mul_2exp(num, num, static_cast<unsigned long>(std::max(t2, 0L)));
-  if (t5 < 0) {
-    mpz_t p;
-    mpz_init(p);
-    mpz_ui_pow_ui(p, 5, static_cast<unsigned long>(-t5));
-    mpz_mul(den, den, p);
-    mpz_clear(p);
-  }
-  if (t2 < 0) mpz_mul_2exp(den, den, static_cast<unsigned long>(-t2));
-  return q;
-}
-
-/// The exact matrix, when first needed: the matrix of the constructor the general reader calls for
-/// the form (Ellipsoid::sphere, Paraboloid::standard), or the matrix with the certified sign
-/// normalization (what from_matrix returns), from the exact values of the numbers. For decimal
-/// numbers the entries of a sphere and of a standard paraboloid with its vertex on the axis are
-/// written directly in canonical form, their denominators being powers of 2 and 5 (and a's and b's
-/// squared mantissas); the rationals are the constructors' (tests/test_fast_reader.cpp).
 /// The symmetric matrix of an upper triangle given row by row (00 01 02 03 11 12 13 22 23 33): each
 /// entry made once and shared with its mirror, no default entries made and replaced.
 Matrix4 symmetric(const std::array<Rational, 10>& u) {
   return Matrix4{{u[0], u[1], u[2], u[3], u[1], u[4], u[5], u[6], u[2], u[5], u[7], u[8], u[3], u[6], u[8], u[9]}};
 }
 
+/// The exact matrix, when first needed: the matrix of the constructor the general reader calls for
+/// the form (Ellipsoid::sphere, Paraboloid::standard), or the matrix with the certified sign
+/// normalization (what from_matrix returns), from the exact values of the numbers. For decimal
+/// numbers the entries of a sphere and of a standard paraboloid with its vertex on the axis are
+/// written directly in canonical form (their denominators are powers of 2 and 5, and the squared
+/// mantissas of a and b in forms::inverse_square); the rationals are the constructors'
+/// (tests/test_fast_reader.cpp).
 class NumberSource final : public relpos::detail::ExactSource {
  public:
   NumberSource(const Recipe& recipe, bool doubles) : recipe_(recipe), doubles_(doubles) {}
@@ -452,8 +429,8 @@ class NumberSource final : public relpos::detail::ExactSource {
       case Recipe::Form::Standard:
         if (doubles_ || n[0].m != 0 || n[1].m != 0)
           return Paraboloid::standard(Vector3{q(0), q(1), q(2)}, q(3), q(4)).matrix();
-        return symmetric(
-            {inverse_square(n[3]), zero, zero, zero, inverse_square(n[4]), zero, zero, zero, Rational(-1, 2), q(2)});
+        return symmetric({forms::inverse_square(q(3)), zero, zero, zero, forms::inverse_square(q(4)), zero, zero, zero,
+                          Rational(-1, 2), q(2)});
       case Recipe::Form::Matrix:
         break;
     }
