@@ -142,9 +142,23 @@ inline void check_numbers(const std::uint8_t* data, std::size_t size) {
 /// The fast reader of batch lines against the general reader on one quadric text: whatever the fast
 /// reader takes, the general reader takes too, with the same exact matrix, inside the stored
 /// enclosures (or equal to the stored doubles).
-template <class Q, class Fast, class General>
-void check_fast_quadric(std::string_view text, bool doubles, Fast fast, General general, const char* role) {
+template <class Q, class Fast, class FastAt, class General>
+void check_fast_quadric(std::string_view text, bool doubles, Fast fast, FastAt fast_at, General general,
+                        const char* role) {
   const std::optional<Q> q = fast(text, doubles);
+  // The same value at the start of a longer text (a batch line's scan): taken alike, with its end
+  // (a text with more after its first value is taken there only up to that value).
+  const std::size_t first = text.find_first_not_of(" \t\n\r"), last = text.find_last_not_of(" \t\n\r");
+  if (first != std::string_view::npos) {
+    const std::string value(text.substr(first, last + 1 - first));
+    std::size_t end = 0;
+    std::optional<Q> at;
+    const bool taken = fast_at(value + ",", doubles, end, at);
+    expect(at.has_value() == taken && (taken || !q) && (!taken || end != value.size() || q),
+           std::string("fast reader: a value inside a line taken otherwise for the ") + role);
+    expect(!q || (taken && end == value.size() && at->matrix() == q->matrix()),
+           std::string("fast reader: another end or matrix inside a line for the ") + role);
+  }
   if (!q) return;
   relpos::io::detail::JsonReadOptions read;
   read.doubles = doubles;
@@ -167,9 +181,11 @@ void check_fast_quadric(std::string_view text, bool doubles, Fast fast, General 
 inline void check_fast_reader(std::string_view text) {
   for (const bool doubles : {false, true}) {
     check_fast_quadric<relpos::Ellipsoid>(text, doubles, relpos::io::detail::fast_ellipsoid,
-                                          relpos::io::ellipsoid_from_json, "ellipsoid");
+                                          relpos::io::detail::fast_ellipsoid_at, relpos::io::ellipsoid_from_json,
+                                          "ellipsoid");
     check_fast_quadric<relpos::Paraboloid>(text, doubles, relpos::io::detail::fast_paraboloid,
-                                           relpos::io::paraboloid_from_json, "paraboloid");
+                                           relpos::io::detail::fast_paraboloid_at, relpos::io::paraboloid_from_json,
+                                           "paraboloid");
   }
 }
 
