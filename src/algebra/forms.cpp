@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "filters/pooled_integer.hpp"
+
 namespace relpos::forms {
 namespace {
 
@@ -274,11 +276,13 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m) {
   return out;
 }
 
-Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors) {
-  Rational out;  // fresh: its mpq is not shared, so it is written in place
-  mpz_ptr num = mpq_numref(out.mpq());
-  mpz_ptr den = mpq_denref(out.mpq());
-  if (mpz_sgn(z) == 0) return out;
+void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors, mpq_ptr out) {
+  mpz_ptr num = mpq_numref(out);
+  mpz_ptr den = mpq_denref(out);
+  if (mpz_sgn(z) == 0) {
+    mpq_set_ui(out, 0, 1);
+    return;
+  }
   unsigned long twos = 0, fives = 0;
   for (const ScalePower& d : divisors) twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
   const unsigned long shift = std::min<unsigned long>(mpz_scan1(z, 0), twos);
@@ -292,9 +296,8 @@ Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divis
   // With rest = prod b_j^(e_j), the b_j pairwise coprime, the same holds base by base: k e_j gcds
   // with b_j take min(v_p(num), k v_p(rest)) of each prime p of b_j. A one-limb base costs a
   // single-limb remainder and a word gcd per step.
-  mpz_t g, common;
-  mpz_init(g);
-  mpz_init(common);
+  PooledInteger g_pooled, common_pooled;  // limbs reused from call to call
+  const mpz_ptr g = g_pooled.mpz(), common = common_pooled.mpz();
   for (const ScalePower& d : divisors) {
     if (d.k == 0 || d.scale.factors.empty()) continue;
     mpz_set_ui(common, 1);
@@ -324,8 +327,11 @@ Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divis
     mpz_divexact(g, d.scale.rest_power[d.k].mpz(), common);
     mpz_mul(den, den, g);
   }
-  mpz_clear(g);
-  mpz_clear(common);
+}
+
+Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors) {
+  Rational out;  // fresh: its mpq is not shared, so it is written in place
+  divided_by_powers(z, divisors, out.mpq());
   return out;
 }
 

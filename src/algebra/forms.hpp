@@ -106,6 +106,8 @@ struct ScalePower {
 /// coefficient of the reported f and s costs a tenth to a sixth of a decimal batch line's full
 /// evidence).
 Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors);
+/// The same written into `out` (e.g. a fresh Rational's unshared mpq): no temporary Rational.
+void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors, mpq_ptr out);
 inline Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors) {
   return divided_by_powers(z.mpz(), divisors);
 }

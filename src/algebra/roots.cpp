@@ -363,6 +363,7 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
     return sign_at_double(h, n, x);
   };
   double prev_hi = -HUGE_VAL;
+  out.reserve(out.size() + count);
   for (std::size_t k = 0; k < count; ++k) {
     const double r = roots[k];
     if (r == 0 || !std::isfinite(r)) return false;
@@ -374,11 +375,10 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
       if (k + 1 < count && !(hi < roots[k + 1])) break;
       const int sl = sign_at(lo), sh = sign_at(hi);
       if (sl != 0 && sh != 0 && sl != sh) {
-        RealRoot root;
+        RealRoot& root = out.emplace_back();  // fresh bounds: written in place
         root.sign = r < 0 ? -1 : 1;
-        root.lower = Rational(lo);
-        root.upper = Rational(hi);
-        out.push_back(std::move(root));
+        mpq_set_d(root.lower.mpq(), lo);
+        mpq_set_d(root.upper.mpq(), hi);
         prev_hi = hi;
         ok = true;
       }
