@@ -178,17 +178,14 @@ unsigned long remove_fives(mpz_ptr x, unsigned long most) {
 SplitScale split_scale(const Integer& scale) {
   SplitScale out;
   out.twos = mpz_scan1(scale.mpz(), 0);
-  Integer rest;  // fresh: written through mpz()
-  mpz_tdiv_q_2exp(rest.mpz(), scale.mpz(), out.twos);
-  out.fives = remove_fives(rest.mpz(), ~0UL);
-  out.rest = rest;
-  if (mpz_cmp_ui(rest.mpz(), 1) == 0) {  // doubles and decimal text: every power is 1 (one shared value)
-    out.rest_power.fill(rest);
-    return out;
-  }
-  out.rest_power[0] = Integer(1);
-  for (std::size_t k = 1; k < out.rest_power.size(); ++k) out.rest_power[k] = out.rest_power[k - 1] * rest;
-  out.factors.push_back({rest, 1});
+  const mpz_ptr rest = out.rest.mpz();  // fresh: written in place
+  mpz_tdiv_q_2exp(rest, scale.mpz(), out.twos);
+  out.fives = remove_fives(rest, ~0UL);
+  if (mpz_cmp_ui(rest, 1) == 0) return out;  // doubles and decimal text: nothing to divide by
+  out.rest_power.reserve(5);
+  out.rest_power.emplace_back(1);
+  for (std::size_t k = 1; k < 5; ++k) out.rest_power.push_back(out.rest_power[k - 1] * out.rest);
+  out.factors.push_back({out.rest, 1});
   return out;
 }
 

@@ -80,8 +80,8 @@ struct SplitScale {
   };
   unsigned long twos = 0, fives = 0;
   Integer rest{1};
-  std::array<Integer, 5> rest_power;  ///< rest^k for k = 0..4
-  std::vector<Factor> factors;        ///< rest = prod base^power, bases pairwise coprime; empty for rest 1
+  std::vector<Integer> rest_power;  ///< rest^k for k = 0..4; empty for rest 1 (doubles, decimal text)
+  std::vector<Factor> factors;      ///< rest = prod base^power, bases pairwise coprime; empty for rest 1
 };
 
 /// Splits a positive integer.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "algebra/forms.hpp"
+#include "filters/pooled_integer.hpp"
 
 namespace relpos::anysize {
 
@@ -187,22 +188,33 @@ LambdaS lambda_s_of(const Poly& s) {
 LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
   if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
   if (disc < 0) throw std::logic_error("s has non-real roots");
-  LambdaS out;
+  LambdaS out;  // fresh d = 0 and value = 0 + 0 sqrt(d): written in place (GMP's canonical results)
   // disc = N / Den in lowest terms: sqrt(disc) = sqrt(N Den) / Den, rational iff N Den is a perfect
   // square.
-  const Integer& n = disc.numerator();
-  const Integer den = disc.denominator();
-  Integer nd = n * den;
-  const Rational two_s2 = 2 * s[2];
-  if (mpz_perfect_square_p(nd.mpz())) {
-    Integer r;
-    mpz_sqrt(r.mpz(), nd.mpz());
-    out.d = 0;
-    out.value = {(-s[1] + Rational(r) / Rational(den)) / two_s2, Rational(0)};
-  } else {
-    out.d = nd;
-    out.value = {-s[1] / two_s2, Rational(1) / (Rational(den) * two_s2)};
+  const mpz_srcptr den = mpq_denref(disc.mpq());
+  const mpq_ptr a = out.value.a.mpq();
+  PooledInteger nd;
+  mpz_mul(nd.mpz(), mpq_numref(disc.mpq()), den);
+  mpq_t two_s2, t;
+  mpq_init(two_s2);
+  mpq_init(t);
+  mpq_mul_2exp(two_s2, s[2].mpq(), 1);
+  if (mpz_perfect_square_p(nd.mpz())) {  // lambda_s = (-s1 + r / Den) / (2 s2)
+    mpz_sqrt(mpq_numref(t), nd.mpz());
+    mpz_set(mpq_denref(t), den);
+    mpq_canonicalize(t);
+    mpq_sub(t, t, s[1].mpq());
+    mpq_div(a, t, two_s2);
+  } else {  // lambda_s = -s1 / (2 s2) + sqrt(N Den) / (Den 2 s2)
+    mpz_set(out.d.mpz(), nd.mpz());
+    mpq_div(a, s[1].mpq(), two_s2);
+    mpq_neg(a, a);
+    mpq_set_z(t, den);
+    mpq_mul(t, t, two_s2);
+    mpq_inv(out.value.b.mpq(), t);
   }
+  mpq_clear(two_s2);
+  mpq_clear(t);
   enclose(out);
   return out;
 }
