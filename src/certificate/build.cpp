@@ -17,6 +17,7 @@
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "anysize/exact.hpp"
+#include "filters/pooled_integer.hpp"
 
 namespace relpos::certificate {
 namespace {
@@ -38,76 +39,59 @@ DoubleMatrix4 to_doubles(const Matrix4& m) {
 
 /// Exact signs of X^T Q X, X = (x, 1), on integers: Q times the positive lcm of its denominators,
 /// x over the lcm D of its coordinates' denominators (D^2 X^T Q X = N^T Qz N, N = (D x, D)). No
-/// rational canonicalisation (gcd) per operation, and the temporaries live in reused mpz_t.
+/// rational canonicalisation (gcd) per operation, and every integer, temporaries included, is a
+/// pooled one (no heap traffic once the thread's pool is warm).
 class IntegerForm {
  public:
   /// From the integer form itself (forms::integer_form), when the caller has it.
   explicit IntegerForm(const forms::MatrixOf<Integer>& z) {
     for (int i = 0; i < 4; ++i)
-      for (int j = i; j < 4; ++j) mpz_init_set(z_[i][j], z(i, j).mpz());
+      for (int j = i; j < 4; ++j) mpz_set(z_[i][j].mpz(), z(i, j).mpz());
     double_off_diagonal();
   }
   /// From a matrix of exact doubles, written straight into the form (no Integer handles).
   explicit IntegerForm(const DoubleMatrix4& d) {
-    mpz_t lower[6];  // the entries below the diagonal, equal to those above
+    PooledInteger lower[6];  // the entries below the diagonal, equal to those above
     std::array<mpz_ptr, 16> out;
     for (int i = 0, k = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        const mpz_ptr x = j >= i ? z_[i][j] : lower[k++];
-        mpz_init(x);
-        out[static_cast<std::size_t>(4 * i + j)] = x;
-      }
+      for (int j = 0; j < 4; ++j) out[static_cast<std::size_t>(4 * i + j)] = (j >= i ? z_[i][j] : lower[k++]).mpz();
     Integer l;
     forms::integer_form(d, out, l);
-    for (auto& x : lower) mpz_clear(x);
     double_off_diagonal();
   }
   IntegerForm(const IntegerForm&) = delete;
   IntegerForm& operator=(const IntegerForm&) = delete;
-  ~IntegerForm() {
-    for (int i = 0; i < 4; ++i)
-      for (int j = i; j < 4; ++j) mpz_clear(z_[i][j]);
-  }
   /// Numerators N = (D x, D) of a point, shared by every form evaluated at it.
   struct Point {
-    mpz_t n[4];
+    PooledInteger n[4];
     explicit Point(const V3& x) {
-      for (auto& v : n) mpz_init(v);
-      mpz_set_ui(n[3], 1);
-      for (int i = 0; i < 3; ++i) forms::fold_lcm(n[3], mpq_denref(x[i].mpq()));
+      mpz_set_ui(n[3].mpz(), 1);
+      for (int i = 0; i < 3; ++i) forms::fold_lcm(n[3].mpz(), mpq_denref(x[i].mpq()));
       for (int i = 0; i < 3; ++i) {
-        mpz_divexact(n[i], n[3], mpq_denref(x[i].mpq()));
-        mpz_mul(n[i], n[i], mpq_numref(x[i].mpq()));
+        mpz_divexact(n[i].mpz(), n[3].mpz(), mpq_denref(x[i].mpq()));
+        mpz_mul(n[i].mpz(), n[i].mpz(), mpq_numref(x[i].mpq()));
       }
     }
     Point(const Point&) = delete;
     Point& operator=(const Point&) = delete;
-    ~Point() {
-      for (auto& v : n) mpz_clear(v);
-    }
   };
   /// sign(X^T Q X): Horner per row, N_i (sum_{j >= i} Qz_ij N_j).
   int sign(const Point& x) const {
-    mpz_t acc, row;
-    mpz_init(acc);
-    mpz_init(row);
+    PooledInteger acc, row;
     for (int i = 0; i < 4; ++i) {
-      mpz_set_ui(row, 0);
-      for (int j = i; j < 4; ++j) mpz_addmul(row, z_[i][j], x.n[j]);
-      mpz_addmul(acc, row, x.n[i]);
+      mpz_set_ui(row.mpz(), 0);
+      for (int j = i; j < 4; ++j) mpz_addmul(row.mpz(), z_[i][j].mpz(), x.n[j].mpz());
+      mpz_addmul(acc.mpz(), row.mpz(), x.n[i].mpz());
     }
-    const int s = mpz_sgn(acc);
-    mpz_clear(acc);
-    mpz_clear(row);
-    return s;
+    return acc.sign();
   }
 
  private:
   void double_off_diagonal() {  // off-diagonal entries appear twice in X^T Q X
     for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) mpz_mul_2exp(z_[i][j], z_[i][j], 1);
+      for (int j = i + 1; j < 4; ++j) mpz_mul_2exp(z_[i][j].mpz(), z_[i][j].mpz(), 1);
   }
-  mpz_t z_[4][4];
+  PooledInteger z_[4][4];  // the upper triangle (j >= i) only
 };
 
 /// A positive multiple of a polynomial over Q with integer coefficients: exact signs at rationals by
@@ -533,9 +517,10 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
 /// exact search when the point itself is beyond doubles.
 using DoubleBracket = std::optional<std::pair<double, double>>;
+template <class Consider>
 void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const LambdaS& lambda_s, const V3& centre,
-                         const std::optional<V3>& inside, const std::optional<V3>& outside,
-                         const std::function<void(const V3&)>& consider, DoubleBracket (&brackets)[2]) {
+                         const std::optional<V3>& inside, const std::optional<V3>& outside, const Consider& consider,
+                         DoubleBracket (&brackets)[2]) {
   double E[4][4], P[4][4];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
@@ -988,7 +973,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
     ez.emplace(pr.forms().ez);
     pz.emplace(pr.forms().pz);
   }
-  std::function<void(const V3&)> consider = [&](const V3& x) {
+  auto consider = [&](const V3& x) {
     const IntegerForm::Point xz(x);
     if (ez->sign(xz) > 0) return;
     const int s = pz->sign(xz);
@@ -1010,7 +995,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
     const V3& at = *ctr;
     consider(at);
     const Rational scale = body_scale(pr.E, pr.e_at(at));
-    const std::function<void(const V3&)> mapped = [&](const V3& u) {
+    auto mapped = [&](const V3& u) {
       V3 x;
       for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
       consider(x);
@@ -1021,10 +1006,11 @@ void crossing_points(const Pair& pr, Certificate& c) {
   // What the double search missed, the exact optimisers give (they always exist in a crossing).
   if (!inside || !outside) {
     const Secular sec(pr);
-    if (!inside && !refine_from_doubles(pr, sec, brackets[0], -1, inside, consider))
-      min_side_point(pr, sec, inside, consider);
-    if (!outside && !refine_from_doubles(pr, sec, brackets[1], 1, outside, consider))
-      max_side_point(pr, sec, outside, consider);
+    const std::function<void(const V3&)> consider_fn = consider;
+    if (!inside && !refine_from_doubles(pr, sec, brackets[0], -1, inside, consider_fn))
+      min_side_point(pr, sec, inside, consider_fn);
+    if (!outside && !refine_from_doubles(pr, sec, brackets[1], 1, outside, consider_fn))
+      max_side_point(pr, sec, outside, consider_fn);
   }
   if (!inside || !outside)
     throw internal_error(std::string("no point of the solid ellipsoid with p ") + (inside ? "> 0" : "< 0") +
