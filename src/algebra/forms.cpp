@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "filters/pooled_integer.hpp"
 
@@ -384,10 +385,14 @@ void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, In
       k[i] = 0;
       continue;
     }
-    int e = 0;
-    const double f = std::frexp(d[i], &e);  // d = f 2^e, 0.5 <= |f| < 1: f 2^53 is an integer
-    m[i] = static_cast<std::int64_t>(std::ldexp(f, 53));
-    k[i] = e - 53;
+    // d = +-(significand) 2^(exponent) from the bits (subnormals: exponent field 0, no hidden bit).
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &d[i], sizeof bits);
+    const auto field = static_cast<long>((bits >> 52) & 0x7ff);
+    const std::uint64_t frac = bits & ((std::uint64_t{1} << 52) - 1);
+    m[i] = static_cast<std::int64_t>(field == 0 ? frac : frac | (std::uint64_t{1} << 52));
+    if (bits >> 63) m[i] = -m[i];
+    k[i] = (field == 0 ? 1 : field) - 1075;
     const int zeros = __builtin_ctzll(static_cast<unsigned long long>(m[i]));  // m != 0
     m[i] /= std::int64_t{1} << zeros;                                          // exact
     k[i] += zeros;

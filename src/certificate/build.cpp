@@ -560,22 +560,26 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
   };
   // `wanted`: the point a search is for (inside or outside); the pulls stop once it is found.
   auto try_point = [&](const double x[3], const std::optional<V3>& wanted) {
+    // Each point a fresh V3 written in place (`consider` may keep it: its values are then shared).
     V3 q;
-    for (int i = 0; i < 3; ++i) q[i] = exact_rational(x[i]);
+    for (int i = 0; i < 3; ++i) mpq_set_d(q[i].mpq(), x[i]);  // exact: x is finite
     consider(q);
     if (wanted) return;
-    V3 diff;
-    for (int i = 0; i < 3; ++i) diff[i] = q[i] - centre[i];
+    mpq_t diff[3], step;  // never shared: reused
+    for (auto& v : diff) mpq_init(v);
+    mpq_init(step);
+    for (int i = 0; i < 3; ++i) mpq_sub(diff[i], q[i].mpq(), centre[i].mpq());
     for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
       V3 y;                             // centre + (1 - 2^-k)(q - centre) = q - 2^-k (q - centre)
       for (int i = 0; i < 3; ++i) {
-        Rational step;
-        mpq_div_2exp(step.mpq(), diff[i].mpq(), static_cast<mp_bitcnt_t>(k));
-        y[i] = q[i] - step;
+        mpq_div_2exp(step, diff[i], static_cast<mp_bitcnt_t>(k));
+        mpq_sub(y[i].mpq(), q[i].mpq(), step);
       }
       consider(y);
-      if (wanted) return;
+      if (wanted) break;
     }
+    for (auto& v : diff) mpq_clear(v);
+    mpq_clear(step);
   };
   // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side (either order on the line). Regula falsi with
   // the Illinois modification (the end that stays has its value halved), bisection when the
@@ -655,7 +659,7 @@ std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
   for (std::size_t i = 0; i < 3; ++i) {
     const double x = d[i + 1] / d[0];
     if (!std::isfinite(x)) return std::nullopt;
-    out[i] = exact_rational(x);
+    mpq_set_d(out[i].mpq(), x);  // exact; a fresh value, written in place
   }
   return out;
 }
