@@ -602,14 +602,32 @@ void fill_full_evidence(RootStructure&& rs, const Quadratic<PooledInteger>& h, c
     ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3),
                               forms::divided_by_powers(disc.mpz(), {{sp, 2}, {se, 4}}));
   }
-  const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
+  // k = (f0 s2) / (f4 s0)
   if (ls.rational()) {
+    const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
     out.rho = k * forms::inverse_square(ls.value.a);  // lambda_s < 0
     out.rho_approx = nearest_double(*out.rho);
   } else {
+    // k only as a double (CGAL::to_double is mpq_get_d: the exact quotient truncated, whatever
+    // fraction represents it), so from the unreduced product of the reduced coefficients: no gcd.
+    mpq_t k;
+    mpq_init(k);
+    const mpz_ptr kn = mpq_numref(k), kd = mpq_denref(k);
+    mpz_mul(kn, mpq_numref(out.f[0].mpq()), mpq_denref(out.f[4].mpq()));
+    mpz_mul(kn, kn, mpq_numref(out.s[2].mpq()));
+    mpz_mul(kn, kn, mpq_denref(out.s[0].mpq()));
+    mpz_mul(kd, mpq_denref(out.f[0].mpq()), mpq_numref(out.f[4].mpq()));
+    mpz_mul(kd, kd, mpq_denref(out.s[2].mpq()));
+    mpz_mul(kd, kd, mpq_numref(out.s[0].mpq()));
+    if (mpz_sgn(kd) < 0) {  // a positive denominator, as mpq_get_d reads it
+      mpz_neg(kn, kn);
+      mpz_neg(kd, kd);
+    }
+    const double k_double = mpq_get_d(k);
+    mpq_clear(k);
     const double s2 = CGAL::to_double(out.s[2]), s1 = CGAL::to_double(out.s[1]), s0 = CGAL::to_double(out.s[0]);
     const double u1 = (2 * s0) / (s1 + std::sqrt(s1 * s1 - 4 * s2 * s0));  // stable smaller root
-    out.rho_approx = CGAL::to_double(k) / (u1 * u1);
+    out.rho_approx = k_double / (u1 * u1);
   }
 }
 
