@@ -135,12 +135,11 @@ double horner(const double* c, int n, double x) {
   return v;
 }
 
-/// A root of c (degree n) in [lo, hi] where c changes sign: Newton steps kept inside the shrinking
-/// bracket, bisection when a step leaves it or does not halve the bracket (safeguarded Newton), until
-/// the bracket or the step is below 2^-50 of the root. A handful of steps instead of the ~70 of
-/// plain bisection; the result is only an approximation, certified afterwards by exact signs.
-double bracketed_root(const double* c, int n, double lo, double hi) {
-  const double flo = horner(c, n, lo);
+/// A root of c (degree n) in [lo, hi] where c changes sign (flo: the value at lo): Newton steps kept inside the
+/// shrinking bracket, bisection when a step leaves it or does not halve the bracket (safeguarded Newton), until the
+/// bracket or the step is below 2^-50 of the root. A handful of steps instead of the ~70 of plain bisection; the result
+/// is only an approximation, certified afterwards by exact signs.
+double bracketed_root(const double* c, int n, double lo, double hi, double flo) {
   double x = lo + (hi - lo) / 2, width = hi - lo;
   for (int it = 0; it < 2100; ++it) {
     double fx = c[n], dfx = 0;  // value and derivative by Horner
@@ -174,7 +173,7 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
     out[0] = -c[0] / c[1];
     return 1;
   }
-  double d[4], inner[4], cuts[6];
+  double d[4] = {}, inner[4], cuts[6];  // d zeroed: GCC cannot see that the first n entries are set
   for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
   const int m = approximate_real_roots(d, n - 1, bound, inner);
   int cut_count = 0;
@@ -183,12 +182,14 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
     if (inner[k] > cuts[cut_count - 1] && inner[k] < bound) cuts[cut_count++] = inner[k];
   cuts[cut_count++] = bound;
   int count = 0;
+  double b = horner(c, n, cuts[0]);
   for (int k = 0; k + 1 < cut_count; ++k) {
-    const double a = horner(c, n, cuts[k]), b = horner(c, n, cuts[k + 1]);
+    const double a = b;  // the value at each cut computed once
+    b = horner(c, n, cuts[k + 1]);
     if (a == 0) {
       if (count == 0 || out[count - 1] != cuts[k]) out[count++] = cuts[k];
     } else if ((a < 0) != (b < 0) && b != 0) {
-      out[count++] = bracketed_root(c, n, cuts[k], cuts[k + 1]);
+      out[count++] = bracketed_root(c, n, cuts[k], cuts[k + 1], a);
     }
   }
   return count;
