@@ -40,6 +40,17 @@ MatrixOf<Interval> to_intervals(const detail::EnclosureMatrix4& m) {
   return out;
 }
 
+std::pair<double, double> tight_interval(const Rational& q) {
+  const mpq_srcptr x = q.mpq();
+  const double t = mpq_get_d(x);
+  if (!(std::fabs(t) >= DBL_MIN && std::fabs(t) < DBL_MAX)) return CGAL::to_interval(q);  // 0, subnormal, huge
+  const mpz_srcptr num = mpq_numref(x), den = mpq_denref(x);
+  if (mpz_scan1(den, 0) + 1 == mpz_sizeinbase(den, 2) && mpz_sizeinbase(num, 2) - mpz_scan1(num, 0) <= 53)
+    return {t, t};
+  const double away = std::nextafter(t, t < 0 ? -HUGE_VAL : HUGE_VAL);
+  return t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
+}
+
 MatrixOf<Interval> to_intervals(const Matrix4& m) {
   std::array<double, 16> v;
   double mx = 0;

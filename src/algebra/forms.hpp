@@ -115,6 +115,11 @@ inline Rational divided_by_power(const Integer& z, const SplitScale& scale, unsi
   return divided_by_powers(z, {{scale, k}});
 }
 
+/// CGAL::to_interval(q), the tightest interval of doubles around q, bit for bit: in the normal
+/// range from mpq_get_d (q truncated towards zero) and the next double away from zero, or the point
+/// when q is a double (a power-of-two denominator and at most 53 significant bits); else CGAL's
+/// (MPFR). Independent of the rounding mode.
+std::pair<double, double> tight_interval(const Rational& q);
 /// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
 /// (guards interval overflow and underflow; a positive scaling of either matrix changes no decision,
 /// math.md §1): a point interval times a power of two encloses the scaled entry even if the

@@ -147,7 +147,7 @@ QuadraticReal LambdaS::at(const Poly& p) const {
 }
 
 int LambdaS::compare(const Rational& q) const {
-  const std::pair<double, double> x = CGAL::to_interval(q);  // certified: decided without rationals
+  const std::pair<double, double> x = forms::tight_interval(q);  // certified: decided without rationals
   if (x.second < lo) return -1;
   if (x.first > hi) return 1;
   return sign({q - value.a, -value.b});
@@ -158,10 +158,13 @@ namespace {
 /// The enclosure of lambda_s = a + b sqrt(d) for compare(): interval arithmetic on certified
 /// enclosures of a, b and d (infinite bounds, hence no filtering, beyond the double range).
 void enclose(LambdaS& out) {
-  CGAL::Protect_FPU_rounding<true> guard;
   using I = CGAL::Interval_nt<false>;
-  const I v = I(CGAL::to_interval(out.value.a)) +
-              (out.d == 0 ? I(0) : I(CGAL::to_interval(out.value.b)) * CGAL::sqrt(I(CGAL::to_interval(out.d))));
+  const std::pair<double, double> a = forms::tight_interval(out.value.a);
+  const bool irrational = out.d != 0;
+  const std::pair<double, double> b = irrational ? forms::tight_interval(out.value.b) : std::make_pair(0.0, 0.0);
+  const std::pair<double, double> d = irrational ? CGAL::to_interval(out.d) : std::make_pair(0.0, 0.0);
+  CGAL::Protect_FPU_rounding<true> guard;
+  const I v = I(a) + (irrational ? I(b) * CGAL::sqrt(I(d)) : I(0));
   if (std::isfinite(v.inf()) && std::isfinite(v.sup())) {
     out.lo = v.inf();
     out.hi = v.sup();
