@@ -44,7 +44,8 @@ DoubleMatrix4 to_doubles(const Matrix4& m) {
 class IntegerForm {
  public:
   /// From the integer form itself (forms::integer_form), when the caller has it.
-  explicit IntegerForm(const forms::MatrixOf<Integer>& z) {
+  template <class Z>
+  explicit IntegerForm(const forms::MatrixOf<Z>& z) {
     for (int i = 0; i < 4; ++i)
       for (int j = i; j < 4; ++j) mpz_set(z_[i][j].mpz(), z(i, j).mpz());
     double_off_diagonal();
@@ -226,6 +227,8 @@ struct Pair {
   LazyMatrix<Ellipsoid> E;
   LazyMatrix<Paraboloid> P;
   LambdaS ls;
+  const forms::MatrixOf<PooledInteger>* ez_of_doubles = nullptr;  ///< Known::ez_of_doubles
+  const forms::MatrixOf<PooledInteger>* pz_of_doubles = nullptr;  ///< Known::pz_of_doubles
   Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known) : E(e), P(p) {
     if (known.f && known.s) {
       known_f_ = known.f;
@@ -238,6 +241,8 @@ struct Pair {
     }
     ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s());
     if (known.forms) forms_ = *known.forms;
+    ez_of_doubles = known.ez_of_doubles;
+    pz_of_doubles = known.pz_of_doubles;
     if (known.f_multiple) f_multiple_.emplace(known.f_multiple->data(), 5);
   }
   /// f and s as polynomials over Q: the caller's, copied on first use (the certificates of E and I
@@ -968,9 +973,13 @@ void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   DoubleBracket brackets[2];
   std::optional<IntegerForm> ez, pz;  // exact signs of e and p at the candidates
-  const std::optional<DoubleMatrix4> ed_own = pr.has_forms() ? std::nullopt : pr.E.own_doubles();
+  const bool known_of_doubles = pr.ez_of_doubles && pr.pz_of_doubles;
+  const std::optional<DoubleMatrix4> ed_own = pr.has_forms() || known_of_doubles ? std::nullopt : pr.E.own_doubles();
   const std::optional<DoubleMatrix4> pd_own = ed_own ? pr.P.own_doubles() : std::nullopt;
-  if (ed_own && pd_own) {  // from the doubles: the integer forms with their scales are not needed
+  if (known_of_doubles) {
+    ez.emplace(*pr.ez_of_doubles);
+    pz.emplace(*pr.pz_of_doubles);
+  } else if (ed_own && pd_own) {  // from the doubles: the integer forms with their scales are not needed
     ez.emplace(*ed_own);
     pz.emplace(*pd_own);
   } else {

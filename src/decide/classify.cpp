@@ -675,9 +675,14 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
     fill_full_evidence(std::move(rs), h, sp, se, lp, le, out, ls);
-    // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f.
-    certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f},
-                       out.certificate);
+    // The certificate reuses f, s, lambda_s, the isolation, the integer forms (from the doubles, or with their scales)
+    // and S^4 f.
+    certificate::Known known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f};
+    if (pd && ed) {
+      known.ez_of_doubles = &ep;
+      known.pz_of_doubles = &pp;
+    }
+    certificate::build(e, p, v.position, known, out.certificate);
   }
   return out;
 }
