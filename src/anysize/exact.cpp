@@ -223,9 +223,8 @@ LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
 }
 
 LambdaS rational_lambda_s(const Rational& value) {
-  LambdaS out;
-  out.d = 0;
-  out.value = {value, Rational(0)};
+  LambdaS out;  // d = 0 and b = 0 as constructed
+  out.value.a = value;
   enclose(out);
   return out;
 }
