@@ -1,5 +1,6 @@
 #include "certificate/build.hpp"
 
+#include <CGAL/Interval_nt.h>
 #include <flint/fmpz_poly.h>
 #include <gmp.h>
 
@@ -968,37 +969,78 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
   return power_of_two((log2_of(-e_at_centre) - least) / 2);
 }
 
+/// Tight enclosures of a point's coordinates (forms::tight_interval); nullopt beyond the double range.
+using Enclosure3 = std::array<std::pair<double, double>, 3>;
+std::optional<Enclosure3> enclosure(const V3& x) {
+  Enclosure3 out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    out[i] = forms::tight_interval(x[i]);
+    if (!std::isfinite(out[i].first) || !std::isfinite(out[i].second)) return std::nullopt;
+  }
+  return out;
+}
+
+/// sign(X^T Q X), X = (x, 1), for a matrix of exact doubles and x in the enclosure, when interval
+/// arithmetic decides it; 0 when it does not (an enclosure containing 0, overflow or NaN).
+int interval_sign(const DoubleMatrix4& q, const Enclosure3& x) {
+  using I = CGAL::Interval_nt<false>;
+  CGAL::Protect_FPU_rounding<true> guard;
+  I acc(q[15]);
+  for (std::size_t i = 0; i < 3; ++i) {
+    I row = I(q[4 * i + 3]) * 2;  // off-diagonal entries appear twice
+    for (std::size_t j = 0; j < 3; ++j) row += I(q[4 * i + j]) * I(x[j]);
+    acc += row * I(x[i]);
+  }
+  if (acc.inf() > 0) return 1;
+  if (acc.sup() < 0) return -1;
+  return 0;
+}
+
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   DoubleBracket brackets[2];
   std::optional<IntegerForm> ez, pz;  // exact signs of e and p at the candidates
-  const bool known_of_doubles = pr.ez_of_doubles && pr.pz_of_doubles;
-  const std::optional<DoubleMatrix4> ed_own = pr.has_forms() || known_of_doubles ? std::nullopt : pr.E.own_doubles();
+  const std::optional<DoubleMatrix4> ed_own = pr.E.own_doubles();
   const std::optional<DoubleMatrix4> pd_own = ed_own ? pr.P.own_doubles() : std::nullopt;
-  if (known_of_doubles) {
+  if (pr.ez_of_doubles && pr.pz_of_doubles) {
     ez.emplace(*pr.ez_of_doubles);
     pz.emplace(*pr.pz_of_doubles);
-  } else if (ed_own && pd_own) {  // from the doubles: the integer forms with their scales are not needed
+  } else if (ed_own && pd_own && !pr.has_forms()) {  // the integer forms with their scales are not needed
     ez.emplace(*ed_own);
     pz.emplace(*pd_own);
   } else {
     ez.emplace(pr.forms().ez);
     pz.emplace(pr.forms().pz);
   }
+  // The signs in interval arithmetic on the quadrics' exact doubles first (0: undecided, then the
+  // exact sign on integers decides): most candidates are far enough from both surfaces.
+  auto filtered = [](const std::optional<DoubleMatrix4>& q, const std::optional<Enclosure3>& x) {
+    return q && x ? interval_sign(*q, *x) : 0;
+  };
   auto consider = [&](const V3& x) {
-    const IntegerForm::Point xz(x);
-    if (ez->sign(xz) > 0) return;
-    const int s = pz->sign(xz);
-    if (s < 0 && !inside) inside = x;
-    if (s > 0 && !outside) outside = x;
+    const std::optional<Enclosure3> at = ed_own && pd_own ? enclosure(x) : std::nullopt;
+    const int se = filtered(ed_own, at);
+    if (se > 0) return;
+    int sp = filtered(pd_own, at);
+    if (se == 0 || sp == 0) {
+      const IntegerForm::Point xz(x);
+      if (se == 0 && ez->sign(xz) > 0) return;
+      if (sp == 0) sp = pz->sign(xz);
+    }
+    if (sp < 0 && !inside) inside = x;
+    if (sp > 0 && !outside) outside = x;
   };
   // Candidates are pulled towards a dyadic centre (short exact arithmetic): the centre solved in
   // doubles, taken exactly, when it is strictly inside the solid (almost always); else the exact
   // centre (Cramer's rule on integers, several times dearer).
   const DoubleMatrix4 ed = pr.E.doubles();
   std::optional<V3> pull = approximate_centre(ed);
-  if (pull && ez->sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(ed, *pull)) {
+  auto e_sign = [&](const V3& x) {
+    const int s = filtered(ed_own, ed_own ? enclosure(x) : std::nullopt);
+    return s != 0 ? s : ez->sign(IntegerForm::Point(x));
+  };
+  if (pull && e_sign(*pull) < 0 && !small_for_doubles(ed, *pull)) {
     consider(*pull);
     double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider, brackets);
   } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
