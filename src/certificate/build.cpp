@@ -230,7 +230,8 @@ struct Pair {
   LambdaS ls;
   const forms::MatrixOf<PooledInteger>* ez_of_doubles = nullptr;  ///< Known::ez_of_doubles
   const forms::MatrixOf<PooledInteger>* pz_of_doubles = nullptr;  ///< Known::pz_of_doubles
-  Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known) : E(e), P(p) {
+  Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known)
+      : E(e), P(p), ls(known.f && known.s && known.lambda_s ? *known.lambda_s : LambdaS{}) {
     if (known.f && known.s) {
       known_f_ = known.f;
       known_s_ = known.s;
@@ -240,7 +241,7 @@ struct Pair {
       f_ = anysize::to_poly(fq.data(), 5);
       s_ = anysize::to_poly(sq.data(), 3);
     }
-    ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s());
+    if (!(known.f && known.s && known.lambda_s)) ls = anysize::lambda_s_of(s());
     if (known.forms) forms_ = *known.forms;
     ez_of_doubles = known.ez_of_doubles;
     pz_of_doubles = known.pz_of_doubles;
