@@ -390,7 +390,7 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
 }
 
 /// The coefficients of a FLINT polynomial (degree <= 4) as Integers.
-int integer_coefficients(const fmpz_poly_t p, Integer (&out)[5]) {
+int integer_coefficients(const fmpz_poly_t p, std::array<Integer, 5>& out) {
   const slong n = fmpz_poly_degree(p);
   for (slong i = 0; i <= n; ++i) fmpz_get_mpz(out[i].mpz(), fmpz_poly_get_coeff_ptr(p, i));
   return static_cast<int>(n);
@@ -429,10 +429,10 @@ bool zoomed_real_roots(const Integer* h, int n, std::size_t expected, std::vecto
       fmpz_poly_set_coeff_fmpz(p, i, coeff);
     }
     fmpz_poly_taylor_shift(q, p, shift);
-    Integer qc[5];
+    std::array<Integer, 5> qc;
     integer_coefficients(q, qc);
     std::vector<RealRoot> zs;
-    if (qc[0] == 0 || !certified_real_roots(qc, n, expected, zs)) continue;
+    if (qc[0] == 0 || !certified_real_roots(qc.data(), n, expected, zs)) continue;
     const Rational centre(x), unit(std::ldexp(1.0, e));
     ok = true;
     for (RealRoot& r : zs) {
@@ -478,8 +478,8 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   // out when they are rational: g = gcd(f, s) of degree 1, or 2 with a square discriminant. Each is
   // a simple root of f, and the cofactor h = f / g (= f~ up to a constant) is coprime to s.
   std::vector<RealRoot> common;
-  Integer hc[5];
-  const Integer* hp = fc.data();  // h's coefficients: f's own when f and s are coprime
+  std::optional<std::array<Integer, 5>> hc;  // h's coefficients when a common factor is divided out
+  const Integer* hp = fc.data();             // h's coefficients: f's own when f and s are coprime
   int n = 4, disc_h = disc;
   bool ok = true;
   if (!certainly_coprime(fc, sc)) {
@@ -491,7 +491,7 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
     const slong dg = fmpz_poly_degree(g);
     ok = dg <= 2 && fmpz_poly_divides(h, f().p, g) && fmpz_poly_degree(h) >= 2;
     if (ok && dg >= 1) {
-      Integer gc[5];
+      std::array<Integer, 5> gc;
       integer_coefficients(g, gc);
       auto add = [&](const Rational& x) {
         RealRoot r;
@@ -517,8 +517,8 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
       fmpz_poly_discriminant(z, h);
       disc_h = fmpz_sgn(z);
       ok = ok && disc_h != 0 && certainly_no_rational_root(h);  // f(0) != 0: no root of g is 0
-      n = integer_coefficients(h, hc);
-      hp = hc;
+      n = integer_coefficients(h, hc.emplace());
+      hp = hc->data();
     } else if (ok) {  // gcd 1 after all
       ok = no_root_modulo_small_primes(fc) || certainly_no_rational_root(f().p);
     }
@@ -551,7 +551,7 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
 }
 
 RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc, int sign_disc_f) {
-  if (auto fast = simple_root_structure(fc, sc, sign_disc_f)) return *fast;
+  if (auto fast = simple_root_structure(fc, sc, sign_disc_f)) return std::move(*fast);
   const Poly f = make_poly(fc), s = make_poly(sc);
   const Poly g = CGAL::gcd(f, s);
   const Poly ft = CGAL::integral_division_up_to_constant_factor(f, g);
