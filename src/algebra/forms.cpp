@@ -8,8 +8,6 @@
 #include <cstdint>
 #include <cstring>
 
-#include "filters/pooled_integer.hpp"
-
 namespace relpos::forms {
 namespace {
 
@@ -305,8 +303,9 @@ void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors,
   // With rest = prod b_j^(e_j), the b_j pairwise coprime, the same holds base by base: k e_j gcds
   // with b_j take min(v_p(num), k v_p(rest)) of each prime p of b_j. A one-limb base costs a
   // single-limb remainder and a word gcd per step.
-  PooledInteger g_pooled, common_pooled;  // limbs reused from call to call
-  const mpz_ptr g = g_pooled.mpz(), common = common_pooled.mpz();
+  mpz_t g, common;
+  mpz_init(g);
+  mpz_init(common);
   for (const ScalePower& d : divisors) {
     if (d.k == 0 || d.scale.factors.empty()) continue;
     mpz_set_ui(common, 1);
@@ -336,6 +335,8 @@ void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors,
     mpz_divexact(g, d.scale.rest_power[d.k].mpz(), common);
     mpz_mul(den, den, g);
   }
+  mpz_clear(g);
+  mpz_clear(common);
 }
 
 Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors) {

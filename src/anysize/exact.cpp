@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "algebra/forms.hpp"
-#include "filters/pooled_integer.hpp"
 
 namespace relpos::anysize {
 
@@ -196,26 +195,28 @@ LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
   // square.
   const mpz_srcptr den = mpq_denref(disc.mpq());
   const mpq_ptr a = out.value.a.mpq();
-  PooledInteger nd;
-  mpz_mul(nd.mpz(), mpq_numref(disc.mpq()), den);
+  mpz_t nd;
+  mpz_init(nd);
+  mpz_mul(nd, mpq_numref(disc.mpq()), den);
   mpq_t two_s2, t;
   mpq_init(two_s2);
   mpq_init(t);
   mpq_mul_2exp(two_s2, s[2].mpq(), 1);
-  if (mpz_perfect_square_p(nd.mpz())) {  // lambda_s = (-s1 + r / Den) / (2 s2)
-    mpz_sqrt(mpq_numref(t), nd.mpz());
+  if (mpz_perfect_square_p(nd)) {  // lambda_s = (-s1 + r / Den) / (2 s2)
+    mpz_sqrt(mpq_numref(t), nd);
     mpz_set(mpq_denref(t), den);
     mpq_canonicalize(t);
     mpq_sub(t, t, s[1].mpq());
     mpq_div(a, t, two_s2);
   } else {  // lambda_s = -s1 / (2 s2) + sqrt(N Den) / (Den 2 s2)
-    mpz_set(out.d.mpz(), nd.mpz());
+    mpz_set(out.d.mpz(), nd);
     mpq_div(a, s[1].mpq(), two_s2);
     mpq_neg(a, a);
     mpq_set_z(t, den);
     mpq_mul(t, t, two_s2);
     mpq_inv(out.value.b.mpq(), t);
   }
+  mpz_clear(nd);
   mpq_clear(two_s2);
   mpq_clear(t);
   enclose(out);
