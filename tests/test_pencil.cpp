@@ -635,6 +635,35 @@ TEST_CASE("rational_inside, fewest bits: the first dyadic floor(mid 2^b) / 2^b a
   }
 }
 
+TEST_CASE("tight_interval equals CGAL::to_interval bit for bit", "[forms]") {
+  // Doubles (exact: a point), dyadics with more than 53 bits, general rationals, subnormal and
+  // huge values (CGAL's own path), of either sign.
+  rt::Rng g(314);
+  std::mt19937_64 bits(15);
+  for (int trial = 0; trial < 20000; ++trial) {
+    Rational q;
+    const double d =
+        std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits), static_cast<int>(g.uniform(-1100, 1100)));
+    switch (trial % 4) {
+      case 0:
+        q = Rational(std::isfinite(d) ? d : 1.0);
+        break;
+      case 1:
+        q = Rational(std::isfinite(d) ? d : 1.0) + Rational(Integer(1), Integer(1) << 200);
+        break;
+      case 2:
+        q = Rational(Integer(g.uniform(-(1L << 60), 1L << 60)), Integer(g.uniform(1, 1L << 60)));
+        break;
+      default:
+        q = Rational(Integer(g.uniform(1, 1000)), Integer(3)) * Rational(std::isfinite(d) && d != 0 ? d : 1.0);
+    }
+    CAPTURE(relpos::to_string(q));
+    const std::pair<double, double> got = relpos::forms::tight_interval(q), want = CGAL::to_interval(q);
+    CHECK(got.first == want.first);
+    CHECK(got.second == want.second);
+  }
+}
+
 TEST_CASE("integer_form of doubles equals integer_form of their exact rationals", "[forms]") {
   rt::Rng g(99);
   std::mt19937_64 bits(5);

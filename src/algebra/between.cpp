@@ -19,23 +19,36 @@ long two_exponent(mpz_srcptr d) {
 /// and mid itself from b = K on. The test scaled / 2^b < hi always holds (scaled / 2^b <= mid).
 Rational fewest_bits_dyadic(const Rational& lo, const Rational& hi, long kl, long kh) {
   const long k = std::max(kl, kh) + 1;
-  Integer m, l, t;  // fresh: written through mpz()
-  mpz_mul_2exp(m.mpz(), mpq_numref(lo.mpq()), static_cast<mp_bitcnt_t>(k - 1 - kl));
-  mpz_mul_2exp(t.mpz(), mpq_numref(hi.mpq()), static_cast<mp_bitcnt_t>(k - 1 - kh));
-  mpz_add(m.mpz(), m.mpz(), t.mpz());
-  mpz_mul_2exp(l.mpz(), mpq_numref(lo.mpq()), static_cast<mp_bitcnt_t>(k - kl));
+  mpz_t m, l, t;  // M = mid 2^k, L = lo 2^k and a temporary
+  mpz_init(m);
+  mpz_init(l);
+  mpz_init(t);
+  mpz_mul_2exp(m, mpq_numref(lo.mpq()), static_cast<mp_bitcnt_t>(k - 1 - kl));
+  mpz_mul_2exp(t, mpq_numref(hi.mpq()), static_cast<mp_bitcnt_t>(k - 1 - kh));
+  mpz_add(m, m, t);
+  mpz_mul_2exp(l, mpq_numref(lo.mpq()), static_cast<mp_bitcnt_t>(k - kl));
   Rational out;  // fresh: written in place, then reduced by its common power of two
   mpz_ptr num = mpq_numref(out.mpq()), den = mpq_denref(out.mpq());
+  // The fewest bits b (a multiple of 4) with lo < floor(mid 2^b) / 2^b, i.e. L < floor(M / 2^s) 2^s
+  // for s = k - b. As M > L, that holds iff floor(M / 2^s) != floor(L / 2^s) (two's complement
+  // shifts), iff s <= h, the highest bit where M and L differ (any s when their signs differ).
   long bits = 0;
-  for (; bits <= 2048 && bits < k; bits += 4) {
-    mpz_fdiv_q_2exp(num, m.mpz(), static_cast<mp_bitcnt_t>(k - bits));
-    mpz_mul_2exp(t.mpz(), num, static_cast<mp_bitcnt_t>(k - bits));
-    if (mpz_cmp(l.mpz(), t.mpz()) < 0) break;
+  if (mpz_sgn(m) >= 0 && mpz_sgn(l) < 0) {
+    bits = 0;
+  } else {
+    mpz_xor(t, m, l);  // M != L with equal signs: t > 0
+    const long h = static_cast<long>(mpz_sizeinbase(t, 2)) - 1;
+    bits = std::max(0L, (k - h + 3) / 4 * 4);
   }
   if (bits > 2048 || bits >= k) {  // mid
-    mpz_set(num, m.mpz());
+    mpz_set(num, m);
     bits = k;
+  } else {
+    mpz_fdiv_q_2exp(num, m, static_cast<mp_bitcnt_t>(k - bits));
   }
+  mpz_clear(m);
+  mpz_clear(l);
+  mpz_clear(t);
   if (mpz_sgn(num) == 0) return out;  // 0/1
   const long shift = std::min<long>(static_cast<long>(mpz_scan1(num, 0)), bits);
   mpz_tdiv_q_2exp(num, num, static_cast<mp_bitcnt_t>(shift));

@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace relpos::forms {
 namespace {
@@ -35,6 +36,17 @@ MatrixOf<Interval> to_intervals(const detail::EnclosureMatrix4& m) {
   MatrixOf<Interval> out;
   for (std::size_t i = 0; i < 16; ++i) out.a[i] = Interval(m.lo[i], m.hi[i]) * scale;
   return out;
+}
+
+std::pair<double, double> tight_interval(const Rational& q) {
+  const mpq_srcptr x = q.mpq();
+  const double t = mpq_get_d(x);
+  if (!(std::fabs(t) >= DBL_MIN && std::fabs(t) < DBL_MAX)) return CGAL::to_interval(q);  // 0, subnormal, huge
+  const mpz_srcptr num = mpq_numref(x), den = mpq_denref(x);
+  if (mpz_scan1(den, 0) + 1 == mpz_sizeinbase(den, 2) && mpz_sizeinbase(num, 2) - mpz_scan1(num, 0) <= 53)
+    return {t, t};
+  const double away = std::nextafter(t, t < 0 ? -HUGE_VAL : HUGE_VAL);
+  return t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
 }
 
 MatrixOf<Interval> to_intervals(const Matrix4& m) {
@@ -176,17 +188,14 @@ unsigned long remove_fives(mpz_ptr x, unsigned long most) {
 SplitScale split_scale(const Integer& scale) {
   SplitScale out;
   out.twos = mpz_scan1(scale.mpz(), 0);
-  Integer rest;  // fresh: written through mpz()
-  mpz_tdiv_q_2exp(rest.mpz(), scale.mpz(), out.twos);
-  out.fives = remove_fives(rest.mpz(), ~0UL);
-  out.rest = rest;
-  if (mpz_cmp_ui(rest.mpz(), 1) == 0) {  // doubles and decimal text: every power is 1 (one shared value)
-    out.rest_power.fill(rest);
-    return out;
-  }
-  out.rest_power[0] = Integer(1);
-  for (std::size_t k = 1; k < out.rest_power.size(); ++k) out.rest_power[k] = out.rest_power[k - 1] * rest;
-  out.factors.push_back({rest, 1});
+  const mpz_ptr rest = out.rest.mpz();  // fresh: written in place
+  mpz_tdiv_q_2exp(rest, scale.mpz(), out.twos);
+  out.fives = remove_fives(rest, ~0UL);
+  if (mpz_cmp_ui(rest, 1) == 0) return out;  // doubles and decimal text: nothing to divide by
+  out.rest_power.reserve(5);
+  out.rest_power.emplace_back(1);
+  for (std::size_t k = 1; k < 5; ++k) out.rest_power.push_back(out.rest_power[k - 1] * out.rest);
+  out.factors.push_back({out.rest, 1});
   return out;
 }
 
@@ -274,11 +283,13 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m) {
   return out;
 }
 
-Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors) {
-  Rational out;  // fresh: its mpq is not shared, so it is written in place
-  mpz_ptr num = mpq_numref(out.mpq());
-  mpz_ptr den = mpq_denref(out.mpq());
-  if (mpz_sgn(z) == 0) return out;
+void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors, mpq_ptr out) {
+  mpz_ptr num = mpq_numref(out);
+  mpz_ptr den = mpq_denref(out);
+  if (mpz_sgn(z) == 0) {
+    mpq_set_ui(out, 0, 1);
+    return;
+  }
   unsigned long twos = 0, fives = 0;
   for (const ScalePower& d : divisors) twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
   const unsigned long shift = std::min<unsigned long>(mpz_scan1(z, 0), twos);
@@ -326,6 +337,11 @@ Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divis
   }
   mpz_clear(g);
   mpz_clear(common);
+}
+
+Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors) {
+  Rational out;  // fresh: its mpq is not shared, so it is written in place
+  divided_by_powers(z, divisors, out.mpq());
   return out;
 }
 
@@ -381,10 +397,14 @@ void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, In
       k[i] = 0;
       continue;
     }
-    int e = 0;
-    const double f = std::frexp(d[i], &e);  // d = f 2^e, 0.5 <= |f| < 1: f 2^53 is an integer
-    m[i] = static_cast<std::int64_t>(std::ldexp(f, 53));
-    k[i] = e - 53;
+    // d = +-(significand) 2^(exponent) from the bits (subnormals: exponent field 0, no hidden bit).
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &d[i], sizeof bits);
+    const auto field = static_cast<long>((bits >> 52) & 0x7ff);
+    const std::uint64_t frac = bits & ((std::uint64_t{1} << 52) - 1);
+    m[i] = static_cast<std::int64_t>(field == 0 ? frac : frac | (std::uint64_t{1} << 52));
+    if (bits >> 63) m[i] = -m[i];
+    k[i] = (field == 0 ? 1 : field) - 1075;
     const int zeros = __builtin_ctzll(static_cast<unsigned long long>(m[i]));  // m != 0
     m[i] /= std::int64_t{1} << zeros;                                          // exact
     k[i] += zeros;

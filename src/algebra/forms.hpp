@@ -80,8 +80,8 @@ struct SplitScale {
   };
   unsigned long twos = 0, fives = 0;
   Integer rest{1};
-  std::array<Integer, 5> rest_power;  ///< rest^k for k = 0..4
-  std::vector<Factor> factors;        ///< rest = prod base^power, bases pairwise coprime; empty for rest 1
+  std::vector<Integer> rest_power;  ///< rest^k for k = 0..4; empty for rest 1 (doubles, decimal text)
+  std::vector<Factor> factors;      ///< rest = prod base^power, bases pairwise coprime; empty for rest 1
 };
 
 /// Splits a positive integer.
@@ -106,6 +106,8 @@ struct ScalePower {
 /// coefficient of the reported f and s costs a tenth to a sixth of a decimal batch line's full
 /// evidence).
 Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors);
+/// The same written into `out` (e.g. a fresh Rational's unshared mpq): no temporary Rational.
+void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors, mpq_ptr out);
 inline Rational divided_by_powers(const Integer& z, std::initializer_list<ScalePower> divisors) {
   return divided_by_powers(z.mpz(), divisors);
 }
@@ -113,6 +115,11 @@ inline Rational divided_by_power(const Integer& z, const SplitScale& scale, unsi
   return divided_by_powers(z, {{scale, k}});
 }
 
+/// CGAL::to_interval(q), the tightest interval of doubles around q, bit for bit: in the normal
+/// range from mpq_get_d (q truncated towards zero) and the next double away from zero, or the point
+/// when q is a double (a power-of-two denominator and at most 53 significant bits); else CGAL's
+/// (MPFR). Independent of the rounding mode.
+std::pair<double, double> tight_interval(const Rational& q);
 /// Entries of a matrix of exact doubles, scaled by a power of two that brings the largest near 1
 /// (guards interval overflow and underflow; a positive scaling of either matrix changes no decision,
 /// math.md §1): a point interval times a power of two encloses the scaled entry even if the

@@ -135,12 +135,11 @@ double horner(const double* c, int n, double x) {
   return v;
 }
 
-/// A root of c (degree n) in [lo, hi] where c changes sign: Newton steps kept inside the shrinking
-/// bracket, bisection when a step leaves it or does not halve the bracket (safeguarded Newton), until
-/// the bracket or the step is below 2^-50 of the root. A handful of steps instead of the ~70 of
-/// plain bisection; the result is only an approximation, certified afterwards by exact signs.
-double bracketed_root(const double* c, int n, double lo, double hi) {
-  const double flo = horner(c, n, lo);
+/// A root of c (degree n) in [lo, hi] where c changes sign (flo: the value at lo): Newton steps kept inside the
+/// shrinking bracket, bisection when a step leaves it or does not halve the bracket (safeguarded Newton), until the
+/// bracket or the step is below 2^-50 of the root. A handful of steps instead of the ~70 of plain bisection; the result
+/// is only an approximation, certified afterwards by exact signs.
+double bracketed_root(const double* c, int n, double lo, double hi, double flo) {
   double x = lo + (hi - lo) / 2, width = hi - lo;
   for (int it = 0; it < 2100; ++it) {
     double fx = c[n], dfx = 0;  // value and derivative by Horner
@@ -174,7 +173,7 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
     out[0] = -c[0] / c[1];
     return 1;
   }
-  double d[4], inner[4], cuts[6];
+  double d[4] = {}, inner[4], cuts[6];  // d zeroed: GCC cannot see that the first n entries are set
   for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
   const int m = approximate_real_roots(d, n - 1, bound, inner);
   int cut_count = 0;
@@ -183,12 +182,14 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
     if (inner[k] > cuts[cut_count - 1] && inner[k] < bound) cuts[cut_count++] = inner[k];
   cuts[cut_count++] = bound;
   int count = 0;
+  double b = horner(c, n, cuts[0]);
   for (int k = 0; k + 1 < cut_count; ++k) {
-    const double a = horner(c, n, cuts[k]), b = horner(c, n, cuts[k + 1]);
+    const double a = b;  // the value at each cut computed once
+    b = horner(c, n, cuts[k + 1]);
     if (a == 0) {
       if (count == 0 || out[count - 1] != cuts[k]) out[count++] = cuts[k];
     } else if ((a < 0) != (b < 0) && b != 0) {
-      out[count++] = bracketed_root(c, n, cuts[k], cuts[k + 1]);
+      out[count++] = bracketed_root(c, n, cuts[k], cuts[k + 1], a);
     }
   }
   return count;
@@ -363,6 +364,7 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
     return sign_at_double(h, n, x);
   };
   double prev_hi = -HUGE_VAL;
+  out.reserve(out.size() + count);
   for (std::size_t k = 0; k < count; ++k) {
     const double r = roots[k];
     if (r == 0 || !std::isfinite(r)) return false;
@@ -374,11 +376,10 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
       if (k + 1 < count && !(hi < roots[k + 1])) break;
       const int sl = sign_at(lo), sh = sign_at(hi);
       if (sl != 0 && sh != 0 && sl != sh) {
-        RealRoot root;
+        RealRoot& root = out.emplace_back();  // fresh bounds: written in place
         root.sign = r < 0 ? -1 : 1;
-        root.lower = Rational(lo);
-        root.upper = Rational(hi);
-        out.push_back(std::move(root));
+        mpq_set_d(root.lower.mpq(), lo);
+        mpq_set_d(root.upper.mpq(), hi);
         prev_hi = hi;
         ok = true;
       }
@@ -389,7 +390,7 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
 }
 
 /// The coefficients of a FLINT polynomial (degree <= 4) as Integers.
-int integer_coefficients(const fmpz_poly_t p, Integer (&out)[5]) {
+int integer_coefficients(const fmpz_poly_t p, std::array<Integer, 5>& out) {
   const slong n = fmpz_poly_degree(p);
   for (slong i = 0; i <= n; ++i) fmpz_get_mpz(out[i].mpz(), fmpz_poly_get_coeff_ptr(p, i));
   return static_cast<int>(n);
@@ -428,10 +429,10 @@ bool zoomed_real_roots(const Integer* h, int n, std::size_t expected, std::vecto
       fmpz_poly_set_coeff_fmpz(p, i, coeff);
     }
     fmpz_poly_taylor_shift(q, p, shift);
-    Integer qc[5];
+    std::array<Integer, 5> qc;
     integer_coefficients(q, qc);
     std::vector<RealRoot> zs;
-    if (qc[0] == 0 || !certified_real_roots(qc, n, expected, zs)) continue;
+    if (qc[0] == 0 || !certified_real_roots(qc.data(), n, expected, zs)) continue;
     const Rational centre(x), unit(std::ldexp(1.0, e));
     ok = true;
     for (RealRoot& r : zs) {
@@ -477,8 +478,8 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   // out when they are rational: g = gcd(f, s) of degree 1, or 2 with a square discriminant. Each is
   // a simple root of f, and the cofactor h = f / g (= f~ up to a constant) is coprime to s.
   std::vector<RealRoot> common;
-  Integer hc[5];
-  const Integer* hp = fc.data();  // h's coefficients: f's own when f and s are coprime
+  std::optional<std::array<Integer, 5>> hc;  // h's coefficients when a common factor is divided out
+  const Integer* hp = fc.data();             // h's coefficients: f's own when f and s are coprime
   int n = 4, disc_h = disc;
   bool ok = true;
   if (!certainly_coprime(fc, sc)) {
@@ -490,7 +491,7 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
     const slong dg = fmpz_poly_degree(g);
     ok = dg <= 2 && fmpz_poly_divides(h, f().p, g) && fmpz_poly_degree(h) >= 2;
     if (ok && dg >= 1) {
-      Integer gc[5];
+      std::array<Integer, 5> gc;
       integer_coefficients(g, gc);
       auto add = [&](const Rational& x) {
         RealRoot r;
@@ -516,8 +517,8 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
       fmpz_poly_discriminant(z, h);
       disc_h = fmpz_sgn(z);
       ok = ok && disc_h != 0 && certainly_no_rational_root(h);  // f(0) != 0: no root of g is 0
-      n = integer_coefficients(h, hc);
-      hp = hc;
+      n = integer_coefficients(h, hc.emplace());
+      hp = hc->data();
     } else if (ok) {  // gcd 1 after all
       ok = no_root_modulo_small_primes(fc) || certainly_no_rational_root(f().p);
     }
@@ -550,7 +551,7 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
 }
 
 RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<Integer>& sc, int sign_disc_f) {
-  if (auto fast = simple_root_structure(fc, sc, sign_disc_f)) return *fast;
+  if (auto fast = simple_root_structure(fc, sc, sign_disc_f)) return std::move(*fast);
   const Poly f = make_poly(fc), s = make_poly(sc);
   const Poly g = CGAL::gcd(f, s);
   const Poly ft = CGAL::integral_division_up_to_constant_factor(f, g);

@@ -146,7 +146,7 @@ QuadraticReal LambdaS::at(const Poly& p) const {
 }
 
 int LambdaS::compare(const Rational& q) const {
-  const std::pair<double, double> x = CGAL::to_interval(q);  // certified: decided without rationals
+  const std::pair<double, double> x = forms::tight_interval(q);  // certified: decided without rationals
   if (x.second < lo) return -1;
   if (x.first > hi) return 1;
   return sign({q - value.a, -value.b});
@@ -157,10 +157,13 @@ namespace {
 /// The enclosure of lambda_s = a + b sqrt(d) for compare(): interval arithmetic on certified
 /// enclosures of a, b and d (infinite bounds, hence no filtering, beyond the double range).
 void enclose(LambdaS& out) {
-  CGAL::Protect_FPU_rounding<true> guard;
   using I = CGAL::Interval_nt<false>;
-  const I v = I(CGAL::to_interval(out.value.a)) +
-              (out.d == 0 ? I(0) : I(CGAL::to_interval(out.value.b)) * CGAL::sqrt(I(CGAL::to_interval(out.d))));
+  const std::pair<double, double> a = forms::tight_interval(out.value.a);
+  const bool irrational = out.d != 0;
+  const std::pair<double, double> b = irrational ? forms::tight_interval(out.value.b) : std::make_pair(0.0, 0.0);
+  const std::pair<double, double> d = irrational ? CGAL::to_interval(out.d) : std::make_pair(0.0, 0.0);
+  CGAL::Protect_FPU_rounding<true> guard;
+  const I v = I(a) + (irrational ? I(b) * CGAL::sqrt(I(d)) : I(0));
   if (std::isfinite(v.inf()) && std::isfinite(v.sup())) {
     out.lo = v.inf();
     out.hi = v.sup();
@@ -187,30 +190,42 @@ LambdaS lambda_s_of(const Poly& s) {
 LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
   if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
   if (disc < 0) throw std::logic_error("s has non-real roots");
-  LambdaS out;
+  LambdaS out;  // fresh d = 0 and value = 0 + 0 sqrt(d): written in place (GMP's canonical results)
   // disc = N / Den in lowest terms: sqrt(disc) = sqrt(N Den) / Den, rational iff N Den is a perfect
   // square.
-  const Integer& n = disc.numerator();
-  const Integer den = disc.denominator();
-  Integer nd = n * den;
-  const Rational two_s2 = 2 * s[2];
-  if (mpz_perfect_square_p(nd.mpz())) {
-    Integer r;
-    mpz_sqrt(r.mpz(), nd.mpz());
-    out.d = 0;
-    out.value = {(-s[1] + Rational(r) / Rational(den)) / two_s2, Rational(0)};
-  } else {
-    out.d = nd;
-    out.value = {-s[1] / two_s2, Rational(1) / (Rational(den) * two_s2)};
+  const mpz_srcptr den = mpq_denref(disc.mpq());
+  const mpq_ptr a = out.value.a.mpq();
+  mpz_t nd;
+  mpz_init(nd);
+  mpz_mul(nd, mpq_numref(disc.mpq()), den);
+  mpq_t two_s2, t;
+  mpq_init(two_s2);
+  mpq_init(t);
+  mpq_mul_2exp(two_s2, s[2].mpq(), 1);
+  if (mpz_perfect_square_p(nd)) {  // lambda_s = (-s1 + r / Den) / (2 s2)
+    mpz_sqrt(mpq_numref(t), nd);
+    mpz_set(mpq_denref(t), den);
+    mpq_canonicalize(t);
+    mpq_sub(t, t, s[1].mpq());
+    mpq_div(a, t, two_s2);
+  } else {  // lambda_s = -s1 / (2 s2) + sqrt(N Den) / (Den 2 s2)
+    mpz_set(out.d.mpz(), nd);
+    mpq_div(a, s[1].mpq(), two_s2);
+    mpq_neg(a, a);
+    mpq_set_z(t, den);
+    mpq_mul(t, t, two_s2);
+    mpq_inv(out.value.b.mpq(), t);
   }
+  mpz_clear(nd);
+  mpq_clear(two_s2);
+  mpq_clear(t);
   enclose(out);
   return out;
 }
 
 LambdaS rational_lambda_s(const Rational& value) {
-  LambdaS out;
-  out.d = 0;
-  out.value = {value, Rational(0)};
+  LambdaS out;  // d = 0 and b = 0 as constructed
+  out.value.a = value;
   enclose(out);
   return out;
 }

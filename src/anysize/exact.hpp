@@ -84,6 +84,7 @@ AnySizeFacts any_size_facts(const Poly& f, const Poly& s);
 template <class Z>
 Poly to_poly(const Z* c, std::size_t n) {
   Poly p;
+  p.reserve(n);
   for (std::size_t i = 0; i < n; ++i) p.push_back(Rational(c[i]));
   return trimmed(std::move(p));
 }

@@ -1,5 +1,6 @@
 #include "certificate/build.hpp"
 
+#include <CGAL/Interval_nt.h>
 #include <flint/fmpz_poly.h>
 #include <gmp.h>
 
@@ -17,6 +18,7 @@
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "anysize/exact.hpp"
+#include "filters/pooled_integer.hpp"
 
 namespace relpos::certificate {
 namespace {
@@ -38,76 +40,60 @@ DoubleMatrix4 to_doubles(const Matrix4& m) {
 
 /// Exact signs of X^T Q X, X = (x, 1), on integers: Q times the positive lcm of its denominators,
 /// x over the lcm D of its coordinates' denominators (D^2 X^T Q X = N^T Qz N, N = (D x, D)). No
-/// rational canonicalisation (gcd) per operation, and the temporaries live in reused mpz_t.
+/// rational canonicalisation (gcd) per operation, and every integer, temporaries included, is a
+/// pooled one (no heap traffic once the thread's pool is warm).
 class IntegerForm {
  public:
   /// From the integer form itself (forms::integer_form), when the caller has it.
-  explicit IntegerForm(const forms::MatrixOf<Integer>& z) {
+  template <class Z>
+  explicit IntegerForm(const forms::MatrixOf<Z>& z) {
     for (int i = 0; i < 4; ++i)
-      for (int j = i; j < 4; ++j) mpz_init_set(z_[i][j], z(i, j).mpz());
+      for (int j = i; j < 4; ++j) mpz_set(z_[i][j].mpz(), z(i, j).mpz());
     double_off_diagonal();
   }
   /// From a matrix of exact doubles, written straight into the form (no Integer handles).
   explicit IntegerForm(const DoubleMatrix4& d) {
-    mpz_t lower[6];  // the entries below the diagonal, equal to those above
+    PooledInteger lower[6];  // the entries below the diagonal, equal to those above
     std::array<mpz_ptr, 16> out;
     for (int i = 0, k = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        const mpz_ptr x = j >= i ? z_[i][j] : lower[k++];
-        mpz_init(x);
-        out[static_cast<std::size_t>(4 * i + j)] = x;
-      }
+      for (int j = 0; j < 4; ++j) out[static_cast<std::size_t>(4 * i + j)] = (j >= i ? z_[i][j] : lower[k++]).mpz();
     Integer l;
     forms::integer_form(d, out, l);
-    for (auto& x : lower) mpz_clear(x);
     double_off_diagonal();
   }
   IntegerForm(const IntegerForm&) = delete;
   IntegerForm& operator=(const IntegerForm&) = delete;
-  ~IntegerForm() {
-    for (int i = 0; i < 4; ++i)
-      for (int j = i; j < 4; ++j) mpz_clear(z_[i][j]);
-  }
   /// Numerators N = (D x, D) of a point, shared by every form evaluated at it.
   struct Point {
-    mpz_t n[4];
+    PooledInteger n[4];
     explicit Point(const V3& x) {
-      for (auto& v : n) mpz_init(v);
-      mpz_set_ui(n[3], 1);
-      for (int i = 0; i < 3; ++i) forms::fold_lcm(n[3], mpq_denref(x[i].mpq()));
+      mpz_set_ui(n[3].mpz(), 1);
+      for (int i = 0; i < 3; ++i) forms::fold_lcm(n[3].mpz(), mpq_denref(x[i].mpq()));
       for (int i = 0; i < 3; ++i) {
-        mpz_divexact(n[i], n[3], mpq_denref(x[i].mpq()));
-        mpz_mul(n[i], n[i], mpq_numref(x[i].mpq()));
+        mpz_divexact(n[i].mpz(), n[3].mpz(), mpq_denref(x[i].mpq()));
+        mpz_mul(n[i].mpz(), n[i].mpz(), mpq_numref(x[i].mpq()));
       }
     }
     Point(const Point&) = delete;
     Point& operator=(const Point&) = delete;
-    ~Point() {
-      for (auto& v : n) mpz_clear(v);
-    }
   };
   /// sign(X^T Q X): Horner per row, N_i (sum_{j >= i} Qz_ij N_j).
   int sign(const Point& x) const {
-    mpz_t acc, row;
-    mpz_init(acc);
-    mpz_init(row);
+    PooledInteger acc, row;
     for (int i = 0; i < 4; ++i) {
-      mpz_set_ui(row, 0);
-      for (int j = i; j < 4; ++j) mpz_addmul(row, z_[i][j], x.n[j]);
-      mpz_addmul(acc, row, x.n[i]);
+      mpz_set_ui(row.mpz(), 0);
+      for (int j = i; j < 4; ++j) mpz_addmul(row.mpz(), z_[i][j].mpz(), x.n[j].mpz());
+      mpz_addmul(acc.mpz(), row.mpz(), x.n[i].mpz());
     }
-    const int s = mpz_sgn(acc);
-    mpz_clear(acc);
-    mpz_clear(row);
-    return s;
+    return acc.sign();
   }
 
  private:
   void double_off_diagonal() {  // off-diagonal entries appear twice in X^T Q X
     for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) mpz_mul_2exp(z_[i][j], z_[i][j], 1);
+      for (int j = i + 1; j < 4; ++j) mpz_mul_2exp(z_[i][j].mpz(), z_[i][j].mpz(), 1);
   }
-  mpz_t z_[4][4];
+  PooledInteger z_[4][4];  // the upper triangle (j >= i) only
 };
 
 /// A positive multiple of a polynomial over Q with integer coefficients: exact signs at rationals by
@@ -242,7 +228,10 @@ struct Pair {
   LazyMatrix<Ellipsoid> E;
   LazyMatrix<Paraboloid> P;
   LambdaS ls;
-  Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known) : E(e), P(p) {
+  const forms::MatrixOf<PooledInteger>* ez_of_doubles = nullptr;  ///< Known::ez_of_doubles
+  const forms::MatrixOf<PooledInteger>* pz_of_doubles = nullptr;  ///< Known::pz_of_doubles
+  Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known)
+      : E(e), P(p), ls(known.f && known.s && known.lambda_s ? *known.lambda_s : LambdaS{}) {
     if (known.f && known.s) {
       known_f_ = known.f;
       known_s_ = known.s;
@@ -252,8 +241,10 @@ struct Pair {
       f_ = anysize::to_poly(fq.data(), 5);
       s_ = anysize::to_poly(sq.data(), 3);
     }
-    ls = known.f && known.s && known.lambda_s ? *known.lambda_s : anysize::lambda_s_of(s());
+    if (!(known.f && known.s && known.lambda_s)) ls = anysize::lambda_s_of(s());
     if (known.forms) forms_ = *known.forms;
+    ez_of_doubles = known.ez_of_doubles;
+    pz_of_doubles = known.pz_of_doubles;
     if (known.f_multiple) f_multiple_.emplace(known.f_multiple->data(), 5);
   }
   /// f and s as polynomials over Q: the caller's, copied on first use (the certificates of E and I
@@ -533,9 +524,10 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
 /// exact search when the point itself is beyond doubles.
 using DoubleBracket = std::optional<std::pair<double, double>>;
+template <class Consider>
 void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const LambdaS& lambda_s, const V3& centre,
-                         const std::optional<V3>& inside, const std::optional<V3>& outside,
-                         const std::function<void(const V3&)>& consider, DoubleBracket (&brackets)[2]) {
+                         const std::optional<V3>& inside, const std::optional<V3>& outside, const Consider& consider,
+                         DoubleBracket (&brackets)[2]) {
   double E[4][4], P[4][4];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
@@ -575,22 +567,26 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
   };
   // `wanted`: the point a search is for (inside or outside); the pulls stop once it is found.
   auto try_point = [&](const double x[3], const std::optional<V3>& wanted) {
+    // Each point a fresh V3 written in place (`consider` may keep it: its values are then shared).
     V3 q;
-    for (int i = 0; i < 3; ++i) q[i] = exact_rational(x[i]);
+    for (int i = 0; i < 3; ++i) mpq_set_d(q[i].mpq(), x[i]);  // exact: x is finite
     consider(q);
     if (wanted) return;
-    V3 diff;
-    for (int i = 0; i < 3; ++i) diff[i] = q[i] - centre[i];
+    mpq_t diff[3], step;  // never shared: reused
+    for (auto& v : diff) mpq_init(v);
+    mpq_init(step);
+    for (int i = 0; i < 3; ++i) mpq_sub(diff[i], q[i].mpq(), centre[i].mpq());
     for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
       V3 y;                             // centre + (1 - 2^-k)(q - centre) = q - 2^-k (q - centre)
       for (int i = 0; i < 3; ++i) {
-        Rational step;
-        mpq_div_2exp(step.mpq(), diff[i].mpq(), static_cast<mp_bitcnt_t>(k));
-        y[i] = q[i] - step;
+        mpq_div_2exp(step, diff[i], static_cast<mp_bitcnt_t>(k));
+        mpq_sub(y[i].mpq(), q[i].mpq(), step);
       }
       consider(y);
-      if (wanted) return;
+      if (wanted) break;
     }
+    for (auto& v : diff) mpq_clear(v);
+    mpq_clear(step);
   };
   // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side (either order on the line). Regula falsi with
   // the Illinois modification (the end that stays has its value halved), bisection when the
@@ -670,7 +666,7 @@ std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
   for (std::size_t i = 0; i < 3; ++i) {
     const double x = d[i + 1] / d[0];
     if (!std::isfinite(x)) return std::nullopt;
-    out[i] = exact_rational(x);
+    mpq_set_d(out[i].mpq(), x);  // exact; a fresh value, written in place
   }
   return out;
 }
@@ -974,33 +970,78 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
   return power_of_two((log2_of(-e_at_centre) - least) / 2);
 }
 
+/// Tight enclosures of a point's coordinates (forms::tight_interval); nullopt beyond the double range.
+using Enclosure3 = std::array<std::pair<double, double>, 3>;
+std::optional<Enclosure3> enclosure(const V3& x) {
+  Enclosure3 out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    out[i] = forms::tight_interval(x[i]);
+    if (!std::isfinite(out[i].first) || !std::isfinite(out[i].second)) return std::nullopt;
+  }
+  return out;
+}
+
+/// sign(X^T Q X), X = (x, 1), for a matrix of exact doubles and x in the enclosure, when interval
+/// arithmetic decides it; 0 when it does not (an enclosure containing 0, overflow or NaN).
+int interval_sign(const DoubleMatrix4& q, const Enclosure3& x) {
+  using I = CGAL::Interval_nt<false>;
+  CGAL::Protect_FPU_rounding<true> guard;
+  I acc(q[15]);
+  for (std::size_t i = 0; i < 3; ++i) {
+    I row = I(q[4 * i + 3]) * 2;  // off-diagonal entries appear twice
+    for (std::size_t j = 0; j < 3; ++j) row += I(q[4 * i + j]) * I(x[j]);
+    acc += row * I(x[i]);
+  }
+  if (acc.inf() > 0) return 1;
+  if (acc.sup() < 0) return -1;
+  return 0;
+}
+
 /// Two points of the solid ellipsoid with p < 0 and p > 0 (position C).
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   DoubleBracket brackets[2];
   std::optional<IntegerForm> ez, pz;  // exact signs of e and p at the candidates
-  const std::optional<DoubleMatrix4> ed_own = pr.has_forms() ? std::nullopt : pr.E.own_doubles();
+  const std::optional<DoubleMatrix4> ed_own = pr.E.own_doubles();
   const std::optional<DoubleMatrix4> pd_own = ed_own ? pr.P.own_doubles() : std::nullopt;
-  if (ed_own && pd_own) {  // from the doubles: the integer forms with their scales are not needed
+  if (pr.ez_of_doubles && pr.pz_of_doubles) {
+    ez.emplace(*pr.ez_of_doubles);
+    pz.emplace(*pr.pz_of_doubles);
+  } else if (ed_own && pd_own && !pr.has_forms()) {  // the integer forms with their scales are not needed
     ez.emplace(*ed_own);
     pz.emplace(*pd_own);
   } else {
     ez.emplace(pr.forms().ez);
     pz.emplace(pr.forms().pz);
   }
-  std::function<void(const V3&)> consider = [&](const V3& x) {
-    const IntegerForm::Point xz(x);
-    if (ez->sign(xz) > 0) return;
-    const int s = pz->sign(xz);
-    if (s < 0 && !inside) inside = x;
-    if (s > 0 && !outside) outside = x;
+  // The signs in interval arithmetic on the quadrics' exact doubles first (0: undecided, then the
+  // exact sign on integers decides): most candidates are far enough from both surfaces.
+  auto filtered = [](const std::optional<DoubleMatrix4>& q, const std::optional<Enclosure3>& x) {
+    return q && x ? interval_sign(*q, *x) : 0;
+  };
+  auto consider = [&](const V3& x) {
+    const std::optional<Enclosure3> at = ed_own && pd_own ? enclosure(x) : std::nullopt;
+    const int se = filtered(ed_own, at);
+    if (se > 0) return;
+    int sp = filtered(pd_own, at);
+    if (se == 0 || sp == 0) {
+      const IntegerForm::Point xz(x);
+      if (se == 0 && ez->sign(xz) > 0) return;
+      if (sp == 0) sp = pz->sign(xz);
+    }
+    if (sp < 0 && !inside) inside = x;
+    if (sp > 0 && !outside) outside = x;
   };
   // Candidates are pulled towards a dyadic centre (short exact arithmetic): the centre solved in
   // doubles, taken exactly, when it is strictly inside the solid (almost always); else the exact
   // centre (Cramer's rule on integers, several times dearer).
   const DoubleMatrix4 ed = pr.E.doubles();
   std::optional<V3> pull = approximate_centre(ed);
-  if (pull && ez->sign(IntegerForm::Point(*pull)) < 0 && !small_for_doubles(ed, *pull)) {
+  auto e_sign = [&](const V3& x) {
+    const int s = filtered(ed_own, ed_own ? enclosure(x) : std::nullopt);
+    return s != 0 ? s : ez->sign(IntegerForm::Point(x));
+  };
+  if (pull && e_sign(*pull) < 0 && !small_for_doubles(ed, *pull)) {
     consider(*pull);
     double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider, brackets);
   } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
@@ -1010,7 +1051,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
     const V3& at = *ctr;
     consider(at);
     const Rational scale = body_scale(pr.E, pr.e_at(at));
-    const std::function<void(const V3&)> mapped = [&](const V3& u) {
+    auto mapped = [&](const V3& u) {
       V3 x;
       for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
       consider(x);
@@ -1021,10 +1062,11 @@ void crossing_points(const Pair& pr, Certificate& c) {
   // What the double search missed, the exact optimisers give (they always exist in a crossing).
   if (!inside || !outside) {
     const Secular sec(pr);
-    if (!inside && !refine_from_doubles(pr, sec, brackets[0], -1, inside, consider))
-      min_side_point(pr, sec, inside, consider);
-    if (!outside && !refine_from_doubles(pr, sec, brackets[1], 1, outside, consider))
-      max_side_point(pr, sec, outside, consider);
+    const std::function<void(const V3&)> consider_fn = consider;
+    if (!inside && !refine_from_doubles(pr, sec, brackets[0], -1, inside, consider_fn))
+      min_side_point(pr, sec, inside, consider_fn);
+    if (!outside && !refine_from_doubles(pr, sec, brackets[1], 1, outside, consider_fn))
+      max_side_point(pr, sec, outside, consider_fn);
   }
   if (!inside || !outside)
     throw internal_error(std::string("no point of the solid ellipsoid with p ") + (inside ? "> 0" : "< 0") +

@@ -5,6 +5,7 @@
 
 #include "algebra/forms.hpp"
 #include "anysize/exact.hpp"
+#include "filters/pooled_integer.hpp"
 #include "relpos/polynomials.hpp"
 #include "relpos/position.hpp"
 
@@ -31,6 +32,10 @@ struct Known {
   const anysize::LambdaS* lambda_s = nullptr;    ///< lambda_s of *s (set only with f and s)
   const IntegerForms* forms = nullptr;           ///< the integer forms of E and P, with their scales
   const Quartic<Integer>* f_multiple = nullptr;  ///< a positive integer multiple of f, for exact signs
+  /// forms::integer_form of E and P from their doubles (scales dropped: positive multiples), when
+  /// both quadrics have doubles: the exact signs of e and p at candidate points without recomputing.
+  const forms::MatrixOf<PooledInteger>* ez_of_doubles = nullptr;
+  const forms::MatrixOf<PooledInteger>* pz_of_doubles = nullptr;
 };
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known);
 /// The same written into `out`, a default-constructed certificate (a caller's member: one

@@ -547,34 +547,29 @@ double nearest_double(const Rational& q) {
 void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
                           const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp,
                           const Integer& le, Classification& out, Quartic<Integer>& fi, Quadratic<Integer>& si) {
-  for (unsigned long i = 0; i < 5; ++i) out.f[i] = forms::divided_by_powers(g[i].mpz(), {{sp, i}, {se, 4 - i}});
-  for (unsigned long i = 0; i < 3; ++i) out.s[i] = forms::divided_by_powers(h[i].mpz(), {{sp, i}, {se, 3 - i}});
-  Integer common, a, b;  // fresh: written through mpz()
+  // Every Rational and Integer written here is a fresh default one (its value not shared): written
+  // in place, without a temporary handle per coefficient.
+  for (unsigned long i = 0; i < 5; ++i) forms::divided_by_powers(g[i].mpz(), {{sp, i}, {se, 4 - i}}, out.f[i].mpq());
+  for (unsigned long i = 0; i < 3; ++i) forms::divided_by_powers(h[i].mpz(), {{sp, i}, {se, 3 - i}}, out.s[i].mpq());
+  PooledInteger common, a, b;
   mpz_lcm(common.mpz(), lp.mpz(), le.mpz());
   mpz_divexact(a.mpz(), common.mpz(), lp.mpz());
   mpz_divexact(b.mpz(), common.mpz(), le.mpz());
   if (mpz_popcount(a.mpz()) == 1 && mpz_popcount(b.mpz()) == 1) {  // doubles: S/lp and S/le are powers of 2
     const mp_bitcnt_t ka = mpz_scan1(a.mpz(), 0), kb = mpz_scan1(b.mpz(), 0);
-    auto shifted = [](const PooledInteger& z, mp_bitcnt_t bits) {
-      Integer r;  // fresh: written through mpz()
-      mpz_mul_2exp(r.mpz(), z.mpz(), bits);
-      return r;
-    };
-    for (std::size_t i = 0; i < 5; ++i) fi[i] = shifted(g[i], ka * i + kb * (4 - i));
-    for (std::size_t i = 0; i < 3; ++i) si[i] = shifted(h[i], ka * i + kb * (3 - i));
+    for (std::size_t i = 0; i < 5; ++i) mpz_mul_2exp(fi[i].mpz(), g[i].mpz(), ka * i + kb * (4 - i));
+    for (std::size_t i = 0; i < 3; ++i) mpz_mul_2exp(si[i].mpz(), h[i].mpz(), ka * i + kb * (3 - i));
     return;
   }
-  Integer pa[5], pb[5];  // powers of S/lp and S/le
-  pa[0] = pb[0] = Integer(1);
+  PooledInteger pa[5], pb[5];  // powers of S/lp and S/le
+  pa[0] = pb[0] = PooledInteger(1);
   for (std::size_t i = 1; i < 5; ++i) pa[i] = pa[i - 1] * a, pb[i] = pb[i - 1] * b;
-  auto times = [](const PooledInteger& z, const Integer& x, const Integer& y) {
-    Integer r;  // fresh: written through mpz()
+  auto times = [](const PooledInteger& z, const PooledInteger& x, const PooledInteger& y, Integer& r) {
     mpz_mul(r.mpz(), z.mpz(), x.mpz());
     mpz_mul(r.mpz(), r.mpz(), y.mpz());
-    return r;
   };
-  for (std::size_t i = 0; i < 5; ++i) fi[i] = times(g[i], pa[i], pb[4 - i]);
-  for (std::size_t i = 0; i < 3; ++i) si[i] = times(h[i], pa[i], pb[3 - i]);
+  for (std::size_t i = 0; i < 5; ++i) times(g[i], pa[i], pb[4 - i], fi[i]);
+  for (std::size_t i = 0; i < 3; ++i) times(h[i], pa[i], pb[3 - i], si[i]);
 }
 
 /// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
@@ -589,27 +584,50 @@ void fill_full_evidence(RootStructure&& rs, const Quadratic<PooledInteger>& h, c
   out.has_full_evidence = true;
   out.degree_ftilde = rs.degree_ftilde;
   out.roots = std::move(rs.real_roots);
-  Integer disc, t;  // fresh: written through mpz()
+  PooledInteger disc, t;
   mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
   mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
   mpz_submul_ui(disc.mpz(), t.mpz(), 4);
   if (h[2].sign() > 0 && mpz_sgn(disc.mpz()) >= 0 && mpz_perfect_square_p(disc.mpz())) {
-    Integer num, den;  // fresh: written through mpz()
-    mpz_sqrt(num.mpz(), disc.mpz());
-    mpz_sub(num.mpz(), num.mpz(), h[1].mpz());
-    mpz_mul_2exp(den.mpz(), h[2].mpz(), 1);
-    ls = anysize::rational_lambda_s(Rational(num, den) * Rational(lp, le));
+    Rational q, r;  // fresh: written in place; canonicalised by mpq_canonicalize and the product
+    mpz_sqrt(mpq_numref(q.mpq()), disc.mpz());
+    mpz_sub(mpq_numref(q.mpq()), mpq_numref(q.mpq()), h[1].mpz());
+    mpz_mul_2exp(mpq_denref(q.mpq()), h[2].mpz(), 1);
+    mpq_canonicalize(q.mpq());
+    mpz_set(mpq_numref(r.mpq()), lp.mpz());
+    mpz_set(mpq_denref(r.mpq()), le.mpz());
+    mpq_canonicalize(r.mpq());
+    ls = anysize::rational_lambda_s(q * r);
   } else {
-    ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3), forms::divided_by_powers(disc, {{sp, 2}, {se, 4}}));
+    ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3),
+                              forms::divided_by_powers(disc.mpz(), {{sp, 2}, {se, 4}}));
   }
-  const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
+  // k = (f0 s2) / (f4 s0)
   if (ls.rational()) {
+    const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
     out.rho = k * forms::inverse_square(ls.value.a);  // lambda_s < 0
     out.rho_approx = nearest_double(*out.rho);
   } else {
+    // k only as a double (CGAL::to_double is mpq_get_d: the exact quotient truncated, whatever
+    // fraction represents it), so from the unreduced product of the reduced coefficients: no gcd.
+    mpq_t k;
+    mpq_init(k);
+    const mpz_ptr kn = mpq_numref(k), kd = mpq_denref(k);
+    mpz_mul(kn, mpq_numref(out.f[0].mpq()), mpq_denref(out.f[4].mpq()));
+    mpz_mul(kn, kn, mpq_numref(out.s[2].mpq()));
+    mpz_mul(kn, kn, mpq_denref(out.s[0].mpq()));
+    mpz_mul(kd, mpq_denref(out.f[0].mpq()), mpq_numref(out.f[4].mpq()));
+    mpz_mul(kd, kd, mpq_denref(out.s[2].mpq()));
+    mpz_mul(kd, kd, mpq_numref(out.s[0].mpq()));
+    if (mpz_sgn(kd) < 0) {  // a positive denominator, as mpq_get_d reads it
+      mpz_neg(kn, kn);
+      mpz_neg(kd, kd);
+    }
+    const double k_double = mpq_get_d(k);
+    mpq_clear(k);
     const double s2 = CGAL::to_double(out.s[2]), s1 = CGAL::to_double(out.s[1]), s0 = CGAL::to_double(out.s[0]);
     const double u1 = (2 * s0) / (s1 + std::sqrt(s1 * s1 - 4 * s2 * s0));  // stable smaller root
-    out.rho_approx = CGAL::to_double(k) / (u1 * u1);
+    out.rho_approx = k_double / (u1 * u1);
   }
 }
 
@@ -657,9 +675,14 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
     fill_full_evidence(std::move(rs), h, sp, se, lp, le, out, ls);
-    // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f.
-    certificate::build(e, p, v.position, certificate::Known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f},
-                       out.certificate);
+    // The certificate reuses f, s, lambda_s, the isolation, the integer forms (from the doubles, or with their scales)
+    // and S^4 f.
+    certificate::Known known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f};
+    if (pd && ed) {
+      known.ez_of_doubles = &ep;
+      known.pz_of_doubles = &pp;
+    }
+    certificate::build(e, p, v.position, known, out.certificate);
   }
   return out;
 }
