@@ -518,8 +518,8 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
   return Paraboloid(p(0, 0) + p(1, 1) + p(2, 2) > 0 ? p : negated(p));
 }
 
-// The same steps as Ellipsoid::from_doubles with the paraboloid's certifier: one template for both
-// measured 10 % slower on the from-doubles path (benchmarks/regime_bench), so each is written out.
+// The same steps as Ellipsoid::from_doubles with the paraboloid's certifier, written out: a template
+// over both would have to be a friend of both classes for these six lines.
 Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
   if (all_finite(p)) {
     Paraboloid out{detail::QuadricMatrix(p)};  // normalized in place, read by the shape test

@@ -22,6 +22,7 @@
 
 #include "algebra/pencil.hpp"
 #include "algebra/sturm_habicht_quartic.hpp"
+#include "relpos/polynomials.hpp"
 
 namespace relpos {
 
@@ -194,6 +195,28 @@ inline DiscriminantCase discriminant_case(const QuarticSigns& q) {
   }
   // A certain positive f_i between f4 < 0 and f0 < 0 gives V >= 2, and V <= 2 always.
   return some_positive ? DiscriminantCase::TwoPositive : DiscriminantCase::Undecided;
+}
+
+/// The root facts a decided case stands for: f is square-free (Disc(f) != 0), so f~ = f has no
+/// multiple root and Disc(f~) has the sign of Disc(f) (math.md §3). Undecided: no facts (zeros).
+inline RootFacts root_facts_of(DiscriminantCase c) {
+  RootFacts x;
+  x.degree_ftilde = 4;
+  switch (c) {
+    case DiscriminantCase::NonRealPair:
+      x.real = 2, x.negative = 2, x.positive = 0, x.nonreal = 2, x.sign_disc_f = -1;
+      break;
+    case DiscriminantCase::TwoPositive:
+      x.real = 4, x.negative = 2, x.positive = 2, x.nonreal = 0, x.sign_disc_f = 1;
+      break;
+    case DiscriminantCase::AllNegative:
+      x.real = 4, x.negative = 4, x.positive = 0, x.nonreal = 0, x.sign_disc_f = 1;
+      break;
+    case DiscriminantCase::Undecided:
+      break;
+  }
+  x.sign_disc_ftilde = x.sign_disc_f;
+  return x;
 }
 
 /// Whether the answer for this case depends on rho (NonRealPair and AllNegative; TwoPositive is E

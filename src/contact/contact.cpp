@@ -51,25 +51,8 @@ std::string decided_by(Stage s) {
 namespace {
 
 std::optional<Verdict> verdict_of_case(DiscriminantCase c, int rho_vs_one) {
-  // The root facts of the case; f is square-free (Disc != 0), so f~ = f has no multiple root and
-  // Disc(f~) has the sign of Disc(f) (math.md §3). The table is classify's own.
-  RootFacts x;
-  x.degree_ftilde = 4;
-  switch (c) {
-    case DiscriminantCase::NonRealPair:
-      x.real = 2, x.negative = 2, x.positive = 0, x.nonreal = 2, x.sign_disc_f = -1;
-      break;
-    case DiscriminantCase::TwoPositive:
-      x.real = 4, x.negative = 2, x.positive = 2, x.nonreal = 0, x.sign_disc_f = 1;
-      break;
-    case DiscriminantCase::AllNegative:
-      x.real = 4, x.negative = 4, x.positive = 0, x.nonreal = 0, x.sign_disc_f = 1;
-      break;
-    case DiscriminantCase::Undecided:
-      break;
-  }
-  x.sign_disc_ftilde = x.sign_disc_f;
-  std::optional<Verdict> v = decide_from_root_facts(x, rho_vs_one);
+  // The case's root facts through classify's own table.
+  std::optional<Verdict> v = decide_from_root_facts(root_facts_of(c), rho_vs_one);
   if (v) v->stage = Stage::DiscriminantFilter;
   return v;
 }

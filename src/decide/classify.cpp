@@ -272,17 +272,8 @@ bool decide_from_discriminant(const DecisionSigns& d, Verdict& v) {
     Verdict v[4][3];
     CaseTable() {
       for (int c = 1; c < 4; ++c)
-        for (int rho = -1; rho <= 1; ++rho) {
-          const bool two_real = static_cast<DiscriminantCase>(c) == DiscriminantCase::NonRealPair;
-          const bool two_positive = static_cast<DiscriminantCase>(c) == DiscriminantCase::TwoPositive;
-          RootFacts x;
-          x.real = two_real ? 2 : 4;
-          x.positive = two_positive ? 2 : 0;
-          x.negative = x.real - x.positive;
-          x.nonreal = 4 - x.real;
-          x.sign_disc_f = x.sign_disc_ftilde = two_real ? -1 : 1;  // f square-free: f~ = f
-          decide_from_facts(x, rho, v[c][rho + 1]);
-        }
+        for (int rho = -1; rho <= 1; ++rho)
+          decide_from_facts(root_facts_of(static_cast<DiscriminantCase>(c)), rho, v[c][rho + 1]);
     }
   };
   static const CaseTable table;
