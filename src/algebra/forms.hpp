@@ -115,6 +115,10 @@ inline Rational divided_by_power(const Integer& z, const SplitScale& scale, unsi
   return divided_by_powers(z, {{scale, k}});
 }
 
+/// out = x exactly for a finite double x (as mpq_set_d), from its bits: an odd significand over a
+/// power of two is already in lowest terms, so no gcd and each part is sized once.
+void set_double(mpq_ptr out, double x);
+
 /// CGAL::to_interval(q), the tightest interval of doubles around q, bit for bit: in the normal
 /// range from mpq_get_d (q truncated towards zero) and the next double away from zero, or the point
 /// when q is a double (a power-of-two denominator and at most 53 significant bits); else CGAL's

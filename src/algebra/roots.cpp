@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "algebra/flint_thread.hpp"
+#include "algebra/forms.hpp"
 #include "algebra/small_factor.hpp"
 #include "algebra/sturm_habicht_quartic.hpp"
 
@@ -378,8 +379,8 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
       if (sl != 0 && sh != 0 && sl != sh) {
         RealRoot& root = out.emplace_back();  // fresh bounds: written in place
         root.sign = r < 0 ? -1 : 1;
-        mpq_set_d(root.lower.mpq(), lo);
-        mpq_set_d(root.upper.mpq(), hi);
+        forms::set_double(root.lower.mpq(), lo);
+        forms::set_double(root.upper.mpq(), hi);
         prev_hi = hi;
         ok = true;
       }

@@ -4,11 +4,13 @@
 #include <flint/fmpz_poly.h>
 #include <gmp.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "algebra/between.hpp"
@@ -524,6 +526,34 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
 /// exact search when the point itself is beyond doubles.
 using DoubleBracket = std::optional<std::pair<double, double>>;
+
+/// The exponent k of a power of two 2^k, or -1 when z is not one.
+long power_of_two_exponent(mpz_srcptr z) {
+  const mp_bitcnt_t k = mpz_scan1(z, 0);
+  return k + 1 == mpz_sizeinbase(z, 2) ? static_cast<long>(k) : -1;
+}
+
+/// out = a - b 2^-shift in lowest terms (out distinct from a and b). The points of the double
+/// search and their pulls are dyadic: then by shifts and one subtraction, where mpq_sub takes gcds.
+void difference(mpq_ptr out, mpq_srcptr a, mpq_srcptr b, mp_bitcnt_t shift) {
+  const long ka = power_of_two_exponent(mpq_denref(a)), kb0 = power_of_two_exponent(mpq_denref(b));
+  if (ka < 0 || kb0 < 0) {
+    mpq_div_2exp(out, b, shift);
+    mpq_sub(out, a, out);
+    return;
+  }
+  const unsigned long kb = static_cast<unsigned long>(kb0) + shift;
+  const unsigned long top = std::max(static_cast<unsigned long>(ka), kb);
+  const mpz_ptr num = mpq_numref(out), den = mpq_denref(out);
+  mpz_mul_2exp(den, mpq_numref(b), top - kb);  // den as a temporary
+  mpz_mul_2exp(num, mpq_numref(a), top - static_cast<unsigned long>(ka));
+  mpz_sub(num, num, den);
+  const unsigned long twos = mpz_sgn(num) == 0 ? top : std::min<unsigned long>(mpz_scan1(num, 0), top);
+  mpz_tdiv_q_2exp(num, num, twos);
+  mpz_set_ui(den, 1);
+  mpz_mul_2exp(den, den, top - twos);
+}
+
 template <class Consider>
 void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const LambdaS& lambda_s, const V3& centre,
                          const std::optional<V3>& inside, const std::optional<V3>& outside, const Consider& consider,
@@ -569,24 +599,19 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
   auto try_point = [&](const double x[3], const std::optional<V3>& wanted) {
     // Each point a fresh V3 written in place (`consider` may keep it: its values are then shared).
     V3 q;
-    for (int i = 0; i < 3; ++i) mpq_set_d(q[i].mpq(), x[i]);  // exact: x is finite
+    for (int i = 0; i < 3; ++i) forms::set_double(q[i].mpq(), x[i]);  // exact: x is finite
     consider(q);
     if (wanted) return;
-    mpq_t diff[3], step;  // never shared: reused
+    mpq_t diff[3];  // never shared: reused
     for (auto& v : diff) mpq_init(v);
-    mpq_init(step);
-    for (int i = 0; i < 3; ++i) mpq_sub(diff[i], q[i].mpq(), centre[i].mpq());
+    for (int i = 0; i < 3; ++i) difference(diff[i], q[i].mpq(), centre[i].mpq(), 0);
     for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
       V3 y;                             // centre + (1 - 2^-k)(q - centre) = q - 2^-k (q - centre)
-      for (int i = 0; i < 3; ++i) {
-        mpq_div_2exp(step, diff[i], static_cast<mp_bitcnt_t>(k));
-        mpq_sub(y[i].mpq(), q[i].mpq(), step);
-      }
+      for (int i = 0; i < 3; ++i) difference(y[i].mpq(), q[i].mpq(), diff[i], static_cast<mp_bitcnt_t>(k));
       consider(y);
       if (wanted) break;
     }
     for (auto& v : diff) mpq_clear(v);
-    mpq_clear(step);
   };
   // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side (either order on the line). Regula falsi with
   // the Illinois modification (the end that stays has its value halved), bisection when the
@@ -666,7 +691,7 @@ std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
   for (std::size_t i = 0; i < 3; ++i) {
     const double x = d[i + 1] / d[0];
     if (!std::isfinite(x)) return std::nullopt;
-    mpq_set_d(out[i].mpq(), x);  // exact; a fresh value, written in place
+    forms::set_double(out[i].mpq(), x);  // exact; a fresh value, written in place
   }
   return out;
 }
@@ -1001,19 +1026,26 @@ int interval_sign(const DoubleMatrix4& q, const Enclosure3& x) {
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   DoubleBracket brackets[2];
-  std::optional<IntegerForm> ez, pz;  // exact signs of e and p at the candidates
   const std::optional<DoubleMatrix4> ed_own = pr.E.own_doubles();
   const std::optional<DoubleMatrix4> pd_own = ed_own ? pr.P.own_doubles() : std::nullopt;
-  if (pr.ez_of_doubles && pr.pz_of_doubles) {
-    ez.emplace(*pr.ez_of_doubles);
-    pz.emplace(*pr.pz_of_doubles);
-  } else if (ed_own && pd_own && !pr.has_forms()) {  // the integer forms with their scales are not needed
-    ez.emplace(*ed_own);
-    pz.emplace(*pd_own);
-  } else {
-    ez.emplace(pr.forms().ez);
-    pz.emplace(pr.forms().pz);
-  }
+  // Exact signs of e and p at the candidates, built on first use: with the quadrics' doubles the
+  // interval signs decide most pairs' every candidate.
+  std::optional<IntegerForm> ez_form, pz_form;
+  auto exact_forms = [&]() -> std::pair<const IntegerForm&, const IntegerForm&> {
+    if (!ez_form) {
+      if (pr.ez_of_doubles && pr.pz_of_doubles) {
+        ez_form.emplace(*pr.ez_of_doubles);
+        pz_form.emplace(*pr.pz_of_doubles);
+      } else if (ed_own && pd_own && !pr.has_forms()) {  // the integer forms with their scales are not needed
+        ez_form.emplace(*ed_own);
+        pz_form.emplace(*pd_own);
+      } else {
+        ez_form.emplace(pr.forms().ez);
+        pz_form.emplace(pr.forms().pz);
+      }
+    }
+    return {*ez_form, *pz_form};
+  };
   // The signs in interval arithmetic on the quadrics' exact doubles first (0: undecided, then the
   // exact sign on integers decides): most candidates are far enough from both surfaces.
   auto filtered = [](const std::optional<DoubleMatrix4>& q, const std::optional<Enclosure3>& x) {
@@ -1026,8 +1058,9 @@ void crossing_points(const Pair& pr, Certificate& c) {
     int sp = filtered(pd_own, at);
     if (se == 0 || sp == 0) {
       const IntegerForm::Point xz(x);
-      if (se == 0 && ez->sign(xz) > 0) return;
-      if (sp == 0) sp = pz->sign(xz);
+      const auto [ez, pz] = exact_forms();
+      if (se == 0 && ez.sign(xz) > 0) return;
+      if (sp == 0) sp = pz.sign(xz);
     }
     if (sp < 0 && !inside) inside = x;
     if (sp > 0 && !outside) outside = x;
@@ -1039,7 +1072,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> pull = approximate_centre(ed);
   auto e_sign = [&](const V3& x) {
     const int s = filtered(ed_own, ed_own ? enclosure(x) : std::nullopt);
-    return s != 0 ? s : ez->sign(IntegerForm::Point(x));
+    return s != 0 ? s : exact_forms().first.sign(IntegerForm::Point(x));
   };
   if (pull && e_sign(*pull) < 0 && !small_for_doubles(ed, *pull)) {
     consider(*pull);
