@@ -80,11 +80,9 @@ std::pair<double, double> tight_interval(const Rational& q) {
   const mp_bitcnt_t den_twos = mpz_scan1(den, 0);
   const bool dyadic = den_twos + 1 == mpz_sizeinbase(den, 2);
   const bool is_double = dyadic && mpz_sgn(num) != 0 && mpz_sizeinbase(num, 2) - mpz_scan1(num, 0) <= 53;
-  if (is_double && den_twos <= 1000) {  // num 2^-den_twos exactly, without mpq_get_d's division
-    const double t = std::ldexp(mpz_get_d(num), -static_cast<int>(den_twos));  // num is exact in a double
-    if (std::fabs(t) >= DBL_MIN && std::fabs(t) < DBL_MAX) return {t, t};
-  }
-  const double t = mpq_get_d(x);
+  // A dyadic q = num 2^-den_twos truncated without mpq_get_d's division: mpz_get_d truncates num
+  // towards zero, and the power of two is exact while the result stays normal.
+  const double t = dyadic && den_twos <= 1000 ? std::ldexp(mpz_get_d(num), -static_cast<int>(den_twos)) : mpq_get_d(x);
   if (!(std::fabs(t) >= DBL_MIN && std::fabs(t) < DBL_MAX)) return CGAL::to_interval(q);  // 0, subnormal, huge
   if (is_double) return {t, t};
   const double away = std::nextafter(t, t < 0 ? -HUGE_VAL : HUGE_VAL);

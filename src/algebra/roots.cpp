@@ -108,9 +108,22 @@ int sign_at_double(const Integer* h, int n, double x) {
   const double frac = std::frexp(x, &e);                        // x = frac 2^e, frac in [1/2, 1)
   const auto m = static_cast<long long>(std::ldexp(frac, 53));  // exact
   e -= 53;                                                      // x = m 2^e
-  mpz_t v, t;
-  mpz_init(v);
-  mpz_init(t);
+  // The thread's two temporaries, their limbs kept from call to call (the values run to a few
+  // hundred bits: no allocation once grown).
+  thread_local struct Scratch {
+    mpz_t v, t;
+    Scratch() {
+      mpz_init(v);
+      mpz_init(t);
+    }
+    ~Scratch() {
+      mpz_clear(v);
+      mpz_clear(t);
+    }
+    Scratch(const Scratch&) = delete;
+    Scratch& operator=(const Scratch&) = delete;
+  } scratch;
+  const mpz_ptr v = scratch.v, t = scratch.t;
   // Horner on m with powers of two: e >= 0: v = v m 2^e + h_i; e < 0: v = v m + h_i 2^(-e (n - i)).
   mpz_set(v, h[n].mpz());
   for (int i = n - 1; i >= 0; --i) {
@@ -123,10 +136,7 @@ int sign_at_double(const Integer* h, int n, double x) {
       mpz_add(v, v, t);
     }
   }
-  const int out = mpz_sgn(v);
-  mpz_clear(v);
-  mpz_clear(t);
-  return out;
+  return mpz_sgn(v);
 }
 
 /// Polynomial value and derivative in doubles (coefficients c[0..n]).
