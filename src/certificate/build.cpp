@@ -120,21 +120,16 @@ class IntegerPoly {
   }
   int sign(const Rational& x) const {
     if (z_.empty()) return 0;
-    mpz_t acc, dp, t;  // no Integer handles: one exact sign per candidate multiplier
-    mpz_init_set(acc, z_.back().mpz());
-    mpz_init_set_ui(dp, 1);
-    mpz_init(t);
+    PooledInteger acc_, dp_(1), t_;  // no Integer handles: one exact sign per candidate multiplier
+    const mpz_ptr acc = acc_.mpz(), dp = dp_.mpz(), t = t_.mpz();
+    mpz_set(acc, z_.back().mpz());
     for (std::size_t k = z_.size() - 1; k-- > 0;) {
       mpz_mul(dp, dp, mpq_denref(x.mpq()));
       mpz_mul(acc, acc, mpq_numref(x.mpq()));
       mpz_mul(t, z_[k].mpz(), dp);
       mpz_add(acc, acc, t);
     }
-    const int out = mpz_sgn(acc);
-    mpz_clear(acc);
-    mpz_clear(dp);
-    mpz_clear(t);
-    return out;
+    return mpz_sgn(acc);
   }
   /// The Newton step t - q(t)/q'(t) from t = n/d rounded down to a multiple of 2^e, on integers
   /// (one division, no canonicalization); nullopt where q' vanishes.
@@ -1110,13 +1105,15 @@ void crossing_points(const Pair& pr, Certificate& c) {
 }
 
 /// A lambda in the domain with f(lambda) > 0 from the isolating intervals of f's real roots: f has
-/// one sign between consecutive intervals, so one exact evaluation per gap decides.
-template <class InDomain>
-std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<RealRoot>& roots, InDomain in_domain) {
+/// one sign between consecutive intervals, so one exact evaluation per gap decides. `below_domain`
+/// (x at or below the domain's lower end) skips the gaps whose every point is outside.
+template <class InDomain, class BelowDomain>
+std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<RealRoot>& roots, InDomain in_domain,
+                                             BelowDomain below_domain) {
   for (std::size_t i = 0; i + 1 < roots.size(); ++i) {
     const Rational& lo = roots[i].exact ? *roots[i].exact : roots[i].upper;
     const Rational& hi = roots[i + 1].exact ? *roots[i + 1].exact : roots[i + 1].lower;
-    if (!(lo < hi)) continue;
+    if (!(lo < hi) || below_domain(hi)) continue;
     const Rational l = detail::rational_inside(lo, hi, detail::Shortest::Bits);
     if (in_domain(l) && pr.f_sign(l) > 0) return l;
   }
@@ -1142,9 +1139,12 @@ void build(const Ellipsoid& e, const Paraboloid& p, Position position, const Kno
     case Position::I: {
       const bool ext = position == Position::E;
       auto positive = [](const Rational& x) { return x > 0; };
+      auto not_positive = [](const Rational& x) { return CGAL::sign(x) <= 0; };
+      auto not_above_lambda_s = [&](const Rational& x) { return pr.ls.compare(x) <= 0; };
       std::optional<Rational> l;
       if (known.roots)
-        l = ext ? lambda_between_roots(pr, *known.roots, positive) : lambda_between_roots(pr, *known.roots, in_gap);
+        l = ext ? lambda_between_roots(pr, *known.roots, positive, not_positive)
+                : lambda_between_roots(pr, *known.roots, in_gap, not_above_lambda_s);
       if (!l) l = ext ? definite_lambda(pr, positive) : definite_lambda(pr, in_gap);
       if (!l) throw internal_error("no multiplier lambda with lambda P + E definite for a pair classified " + name);
       c.kind = Certificate::Kind::Definite;
