@@ -74,17 +74,31 @@ void set_double(mpq_ptr out, double x) {
   }
 }
 
+namespace {
+
+/// mpq_get_d(x) given den(x) = 2^k (k >= 0) or k = -1: mpz_get_d truncates the numerator towards
+/// zero, and the power of two is exact while the result stays normal.
+double truncated_double(mpq_srcptr x, long k) {
+  if (k >= 0 && k <= 1000) {
+    const double t = std::ldexp(mpz_get_d(mpq_numref(x)), -static_cast<int>(k));
+    if (std::fabs(t) >= DBL_MIN && std::fabs(t) <= DBL_MAX) return t;
+  }
+  return mpq_get_d(x);
+}
+
+}  // namespace
+
+double truncated_double(const Rational& q) {
+  return truncated_double(q.mpq(), power_of_two_exponent(mpq_denref(q.mpq())));
+}
+
 std::pair<double, double> tight_interval(const Rational& q) {
   const mpq_srcptr x = q.mpq();
-  const mpz_srcptr num = mpq_numref(x), den = mpq_denref(x);
-  const mp_bitcnt_t den_twos = mpz_scan1(den, 0);
-  const bool dyadic = den_twos + 1 == mpz_sizeinbase(den, 2);
-  const bool is_double = dyadic && mpz_sgn(num) != 0 && mpz_sizeinbase(num, 2) - mpz_scan1(num, 0) <= 53;
-  // A dyadic q = num 2^-den_twos truncated without mpq_get_d's division: mpz_get_d truncates num
-  // towards zero, and the power of two is exact while the result stays normal.
-  const double t = dyadic && den_twos <= 1000 ? std::ldexp(mpz_get_d(num), -static_cast<int>(den_twos)) : mpq_get_d(x);
+  const mpz_srcptr num = mpq_numref(x);
+  const long den_twos = power_of_two_exponent(mpq_denref(x));
+  const double t = truncated_double(x, den_twos);
   if (!(std::fabs(t) >= DBL_MIN && std::fabs(t) < DBL_MAX)) return CGAL::to_interval(q);  // 0, subnormal, huge
-  if (is_double) return {t, t};
+  if (den_twos >= 0 && mpz_sizeinbase(num, 2) - mpz_scan1(num, 0) <= 53) return {t, t};  // q is a double
   const double away = std::nextafter(t, t < 0 ? -HUGE_VAL : HUGE_VAL);
   return t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
 }

@@ -36,7 +36,7 @@ int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 /// The entries of a matrix as doubles (CGAL::to_double), for the searches in doubles.
 DoubleMatrix4 to_doubles(const Matrix4& m) {
   DoubleMatrix4 out;
-  for (std::size_t i = 0; i < 16; ++i) out[i] = CGAL::to_double(m.a[i]);
+  for (std::size_t i = 0; i < 16; ++i) out[i] = forms::truncated_double(m.a[i]);
   return out;
 }
 
@@ -242,7 +242,7 @@ struct Pair {
     if (known.forms) forms_ = *known.forms;
     ez_of_doubles = known.ez_of_doubles;
     pz_of_doubles = known.pz_of_doubles;
-    if (known.f_multiple) f_multiple_.emplace(known.f_multiple->data(), 5);
+    known_f_multiple_ = known.f_multiple;
   }
   /// f and s as polynomials over Q: the caller's, copied on first use (the certificates of E and I
   /// with known roots read neither).
@@ -259,8 +259,12 @@ struct Pair {
     if (!fz_) fz_.emplace(f());
     return *fz_;
   }
-  /// sign f(x), on the caller's integer multiple of f when it gave one.
-  int f_sign(const Rational& x) const { return (f_multiple_ ? *f_multiple_ : fz()).sign(x); }
+  /// sign f(x), on the caller's integer multiple of f when it gave one (copied on first use: the
+  /// crossings never evaluate f).
+  int f_sign(const Rational& x) const {
+    if (known_f_multiple_ && !f_multiple_) f_multiple_.emplace(known_f_multiple_->data(), 5);
+    return (f_multiple_ ? *f_multiple_ : fz()).sign(x);
+  }
   /// X^T Q X for X = (x, 1).
   static Rational form(const Matrix4& q, const V3& x) {
     Rational acc = q(3, 3);
@@ -306,7 +310,8 @@ struct Pair {
   mutable std::optional<Poly> f_, s_;
   mutable std::optional<IntegerForms> forms_;
   mutable std::optional<IntegerPoly> fz_;
-  std::optional<IntegerPoly> f_multiple_;
+  const Quartic<Integer>* known_f_multiple_ = nullptr;
+  mutable std::optional<IntegerPoly> f_multiple_;
 };
 
 /// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
@@ -522,16 +527,10 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// exact search when the point itself is beyond doubles.
 using DoubleBracket = std::optional<std::pair<double, double>>;
 
-/// The exponent k of a power of two 2^k, or -1 when z is not one.
-long power_of_two_exponent(mpz_srcptr z) {
-  const mp_bitcnt_t k = mpz_scan1(z, 0);
-  return k + 1 == mpz_sizeinbase(z, 2) ? static_cast<long>(k) : -1;
-}
-
 /// out = a - b 2^-shift in lowest terms (out distinct from a and b). The points of the double
 /// search and their pulls are dyadic: then by shifts and one subtraction, where mpq_sub takes gcds.
 void difference(mpq_ptr out, mpq_srcptr a, mpq_srcptr b, mp_bitcnt_t shift) {
-  const long ka = power_of_two_exponent(mpq_denref(a)), kb0 = power_of_two_exponent(mpq_denref(b));
+  const long ka = forms::power_of_two_exponent(mpq_denref(a)), kb0 = forms::power_of_two_exponent(mpq_denref(b));
   if (ka < 0 || kb0 < 0) {
     mpq_div_2exp(out, b, shift);
     mpq_sub(out, a, out);
@@ -956,7 +955,7 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
 bool small_for_doubles(const DoubleMatrix4& em, const V3& centre) {
   auto e = [&](int i, int j) { return em[static_cast<std::size_t>(4 * i + j)]; };
   double c[3], least = HUGE_VAL, far = 0, r2 = e(3, 3);
-  for (int i = 0; i < 3; ++i) c[i] = CGAL::to_double(centre[i]);
+  for (int i = 0; i < 3; ++i) c[i] = forms::truncated_double(centre[i]);
   for (int i = 0; i < 3; ++i) {
     r2 += 2 * e(i, 3) * c[i];
     for (int j = 0; j < 3; ++j) r2 += c[i] * e(i, j) * c[j];

@@ -616,18 +616,31 @@ void fill_full_evidence(RootStructure&& rs, const Quadratic<PooledInteger>& h, c
     }
     const double k_double = mpq_get_d(k);
     mpq_clear(k);
-    const double s2 = CGAL::to_double(out.s[2]), s1 = CGAL::to_double(out.s[1]), s0 = CGAL::to_double(out.s[0]);
+    const double s2 = forms::truncated_double(out.s[2]), s1 = forms::truncated_double(out.s[1]),
+                 s0 = forms::truncated_double(out.s[0]);
     const double u1 = (2 * s0) / (s1 + std::sqrt(s1 * s1 - 4 * s2 * s0));  // stable smaller root
     out.rho_approx = k_double / (u1 * u1);
   }
 }
 
+/// A default Classification without a heap allocation per number: a copy of the thread's default
+/// one, its numbers sharing that one's (a Gmpq copy shares its value; each default Gmpq costs two
+/// allocations, and a certificate holds some twenty, most never written). Safe because every
+/// number of a result is assigned, never written in place, except f and s (made fresh by the
+/// caller before their in-place writes).
+Classification default_classification() {
+  thread_local const Classification prototype;
+  return prototype;
+}
+
 Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, bool use_filter) {
   std::optional<ExactData> exact;
   const Verdict v = run_stages(e, p, use_filter, exact);
-  Classification out;
+  Classification out = default_classification();
   out.verdict = v;
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E), from each matrix's own form
+    for (Rational& c : out.f) c = Rational();  // fresh: reported_polynomials writes them in place
+    for (Rational& c : out.s) c = Rational();
     // The integer forms on pooled integers (the generic formulas without heap traffic for
     // temporaries): from the doubles when the entries are doubles, without a rational matrix;
     // else kept as Integers for the certificate's exact signs and points too.
