@@ -669,12 +669,20 @@ TEST_CASE("set_double writes the canonical rational mpq_set_d writes", "[forms]"
   // that held something else before (the caller's fresh or reused rationals).
   rt::Rng g(27);
   std::mt19937_64 bits(8);
-  const double special[] = {0.0, -0.0, 1.0, -3.0, 0.5, std::numeric_limits<double>::denorm_min(),
-                            -std::numeric_limits<double>::min(), std::numeric_limits<double>::max(), 0x1p52, 0x1.8p-1074};
+  const double special[] = {0.0,
+                            -0.0,
+                            1.0,
+                            -3.0,
+                            0.5,
+                            std::numeric_limits<double>::denorm_min(),
+                            -std::numeric_limits<double>::min(),
+                            std::numeric_limits<double>::max(),
+                            0x1p52,
+                            0x1.8p-1074};
   for (int trial = 0; trial < 20000; ++trial) {
-    const double x =
-        trial < 10 ? special[trial]
-                   : std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits), static_cast<int>(g.uniform(-1080, 1024)));
+    const double x = trial < 10 ? special[trial]
+                                : std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits),
+                                             static_cast<int>(g.uniform(-1080, 1024)));
     if (!std::isfinite(x)) continue;
     Rational got(Integer(g.uniform(-99, 99)), Integer(g.uniform(1, 99))), want;
     relpos::forms::set_double(got.mpq(), x);

@@ -98,7 +98,8 @@ std::pair<double, double> tight_interval(const Rational& q) {
   const long den_twos = power_of_two_exponent(mpq_denref(x));
   const double t = truncated_double(x, den_twos);
   if (!(std::fabs(t) >= DBL_MIN && std::fabs(t) < DBL_MAX)) return CGAL::to_interval(q);  // 0, subnormal, huge
-  if (den_twos >= 0 && mpz_sizeinbase(num, 2) - mpz_scan1(num, 0) <= 53) return {t, t};  // q is a double
+  // A double itself: a power-of-two denominator and at most 53 significant bits.
+  if (den_twos >= 0 && mpz_sizeinbase(num, 2) - mpz_scan1(num, 0) <= 53) return {t, t};
   const double away = std::nextafter(t, t < 0 ? -HUGE_VAL : HUGE_VAL);
   return t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
 }

@@ -639,7 +639,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   Classification out = default_classification();
   out.verdict = v;
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E), from each matrix's own form
-    for (Rational& c : out.f) c = Rational();  // fresh: reported_polynomials writes them in place
+    // Fresh numbers: reported_polynomials writes them in place.
+    for (Rational& c : out.f) c = Rational();
     for (Rational& c : out.s) c = Rational();
     // The integer forms on pooled integers (the generic formulas without heap traffic for
     // temporaries): from the doubles when the entries are doubles, without a rational matrix;
