@@ -80,11 +80,16 @@ inline int semi_static_sign(double value, double magnitude) {
   if (value < -bound) return -1;
   return 0;
 }
-/// The same, trying first the static magnitude `most` (what the formula's magnitude can be at
-/// most when every entry is below 1: no extra arithmetic), then the actual magnitude.
-template <class MagnitudeOf>
-int filtered_sign(double value, double most, MagnitudeOf magnitude) {
-  if (const int s = semi_static_sign(value, most)) return s;
+/// semi_static_sign's bound for the static magnitude `most` (what the formula's magnitude can be at
+/// most when every entry is below 1), evaluated by the compiler: constexpr, since -frounding-math
+/// keeps it from folding constants otherwise.
+constexpr double static_bound(int most) { return 0x1p-47 * most + 0x1p-1000; }
+/// The same, trying first the static magnitude `most` (no extra arithmetic), then the actual magnitude.
+template <int Most, class MagnitudeOf>
+int filtered_sign(double value, MagnitudeOf magnitude) {
+  constexpr double bound = static_bound(Most);
+  if (value > bound) return 1;
+  if (value < -bound) return -1;
   return semi_static_sign(value, magnitude().v);
 }
 
@@ -100,11 +105,9 @@ inline int certain_sign(const I& x) {
   return 0;  // uncertain (or zero)
 }
 
+/// Without a branch per pair (& on the comparisons, not &&): for valid input all six hold.
 inline bool symmetric(const DoubleMatrix4& d) {
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      if (!(d[static_cast<std::size_t>(4 * i + j)] == d[static_cast<std::size_t>(4 * j + i)])) return false;
-  return true;
+  return (d[1] == d[4]) & (d[2] == d[8]) & (d[3] == d[12]) & (d[6] == d[9]) & (d[7] == d[13]) & (d[11] == d[14]);
 }
 
 /// A growing floating-point expansion (Shewchuk 1997): the exact sum of its components, which are
@@ -215,10 +218,10 @@ inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* norm
   if (normalized && detail::rounding_to_nearest()) {  // semi-static stage: no rounding-mode switch
     const DoubleMatrix4& n = *normalized;
     using impl::Mag;
-    const int s2 = impl::filtered_sign(n[0] * n[5] - n[1] * n[1], 2,
-                                       [&] { return Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1]); });
-    const int s3 = impl::filtered_sign(impl::det3<double>(n), 6, [&] { return impl::det3<Mag>(n); });
-    const int s4 = impl::filtered_sign(impl::det4<double>(n), 24, [&] { return impl::det4<Mag>(n); });
+    const int s2 = impl::filtered_sign<2>(n[0] * n[5] - n[1] * n[1],
+                                          [&] { return Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1]); });
+    const int s3 = impl::filtered_sign<6>(impl::det3<double>(n), [&] { return impl::det3<Mag>(n); });
+    const int s4 = impl::filtered_sign<24>(impl::det4<double>(n), [&] { return impl::det4<Mag>(n); });
     if (s2 == 1 && s3 == want && s4 == -1) return want;
   }
   CGAL::Protect_FPU_rounding<true> guard;
@@ -238,14 +241,14 @@ inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* nor
   if (normalized && detail::rounding_to_nearest()) {  // semi-static stage
     const DoubleMatrix4& n = *normalized;
     using impl::Mag;
-    const int e2 = impl::filtered_sign(
-        (n[0] * n[5] - n[1] * n[1]) + (n[0] * n[10] - n[2] * n[2]) + (n[5] * n[10] - n[6] * n[6]), 6, [&] {
+    const int e2 = impl::filtered_sign<6>(
+        (n[0] * n[5] - n[1] * n[1]) + (n[0] * n[10] - n[2] * n[2]) + (n[5] * n[10] - n[6] * n[6]), [&] {
           return (Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1])) + (Mag(n[0]) * Mag(n[10]) + Mag(n[2]) * Mag(n[2])) +
                  (Mag(n[5]) * Mag(n[10]) + Mag(n[6]) * Mag(n[6]));
         });
-    trace_sign = impl::filtered_sign(n[0] + n[5] + n[10], 3, [&] { return Mag(n[0]) + Mag(n[5]) + Mag(n[10]); });
+    trace_sign = impl::filtered_sign<3>(n[0] + n[5] + n[10], [&] { return Mag(n[0]) + Mag(n[5]) + Mag(n[10]); });
     certain = e2 == 1 && trace_sign != 0 &&
-              impl::filtered_sign(impl::det4<double>(n), 24, [&] { return impl::det4<Mag>(n); }) == -1;
+              impl::filtered_sign<24>(impl::det4<double>(n), [&] { return impl::det4<Mag>(n); }) == -1;
   }
   if (!certain) {
     CGAL::Protect_FPU_rounding<true> guard;

@@ -136,8 +136,10 @@ bool normalize(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool&
     std::memcpy(&b, &x, sizeof b);
     b &= 0x7fffffffffffffffULL;
     mx = b > mx ? b : mx;
-    mn = (b != 0 && b < mn) ? b : mn;
+    const std::uint64_t below = b - 1;  // zero wraps to the largest value: never the minimum, no branch
+    mn = below < mn ? below : mn;
   }
+  ++mn;                                                                         // the smallest non-zero |x|
   if (mx < 0x0010000000000000ULL || mx >= 0x7ff0000000000000ULL) return false;  // zero, subnormal, inf or NaN
   const int emax = static_cast<int>(mx >> 52) - 1023;
   const int k = -emax - 1;
