@@ -205,27 +205,63 @@ inline int certified_paraboloid_intervals(const std::array<impl::I, 16>& d) {
   return trace_sign;
 }
 
+namespace impl {
+
+/// det Q < 0 on the normalized doubles (static, then semi-static bound): -1, else the sign or 0.
+inline int det4_sign(const DoubleMatrix4& n) {
+  return filtered_sign<24>(det4<double>(n), [&] { return det4<Mag>(n); });
+}
+
+}  // namespace impl
+
+/// Every sign of the ellipsoid test but det Q < 0, certified on the normalized doubles (static, then
+/// semi-static bounds; round to nearest): the orientation (+1 or -1, the sign of the first entry)
+/// when d is symmetric, its 2x2 leading minor is positive and det Q3 has the first entry's sign;
+/// else 0, and always 0 without `normalized` (d scaled by a power of two, power_of_two_normalized).
+/// certified_ellipsoid adds det Q < 0; the decision on 32 doubles reads that sign off the pencil
+/// instead, whose f(0) is det E (math.md §2).
+inline int ellipsoid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
+  if (!normalized || !impl::symmetric(d) || !detail::rounding_to_nearest()) return 0;
+  const DoubleMatrix4& n = *normalized;
+  const int want = n[0] > 0 ? 1 : (n[0] < 0 ? -1 : 0);  // normalized entries are finite
+  using impl::Mag;
+  const int s2 =
+      impl::filtered_sign<2>(n[0] * n[5] - n[1] * n[1], [&] { return Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1]); });
+  const int s3 = impl::filtered_sign<6>(impl::det3<double>(n), [&] { return impl::det3<Mag>(n); });
+  return want != 0 && s2 == 1 && s3 == want ? want : 0;
+}
+
+/// The same for an elliptic paraboloid: the sign of the trace of Q3 when d is symmetric, E2 > 0
+/// and the trace are certain and det Q3 = 0 exactly; else 0. det Q < 0 is certified_paraboloid's,
+/// or the pencil's leading coefficient det P (math.md §2).
+inline int paraboloid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
+  if (!normalized || !impl::symmetric(d) || !detail::rounding_to_nearest()) return 0;
+  const DoubleMatrix4& n = *normalized;
+  using impl::Mag;
+  const int e2 = impl::filtered_sign<6>(
+      (n[0] * n[5] - n[1] * n[1]) + (n[0] * n[10] - n[2] * n[2]) + (n[5] * n[10] - n[6] * n[6]), [&] {
+        return (Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1])) + (Mag(n[0]) * Mag(n[10]) + Mag(n[2]) * Mag(n[2])) +
+               (Mag(n[5]) * Mag(n[10]) + Mag(n[6]) * Mag(n[6]));
+      });
+  const int trace_sign =
+      impl::filtered_sign<3>(n[0] + n[5] + n[10], [&] { return Mag(n[0]) + Mag(n[5]) + Mag(n[10]); });
+  if (e2 != 1 || trace_sign == 0) return 0;
+  const auto zero = impl::det3_is_zero(d);
+  return zero && *zero ? trace_sign : 0;
+}
+
 /// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
 /// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
-/// `normalized` is d scaled by a power of two (power_of_two_normalized), or null: the
-/// semi-static stage reads it; the interval stage reads d.
+/// `normalized` as for ellipsoid_before_det, or null: the semi-static stage reads it; the interval
+/// stage reads d.
 inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  using impl::I;
+  if (const int want = ellipsoid_before_det(d, normalized); want != 0 && impl::det4_sign(*normalized) == -1)
+    return want;
   if (!impl::symmetric(d)) return 0;
   const double a = d[0];
   if (!(a > 0) && !(a < 0)) return 0;
-  const int want = a > 0 ? 1 : -1;
-  if (normalized && detail::rounding_to_nearest()) {  // semi-static stage: no rounding-mode switch
-    const DoubleMatrix4& n = *normalized;
-    using impl::Mag;
-    const int s2 = impl::filtered_sign<2>(n[0] * n[5] - n[1] * n[1],
-                                          [&] { return Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1]); });
-    const int s3 = impl::filtered_sign<6>(impl::det3<double>(n), [&] { return impl::det3<Mag>(n); });
-    const int s4 = impl::filtered_sign<24>(impl::det4<double>(n), [&] { return impl::det4<Mag>(n); });
-    if (s2 == 1 && s3 == want && s4 == -1) return want;
-  }
   CGAL::Protect_FPU_rounding<true> guard;
-  return certified_ellipsoid_intervals(impl::interval_entries(d), want);
+  return certified_ellipsoid_intervals(impl::interval_entries(d), a > 0 ? 1 : -1);
 }
 
 /// +1 when the symmetric matrix is certainly an elliptic paraboloid with Q3 positive semidefinite,
@@ -234,30 +270,18 @@ inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* norm
 /// product of the two other eigenvalues); rank Q = 4 iff det Q != 0. `normalized` as for
 /// certified_ellipsoid.
 inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  using impl::I;
+  if (const int trace_sign = paraboloid_before_det(d, normalized);
+      trace_sign != 0 && impl::det4_sign(*normalized) == -1)
+    return trace_sign;
   if (!impl::symmetric(d)) return 0;
-  int trace_sign = 0;
-  bool certain = false;
-  if (normalized && detail::rounding_to_nearest()) {  // semi-static stage
-    const DoubleMatrix4& n = *normalized;
-    using impl::Mag;
-    const int e2 = impl::filtered_sign<6>(
-        (n[0] * n[5] - n[1] * n[1]) + (n[0] * n[10] - n[2] * n[2]) + (n[5] * n[10] - n[6] * n[6]), [&] {
-          return (Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1])) + (Mag(n[0]) * Mag(n[10]) + Mag(n[2]) * Mag(n[2])) +
-                 (Mag(n[5]) * Mag(n[10]) + Mag(n[6]) * Mag(n[6]));
-        });
-    trace_sign = impl::filtered_sign<3>(n[0] + n[5] + n[10], [&] { return Mag(n[0]) + Mag(n[5]) + Mag(n[10]); });
-    certain = e2 == 1 && trace_sign != 0 &&
-              impl::filtered_sign<24>(impl::det4<double>(n), [&] { return impl::det4<Mag>(n); }) == -1;
-  }
-  if (!certain) {
+  int trace_sign;
+  {
     CGAL::Protect_FPU_rounding<true> guard;
     trace_sign = certified_paraboloid_intervals(impl::interval_entries(d));
-    if (trace_sign == 0) return 0;
   }
+  if (trace_sign == 0) return 0;
   const auto zero = impl::det3_is_zero(d);
-  if (!zero || !*zero) return 0;
-  return trace_sign;
+  return zero && *zero ? trace_sign : 0;
 }
 
 }  // namespace relpos::shape_filter
