@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include "algebra/cramer.hpp"
@@ -145,14 +146,21 @@ struct Expansion {
 
 /// Every term of det Q3 = a d f + 2 b c e - a e^2 - f b^2 - d c^2 ([[a, b, c], [b, d, e], [c, e, f]])
 /// has a factor that is exactly zero (axis-aligned paraboloids): det Q3 = 0 without arithmetic.
-inline bool zero_by_pattern(bool a, bool b, bool c, bool d, bool e, bool f) {
+constexpr bool zero_by_pattern(bool a, bool b, bool c, bool d, bool e, bool f) {
   return (a || d || f) && (b || c || e) && (a || e) && (f || b) && (d || c);
 }
 
-/// det Q3 == 0, exactly; nullopt when the entries are outside the range where the expansion is
-/// exact (the caller takes the exact path). The block is scaled by a power of two first (exact).
-inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
-  if (zero_by_pattern(d[0] == 0, d[1] == 0, d[2] == 0, d[5] == 0, d[6] == 0, d[10] == 0)) return true;
+/// zero_by_pattern of every combination of the six flags (bit k set: flag k): a table lookup
+/// instead of a branch per flag.
+constexpr std::uint64_t kZeroPatterns = [] {
+  std::uint64_t table = 0;
+  for (unsigned z = 0; z < 64; ++z)
+    if (zero_by_pattern(z & 1, z & 2, z & 4, z & 8, z & 16, z & 32)) table |= std::uint64_t{1} << z;
+  return table;
+}();
+
+/// det Q3 == 0 by the expansion below; out of line: only blocks with no zero pattern get here.
+[[gnu::noinline]] inline std::optional<bool> det3_is_zero_by_expansion(const DoubleMatrix4& d) {
   if (!detail::rounding_to_nearest()) return std::nullopt;
   double mx = 0;
   for (int i = 0; i < 3; ++i)
@@ -177,6 +185,15 @@ inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
   x.add_product(-f, b, b);
   x.add_product(-dd, c, c);
   return x.is_zero();
+}
+
+/// det Q3 == 0, exactly; nullopt when the entries are outside the range where the expansion is
+/// exact (the caller takes the exact path). The block is scaled by a power of two first (exact).
+inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
+  const unsigned zeros = unsigned{d[0] == 0} | unsigned{d[1] == 0} << 1 | unsigned{d[2] == 0} << 2 |
+                         unsigned{d[5] == 0} << 3 | unsigned{d[6] == 0} << 4 | unsigned{d[10] == 0} << 5;
+  if ((kZeroPatterns >> zeros) & 1) return true;
+  return det3_is_zero_by_expansion(d);
 }
 
 }  // namespace impl
