@@ -307,7 +307,9 @@ bool same_decision(const DoubleMatrix4& e, const DoubleMatrix4& p) {
     one_error = err.what();
   }
   try {
-    two = relpos::decide_position(Ellipsoid::from_doubles(e), Paraboloid::from_doubles(p));
+    const Ellipsoid ell = Ellipsoid::from_doubles(e);  // the ellipsoid first, as a user writes it
+    const Paraboloid par = Paraboloid::from_doubles(p);
+    two = relpos::decide_position(ell, par);
   } catch (const InputError& err) {
     two_error = err.what();
   }

@@ -719,8 +719,10 @@ Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
     const Verdict v = run_stages(ell, par, true, exact, &pending);
     if (!pending) return v;
   }
-  // Anything uncertain, and every invalid input: the two steps themselves (their errors, in order).
-  return decide_position(Ellipsoid::from_doubles(e), Paraboloid::from_doubles(p));
+  // Anything uncertain, and every invalid input: the two steps themselves (their errors, the
+  // ellipsoid's first: two statements, as the order of a call's arguments is unspecified).
+  const Ellipsoid first = Ellipsoid::from_doubles(e);
+  return decide_position(first, Paraboloid::from_doubles(p));
 }
 
 Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
