@@ -12,6 +12,7 @@
 
 #include "algebra/forms.hpp"
 #include "algebra/rounding.hpp"
+#include "algebra/shape_filter.hpp"
 #include "algebra/smallness.hpp"
 #include "algebra/sturm.hpp"
 #include "anysize/exact.hpp"
@@ -409,7 +410,11 @@ bool always_smallness(const QuarticSigns&) { return true; }
 
 /// The whole filter -> exact policy in one place: each stage certifies what it can, the next one
 /// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
-Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact) {
+/// `determinants_pending` (true on entry): a pair validated but for det E < 0 and det P < 0, which
+/// the static filter certifies as f(0) and the leading coefficient (math.md §2); false once it has,
+/// and nothing is decided (an empty verdict returned at once) when it has not.
+Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact,
+                   bool* determinants_pending = nullptr) {
   Verdict v;
   DecisionSigns d;  // every sign certified so far, by any stage (uncertain until then)
   if (use_filter) {
@@ -425,6 +430,10 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
         std::optional<bool> gap;  // the gap test from the same f and s, when it is the one open question
         const DecisionSigns fast = static_filter_discriminant_signs_normalized(
             *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), always_smallness, &gap);
+        if (determinants_pending) {
+          if (detail::certain(fast.quartic.f[0]) != -1 || detail::certain(fast.quartic.f[4]) != -1) return v;
+          *determinants_pending = false;
+        }
         if (decide_from_discriminant(fast, v)) {
           if (gap && needs_gap(v)) {
             v.roots_above_lambda_s = static_cast<signed char>(*gap);
@@ -435,6 +444,7 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
         v = Verdict{};
         d = static_filter_signs_normalized(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles());
       }
+      if (determinants_pending && *determinants_pending) return v;  // not in range: nothing certified
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
       if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
         v.stage = Stage::SemiStaticDouble;
@@ -723,6 +733,28 @@ Verdict decide_position(const Ellipsoid& e, const Paraboloid& p) {
   check_normalized_pair_size(e, p);  // two flag tests for doubles and the fast reader's numbers
   std::optional<ExactData> exact;
   return run_stages(e, p, true, exact);
+}
+
+Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
+  // The objects from_doubles builds (normalized in place, the same orientation), with every shape
+  // sign but the determinants certified; run_stages certifies those from the pencil or gives up.
+  Ellipsoid ell(e);
+  Paraboloid par(p);
+  const int oe = shape_filter::ellipsoid_before_det(e, ell.m_.filter_doubles());
+  const int op = oe != 0 ? shape_filter::paraboloid_before_det(p, par.m_.filter_doubles()) : 0;
+  if (op != 0) {
+    if (oe < 0) ell.m_.negate_doubles();
+    if (op < 0) par.m_.negate_doubles();
+    check_normalized_pair_size(ell, par);  // never throws for doubles, as in decide_position
+    bool pending = true;
+    std::optional<ExactData> exact;
+    const Verdict v = run_stages(ell, par, true, exact, &pending);
+    if (!pending) return v;
+  }
+  // Anything uncertain, and every invalid input: the two steps themselves (their errors, the
+  // ellipsoid's first: two statements, as the order of a call's arguments is unspecified).
+  const Ellipsoid first = Ellipsoid::from_doubles(e);
+  return decide_position(first, Paraboloid::from_doubles(p));
 }
 
 Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
