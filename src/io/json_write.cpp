@@ -30,18 +30,20 @@ void JsonWriter::integer(long n) { out_ += std::to_string(n); }
 void JsonWriter::number(double x) { out_ += dump_json(nlohmann::ordered_json(x)); }
 
 void JsonWriter::rational(const Rational& q) {
-  // mpz_get_str straight into the output: no temporary strings for the longest values of a report.
-  auto put = [this](const Integer& z) {
+  // mpz_get_str straight into the output from the mpq's own integers: no temporary strings for the
+  // longest values of a report, and no copies of the numerator and denominator.
+  auto put = [this](mpz_srcptr z) {
     const std::size_t at = out_.size();
-    out_.resize(at + mpz_sizeinbase(z.mpz(), 10) + 2);
-    mpz_get_str(&out_[at], 10, z.mpz());
+    out_.resize(at + mpz_sizeinbase(z, 10) + 2);
+    mpz_get_str(&out_[at], 10, z);
     out_.resize(at + std::char_traits<char>::length(&out_[at]));
   };
+  const mpq_srcptr x = q.mpq();
   out_ += '"';
-  put(q.numerator());
-  if (q.denominator() != 1) {
+  put(mpq_numref(x));
+  if (mpz_cmp_ui(mpq_denref(x), 1) != 0) {
     out_ += '/';
-    put(q.denominator());
+    put(mpq_denref(x));
   }
   out_ += '"';
 }
