@@ -199,8 +199,16 @@ void with_rest_powers(SplitScale& out) {
 /// power 1 or 2), with the lcm's powers; `out.factors` stays {rest} unless their product is the rest.
 void factor_rests(const std::vector<SplitScale::Factor>& rests, SplitScale& out) {
   mpz_t r, g;
-  mpz_init(r);
   mpz_init(g);
+  // One rest, or two coprime ones (a standard paraboloid's mantissas): the rest is their product,
+  // already a coprime base.
+  if (rests.size() == 1 || (rests.size() == 2 && (mpz_gcd(g, rests[0].base.mpz(), rests[1].base.mpz()),
+                                                  mpz_cmp_ui(g, 1) == 0))) {
+    out.factors = rests;
+    mpz_clear(g);
+    return;
+  }
+  mpz_init(r);
   // Factor refinement: two bases with a common factor c become b / c, b' / c and c, until they are
   // pairwise coprime. Every rest stays a product of bases; the product of the bases decreases.
   std::vector<Integer> base;

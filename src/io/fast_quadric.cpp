@@ -10,6 +10,7 @@
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -405,6 +406,15 @@ Rational sphere_constant(const std::array<Exact, 16>& n) {
   return q;
 }
 
+/// 5^k for k < 28 (< 2^64): the powers of five of decimal text, multiplied in one word.
+constexpr unsigned long kMaxWordPower5 = 28;
+constexpr auto kPower5 = [] {
+  std::array<unsigned long, kMaxWordPower5> p{};
+  p[0] = 1;
+  for (std::size_t k = 1; k < kMaxWordPower5; ++k) p[k] = p[k - 1] * 5;
+  return p;
+}();
+
 /// The integer form of an exact matrix of decimal text (forms::integer_form_of) from the numbers read:
 /// each entry of the upper triangle (row by row, as in symmetric()) is (-1)^neg n 2^t2 5^t5 / R^2
 /// with R one of two integers prime to 10 and to n (the rests of the mantissas of a and b of a
@@ -470,8 +480,13 @@ class DecimalForm {
       if (mpz_sgn(n_[k]) == 0) {
         mpz_set_ui(z, 0);
       } else {
-        mpz_ui_pow_ui(t, 5, static_cast<unsigned long>(t5_[k] + u5));
-        mpz_mul(z, n_[k], t);
+        const auto fives = static_cast<unsigned long>(t5_[k] + u5);
+        if (fives < kMaxWordPower5) {
+          mpz_mul_ui(z, n_[k], kPower5[fives]);
+        } else {
+          mpz_ui_pow_ui(t, 5, fives);
+          mpz_mul(z, n_[k], t);
+        }
         mpz_mul_2exp(z, z, static_cast<unsigned long>(t2_[k] + u2));
         if (mpz_cmp_ui(cof[which_[k]], 1) != 0) mpz_mul(z, z, cof[which_[k]]);
       }
