@@ -202,8 +202,8 @@ void factor_rests(const std::vector<SplitScale::Factor>& rests, SplitScale& out)
   mpz_init(g);
   // One rest, or two coprime ones (a standard paraboloid's mantissas): the rest is their product,
   // already a coprime base.
-  if (rests.size() == 1 || (rests.size() == 2 && (mpz_gcd(g, rests[0].base.mpz(), rests[1].base.mpz()),
-                                                  mpz_cmp_ui(g, 1) == 0))) {
+  if (rests.size() == 1 ||
+      (rests.size() == 2 && (mpz_gcd(g, rests[0].base.mpz(), rests[1].base.mpz()), mpz_cmp_ui(g, 1) == 0))) {
     out.factors = rests;
     mpz_clear(g);
     return;
