@@ -2,6 +2,8 @@
 
 #include <gmp.h>
 
+#include <array>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 namespace relpos::io::detail {
@@ -27,7 +29,17 @@ void JsonWriter::string(std::string_view s) {
 
 void JsonWriter::integer(long n) { out_ += std::to_string(n); }
 
-void JsonWriter::number(double x) { out_ += dump_json(nlohmann::ordered_json(x)); }
+void JsonWriter::number(double x) {
+  // What dump_json writes for a double (nlohmann's serializer: null when not finite, else its
+  // shortest round-trip digits), without a json value and a string per number.
+  if (!std::isfinite(x)) {
+    out_ += "null";
+    return;
+  }
+  std::array<char, 64> digits;  // the serializer's buffer size
+  const char* end = nlohmann::detail::to_chars(digits.data(), digits.data() + digits.size(), x);
+  out_.append(digits.data(), static_cast<std::size_t>(end - digits.data()));
+}
 
 void JsonWriter::rational(const Rational& q) {
   // mpz_get_str straight into the output from the mpq's own integers: no temporary strings for the
