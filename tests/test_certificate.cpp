@@ -3,6 +3,7 @@
 // certificate must be accepted and tampered variants rejected.
 #include <catch2/catch.hpp>
 #include <optional>
+#include <random>
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
 #include <relpos/io.hpp>
@@ -11,6 +12,7 @@
 
 #include "certificate/build.hpp"
 #include "certificate/verify.hpp"
+#include "io/json_write.hpp"
 
 using relpos::Certificate;
 using relpos::Ellipsoid;
@@ -468,4 +470,39 @@ TEST_CASE("the report's JSON text holds the classification's exact values, for e
     CHECK_FALSE(
         relpos::verify_certificate(e, cup(), c.verdict.position, relpos::certificate_from_json(j["certificate"])));
   }
+}
+
+TEST_CASE("the report writer's rationals are GMP's decimal text at every length", "[io]") {
+  // JsonWriter::rational writes the digits itself (json_write.cpp): chunks of 19 digits with their
+  // leading zeros under a leading part of up to 20, and GMP's own text beyond 64 limbs. Compared
+  // with to_string (mpz_get_str) on integers of 0 to 90 limbs, near powers of ten and chunk edges.
+  std::mt19937_64 rng(19);
+  const relpos::Integer ten19 = relpos::Integer(10000000000000000000UL);
+  int checked = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    relpos::Integer z(static_cast<unsigned long>(rng()) >> (rng() % 64));
+    const int limbs = static_cast<int>(rng() % (trial < 2900 ? 12 : 90));
+    for (int i = 0; i < limbs; ++i) z = z * relpos::Integer(static_cast<unsigned long>(rng() | 1));
+    switch (trial % 5) {
+      case 1:  // a power of ten times z, minus one: runs of nines and zeros across chunks
+        for (int i = 0; i < limbs % 4 + 1; ++i) z = z * ten19;
+        z = z - 1;
+        break;
+      case 2:
+        z = z * ten19;
+        break;
+      case 3:
+        z = -z;
+        break;
+      default:
+        break;
+    }
+    const relpos::Rational q = trial % 2 ? relpos::Rational(z) : relpos::Rational(z, z * z + 1);
+    std::string text;
+    relpos::io::detail::JsonWriter w(text);
+    w.rational(q);
+    REQUIRE(text == "\"" + relpos::to_string(q) + "\"");
+    ++checked;
+  }
+  REQUIRE(checked == 3000);
 }

@@ -5,6 +5,7 @@
 #include <random>
 #include <string>
 
+#include "algebra/forms.hpp"
 #include "io/fast_quadric.hpp"
 #include "io/json_read.hpp"
 #include "relpos/classify.hpp"
@@ -42,6 +43,31 @@ void check_storage(const Q& q) {
   }
 }
 
+/// The integer form and split scale the quadric's exact source writes from its numbers
+/// (forms::integer_form_of) are those of its exact matrix, factor for factor.
+template <class Q>
+void check_integer_form(const Q& q) {
+  using relpos::Integer;
+  relpos::forms::MatrixOf<Integer> m;
+  Integer l, l2;
+  relpos::forms::SplitScale s;
+  relpos::forms::integer_form_of(storage_of(q), {m, l, s});
+  const relpos::forms::MatrixOf<Integer> m2 = relpos::forms::integer_form(q.matrix(), l2);
+  const relpos::forms::SplitScale s2 = relpos::forms::split_scale(l2, q.matrix());
+  REQUIRE(l == l2);
+  for (std::size_t k = 0; k < 16; ++k) REQUIRE(m.a[k] == m2.a[k]);
+  REQUIRE(s.twos == s2.twos);
+  REQUIRE(s.fives == s2.fives);
+  REQUIRE(s.rest == s2.rest);
+  REQUIRE(s.rest_power.size() == s2.rest_power.size());
+  for (std::size_t k = 0; k < s.rest_power.size(); ++k) REQUIRE(s.rest_power[k] == s2.rest_power[k]);
+  REQUIRE(s.factors.size() == s2.factors.size());
+  for (std::size_t k = 0; k < s.factors.size(); ++k) {
+    REQUIRE(s.factors[k].base == s2.factors[k].base);
+    REQUIRE(s.factors[k].power == s2.factors[k].power);
+  }
+}
+
 /// Both texts taken by the fast reader, with the general reader's exact matrices inside the stored
 /// enclosures, and the same position as classify_exact on the general reader's quadrics.
 void check_pair(const std::string& e_text, const std::string& p_text, bool doubles) {
@@ -52,6 +78,8 @@ void check_pair(const std::string& e_text, const std::string& p_text, bool doubl
   REQUIRE(fp);
   const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid");
   const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
+  check_integer_form(*fe);
+  check_integer_form(*fp);
   check_storage(*fe);
   check_storage(*fp);
   REQUIRE(fe->matrix() == ge.matrix());
@@ -282,6 +310,11 @@ TEST_CASE("fast reader: spheres and paraboloids on the axis over the whole expon
                                ",\"b\":" + num(true) + "}";
     check_pair(e_text, p_text, false);
   }
+  // a and b whose mantissas share factors (3, 3^2 7), are equal, or are powers of 2 and 5.
+  for (const char* ab : {R"("a":0.33,"b":2.1)", R"("a":6.3,"b":0.441)", R"("a":1.7,"b":1.7)", R"("a":0.8,"b":1.25)",
+                         R"("a":3,"b":9e-1)", R"("a":1.5,"b":1.5e1)"})
+    check_pair(R"({"sphere":{"center":[0.1,-0.25,0.125],"radius":1e-2}})",
+               std::string(R"({"vertex":[0,0,-0.5],)") + ab + "}", false);
   // A sum that cancels: the constant entry is exactly zero.
   check_pair(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})", R"({"vertex":[0,0,-2.5e-3],"a":0.5,"b":125})", false);
   REQUIRE(fast_ellipsoid(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})", false)->matrix()(3, 3) == 0);

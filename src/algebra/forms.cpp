@@ -240,47 +240,30 @@ unsigned long remove_fives(mpz_ptr x, unsigned long most) {
 
 }  // namespace
 
-SplitScale split_scale(const Integer& scale) {
-  SplitScale out;
-  out.twos = mpz_scan1(scale.mpz(), 0);
-  const mpz_ptr rest = out.rest.mpz();  // fresh: written in place
-  mpz_tdiv_q_2exp(rest, scale.mpz(), out.twos);
-  out.fives = remove_fives(rest, ~0UL);
-  if (mpz_cmp_ui(rest, 1) == 0) return out;  // doubles and decimal text: nothing to divide by
+namespace {
+
+/// rest^k for k = 0..4 and the rest as its one factor (a scale whose rest is not 1).
+void with_rest_powers(SplitScale& out) {
   out.rest_power.reserve(5);
   out.rest_power.emplace_back(1);
   for (std::size_t k = 1; k < 5; ++k) out.rest_power.push_back(out.rest_power[k - 1] * out.rest);
   out.factors.push_back({out.rest, 1});
-  return out;
 }
 
-SplitScale split_scale(const Integer& scale, const Matrix4& m) {
-  SplitScale out = split_scale(scale);
-  if (out.factors.empty()) return out;
-  // The distinct rests of the denominators (2s and 5s removed), each a root to the power 1 or 2.
-  std::vector<SplitScale::Factor> rests;
-  rests.reserve(4);  // a standard paraboloid has two or three
+/// The rest of `out` as a coprime base of the distinct rests of its denominators (each a root to the
+/// power 1 or 2), with the lcm's powers; `out.factors` stays {rest} unless their product is the rest.
+void factor_rests(const std::vector<SplitScale::Factor>& rests, SplitScale& out) {
   mpz_t r, g;
-  mpz_init(r);
   mpz_init(g);
-  for (const Rational& q : m.a) {
-    const mpz_srcptr d = mpq_denref(q.mpq());
-    if (mpz_cmp_ui(d, 1) == 0) continue;
-    mpz_tdiv_q_2exp(r, d, mpz_scan1(d, 0));
-    remove_fives(r, ~0UL);
-    if (mpz_cmp_ui(r, 1) == 0) continue;
-    unsigned long power = 1;
-    if (mpz_perfect_square_p(r)) {
-      mpz_sqrt(r, r);
-      power = 2;
-    }
-    bool seen = false;
-    for (const SplitScale::Factor& x : rests) seen = seen || (x.power == power && mpz_cmp(x.base.mpz(), r) == 0);
-    if (seen) continue;
-    rests.emplace_back();
-    mpz_set(rests.back().base.mpz(), r);  // a fresh Integer: written through mpz()
-    rests.back().power = power;
+  // One rest, or two coprime ones (a standard paraboloid's mantissas): the rest is their product,
+  // already a coprime base.
+  if (rests.size() == 1 ||
+      (rests.size() == 2 && (mpz_gcd(g, rests[0].base.mpz(), rests[1].base.mpz()), mpz_cmp_ui(g, 1) == 0))) {
+    out.factors = rests;
+    mpz_clear(g);
+    return;
   }
+  mpz_init(r);
   // Factor refinement: two bases with a common factor c become b / c, b' / c and c, until they are
   // pairwise coprime. Every rest stays a product of bases; the product of the bases decreases.
   std::vector<Integer> base;
@@ -335,6 +318,61 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m) {
   }
   mpz_clear(r);
   mpz_clear(g);
+}
+
+}  // namespace
+
+SplitScale split_scale(const Integer& scale) {
+  SplitScale out;
+  out.twos = mpz_scan1(scale.mpz(), 0);
+  const mpz_ptr rest = out.rest.mpz();  // fresh: written in place
+  mpz_tdiv_q_2exp(rest, scale.mpz(), out.twos);
+  out.fives = remove_fives(rest, ~0UL);
+  if (mpz_cmp_ui(rest, 1) == 0) return out;  // doubles and decimal text: nothing to divide by
+  with_rest_powers(out);
+  return out;
+}
+
+SplitScale split_scale(const Integer& scale, const Matrix4& m) {
+  SplitScale out = split_scale(scale);
+  if (out.factors.empty()) return out;
+  // The distinct rests of the denominators (2s and 5s removed), each a root to the power 1 or 2.
+  std::vector<SplitScale::Factor> rests;
+  rests.reserve(4);  // a standard paraboloid has two or three
+  mpz_t r;
+  mpz_init(r);
+  for (const Rational& q : m.a) {
+    const mpz_srcptr d = mpq_denref(q.mpq());
+    if (mpz_cmp_ui(d, 1) == 0) continue;
+    mpz_tdiv_q_2exp(r, d, mpz_scan1(d, 0));
+    remove_fives(r, ~0UL);
+    if (mpz_cmp_ui(r, 1) == 0) continue;
+    unsigned long power = 1;
+    if (mpz_perfect_square_p(r)) {
+      mpz_sqrt(r, r);
+      power = 2;
+    }
+    bool seen = false;
+    for (const SplitScale::Factor& x : rests) seen = seen || (x.power == power && mpz_cmp(x.base.mpz(), r) == 0);
+    if (seen) continue;
+    rests.emplace_back();
+    mpz_set(rests.back().base.mpz(), r);  // a fresh Integer: written through mpz()
+    rests.back().power = power;
+  }
+  mpz_clear(r);
+  factor_rests(rests, out);
+  return out;
+}
+
+SplitScale split_scale(unsigned long twos, unsigned long fives, const Integer& rest,
+                       const std::vector<SplitScale::Factor>& rests) {
+  SplitScale out;
+  out.twos = twos;
+  out.fives = fives;
+  if (mpz_cmp_ui(rest.mpz(), 1) == 0) return out;
+  mpz_set(out.rest.mpz(), rest.mpz());  // a fresh Integer: written through mpz()
+  with_rest_powers(out);
+  factor_rests(rests, out);
   return out;
 }
 
@@ -439,6 +477,12 @@ MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l) {
   }
   l = lcm;
   return out;
+}
+
+void integer_form_of(const detail::QuadricMatrix& q, const IntegerFormOut& out) {
+  if (const detail::ExactSource* source = q.exact_source(); source && source->integer_form(out)) return;
+  out.form = integer_form(q.matrix(), out.l);
+  out.split = split_scale(out.l, q.matrix());
 }
 
 void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l) {

@@ -94,6 +94,12 @@ SplitScale split_scale(const Integer& scale);
 /// four-limb number.
 SplitScale split_scale(const Integer& scale, const Matrix4& m);
 
+/// split_scale(scale, m) from parts of the scale its caller knows: scale = 2^twos 5^fives rest, rest
+/// prime to 10 and the lcm of `rests`, the distinct rests of m's denominators (2s and 5s removed), each
+/// base^power with power 2 for a square.
+SplitScale split_scale(unsigned long twos, unsigned long fives, const Integer& rest,
+                       const std::vector<SplitScale::Factor>& rests);
+
 /// One divisor of divided_by_powers: scale^k, k <= 4.
 struct ScalePower {
   const SplitScale& scale;
@@ -159,6 +165,18 @@ MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l);
 MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l);
 /// The same written into the caller's integers (16 distinct mpz, row-major), e.g. pooled ones.
 void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l);
+
+/// Where integer_form_of writes: integer_form(m, l) and split_scale(l, m) of a quadric's matrix m.
+struct IntegerFormOut {
+  MatrixOf<Integer>& form;
+  Integer& l;
+  SplitScale& split;
+};
+
+/// integer_form(q.matrix(), l) and split_scale(l, q.matrix()): written by q's exact source from the
+/// numbers it was read from when it can (decimal text: the lcm and the split from the exponents and
+/// the mantissas, no rationals and no gcd of long numbers), else from the matrix.
+void integer_form_of(const detail::QuadricMatrix& q, const IntegerFormOut& out);
 
 /// The smallest integer form the *decisions* need (not the evidence: the roots move). With
 /// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive

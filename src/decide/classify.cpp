@@ -682,13 +682,21 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
       for (std::size_t i = 0; i < 16; ++i) to[i] = m.a[i].mpz();
       forms::integer_form(d, to, l);
     };
+    // Each scale's rest kept as its denominators' factors: every gcd of the reduction is short.
+    forms::SplitScale sp, se;
     if (pd && ed) {
       pooled(*pd, pp, lp);
       pooled(*ed, ep, le);
     } else {
       z.emplace();
-      z->pz = pd ? forms::integer_form(*pd, z->lp) : forms::integer_form(p.matrix(), z->lp);
-      z->ez = ed ? forms::integer_form(*ed, z->le) : forms::integer_form(e.matrix(), z->le);
+      if (pd)
+        z->pz = forms::integer_form(*pd, z->lp);
+      else
+        forms::integer_form_of(storage_of(p), {z->pz, z->lp, sp});
+      if (ed)
+        z->ez = forms::integer_form(*ed, z->le);
+      else
+        forms::integer_form_of(storage_of(e), {z->ez, z->le, se});
       lp = z->lp;
       le = z->le;
       for (std::size_t i = 0; i < 16; ++i) {
@@ -698,9 +706,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     }
     const Quartic<PooledInteger> g = characteristic_polynomial<PooledInteger>(pp, ep);
     const Quadratic<PooledInteger> h = special_polynomial<PooledInteger>(pp, ep);
-    // Each scale's rest kept as its denominators' factors: every gcd of the reduction is short.
-    const forms::SplitScale sp = pd ? forms::split_scale(lp) : forms::split_scale(lp, p.matrix());
-    const forms::SplitScale se = ed ? forms::split_scale(le) : forms::split_scale(le, e.matrix());
+    if (pd) sp = forms::split_scale(lp);
+    if (ed) se = forms::split_scale(le);
     Quartic<Integer> f;
     Quadratic<Integer> s;
     reported_polynomials(g, h, sp, se, lp, le, out, f, s);

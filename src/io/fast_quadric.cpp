@@ -10,12 +10,15 @@
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <memory>
 #include <new>
+#include <numeric>
 #include <type_traits>
+#include <vector>
 
 #include "algebra/forms.hpp"
 #include "algebra/shape_filter.hpp"
@@ -367,17 +370,17 @@ Rational exact(const Exact& x, bool doubles) {
   return q;
 }
 
-/// The entry c0^2 + c1^2 + c2^2 - r^2 of Ellipsoid::sphere for decimal numbers: the integer sum over
-/// the smallest power of ten, then reduced by its factors 2 and 5 alone (no rational additions).
-Rational sphere_constant(const std::array<Exact, 16>& n) {
+/// c0^2 + c1^2 + c2^2 - r^2 for decimal numbers as an integer sum over the smallest power of ten:
+/// the sum into `sum`, and `low` with the entry = sum 10^(2 low).
+int sphere_sum(const std::array<Exact, 16>& n, mpz_ptr sum) {
   int low = 0;
   bool any = false;
   for (std::size_t i = 0; i < 4; ++i)
     if (n[i].m != 0) low = any ? std::min(low, n[i].e) : n[i].e, any = true;
-  Rational q;
-  const mpz_ptr sum = mpq_numref(q.mpq()), term = mpq_denref(q.mpq());
-  mpz_t power;
+  mpz_t term, power;
+  mpz_init(term);
   mpz_init(power);
+  mpz_set_ui(sum, 0);
   for (std::size_t i = 0; i < 4; ++i) {
     if (n[i].m == 0) continue;
     mpz_set_ui(term, n[i].m);
@@ -388,11 +391,132 @@ Rational sphere_constant(const std::array<Exact, 16>& n) {
     }
     (i < 3 ? mpz_add : mpz_sub)(sum, sum, term);  // the radius is n[3]
   }
+  mpz_clear(term);
   mpz_clear(power);
-  mpz_set_ui(term, 1);
-  if (mpz_sgn(sum) == 0) return Rational(0);
+  return low;
+}
+
+/// The entry c0^2 + c1^2 + c2^2 - r^2 of Ellipsoid::sphere for decimal numbers: the integer sum over
+/// the smallest power of ten, then reduced by its factors 2 and 5 alone (no rational additions).
+Rational sphere_constant(const std::array<Exact, 16>& n) {
+  Rational q;  // fresh: its mpq is not shared
+  const int low = sphere_sum(n, mpq_numref(q.mpq()));
+  if (mpz_sgn(mpq_numref(q.mpq())) == 0) return Rational(0);
   times_powers_of_2_and_5(q.mpq(), 2 * low, 2 * low);
   return q;
+}
+
+/// 5^k for k < 28 (< 2^64): the powers of five of decimal text, multiplied in one word.
+constexpr unsigned long kMaxWordPower5 = 28;
+constexpr auto kPower5 = [] {
+  std::array<unsigned long, kMaxWordPower5> p{};
+  p[0] = 1;
+  for (std::size_t k = 1; k < kMaxWordPower5; ++k) p[k] = p[k - 1] * 5;
+  return p;
+}();
+
+/// The integer form of an exact matrix of decimal text (forms::integer_form_of) from the numbers read:
+/// each entry of the upper triangle (row by row, as in symmetric()) is (-1)^neg n 2^t2 5^t5 / R^2
+/// with R one of two integers prime to 10 and to n (the rests of the mantissas of a and b of a
+/// standard paraboloid; 1 for every other entry). The lcm of the denominators is 2^u2 5^u5 rest with
+/// u2, u5 the largest negative exponents once n's own 2s and 5s are counted and rest = lcm(R_a^2,
+/// R_b^2): no rationals and no gcd but one of two words.
+class DecimalForm {
+ public:
+  DecimalForm() {
+    for (auto& x : n_) mpz_init(x);
+  }
+  ~DecimalForm() {
+    for (auto& x : n_) mpz_clear(x);
+  }
+  DecimalForm(const DecimalForm&) = delete;
+  DecimalForm& operator=(const DecimalForm&) = delete;
+
+  /// Entry k is (-1)^neg m 10^e (zero for m = 0).
+  void decimal(std::size_t k, std::uint64_t m, int e, bool neg) {
+    mpz_set_ui(n_[k], m);
+    if (neg) mpz_neg(n_[k], n_[k]);
+    t2_[k] = t5_[k] = e;
+  }
+  /// Entry k is n 10^e, n already in place (n_ref(k)).
+  mpz_ptr n_ref(std::size_t k) { return n_[k]; }
+  void exponents(std::size_t k, long t2, long t5) {
+    t2_[k] = t2;
+    t5_[k] = t5;
+  }
+  /// Entry k's denominator has the factor rests_[r]^2 (r = 1, 2).
+  void over_square(std::size_t k, int r, std::uint64_t rest) {
+    which_[k] = r;
+    rest_[r] = rest;
+  }
+
+  void write(const forms::IntegerFormOut& out) {
+    long u2 = 0, u5 = 0;
+    for (std::size_t k = 0; k < 10; ++k) {
+      if (mpz_sgn(n_[k]) == 0) continue;
+      const mp_bitcnt_t twos = mpz_scan1(n_[k], 0);  // n's own 2s and 5s count in the exponents
+      if (twos > 0) mpz_tdiv_q_2exp(n_[k], n_[k], twos);
+      t2_[k] += static_cast<long>(twos);
+      for (; mpz_divisible_ui_p(n_[k], 5); ++t5_[k]) mpz_divexact_ui(n_[k], n_[k], 5);
+      u2 = std::max(u2, -t2_[k]);
+      u5 = std::max(u5, -t5_[k]);
+    }
+    // rest = lcm(R_a^2, R_b^2) = (R_a R_b / g)^2 multiplies the entries without R; the others
+    // rest / R_a^2 = (R_b / g)^2 and rest / R_b^2 = (R_a / g)^2.
+    const std::uint64_t g = std::gcd(rest_[1], rest_[2]);
+    mpz_t cof[3], t;
+    mpz_init_set_ui(cof[1], rest_[2] / g);
+    mpz_init_set_ui(cof[2], rest_[1] / g);
+    mpz_init(t);
+    for (std::size_t r = 1; r < 3; ++r) mpz_mul(cof[r], cof[r], cof[r]);
+    Integer rest;  // fresh: written through mpz()
+    mpz_set_ui(rest.mpz(), rest_[1]);
+    mpz_mul(rest.mpz(), rest.mpz(), rest.mpz());
+    mpz_mul(rest.mpz(), rest.mpz(), cof[1]);
+    mpz_init_set(cof[0], rest.mpz());
+    constexpr std::size_t kAt[10][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {1, 1}, {1, 2}, {1, 3}, {2, 2}, {2, 3}, {3, 3}};
+    for (std::size_t k = 0; k < 10; ++k) {
+      const mpz_ptr z = out.form.a[4 * kAt[k][0] + kAt[k][1]].mpz();  // fresh entries: written in place
+      if (mpz_sgn(n_[k]) == 0) {
+        mpz_set_ui(z, 0);
+      } else {
+        const auto fives = static_cast<unsigned long>(t5_[k] + u5);
+        if (fives < kMaxWordPower5) {
+          mpz_mul_ui(z, n_[k], kPower5[fives]);
+        } else {
+          mpz_ui_pow_ui(t, 5, fives);
+          mpz_mul(z, n_[k], t);
+        }
+        mpz_mul_2exp(z, z, static_cast<unsigned long>(t2_[k] + u2));
+        if (mpz_cmp_ui(cof[which_[k]], 1) != 0) mpz_mul(z, z, cof[which_[k]]);
+      }
+      if (kAt[k][0] != kAt[k][1]) mpz_set(out.form.a[4 * kAt[k][1] + kAt[k][0]].mpz(), z);
+    }
+    const mpz_ptr l = out.l.mpz();  // fresh: written in place
+    mpz_ui_pow_ui(l, 5, static_cast<unsigned long>(u5));
+    mpz_mul_2exp(l, l, static_cast<unsigned long>(u2));
+    mpz_mul(l, l, rest.mpz());
+    std::vector<forms::SplitScale::Factor> rests;
+    for (std::size_t r = 1; r < 3; ++r)
+      if (rest_[r] > 1 && (r == 1 || rest_[2] != rest_[1])) rests.push_back({Integer(rest_[r]), 2});
+    out.split = forms::split_scale(static_cast<unsigned long>(u2), static_cast<unsigned long>(u5), rest, rests);
+    for (auto& x : cof) mpz_clear(x);
+    mpz_clear(t);
+  }
+
+ private:
+  mpz_t n_[10];
+  long t2_[10] = {}, t5_[10] = {};
+  int which_[10] = {};
+  std::uint64_t rest_[3] = {1, 1, 1};
+};
+
+/// The mantissa m without its factors 2 and 5 (R in DecimalForm), and their counts.
+std::uint64_t rest_of(std::uint64_t m, long& twos, long& fives) {
+  twos = __builtin_ctzll(m);
+  m >>= twos;
+  for (fives = 0; m % 5 == 0; ++fives) m /= 5;
+  return m;
 }
 
 /// The symmetric matrix of an upper triangle given row by row (00 01 02 03 11 12 13 22 23 33): each
@@ -437,6 +561,48 @@ class NumberSource final : public relpos::detail::ExactSource {
     const bool minus = recipe_.orientation < 0;
     return symmetric({q(0, minus), q(1, minus), q(2, minus), q(3, minus), q(5, minus), q(6, minus), q(7, minus),
                       q(10, minus), q(11, minus), q(15, minus)});
+  }
+
+  bool integer_form(const forms::IntegerFormOut& out) const override {
+    const auto& n = recipe_.n;
+    if (doubles_) return false;
+    DecimalForm form;
+    switch (recipe_.form) {
+      case Recipe::Form::Sphere: {
+        for (std::size_t k : {0, 4, 7}) form.decimal(k, 1, 0, false);
+        for (std::size_t i = 0; i < 3; ++i) form.decimal(i == 0 ? 3 : i == 1 ? 6 : 8, n[i].m, n[i].e, !n[i].neg);
+        const long low = sphere_sum(n, form.n_ref(9));
+        form.exponents(9, 2 * low, 2 * low);
+        break;
+      }
+      case Recipe::Form::Standard: {
+        if (n[0].m != 0 || n[1].m != 0) return false;  // the general constructor's matrix
+        // 1/a^2 for a = m 10^e = R 2^(e + twos) 5^(e + fives): 2^(-2 (e + twos)) 5^(-2 (e + fives)) / R^2.
+        for (std::size_t i = 0; i < 2; ++i) {
+          long twos = 0, fives = 0;
+          const std::uint64_t r = rest_of(n[3 + i].m, twos, fives);
+          const std::size_t k = i == 0 ? 0 : 4;
+          form.decimal(k, 1, 0, false);
+          form.exponents(k, -2 * (n[3 + i].e + twos), -2 * (n[3 + i].e + fives));
+          form.over_square(k, static_cast<int>(i) + 1, r);
+        }
+        form.decimal(8, 1, 0, true);  // -1/2
+        form.exponents(8, -1, 0);
+        form.decimal(9, n[2].m, n[2].e, n[2].neg);
+        break;
+      }
+      case Recipe::Form::Matrix: {
+        const bool minus = recipe_.orientation < 0;
+        constexpr std::size_t kUpper[10] = {0, 1, 2, 3, 5, 6, 7, 10, 11, 15};
+        for (std::size_t k = 0; k < 10; ++k) {
+          const Exact& x = n[kUpper[k]];
+          form.decimal(k, x.m, x.e, x.neg != minus);
+        }
+        break;
+      }
+    }
+    form.write(out);
+    return true;
   }
 
  private:

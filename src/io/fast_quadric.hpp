@@ -11,7 +11,9 @@
 // asks for it (QuadricMatrix's ExactSource), from the exact values of the numbers read, by the
 // constructor the general reader calls for the form (or, for a matrix, with the sign normalization
 // from_matrix applies): the rationals and the evidence are those of the general path
-// (tests/test_fast_reader.cpp compares them).
+// (tests/test_fast_reader.cpp compares them). For decimal numbers the same source also writes the
+// evidence's integer form and its scale's split (forms::integer_form_of) from the exponents and
+// mantissas, without the rationals.
 //
 // Forms: a 4x4 array or {"matrix": 4x4} (ellipsoid or paraboloid; an exactly symmetric matrix whose
 // shape the interval filter certifies, and for a paraboloid det Q3 = 0 by exactly-zero entries),

@@ -15,6 +15,10 @@ using DoubleMatrix4 = std::array<double, 16>;
 class Ellipsoid;
 class Paraboloid;
 
+namespace forms {
+struct IntegerFormOut;
+}
+
 namespace detail {
 
 /// Certified double enclosures lo[i] <= entry i <= hi[i] of a matrix (row-major) whose entries are
@@ -36,6 +40,9 @@ class ExactSource {
  public:
   virtual ~ExactSource() = default;
   virtual Matrix4 build() const = 0;
+  /// The integer form of build()'s matrix and its scale's split (forms::integer_form_of), written
+  /// without building the matrix when the source can; false (nothing written) when it cannot.
+  virtual bool integer_form(const forms::IntegerFormOut& out) const = 0;
 };
 
 /// The matrix of a validated quadric: exact rationals, and the doubles when every entry is one.
@@ -95,6 +102,8 @@ class QuadricMatrix {
   const DoubleMatrix4* filter_doubles() const { return (flags_ & kNormalized) ? &v_ : nullptr; }
   /// Enclosures of the entries when the quadric was made from them (null otherwise).
   const EnclosureMatrix4* enclosure() const { return cold_ ? &cold_->enclosure : nullptr; }
+  /// The exact source of a quadric made from enclosures (null otherwise).
+  const ExactSource* exact_source() const { return cold_ ? cold_->source.get() : nullptr; }
   /// True when the primitive integer form is known to be within kMaxNormalizedBits without
   /// building it: doubles, or a source whose reader bounds its numbers.
   bool within_size_limit() const { return has_doubles() || cold_ != nullptr; }
