@@ -51,7 +51,7 @@ void check_integer_form(const Q& q) {
   relpos::forms::MatrixOf<Integer> m;
   Integer l, l2;
   relpos::forms::SplitScale s;
-  relpos::forms::integer_form_of(storage_of(q), {m, l, s});
+  relpos::forms::integer_form_of(storage_of(q), {relpos::forms::entries(m), l, s});
   const relpos::forms::MatrixOf<Integer> m2 = relpos::forms::integer_form(q.matrix(), l2);
   const relpos::forms::SplitScale s2 = relpos::forms::split_scale(l2, q.matrix());
   REQUIRE(l == l2);

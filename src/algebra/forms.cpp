@@ -481,7 +481,8 @@ MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l) {
 
 void integer_form_of(const detail::QuadricMatrix& q, const IntegerFormOut& out) {
   if (const detail::ExactSource* source = q.exact_source(); source && source->integer_form(out)) return;
-  out.form = integer_form(q.matrix(), out.l);
+  const MatrixOf<Integer> form = integer_form(q.matrix(), out.l);
+  for (std::size_t i = 0; i < 16; ++i) mpz_set(out.form[i], form.a[i].mpz());
   out.split = split_scale(out.l, q.matrix());
 }
 
@@ -512,9 +513,7 @@ void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, In
 
 MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l) {
   MatrixOf<Integer> out;  // fresh entries: written through mpz()
-  std::array<mpz_ptr, 16> z;
-  for (std::size_t i = 0; i < 16; ++i) z[i] = out.a[i].mpz();
-  integer_form(d, z, l);
+  integer_form(d, entries(out), l);
   return out;
 }
 

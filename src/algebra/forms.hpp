@@ -166,9 +166,19 @@ MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l);
 /// The same written into the caller's integers (16 distinct mpz, row-major), e.g. pooled ones.
 void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l);
 
-/// Where integer_form_of writes: integer_form(m, l) and split_scale(l, m) of a quadric's matrix m.
+/// The 16 entries' integers (row-major) of a matrix of fresh Integers (their values not shared) or
+/// PooledIntegers, for the functions that write a form in place.
+template <class NT>
+std::array<mpz_ptr, 16> entries(MatrixOf<NT>& m) {
+  std::array<mpz_ptr, 16> out;
+  for (std::size_t i = 0; i < 16; ++i) out[i] = m.a[i].mpz();
+  return out;
+}
+
+/// Where integer_form_of writes: integer_form(m, l) into 16 distinct integers (row-major, e.g.
+/// entries() of pooled ones) and split_scale(l, m) of a quadric's matrix m.
 struct IntegerFormOut {
-  MatrixOf<Integer>& form;
+  std::array<mpz_ptr, 16> form;
   Integer& l;
   SplitScale& split;
 };

@@ -4,6 +4,7 @@
 #include <gmp.h>
 #include <mpfr.h>
 
+#include <algorithm>
 #include <cfenv>
 #include <cfloat>
 #include <cmath>
@@ -552,16 +553,35 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
   // in place, without a temporary handle per coefficient.
   for (unsigned long i = 0; i < 5; ++i) forms::divided_by_powers(g[i].mpz(), {{sp, i}, {se, 4 - i}}, out.f[i].mpq());
   for (unsigned long i = 0; i < 3; ++i) forms::divided_by_powers(h[i].mpz(), {{sp, i}, {se, 3 - i}}, out.s[i].mpq());
+  // S/lp and S/le from the splits, without a gcd: S = 2^max 5^max lcm(rest_p, rest_e), and the lcm
+  // of the rests is one of them when the other is 1 or they are equal (doubles, decimal text, a
+  // standard paraboloid with decimal a and b beside a decimal ellipsoid). Then
+  // S/lp = 2^ta 5^fa rest_a with rest_a = rest_e / gcd = rest_e or 1, and the same for S/le.
+  const bool p_rest_one = mpz_cmp_ui(sp.rest.mpz(), 1) == 0, e_rest_one = mpz_cmp_ui(se.rest.mpz(), 1) == 0;
+  if (p_rest_one || e_rest_one || mpz_cmp(sp.rest.mpz(), se.rest.mpz()) == 0) {
+    const unsigned long twos = std::max(sp.twos, se.twos), fives = std::max(sp.fives, se.fives);
+    const unsigned long ta = twos - sp.twos, tb = twos - se.twos, fa = fives - sp.fives, fb = fives - se.fives;
+    const forms::SplitScale* rest_a = p_rest_one && !e_rest_one ? &se : nullptr;  // its rest_power: rest_a^k
+    const forms::SplitScale* rest_b = e_rest_one && !p_rest_one ? &sp : nullptr;
+    PooledInteger five_power;
+    auto times = [&](const PooledInteger& z, unsigned long i, unsigned long j, Integer& r) {  // z (S/lp)^i (S/le)^j
+      const mpz_ptr to = r.mpz();  // a fresh Integer: written in place
+      mpz_mul_2exp(to, z.mpz(), ta * i + tb * j);
+      if (const unsigned long k = fa * i + fb * j; k > 0) {
+        mpz_ui_pow_ui(five_power.mpz(), 5, k);
+        mpz_mul(to, to, five_power.mpz());
+      }
+      if (rest_a && i > 0) mpz_mul(to, to, rest_a->rest_power[i].mpz());
+      if (rest_b && j > 0) mpz_mul(to, to, rest_b->rest_power[j].mpz());
+    };
+    for (unsigned long i = 0; i < 5; ++i) times(g[i], i, 4 - i, fi[i]);
+    for (unsigned long i = 0; i < 3; ++i) times(h[i], i, 3 - i, si[i]);
+    return;
+  }
   PooledInteger common, a, b;
   mpz_lcm(common.mpz(), lp.mpz(), le.mpz());
   mpz_divexact(a.mpz(), common.mpz(), lp.mpz());
   mpz_divexact(b.mpz(), common.mpz(), le.mpz());
-  if (mpz_popcount(a.mpz()) == 1 && mpz_popcount(b.mpz()) == 1) {  // doubles: S/lp and S/le are powers of 2
-    const mp_bitcnt_t ka = mpz_scan1(a.mpz(), 0), kb = mpz_scan1(b.mpz(), 0);
-    for (std::size_t i = 0; i < 5; ++i) mpz_mul_2exp(fi[i].mpz(), g[i].mpz(), ka * i + kb * (4 - i));
-    for (std::size_t i = 0; i < 3; ++i) mpz_mul_2exp(si[i].mpz(), h[i].mpz(), ka * i + kb * (3 - i));
-    return;
-  }
   PooledInteger pa[5], pb[5];  // powers of S/lp and S/le
   pa[0] = pb[0] = PooledInteger(1);
   for (std::size_t i = 1; i < 5; ++i) pa[i] = pa[i - 1] * a, pb[i] = pb[i - 1] * b;
@@ -670,40 +690,22 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // Fresh numbers: reported_polynomials writes them in place.
     for (Rational& c : out.f) c = Rational();
     for (Rational& c : out.s) c = Rational();
-    // The integer forms on pooled integers (the generic formulas without heap traffic for
-    // temporaries): from the doubles when the entries are doubles, without a rational matrix;
-    // else kept as Integers for the certificate's exact signs and points too.
-    std::optional<certificate::IntegerForms> z;
-    Integer lp, le;
+    // The integer forms written straight into pooled integers (the generic formulas without heap
+    // traffic for temporaries): from the doubles when the entries are doubles, without a rational
+    // matrix; else from the quadric's exact source, with the scale's split (each scale's rest kept as
+    // its denominators' factors: every gcd of the reduction is short).
+    Integer lp, le;                                                         // fresh: written in place
     const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();  // copies: read once
     MatrixOf<PooledInteger> pp, ep;
-    auto pooled = [](const DoubleMatrix4& d, MatrixOf<PooledInteger>& m, Integer& l) {
-      std::array<mpz_ptr, 16> to;
-      for (std::size_t i = 0; i < 16; ++i) to[i] = m.a[i].mpz();
-      forms::integer_form(d, to, l);
-    };
-    // Each scale's rest kept as its denominators' factors: every gcd of the reduction is short.
     forms::SplitScale sp, se;
-    if (pd && ed) {
-      pooled(*pd, pp, lp);
-      pooled(*ed, ep, le);
-    } else {
-      z.emplace();
-      if (pd)
-        z->pz = forms::integer_form(*pd, z->lp);
-      else
-        forms::integer_form_of(storage_of(p), {z->pz, z->lp, sp});
-      if (ed)
-        z->ez = forms::integer_form(*ed, z->le);
-      else
-        forms::integer_form_of(storage_of(e), {z->ez, z->le, se});
-      lp = z->lp;
-      le = z->le;
-      for (std::size_t i = 0; i < 16; ++i) {
-        pp.a[i] = PooledInteger(z->pz.a[i]);
-        ep.a[i] = PooledInteger(z->ez.a[i]);
-      }
-    }
+    if (pd)
+      forms::integer_form(*pd, forms::entries(pp), lp);
+    else
+      forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp});
+    if (ed)
+      forms::integer_form(*ed, forms::entries(ep), le);
+    else
+      forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se});
     const Quartic<PooledInteger> g = characteristic_polynomial<PooledInteger>(pp, ep);
     const Quadratic<PooledInteger> h = special_polynomial<PooledInteger>(pp, ep);
     if (pd) sp = forms::split_scale(lp);
@@ -715,8 +717,19 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
     fill_full_evidence(std::move(rs), g, h, sp, se, lp, le, out, ls);
-    // The certificate reuses f, s, lambda_s, the isolation, the integer forms (from the doubles, or with their scales)
-    // and S^4 f.
+    // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f. The forms
+    // with their scales as Integers only where it reads them (the points of C, TE and TI, not the
+    // multipliers of E and I) and cannot take them from the doubles.
+    std::optional<certificate::IntegerForms> z;
+    if (!(pd && ed) && v.position != Position::E && v.position != Position::I) {
+      z.emplace();
+      for (std::size_t i = 0; i < 16; ++i) {
+        mpz_set(z->pz.a[i].mpz(), pp.a[i].mpz());  // fresh entries: written in place
+        mpz_set(z->ez.a[i].mpz(), ep.a[i].mpz());
+      }
+      z->lp = lp;
+      z->le = le;
+    }
     certificate::Known known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f};
     if (pd && ed) {
       known.ez_of_doubles = &ep;

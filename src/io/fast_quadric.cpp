@@ -476,7 +476,7 @@ class DecimalForm {
     mpz_init_set(cof[0], rest.mpz());
     constexpr std::size_t kAt[10][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {1, 1}, {1, 2}, {1, 3}, {2, 2}, {2, 3}, {3, 3}};
     for (std::size_t k = 0; k < 10; ++k) {
-      const mpz_ptr z = out.form.a[4 * kAt[k][0] + kAt[k][1]].mpz();  // fresh entries: written in place
+      const mpz_ptr z = out.form[4 * kAt[k][0] + kAt[k][1]];
       if (mpz_sgn(n_[k]) == 0) {
         mpz_set_ui(z, 0);
       } else {
@@ -490,7 +490,7 @@ class DecimalForm {
         mpz_mul_2exp(z, z, static_cast<unsigned long>(t2_[k] + u2));
         if (mpz_cmp_ui(cof[which_[k]], 1) != 0) mpz_mul(z, z, cof[which_[k]]);
       }
-      if (kAt[k][0] != kAt[k][1]) mpz_set(out.form.a[4 * kAt[k][1] + kAt[k][0]].mpz(), z);
+      if (kAt[k][0] != kAt[k][1]) mpz_set(out.form[4 * kAt[k][1] + kAt[k][0]], z);
     }
     const mpz_ptr l = out.l.mpz();  // fresh: written in place
     mpz_ui_pow_ui(l, 5, static_cast<unsigned long>(u5));
