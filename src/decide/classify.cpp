@@ -598,8 +598,8 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
 /// computed once here, for rho and for the certificate, from h: with mu = lambda le / lp,
 /// s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales),
 /// rational iff Disc(h) is a square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2): two short
-/// canonicalisations. A rational rho comes from g and h directly (one canonicalisation); an
-/// irrational one only as a double, from the reduced f and s.
+/// canonicalisations. A rational rho comes from the reduced f, s and lambda_s; an irrational one
+/// only as a double, from the reduced f and s.
 void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
                         const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp, const Integer& le,
                         Classification& out, anysize::LambdaS& ls) {
@@ -628,22 +628,15 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
   }
   // k = (f0 s2) / (f4 s0)
   if (ls.rational()) {
-    // rho = k / lambda_s^2 with k = g0 h2 lp^2 / (g4 h0 le^2) and lambda_s = (lp / le) (R - h1) / (2 h2):
-    // the scales cancel, rho = 4 g0 h2^3 / (g4 h0 (R - h1)^2), one canonicalisation of integers.
+    // rho = (f0 / f4) (s2 / s0) / lambda_s^2 from the reduced coefficients and lambda_s: GMP's
+    // products of fractions in lowest terms take gcds of their short parts only, where reducing
+    // 4 g0 h2^3 / (g4 h0 (R - h1)^2) is one gcd of numbers ten times longer (mostly the scales).
     Rational rho;  // fresh: written in place
-    const mpz_ptr n = mpq_numref(rho.mpq()), d = mpq_denref(rho.mpq());
-    mpz_mul(n, h[2].mpz(), h[2].mpz());
-    mpz_mul(n, n, h[2].mpz());
-    mpz_mul(n, n, g[0].mpz());
-    mpz_mul_2exp(n, n, 2);
-    mpz_mul(d, root_minus_h1.mpz(), root_minus_h1.mpz());
-    mpz_mul(d, d, h[0].mpz());
-    mpz_mul(d, d, g[4].mpz());
-    if (mpz_sgn(d) < 0) {
-      mpz_neg(n, n);
-      mpz_neg(d, d);
-    }
-    mpq_canonicalize(rho.mpq());
+    const mpq_ptr r = rho.mpq();
+    mpq_div(r, out.f[0].mpq(), out.f[4].mpq());  // f4 = det P, s0 = det M and lambda_s are not 0
+    mpq_mul(r, r, out.s[2].mpq());
+    mpq_div(r, r, out.s[0].mpq());
+    mpq_mul(r, r, forms::inverse_square(ls.value.a).mpq());
     out.rho = rho;
     out.rho_approx = nearest_double(*out.rho);
   } else {
