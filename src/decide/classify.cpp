@@ -597,9 +597,8 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
 /// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square. lambda_s is
 /// computed once here, for rho and for the certificate, from h: with mu = lambda le / lp,
 /// s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales),
-/// rational iff Disc(h) is a square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2): two short
-/// canonicalisations. A rational rho comes from the reduced f, s and lambda_s; an irrational one
-/// only as a double, from the reduced f and s.
+/// rational iff Disc(h) is a square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2). A rational rho comes from the
+/// reduced f, s and lambda_s; an irrational one only as a double, from the reduced f and s.
 void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
                         const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp, const Integer& le,
                         Classification& out, anysize::LambdaS& ls) {
@@ -610,18 +609,17 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
   mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
   mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
   mpz_submul_ui(disc.mpz(), t.mpz(), 4);
-  PooledInteger root_minus_h1;  // R - h1 when Disc(h) = R^2
   if (h[2].sign() > 0 && mpz_sgn(disc.mpz()) >= 0 && mpz_perfect_square_p(disc.mpz())) {
-    Rational q, r;  // fresh: written in place; canonicalised by mpq_canonicalize and the product
+    // lambda_s = (R - h1) lp / (2 h2 le) = ((R - h1) / (lp le^2)) / (2 s2), as h2 = lp^2 le s2: the
+    // first quotient reduced along the split scales, the second one a quotient of short fractions.
+    PooledInteger root_minus_h1;
     mpz_sqrt(root_minus_h1.mpz(), disc.mpz());
     mpz_sub(root_minus_h1.mpz(), root_minus_h1.mpz(), h[1].mpz());
-    mpz_set(mpq_numref(q.mpq()), root_minus_h1.mpz());
-    mpz_mul_2exp(mpq_denref(q.mpq()), h[2].mpz(), 1);
-    mpq_canonicalize(q.mpq());
-    mpz_set(mpq_numref(r.mpq()), lp.mpz());
-    mpz_set(mpq_denref(r.mpq()), le.mpz());
-    mpq_canonicalize(r.mpq());
-    ls = anysize::rational_lambda_s(q * r);
+    Rational l;  // fresh: written in place
+    forms::divided_by_powers(root_minus_h1.mpz(), {{sp, 1}, {se, 2}}, l.mpq());
+    mpq_div(l.mpq(), l.mpq(), out.s[2].mpq());
+    mpq_div_2exp(l.mpq(), l.mpq(), 1);
+    ls = anysize::rational_lambda_s(l);
   } else {
     ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3),
                               forms::divided_by_powers(disc.mpz(), {{sp, 2}, {se, 4}}));
