@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "algebra/between.hpp"
+#include "algebra/exact_pencil.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "algebra/roots.hpp"
@@ -18,6 +19,8 @@
 
 using namespace rt;
 using relpos::characteristic_polynomial;
+using relpos::exact_characteristic_polynomial;
+using relpos::exact_special_polynomial;
 using relpos::special_polynomial;
 
 namespace {
@@ -145,6 +148,31 @@ TEST_CASE("the generic pencil code gives the same polynomial over Z, Q and doubl
     const auto sz = special_polynomial<Integer>(MI{pi}, MI{ei});
     const auto sp = special_polynomial<relpos::PooledInteger>(pp, ep);
     for (std::size_t k = 0; k < 3; ++k) CHECK(sp[k].to_integer() == sz[k]);
+    // The exact-only forms (exact_pencil.hpp), fused and generic, and on entries of some 200 bits
+    // (GMP's multi-limb addmul and submul, signs of every kind).
+    const auto fe = exact_characteristic_polynomial<relpos::PooledInteger>(pp, ep);
+    const auto se = exact_special_polynomial<relpos::PooledInteger>(pp, ep);
+    const auto fei = exact_characteristic_polynomial<Integer>(MI{pi}, MI{ei});
+    for (std::size_t k = 0; k < 5; ++k) CHECK(fe[k].to_integer() == fz[k]);
+    for (std::size_t k = 0; k < 5; ++k) CHECK(fei[k] == fz[k]);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(se[k].to_integer() == sz[k]);
+    Integer big(1);
+    mpz_mul_2exp(big.mpz(), big.mpz(), 200);
+    big = big + Integer(g.uniform(1, 1000000));
+    MI pl{pi}, el{ei};
+    for (std::size_t k = 0; k < 16; ++k) {
+      pl.a[k] = pl.a[k] * big + Integer(g.uniform(-9, 9) * (k % 5 == 0));  // symmetric: k % 5 == 0 on the diagonal
+      el.a[k] = el.a[k] * big * big;
+    }
+    MP ppl, epl;
+    for (std::size_t k = 0; k < 16; ++k)
+      ppl.a[k] = relpos::PooledInteger(pl.a[k]), epl.a[k] = relpos::PooledInteger(el.a[k]);
+    const auto fl = characteristic_polynomial<Integer>(pl, el);
+    const auto fel = exact_characteristic_polynomial<relpos::PooledInteger>(ppl, epl);
+    for (std::size_t k = 0; k < 5; ++k) CHECK(fel[k].to_integer() == fl[k]);
+    const auto sl = special_polynomial<Integer>(pl, el);
+    const auto sel = exact_special_polynomial<relpos::PooledInteger>(ppl, epl);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(sel[k].to_integer() == sl[k]);
   }
 }
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "algebra/exact_pencil.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/rounding.hpp"
 #include "algebra/shape_filter.hpp"
@@ -697,8 +698,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
       forms::integer_form(*ed, forms::entries(ep), le);
     else
       forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se});
-    const Quartic<PooledInteger> g = characteristic_polynomial<PooledInteger>(pp, ep);
-    const Quadratic<PooledInteger> h = special_polynomial<PooledInteger>(pp, ep);
+    const Quartic<PooledInteger> g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
+    const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
     if (pd) sp = forms::split_scale(lp);
     if (ed) se = forms::split_scale(le);
     Quartic<Integer> f;
