@@ -1,11 +1,14 @@
 // The fast reader of batch lines (src/io/fast_quadric.hpp) against the general reader: a quadric it
 // takes has enclosures that contain the exact entries, the same exact matrix and the same position;
-// a text it does not take (not JSON, another form, long numbers) is left to the general reader.
+// a text it does not take (not JSON, another form, long numbers) is left to the general reader. The
+// full evidence from its integer forms, and from forms whose scales' rests lie in either matrix.
 #include <catch2/catch.hpp>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "algebra/forms.hpp"
+#include "algebra/pencil.hpp"
 #include "io/fast_quadric.hpp"
 #include "io/json_read.hpp"
 #include "relpos/classify.hpp"
@@ -68,6 +71,41 @@ void check_integer_form(const Q& q) {
   }
 }
 
+/// The full evidence of a pair read by the fast reader (integer forms from the numbers read, reduced
+/// along their split scales) against rational arithmetic on the general reader's matrices: f and s
+/// coefficient by coefficient, rho = (f0 / f4) (s2 / s0) / lambda_s^2 with lambda_s the root of s
+/// nearest 0 when that is rational (always for a sphere and a standard paraboloid: s factors), the
+/// roots and the certificate, and the whole report but the deciding stage as the general reader's
+/// quadrics give it.
+void check_full_evidence(const Ellipsoid& fe, const Paraboloid& fp, const Ellipsoid& ge, const Paraboloid& gp) {
+  using relpos::Rational;
+  const relpos::Classification c = relpos::classify(fe, fp, relpos::Evidence::Full);
+  const auto f = relpos::characteristic_polynomial<Rational>(gp.matrix(), ge.matrix());
+  const auto s = relpos::special_polynomial<Rational>(gp.matrix(), ge.matrix());
+  for (std::size_t k = 0; k < 5; ++k) REQUIRE(c.f[k] == f[k]);
+  for (std::size_t k = 0; k < 3; ++k) REQUIRE(c.s[k] == s[k]);
+  const Rational disc = s[1] * s[1] - 4 * s[2] * s[0];
+  Rational root;  // sqrt(disc) when disc is a square (in lowest terms: numerator and denominator are)
+  mpz_sqrt(mpq_numref(root.mpq()), mpq_numref(disc.mpq()));
+  mpz_sqrt(mpq_denref(root.mpq()), mpq_denref(disc.mpq()));
+  REQUIRE(c.rho.has_value() == (root * root == disc));
+  if (c.rho) {
+    const Rational lambda_s = (root - s[1]) / (2 * s[2]);
+    REQUIRE(*c.rho == f[0] * s[2] / (f[4] * s[0] * lambda_s * lambda_s));
+  }
+  // The roots, isolated on the common-lcm integer form S^4 f (S from the split scales), are f's: an
+  // exact one is a root, a simple one changes f's sign across its interval; the certificate holds.
+  auto at = [&](const Rational& x) { return (((f[4] * x + f[3]) * x + f[2]) * x + f[1]) * x + f[0]; };
+  for (const relpos::RealRoot& r : c.roots) {
+    if (r.exact) REQUIRE(at(*r.exact) == 0);
+    if (!r.exact && r.multiplicity_f == 1) REQUIRE(CGAL::sign(at(r.lower)) * CGAL::sign(at(r.upper)) < 0);
+  }
+  REQUIRE_FALSE(relpos::verify_certificate(ge, gp, c.verdict.position, c.certificate));
+  relpos::Classification g = relpos::classify(ge, gp, relpos::Evidence::Full);
+  g.verdict.stage = c.verdict.stage;  // the stage that decided depends on the reader (enclosures or exact)
+  REQUIRE(relpos::io::classification_json_text(c) == relpos::io::classification_json_text(g));
+}
+
 /// Both texts taken by the fast reader, with the general reader's exact matrices inside the stored
 /// enclosures, and the same position as classify_exact on the general reader's quadrics.
 void check_pair(const std::string& e_text, const std::string& p_text, bool doubles) {
@@ -85,6 +123,15 @@ void check_pair(const std::string& e_text, const std::string& p_text, bool doubl
   REQUIRE(fe->matrix() == ge.matrix());
   REQUIRE(fp->matrix() == gp.matrix());
   REQUIRE(relpos::decide_position(*fe, *fp).position == relpos::classify_exact(ge, gp).verdict.position);
+}
+
+/// check_pair with the full evidence (check_full_evidence).
+void check_pair_evidence(const std::string& e_text, const std::string& p_text, bool doubles) {
+  check_pair(e_text, p_text, doubles);
+  INFO(e_text << "  " << p_text << (doubles ? "  (--numbers double)" : ""));
+  check_full_evidence(*fast_ellipsoid(e_text, doubles), *fast_paraboloid(p_text, doubles),
+                      relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid"),
+                      relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid"));
 }
 
 /// The decimal d 10^exponent, d of `digits` random significant digits, in one of the spellings JSON
@@ -131,7 +178,7 @@ TEST_CASE("fast reader: spheres and standard paraboloids agree with the general 
                                "\":" + vec3(num(false), num(false), num(false)) + ",\"radius\":" + num(true) + "}}";
     const std::string p_text =
         "{\"vertex\":" + vec3(num(false), num(false), num(false)) + ",\"a\":" + num(true) + ",\"b\":" + num(true) + "}";
-    check_pair(e_text, p_text, doubles);
+    check_pair_evidence(e_text, p_text, doubles);
     ++taken;
   }
   REQUIRE(taken == 400);
@@ -241,6 +288,32 @@ TEST_CASE("fast reader: its numbers keep the normalized size far below the limit
   relpos::check_normalized_pair_size(*e, *p);  // does not build the matrices, does not throw
 }
 
+TEST_CASE("full evidence with scales whose rests lie in either matrix or in both", "[io][fast]") {
+  // S = lcm(lp, le) from the split scales: the rest (the scale without its 2s and 5s) in P only (a
+  // standard paraboloid with decimal a and b beside a decimal sphere), in E only, in both, in neither.
+  using relpos::Rational;
+  relpos::Matrix3 axes;  // E: the image of the unit ball under diag(3/2, 7/4, 1): M = diag(4/9, 16/49, 1)
+  axes(0, 0) = Rational(3, 2);
+  axes(1, 1) = Rational(7, 4);
+  axes(2, 2) = Rational(1);
+  // Crossing the paraboloid, and below it (separated: f has two positive roots, isolated on S^4 f).
+  const relpos::Vector3 crossing{Rational(1, 10), Rational(-1, 5), Rational(3, 10)};
+  const relpos::Vector3 below{Rational(1, 10), Rational(-1, 5), Rational(-5)};
+  std::vector<Ellipsoid> es;
+  for (const relpos::Vector3& centre : {crossing, below}) {
+    es.push_back(Ellipsoid::from_map(centre, axes));
+    es.push_back(Ellipsoid::sphere(centre, Rational(1, 2)));
+  }
+  const relpos::Vector3 vertex{Rational(0), Rational(0), Rational(-1, 2)};
+  for (const Ellipsoid& e : es)
+    for (const auto& ab :
+         {std::make_pair(Rational(1, 2), Rational(2)), std::make_pair(Rational(3, 10), Rational(7, 10)),
+          std::make_pair(Rational(3, 2), Rational(7, 4))}) {
+      const Paraboloid p = Paraboloid::standard(vertex, ab.first, ab.second);
+      check_full_evidence(e, p, e, p);
+    }
+}
+
 TEST_CASE("fast reader: long digit runs, at most 19 significant digits, zeros", "[io][fast]") {
   // Runs of eight digits and more are read eight at a time: around that and the 19-digit bound, the
   // numbers taken are the general reader's, and more significant digits go to the general reader.
@@ -308,14 +381,15 @@ TEST_CASE("fast reader: spheres and paraboloids on the axis over the whole expon
         "{\"sphere\":{\"center\":" + vec3(c, trial % 3 ? num(false) : "0", num(false)) + ",\"radius\":" + r + "}}";
     const std::string p_text = "{\"vertex\":" + vec3("0", "0", trial % 4 ? num(false) : "0") + ",\"a\":" + num(true) +
                                ",\"b\":" + num(true) + "}";
-    check_pair(e_text, p_text, false);
+    check_pair_evidence(e_text, p_text, false);
   }
   // a and b whose mantissas share factors (3, 3^2 7), are equal, or are powers of 2 and 5.
   for (const char* ab : {R"("a":0.33,"b":2.1)", R"("a":6.3,"b":0.441)", R"("a":1.7,"b":1.7)", R"("a":0.8,"b":1.25)",
                          R"("a":3,"b":9e-1)", R"("a":1.5,"b":1.5e1)"})
-    check_pair(R"({"sphere":{"center":[0.1,-0.25,0.125],"radius":1e-2}})",
-               std::string(R"({"vertex":[0,0,-0.5],)") + ab + "}", false);
+    check_pair_evidence(R"({"sphere":{"center":[0.1,-0.25,0.125],"radius":1e-2}})",
+                        std::string(R"({"vertex":[0,0,-0.5],)") + ab + "}", false);
   // A sum that cancels: the constant entry is exactly zero.
-  check_pair(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})", R"({"vertex":[0,0,-2.5e-3],"a":0.5,"b":125})", false);
+  check_pair_evidence(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})",
+                      R"({"vertex":[0,0,-2.5e-3],"a":0.5,"b":125})", false);
   REQUIRE(fast_ellipsoid(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})", false)->matrix()(3, 3) == 0);
 }
