@@ -630,10 +630,12 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
     // rho = (f0 / f4) (s2 / s0) / lambda_s^2 from the reduced coefficients and lambda_s: GMP's
     // products of fractions in lowest terms take gcds of their short parts only, where reducing
     // 4 g0 h2^3 / (g4 h0 (R - h1)^2) is one gcd of numbers ten times longer (mostly the scales).
+    // s2 / f4 first: both are over powers of lp (h2 / (lp^2 le), g4 / lp^4), so their quotient
+    // cancels most of both and the later gcds see short numbers (the order sets their sizes).
     Rational rho;  // fresh: written in place
     const mpq_ptr r = rho.mpq();
-    mpq_div(r, out.f[0].mpq(), out.f[4].mpq());  // f4 = det P, s0 = det M and lambda_s are not 0
-    mpq_mul(r, r, out.s[2].mpq());
+    mpq_div(r, out.s[2].mpq(), out.f[4].mpq());  // f4 = det P, s0 = det M and lambda_s are not 0
+    mpq_mul(r, r, out.f[0].mpq());
     mpq_div(r, r, out.s[0].mpq());
     mpq_mul(r, r, forms::inverse_square(ls.value.a).mpq());
     out.rho = rho;
