@@ -199,7 +199,7 @@ using View = forms::DoubleView;
 DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
   const Bounds& b = bounds();
   const View p{pn}, e{en};
-  auto f = characteristic_polynomial<double>(p, e);
+  auto f = characteristic_polynomial_lanes(pn, en);  // bit for bit the generic template
   auto s = special_polynomial<double>(p, e);
   double ef[5], es[3];
   for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
@@ -254,7 +254,7 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   // 5-12 % slower on decide_position (benchmarks/regime_bench).
   const Bounds& b = bounds();
   const View p{pn}, e{en};
-  auto f = characteristic_polynomial<double>(p, e);
+  auto f = characteristic_polynomial_lanes(pn, en);  // bit for bit the generic template
   double ef[5];
   for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
   const double step = balancing_step(f);
