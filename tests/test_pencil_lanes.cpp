@@ -27,8 +27,8 @@ std::uint64_t bits(double x) {
 bool same_bits(double x, double y) { return bits(x) == bits(y) || (std::isnan(x) && std::isnan(y)); }
 
 void check_same(const DoubleMatrix4& p, const DoubleMatrix4& e) {
-  const auto scalar = relpos::characteristic_polynomial<double>(relpos::forms::DoubleView{p},
-                                                                relpos::forms::DoubleView{e});
+  const auto scalar =
+      relpos::characteristic_polynomial<double>(relpos::forms::DoubleView{p}, relpos::forms::DoubleView{e});
   const auto lanes = relpos::characteristic_polynomial_lanes(p, e);
   for (std::size_t i = 0; i < 5; ++i) {
     INFO("coefficient " << i << ": " << scalar[i] << " vs " << lanes[i]);
@@ -70,7 +70,8 @@ TEST_CASE("the two-lane pencil equals the scalar template bit for bit", "[pencil
   // Entries in [1/2, 1) as the static filter sees them, wide exponent spreads (cancellation and
   // absorption in every sum), sparse matrices with signed zeros, and extremes whose products of
   // four entries stay normal (2^+-250).
-  const Range ranges[] = {{-1, -1, 0.0}, {-30, 0, 0.0}, {-60, 60, 0.1}, {-3, 3, 0.5}, {-250, 250, 0.2}, {240, 250, 0.0}};
+  const Range ranges[] = {{-1, -1, 0.0}, {-30, 0, 0.0},    {-60, 60, 0.1},
+                          {-3, 3, 0.5},  {-250, 250, 0.2}, {240, 250, 0.0}};
   for (const Range& r : ranges)
     for (int i = 0; i < 4000; ++i) {
       const bool symmetric = i % 2 == 0;
