@@ -199,4 +199,38 @@ Quadratic<NT> special_polynomial(const M& p, const M& e) {
   return s;
 }
 
+/// special_polynomial<double> for row-major double matrices, bit for bit (as
+/// characteristic_polynomial_lanes): the terms j = 0 and j = 2 in the two lanes, j = 1 alone, summed
+/// in the order j = 0, 1, 2.
+inline Quadratic<double> special_polynomial_lanes(const std::array<double, 16>& p, const std::array<double, 16>& e) {
+  using detail::Lanes2;
+  const detail::LaneRows er(e), pr(p);
+  // Columns (1, 2) in lane 0 (j = 0) and (0, 1) in lane 1 (j = 2): a = (m_r1, m_r0), b = (m_r2, m_r1).
+  auto a = [](const detail::LaneRows& m, int r) { return detail::swap_lanes(m.lo[r]); };
+  auto b = [](const detail::LaneRows& m, int r) { return __builtin_shufflevector(m.lo[r], m.hi[r], 2, 1); };
+  const detail::LaneQuadratic m =
+      detail::lane_minor2(a(er, 1), b(er, 1), a(er, 2), b(er, 2), a(pr, 1), b(pr, 1), a(pr, 2), b(pr, 2));
+  const Lanes2 x0 = er.even(0), x1 = pr.even(0);  // entries (0, 0) and (0, 2)
+  Lanes2 t[3] = {x0 * m.c[0], x0 * m.c[1], x0 * m.c[2]};
+  t[1] = t[1] + x1 * m.c[0];
+  t[2] = t[2] + x1 * m.c[1];
+  // j = 1: columns (0, 2), entry (0, 1).
+  struct View {
+    const std::array<double, 16>& a;
+    const double& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+  };
+  const Quadratic<double> m1 = detail::linear_minor2<double>(View{e}, View{p}, 1, 2, 0, 2);
+  const double y0 = e[1], y1 = p[1];
+  double u[3] = {y0 * m1[0], y0 * m1[1], y0 * m1[2]};
+  u[1] = u[1] + y1 * m1[0];
+  u[2] = u[2] + y1 * m1[1];
+  Quadratic<double> s;
+  for (std::size_t i = 0; i < 3; ++i) {
+    double acc = 0.0 + t[i][0];
+    acc = acc - u[i];
+    s[i] = acc + t[i][1];
+  }
+  return s;
+}
+
 }  // namespace relpos

@@ -281,8 +281,7 @@ inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const Dou
   // The same template as the bound was derived from: the same operations in the same order.
   certify_bit(out, DiscriminantSignBits::kDisc, discriminant_times_27(f), b.a[kDisc27] + b.r[kDisc27] * eps);
   if (!need(out)) return out;
-  const View p{pn}, e{en};
-  auto s = special_polynomial<double>(p, e);
+  auto s = special_polynomial_lanes(pn, en);  // bit for bit the generic template
   double es[3];
   w = 1;
   for (int i = 0; i < 3; ++i, w *= step) {
