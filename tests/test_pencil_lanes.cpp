@@ -1,6 +1,7 @@
-// characteristic_polynomial_lanes (algebra/pencil.hpp): the two-lane evaluation of f used by the
-// static filter must equal characteristic_polynomial<double> bit for bit, since the filter's error
-// bounds are derived on the generic template (math.md §11).
+// The static filter's fast path: characteristic_polynomial_lanes and special_polynomial_lanes
+// (algebra/pencil.hpp) must equal the generic templates in double bit for bit, since the filter's
+// error bounds are derived on the generic templates (math.md §11); and DiscriminantSignBits
+// (filters/static_filter.hpp) must read the same case and rho comparison as the unpacked signs.
 #include <catch2/catch.hpp>
 #include <cfloat>
 #include <cmath>
@@ -10,6 +11,8 @@
 
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
+#include "algebra/smallness.hpp"
+#include "filters/static_filter.hpp"
 #include "relpos/numbers.hpp"
 
 namespace {
@@ -153,5 +156,27 @@ TEST_CASE("the two-lane pencil on small integer matrices is the exact polynomial
     const auto exact = relpos::characteristic_polynomial<relpos::Integer>(pi, ei);
     const auto lanes = relpos::characteristic_polynomial_lanes(pd, ed);
     for (std::size_t k = 0; k < 5; ++k) CHECK(relpos::Integer(static_cast<long>(lanes[k])) == exact[k]);
+  }
+}
+
+TEST_CASE("DiscriminantSignBits reads its tables as the unpacked signs read discriminant_case and rho",
+          "[filters][lanes]") {
+  // Every pattern of certain-positive / certain-negative / uncertain over the 8 quantities (3^8).
+  for (unsigned k = 0; k < 6561; ++k) {
+    relpos::DiscriminantSignBits bits;
+    unsigned rest = k;
+    for (int i = 0; i < 8; ++i, rest /= 3) {
+      if (rest % 3 == 1) bits.positive |= 1u << i;
+      if (rest % 3 == 2) bits.negative |= 1u << i;
+    }
+    const relpos::DecisionSigns d = bits.signs();
+    for (int i = 0; i < 5; ++i) {
+      const bool pos = (bits.positive >> i) & 1, neg = (bits.negative >> i) & 1;
+      CHECK(CGAL::is_certain(d.quartic.f[i]) == (pos || neg));
+      if (pos) CHECK(CGAL::get_certain(d.quartic.f[i]) == CGAL::POSITIVE);
+      if (neg) CHECK(CGAL::get_certain(d.quartic.f[i]) == CGAL::NEGATIVE);
+    }
+    CHECK(bits.discriminant_case() == relpos::discriminant_case(d.quartic));
+    CHECK(bits.rho_vs_one() == relpos::compare_rho_with_one(d.vertex, d.graeffe).value_or(2));
   }
 }
