@@ -5,13 +5,15 @@
 //   naive      the float pipeline on the 32 doubles (no certification)
 //   decide     relpos::decide_position on prebuilt objects
 //   doubles    32 doubles -> Ellipsoid/Paraboloid::from_doubles -> decide_position
+//   onecall    32 doubles -> decide_position(e, p) on the doubles (the same steps in one call)
 //   matrix     32 doubles -> exact_rational -> from_matrix -> decide_position (the rational road)
 //   full       relpos::classify(e, p) with full evidence (f, s, roots, rho, certificate)
 //
 //   regime_bench [--n N] [--full N] [--seed S] [--batches B] [--rounds R] [--only POSITION]
 //
 // --only POSITION (C, E, I, ...) only repeats full evidence on the pairs in that position (a
-// profiling loop for perf record), then exits; --only decide and --only doubles repeat those paths.
+// profiling loop for perf record), then exits; --only decide, --only doubles and --only onecall
+// repeat those paths.
 //
 // Prints one line per path: median ns per pair over B batches, and its ratio to the naive pipeline
 // timed in the same round, as the median (and range) over R rounds.
@@ -155,24 +157,32 @@ int main(int argc, char** argv) {
     ps.push_back(Paraboloid::from_doubles(r.p));
   }
   std::map<std::string, int> mix;
-  int naive_wrong = 0;
+  int naive_wrong = 0, onecall_differs = 0;
   for (int i = 0; i < n; ++i) {
     const Verdict v = decide_position(es[static_cast<std::size_t>(i)], ps[static_cast<std::size_t>(i)]);
     ++mix[to_string(v.position) + (v.small ? "" : " (not small)")];
     const auto nv = bench::naive_double(raw[static_cast<std::size_t>(i)].p, raw[static_cast<std::size_t>(i)].e);
     if (!nv || *nv != v.position) ++naive_wrong;
+    const Verdict one = decide_position(raw[static_cast<std::size_t>(i)].e, raw[static_cast<std::size_t>(i)].p);
+    if (one.position != v.position || one.stage != v.stage || one.rule != v.rule) ++onecall_differs;
   }
   std::printf("regime: %d pairs, seed %lu; positions:", n, seed);
   for (const auto& [k, c] : mix) std::printf(" %s %.1f%%", k.c_str(), 100.0 * c / n);
   std::printf("; naive double wrong or undecided on %d\n", naive_wrong);
+  if (onecall_differs != 0) {  // the one-call decision must be the two steps' (the bench times both)
+    std::printf("decide_position on the doubles differs from the two steps on %d pairs\n", onecall_differs);
+    return 1;
+  }
 
   const auto U = [](int i) { return static_cast<std::size_t>(i); };
-  if (only == "decide" || only == "doubles") {  // profiling loop: one fast path only
+  if (only == "decide" || only == "doubles" || only == "onecall") {  // profiling loop: one fast path only
     int acc = 0;
     for (int rep = 0; rep < batches * 20; ++rep)
       for (int i = 0; i < n; ++i) {
         if (only == "decide") {
           acc += static_cast<int>(decide_position(es[U(i)], ps[U(i)]).position);
+        } else if (only == "onecall") {
+          acc += static_cast<int>(decide_position(raw[U(i)].e, raw[U(i)].p).position);
         } else {
           const Ellipsoid e = Ellipsoid::from_doubles(raw[U(i)].e);
           const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
@@ -212,7 +222,7 @@ int main(int argc, char** argv) {
       return static_cast<int>(classify(e, p, Evidence::Full).verdict.position);
     });
   };
-  enum { kNaive, kMinimal, kDecide, kDoubles, kMatrix, kFull, kFullCached, kPaths };
+  enum { kNaive, kMinimal, kDecide, kDoubles, kOneCall, kMatrix, kFull, kFullCached, kPaths };
   std::vector<std::array<double, kPaths>> time(static_cast<std::size_t>(rounds)), ratio(time.size()),
       ratio_min(time.size());
   for (auto& r : time) {
@@ -226,6 +236,8 @@ int main(int argc, char** argv) {
       const Paraboloid p = Paraboloid::from_doubles(raw[U(i)].p);
       return static_cast<int>(decide_position(e, p).position);
     });
+    r[kOneCall] = median_ns(
+        n, batches, [&](int i) { return static_cast<int>(decide_position(raw[U(i)].e, raw[U(i)].p).position); });
     r[kMatrix] = median_ns(n_matrix, std::min(batches, 3), [&](int i) {
       const Ellipsoid e = Ellipsoid::from_matrix(exact_matrix(raw[U(i)].e));
       const Paraboloid p = Paraboloid::from_matrix(exact_matrix(raw[U(i)].p));
@@ -286,6 +298,7 @@ int main(int argc, char** argv) {
   line("minimal", kMinimal, "minimal float decision (quartic, its discriminant, sign rule)");
   line("decide", kDecide, "decide_position on prebuilt objects");
   line("doubles", kDoubles, "32 doubles -> from_doubles -> decide_position");
+  line("onecall", kOneCall, "32 doubles -> decide_position(e, p) on the doubles, in one call");
   line("matrix", kMatrix, "32 doubles -> exact_rational -> from_matrix -> decide_position");
   line("full", kFull, "classify(e, p), full evidence with certificate (per-pair median)");
   line("full+gc", kFullCached, "the same after relpos::install_gmp_block_cache() (as the CLI and Python)");

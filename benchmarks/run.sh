@@ -7,6 +7,8 @@
 #   benchmarks/run.sh --edge     # only the near-tangent benchmark (edge_bench) and its chart
 #   benchmarks/run.sh --ordinary [ordinary_bench options]   # ordinary pairs and relpos batch against
 #                                # the minimal float decision and json.loads, from the installed package
+#   benchmarks/run.sh --python [python_bench options]       # the Python package against float code in
+#                                # numpy and in pure Python (doc/python.md, "Measured")
 #
 # Outputs: benchmarks/results/{results.csv,stages.csv,summary.json,*.png}.
 # Plotting needs matplotlib for /usr/bin/python3 (Debian python3-matplotlib, benchmark-only
@@ -44,6 +46,23 @@ if [ "${1:-}" = "--ordinary" ]; then
     --threads 2 --form both --out "$OUT/batch.json" 2>&1 | tee "$OUT/batch_log.txt"
   [ "${PIPESTATUS[0]}" = 0 ] || exit 1
   /usr/bin/python3 "$ROOT/benchmarks/tables.py" --ordinary "$OUT"
+  exit 0
+fi
+# benchmarks/run.sh --python: the extension and the CLI built in build-python (Release), then
+# python_bench.py's decide paths -> benchmarks/results/python.json and python_log.txt, and the tables of
+# doc/python.md ("Measured") and doc/performance.md ("Python") rewritten (tables.py --python). Under a
+# minute; extra arguments go to python_bench.py.
+if [ "${1:-}" = "--python" ]; then
+  shift
+  BUILD="$ROOT/build-python"
+  cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DRELPOS_BUILD_TESTS=OFF -DRELPOS_BUILD_BENCHMARKS=OFF \
+    >/dev/null
+  cmake --build "$BUILD" -j2 --target relpos_python >/dev/null
+  mkdir -p "$OUT"
+  PYTHONPATH="$BUILD/python" RELPOS_CLI="$BUILD/cli/relpos" /usr/bin/python3 "$ROOT/benchmarks/python_bench.py" \
+    --skip-dask --pairs 200000 --out "$OUT/python.json" "$@" 2>&1 | tee "$OUT/python_log.txt"
+  [ "${PIPESTATUS[0]}" = 0 ] || exit 1
+  /usr/bin/python3 "$ROOT/benchmarks/tables.py" --python "$OUT"
   exit 0
 fi
 cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DRELPOS_BUILD_BENCHMARKS=ON -DRELPOS_BUILD_TESTS=OFF >/dev/null

@@ -331,6 +331,38 @@ TEST_CASE("C: unit sphere at the origin crossing the cup", "[certificate]") {
   require_rejected(e, p, Position::C, definite(q(1)), "cannot prove");
 }
 
+TEST_CASE("a classification's unused numbers stay zero across results", "[certificate]") {
+  // Each position writes different members; whatever one result fills must not show up in another's
+  // members left at their defaults (results may share their default numbers).
+  const Paraboloid p = cup();
+  for (int round = 0; round < 2; ++round) {
+    const relpos::Classification c = relpos::classify(sphere(q(0), q(1)), p);      // C: inside, outside
+    const relpos::Classification i = relpos::classify(sphere(q(1), q(1, 10)), p);  // I: lambda
+    const relpos::Classification t = relpos::classify(sphere(q(-1), q(1)), p);     // TE: lambda, contact
+    const relpos::Classification h = relpos::classify(sphere(q(5, 4), q(1)), p);   // TI: the hard case
+    REQUIRE(c.certificate.kind == Kind::Crossing);
+    REQUIRE(i.certificate.kind == Kind::Definite);
+    REQUIRE(t.certificate.kind == Kind::Tangent);
+    REQUIRE(h.certificate.kind == Kind::HardTangent);
+    CHECK(i.certificate.lambda != 0);
+    CHECK(c.certificate.lambda == 0);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(i.certificate.inside[k] == 0);
+      CHECK(i.certificate.outside[k] == 0);
+      CHECK(c.certificate.contact[k] == 0);
+      CHECK(t.certificate.inside[k] == 0);
+      CHECK(c.certificate.centre[k].a == 0);
+      CHECK(c.certificate.centre[k].b == 0);
+    }
+    CHECK(c.certificate.d == 0);
+    CHECK(h.certificate.directions.size() == 2);
+    CHECK(c.certificate.directions.empty());
+    CHECK(c.certificate.radius2.a == 0);
+    CHECK(i.certificate.lambda_q.a == 0);
+    CHECK(h.certificate.lambda == 0);
+  }
+}
+
 TEST_CASE("a certificate that cannot be built is an internal error, never a null certificate", "[certificate]") {
   // The unit sphere at the origin crosses the cup: no rational double root of f proves a tangency.
   const Ellipsoid e = sphere(q(0), q(1));

@@ -14,6 +14,7 @@
 #include <relpos/numbers.hpp>
 #include <relpos/quadric.hpp>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using relpos::DoubleMatrix4;
@@ -284,4 +285,110 @@ TEST_CASE("from_doubles at the edge of its filters and under upward rounding", "
   }
   CHECK(accepted > 0);
   CHECK(rejected > 0);
+}
+
+namespace {
+
+/// Every field of the verdict.
+auto fields(const relpos::Verdict& v) {
+  return std::make_tuple(v.position, v.stage, v.rule, v.small, v.rho_vs_one, v.sign_disc_f, v.sign_disc_ftilde,
+                         v.real_roots, v.negative_roots, v.positive_roots, v.nonreal_roots, v.tangent_negative,
+                         v.tangent_positive, v.nonreal_multiple, v.roots_above_lambda_s);
+}
+
+/// decide_position on the 32 doubles and the two steps it stands for: the same verdict, or the same
+/// InputError. True when the pair was accepted.
+bool same_decision(const DoubleMatrix4& e, const DoubleMatrix4& p) {
+  std::optional<relpos::Verdict> one, two;
+  std::string one_error, two_error;
+  try {
+    one = relpos::decide_position(e, p);
+  } catch (const InputError& err) {
+    one_error = err.what();
+  }
+  try {
+    const Ellipsoid ell = Ellipsoid::from_doubles(e);  // the ellipsoid first, as a user writes it
+    const Paraboloid par = Paraboloid::from_doubles(p);
+    two = relpos::decide_position(ell, par);
+  } catch (const InputError& err) {
+    two_error = err.what();
+  }
+  std::string shown;
+  for (const DoubleMatrix4* m : {&e, &p})
+    for (double x : *m) shown += std::to_string(x) + " ";
+  INFO("pair: " << shown << "; one call: " << one_error << "; two steps: " << two_error);
+  REQUIRE(one.has_value() == two.has_value());
+  CHECK(one_error == two_error);
+  if (one) CHECK(fields(*one) == fields(*two));
+  return one.has_value();
+}
+
+DoubleMatrix4 negated(DoubleMatrix4 m) {
+  for (double& x : m) x = -x;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("decide_position on 32 doubles is from_doubles then decide_position", "[from_doubles]") {
+  Gen g;
+  int accepted = 0;
+  SECTION("the regime, in both orientations") {
+    for (int k = 0; k < 3000; ++k) {
+      const auto [e, p] = g.regime_pair();
+      accepted += same_decision(k % 2 ? negated(e) : e, k % 3 ? p : negated(p));
+    }
+    CHECK(accepted == 3000);
+  }
+  SECTION("random matrices of every kind, either one in either place") {
+    for (int k = 0; k < 3000; ++k) {
+      const DoubleMatrix4 a = g.ellipsoid_like(), b = g.paraboloid_like(), c = g.symmetric();
+      accepted += same_decision(a, b);
+      same_decision(b, a);  // swapped
+      same_decision(a, c);
+      same_decision(c, b);
+    }
+    CHECK(accepted > 1000);
+  }
+  SECTION("degenerate, malformed and non-finite matrices, and det E or det P near zero") {
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    const DoubleMatrix4 sphere{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, -0.5, 0, 0, -0.5, 0.1875};  // radius 1/4 at z = 1/2
+    const DoubleMatrix4 cup{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0};          // z = x^2 + y^2
+    const std::vector<DoubleMatrix4> bad = {
+        {},                                                                           // zero
+        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},                             // a point: det E = 0
+        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1},                             // imaginary: det E > 0
+        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1},                            // cylinder: det P = 0
+        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1},                             // imaginary cylinder
+        {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0},                      // saddle
+        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1},                           // hyperboloid
+        {1, 1e-300, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1},                       // not symmetric
+        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.4, 0},                       // not symmetric
+        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, nan},                           // NaN
+        {inf, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0},                     // infinity
+        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, std::ldexp(1.0, -1074), -0.5, 0, 0, -0.5, 0},  // subnormal
+        {1, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, -0.5, 0, 0, -0.5, 0},                       // rank-2 block, not axis-aligned
+        {std::ldexp(1.0, 1000), 0, 0, 0, 0, std::ldexp(1.0, 1000), 0, 0, 0, 0, std::ldexp(1.0, 1000), 0, 0, 0, 0,
+         -std::ldexp(1.0, 1020)},  // overflowing determinant
+    };
+    for (const DoubleMatrix4& m : bad) {
+      same_decision(m, cup);
+      same_decision(sphere, m);
+      same_decision(m, m);
+      same_decision(negated(m), negated(cup));
+    }
+    CHECK(same_decision(sphere, cup));
+    CHECK(same_decision(negated(sphere), negated(cup)));
+    // det E within a few ulps of zero (barely real, a point, or imaginary): the pencil's f(0) is
+    // uncertain there, and the two steps decide; under upward rounding the double stages stand aside.
+    for (int k = 0; k < 600; ++k) {
+      DoubleMatrix4 m = sphere;
+      for (int step = g.small(0, 4); step > 0; --step) m[15] = std::nextafter(m[15], g.coin() ? 10.0 : -10.0);
+      const bool upward = k % 3 == 0;
+      if (upward) std::fesetround(FE_UPWARD);
+      same_decision(m, cup);
+      same_decision(m, g.paraboloid_like());
+      if (upward) std::fesetround(FE_TONEAREST);
+    }
+  }
 }

@@ -664,6 +664,35 @@ TEST_CASE("tight_interval equals CGAL::to_interval bit for bit", "[forms]") {
   }
 }
 
+TEST_CASE("set_double writes the canonical rational mpq_set_d writes", "[forms]") {
+  // Zero, integers, dyadic fractions, subnormals and the extremes, of either sign, into values
+  // that held something else before (the caller's fresh or reused rationals).
+  rt::Rng g(27);
+  std::mt19937_64 bits(8);
+  const double special[] = {0.0,
+                            -0.0,
+                            1.0,
+                            -3.0,
+                            0.5,
+                            std::numeric_limits<double>::denorm_min(),
+                            -std::numeric_limits<double>::min(),
+                            std::numeric_limits<double>::max(),
+                            0x1p52,
+                            0x1.8p-1074};
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double x = trial < 10 ? special[trial]
+                                : std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits),
+                                             static_cast<int>(g.uniform(-1080, 1024)));
+    if (!std::isfinite(x)) continue;
+    Rational got(Integer(g.uniform(-99, 99)), Integer(g.uniform(1, 99))), want;
+    relpos::forms::set_double(got.mpq(), x);
+    mpq_set_d(want.mpq(), x);
+    CAPTURE(x);
+    CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(want.mpq())) == 0);
+    CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(want.mpq())) == 0);
+  }
+}
+
 TEST_CASE("integer_form of doubles equals integer_form of their exact rationals", "[forms]") {
   rt::Rng g(99);
   std::mt19937_64 bits(5);

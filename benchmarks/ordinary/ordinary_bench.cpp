@@ -13,6 +13,7 @@
 //   paper     paper_float_decision on the 32 doubles
 //   decide    relpos::decide_position on prebuilt objects
 //   doubles   32 doubles -> Ellipsoid/Paraboloid::from_doubles -> decide_position
+//   onecall   32 doubles -> decide_position(e, p) on the doubles (the same two steps in one call)
 //   full      32 doubles -> from_doubles -> classify(e, p, Evidence::Full), on N_full pairs of the set
 //
 // Every round times each path over B batches per set, the paths interleaved batch by batch; a path's
@@ -21,7 +22,8 @@
 // of each ratio, with the range of the ratios.
 //
 // Before timing, every pair of every set is checked: decide_position on the prebuilt objects, on
-// fresh objects from the doubles and classify_exact (the exact reference) must give one position,
+// fresh objects from the doubles, on the doubles in one call and classify_exact (the exact
+// reference) must give one position,
 // and on the full-evidence pairs classify(Full) too, with a certificate verify_certificate accepts.
 // Any disagreement is printed and the exit status is 1. The float decisions' answers are compared
 // with relpos and counted (wrong, undecided); more than 1 % wrong also fails (a broken baseline).
@@ -112,13 +114,14 @@ std::vector<Raw> make_regime(std::mt19937_64& rng, std::size_t n) {
   return out;
 }
 
-enum Path { kMinimal, kPaper, kDecide, kDoubles, kFull, kPaths };
-constexpr const char* kPathName[kPaths] = {"minimal", "paper", "decide", "doubles", "full"};
+enum Path { kMinimal, kPaper, kDecide, kDoubles, kOneCall, kFull, kPaths };
+constexpr const char* kPathName[kPaths] = {"minimal", "paper", "decide", "doubles", "onecall", "full"};
 constexpr const char* kPathText[kPaths] = {
     "minimal float decision (quartic, discriminant, sign rule)",
     "paper's float decision (+ Sturm-Habicht, smallness)",
     "decide_position on prebuilt objects",
     "32 doubles -> from_doubles -> decide_position",
+    "32 doubles -> decide_position on the doubles, one call",
     "32 doubles -> from_doubles -> classify, full evidence",
 };
 
@@ -174,6 +177,8 @@ bool prepare(PairSet& s, std::size_t n_full, Checks& checks) {
     if (decided != v.position) mismatch(i, "decide_position (prebuilt)", decided);
     const Position fresh = relpos::decide_position(e, p).position;
     if (fresh != v.position) mismatch(i, "from_doubles + decide_position", fresh);
+    const Position one = relpos::decide_position(r.e, r.p).position;
+    if (one != v.position) mismatch(i, "decide_position on the doubles", one);
     const std::optional<Position> floats[2] = {ordinary::minimal_float_decision(r.p, r.e),
                                                ordinary::paper_float_decision(r.p, r.e)};
     for (int k = 0; k < 2; ++k) {
@@ -238,6 +243,10 @@ double time_batch(const PairSet& s, int path) {
             const Paraboloid p = Paraboloid::from_doubles(s.raw[i].p);
             acc += static_cast<int>(relpos::decide_position(e, p).position);
           }
+          break;
+        case kOneCall:
+          for (std::size_t i = 0; i < n; ++i)
+            acc += static_cast<int>(relpos::decide_position(s.raw[i].e, s.raw[i].p).position);
           break;
       }
     }

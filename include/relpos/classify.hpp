@@ -94,6 +94,13 @@ struct Verdict {
 /// as classify() and classify_exact() do.
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p);
 
+/// decide_position(Ellipsoid::from_doubles(e), Paraboloid::from_doubles(p)) in one call (row-major
+/// 4x4 doubles, each taken exactly): the same verdict, and the same InputError for an invalid
+/// matrix (the ellipsoid's first). Cheaper: the validation's last signs, det E < 0 and det P < 0,
+/// are f(0) and the leading coefficient of f (math.md §2), which the decision certifies anyway;
+/// when they or any other sign stay uncertain, it runs the two steps.
+Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
+
 /// The classification table itself (math.md §3 and §6), applied to exact root facts and the
 /// comparison of rho with 1: the one written decision, for callers that obtain the facts another
 /// way (the contact-only discriminant test). Stage is left at its default. nullopt when the facts do

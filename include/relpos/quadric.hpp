@@ -88,6 +88,9 @@ Matrix3 rotation_from_quaternion(const Quaternion& q);
 
 class Ellipsoid;
 class Paraboloid;
+struct Verdict;
+/// The decision on 32 doubles (classify.hpp): builds its quadrics as from_doubles does.
+Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
 
 /// A validated ellipsoid, sign-normalized: M = Q3 positive definite, det E < 0.
 class Ellipsoid {
@@ -130,6 +133,7 @@ class Ellipsoid {
   /// The storage of the matrix (internal/quadric_matrix.hpp), found by argument-dependent lookup.
   friend const detail::QuadricMatrix& storage_of(const Ellipsoid& q) { return q.m_; }
   friend Ellipsoid detail::make_ellipsoid(detail::QuadricMatrix m);
+  friend Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
   explicit Ellipsoid(Matrix4 m) : m_(std::move(m)) {}
   explicit Ellipsoid(const DoubleMatrix4& d) : m_(d) {}
   explicit Ellipsoid(detail::QuadricMatrix m) : m_(std::move(m)) {}
@@ -163,6 +167,7 @@ class Paraboloid {
   /// The storage of the matrix (internal/quadric_matrix.hpp), found by argument-dependent lookup.
   friend const detail::QuadricMatrix& storage_of(const Paraboloid& q) { return q.m_; }
   friend Paraboloid detail::make_paraboloid(detail::QuadricMatrix m);
+  friend Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
   explicit Paraboloid(Matrix4 m) : m_(std::move(m)) {}
   explicit Paraboloid(const DoubleMatrix4& d) : m_(d) {}
   explicit Paraboloid(detail::QuadricMatrix m) : m_(std::move(m)) {}

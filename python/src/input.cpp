@@ -122,16 +122,68 @@ relpos::Rational to_rational(py::handle x, const std::string& path) {
   return relpos::io::rational_from_json(to_json(x, path), path);
 }
 
-// The exact validation (inertia of matrices whose numbers may have thousands of digits) runs
-// without the GIL.
-relpos::Ellipsoid ellipsoid_from_python(const Json& description) {
-  py::gil_scoped_release release;
-  return relpos::io::ellipsoid_from_json(description, "ellipsoid");
+namespace {
+
+/// The 16 entries of a 4x4 matrix when each is a double as it stands (a native float64 array, or
+/// a sequence of 4 sequences of Python floats and ints of at most 53 bits): no value is rounded.
+std::optional<relpos::DoubleMatrix4> exact_doubles(py::handle x) {
+  relpos::DoubleMatrix4 d;
+  if (py::isinstance<py::array>(x)) {
+    const auto a = py::reinterpret_borrow<py::array>(x);
+    if (a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4 || !a.dtype().equal(py::dtype::of<double>()))
+      return std::nullopt;
+    const auto r = a.unchecked<double, 2>();
+    for (py::ssize_t i = 0; i < 4; ++i)
+      for (py::ssize_t j = 0; j < 4; ++j) d[static_cast<std::size_t>(4 * i + j)] = r(i, j);
+    return d;
+  }
+  if (!PyList_Check(x.ptr()) && !PyTuple_Check(x.ptr())) return std::nullopt;
+  const auto rows = py::reinterpret_borrow<py::sequence>(x);
+  if (rows.size() != 4) return std::nullopt;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const py::handle row = rows[i];
+    if (!PyList_Check(row.ptr()) && !PyTuple_Check(row.ptr())) return std::nullopt;
+    const auto entries = py::reinterpret_borrow<py::sequence>(row);
+    if (entries.size() != 4) return std::nullopt;
+    for (std::size_t j = 0; j < 4; ++j) {
+      PyObject* v = entries[j].ptr();
+      double& out = d[4 * i + j];
+      if (PyFloat_Check(v)) {
+        out = PyFloat_AS_DOUBLE(v);
+      } else if (PyLong_CheckExact(v)) {
+        int overflow = 0;
+        const long long n = PyLong_AsLongLongAndOverflow(v, &overflow);
+        if (overflow || n > (1LL << 53) || n < -(1LL << 53)) return std::nullopt;
+        out = static_cast<double>(n);
+      } else {
+        return std::nullopt;
+      }
+    }
+  }
+  return d;
 }
 
-relpos::Paraboloid paraboloid_from_python(const Json& description) {
-  py::gil_scoped_release release;
-  return relpos::io::paraboloid_from_json(description, "paraboloid");
+template <class Q>
+Q quadric_from_python(py::handle description, const char* role, Q (*from_json)(const Json&, const std::string&)) {
+  if (const auto d = exact_doubles(description)) {
+    try {
+      return Q::from_doubles(*d);
+    } catch (const relpos::InputError&) {  // the reader below words the error as the CLI does
+    }
+  }
+  const Json json = to_json(description, role);
+  py::gil_scoped_release release;  // the exact validation (numbers may have thousands of digits)
+  return from_json(json, role);
+}
+
+}  // namespace
+
+relpos::Ellipsoid ellipsoid_from_python(py::handle description) {
+  return quadric_from_python<relpos::Ellipsoid>(description, "ellipsoid", relpos::io::ellipsoid_from_json);
+}
+
+relpos::Paraboloid paraboloid_from_python(py::handle description) {
+  return quadric_from_python<relpos::Paraboloid>(description, "paraboloid", relpos::io::paraboloid_from_json);
 }
 
 void throw_unbuilt(py::handle x) {

@@ -37,9 +37,12 @@ py::object to_python(const relpos::Rational& q);
 
 /// The quadric a Python description denotes: a 4x4 matrix, or a dict in any of the CLI's JSON forms
 /// (doc/cli.md, "Quadric formats"), read by the CLI's reader: the same value and the same error
-/// message as `relpos batch` for the same input. Called with the GIL held; validates without it.
-relpos::Ellipsoid ellipsoid_from_python(const Json& description);
-relpos::Paraboloid paraboloid_from_python(const Json& description);
+/// message as `relpos batch` for the same input. A 4x4 matrix whose 16 entries are doubles (a
+/// float64 array, or floats and ints below 2^53) is first offered to from_doubles, which the
+/// reader's exact path agrees with; anything it does not accept takes the reader, for the message.
+/// Called with the GIL held; the exact validation runs without it.
+relpos::Ellipsoid ellipsoid_from_python(py::handle description);
+relpos::Paraboloid paraboloid_from_python(py::handle description);
 
 /// True when `x` is an instance of the bound class T whose C++ object was constructed (false for an
 /// object made by T.__new__(T) alone).

@@ -113,18 +113,14 @@ PYBIND11_MODULE(_relpos, m) {
       m, "Ellipsoid",
       "A validated ellipsoid: a symmetric 4x4 matrix E with X^T E X = 0 on the surface, X = (x, y, z, 1) "
       "(sign-normalized: inside is negative).");
-  ellipsoid.def(py::init([](py::handle description) {
-                  return relpos_python::ellipsoid_from_python(to_json(description, "ellipsoid"));
-                }),
+  ellipsoid.def(py::init([](py::handle description) { return relpos_python::ellipsoid_from_python(description); }),
                 "description"_a,
                 "From a 4x4 matrix or a dict in any JSON form of the CLI (relpos.Ellipsoid.__init__).");
   bind_quadric_common(ellipsoid, "relpos.Ellipsoid");
 
   py::class_<relpos::Paraboloid> paraboloid(
       m, "Paraboloid", "A validated elliptic paraboloid: a symmetric 4x4 matrix (inside the cup is negative).");
-  paraboloid.def(py::init([](py::handle description) {
-                   return relpos_python::paraboloid_from_python(to_json(description, "paraboloid"));
-                 }),
+  paraboloid.def(py::init([](py::handle description) { return relpos_python::paraboloid_from_python(description); }),
                  "description"_a,
                  "From a 4x4 matrix or a dict in any JSON form of the CLI (relpos.Paraboloid.__init__).");
   bind_quadric_common(paraboloid, "relpos.Paraboloid");

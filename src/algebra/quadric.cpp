@@ -435,15 +435,15 @@ bool all_finite(const DoubleMatrix4& d) {
 }  // namespace
 
 Ellipsoid Ellipsoid::from_doubles(const DoubleMatrix4& e) {
-  if (all_finite(e)) {
-    Ellipsoid out{detail::QuadricMatrix(e)};  // normalized in place, read by the shape test
-    const int orientation = shape_filter::certified_ellipsoid(e, out.m_.filter_doubles());
-    if (orientation < 0) out.m_.negate_doubles();
-    if (orientation != 0) return out;
-  }
+  // Built in the returned object (one return: no copy of the 16 doubles) and normalized in place;
+  // normalized doubles are finite, so all_finite runs only when the normalization did not.
+  Ellipsoid out(e);
+  const DoubleMatrix4* normalized = out.m_.filter_doubles();
+  const int orientation = normalized || all_finite(e) ? shape_filter::certified_ellipsoid(e, normalized) : 0;
+  if (orientation < 0) out.m_.negate_doubles();
   // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
-  const Ellipsoid exact = from_matrix(exact_matrix(e));
-  return Ellipsoid(*exact.doubles());
+  if (orientation == 0) out = Ellipsoid(*from_matrix(exact_matrix(e)).doubles());
+  return out;
 }
 
 Ellipsoid Ellipsoid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
@@ -521,14 +521,12 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
 // The same steps as Ellipsoid::from_doubles with the paraboloid's certifier, written out: a template
 // over both would have to be a friend of both classes for these six lines.
 Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
-  if (all_finite(p)) {
-    Paraboloid out{detail::QuadricMatrix(p)};  // normalized in place, read by the shape test
-    const int orientation = shape_filter::certified_paraboloid(p, out.m_.filter_doubles());
-    if (orientation < 0) out.m_.negate_doubles();
-    if (orientation != 0) return out;
-  }
-  const Paraboloid exact = from_matrix(exact_matrix(p));
-  return Paraboloid(*exact.doubles());
+  Paraboloid out(p);
+  const DoubleMatrix4* normalized = out.m_.filter_doubles();
+  const int orientation = normalized || all_finite(p) ? shape_filter::certified_paraboloid(p, normalized) : 0;
+  if (orientation < 0) out.m_.negate_doubles();
+  if (orientation == 0) out = Paraboloid(*from_matrix(exact_matrix(p)).doubles());
+  return out;
 }
 
 Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }

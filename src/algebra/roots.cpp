@@ -11,9 +11,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 #include "algebra/flint_thread.hpp"
+#include "algebra/forms.hpp"
 #include "algebra/small_factor.hpp"
 #include "algebra/sturm_habicht_quartic.hpp"
 
@@ -107,9 +109,22 @@ int sign_at_double(const Integer* h, int n, double x) {
   const double frac = std::frexp(x, &e);                        // x = frac 2^e, frac in [1/2, 1)
   const auto m = static_cast<long long>(std::ldexp(frac, 53));  // exact
   e -= 53;                                                      // x = m 2^e
-  mpz_t v, t;
-  mpz_init(v);
-  mpz_init(t);
+  // The thread's two temporaries, their limbs kept from call to call (the values run to a few
+  // hundred bits: no allocation once grown).
+  thread_local struct Scratch {
+    mpz_t v, t;
+    Scratch() {
+      mpz_init(v);
+      mpz_init(t);
+    }
+    ~Scratch() {
+      mpz_clear(v);
+      mpz_clear(t);
+    }
+    Scratch(const Scratch&) = delete;
+    Scratch& operator=(const Scratch&) = delete;
+  } scratch;
+  const mpz_ptr v = scratch.v, t = scratch.t;
   // Horner on m with powers of two: e >= 0: v = v m 2^e + h_i; e < 0: v = v m + h_i 2^(-e (n - i)).
   mpz_set(v, h[n].mpz());
   for (int i = n - 1; i >= 0; --i) {
@@ -122,28 +137,28 @@ int sign_at_double(const Integer* h, int n, double x) {
       mpz_add(v, v, t);
     }
   }
-  const int out = mpz_sgn(v);
-  mpz_clear(v);
-  mpz_clear(t);
-  return out;
+  return mpz_sgn(v);
 }
 
-/// Polynomial value and derivative in doubles (coefficients c[0..n]).
-double horner(const double* c, int n, double x) {
-  double v = c[n];
-  for (int i = n - 1; i >= 0; --i) v = v * x + c[i];
+/// Polynomial value in doubles (coefficients c[0..N]). The degree is a template parameter so
+/// that every loop below unrolls; the operations and their order are those of the written loops.
+template <int N>
+double horner(const double* c, double x) {
+  double v = c[N];
+  for (int i = N - 1; i >= 0; --i) v = v * x + c[i];
   return v;
 }
 
-/// A root of c (degree n) in [lo, hi] where c changes sign (flo: the value at lo): Newton steps kept inside the
+/// A root of c (degree N) in [lo, hi] where c changes sign (flo: the value at lo): Newton steps kept inside the
 /// shrinking bracket, bisection when a step leaves it or does not halve the bracket (safeguarded Newton), until the
 /// bracket or the step is below 2^-50 of the root. A handful of steps instead of the ~70 of plain bisection; the result
 /// is only an approximation, certified afterwards by exact signs.
-double bracketed_root(const double* c, int n, double lo, double hi, double flo) {
+template <int N>
+double bracketed_root(const double* c, double lo, double hi, double flo) {
   double x = lo + (hi - lo) / 2, width = hi - lo;
   for (int it = 0; it < 2100; ++it) {
-    double fx = c[n], dfx = 0;  // value and derivative by Horner
-    for (int i = n - 1; i >= 0; --i) {
+    double fx = c[N], dfx = 0;  // value and derivative by Horner
+    for (int i = N - 1; i >= 0; --i) {
       dfx = dfx * x + fx;
       fx = fx * x + c[i];
     }
@@ -165,34 +180,52 @@ double bracketed_root(const double* c, int n, double lo, double hi, double flo) 
   return x;
 }
 
-/// Approximate real roots of c (degree n <= 4, c[n] != 0) in (-bound, bound), increasing, into
+/// Approximate real roots of c (degree N <= 4, c[N] != 0) in (-bound, bound), increasing, into
 /// out[0..count): the roots of the derivative split the line into monotone pieces, each with at most
 /// one sign change. Fixed arrays (no allocation): a few hundred nanoseconds.
-int approximate_real_roots(const double* c, int n, double bound, double* out) {
-  if (n == 1) {
+template <int N>
+int approximate_real_roots(const double* c, double bound, double* out) {
+  if constexpr (N == 1) {
     out[0] = -c[0] / c[1];
     return 1;
-  }
-  double d[4] = {}, inner[4], cuts[6];  // d zeroed: GCC cannot see that the first n entries are set
-  for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
-  const int m = approximate_real_roots(d, n - 1, bound, inner);
-  int cut_count = 0;
-  cuts[cut_count++] = -bound;
-  for (int k = 0; k < m; ++k)
-    if (inner[k] > cuts[cut_count - 1] && inner[k] < bound) cuts[cut_count++] = inner[k];
-  cuts[cut_count++] = bound;
-  int count = 0;
-  double b = horner(c, n, cuts[0]);
-  for (int k = 0; k + 1 < cut_count; ++k) {
-    const double a = b;  // the value at each cut computed once
-    b = horner(c, n, cuts[k + 1]);
-    if (a == 0) {
-      if (count == 0 || out[count - 1] != cuts[k]) out[count++] = cuts[k];
-    } else if ((a < 0) != (b < 0) && b != 0) {
-      out[count++] = bracketed_root(c, n, cuts[k], cuts[k + 1], a);
+  } else {
+    double d[N], inner[N], cuts[N + 2];
+    for (int i = 1; i <= N; ++i) d[i - 1] = i * c[i];
+    const int m = approximate_real_roots<N - 1>(d, bound, inner);
+    int cut_count = 0;
+    cuts[cut_count++] = -bound;
+    for (int k = 0; k < m; ++k)
+      if (inner[k] > cuts[cut_count - 1] && inner[k] < bound) cuts[cut_count++] = inner[k];
+    cuts[cut_count++] = bound;
+    int count = 0;
+    double b = horner<N>(c, cuts[0]);
+    for (int k = 0; k + 1 < cut_count; ++k) {
+      const double a = b;  // the value at each cut computed once
+      b = horner<N>(c, cuts[k + 1]);
+      if (a == 0) {
+        if (count == 0 || out[count - 1] != cuts[k]) out[count++] = cuts[k];
+      } else if ((a < 0) != (b < 0) && b != 0) {
+        out[count++] = bracketed_root<N>(c, cuts[k], cuts[k + 1], a);
+      }
     }
+    return count;
   }
-  return count;
+}
+
+/// The same for a degree n in 1..4 known at run time.
+int approximate_real_roots(const double* c, int n, double bound, double* out) {
+  switch (n) {
+    case 1:
+      return approximate_real_roots<1>(c, bound, out);
+    case 2:
+      return approximate_real_roots<2>(c, bound, out);
+    case 3:
+      return approximate_real_roots<3>(c, bound, out);
+    case 4:
+      return approximate_real_roots<4>(c, bound, out);
+    default:
+      throw std::logic_error("approximate_real_roots: degree outside 1..4");
+  }
 }
 
 /// True when Res(f, s) != 0 is shown modulo one word-sized prime p not dividing either leading
@@ -378,8 +411,8 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
       if (sl != 0 && sh != 0 && sl != sh) {
         RealRoot& root = out.emplace_back();  // fresh bounds: written in place
         root.sign = r < 0 ? -1 : 1;
-        mpq_set_d(root.lower.mpq(), lo);
-        mpq_set_d(root.upper.mpq(), hi);
+        forms::set_double(root.lower.mpq(), lo);
+        forms::set_double(root.upper.mpq(), hi);
         prev_hi = hi;
         ok = true;
       }

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include "algebra/cramer.hpp"
@@ -80,11 +81,16 @@ inline int semi_static_sign(double value, double magnitude) {
   if (value < -bound) return -1;
   return 0;
 }
-/// The same, trying first the static magnitude `most` (what the formula's magnitude can be at
-/// most when every entry is below 1: no extra arithmetic), then the actual magnitude.
-template <class MagnitudeOf>
-int filtered_sign(double value, double most, MagnitudeOf magnitude) {
-  if (const int s = semi_static_sign(value, most)) return s;
+/// semi_static_sign's bound for the static magnitude `most` (what the formula's magnitude can be at
+/// most when every entry is below 1), evaluated by the compiler: constexpr, since -frounding-math
+/// keeps it from folding constants otherwise.
+constexpr double static_bound(int most) { return 0x1p-47 * most + 0x1p-1000; }
+/// The same, trying first the static magnitude `most` (no extra arithmetic), then the actual magnitude.
+template <int Most, class MagnitudeOf>
+int filtered_sign(double value, MagnitudeOf magnitude) {
+  constexpr double bound = static_bound(Most);
+  if (value > bound) return 1;
+  if (value < -bound) return -1;
   return semi_static_sign(value, magnitude().v);
 }
 
@@ -100,11 +106,9 @@ inline int certain_sign(const I& x) {
   return 0;  // uncertain (or zero)
 }
 
+/// Without a branch per pair (& on the comparisons, not &&): for valid input all six hold.
 inline bool symmetric(const DoubleMatrix4& d) {
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      if (!(d[static_cast<std::size_t>(4 * i + j)] == d[static_cast<std::size_t>(4 * j + i)])) return false;
-  return true;
+  return (d[1] == d[4]) & (d[2] == d[8]) & (d[3] == d[12]) & (d[6] == d[9]) & (d[7] == d[13]) & (d[11] == d[14]);
 }
 
 /// A growing floating-point expansion (Shewchuk 1997): the exact sum of its components, which are
@@ -142,14 +146,21 @@ struct Expansion {
 
 /// Every term of det Q3 = a d f + 2 b c e - a e^2 - f b^2 - d c^2 ([[a, b, c], [b, d, e], [c, e, f]])
 /// has a factor that is exactly zero (axis-aligned paraboloids): det Q3 = 0 without arithmetic.
-inline bool zero_by_pattern(bool a, bool b, bool c, bool d, bool e, bool f) {
+constexpr bool zero_by_pattern(bool a, bool b, bool c, bool d, bool e, bool f) {
   return (a || d || f) && (b || c || e) && (a || e) && (f || b) && (d || c);
 }
 
-/// det Q3 == 0, exactly; nullopt when the entries are outside the range where the expansion is
-/// exact (the caller takes the exact path). The block is scaled by a power of two first (exact).
-inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
-  if (zero_by_pattern(d[0] == 0, d[1] == 0, d[2] == 0, d[5] == 0, d[6] == 0, d[10] == 0)) return true;
+/// zero_by_pattern of every combination of the six flags (bit k set: flag k): a table lookup
+/// instead of a branch per flag.
+constexpr std::uint64_t kZeroPatterns = [] {
+  std::uint64_t table = 0;
+  for (unsigned z = 0; z < 64; ++z)
+    if (zero_by_pattern(z & 1, z & 2, z & 4, z & 8, z & 16, z & 32)) table |= std::uint64_t{1} << z;
+  return table;
+}();
+
+/// det Q3 == 0 by the expansion below; out of line: only blocks with no zero pattern get here.
+[[gnu::noinline]] inline std::optional<bool> det3_is_zero_by_expansion(const DoubleMatrix4& d) {
   if (!detail::rounding_to_nearest()) return std::nullopt;
   double mx = 0;
   for (int i = 0; i < 3; ++i)
@@ -174,6 +185,15 @@ inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
   x.add_product(-f, b, b);
   x.add_product(-dd, c, c);
   return x.is_zero();
+}
+
+/// det Q3 == 0, exactly; nullopt when the entries are outside the range where the expansion is
+/// exact (the caller takes the exact path). The block is scaled by a power of two first (exact).
+inline std::optional<bool> det3_is_zero(const DoubleMatrix4& d) {
+  const unsigned zeros = unsigned{d[0] == 0} | unsigned{d[1] == 0} << 1 | unsigned{d[2] == 0} << 2 |
+                         unsigned{d[5] == 0} << 3 | unsigned{d[6] == 0} << 4 | unsigned{d[10] == 0} << 5;
+  if ((kZeroPatterns >> zeros) & 1) return true;
+  return det3_is_zero_by_expansion(d);
 }
 
 }  // namespace impl
@@ -202,27 +222,63 @@ inline int certified_paraboloid_intervals(const std::array<impl::I, 16>& d) {
   return trace_sign;
 }
 
+namespace impl {
+
+/// det Q < 0 on the normalized doubles (static, then semi-static bound): -1, else the sign or 0.
+inline int det4_sign(const DoubleMatrix4& n) {
+  return filtered_sign<24>(det4<double>(n), [&] { return det4<Mag>(n); });
+}
+
+}  // namespace impl
+
+/// Every sign of the ellipsoid test but det Q < 0, certified on the normalized doubles (static, then
+/// semi-static bounds; round to nearest): the orientation (+1 or -1, the sign of the first entry)
+/// when d is symmetric, its 2x2 leading minor is positive and det Q3 has the first entry's sign;
+/// else 0, and always 0 without `normalized` (d scaled by a power of two, power_of_two_normalized).
+/// certified_ellipsoid adds det Q < 0; the decision on 32 doubles reads that sign off the pencil
+/// instead, whose f(0) is det E (math.md §2).
+inline int ellipsoid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
+  if (!normalized || !impl::symmetric(d) || !detail::rounding_to_nearest()) return 0;
+  const DoubleMatrix4& n = *normalized;
+  const int want = n[0] > 0 ? 1 : (n[0] < 0 ? -1 : 0);  // normalized entries are finite
+  using impl::Mag;
+  const int s2 =
+      impl::filtered_sign<2>(n[0] * n[5] - n[1] * n[1], [&] { return Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1]); });
+  const int s3 = impl::filtered_sign<6>(impl::det3<double>(n), [&] { return impl::det3<Mag>(n); });
+  return want != 0 && s2 == 1 && s3 == want ? want : 0;
+}
+
+/// The same for an elliptic paraboloid: the sign of the trace of Q3 when d is symmetric, E2 > 0
+/// and the trace are certain and det Q3 = 0 exactly; else 0. det Q < 0 is certified_paraboloid's,
+/// or the pencil's leading coefficient det P (math.md §2).
+inline int paraboloid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
+  if (!normalized || !impl::symmetric(d) || !detail::rounding_to_nearest()) return 0;
+  const DoubleMatrix4& n = *normalized;
+  using impl::Mag;
+  const int e2 = impl::filtered_sign<6>(
+      (n[0] * n[5] - n[1] * n[1]) + (n[0] * n[10] - n[2] * n[2]) + (n[5] * n[10] - n[6] * n[6]), [&] {
+        return (Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1])) + (Mag(n[0]) * Mag(n[10]) + Mag(n[2]) * Mag(n[2])) +
+               (Mag(n[5]) * Mag(n[10]) + Mag(n[6]) * Mag(n[6]));
+      });
+  const int trace_sign =
+      impl::filtered_sign<3>(n[0] + n[5] + n[10], [&] { return Mag(n[0]) + Mag(n[5]) + Mag(n[10]); });
+  if (e2 != 1 || trace_sign == 0) return 0;
+  const auto zero = impl::det3_is_zero(d);
+  return zero && *zero ? trace_sign : 0;
+}
+
 /// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
 /// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
-/// `normalized` is d scaled by a power of two (power_of_two_normalized), or null: the
-/// semi-static stage reads it; the interval stage reads d.
+/// `normalized` as for ellipsoid_before_det, or null: the semi-static stage reads it; the interval
+/// stage reads d.
 inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  using impl::I;
+  if (const int want = ellipsoid_before_det(d, normalized); want != 0 && impl::det4_sign(*normalized) == -1)
+    return want;
   if (!impl::symmetric(d)) return 0;
   const double a = d[0];
   if (!(a > 0) && !(a < 0)) return 0;
-  const int want = a > 0 ? 1 : -1;
-  if (normalized && detail::rounding_to_nearest()) {  // semi-static stage: no rounding-mode switch
-    const DoubleMatrix4& n = *normalized;
-    using impl::Mag;
-    const int s2 = impl::filtered_sign(n[0] * n[5] - n[1] * n[1], 2,
-                                       [&] { return Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1]); });
-    const int s3 = impl::filtered_sign(impl::det3<double>(n), 6, [&] { return impl::det3<Mag>(n); });
-    const int s4 = impl::filtered_sign(impl::det4<double>(n), 24, [&] { return impl::det4<Mag>(n); });
-    if (s2 == 1 && s3 == want && s4 == -1) return want;
-  }
   CGAL::Protect_FPU_rounding<true> guard;
-  return certified_ellipsoid_intervals(impl::interval_entries(d), want);
+  return certified_ellipsoid_intervals(impl::interval_entries(d), a > 0 ? 1 : -1);
 }
 
 /// +1 when the symmetric matrix is certainly an elliptic paraboloid with Q3 positive semidefinite,
@@ -231,30 +287,18 @@ inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* norm
 /// product of the two other eigenvalues); rank Q = 4 iff det Q != 0. `normalized` as for
 /// certified_ellipsoid.
 inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  using impl::I;
+  if (const int trace_sign = paraboloid_before_det(d, normalized);
+      trace_sign != 0 && impl::det4_sign(*normalized) == -1)
+    return trace_sign;
   if (!impl::symmetric(d)) return 0;
-  int trace_sign = 0;
-  bool certain = false;
-  if (normalized && detail::rounding_to_nearest()) {  // semi-static stage
-    const DoubleMatrix4& n = *normalized;
-    using impl::Mag;
-    const int e2 = impl::filtered_sign(
-        (n[0] * n[5] - n[1] * n[1]) + (n[0] * n[10] - n[2] * n[2]) + (n[5] * n[10] - n[6] * n[6]), 6, [&] {
-          return (Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1])) + (Mag(n[0]) * Mag(n[10]) + Mag(n[2]) * Mag(n[2])) +
-                 (Mag(n[5]) * Mag(n[10]) + Mag(n[6]) * Mag(n[6]));
-        });
-    trace_sign = impl::filtered_sign(n[0] + n[5] + n[10], 3, [&] { return Mag(n[0]) + Mag(n[5]) + Mag(n[10]); });
-    certain = e2 == 1 && trace_sign != 0 &&
-              impl::filtered_sign(impl::det4<double>(n), 24, [&] { return impl::det4<Mag>(n); }) == -1;
-  }
-  if (!certain) {
+  int trace_sign;
+  {
     CGAL::Protect_FPU_rounding<true> guard;
     trace_sign = certified_paraboloid_intervals(impl::interval_entries(d));
-    if (trace_sign == 0) return 0;
   }
+  if (trace_sign == 0) return 0;
   const auto zero = impl::det3_is_zero(d);
-  if (!zero || !*zero) return 0;
-  return trace_sign;
+  return zero && *zero ? trace_sign : 0;
 }
 
 }  // namespace relpos::shape_filter

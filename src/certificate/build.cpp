@@ -4,11 +4,13 @@
 #include <flint/fmpz_poly.h>
 #include <gmp.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "algebra/between.hpp"
@@ -34,7 +36,7 @@ int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 /// The entries of a matrix as doubles (CGAL::to_double), for the searches in doubles.
 DoubleMatrix4 to_doubles(const Matrix4& m) {
   DoubleMatrix4 out;
-  for (std::size_t i = 0; i < 16; ++i) out[i] = CGAL::to_double(m.a[i]);
+  for (std::size_t i = 0; i < 16; ++i) out[i] = forms::truncated_double(m.a[i]);
   return out;
 }
 
@@ -118,21 +120,16 @@ class IntegerPoly {
   }
   int sign(const Rational& x) const {
     if (z_.empty()) return 0;
-    mpz_t acc, dp, t;  // no Integer handles: one exact sign per candidate multiplier
-    mpz_init_set(acc, z_.back().mpz());
-    mpz_init_set_ui(dp, 1);
-    mpz_init(t);
+    PooledInteger acc_, dp_(1), t_;  // no Integer handles: one exact sign per candidate multiplier
+    const mpz_ptr acc = acc_.mpz(), dp = dp_.mpz(), t = t_.mpz();
+    mpz_set(acc, z_.back().mpz());
     for (std::size_t k = z_.size() - 1; k-- > 0;) {
       mpz_mul(dp, dp, mpq_denref(x.mpq()));
       mpz_mul(acc, acc, mpq_numref(x.mpq()));
       mpz_mul(t, z_[k].mpz(), dp);
       mpz_add(acc, acc, t);
     }
-    const int out = mpz_sgn(acc);
-    mpz_clear(acc);
-    mpz_clear(dp);
-    mpz_clear(t);
-    return out;
+    return mpz_sgn(acc);
   }
   /// The Newton step t - q(t)/q'(t) from t = n/d rounded down to a multiple of 2^e, on integers
   /// (one division, no canonicalization); nullopt where q' vanishes.
@@ -245,7 +242,7 @@ struct Pair {
     if (known.forms) forms_ = *known.forms;
     ez_of_doubles = known.ez_of_doubles;
     pz_of_doubles = known.pz_of_doubles;
-    if (known.f_multiple) f_multiple_.emplace(known.f_multiple->data(), 5);
+    known_f_multiple_ = known.f_multiple;
   }
   /// f and s as polynomials over Q: the caller's, copied on first use (the certificates of E and I
   /// with known roots read neither).
@@ -262,8 +259,12 @@ struct Pair {
     if (!fz_) fz_.emplace(f());
     return *fz_;
   }
-  /// sign f(x), on the caller's integer multiple of f when it gave one.
-  int f_sign(const Rational& x) const { return (f_multiple_ ? *f_multiple_ : fz()).sign(x); }
+  /// sign f(x), on the caller's integer multiple of f when it gave one (copied on first use: the
+  /// crossings never evaluate f).
+  int f_sign(const Rational& x) const {
+    if (known_f_multiple_ && !f_multiple_) f_multiple_.emplace(known_f_multiple_->data(), 5);
+    return (f_multiple_ ? *f_multiple_ : fz()).sign(x);
+  }
   /// X^T Q X for X = (x, 1).
   static Rational form(const Matrix4& q, const V3& x) {
     Rational acc = q(3, 3);
@@ -309,7 +310,8 @@ struct Pair {
   mutable std::optional<Poly> f_, s_;
   mutable std::optional<IntegerForms> forms_;
   mutable std::optional<IntegerPoly> fz_;
-  std::optional<IntegerPoly> f_multiple_;
+  const Quartic<Integer>* known_f_multiple_ = nullptr;
+  mutable std::optional<IntegerPoly> f_multiple_;
 };
 
 /// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
@@ -524,6 +526,28 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
 /// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
 /// exact search when the point itself is beyond doubles.
 using DoubleBracket = std::optional<std::pair<double, double>>;
+
+/// out = a - b 2^-shift in lowest terms (out distinct from a and b). The points of the double
+/// search and their pulls are dyadic: then by shifts and one subtraction, where mpq_sub takes gcds.
+void difference(mpq_ptr out, mpq_srcptr a, mpq_srcptr b, mp_bitcnt_t shift) {
+  const long ka = forms::power_of_two_exponent(mpq_denref(a)), kb0 = forms::power_of_two_exponent(mpq_denref(b));
+  if (ka < 0 || kb0 < 0) {
+    mpq_div_2exp(out, b, shift);
+    mpq_sub(out, a, out);
+    return;
+  }
+  const unsigned long kb = static_cast<unsigned long>(kb0) + shift;
+  const unsigned long top = std::max(static_cast<unsigned long>(ka), kb);
+  const mpz_ptr num = mpq_numref(out), den = mpq_denref(out);
+  mpz_mul_2exp(den, mpq_numref(b), top - kb);  // den as a temporary
+  mpz_mul_2exp(num, mpq_numref(a), top - static_cast<unsigned long>(ka));
+  mpz_sub(num, num, den);
+  const unsigned long twos = mpz_sgn(num) == 0 ? top : std::min<unsigned long>(mpz_scan1(num, 0), top);
+  mpz_tdiv_q_2exp(num, num, twos);
+  mpz_set_ui(den, 1);
+  mpz_mul_2exp(den, den, top - twos);
+}
+
 template <class Consider>
 void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const LambdaS& lambda_s, const V3& centre,
                          const std::optional<V3>& inside, const std::optional<V3>& outside, const Consider& consider,
@@ -569,24 +593,19 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
   auto try_point = [&](const double x[3], const std::optional<V3>& wanted) {
     // Each point a fresh V3 written in place (`consider` may keep it: its values are then shared).
     V3 q;
-    for (int i = 0; i < 3; ++i) mpq_set_d(q[i].mpq(), x[i]);  // exact: x is finite
+    for (int i = 0; i < 3; ++i) forms::set_double(q[i].mpq(), x[i]);  // exact: x is finite
     consider(q);
     if (wanted) return;
-    mpq_t diff[3], step;  // never shared: reused
+    mpq_t diff[3];  // never shared: reused
     for (auto& v : diff) mpq_init(v);
-    mpq_init(step);
-    for (int i = 0; i < 3; ++i) mpq_sub(diff[i], q[i].mpq(), centre[i].mpq());
+    for (int i = 0; i < 3; ++i) difference(diff[i], q[i].mpq(), centre[i].mpq(), 0);
     for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
       V3 y;                             // centre + (1 - 2^-k)(q - centre) = q - 2^-k (q - centre)
-      for (int i = 0; i < 3; ++i) {
-        mpq_div_2exp(step, diff[i], static_cast<mp_bitcnt_t>(k));
-        mpq_sub(y[i].mpq(), q[i].mpq(), step);
-      }
+      for (int i = 0; i < 3; ++i) difference(y[i].mpq(), q[i].mpq(), diff[i], static_cast<mp_bitcnt_t>(k));
       consider(y);
       if (wanted) break;
     }
     for (auto& v : diff) mpq_clear(v);
-    mpq_clear(step);
   };
   // lo: e(x(lo)) <= 0 side; hi: e(x(hi)) > 0 side (either order on the line). Regula falsi with
   // the Illinois modification (the end that stays has its value halved), bisection when the
@@ -666,7 +685,7 @@ std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
   for (std::size_t i = 0; i < 3; ++i) {
     const double x = d[i + 1] / d[0];
     if (!std::isfinite(x)) return std::nullopt;
-    mpq_set_d(out[i].mpq(), x);  // exact; a fresh value, written in place
+    forms::set_double(out[i].mpq(), x);  // exact; a fresh value, written in place
   }
   return out;
 }
@@ -936,7 +955,7 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
 bool small_for_doubles(const DoubleMatrix4& em, const V3& centre) {
   auto e = [&](int i, int j) { return em[static_cast<std::size_t>(4 * i + j)]; };
   double c[3], least = HUGE_VAL, far = 0, r2 = e(3, 3);
-  for (int i = 0; i < 3; ++i) c[i] = CGAL::to_double(centre[i]);
+  for (int i = 0; i < 3; ++i) c[i] = forms::truncated_double(centre[i]);
   for (int i = 0; i < 3; ++i) {
     r2 += 2 * e(i, 3) * c[i];
     for (int j = 0; j < 3; ++j) r2 += c[i] * e(i, j) * c[j];
@@ -1001,19 +1020,26 @@ int interval_sign(const DoubleMatrix4& q, const Enclosure3& x) {
 void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> inside, outside;
   DoubleBracket brackets[2];
-  std::optional<IntegerForm> ez, pz;  // exact signs of e and p at the candidates
   const std::optional<DoubleMatrix4> ed_own = pr.E.own_doubles();
   const std::optional<DoubleMatrix4> pd_own = ed_own ? pr.P.own_doubles() : std::nullopt;
-  if (pr.ez_of_doubles && pr.pz_of_doubles) {
-    ez.emplace(*pr.ez_of_doubles);
-    pz.emplace(*pr.pz_of_doubles);
-  } else if (ed_own && pd_own && !pr.has_forms()) {  // the integer forms with their scales are not needed
-    ez.emplace(*ed_own);
-    pz.emplace(*pd_own);
-  } else {
-    ez.emplace(pr.forms().ez);
-    pz.emplace(pr.forms().pz);
-  }
+  // Exact signs of e and p at the candidates, built on first use: with the quadrics' doubles the
+  // interval signs decide most pairs' every candidate.
+  std::optional<IntegerForm> ez_form, pz_form;
+  auto exact_forms = [&]() -> std::pair<const IntegerForm&, const IntegerForm&> {
+    if (!ez_form) {
+      if (pr.ez_of_doubles && pr.pz_of_doubles) {
+        ez_form.emplace(*pr.ez_of_doubles);
+        pz_form.emplace(*pr.pz_of_doubles);
+      } else if (ed_own && pd_own && !pr.has_forms()) {  // the integer forms with their scales are not needed
+        ez_form.emplace(*ed_own);
+        pz_form.emplace(*pd_own);
+      } else {
+        ez_form.emplace(pr.forms().ez);
+        pz_form.emplace(pr.forms().pz);
+      }
+    }
+    return {*ez_form, *pz_form};
+  };
   // The signs in interval arithmetic on the quadrics' exact doubles first (0: undecided, then the
   // exact sign on integers decides): most candidates are far enough from both surfaces.
   auto filtered = [](const std::optional<DoubleMatrix4>& q, const std::optional<Enclosure3>& x) {
@@ -1026,8 +1052,9 @@ void crossing_points(const Pair& pr, Certificate& c) {
     int sp = filtered(pd_own, at);
     if (se == 0 || sp == 0) {
       const IntegerForm::Point xz(x);
-      if (se == 0 && ez->sign(xz) > 0) return;
-      if (sp == 0) sp = pz->sign(xz);
+      const auto [ez, pz] = exact_forms();
+      if (se == 0 && ez.sign(xz) > 0) return;
+      if (sp == 0) sp = pz.sign(xz);
     }
     if (sp < 0 && !inside) inside = x;
     if (sp > 0 && !outside) outside = x;
@@ -1039,7 +1066,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> pull = approximate_centre(ed);
   auto e_sign = [&](const V3& x) {
     const int s = filtered(ed_own, ed_own ? enclosure(x) : std::nullopt);
-    return s != 0 ? s : ez->sign(IntegerForm::Point(x));
+    return s != 0 ? s : exact_forms().first.sign(IntegerForm::Point(x));
   };
   if (pull && e_sign(*pull) < 0 && !small_for_doubles(ed, *pull)) {
     consider(*pull);
@@ -1077,13 +1104,15 @@ void crossing_points(const Pair& pr, Certificate& c) {
 }
 
 /// A lambda in the domain with f(lambda) > 0 from the isolating intervals of f's real roots: f has
-/// one sign between consecutive intervals, so one exact evaluation per gap decides.
-template <class InDomain>
-std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<RealRoot>& roots, InDomain in_domain) {
+/// one sign between consecutive intervals, so one exact evaluation per gap decides. `below_domain`
+/// (x at or below the domain's lower end) skips the gaps whose every point is outside.
+template <class InDomain, class BelowDomain>
+std::optional<Rational> lambda_between_roots(const Pair& pr, const std::vector<RealRoot>& roots, InDomain in_domain,
+                                             BelowDomain below_domain) {
   for (std::size_t i = 0; i + 1 < roots.size(); ++i) {
     const Rational& lo = roots[i].exact ? *roots[i].exact : roots[i].upper;
     const Rational& hi = roots[i + 1].exact ? *roots[i + 1].exact : roots[i + 1].lower;
-    if (!(lo < hi)) continue;
+    if (!(lo < hi) || below_domain(hi)) continue;
     const Rational l = detail::rational_inside(lo, hi, detail::Shortest::Bits);
     if (in_domain(l) && pr.f_sign(l) > 0) return l;
   }
@@ -1109,9 +1138,12 @@ void build(const Ellipsoid& e, const Paraboloid& p, Position position, const Kno
     case Position::I: {
       const bool ext = position == Position::E;
       auto positive = [](const Rational& x) { return x > 0; };
+      auto not_positive = [](const Rational& x) { return CGAL::sign(x) <= 0; };
+      auto not_above_lambda_s = [&](const Rational& x) { return pr.ls.compare(x) <= 0; };
       std::optional<Rational> l;
       if (known.roots)
-        l = ext ? lambda_between_roots(pr, *known.roots, positive) : lambda_between_roots(pr, *known.roots, in_gap);
+        l = ext ? lambda_between_roots(pr, *known.roots, positive, not_positive)
+                : lambda_between_roots(pr, *known.roots, in_gap, not_above_lambda_s);
       if (!l) l = ext ? definite_lambda(pr, positive) : definite_lambda(pr, in_gap);
       if (!l) throw internal_error("no multiplier lambda with lambda P + E definite for a pair classified " + name);
       c.kind = Certificate::Kind::Definite;

@@ -12,6 +12,7 @@
 
 #include "algebra/forms.hpp"
 #include "algebra/rounding.hpp"
+#include "algebra/shape_filter.hpp"
 #include "algebra/smallness.hpp"
 #include "algebra/sturm.hpp"
 #include "anysize/exact.hpp"
@@ -414,7 +415,11 @@ bool finish(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v
 
 /// The whole filter -> exact policy in one place: each stage certifies what it can, the next one
 /// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
-Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact) {
+/// `determinants_pending` (true on entry): a pair validated but for det E < 0 and det P < 0, which
+/// the static filter certifies as f(0) and the leading coefficient (math.md §2); false once it has,
+/// and nothing is decided (an empty verdict returned at once) when it has not.
+Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std::optional<ExactData>& exact,
+                   bool* determinants_pending = nullptr) {
   Verdict v;
   DecisionSigns d;  // every sign certified so far, by any stage (uncertain until then)
   if (use_filter) {
@@ -430,6 +435,11 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
         std::optional<bool> gap;  // the gap test from the same f and s, when it is the one open question
         const DiscriminantSignBits fast = static_filter_discriminant_bits_normalized(
             *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), &gap);
+        if (determinants_pending) {
+          const unsigned f0_and_f4 = 1u << 0 | 1u << 4;  // f(0) = det E, leading coefficient det P
+          if ((fast.negative & f0_and_f4) != f0_and_f4) return v;
+          *determinants_pending = false;
+        }
         if (decide_from_discriminant(fast, v)) {
           if (gap && needs_gap(v)) {
             v.roots_above_lambda_s = static_cast<signed char>(*gap);
@@ -440,6 +450,7 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
         v = Verdict{};
         d = static_filter_signs_normalized(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles());
       }
+      if (determinants_pending && *determinants_pending) return v;  // not in range: nothing certified
       if (decide_from_signs(d, v) && finish(e, p, use_filter, v, exact)) return v;
       if (in_range) {  // stage 1': the same signs with bounds from the actual magnitudes
         v.stage = Stage::SemiStaticDouble;
@@ -569,14 +580,15 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
 }
 
 /// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
-/// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square (from the reduced
-/// f and s, far shorter than the integer forms). lambda_s is computed once here, for rho and for
-/// the certificate, from h: with mu = lambda le / lp, s(lambda) = h(mu) / le^3, so
-/// Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales), rational iff Disc(h) is a
-/// square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2): two short canonicalisations.
-void fill_full_evidence(RootStructure&& rs, const Quadratic<PooledInteger>& h, const forms::SplitScale& sp,
-                        const forms::SplitScale& se, const Integer& lp, const Integer& le, Classification& out,
-                        anysize::LambdaS& ls) {
+/// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square. lambda_s is
+/// computed once here, for rho and for the certificate, from h: with mu = lambda le / lp,
+/// s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales),
+/// rational iff Disc(h) is a square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2): two short
+/// canonicalisations. A rational rho comes from g and h directly (one canonicalisation); an
+/// irrational one only as a double, from the reduced f and s.
+void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
+                        const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp, const Integer& le,
+                        Classification& out, anysize::LambdaS& ls) {
   out.has_full_evidence = true;
   out.degree_ftilde = rs.degree_ftilde;
   out.roots = std::move(rs.real_roots);
@@ -584,10 +596,12 @@ void fill_full_evidence(RootStructure&& rs, const Quadratic<PooledInteger>& h, c
   mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
   mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
   mpz_submul_ui(disc.mpz(), t.mpz(), 4);
+  PooledInteger root_minus_h1;  // R - h1 when Disc(h) = R^2
   if (h[2].sign() > 0 && mpz_sgn(disc.mpz()) >= 0 && mpz_perfect_square_p(disc.mpz())) {
     Rational q, r;  // fresh: written in place; canonicalised by mpq_canonicalize and the product
-    mpz_sqrt(mpq_numref(q.mpq()), disc.mpz());
-    mpz_sub(mpq_numref(q.mpq()), mpq_numref(q.mpq()), h[1].mpz());
+    mpz_sqrt(root_minus_h1.mpz(), disc.mpz());
+    mpz_sub(root_minus_h1.mpz(), root_minus_h1.mpz(), h[1].mpz());
+    mpz_set(mpq_numref(q.mpq()), root_minus_h1.mpz());
     mpz_mul_2exp(mpq_denref(q.mpq()), h[2].mpz(), 1);
     mpq_canonicalize(q.mpq());
     mpz_set(mpq_numref(r.mpq()), lp.mpz());
@@ -600,8 +614,23 @@ void fill_full_evidence(RootStructure&& rs, const Quadratic<PooledInteger>& h, c
   }
   // k = (f0 s2) / (f4 s0)
   if (ls.rational()) {
-    const Rational k = (out.f[0] * out.s[2]) / (out.f[4] * out.s[0]);
-    out.rho = k * forms::inverse_square(ls.value.a);  // lambda_s < 0
+    // rho = k / lambda_s^2 with k = g0 h2 lp^2 / (g4 h0 le^2) and lambda_s = (lp / le) (R - h1) / (2 h2):
+    // the scales cancel, rho = 4 g0 h2^3 / (g4 h0 (R - h1)^2), one canonicalisation of integers.
+    Rational rho;  // fresh: written in place
+    const mpz_ptr n = mpq_numref(rho.mpq()), d = mpq_denref(rho.mpq());
+    mpz_mul(n, h[2].mpz(), h[2].mpz());
+    mpz_mul(n, n, h[2].mpz());
+    mpz_mul(n, n, g[0].mpz());
+    mpz_mul_2exp(n, n, 2);
+    mpz_mul(d, root_minus_h1.mpz(), root_minus_h1.mpz());
+    mpz_mul(d, d, h[0].mpz());
+    mpz_mul(d, d, g[4].mpz());
+    if (mpz_sgn(d) < 0) {
+      mpz_neg(n, n);
+      mpz_neg(d, d);
+    }
+    mpq_canonicalize(rho.mpq());
+    out.rho = rho;
     out.rho_approx = nearest_double(*out.rho);
   } else {
     // k only as a double (CGAL::to_double is mpq_get_d: the exact quotient truncated, whatever
@@ -621,18 +650,32 @@ void fill_full_evidence(RootStructure&& rs, const Quadratic<PooledInteger>& h, c
     }
     const double k_double = mpq_get_d(k);
     mpq_clear(k);
-    const double s2 = CGAL::to_double(out.s[2]), s1 = CGAL::to_double(out.s[1]), s0 = CGAL::to_double(out.s[0]);
+    const double s2 = forms::truncated_double(out.s[2]), s1 = forms::truncated_double(out.s[1]),
+                 s0 = forms::truncated_double(out.s[0]);
     const double u1 = (2 * s0) / (s1 + std::sqrt(s1 * s1 - 4 * s2 * s0));  // stable smaller root
     out.rho_approx = k_double / (u1 * u1);
   }
 }
 
+/// A default Classification without a heap allocation per number: a copy of the thread's default
+/// one, its numbers sharing that one's (a Gmpq copy shares its value; each default Gmpq costs two
+/// allocations, and a certificate holds some twenty, most never written). Safe because every
+/// number of a result is assigned, never written in place, except f and s (made fresh by the
+/// caller before their in-place writes).
+Classification default_classification() {
+  thread_local const Classification prototype;
+  return prototype;
+}
+
 Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, bool use_filter) {
   std::optional<ExactData> exact;
   const Verdict v = run_stages(e, p, use_filter, exact);
-  Classification out;
+  Classification out = default_classification();
   out.verdict = v;
   if (evidence == Evidence::Full) {  // reported exactly as det(lambda P + E), from each matrix's own form
+    // Fresh numbers: reported_polynomials writes them in place.
+    for (Rational& c : out.f) c = Rational();
+    for (Rational& c : out.s) c = Rational();
     // The integer forms on pooled integers (the generic formulas without heap traffic for
     // temporaries): from the doubles when the entries are doubles, without a rational matrix;
     // else kept as Integers for the certificate's exact signs and points too.
@@ -670,7 +713,7 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
     RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
-    fill_full_evidence(std::move(rs), h, sp, se, lp, le, out, ls);
+    fill_full_evidence(std::move(rs), g, h, sp, se, lp, le, out, ls);
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms (from the doubles, or with their scales)
     // and S^4 f.
     certificate::Known known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f};
@@ -696,6 +739,28 @@ Verdict decide_position(const Ellipsoid& e, const Paraboloid& p) {
   check_normalized_pair_size(e, p);  // two flag tests for doubles and the fast reader's numbers
   std::optional<ExactData> exact;
   return run_stages(e, p, true, exact);
+}
+
+Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
+  // The objects from_doubles builds (normalized in place, the same orientation), with every shape
+  // sign but the determinants certified; run_stages certifies those from the pencil or gives up.
+  Ellipsoid ell(e);
+  Paraboloid par(p);
+  const int oe = shape_filter::ellipsoid_before_det(e, ell.m_.filter_doubles());
+  const int op = oe != 0 ? shape_filter::paraboloid_before_det(p, par.m_.filter_doubles()) : 0;
+  if (op != 0) {
+    if (oe < 0) ell.m_.negate_doubles();
+    if (op < 0) par.m_.negate_doubles();
+    check_normalized_pair_size(ell, par);  // never throws for doubles, as in decide_position
+    bool pending = true;
+    std::optional<ExactData> exact;
+    const Verdict v = run_stages(ell, par, true, exact, &pending);
+    if (!pending) return v;
+  }
+  // Anything uncertain, and every invalid input: the two steps themselves (their errors, the
+  // ellipsoid's first: two statements, as the order of a call's arguments is unspecified).
+  const Ellipsoid first = Ellipsoid::from_doubles(e);
+  return decide_position(first, Paraboloid::from_doubles(p));
 }
 
 Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {

@@ -68,7 +68,10 @@ class PooledInteger {
   }
   friend PooledInteger operator*(const PooledInteger& a, const PooledInteger& b) {
     PooledInteger r(Raw{});
-    mpz_mul(r.z_, a.z_, b.z_);
+    if (mpz_sgn(a.z_) != 0 && mpz_sgn(b.z_) != 0)
+      mpz_mul(r.z_, a.z_, b.z_);
+    else
+      r.z_->_mp_size = 0;  // 0, as mpz_set_ui(r, 0) writes it
     return r;
   }
   friend PooledInteger operator-(const PooledInteger& a) {
@@ -108,12 +111,13 @@ class PooledInteger {
     mpz_neg(a.z_, a.z_);
     return std::move(a);
   }
-  // The fused forms of the generic formulas' acc +/- x y (pencil.hpp): no temporary at all.
+  // The fused forms of the generic formulas' acc +/- x y (pencil.hpp): no temporary at all, and no
+  // call for a zero factor (most entries of an axis-aligned quadric's matrix are 0).
   friend void add_product(PooledInteger& acc, const PooledInteger& x, const PooledInteger& y) {
-    mpz_addmul(acc.z_, x.z_, y.z_);
+    if (mpz_sgn(x.z_) != 0 && mpz_sgn(y.z_) != 0) mpz_addmul(acc.z_, x.z_, y.z_);
   }
   friend void sub_product(PooledInteger& acc, const PooledInteger& x, const PooledInteger& y) {
-    mpz_submul(acc.z_, x.z_, y.z_);
+    if (mpz_sgn(x.z_) != 0 && mpz_sgn(y.z_) != 0) mpz_submul(acc.z_, x.z_, y.z_);
   }
 
  private:

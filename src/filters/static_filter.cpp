@@ -130,14 +130,22 @@ bool normalize(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool&
   // On the bits first (this runs for every quadric made from doubles): for finite doubles, |x|
   // orders as the integer of x's bits with the sign cleared. The largest gives the scaling; the
   // smallest non-zero one says whether every product is exact without looking at the products.
-  std::uint64_t mx = 0, mn = ~std::uint64_t{0};
-  for (double x : in) {
-    std::uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    b &= 0x7fffffffffffffffULL;
-    mx = b > mx ? b : mx;
-    mn = (b != 0 && b < mn) ? b : mn;
+  // Two accumulators each (even and odd entries): shorter dependency chains. Zero wraps to the
+  // largest value in b - 1, so it is never the minimum, without a branch.
+  std::uint64_t mx0 = 0, mx1 = 0, mn0 = ~std::uint64_t{0}, mn1 = ~std::uint64_t{0};
+  for (std::size_t i = 0; i < 16; i += 2) {
+    std::uint64_t b0, b1;
+    std::memcpy(&b0, &in[i], sizeof b0);
+    std::memcpy(&b1, &in[i + 1], sizeof b1);
+    b0 &= 0x7fffffffffffffffULL;
+    b1 &= 0x7fffffffffffffffULL;
+    mx0 = b0 > mx0 ? b0 : mx0;
+    mx1 = b1 > mx1 ? b1 : mx1;
+    mn0 = b0 - 1 < mn0 ? b0 - 1 : mn0;
+    mn1 = b1 - 1 < mn1 ? b1 - 1 : mn1;
   }
+  const std::uint64_t mx = mx0 > mx1 ? mx0 : mx1;
+  const std::uint64_t mn = (mn0 < mn1 ? mn0 : mn1) + 1;                         // the smallest non-zero |x|
   if (mx < 0x0010000000000000ULL || mx >= 0x7ff0000000000000ULL) return false;  // zero, subnormal, inf or NaN
   const int emax = static_cast<int>(mx >> 52) - 1023;
   const int k = -emax - 1;

@@ -80,6 +80,42 @@ def test_entries_are_exact():
     assert all(isinstance(x, Fraction) for row in m for x in row)
 
 
+def test_double_matrices_take_the_doubles_path_with_the_readers_answers():
+    # A matrix of doubles (float64 array, floats and small ints) is built by from_doubles; the same
+    # numbers as a {"matrix": ...} description take the exact reader. Both must give equal objects
+    # and byte-identical reports, for both orientations, and the doubles that are not plain floats
+    # (2^53 + 1, float32, big-endian float64) must still be read exactly.
+    rng = numpy.random.default_rng(5)
+    for _ in range(200):
+        a, b = rng.uniform(0.5, 2.0, 2)
+        x, y = rng.uniform(-1, 1, 2)
+        z = x * x / (a * a) + y * y / (b * b) + rng.uniform(-0.3, 0.3)
+        r = rng.uniform(0.01, 0.3)
+        E = numpy.eye(4)
+        E[:3, 3] = E[3, :3] = -numpy.array([x, y, z])
+        E[3, 3] = x * x + y * y + z * z - r * r
+        P = numpy.zeros((4, 4))
+        P[0, 0], P[1, 1] = 1 / (a * a), 1 / (b * b)
+        P[2, 3] = P[3, 2] = -0.5
+        for s in (1, -1):
+            forms_e = (s * E, (s * E).tolist(), {"matrix": (s * E).tolist()})
+            forms_p = (s * P, (s * P).tolist(), {"matrix": (s * P).tolist()})
+            es = [relpos.Ellipsoid(m) for m in forms_e]
+            ps = [relpos.Paraboloid(m) for m in forms_p]
+            assert es[0] == es[1] == es[2] and ps[0] == ps[1] == ps[2]
+            for full in (False, True):
+                texts = {relpos._relpos._classify_json(e, p, full) for e, p in zip(es, ps)}
+                assert len(texts) == 1
+    big = 2**53 + 1  # not a double: the exact reader
+    assert relpos.Ellipsoid([[big, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -1]]).matrix()[0][0] == big
+    swapped = numpy.diag([1.0, 1.0, 1.0, -0.1]).astype(">f8")
+    assert relpos.Ellipsoid(swapped).matrix()[3][3] == F(-0.1)
+    with pytest.raises(ValueError, match="not symmetric"):
+        relpos.Ellipsoid(numpy.array([[1.0, 2, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -1]]))
+    with pytest.raises(ValueError, match="imaginary"):
+        relpos.Ellipsoid(numpy.eye(4))
+
+
 def test_geometric_constructors():
     assert relpos.Ellipsoid.sphere((0, "1/2", 0.25), "1/4").matrix() == sphere_matrix((0, F(1, 2), F(1, 4)), F(1, 4))
     # Axes (1/4, 1/8, 1/8) without rotation: diag(16, 64, 64) scaled; compare with the coefficients
