@@ -19,6 +19,7 @@
 #include "algebra/flint_thread.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
+#include "algebra/roots.hpp"
 #include "anysize/exact.hpp"
 #include "filters/pooled_integer.hpp"
 
@@ -182,6 +183,7 @@ class IntegerPoly {
     for (std::size_t k = 0; k < z_.size(); ++k) fmpz_poly_set_coeff_mpz(out, static_cast<slong>(k), z_[k].mpz());
   }
   std::size_t degree() const { return z_.empty() ? 0 : z_.size() - 1; }
+  const Integer* data() const { return z_.data(); }
   std::size_t bits() const { return bits_; }  ///< the largest coefficient's bit length
 
  private:
@@ -227,6 +229,8 @@ struct Pair {
   LambdaS ls;
   const forms::MatrixOf<PooledInteger>* ez_of_doubles = nullptr;  ///< Known::ez_of_doubles
   const forms::MatrixOf<PooledInteger>* pz_of_doubles = nullptr;  ///< Known::pz_of_doubles
+  Pair(const Pair&) = delete;                                     // f_at_doubles_ points into f_multiple_ or fz_
+  Pair& operator=(const Pair&) = delete;
   Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known)
       : E(e), P(p), ls(known.f && known.s && known.lambda_s ? *known.lambda_s : LambdaS{}) {
     if (known.f && known.s) {
@@ -263,7 +267,15 @@ struct Pair {
   /// crossings never evaluate f).
   int f_sign(const Rational& x) const {
     if (known_f_multiple_ && !f_multiple_) f_multiple_.emplace(known_f_multiple_->data(), 5);
-    return (f_multiple_ ? *f_multiple_ : fz()).sign(x);
+    const IntegerPoly& q = f_multiple_ ? *f_multiple_ : fz();
+    // At a double (the multipliers between isolating intervals are short dyadics), the roots' sign
+    // at doubles: floating-point stages that answer only when certain, then the same exact sign.
+    const std::pair<double, double> d = forms::tight_interval(x);
+    if (d.first == d.second && q.degree() >= 1 && q.degree() <= 4) {
+      if (!f_at_doubles_) f_at_doubles_.emplace(q.data(), static_cast<int>(q.degree()));
+      return (*f_at_doubles_)(d.first);
+    }
+    return q.sign(x);
   }
   /// X^T Q X for X = (x, 1).
   static Rational form(const Matrix4& q, const V3& x) {
@@ -312,6 +324,7 @@ struct Pair {
   mutable std::optional<IntegerPoly> fz_;
   const Quartic<Integer>* known_f_multiple_ = nullptr;
   mutable std::optional<IntegerPoly> f_multiple_;
+  mutable std::optional<detail::DoubleSign> f_at_doubles_;  // reads f_sign's IntegerPoly in place
 };
 
 /// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
