@@ -531,13 +531,32 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
       1024 + 16 * pr.fz().bits());
 }
 
+/// Tight enclosures of a point's coordinates (forms::tight_interval); nullopt beyond the double range.
+using Enclosure3 = std::array<std::pair<double, double>, 3>;
+std::optional<Enclosure3> enclosure(const V3& x) {
+  Enclosure3 out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    out[i] = forms::tight_interval(x[i]);
+    if (!std::isfinite(out[i].first) || !std::isfinite(out[i].second)) return std::nullopt;
+  }
+  return out;
+}
+
+/// The same for a point of finite doubles: the points themselves (tight_interval's answer for a
+/// double; -0 taken as 0, as the rational it converts to).
+Enclosure3 enclosure(const double x[3]) {
+  Enclosure3 out;
+  for (std::size_t i = 0; i < 3; ++i) out[i].first = out[i].second = x[i] == 0 ? 0.0 : x[i];
+  return out;
+}
+
 /// The curve search of crossing_points first in doubles (a search only: every candidate is checked
-/// exactly by `consider`): bisection on lambda for e(x(lambda)) = 0, lambda > 0 for the inside
-/// point and lambda in (lambda_s, 0) for the outside one; the point found, and the same point
-/// pulled towards the centre (exact rationals), are tried. Most crossings end here, without the
-/// exact bisection on rationals. Each bisection's last bracket (good end first: e(x) <= 0 there in
-/// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
-/// exact search when the point itself is beyond doubles.
+/// exactly by `consider(point, its enclosure or null)`): bisection on lambda for e(x(lambda)) = 0,
+/// lambda > 0 for the inside point and lambda in (lambda_s, 0) for the outside one; the point found,
+/// and the same point pulled towards the centre (exact rationals), are tried. Most crossings end
+/// here, without the exact bisection on rationals. Each bisection's last bracket (good end first:
+/// e(x) <= 0 there in doubles) goes to `brackets` [0] for the inside point and [1] for the outside
+/// one: a start for the exact search when the point itself is beyond doubles.
 using DoubleBracket = std::optional<std::pair<double, double>>;
 
 /// out = a - b 2^-shift in lowest terms (out distinct from a and b). The points of the double
@@ -607,7 +626,8 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
     // Each point a fresh V3 written in place (`consider` may keep it: its values are then shared).
     V3 q;
     for (int i = 0; i < 3; ++i) forms::set_double(q[i].mpq(), x[i]);  // exact: x is finite
-    consider(q);
+    const std::optional<Enclosure3> at = enclosure(x);
+    consider(q, &at);
     if (wanted) return;
     mpq_t diff[3];  // never shared: reused
     for (auto& v : diff) mpq_init(v);
@@ -615,7 +635,7 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
     for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
       V3 y;                             // centre + (1 - 2^-k)(q - centre) = q - 2^-k (q - centre)
       for (int i = 0; i < 3; ++i) difference(y[i].mpq(), q[i].mpq(), diff[i], static_cast<mp_bitcnt_t>(k));
-      consider(y);
+      consider(y, nullptr);
       if (wanted) break;
     }
     for (auto& v : diff) mpq_clear(v);
@@ -687,9 +707,10 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
   }
 }
 
-/// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals; nullopt when it is
-/// not finite. An approximation: the caller checks it exactly.
-std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
+/// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals (the doubles
+/// themselves into `doubles`); nullopt when it is not finite. An approximation: the caller checks
+/// it exactly.
+std::optional<V3> approximate_centre(const DoubleMatrix4& e, double doubles[3]) {
   double k[3][4];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 4; ++j) k[i][j] = e[static_cast<std::size_t>(4 * i + j)] * (j == 3 ? -1 : 1);
@@ -698,6 +719,7 @@ std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
   for (std::size_t i = 0; i < 3; ++i) {
     const double x = d[i + 1] / d[0];
     if (!std::isfinite(x)) return std::nullopt;
+    doubles[i] = x;
     forms::set_double(out[i].mpq(), x);  // exact; a fresh value, written in place
   }
   return out;
@@ -1002,17 +1024,6 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
   return power_of_two((log2_of(-e_at_centre) - least) / 2);
 }
 
-/// Tight enclosures of a point's coordinates (forms::tight_interval); nullopt beyond the double range.
-using Enclosure3 = std::array<std::pair<double, double>, 3>;
-std::optional<Enclosure3> enclosure(const V3& x) {
-  Enclosure3 out;
-  for (std::size_t i = 0; i < 3; ++i) {
-    out[i] = forms::tight_interval(x[i]);
-    if (!std::isfinite(out[i].first) || !std::isfinite(out[i].second)) return std::nullopt;
-  }
-  return out;
-}
-
 /// sign(X^T Q X), X = (x, 1), for a matrix of exact doubles and x in the enclosure, when interval
 /// arithmetic decides it; 0 when it does not (an enclosure containing 0, overflow or NaN).
 int interval_sign(const DoubleMatrix4& q, const Enclosure3& x) {
@@ -1058,8 +1069,9 @@ void crossing_points(const Pair& pr, Certificate& c) {
   auto filtered = [](const std::optional<DoubleMatrix4>& q, const std::optional<Enclosure3>& x) {
     return q && x ? interval_sign(*q, *x) : 0;
   };
-  auto consider = [&](const V3& x) {
-    const std::optional<Enclosure3> at = ed_own && pd_own ? enclosure(x) : std::nullopt;
+  // `known`: the point's enclosure when the caller has it (a point of doubles), else null.
+  auto consider_at = [&](const V3& x, const std::optional<Enclosure3>* known) {
+    const std::optional<Enclosure3> at = !(ed_own && pd_own) ? std::nullopt : known ? *known : enclosure(x);
     const int se = filtered(ed_own, at);
     if (se > 0) return;
     int sp = filtered(pd_own, at);
@@ -1072,18 +1084,21 @@ void crossing_points(const Pair& pr, Certificate& c) {
     if (sp < 0 && !inside) inside = x;
     if (sp > 0 && !outside) outside = x;
   };
+  auto consider = [&](const V3& x) { consider_at(x, nullptr); };
   // Candidates are pulled towards a dyadic centre (short exact arithmetic): the centre solved in
   // doubles, taken exactly, when it is strictly inside the solid (almost always); else the exact
   // centre (Cramer's rule on integers, several times dearer).
   const DoubleMatrix4 ed = pr.E.doubles();
-  std::optional<V3> pull = approximate_centre(ed);
-  auto e_sign = [&](const V3& x) {
-    const int s = filtered(ed_own, ed_own ? enclosure(x) : std::nullopt);
-    return s != 0 ? s : exact_forms().first.sign(IntegerForm::Point(x));
+  double pull_doubles[3];
+  std::optional<V3> pull = approximate_centre(ed, pull_doubles);
+  const std::optional<Enclosure3> pull_at = pull ? std::optional<Enclosure3>(enclosure(pull_doubles)) : std::nullopt;
+  auto pull_e_sign = [&]() {
+    const int s = filtered(ed_own, ed_own ? pull_at : std::nullopt);
+    return s != 0 ? s : exact_forms().first.sign(IntegerForm::Point(*pull));
   };
-  if (pull && e_sign(*pull) < 0 && !small_for_doubles(ed, *pull)) {
-    consider(*pull);
-    double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider, brackets);
+  if (pull && pull_e_sign() < 0 && !small_for_doubles(ed, *pull)) {
+    consider_at(*pull, &pull_at);
+    double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider_at, brackets);
   } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
     // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
     // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
@@ -1091,7 +1106,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
     const V3& at = *ctr;
     consider(at);
     const Rational scale = body_scale(pr.E, pr.e_at(at));
-    auto mapped = [&](const V3& u) {
+    auto mapped = [&](const V3& u, const std::optional<Enclosure3>*) {  // u's enclosure is not x's
       V3 x;
       for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
       consider(x);
