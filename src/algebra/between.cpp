@@ -14,14 +14,12 @@ long two_exponent(mpz_srcptr d) {
   return k + 1 == mpz_sizeinbase(d, 2) ? static_cast<long>(k) : -1;
 }
 
-__extension__ typedef __int128 Word;  // __extension__: GCC/Clang builtin types under -Wpedantic
-__extension__ typedef unsigned __int128 UnsignedWord;
+__extension__ typedef __int128 Word;  // __extension__: a GCC/Clang builtin type under -Wpedantic
 
 /// fewest_bits_dyadic below on 128-bit words, when the numerators are words, the shifts short and
 /// |M| < 2^62 (ends that are doubles of close magnitude: the isolating intervals), into `out` (fresh);
 /// false otherwise. The same steps: floor shifts are arithmetic shifts, M xor L has GMP's
 /// two's-complement meaning (both of one sign there), mpz_scan1 is a count of trailing zeros.
-
 bool fewest_bits_in_words(const Rational& lo, const Rational& hi, long kl, long kh, long k, Rational& out) {
   const mpz_srcptr nl = mpq_numref(lo.mpq()), nh = mpq_numref(hi.mpq());
   const long sl = k - kl, sh = k - 1 - kh;  // L = nl 2^sl, M = nl 2^(sl - 1) + nh 2^sh (sl >= 1)
@@ -31,7 +29,7 @@ bool fewest_bits_in_words(const Rational& lo, const Rational& hi, long kl, long 
   if (M >= (one << 62) || M <= -(one << 62)) return false;
   long bits = 0;
   if (!(M >= 0 && L < 0)) {
-    const auto t = static_cast<UnsignedWord>(M ^ L);  // > 0: M > L, one sign
+    const Word t = M ^ L;  // > 0: M > L, one sign
     const auto high = static_cast<unsigned long>(t >> 64), low = static_cast<unsigned long>(t);
     const long h = high != 0 ? 127 - __builtin_clzl(high) : 63 - __builtin_clzl(low);
     bits = std::max(0L, (k - h + 3) / 4 * 4);

@@ -21,6 +21,7 @@
 #include "algebra/pencil.hpp"
 #include "algebra/roots.hpp"
 #include "anysize/exact.hpp"
+#include "filters/checked_int.hpp"
 #include "filters/pooled_integer.hpp"
 
 namespace relpos::certificate {
@@ -571,6 +572,23 @@ void difference(mpq_ptr out, mpq_srcptr a, mpq_srcptr b, mp_bitcnt_t shift) {
   const unsigned long kb = static_cast<unsigned long>(kb0) + shift;
   const unsigned long top = std::max(static_cast<unsigned long>(ka), kb);
   const mpz_ptr num = mpq_numref(out), den = mpq_denref(out);
+  if (top - static_cast<unsigned long>(ka) <= 63 && top - kb <= 63 && mpz_fits_slong_p(mpq_numref(a)) &&
+      mpz_fits_slong_p(mpq_numref(b))) {  // the same on 128-bit words (both terms below 2^126)
+    const Int128 one = 1, n = mpz_get_si(mpq_numref(a)) * (one << (top - static_cast<unsigned long>(ka))) -
+                              mpz_get_si(mpq_numref(b)) * (one << (top - kb));
+    const auto magnitude = static_cast<Int128>(n < 0 ? -n : n);
+    const auto high = static_cast<unsigned long>(magnitude >> 64), low = static_cast<unsigned long>(magnitude);
+    const unsigned long zeros = low != 0 ? static_cast<unsigned long>(__builtin_ctzl(low))
+                                         : 64 + static_cast<unsigned long>(__builtin_ctzl(high | (1UL << 63)));
+    const unsigned long twos = n == 0 ? top : std::min(zeros, top);
+    const Int128 m = n == 0 ? 0 : magnitude >> twos;  // exact
+    const unsigned long limbs[2] = {static_cast<unsigned long>(m), static_cast<unsigned long>(m >> 64)};
+    mpz_import(num, 2, -1, sizeof(unsigned long), 0, 0, limbs);
+    if (n < 0) mpz_neg(num, num);
+    mpz_set_ui(den, 0);
+    mpz_setbit(den, top - twos);
+    return;
+  }
   mpz_mul_2exp(den, mpq_numref(b), top - kb);  // den as a temporary
   mpz_mul_2exp(num, mpq_numref(a), top - static_cast<unsigned long>(ka));
   mpz_sub(num, num, den);
@@ -719,7 +737,7 @@ std::optional<V3> approximate_centre(const DoubleMatrix4& e, double doubles[3]) 
   for (std::size_t i = 0; i < 3; ++i) {
     const double x = d[i + 1] / d[0];
     if (!std::isfinite(x)) return std::nullopt;
-    doubles[i] = x;
+    doubles[i] = x == 0 ? 0.0 : x;       // the rational's double (no -0)
     forms::set_double(out[i].mpq(), x);  // exact; a fresh value, written in place
   }
   return out;
@@ -987,10 +1005,9 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
 
 /// Whether the body is below 2^-20 of its distance to the origin (or its size is not a finite
 /// double): then doubles around its centre cannot resolve it, and the search runs in its frame.
-bool small_for_doubles(const DoubleMatrix4& em, const V3& centre) {
+bool small_for_doubles(const DoubleMatrix4& em, const double c[3]) {
   auto e = [&](int i, int j) { return em[static_cast<std::size_t>(4 * i + j)]; };
-  double c[3], least = HUGE_VAL, far = 0, r2 = e(3, 3);
-  for (int i = 0; i < 3; ++i) c[i] = forms::truncated_double(centre[i]);
+  double least = HUGE_VAL, far = 0, r2 = e(3, 3);
   for (int i = 0; i < 3; ++i) {
     r2 += 2 * e(i, 3) * c[i];
     for (int j = 0; j < 3; ++j) r2 += c[i] * e(i, j) * c[j];
@@ -1096,7 +1113,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
     const int s = filtered(ed_own, ed_own ? pull_at : std::nullopt);
     return s != 0 ? s : exact_forms().first.sign(IntegerForm::Point(*pull));
   };
-  if (pull && pull_e_sign() < 0 && !small_for_doubles(ed, *pull)) {
+  if (pull && pull_e_sign() < 0 && !small_for_doubles(ed, pull_doubles)) {
     consider_at(*pull, &pull_at);
     double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider_at, brackets);
   } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
