@@ -259,25 +259,31 @@ bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc)
 /// The product of the small primes 3, 5, ..., 47 of no_root_modulo_small_primes (< 2^63).
 constexpr unsigned long small_prime_product = 307444891294245705UL;
 
+/// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant: the
+/// remainders are multiplications, not divisions (a few hundred of them per quartic).
+template <unsigned long P>
+bool no_root_modulo(const unsigned long* residue, long deg) {
+  unsigned long c[5] = {0, 0, 0, 0, 0};
+  for (long i = 0; i <= deg; ++i) c[i] = residue[i] % P;
+  if (c[deg] == 0) return false;  // p divides lc(f): a rational root need not reduce
+  for (unsigned long x = 0; x < P; ++x) {
+    unsigned long v = 0;
+    for (long i = deg; i >= 0; --i) v = (v * x + c[i]) % P;
+    if (v == 0) return false;
+  }
+  return true;
+}
+
 /// True when f (degree 1..4, coefficients given modulo small_prime_product) has no root modulo
 /// one of the primes 3..47 not dividing lc(f), every residue tried by Horner on machine words: most
 /// irreducible quartics (and products of irreducible quadratics) have no root modulo one of them.
 bool no_root_modulo_small_primes(const unsigned long* residue, long deg) {
-  static const unsigned long small_primes[] = {3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47};
   if (deg < 1 || deg > 4) return false;
-  for (unsigned long p : small_primes) {
-    unsigned long c[5] = {0, 0, 0, 0, 0};
-    for (long i = 0; i <= deg; ++i) c[i] = residue[i] % p;
-    if (c[deg] == 0) continue;  // p divides lc(f): a rational root need not reduce
-    bool root = false;
-    for (unsigned long x = 0; x < p && !root; ++x) {
-      unsigned long v = 0;
-      for (long i = deg; i >= 0; --i) v = (v * x + c[i]) % p;
-      root = v == 0;
-    }
-    if (!root) return true;
-  }
-  return false;
+  return no_root_modulo<3>(residue, deg) || no_root_modulo<5>(residue, deg) || no_root_modulo<7>(residue, deg) ||
+         no_root_modulo<11>(residue, deg) || no_root_modulo<13>(residue, deg) || no_root_modulo<17>(residue, deg) ||
+         no_root_modulo<19>(residue, deg) || no_root_modulo<23>(residue, deg) || no_root_modulo<29>(residue, deg) ||
+         no_root_modulo<31>(residue, deg) || no_root_modulo<37>(residue, deg) || no_root_modulo<41>(residue, deg) ||
+         no_root_modulo<43>(residue, deg) || no_root_modulo<47>(residue, deg);
 }
 
 /// The small-prime test on integer coefficients (no FLINT polynomial), degree 4.
