@@ -624,9 +624,9 @@ TEST_CASE("rational_inside, fewest bits: the first dyadic floor(mid 2^b) / 2^b a
     Rational lo(a), hi(a + (w > 0 ? w : 1.0));
     if (trial % 5 == 1) hi = lo + Rational(Integer(1), Integer(g.uniform(3, 1000)) * Integer(2));  // not dyadic
     if (trial % 7 == 2) lo = Rational(Integer(1), Integer(3)) - Rational(Integer(2));
-    if (trial % 11 == 3) lo = -hi / 3;  // opposite signs
+    if (trial % 11 == 3) lo = -hi / 3;                                                               // opposite signs
     if (trial % 13 == 4) hi = lo + Rational(std::ldexp(1.0, static_cast<int>(g.uniform(-70, 70))));  // far apart
-    if (trial % 17 == 5) hi = Rational(Integer(g.uniform(-3, 3)));  // an integer end
+    if (trial % 17 == 5) hi = Rational(Integer(g.uniform(-3, 3)));                                   // an integer end
     if (!(lo < hi)) continue;
     const Rational got = relpos::detail::rational_inside(lo, hi, relpos::detail::Shortest::Bits);
     const Rational want = reference(lo, hi);
