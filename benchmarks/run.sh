@@ -60,7 +60,7 @@ if [ "${1:-}" = "--python" ]; then
   cmake --build "$BUILD" -j2 --target relpos_python >/dev/null
   mkdir -p "$OUT"
   PYTHONPATH="$BUILD/python" RELPOS_CLI="$BUILD/cli/relpos" /usr/bin/python3 "$ROOT/benchmarks/python_bench.py" \
-    --skip-dask --pairs 200000 --out "$OUT/python.json" "$@" 2>&1 | tee "$OUT/python_log.txt"
+    --skip-dask --out "$OUT/python.json" "$@" 2>&1 | tee "$OUT/python_log.txt"
   [ "${PIPESTATUS[0]}" = 0 ] || exit 1
   /usr/bin/python3 "$ROOT/benchmarks/tables.py" --python "$OUT"
   exit 0

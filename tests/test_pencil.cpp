@@ -645,13 +645,16 @@ TEST_CASE("rational_inside, fewest bits: the first dyadic floor(mid 2^b) / 2^b a
     }
     return mid;
   };
-  for (int trial = 0; trial < 3000; ++trial) {
+  for (int trial = 0; trial < 6000; ++trial) {
     const double a =
         std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits), static_cast<int>(g.uniform(-60, 60)));
     const double w = std::fabs(a) * std::ldexp(1.0, -static_cast<int>(g.uniform(1, 52)));
     Rational lo(a), hi(a + (w > 0 ? w : 1.0));
     if (trial % 5 == 1) hi = lo + Rational(Integer(1), Integer(g.uniform(3, 1000)) * Integer(2));  // not dyadic
     if (trial % 7 == 2) lo = Rational(Integer(1), Integer(3)) - Rational(Integer(2));
+    if (trial % 11 == 3) lo = -hi / 3;                                                               // opposite signs
+    if (trial % 13 == 4) hi = lo + Rational(std::ldexp(1.0, static_cast<int>(g.uniform(-70, 70))));  // far apart
+    if (trial % 17 == 5) hi = Rational(Integer(g.uniform(-3, 3)));                                   // an integer end
     if (!(lo < hi)) continue;
     const Rational got = relpos::detail::rational_inside(lo, hi, relpos::detail::Shortest::Bits);
     const Rational want = reference(lo, hi);
@@ -751,5 +754,106 @@ TEST_CASE("integer_form of doubles equals integer_form of their exact rationals"
     const auto b = relpos::forms::integer_form(m, l2);
     CHECK(l1 == l2);
     for (std::size_t i = 0; i < 16; ++i) CHECK(a.a[i] == b.a[i]);
+  }
+}
+
+namespace {
+
+/// The exact sign of h (integer coefficients h[0..n]) at a double x, in rationals.
+int exact_sign_at(const std::vector<Integer>& h, double x) {
+  Rational v(0);
+  const Rational q(x);
+  for (std::size_t i = h.size(); i-- > 0;) v = v * q + Rational(h[i]);
+  return CGAL::sign(v);
+}
+
+/// The product of the integer polynomials a and b (coefficients from the constant term up).
+std::vector<Integer> times(const std::vector<Integer>& a, const std::vector<Integer>& b) {
+  std::vector<Integer> out(a.size() + b.size() - 1, Integer(0));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("DoubleSign: the floating-point stages answer only with the exact sign", "[roots]") {
+  using relpos::detail::DoubleSign;
+  std::mt19937_64 rng(20261126);
+  auto big = [&](int bits) {  // a random odd integer of about `bits` bits, random sign
+    Integer z(0);
+    for (int b = 0; b < bits; b += 32) z = z * Integer(1L << 32) + Integer(static_cast<long>(rng() >> 32));
+    z = 2 * z + 1;
+    return (rng() & 1) ? z : Integer(-z);
+  };
+  int certified = 0, asked = 0;
+  SECTION("dyadic roots, their neighbours a few ulps away, and a large common factor") {
+    for (int trial = 0; trial < 300; ++trial) {
+      // h = K (2^k1 x - m1) (2^k2 x - m2) (x^2 + c) or a cubic / quadratic: the roots m / 2^k are
+      // doubles, where h is exactly 0 and no filter may answer.
+      const int n = 2 + trial % 3;
+      std::vector<double> roots;
+      std::vector<Integer> h{big(1 + static_cast<int>(rng() % 150))};
+      for (int j = 0; j < 2; ++j) {
+        const int k = static_cast<int>(rng() % 60);
+        const long m = static_cast<long>(rng() >> 12) | 1;
+        roots.push_back(std::ldexp(static_cast<double>(m), -k));
+        Integer pk(1);
+        for (int b = 0; b < k; ++b) pk *= 2;
+        h = times(h, {Integer(-m), pk});
+      }
+      if (n == 3) h = times(h, {big(40), Integer(1)});
+      if (n == 4) h = times(h, {Integer(1) + big(20) * big(20), Integer(0), Integer(1)});
+      DoubleSign sign(h.data(), n);
+      for (const double r : roots) {
+        CHECK(sign.filtered(r) == 0);  // h(r) = 0 exactly
+        CHECK(sign(r) == 0);
+        double below = r, above = r;
+        for (int step = 0; step < 6; ++step) {
+          below = std::nextafter(below, -HUGE_VAL);
+          above = std::nextafter(above, HUGE_VAL);
+          for (const double x : {below, above}) {
+            const int exact = exact_sign_at(h, x), s = sign.filtered(x);
+            ++asked;
+            if (s != 0) ++certified;
+            CHECK((s == 0 || s == exact));
+            CHECK(sign(x) == exact);
+          }
+        }
+      }
+    }
+    CHECK(certified > 0);  // one ulp from a simple root of a well-scaled h is usually within reach
+  }
+  SECTION("two roots 2^-20 apart: points 2^-44 away from them, out of the crude bound's reach") {
+    // h = (2^20 x - 2^20)(2^20 x - 2^20 - 1) (x^2 + x + 1) K: near x = 1, h' x is 2^-20 of the magnitude
+    // sum |h_i| |x|^i, so h(1 +- 2^-44) is below 2^-48 of it; the compensated bound is 2^-96 of it.
+    for (int trial = 0; trial < 100; ++trial) {
+      const Integer two20(1L << 20);
+      std::vector<Integer> h = times({big(1 + trial)}, {-two20, two20});
+      h = times(h, {-two20 - 1, two20});
+      h = times(h, {Integer(1), Integer(1), Integer(1)});
+      DoubleSign sign(h.data(), 4);
+      for (const double r : {1.0, 1.0 + std::ldexp(1.0, -20)})
+        for (const double x : {r * (1 - 0x1p-44), r * (1 + 0x1p-44)}) {
+          const int exact = exact_sign_at(h, x);
+          REQUIRE(exact != 0);
+          CHECK(sign.filtered(x) == exact);  // certified by the compensated stage
+          CHECK(sign(x) == exact);
+        }
+    }
+  }
+  SECTION("random quartics with large coefficients, at random doubles near and far from their roots") {
+    for (int trial = 0; trial < 300; ++trial) {
+      std::vector<Integer> h;
+      for (int i = 0; i <= 4; ++i) h.push_back(big(1 + static_cast<int>(rng() % 200)));
+      DoubleSign sign(h.data(), 4);
+      for (int j = 0; j < 20; ++j) {
+        const double x = std::ldexp(static_cast<double>(static_cast<long>(rng() >> 11)) - 0x1p52,
+                                    static_cast<int>(rng() % 400) - 252);
+        const int exact = exact_sign_at(h, x), s = sign.filtered(x);
+        CHECK((s == 0 || s == exact));
+        CHECK(sign(x) == exact);
+      }
+    }
   }
 }

@@ -153,6 +153,18 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
           const std::size_t end = std::min(n, begin + kChunk);
           for (std::size_t i = begin; i < end; ++i) {
             const char* failed = "E";
+            if (!shared && e_array.doubles && p_array.doubles) {
+              // Both float64: the one-call decision (the shapes' last signs read off the pencil). An
+              // error is asked again of the two steps below, which say which matrix it is.
+              try {
+                relpos::DoubleMatrix4 ed, pd;
+                std::copy(e_array.doubles + 16 * i, e_array.doubles + 16 * i + 16, ed.begin());
+                std::copy(p_array.doubles + 16 * i, p_array.doubles + 16 * i + 16, pd.begin());
+                codes[i] = position_code(relpos::decide_position(ed, pd).position);
+                continue;
+              } catch (const std::exception&) {
+              }
+            }
             try {
               const relpos::Ellipsoid e = e_array.ellipsoid(i);
               if (shared) {

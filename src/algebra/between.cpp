@@ -14,11 +14,51 @@ long two_exponent(mpz_srcptr d) {
   return k + 1 == mpz_sizeinbase(d, 2) ? static_cast<long>(k) : -1;
 }
 
+__extension__ typedef __int128 Word;  // __extension__: a GCC/Clang builtin type under -Wpedantic
+
+/// fewest_bits_dyadic below on 128-bit words, when the numerators are words, the shifts short and
+/// |M| < 2^62 (ends that are doubles of close magnitude: the isolating intervals), into `out` (fresh);
+/// false otherwise. The same steps: floor shifts are arithmetic shifts, M xor L has GMP's
+/// two's-complement meaning (both of one sign there), mpz_scan1 is a count of trailing zeros.
+bool fewest_bits_in_words(const Rational& lo, const Rational& hi, long kl, long kh, long k, Rational& out) {
+  const mpz_srcptr nl = mpq_numref(lo.mpq()), nh = mpq_numref(hi.mpq());
+  const long sl = k - kl, sh = k - 1 - kh;  // L = nl 2^sl, M = nl 2^(sl - 1) + nh 2^sh (sl >= 1)
+  if (sl > 60 || sh > 60 || !mpz_fits_slong_p(nl) || !mpz_fits_slong_p(nh)) return false;
+  const Word l0 = mpz_get_si(nl), h0 = mpz_get_si(nh), one = 1;
+  const Word L = l0 * (one << sl), M = l0 * (one << (sl - 1)) + h0 * (one << sh);
+  if (M >= (one << 62) || M <= -(one << 62)) return false;
+  long bits = 0;
+  if (!(M >= 0 && L < 0)) {
+    const Word t = M ^ L;  // > 0: M > L, one sign
+    const auto high = static_cast<unsigned long>(t >> 64), low = static_cast<unsigned long>(t);
+    const long h = high != 0 ? 127 - __builtin_clzl(high) : 63 - __builtin_clzl(low);
+    bits = std::max(0L, (k - h + 3) / 4 * 4);
+  }
+  Word num = M;
+  if (bits > 2048 || bits >= k) {
+    bits = k;
+  } else {
+    const long s = k - bits;
+    num = s >= 127 ? (M < 0 ? -1 : 0) : (M >> s);
+  }
+  if (num == 0) return true;  // 0/1
+  auto v = static_cast<long>(num);
+  const unsigned long magnitude = v < 0 ? 0UL - static_cast<unsigned long>(v) : static_cast<unsigned long>(v);
+  const long shift = std::min<long>(__builtin_ctzl(magnitude), bits);
+  v >>= shift;  // exact
+  mpz_set_si(mpq_numref(out.mpq()), v);
+  mpz_set_ui(mpq_denref(out.mpq()), 0);
+  mpz_setbit(mpq_denref(out.mpq()), static_cast<mp_bitcnt_t>(bits - shift));
+  return true;
+}
+
 /// fewest_bits for dyadic ends (the usual case: ends of isolating intervals, which are doubles),
 /// on shifts only. With mid = M / 2^K and lo = L / 2^K: floor(mid 2^b) = M >> (K - b) for b < K,
 /// and mid itself from b = K on. The test scaled / 2^b < hi always holds (scaled / 2^b <= mid).
 Rational fewest_bits_dyadic(const Rational& lo, const Rational& hi, long kl, long kh) {
   const long k = std::max(kl, kh) + 1;
+  Rational out;  // fresh: written in place, then reduced by its common power of two
+  if (fewest_bits_in_words(lo, hi, kl, kh, k, out)) return out;
   mpz_t m, l, t;  // M = mid 2^k, L = lo 2^k and a temporary
   mpz_init(m);
   mpz_init(l);
@@ -27,7 +67,6 @@ Rational fewest_bits_dyadic(const Rational& lo, const Rational& hi, long kl, lon
   mpz_mul_2exp(t, mpq_numref(hi.mpq()), static_cast<mp_bitcnt_t>(k - 1 - kh));
   mpz_add(m, m, t);
   mpz_mul_2exp(l, mpq_numref(lo.mpq()), static_cast<mp_bitcnt_t>(k - kl));
-  Rational out;  // fresh: written in place, then reduced by its common power of two
   mpz_ptr num = mpq_numref(out.mpq()), den = mpq_denref(out.mpq());
   // The fewest bits b (a multiple of 4) with lo < floor(mid 2^b) / 2^b, i.e. L < floor(M / 2^s) 2^s
   // for s = k - b. As M > L, that holds iff floor(M / 2^s) != floor(L / 2^s) (two's complement

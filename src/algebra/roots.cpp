@@ -16,6 +16,7 @@
 
 #include "algebra/flint_thread.hpp"
 #include "algebra/forms.hpp"
+#include "algebra/rounding.hpp"
 #include "algebra/small_factor.hpp"
 #include "algebra/sturm_habicht_quartic.hpp"
 
@@ -258,25 +259,31 @@ bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc)
 /// The product of the small primes 3, 5, ..., 47 of no_root_modulo_small_primes (< 2^63).
 constexpr unsigned long small_prime_product = 307444891294245705UL;
 
+/// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant: the
+/// remainders are multiplications, not divisions (a few hundred of them per quartic).
+template <unsigned long P>
+bool no_root_modulo(const unsigned long* residue, long deg) {
+  unsigned long c[5] = {0, 0, 0, 0, 0};
+  for (long i = 0; i <= deg; ++i) c[i] = residue[i] % P;
+  if (c[deg] == 0) return false;  // p divides lc(f): a rational root need not reduce
+  for (unsigned long x = 0; x < P; ++x) {
+    unsigned long v = 0;
+    for (long i = deg; i >= 0; --i) v = (v * x + c[i]) % P;
+    if (v == 0) return false;
+  }
+  return true;
+}
+
 /// True when f (degree 1..4, coefficients given modulo small_prime_product) has no root modulo
 /// one of the primes 3..47 not dividing lc(f), every residue tried by Horner on machine words: most
 /// irreducible quartics (and products of irreducible quadratics) have no root modulo one of them.
 bool no_root_modulo_small_primes(const unsigned long* residue, long deg) {
-  static const unsigned long small_primes[] = {3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47};
   if (deg < 1 || deg > 4) return false;
-  for (unsigned long p : small_primes) {
-    unsigned long c[5] = {0, 0, 0, 0, 0};
-    for (long i = 0; i <= deg; ++i) c[i] = residue[i] % p;
-    if (c[deg] == 0) continue;  // p divides lc(f): a rational root need not reduce
-    bool root = false;
-    for (unsigned long x = 0; x < p && !root; ++x) {
-      unsigned long v = 0;
-      for (long i = deg; i >= 0; --i) v = (v * x + c[i]) % p;
-      root = v == 0;
-    }
-    if (!root) return true;
-  }
-  return false;
+  return no_root_modulo<3>(residue, deg) || no_root_modulo<5>(residue, deg) || no_root_modulo<7>(residue, deg) ||
+         no_root_modulo<11>(residue, deg) || no_root_modulo<13>(residue, deg) || no_root_modulo<17>(residue, deg) ||
+         no_root_modulo<19>(residue, deg) || no_root_modulo<23>(residue, deg) || no_root_modulo<29>(residue, deg) ||
+         no_root_modulo<31>(residue, deg) || no_root_modulo<37>(residue, deg) || no_root_modulo<41>(residue, deg) ||
+         no_root_modulo<43>(residue, deg) || no_root_modulo<47>(residue, deg);
 }
 
 /// The small-prime test on integer coefficients (no FLINT polynomial), degree 4.
@@ -347,13 +354,9 @@ std::vector<Rational> rational_roots(const Quartic<Integer>& fc) {
 
 namespace {
 
-/// The real roots of h (integer coefficients h[0..n], n <= 4, square-free, no rational root, h(0) != 0),
-/// `expected` of them: approximated in doubles, each certified by exact opposite signs of h at the
-/// (dyadic) ends of disjoint intervals, as many as there are real roots, so each isolates exactly
-/// one (simple, irrational) root. False when the doubles do not separate them.
-/// h's coefficients as doubles, all divided by one power of two (the roots do not move), into c;
+/// h's coefficients as doubles, all divided by one power of two 2^top (the roots do not move), into c;
 /// returns the Cauchy bound 2 (1 + max |c_i / c_n|) on the roots, or 0 when it is not a finite double.
-double scaled_doubles(const Integer* h, int n, double* c) {
+double scaled_doubles(const Integer* h, int n, double* c, long* top_out = nullptr) {
   long top = 0;
   for (int i = 0; i <= n; ++i)
     if (h[i] != 0) top = std::max<long>(top, static_cast<long>(mpz_sizeinbase(h[i].mpz(), 2)));
@@ -362,40 +365,124 @@ double scaled_doubles(const Integer* h, int n, double* c) {
     const double m = mpz_get_d_2exp(&ex, h[i].mpz());
     c[i] = std::ldexp(m, static_cast<int>(std::max<long>(ex - top, -2000)));
   }
+  if (top_out != nullptr) *top_out = top;
   double bound = 0;
   for (int i = 0; i < n; ++i) bound = std::max(bound, std::fabs(c[i] / c[n]));
   bound = 2 * (1 + bound);
   return std::isfinite(bound) && bound <= 1e300 ? bound : 0;
 }
 
+}  // namespace
+
+namespace detail {
+
+DoubleSign::DoubleSign(const Integer* h, int n) : h_(h), n_(n) {
+  bound_ = scaled_doubles(h, n, c_, &top_);
+  for (int i = 0; i <= n; ++i)
+    if (h[i] != 0 && !(std::fabs(c_[i]) >= 0x1p-900)) relative_ = false;
+  nearest_ = rounding_to_nearest();
+}
+
+/// The parts of h_i 2^-top below c_i's 53 bits, to 53 bits more: with r_i = h_i - (h_i's leading 53
+/// bits) (truncated towards zero, as mpz_get_d_2exp truncates), lo_i = r_i 2^-top truncated, so
+/// |lo_i| < 2^-52 |c_i| and |h_i 2^-top - c_i - lo_i| < 2^-105 |c_i|. False when some lo_i would
+/// leave the normal range (then no compensated evaluation).
+bool DoubleSign::split() {
+  thread_local struct Remainder {
+    mpz_t r;
+    Remainder() { mpz_init(r); }
+    ~Remainder() { mpz_clear(r); }
+    Remainder(const Remainder&) = delete;
+    Remainder& operator=(const Remainder&) = delete;
+  } scratch;
+  for (int i = 0; i <= n_; ++i) {
+    lo_[i] = 0;
+    const long bits = h_[i] == 0 ? 0 : static_cast<long>(mpz_sizeinbase(h_[i].mpz(), 2));
+    if (bits <= 53) continue;  // c_i is exact
+    mpz_tdiv_r_2exp(scratch.r, h_[i].mpz(), static_cast<mp_bitcnt_t>(bits - 53));
+    if (mpz_sgn(scratch.r) == 0) continue;
+    long ex = 0;
+    const double m = mpz_get_d_2exp(&ex, scratch.r);
+    if (ex - top_ < -1000) return false;
+    lo_[i] = std::ldexp(m, static_cast<int>(ex - top_));
+  }
+  return true;
+}
+
+int DoubleSign::compensated(double x, double mag) {
+  if (split_ == 0) split_ = split() ? 1 : -1;
+  if (split_ < 0) return 0;
+  // Error-free transformations: s_(i+1) x = p + pi exactly (FMA), p + c_i = s_i + sigma exactly
+  // (Knuth's TwoSum), so with q_i = pi_i + sigma_i + lo_i (q_n = lo_n)
+  //   sum (c_i + lo_i) x^i = s_0 + sum q_i x^i   exactly,
+  // and e is q(x) by Horner.
+  double s = c_[n_], e = lo_[n_], slack = 0x1p-1000;
+  const double ax = std::fabs(x);
+  for (int i = n_ - 1; i >= 0; --i) {
+    const double p = s * x, pi = std::fma(s, x, -p);
+    const double t = p + c_[i], z = t - p, sigma = (p - (t - z)) + (c_[i] - z);
+    s = t;
+    e = e * x + ((pi + sigma) + lo_[i]);
+    if (ax > 1) slack *= ax;
+  }
+  // The error (math.md §11; u = 2^-53, gamma_k = k u / (1 - k u), p~ = sum |c_i| |x|^i):
+  // - sum (|pi_i| + |sigma_i|) |x|^i <= gamma_2n p~ (Graillat, Langlois, Louvet, "Algorithms for
+  //   accurate, validated and fast polynomial evaluation", 2009, the compensated Horner scheme), and
+  //   |lo_i| <= 2^-52 |c_i|; e passes each q_i x^i through at most 2n + 1 roundings:
+  //   |e - q(x)| <= gamma_(2n+1) (gamma_2n + 2^-52) p~ < 2^-99 p~ for n <= 4;
+  // - the low parts miss h_i 2^-top by < 2^-105 |c_i|: < 2^-105 p~ at x;
+  // - an operation below the normal range (where the transformations may lose their exactness)
+  //   adds < 2^-1074, times at most |x|^n later on: within slack = 2^-1000 max(1, |x|)^n;
+  // - mag (all terms positive) is p~ within (1 + u)^2n, and fl(s + e) is s + e within u |fl(s + e)|.
+  // With B = 2^-96 mag + slack, four times the sum of the above, |fl(s + e)| > 2 B fixes the sign.
+  const double bound = 0x1p-96 * mag + slack, v = s + e;
+  if (v > 2 * bound) return 1;
+  if (v < -2 * bound) return -1;
+  return 0;
+}
+
+int DoubleSign::operator()(double x) {
+  if (const int s = filtered(x)) return s;
+  return sign_at_double(h_, n_, x);
+}
+
+int DoubleSign::filtered(double x) {
+  // The double Horner value when it exceeds its error bound (each c_i is h_i 2^-top truncated,
+  // relative error < 2^-52, plus at most 8 roundings: 2^-48 times the magnitude covers both with
+  // room, in any rounding mode). Only when no coefficient was flushed towards 0.
+  if (relative_) {
+    double v = c_[n_], mag = std::fabs(c_[n_]);
+    for (int i = n_ - 1; i >= 0; --i) {
+      v = v * x + c_[i];
+      mag = mag * std::fabs(x) + std::fabs(c_[i]);
+    }
+    const double error = 0x1p-48 * mag;
+    if (std::isfinite(mag) && mag >= 0x1p-900) {
+      if (v > error) return 1;
+      if (v < -error) return -1;
+      // No overflow in the compensated evaluation: every partial value is below about mag.
+      if (nearest_ && mag < 0x1p1000) return compensated(x, mag);
+    }
+  }
+  return 0;
+}
+
+}  // namespace detail
+
+namespace {
+
+/// The real roots of h (integer coefficients h[0..n], n <= 4, square-free, no rational root, h(0) != 0),
+/// `expected` of them: approximated in doubles, each certified by exact opposite signs of h at the
+/// (dyadic) ends of disjoint intervals, as many as there are real roots, so each isolates exactly
+/// one (simple, irrational) root. False when the doubles do not separate them.
 bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::vector<RealRoot>& out) {
-  double c[5];
-  const double bound = scaled_doubles(h, n, c);
+  detail::DoubleSign sign_at(h, n);
+  const double* c = sign_at.coefficients();
+  const double bound = sign_at.root_bound();
   if (bound == 0) return false;  // roots beyond the double range: no fast path
   double roots[4];
   const std::size_t count = static_cast<std::size_t>(approximate_real_roots(c, n, bound, roots));
   if (count != expected) return false;
-  // The sign of h at a double: the double Horner value when it exceeds its error bound (each c_i
-  // is h_i 2^-top truncated, relative error < 2^-52, plus at most 8 roundings: 2^-48 times the
-  // magnitude covers both with room), else exactly. Only when no coefficient was flushed towards 0.
-  bool relative = true;
-  for (int i = 0; i <= n; ++i)
-    if (h[i] != 0 && !(std::fabs(c[i]) >= 0x1p-900)) relative = false;
-  auto sign_at = [&](double x) {
-    if (relative) {
-      double v = c[n], mag = std::fabs(c[n]);
-      for (int i = n - 1; i >= 0; --i) {
-        v = v * x + c[i];
-        mag = mag * std::fabs(x) + std::fabs(c[i]);
-      }
-      const double error = 0x1p-48 * mag;
-      if (std::isfinite(mag) && mag >= 0x1p-900) {
-        if (v > error) return 1;
-        if (v < -error) return -1;
-      }
-    }
-    return sign_at_double(h, n, x);
-  };
   double prev_hi = -HUGE_VAL;
   out.reserve(out.size() + count);
   for (std::size_t k = 0; k < count; ++k) {

@@ -76,4 +76,35 @@ std::vector<std::string> real_root_decimals(const Quartic<Integer>& f, int digit
 /// Exact sign of Disc(g) for a polynomial over Z of degree 1..4 (via Res(g, g')); used for f~.
 int sign_of_discriminant(const std::vector<Integer>& coefficients);
 
+namespace detail {
+
+/// The exact sign of an integer polynomial h (h[0..n], n <= 4, h[n] != 0) at doubles, as the root
+/// certification asks for it: the double Horner value against a crude bound (2^-48 of the
+/// magnitude), then a compensated Horner evaluation on h's leading 106 bits with a rigorous bound
+/// (round-to-nearest only), then exactly in integers. Each stage answers only when certain, so the
+/// result is always the exact sign; the cheaper stages only save work.
+class DoubleSign {
+ public:
+  DoubleSign(const Integer* h, int n);
+  int operator()(double x);
+  /// The two floating-point stages only: the exact sign, or 0 when neither is certain.
+  int filtered(double x);
+  /// h / 2^top in doubles (each coefficient truncated to 53 bits), c[0..n].
+  const double* coefficients() const { return c_; }
+  /// The Cauchy bound on the roots of c, or 0 when it is not a finite double.
+  double root_bound() const { return bound_; }
+
+ private:
+  bool split();
+  int compensated(double x, double mag);
+  const Integer* h_;
+  int n_;
+  long top_ = 0;
+  double c_[5] = {}, lo_[5] = {}, bound_ = 0;
+  bool relative_ = true, nearest_ = true;
+  int split_ = 0;  // lo_ filled: 1, impossible: -1, not yet: 0
+};
+
+}  // namespace detail
+
 }  // namespace relpos

@@ -212,9 +212,15 @@ LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
     mpz_set(out.d.mpz(), nd);
     mpq_div(a, s[1].mpq(), two_s2);
     mpq_neg(a, a);
-    mpq_set_z(t, den);
-    mpq_mul(t, t, two_s2);
-    mpq_inv(out.value.b.mpq(), t);
+    // b = D2 / (Den N2) for 2 s2 = N2 / D2 (lowest terms, N2 > 0): in lowest terms after dividing
+    // out g = gcd(Den, D2) alone, as gcd(D2, N2) = 1. One gcd of two denominators (powers of two
+    // for doubles), where a rational product and inverse take two and reduce twice.
+    const mpz_ptr bn = mpq_numref(out.value.b.mpq()), bd = mpq_denref(out.value.b.mpq());
+    mpz_ptr g = mpq_numref(t);  // a temporary
+    mpz_gcd(g, den, mpq_denref(two_s2));
+    mpz_divexact(bn, mpq_denref(two_s2), g);
+    mpz_divexact(bd, den, g);
+    mpz_mul(bd, bd, mpq_numref(two_s2));
   }
   mpz_clear(nd);
   mpq_clear(two_s2);

@@ -19,7 +19,9 @@
 #include "algebra/flint_thread.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
+#include "algebra/roots.hpp"
 #include "anysize/exact.hpp"
+#include "filters/checked_int.hpp"
 #include "filters/pooled_integer.hpp"
 
 namespace relpos::certificate {
@@ -182,6 +184,7 @@ class IntegerPoly {
     for (std::size_t k = 0; k < z_.size(); ++k) fmpz_poly_set_coeff_mpz(out, static_cast<slong>(k), z_[k].mpz());
   }
   std::size_t degree() const { return z_.empty() ? 0 : z_.size() - 1; }
+  const Integer* data() const { return z_.data(); }
   std::size_t bits() const { return bits_; }  ///< the largest coefficient's bit length
 
  private:
@@ -227,6 +230,8 @@ struct Pair {
   LambdaS ls;
   const forms::MatrixOf<PooledInteger>* ez_of_doubles = nullptr;  ///< Known::ez_of_doubles
   const forms::MatrixOf<PooledInteger>* pz_of_doubles = nullptr;  ///< Known::pz_of_doubles
+  Pair(const Pair&) = delete;                                     // f_at_doubles_ points into f_multiple_ or fz_
+  Pair& operator=(const Pair&) = delete;
   Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known)
       : E(e), P(p), ls(known.f && known.s && known.lambda_s ? *known.lambda_s : LambdaS{}) {
     if (known.f && known.s) {
@@ -263,7 +268,15 @@ struct Pair {
   /// crossings never evaluate f).
   int f_sign(const Rational& x) const {
     if (known_f_multiple_ && !f_multiple_) f_multiple_.emplace(known_f_multiple_->data(), 5);
-    return (f_multiple_ ? *f_multiple_ : fz()).sign(x);
+    const IntegerPoly& q = f_multiple_ ? *f_multiple_ : fz();
+    // At a double (the multipliers between isolating intervals are short dyadics), the roots' sign
+    // at doubles: floating-point stages that answer only when certain, then the same exact sign.
+    const std::pair<double, double> d = forms::tight_interval(x);
+    if (d.first == d.second && q.degree() >= 1 && q.degree() <= 4) {
+      if (!f_at_doubles_) f_at_doubles_.emplace(q.data(), static_cast<int>(q.degree()));
+      return (*f_at_doubles_)(d.first);
+    }
+    return q.sign(x);
   }
   /// X^T Q X for X = (x, 1).
   static Rational form(const Matrix4& q, const V3& x) {
@@ -312,6 +325,7 @@ struct Pair {
   mutable std::optional<IntegerPoly> fz_;
   const Quartic<Integer>* known_f_multiple_ = nullptr;
   mutable std::optional<IntegerPoly> f_multiple_;
+  mutable std::optional<detail::DoubleSign> f_at_doubles_;  // reads f_sign's IntegerPoly in place
 };
 
 /// floor(sqrt(x) 2^bits) / 2^bits for rational x >= 0.
@@ -518,13 +532,32 @@ std::optional<Rational> definite_lambda(const Pair& pr, InDomain in_domain) {
       1024 + 16 * pr.fz().bits());
 }
 
+/// Tight enclosures of a point's coordinates (forms::tight_interval); nullopt beyond the double range.
+using Enclosure3 = std::array<std::pair<double, double>, 3>;
+std::optional<Enclosure3> enclosure(const V3& x) {
+  Enclosure3 out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    out[i] = forms::tight_interval(x[i]);
+    if (!std::isfinite(out[i].first) || !std::isfinite(out[i].second)) return std::nullopt;
+  }
+  return out;
+}
+
+/// The same for a point of finite doubles: the points themselves (tight_interval's answer for a
+/// double; -0 taken as 0, as the rational it converts to).
+Enclosure3 enclosure(const double x[3]) {
+  Enclosure3 out;
+  for (std::size_t i = 0; i < 3; ++i) out[i].first = out[i].second = x[i] == 0 ? 0.0 : x[i];
+  return out;
+}
+
 /// The curve search of crossing_points first in doubles (a search only: every candidate is checked
-/// exactly by `consider`): bisection on lambda for e(x(lambda)) = 0, lambda > 0 for the inside
-/// point and lambda in (lambda_s, 0) for the outside one; the point found, and the same point
-/// pulled towards the centre (exact rationals), are tried. Most crossings end here, without the
-/// exact bisection on rationals. Each bisection's last bracket (good end first: e(x) <= 0 there in
-/// doubles) goes to `brackets` [0] for the inside point and [1] for the outside one: a start for the
-/// exact search when the point itself is beyond doubles.
+/// exactly by `consider(point, its enclosure or null)`): bisection on lambda for e(x(lambda)) = 0,
+/// lambda > 0 for the inside point and lambda in (lambda_s, 0) for the outside one; the point found,
+/// and the same point pulled towards the centre (exact rationals), are tried. Most crossings end
+/// here, without the exact bisection on rationals. Each bisection's last bracket (good end first:
+/// e(x) <= 0 there in doubles) goes to `brackets` [0] for the inside point and [1] for the outside
+/// one: a start for the exact search when the point itself is beyond doubles.
 using DoubleBracket = std::optional<std::pair<double, double>>;
 
 /// out = a - b 2^-shift in lowest terms (out distinct from a and b). The points of the double
@@ -539,6 +572,23 @@ void difference(mpq_ptr out, mpq_srcptr a, mpq_srcptr b, mp_bitcnt_t shift) {
   const unsigned long kb = static_cast<unsigned long>(kb0) + shift;
   const unsigned long top = std::max(static_cast<unsigned long>(ka), kb);
   const mpz_ptr num = mpq_numref(out), den = mpq_denref(out);
+  if (top - static_cast<unsigned long>(ka) <= 63 && top - kb <= 63 && mpz_fits_slong_p(mpq_numref(a)) &&
+      mpz_fits_slong_p(mpq_numref(b))) {  // the same on 128-bit words (both terms below 2^126)
+    const Int128 one = 1, n = mpz_get_si(mpq_numref(a)) * (one << (top - static_cast<unsigned long>(ka))) -
+                              mpz_get_si(mpq_numref(b)) * (one << (top - kb));
+    const auto magnitude = static_cast<Int128>(n < 0 ? -n : n);
+    const auto high = static_cast<unsigned long>(magnitude >> 64), low = static_cast<unsigned long>(magnitude);
+    const unsigned long zeros = low != 0 ? static_cast<unsigned long>(__builtin_ctzl(low))
+                                         : 64 + static_cast<unsigned long>(__builtin_ctzl(high | (1UL << 63)));
+    const unsigned long twos = n == 0 ? top : std::min(zeros, top);
+    const Int128 m = n == 0 ? 0 : magnitude >> twos;  // exact
+    const unsigned long limbs[2] = {static_cast<unsigned long>(m), static_cast<unsigned long>(m >> 64)};
+    mpz_import(num, 2, -1, sizeof(unsigned long), 0, 0, limbs);
+    if (n < 0) mpz_neg(num, num);
+    mpz_set_ui(den, 0);
+    mpz_setbit(den, top - twos);
+    return;
+  }
   mpz_mul_2exp(den, mpq_numref(b), top - kb);  // den as a temporary
   mpz_mul_2exp(num, mpq_numref(a), top - static_cast<unsigned long>(ka));
   mpz_sub(num, num, den);
@@ -594,7 +644,8 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
     // Each point a fresh V3 written in place (`consider` may keep it: its values are then shared).
     V3 q;
     for (int i = 0; i < 3; ++i) forms::set_double(q[i].mpq(), x[i]);  // exact: x is finite
-    consider(q);
+    const std::optional<Enclosure3> at = enclosure(x);
+    consider(q, &at);
     if (wanted) return;
     mpq_t diff[3];  // never shared: reused
     for (auto& v : diff) mpq_init(v);
@@ -602,7 +653,7 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
     for (int k : {40, 20, 10, 4, 1}) {  // pulled towards the centre: inside the solid when x is not
       V3 y;                             // centre + (1 - 2^-k)(q - centre) = q - 2^-k (q - centre)
       for (int i = 0; i < 3; ++i) difference(y[i].mpq(), q[i].mpq(), diff[i], static_cast<mp_bitcnt_t>(k));
-      consider(y);
+      consider(y, nullptr);
       if (wanted) break;
     }
     for (auto& v : diff) mpq_clear(v);
@@ -674,9 +725,10 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
   }
 }
 
-/// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals; nullopt when it is
-/// not finite. An approximation: the caller checks it exactly.
-std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
+/// The centre -M^{-1} m solved in doubles (Cramer's rule), as exact rationals (the doubles
+/// themselves into `doubles`); nullopt when it is not finite. An approximation: the caller checks
+/// it exactly.
+std::optional<V3> approximate_centre(const DoubleMatrix4& e, double doubles[3]) {
   double k[3][4];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 4; ++j) k[i][j] = e[static_cast<std::size_t>(4 * i + j)] * (j == 3 ? -1 : 1);
@@ -685,6 +737,7 @@ std::optional<V3> approximate_centre(const DoubleMatrix4& e) {
   for (std::size_t i = 0; i < 3; ++i) {
     const double x = d[i + 1] / d[0];
     if (!std::isfinite(x)) return std::nullopt;
+    doubles[i] = x == 0 ? 0.0 : x;       // the rational's double (no -0)
     forms::set_double(out[i].mpq(), x);  // exact; a fresh value, written in place
   }
   return out;
@@ -952,10 +1005,9 @@ void max_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
 
 /// Whether the body is below 2^-20 of its distance to the origin (or its size is not a finite
 /// double): then doubles around its centre cannot resolve it, and the search runs in its frame.
-bool small_for_doubles(const DoubleMatrix4& em, const V3& centre) {
+bool small_for_doubles(const DoubleMatrix4& em, const double c[3]) {
   auto e = [&](int i, int j) { return em[static_cast<std::size_t>(4 * i + j)]; };
-  double c[3], least = HUGE_VAL, far = 0, r2 = e(3, 3);
-  for (int i = 0; i < 3; ++i) c[i] = forms::truncated_double(centre[i]);
+  double least = HUGE_VAL, far = 0, r2 = e(3, 3);
   for (int i = 0; i < 3; ++i) {
     r2 += 2 * e(i, 3) * c[i];
     for (int j = 0; j < 3; ++j) r2 += c[i] * e(i, j) * c[j];
@@ -987,17 +1039,6 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
   long least = 0;
   for (int i = 0; i < 3; ++i) least = i == 0 ? log2_of(e(0, 0)) : std::min(least, log2_of(e(i, i)));
   return power_of_two((log2_of(-e_at_centre) - least) / 2);
-}
-
-/// Tight enclosures of a point's coordinates (forms::tight_interval); nullopt beyond the double range.
-using Enclosure3 = std::array<std::pair<double, double>, 3>;
-std::optional<Enclosure3> enclosure(const V3& x) {
-  Enclosure3 out;
-  for (std::size_t i = 0; i < 3; ++i) {
-    out[i] = forms::tight_interval(x[i]);
-    if (!std::isfinite(out[i].first) || !std::isfinite(out[i].second)) return std::nullopt;
-  }
-  return out;
 }
 
 /// sign(X^T Q X), X = (x, 1), for a matrix of exact doubles and x in the enclosure, when interval
@@ -1045,8 +1086,9 @@ void crossing_points(const Pair& pr, Certificate& c) {
   auto filtered = [](const std::optional<DoubleMatrix4>& q, const std::optional<Enclosure3>& x) {
     return q && x ? interval_sign(*q, *x) : 0;
   };
-  auto consider = [&](const V3& x) {
-    const std::optional<Enclosure3> at = ed_own && pd_own ? enclosure(x) : std::nullopt;
+  // `known`: the point's enclosure when the caller has it (a point of doubles), else null.
+  auto consider_at = [&](const V3& x, const std::optional<Enclosure3>* known) {
+    const std::optional<Enclosure3> at = !(ed_own && pd_own) ? std::nullopt : known ? *known : enclosure(x);
     const int se = filtered(ed_own, at);
     if (se > 0) return;
     int sp = filtered(pd_own, at);
@@ -1059,18 +1101,21 @@ void crossing_points(const Pair& pr, Certificate& c) {
     if (sp < 0 && !inside) inside = x;
     if (sp > 0 && !outside) outside = x;
   };
+  auto consider = [&](const V3& x) { consider_at(x, nullptr); };
   // Candidates are pulled towards a dyadic centre (short exact arithmetic): the centre solved in
   // doubles, taken exactly, when it is strictly inside the solid (almost always); else the exact
   // centre (Cramer's rule on integers, several times dearer).
   const DoubleMatrix4 ed = pr.E.doubles();
-  std::optional<V3> pull = approximate_centre(ed);
-  auto e_sign = [&](const V3& x) {
-    const int s = filtered(ed_own, ed_own ? enclosure(x) : std::nullopt);
-    return s != 0 ? s : exact_forms().first.sign(IntegerForm::Point(x));
+  double pull_doubles[3];
+  std::optional<V3> pull = approximate_centre(ed, pull_doubles);
+  const std::optional<Enclosure3> pull_at = pull ? std::optional<Enclosure3>(enclosure(pull_doubles)) : std::nullopt;
+  auto pull_e_sign = [&]() {
+    const int s = filtered(ed_own, ed_own ? pull_at : std::nullopt);
+    return s != 0 ? s : exact_forms().first.sign(IntegerForm::Point(*pull));
   };
-  if (pull && e_sign(*pull) < 0 && !small_for_doubles(ed, *pull)) {
-    consider(*pull);
-    double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider, brackets);
+  if (pull && pull_e_sign() < 0 && !small_for_doubles(ed, pull_doubles)) {
+    consider_at(*pull, &pull_at);
+    double_curve_search(ed, pr.P.doubles(), pr.ls, *pull, inside, outside, consider_at, brackets);
   } else if (const std::optional<V3> ctr = detail::centre_of(pr.E)) {
     // A body too small or too far for doubles: the same search in the body's frame x = c + 2^k u
     // (an exact congruence; lambda and lambda_s unchanged), the body of unit size at the origin;
@@ -1078,7 +1123,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
     const V3& at = *ctr;
     consider(at);
     const Rational scale = body_scale(pr.E, pr.e_at(at));
-    auto mapped = [&](const V3& u) {
+    auto mapped = [&](const V3& u, const std::optional<Enclosure3>*) {  // u's enclosure is not x's
       V3 x;
       for (int i = 0; i < 3; ++i) x[i] = at[i] + scale * u[i];
       consider(x);

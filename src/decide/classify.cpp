@@ -270,7 +270,7 @@ void decide_from_facts(const RootFacts& x, int rho_vs_one, Verdict& v) {
 /// every root count (discriminant_case), so the Sturm-Habicht g2 and g1 are not needed; rho is
 /// always compared (the answer reports smallness). The 3 cases x 3 outcomes of rho are generated once
 /// from the one written decision (decide_from_facts). False when the case or rho is uncertain.
-bool decide_from_discriminant(const DecisionSigns& d, Verdict& v) {
+bool decide_from_discriminant(DiscriminantCase c, int rho, Verdict& v) {  // rho: 2 when uncertain
   struct CaseTable {
     Verdict v[4][3];
     CaseTable() {
@@ -280,13 +280,20 @@ bool decide_from_discriminant(const DecisionSigns& d, Verdict& v) {
     }
   };
   static const CaseTable table;
-  const DiscriminantCase c = discriminant_case(d.quartic);
-  const auto rho = compare_rho_with_one(d.vertex, d.graeffe);
-  if (c == DiscriminantCase::Undecided || !rho) return false;
+  if (c == DiscriminantCase::Undecided || rho == 2) return false;
   const Stage stage = v.stage;
-  v = table.v[static_cast<int>(c)][*rho + 1];
+  v = table.v[static_cast<int>(c)][rho + 1];
   v.stage = stage;
   return true;
+}
+
+/// The same from a filter's signs.
+bool decide_from_discriminant(const DecisionSigns& d, Verdict& v) {
+  return decide_from_discriminant(discriminant_case(d.quartic), compare_rho_with_one(d.vertex, d.graeffe).value_or(2),
+                                  v);
+}
+bool decide_from_discriminant(const DiscriminantSignBits& d, Verdict& v) {
+  return decide_from_discriminant(d.discriminant_case(), d.rho_vs_one(), v);
 }
 
 /// Stage 1b: the static filter left Disc(f) uncertain on exact-double input. If f has rational
@@ -408,8 +415,6 @@ bool finish(const Ellipsoid& e, const Paraboloid& p, bool use_filter, Verdict& v
   return decided(v);
 }
 
-bool always_smallness(const QuarticSigns&) { return true; }
-
 /// The whole filter -> exact policy in one place: each stage certifies what it can, the next one
 /// runs only if a needed sign is still uncertain. All stages evaluate the same generic formulas.
 /// `determinants_pending` (true on entry): a pair validated but for det E < 0 and det P < 0, which
@@ -430,10 +435,11 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
         // The fast route first: f, Disc(f) and smallness only. Anything it leaves open is asked
         // again of the whole sequence, from the start.
         std::optional<bool> gap;  // the gap test from the same f and s, when it is the one open question
-        const DecisionSigns fast = static_filter_discriminant_signs_normalized(
-            *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), always_smallness, &gap);
+        const DiscriminantSignBits fast = static_filter_discriminant_bits_normalized(
+            *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), &gap);
         if (determinants_pending) {
-          if (detail::certain(fast.quartic.f[0]) != -1 || detail::certain(fast.quartic.f[4]) != -1) return v;
+          const unsigned f0_and_f4 = 1u << 0 | 1u << 4;  // f(0) = det E, leading coefficient det P
+          if ((fast.negative & f0_and_f4) != f0_and_f4) return v;
           *determinants_pending = false;
         }
         if (decide_from_discriminant(fast, v)) {

@@ -207,7 +207,7 @@ using View = forms::DoubleView;
 DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en) {
   const Bounds& b = bounds();
   const View p{pn}, e{en};
-  auto f = characteristic_polynomial<double>(p, e);
+  auto f = characteristic_polynomial_lanes(pn, en);  // bit for bit the generic template
   auto s = special_polynomial<double>(p, e);
   double ef[5], es[3];
   for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
@@ -249,39 +249,47 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   return out;
 }
 
-// flatten: the balancing and scaling helpers inlined (out of line they cost 15 % of decide_position).
-[[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& pn,
-                                                                           const DoubleMatrix4& en,
-                                                                           bool (*need_smallness)(const QuarticSigns&),
-                                                                           std::optional<bool>* gap) {
-  // The same pipeline as static_filter_signs_normalized() (f, balancing, scaling into [-1, 1], the
-  // second-stage bound a + r * eps), restricted to f and Disc(f), the latter from the invariants
-  // (27 Disc(f), about a dozen products); s and the smallness quantities only on demand. Index
-  // kDisc27 of the a/r arrays is 27 Disc(f), 6 and 7 are vertex and graeffe. Its balancing and
-  // scaling are written out here rather than shared with the full pipeline: a shared helper measured
-  // 5-12 % slower on decide_position (benchmarks/regime_bench).
+namespace {
+
+/// Bit `bit` of bits.positive / bits.negative for the sign of v certified against `bound`
+/// (certified() above, as two bits; branch-free for the same reason).
+inline void certify_bit(DiscriminantSignBits& bits, int bit, double v, double bound) {
+  const double b = bound * (1 + 0x1p-40) + 1e-300;
+  bits.positive |= static_cast<unsigned>(v > b) << bit;
+  bits.negative |= static_cast<unsigned>(v < -b) << bit;
+}
+
+/// The discriminant route (static_filter_discriminant_signs_normalized): the same pipeline as
+/// static_filter_signs_normalized() (f, balancing, scaling into [-1, 1], the second-stage bound
+/// a + r * eps), restricted to f and Disc(f), the latter from the invariants (27 Disc(f), about a
+/// dozen products); s and the smallness quantities when need(bits) says so. Index kDisc27 of the
+/// a/r arrays is 27 Disc(f), 6 and 7 are vertex and graeffe. Its balancing and scaling are written
+/// out here rather than shared with the full pipeline: a shared helper measured 5-12 % slower on
+/// decide_position (benchmarks/regime_bench).
+template <class Need>
+inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const DoubleMatrix4& en, Need need,
+                                              std::optional<bool>* gap) {
   const Bounds& b = bounds();
-  const View p{pn}, e{en};
-  auto f = characteristic_polynomial<double>(p, e);
+  auto f = characteristic_polynomial_lanes(pn, en);  // bit for bit the generic template
   double ef[5];
   for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
+  DiscriminantSignBits out;
   const double step = balancing_step(f);
-  if (step == 0) return uncertain();
+  if (step == 0) return out;
   double w = 1;
   for (int i = 0; i < 5; ++i, w *= step) {
     f[static_cast<std::size_t>(i)] *= w;
     ef[i] *= w;
   }
-  if (!scale_into_unit(f.data(), ef, 5)) return uncertain();
-  DecisionSigns out;
-  for (int i = 0; i < 5; ++i) out.quartic.f[i] = certified(f[static_cast<std::size_t>(i)], ef[i]);
+  if (!scale_into_unit(f.data(), ef, 5)) return out;
+  for (int i = 0; i < 5; ++i) certify_bit(out, i, f[static_cast<std::size_t>(i)], ef[i]);
   double eps = 0;
   for (int i = 0; i < 5; ++i) eps = std::max(eps, ef[i]);
   if (!(eps <= kEps0)) return out;
   // The same template as the bound was derived from: the same operations in the same order.
-  out.quartic.g0 = certified(discriminant_times_27(f), b.a[kDisc27] + b.r[kDisc27] * eps);
-  if (!need_smallness || !need_smallness(out.quartic)) return out;
-  auto s = special_polynomial<double>(p, e);
+  certify_bit(out, DiscriminantSignBits::kDisc, discriminant_times_27(f), b.a[kDisc27] + b.r[kDisc27] * eps);
+  if (!need(out)) return out;
+  auto s = special_polynomial_lanes(pn, en);  // bit for bit the generic template
   double es[3];
   w = 1;
   for (int i = 0; i < 3; ++i, w *= step) {
@@ -292,11 +300,11 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
   for (int i = 0; i < 3; ++i) eps = std::max(eps, es[i]);
   if (!(eps <= kEps0)) return out;
   SmallnessQuantities<double> sq(f, s);
-  out.vertex = certified(sq.vertex, b.a[6] + b.r[6] * eps);
-  out.graeffe = certified(sq.graeffe, b.a[7] + b.r[7] * eps);
+  certify_bit(out, DiscriminantSignBits::kVertex, sq.vertex, b.a[6] + b.r[6] * eps);
+  certify_bit(out, DiscriminantSignBits::kGraeffe, sq.graeffe, b.a[7] + b.r[7] * eps);
   // The gap test, when the signs leave only it open: four distinct negative roots and rho > 1.
-  if (gap && discriminant_case(out.quartic) == DiscriminantCase::AllNegative &&
-      compare_rho_with_one(out.vertex, out.graeffe) == std::optional<int>(1)) {
+  // One branch, rarely taken: `&` rather than `&&`, whose first test (the case) is unpredictable.
+  if (gap && ((out.discriminant_case() == DiscriminantCase::AllNegative) & (out.rho_vs_one() == 1))) {
     double q[anysize::kGapSigns];
     anysize::GapQuantities<double>(f, s).flatten(q);
     std::optional<int> signs[anysize::kGapSigns];
@@ -305,6 +313,65 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& pn, const Doub
     *gap = anysize::roots_above_lambda_s(signs);
   }
   return out;
+}
+
+USign sign_from_bits(const DiscriminantSignBits& bits, int i) {
+  if ((bits.positive >> i) & 1) return USign(CGAL::POSITIVE);
+  if ((bits.negative >> i) & 1) return USign(CGAL::NEGATIVE);
+  return USign::indeterminate();
+}
+
+}  // namespace
+
+DecisionSigns DiscriminantSignBits::signs() const {
+  DecisionSigns d;
+  for (int i = 0; i < 5; ++i) d.quartic.f[i] = sign_from_bits(*this, i);
+  d.quartic.g0 = sign_from_bits(*this, kDisc);
+  d.vertex = sign_from_bits(*this, kVertex);
+  d.graeffe = sign_from_bits(*this, kGraeffe);
+  return d;
+}
+
+const std::array<DiscriminantCase, 1 << 12>& detail::discriminant_case_table() {
+  static const auto table = [] {
+    std::array<DiscriminantCase, 1 << 12> t{};
+    for (unsigned k = 0; k < t.size(); ++k)
+      t[k] = relpos::discriminant_case(DiscriminantSignBits{k & 0x3f, k >> 6}.signs().quartic);
+    return t;
+  }();
+  return table;
+}
+
+const std::array<signed char, 16>& detail::rho_vs_one_table() {
+  static const auto table = [] {
+    std::array<signed char, 16> t{};
+    for (unsigned k = 0; k < t.size(); ++k) {
+      const DecisionSigns d =
+          DiscriminantSignBits{(k & 3) << DiscriminantSignBits::kVertex, (k >> 2) << DiscriminantSignBits::kVertex}
+              .signs();
+      t[k] = static_cast<signed char>(compare_rho_with_one(d.vertex, d.graeffe).value_or(2));
+    }
+    return t;
+  }();
+  return table;
+}
+
+// flatten: the balancing and scaling helpers inlined (out of line they cost 15 % of decide_position).
+[[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& pn,
+                                                                           const DoubleMatrix4& en,
+                                                                           bool (*need_smallness)(const QuarticSigns&),
+                                                                           std::optional<bool>* gap) {
+  auto need = [need_smallness](const DiscriminantSignBits& bits) {
+    return need_smallness && need_smallness(bits.signs().quartic);
+  };
+  return discriminant_bits(pn, en, need, gap).signs();
+}
+
+[[gnu::flatten]] DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn,
+                                                                                 const DoubleMatrix4& en,
+                                                                                 std::optional<bool>* gap) {
+  return discriminant_bits(
+      pn, en, [](const DiscriminantSignBits&) { return true; }, gap);
 }
 
 }  // namespace relpos

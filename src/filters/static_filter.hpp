@@ -14,6 +14,7 @@
 // uncertain for the interval and exact stages. Compile with -frounding-math and no FP contraction.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "algebra/sturm.hpp"
@@ -44,5 +45,40 @@ DecisionSigns static_filter_signs_normalized(const DoubleMatrix4& p, const Doubl
 DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e,
                                                           bool (*need_smallness)(const QuarticSigns&) = nullptr,
                                                           std::optional<bool>* gap = nullptr);
+
+/// The signs of the discriminant route as two bit masks: bit i of `positive` (`negative`) is set
+/// when quantity i is certified positive (negative), neither when it is uncertain. Quantities in
+/// the order f0..f4, 27 Disc(f), vertex, graeffe. The hot path of classify() reads them without
+/// unpacking (two small tables, generated from discriminant_case and compare_rho_with_one).
+struct DiscriminantSignBits {
+  unsigned positive = 0, negative = 0;
+  static constexpr int kDisc = 5, kVertex = 6, kGraeffe = 7;
+  DecisionSigns signs() const;                 ///< unpacked (g2, g1 uncertain)
+  DiscriminantCase discriminant_case() const;  ///< = relpos::discriminant_case(signs().quartic)
+  /// compare_rho_with_one(signs().vertex, signs().graeffe) as -1, 0, 1, or 2 when uncertain (a plain
+  /// int: an optional returned through memory stalls the hot path on store forwarding).
+  int rho_vs_one() const;
+};
+
+namespace detail {
+/// The tables behind DiscriminantSignBits, indexed by the bits of f0..f4 and 27 Disc(f) (6 positive,
+/// then 6 negative ones) and by those of vertex and graeffe (2 positive, then 2 negative ones).
+const std::array<DiscriminantCase, 1 << 12>& discriminant_case_table();
+const std::array<signed char, 16>& rho_vs_one_table();
+}  // namespace detail
+
+// Inline: called for every pair, between the filter's arithmetic and the decision.
+inline DiscriminantCase DiscriminantSignBits::discriminant_case() const {
+  static const auto& table = detail::discriminant_case_table();
+  return table[(positive & 0x3f) | (negative & 0x3f) << 6];
+}
+inline int DiscriminantSignBits::rho_vs_one() const {
+  static const auto& table = detail::rho_vs_one_table();
+  return table[(positive >> kVertex & 3) | (negative >> kVertex & 3) << 2];
+}
+
+/// static_filter_discriminant_signs_normalized() with smallness always computed, as bits.
+DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e,
+                                                                std::optional<bool>* gap);
 
 }  // namespace relpos
