@@ -112,7 +112,10 @@ std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs
 /// coefficients of f and s, deg f~, the multiple roots and rho itself.
 enum class Evidence { Minimal, Full };
 
-/// The verdict with its evidence: what classify() returns and the reports render.
+/// The verdict with its evidence: what classify() returns and the reports render. Its numbers are
+/// CGAL::Gmpq handles, which share their value with the handles they were copied from; the ones a
+/// result leaves at their defaults share the library's default zeros. Assign a new value to change
+/// one; never write through mpq() in place (that would change every number sharing it).
 struct Classification {
   Verdict verdict;  ///< position, stage, rule, smallness, contact and the root counts (the one copy)
   /// The rule that decided, in one sentence (describe(verdict.rule)).
