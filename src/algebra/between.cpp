@@ -29,7 +29,7 @@ bool fewest_bits_in_words(const Rational& lo, const Rational& hi, long kl, long 
   if (M >= (one << 62) || M <= -(one << 62)) return false;
   long bits = 0;
   if (!(M >= 0 && L < 0)) {
-    const Word t = M ^ L;  // > 0: M > L, one sign
+    const Word t = M ^ L;      // > 0: M > L, one sign
     if (t == 0) return false;  // equal ends (callers pass lo < hi): left to the general path
     const auto high = static_cast<unsigned long>(t >> 64), low = static_cast<unsigned long>(t);
     const long h = high != 0 ? 127 - __builtin_clzl(high) : 63 - __builtin_clzl(low);
