@@ -9,20 +9,23 @@
 //   matrix     32 doubles -> exact_rational -> from_matrix -> decide_position (the rational road)
 //   full       relpos::classify(e, p) with full evidence (f, s, roots, rho, certificate)
 //
-//   regime_bench [--n N] [--full N] [--seed S] [--batches B] [--rounds R] [--only POSITION]
+//   regime_bench [--n N] [--full N] [--seed S] [--batches B] [--rounds R] [--only POSITION] [--out FILE]
 //
 // --only POSITION (C, E, I, ...) only repeats full evidence on the pairs in that position (a
 // profiling loop for perf record), then exits; --only decide, --only doubles and --only onecall
 // repeat those paths.
 //
 // Prints one line per path: median ns per pair over B batches, and its ratio to the naive pipeline
-// timed in the same round, as the median (and range) over R rounds.
+// timed in the same round, as the median (and range) over R rounds. --out FILE also writes them as
+// JSON (benchmarks/tables.py --regime renders it into doc/performance.md: benchmarks/run.sh --regime).
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <map>
 #include <random>
 #include <string>
@@ -138,7 +141,7 @@ double per_call_median_ns(int n, F body) {
 int main(int argc, char** argv) {
   int n = 20000, n_full = 400, batches = 7, rounds = 5;
   unsigned long seed = 20261124;
-  std::string only;
+  std::string only, out_path;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--n") n = std::atoi(argv[i + 1]);
@@ -147,7 +150,10 @@ int main(int argc, char** argv) {
     if (a == "--batches") batches = std::atoi(argv[i + 1]);
     if (a == "--only") only = argv[i + 1];
     if (a == "--rounds") rounds = std::max(1, std::atoi(argv[i + 1]));
+    if (a == "--out") out_path = argv[i + 1];
   }
+  double load_before = -1, load_after = -1;
+  getloadavg(&load_before, 1);
   std::mt19937_64 rng(seed);
   const std::vector<Raw> raw = make_regime(rng, n);
   std::vector<Ellipsoid> es;
@@ -271,6 +277,7 @@ int main(int argc, char** argv) {
       lo = std::min(lo, r[static_cast<std::size_t>(path)]), hi = std::max(hi, r[static_cast<std::size_t>(path)]);
     return std::pair<double, double>{lo, hi};
   };
+  std::string json_positions;
   {  // full evidence by position: where the remaining cost is
     std::map<std::string, std::vector<double>> by;
     for (int i = 0; i < nf; ++i) {
@@ -285,14 +292,23 @@ int main(int argc, char** argv) {
     for (auto& [k, v] : by) {
       std::sort(v.begin(), v.end());
       std::printf(" %s %.0f us (%zu)", k.c_str(), v[v.size() / 2] / 1000, v.size());
+      json_positions +=
+          std::string(json_positions.empty() ? "" : ", ") + "\"" + k + "\": " + std::to_string(v[v.size() / 2]);
     }
     std::printf("\n");
   }
   std::printf("%d rounds; per path: median time, median of the per-round ratios to naive [range]\n", rounds);
+  std::string json_rows;
   auto line = [&](const char* name, int path, const char* what) {
     const auto [lo, hi] = range_of(path);
     std::printf("%-8s %10.0f ns  %8.1fx naive [%.1f-%.1f] %8.2fx minimal   %s\n", name, median_of(time, path),
                 median_of(ratio, path), lo, hi, median_of(ratio_min, path), what);
+    char row[512];
+    std::snprintf(row, sizeof row,
+                  "%s  {\"key\": \"%s\", \"ns\": %.1f, \"vs_naive\": [%.3f, %.3f, %.3f], \"vs_minimal\": %.3f}",
+                  json_rows.empty() ? "" : ",\n", name, median_of(time, path), median_of(ratio, path), lo, hi,
+                  median_of(ratio_min, path));
+    json_rows += row;
   };
   line("naive", kNaive, "naive double pipeline (characteristic quartic + discriminant + sign rule)");
   line("minimal", kMinimal, "minimal float decision (quartic, its discriminant, sign rule)");
@@ -302,5 +318,26 @@ int main(int argc, char** argv) {
   line("matrix", kMatrix, "32 doubles -> exact_rational -> from_matrix -> decide_position");
   line("full", kFull, "classify(e, p), full evidence with certificate (per-pair median)");
   line("full+gc", kFullCached, "the same after relpos::install_gmp_block_cache() (as the CLI and Python)");
+  if (!out_path.empty()) {
+    std::FILE* f = std::fopen(out_path.c_str(), "w");
+    if (!f) {
+      std::perror(out_path.c_str());
+      return 1;
+    }
+    getloadavg(&load_after, 1);
+    char date[32];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    std::fprintf(f, "{\"date\": \"%s\", \"load_before\": %.2f, \"load_after\": %.2f,\n", date, load_before, load_after);
+    std::string mix_json;
+    for (const auto& [k, c] : mix)
+      mix_json += std::string(mix_json.empty() ? "" : ", ") + "\"" + k + "\": " + std::to_string(c);
+    std::fprintf(f,
+                 " \"pairs\": %d, \"full_pairs\": %d, \"seed\": %lu, \"batches\": %d, \"rounds\": %d, "
+                 "\"naive_wrong\": %d,\n \"mix\": {%s},\n \"full_by_position_ns\": {%s},\n \"paths\": [\n%s\n]}\n",
+                 n, nf, seed, batches, rounds, naive_wrong, mix_json.c_str(), json_positions.c_str(),
+                 json_rows.c_str());
+    std::fclose(f);
+  }
   return 0;
 }

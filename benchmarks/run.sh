@@ -7,6 +7,8 @@
 #   benchmarks/run.sh --edge     # only the near-tangent benchmark (edge_bench) and its chart
 #   benchmarks/run.sh --ordinary [ordinary_bench options]   # ordinary pairs and relpos batch against
 #                                # the minimal float decision and json.loads, from the installed package
+#   benchmarks/run.sh --regime   # regime_bench: the paper's regime against the naive and minimal float
+#                                # decisions (doc/performance.md, "The paper's regime")
 #   benchmarks/run.sh --python [python_bench options]       # the Python package against float code in
 #                                # numpy and in pure Python (doc/python.md, "Measured")
 #
@@ -73,6 +75,18 @@ if [ "${1:-}" = "--scene" ]; then
   mkdir -p "$OUT"
   "$BUILD/benchmarks/scene_bench" --n "${2:-1000000}" --seed "$SEED" --out "$OUT" 2>&1 | tee "$OUT/scene_log.txt"
   exit "${PIPESTATUS[0]}"
+fi
+# benchmarks/run.sh --regime: regime_bench (--n 20000 --full 600 --batches 15 --rounds 5) ->
+# benchmarks/results/regime.json and regime_log.txt, and its table in doc/performance.md rewritten
+# (tables.py --regime). About a minute.
+if [ "${1:-}" = "--regime" ]; then
+  cmake --build "$BUILD" -j2 --target regime_bench
+  mkdir -p "$OUT"
+  "$BUILD/benchmarks/regime_bench" --n 20000 --full 600 --batches 15 --rounds 5 --out "$OUT/regime.json" 2>&1 |
+    tee "$OUT/regime_log.txt"
+  [ "${PIPESTATUS[0]}" = 0 ] || exit 1
+  /usr/bin/python3 "$ROOT/benchmarks/tables.py" --regime "$OUT"
+  exit 0
 fi
 # benchmarks/run.sh --edge: spheres at 2^-k from exact tangencies (a few minutes) ->
 # benchmarks/results/edge.csv, edge_log.txt and near_tangency.png (doc/performance.md, "Near tangency").
