@@ -447,7 +447,7 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
             v.roots_above_lambda_s = static_cast<signed char>(*gap);
             decide(v);
           }
-          if (finish(e, p, use_filter, v, exact)) return v;
+          if (decided(v) || finish(e, p, use_filter, v, exact)) return v;  // the common case without a call
         }
         v = Verdict{};
         d = static_filter_signs_normalized(*storage_of(p).filter_doubles(), *storage_of(e).filter_doubles());
@@ -750,7 +750,9 @@ std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs
 }
 
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p) {
-  check_normalized_pair_size(e, p);  // two flag tests for doubles and the fast reader's numbers
+  // Doubles and the fast reader's numbers are within the size limit: the check's own two flag
+  // tests, without the call.
+  if (!storage_of(e).within_size_limit() || !storage_of(p).within_size_limit()) check_normalized_pair_size(e, p);
   std::optional<ExactData> exact;
   return run_stages(e, p, true, exact);
 }
