@@ -570,14 +570,10 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
     const unsigned long ta = twos - sp.twos, tb = twos - se.twos, fa = fives - sp.fives, fb = fives - se.fives;
     const forms::SplitScale* rest_a = p_rest_one && !e_rest_one ? &se : nullptr;  // its rest_power: rest_a^k
     const forms::SplitScale* rest_b = e_rest_one && !p_rest_one ? &sp : nullptr;
-    PooledInteger five_power;
     auto times = [&](const PooledInteger& z, unsigned long i, unsigned long j, Integer& r) {  // z (S/lp)^i (S/le)^j
       const mpz_ptr to = r.mpz();  // a fresh Integer: written in place
       mpz_mul_2exp(to, z.mpz(), ta * i + tb * j);
-      if (const unsigned long k = fa * i + fb * j; k > 0) {
-        mpz_ui_pow_ui(five_power.mpz(), 5, k);
-        mpz_mul(to, to, five_power.mpz());
-      }
+      if (const unsigned long k = fa * i + fb * j; k > 0) forms::times_power_of_five(to, to, k);
       if (rest_a && i > 0) mpz_mul(to, to, rest_a->rest_power[i].mpz());
       if (rest_b && j > 0) mpz_mul(to, to, rest_b->rest_power[j].mpz());
     };
