@@ -714,22 +714,14 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     anysize::LambdaS ls;
     fill_full_evidence(std::move(rs), g, h, sp, se, lp, le, out, ls);
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f. The forms
-    // with their scales as Integers only where it reads them (the points of C, TE and TI, not the
-    // multipliers of E and I) and cannot take them from the doubles.
-    std::optional<certificate::IntegerForms> z;
+    // with their scales only where it reads them (the points of C, TE and TI, not the multipliers
+    // of E and I) and cannot take them from the doubles: copied from the pooled ones on first use.
+    certificate::Known known{&out.f, &out.s, &out.roots, &ls, nullptr, &f};
+    known.ez_pooled = &ep;
+    known.pz_pooled = &pp;
     if (!(pd && ed) && v.position != Position::E && v.position != Position::I) {
-      z.emplace();
-      for (std::size_t i = 0; i < 16; ++i) {
-        mpz_set(z->pz.a[i].mpz(), pp.a[i].mpz());  // fresh entries: written in place
-        mpz_set(z->ez.a[i].mpz(), ep.a[i].mpz());
-      }
-      z->lp = lp;
-      z->le = le;
-    }
-    certificate::Known known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f};
-    if (pd && ed) {
-      known.ez_of_doubles = &ep;
-      known.pz_of_doubles = &pp;
+      known.le_pooled = &le;
+      known.lp_pooled = &lp;
     }
     certificate::build(e, p, v.position, known, out.certificate);
   }
