@@ -376,6 +376,61 @@ SplitScale split_scale(unsigned long twos, unsigned long fives, const Integer& r
   return out;
 }
 
+namespace {
+
+/// 5^0 .. 5^(filled - 1), filled on demand; entries never move (a fixed array).
+struct FivePowers {
+  static constexpr unsigned long kSize = 513;
+  mpz_t p[kSize];
+  unsigned long filled = 0;
+  FivePowers(const FivePowers&) = delete;
+  FivePowers& operator=(const FivePowers&) = delete;
+  FivePowers() = default;
+  ~FivePowers() {
+    for (unsigned long i = 0; i < filled; ++i) mpz_clear(p[i]);
+  }
+  /// 5^k for k < kSize.
+  mpz_srcptr at(unsigned long k) {
+    for (; filled <= k; ++filled) {
+      if (filled == 0) {
+        mpz_init_set_ui(p[0], 1);
+      } else {
+        mpz_init(p[filled]);
+        mpz_mul_ui(p[filled], p[filled - 1], 5);
+      }
+    }
+    return p[k];
+  }
+};
+
+mpz_srcptr cached_power_of_five(unsigned long k) {
+  thread_local FivePowers powers;
+  return k < FivePowers::kSize ? powers.at(k) : nullptr;
+}
+
+}  // namespace
+
+void set_power_of_five(mpz_ptr out, unsigned long k) {
+  if (const mpz_srcptr p = cached_power_of_five(k))
+    mpz_set(out, p);
+  else
+    mpz_ui_pow_ui(out, 5, k);
+}
+
+void times_power_of_five(mpz_ptr out, mpz_srcptr x, unsigned long k) {
+  if (k == 0) {
+    mpz_set(out, x);
+  } else if (const mpz_srcptr p = cached_power_of_five(k)) {
+    mpz_mul(out, x, p);
+  } else {
+    mpz_t t;
+    mpz_init(t);
+    mpz_ui_pow_ui(t, 5, k);
+    mpz_mul(out, x, t);
+    mpz_clear(t);
+  }
+}
+
 void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors, mpq_ptr out) {
   mpz_ptr num = mpq_numref(out);
   mpz_ptr den = mpq_denref(out);
@@ -388,7 +443,7 @@ void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors,
   const unsigned long shift = std::min<unsigned long>(mpz_scan1(z, 0), twos);
   mpz_tdiv_q_2exp(num, z, shift);
   const unsigned long removed = remove_fives(num, fives);
-  mpz_ui_pow_ui(den, 5, fives - removed);
+  set_power_of_five(den, fives - removed);
   mpz_mul_2exp(den, den, twos - shift);
   // gcd(num, rest^k) = g_1 ... g_j, g_i = gcd(num / (g_1 ... g_(i-1)), rest): each step takes
   // min(v_p(num), v_p(rest)) more of every prime p, so k steps take min(v_p(num), k v_p(rest)).

@@ -100,6 +100,13 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m);
 SplitScale split_scale(unsigned long twos, unsigned long fives, const Integer& rest,
                        const std::vector<SplitScale::Factor>& rests);
 
+/// out = 5^k: copied from a per-thread table of the powers met so far (k up to 512; beyond, computed):
+/// the reductions by decimal scales need the same few powers line after line, and mpz_ui_pow_ui
+/// recomputes one with a temporary allocation each time.
+void set_power_of_five(mpz_ptr out, unsigned long k);
+/// out = x 5^k (out may be x), from the same table.
+void times_power_of_five(mpz_ptr out, mpz_srcptr x, unsigned long k);
+
 /// One divisor of divided_by_powers: scale^k, k <= 4.
 struct ScalePower {
   const SplitScale& scale;

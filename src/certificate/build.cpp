@@ -228,9 +228,9 @@ struct Pair {
   LazyMatrix<Ellipsoid> E;
   LazyMatrix<Paraboloid> P;
   LambdaS ls;
-  const forms::MatrixOf<PooledInteger>* ez_of_doubles = nullptr;  ///< Known::ez_of_doubles
-  const forms::MatrixOf<PooledInteger>* pz_of_doubles = nullptr;  ///< Known::pz_of_doubles
-  Pair(const Pair&) = delete;                                     // f_at_doubles_ points into f_multiple_ or fz_
+  const forms::MatrixOf<PooledInteger>* ez_pooled = nullptr;  ///< Known::ez_pooled
+  const forms::MatrixOf<PooledInteger>* pz_pooled = nullptr;  ///< Known::pz_pooled
+  Pair(const Pair&) = delete;                                 // f_at_doubles_ points into f_multiple_ or fz_
   Pair& operator=(const Pair&) = delete;
   Pair(const Ellipsoid& e, const Paraboloid& p, const Known& known)
       : E(e), P(p), ls(known.f && known.s && known.lambda_s ? *known.lambda_s : LambdaS{}) {
@@ -245,8 +245,12 @@ struct Pair {
     }
     if (!(known.f && known.s && known.lambda_s)) ls = anysize::lambda_s_of(s());
     if (known.forms) forms_ = *known.forms;
-    ez_of_doubles = known.ez_of_doubles;
-    pz_of_doubles = known.pz_of_doubles;
+    ez_pooled = known.ez_pooled;
+    pz_pooled = known.pz_pooled;
+    if (ez_pooled && pz_pooled && known.le_pooled && known.lp_pooled) {
+      le_pooled_ = known.le_pooled;
+      lp_pooled_ = known.lp_pooled;
+    }
     known_f_multiple_ = known.f_multiple;
   }
   /// f and s as polynomials over Q: the caller's, copied on first use (the certificates of E and I
@@ -305,14 +309,24 @@ struct Pair {
     return detail::solve_integer_system(k);
   }
 
-  bool has_forms() const { return forms_.has_value(); }
-  /// The integer forms of E and P with their scales: the caller's, else computed on first use
-  /// (from the quadrics' doubles when they have them: no rational matrix).
+  bool has_forms() const { return forms_.has_value() || le_pooled_; }
+  /// The integer forms of E and P with their scales: the caller's (copied from its pooled ones on
+  /// first use), else computed on first use (from the quadrics' doubles when they have them: no
+  /// rational matrix).
   const IntegerForms& forms() const {
     if (!forms_) {
       forms_.emplace();
-      forms_->ez = E.integer_form(forms_->le);
-      forms_->pz = P.integer_form(forms_->lp);
+      if (le_pooled_) {
+        for (std::size_t i = 0; i < 16; ++i) {
+          mpz_set(forms_->ez.a[i].mpz(), ez_pooled->a[i].mpz());  // fresh entries: written in place
+          mpz_set(forms_->pz.a[i].mpz(), pz_pooled->a[i].mpz());
+        }
+        forms_->le = *le_pooled_;
+        forms_->lp = *lp_pooled_;
+      } else {
+        forms_->ez = E.integer_form(forms_->le);
+        forms_->pz = P.integer_form(forms_->lp);
+      }
     }
     return *forms_;
   }
@@ -322,6 +336,8 @@ struct Pair {
   const Quadratic<Rational>* known_s_ = nullptr;
   mutable std::optional<Poly> f_, s_;
   mutable std::optional<IntegerForms> forms_;
+  const Integer* le_pooled_ = nullptr;  // Known::le_pooled and lp_pooled, with ez_pooled and pz_pooled
+  const Integer* lp_pooled_ = nullptr;
   mutable std::optional<IntegerPoly> fz_;
   const Quartic<Integer>* known_f_multiple_ = nullptr;
   mutable std::optional<IntegerPoly> f_multiple_;
@@ -1068,9 +1084,9 @@ void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<IntegerForm> ez_form, pz_form;
   auto exact_forms = [&]() -> std::pair<const IntegerForm&, const IntegerForm&> {
     if (!ez_form) {
-      if (pr.ez_of_doubles && pr.pz_of_doubles) {
-        ez_form.emplace(*pr.ez_of_doubles);
-        pz_form.emplace(*pr.pz_of_doubles);
+      if (pr.ez_pooled && pr.pz_pooled) {
+        ez_form.emplace(*pr.ez_pooled);
+        pz_form.emplace(*pr.pz_pooled);
       } else if (ed_own && pd_own && !pr.has_forms()) {  // the integer forms with their scales are not needed
         ez_form.emplace(*ed_own);
         pz_form.emplace(*pd_own);

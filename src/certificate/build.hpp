@@ -32,10 +32,14 @@ struct Known {
   const anysize::LambdaS* lambda_s = nullptr;    ///< lambda_s of *s (set only with f and s)
   const IntegerForms* forms = nullptr;           ///< the integer forms of E and P, with their scales
   const Quartic<Integer>* f_multiple = nullptr;  ///< a positive integer multiple of f, for exact signs
-  /// forms::integer_form of E and P from their doubles (scales dropped: positive multiples), when
-  /// both quadrics have doubles: the exact signs of e and p at candidate points without recomputing.
-  const forms::MatrixOf<PooledInteger>* ez_of_doubles = nullptr;
-  const forms::MatrixOf<PooledInteger>* pz_of_doubles = nullptr;
+  /// The caller's integer forms of E and P in pooled integers (positive multiples of E and P): the
+  /// exact signs of e and p at candidate points without recomputing.
+  const forms::MatrixOf<PooledInteger>* ez_pooled = nullptr;
+  const forms::MatrixOf<PooledInteger>* pz_pooled = nullptr;
+  /// Their scales when they are the integer forms with their scales (ez_pooled = le E): then `forms`
+  /// is copied from them on first use (most certificates of C read only the signs).
+  const Integer* le_pooled = nullptr;
+  const Integer* lp_pooled = nullptr;
 };
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position, const Known& known);
 /// The same written into `out`, a default-constructed certificate (a caller's member: one

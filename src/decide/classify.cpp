@@ -570,14 +570,10 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
     const unsigned long ta = twos - sp.twos, tb = twos - se.twos, fa = fives - sp.fives, fb = fives - se.fives;
     const forms::SplitScale* rest_a = p_rest_one && !e_rest_one ? &se : nullptr;  // its rest_power: rest_a^k
     const forms::SplitScale* rest_b = e_rest_one && !p_rest_one ? &sp : nullptr;
-    PooledInteger five_power;
     auto times = [&](const PooledInteger& z, unsigned long i, unsigned long j, Integer& r) {  // z (S/lp)^i (S/le)^j
       const mpz_ptr to = r.mpz();  // a fresh Integer: written in place
       mpz_mul_2exp(to, z.mpz(), ta * i + tb * j);
-      if (const unsigned long k = fa * i + fb * j; k > 0) {
-        mpz_ui_pow_ui(five_power.mpz(), 5, k);
-        mpz_mul(to, to, five_power.mpz());
-      }
+      if (const unsigned long k = fa * i + fb * j; k > 0) forms::times_power_of_five(to, to, k);
       if (rest_a && i > 0) mpz_mul(to, to, rest_a->rest_power[i].mpz());
       if (rest_b && j > 0) mpz_mul(to, to, rest_b->rest_power[j].mpz());
     };
@@ -718,22 +714,14 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     anysize::LambdaS ls;
     fill_full_evidence(std::move(rs), g, h, sp, se, lp, le, out, ls);
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f. The forms
-    // with their scales as Integers only where it reads them (the points of C, TE and TI, not the
-    // multipliers of E and I) and cannot take them from the doubles.
-    std::optional<certificate::IntegerForms> z;
+    // with their scales only where it reads them (the points of C, TE and TI, not the multipliers
+    // of E and I) and cannot take them from the doubles: copied from the pooled ones on first use.
+    certificate::Known known{&out.f, &out.s, &out.roots, &ls, nullptr, &f};
+    known.ez_pooled = &ep;
+    known.pz_pooled = &pp;
     if (!(pd && ed) && v.position != Position::E && v.position != Position::I) {
-      z.emplace();
-      for (std::size_t i = 0; i < 16; ++i) {
-        mpz_set(z->pz.a[i].mpz(), pp.a[i].mpz());  // fresh entries: written in place
-        mpz_set(z->ez.a[i].mpz(), ep.a[i].mpz());
-      }
-      z->lp = lp;
-      z->le = le;
-    }
-    certificate::Known known{&out.f, &out.s, &out.roots, &ls, z ? &*z : nullptr, &f};
-    if (pd && ed) {
-      known.ez_of_doubles = &ep;
-      known.pz_of_doubles = &pp;
+      known.le_pooled = &le;
+      known.lp_pooled = &lp;
     }
     certificate::build(e, p, v.position, known, out.certificate);
   }

@@ -350,11 +350,8 @@ void times_powers_of_2_and_5(mpq_ptr r, long t2, long t5) {
     t2 += v;
   }
   for (; t5 < 0 && mpz_divisible_ui_p(num, 5); ++t5) mpz_divexact_ui(num, num, 5);
-  if (t5 > 0) {
-    mpz_ui_pow_ui(den, 5, static_cast<unsigned long>(t5));
-    mpz_mul(num, num, den);
-  }
-  mpz_ui_pow_ui(den, 5, static_cast<unsigned long>(t5 < 0 ? -t5 : 0));
+  if (t5 > 0) forms::times_power_of_five(num, num, static_cast<unsigned long>(t5));
+  forms::set_power_of_five(den, static_cast<unsigned long>(t5 < 0 ? -t5 : 0));
   if (t2 > 0) mpz_mul_2exp(num, num, static_cast<unsigned long>(t2));
   if (t2 < 0) mpz_mul_2exp(den, den, static_cast<unsigned long>(-t2));
 }
@@ -464,10 +461,9 @@ class DecimalForm {
     // rest = lcm(R_a^2, R_b^2) = (R_a R_b / g)^2 multiplies the entries without R; the others
     // rest / R_a^2 = (R_b / g)^2 and rest / R_b^2 = (R_a / g)^2.
     const std::uint64_t g = std::gcd(rest_[1], rest_[2]);
-    mpz_t cof[3], t;
+    mpz_t cof[3];
     mpz_init_set_ui(cof[1], rest_[2] / g);
     mpz_init_set_ui(cof[2], rest_[1] / g);
-    mpz_init(t);
     for (std::size_t r = 1; r < 3; ++r) mpz_mul(cof[r], cof[r], cof[r]);
     Integer rest;  // fresh: written through mpz()
     mpz_set_ui(rest.mpz(), rest_[1]);
@@ -481,19 +477,17 @@ class DecimalForm {
         mpz_set_ui(z, 0);
       } else {
         const auto fives = static_cast<unsigned long>(t5_[k] + u5);
-        if (fives < kMaxWordPower5) {
+        if (fives < kMaxWordPower5)
           mpz_mul_ui(z, n_[k], kPower5[fives]);
-        } else {
-          mpz_ui_pow_ui(t, 5, fives);
-          mpz_mul(z, n_[k], t);
-        }
+        else
+          forms::times_power_of_five(z, n_[k], fives);
         mpz_mul_2exp(z, z, static_cast<unsigned long>(t2_[k] + u2));
         if (mpz_cmp_ui(cof[which_[k]], 1) != 0) mpz_mul(z, z, cof[which_[k]]);
       }
       if (kAt[k][0] != kAt[k][1]) mpz_set(out.form[4 * kAt[k][1] + kAt[k][0]], z);
     }
     const mpz_ptr l = out.l.mpz();  // fresh: written in place
-    mpz_ui_pow_ui(l, 5, static_cast<unsigned long>(u5));
+    forms::set_power_of_five(l, static_cast<unsigned long>(u5));
     mpz_mul_2exp(l, l, static_cast<unsigned long>(u2));
     mpz_mul(l, l, rest.mpz());
     std::vector<forms::SplitScale::Factor> rests;
@@ -501,7 +495,6 @@ class DecimalForm {
       if (rest_[r] > 1 && (r == 1 || rest_[2] != rest_[1])) rests.push_back({Integer(rest_[r]), 2});
     out.split = forms::split_scale(static_cast<unsigned long>(u2), static_cast<unsigned long>(u5), rest, rests);
     for (auto& x : cof) mpz_clear(x);
-    mpz_clear(t);
   }
 
  private:
