@@ -380,7 +380,6 @@ DoubleSign::DoubleSign(const Integer* h, int n) : h_(h), n_(n) {
   bound_ = scaled_doubles(h, n, c_, &top_);
   for (int i = 0; i <= n; ++i)
     if (h[i] != 0 && !(std::fabs(c_[i]) >= 0x1p-900)) relative_ = false;
-  nearest_ = rounding_to_nearest();
 }
 
 /// The parts of h_i 2^-top below c_i's 53 bits, to 53 bits more: with r_i = h_i - (h_i's leading 53
@@ -460,8 +459,10 @@ int DoubleSign::filtered(double x) {
     if (std::isfinite(mag) && mag >= 0x1p-900) {
       if (v > error) return 1;
       if (v < -error) return -1;
-      // No overflow in the compensated evaluation: every partial value is below about mag.
-      if (nearest_ && mag < 0x1p1000) return compensated(x, mag);
+      // No overflow in the compensated evaluation: with |x| >= 1 every partial value is below about
+      // mag, with |x| < 1 below the largest |c_i| < 1. Its error-free transformations need rounding
+      // to nearest, tested at each call (two additions): the object may outlive a rounding mode.
+      if (mag < 0x1p1000 && rounding_to_nearest()) return compensated(x, mag);
     }
   }
   return 0;

@@ -80,7 +80,8 @@ namespace detail {
 
 /// The exact sign of an integer polynomial h (h[0..n], n <= 4, h[n] != 0) at doubles, as the root
 /// certification asks for it: the double Horner value against a crude bound (2^-48 of the
-/// magnitude), then a compensated Horner evaluation on h's leading 106 bits with a rigorous bound
+/// magnitude), then a compensated Horner evaluation on h's leading 53 bits plus the leading 53 bits
+/// of the rest (each coefficient split in two doubles) with a rigorous bound
 /// (round-to-nearest only), then exactly in integers. Each stage answers only when certain, so the
 /// result is always the exact sign; the cheaper stages only save work.
 class DoubleSign {
@@ -101,7 +102,7 @@ class DoubleSign {
   int n_;
   long top_ = 0;
   double c_[5] = {}, lo_[5] = {}, bound_ = 0;
-  bool relative_ = true, nearest_ = true;
+  bool relative_ = true;
   int split_ = 0;  // lo_ filled: 1, impossible: -1, not yet: 0
 };
 
