@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "float_baseline.hpp"
+#include "ordinary/regime_matrices.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/quadric.hpp"
 
@@ -44,11 +45,6 @@ struct Raw {
   DoubleMatrix4 e{}, p{};
 };
 
-void set(DoubleMatrix4& m, int i, int j, double v) {
-  m[static_cast<std::size_t>(4 * i + j)] = v;
-  m[static_cast<std::size_t>(4 * j + i)] = v;
-}
-
 /// z = x^2/a^2 + y^2/b^2 (a, b in [0.5, 2]) and an ellipsoid with semi-axes in [0.02, 0.3] (a
 /// sphere half the time, else rotated by a random rotation), centred near the cup: within 0.6 of
 /// the axis, height in [-0.2, 0.8]. Every entry is the double the formulas round to.
@@ -58,41 +54,21 @@ std::vector<Raw> make_regime(std::mt19937_64& rng, int n) {
   while (static_cast<int>(out.size()) < n) {
     Raw r;
     const double a = uab(rng), b = uab(rng);
-    set(r.p, 0, 0, 1 / (a * a));
-    set(r.p, 1, 1, 1 / (b * b));
-    set(r.p, 2, 3, -0.5);
+    regime::set(r.p, 0, 0, 1 / (a * a));
+    regime::set(r.p, 1, 1, 1 / (b * b));
+    regime::set(r.p, 2, 3, -0.5);
     const double c[3] = {uxy(rng) * a, uxy(rng) * b, uz(rng)};
     double m[3][3] = {};
     if (rng() % 2) {
       const double rad = ur(rng);
       for (int i = 0; i < 3; ++i) m[i][i] = 1 / (rad * rad);
     } else {
-      double q[4], nq = 0;
-      for (double& x : q) x = u11(rng), nq += x * x;
-      nq = std::sqrt(nq);
-      for (double& x : q) x /= nq;
-      const double w = q[0], x = q[1], y = q[2], z = q[3];
-      const double rot[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
-                                {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
-                                {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+      double q[4];
+      for (double& x : q) x = u11(rng);
       const double ax[3] = {ur(rng), ur(rng), ur(rng)};
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          for (int k = 0; k < 3; ++k) m[i][j] += rot[i][k] * rot[j][k] / (ax[k] * ax[k]);
-      for (int i = 0; i < 3; ++i)
-        for (int j = i + 1; j < 3; ++j) m[j][i] = m[i][j];
+      regime::rotated_block(q, ax, m);
     }
-    double e0 = -1;
-    for (int i = 0; i < 3; ++i) {
-      double mc = 0;
-      for (int j = 0; j < 3; ++j) {
-        set(r.e, i, j, m[i][j]);
-        mc += m[i][j] * c[j];
-      }
-      set(r.e, i, 3, -mc);
-      e0 += c[i] * mc;
-    }
-    r.e[15] = e0;
+    regime::ellipsoid_matrix(m, c, r.e);
     out.push_back(r);
   }
   return out;

@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "float_decisions.hpp"
+#include "regime_matrices.hpp"
 
 using relpos::DoubleMatrix4;
 using relpos::Ellipsoid;
@@ -59,11 +60,6 @@ struct Raw {
   DoubleMatrix4 p{}, e{};
 };
 
-void set(DoubleMatrix4& m, int i, int j, double v) {
-  m[static_cast<std::size_t>(4 * i + j)] = v;
-  m[static_cast<std::size_t>(4 * j + i)] = v;
-}
-
 /// The paper's regime in doubles: the paraboloid z = x^2/a^2 + y^2/b^2 (a, b in [0.5, 2]) and a
 /// sphere (half the pairs) or a randomly rotated ellipsoid with semi-axes in [0.1, 0.45] min(a, b)^2,
 /// centred within 0.5 a, 0.5 b of the axis at height h in [-0.25, 0.45] above the surface. Every entry
@@ -74,9 +70,9 @@ std::vector<Raw> make_regime(std::mt19937_64& rng, std::size_t n) {
   std::vector<Raw> out(n);
   for (Raw& r : out) {
     const double a = uab(rng), b = uab(rng), scale = std::min(a, b) * std::min(a, b);
-    set(r.p, 0, 0, 1 / (a * a));
-    set(r.p, 1, 1, 1 / (b * b));
-    set(r.p, 2, 3, -0.5);
+    regime::set(r.p, 0, 0, 1 / (a * a));
+    regime::set(r.p, 1, 1, 1 / (b * b));
+    regime::set(r.p, 2, 3, -0.5);
     const double x = uxy(rng) * a, y = uxy(rng) * b;
     const double size = usize(rng) * scale;  // the largest semi-axis
     const double c[3] = {x, y, x * x / (a * a) + y * y / (b * b) + uh(rng) * size};
@@ -85,31 +81,12 @@ std::vector<Raw> make_regime(std::mt19937_64& rng, std::size_t n) {
       const double rad = size;
       for (int i = 0; i < 3; ++i) m[i][i] = 1 / (rad * rad);
     } else {
-      double q[4], nq = 0;
-      for (double& v : q) v = u11(rng), nq += v * v;
-      nq = std::sqrt(nq);
-      const double w = q[0] / nq, qx = q[1] / nq, qy = q[2] / nq, qz = q[3] / nq;
-      const double rot[3][3] = {{1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - w * qz), 2 * (qx * qz + w * qy)},
-                                {2 * (qx * qy + w * qz), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - w * qx)},
-                                {2 * (qx * qz - w * qy), 2 * (qy * qz + w * qx), 1 - 2 * (qx * qx + qy * qy)}};
+      double q[4];
+      for (double& v : q) v = u11(rng);
       const double ax[3] = {size, size * (0.3 + 0.7 * u01(rng)), size * (0.3 + 0.7 * u01(rng))};
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j <= i; ++j) {
-          for (int k = 0; k < 3; ++k) m[i][j] += rot[i][k] * rot[j][k] / (ax[k] * ax[k]);
-          m[j][i] = m[i][j];
-        }
+      regime::rotated_block(q, ax, m);
     }
-    double e0 = -1;
-    for (int i = 0; i < 3; ++i) {
-      double mc = 0;
-      for (int j = 0; j < 3; ++j) {
-        set(r.e, i, j, m[i][j]);
-        mc += m[i][j] * c[j];
-      }
-      set(r.e, i, 3, -mc);
-      e0 += c[i] * mc;
-    }
-    r.e[15] = e0;
+    regime::ellipsoid_matrix(m, c, r.e);
   }
   return out;
 }
