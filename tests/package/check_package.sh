@@ -40,10 +40,14 @@ fi
 for app in $apps; do
   bash "$check_output" "$tmp/cmake-build/$app" "$example" >/dev/null
 done
+# ldd's output kept first: with pipefail, `ldd | grep -q` fails when grep stops at the match and ldd
+# then gets SIGPIPE.
 if [ "$shared" = ON ]; then
-  ldd "$tmp/cmake-build/app_shared" | grep -q "librelpos.so" || { echo "app_shared does not load librelpos.so"; exit 1; }
+  libs=$(ldd "$tmp/cmake-build/app_shared")
+  grep -q "librelpos.so" <<<"$libs" || { echo "app_shared does not load librelpos.so"; exit 1; }
 fi
-! ldd "$tmp/cmake-build/app" | grep -q "librelpos.so" || { echo "app (relpos::relpos) loads librelpos.so"; exit 1; }
+libs=$(ldd "$tmp/cmake-build/app")
+! grep -q "librelpos.so" <<<"$libs" || { echo "app (relpos::relpos) loads librelpos.so"; exit 1; }
 echo "find_package consumers ($apps): output as documented"
 
 # The exported target must not impose build-only flags on its users.
