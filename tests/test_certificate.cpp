@@ -9,6 +9,7 @@
 #include <relpos/io.hpp>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "certificate/build.hpp"
 #include "certificate/verify.hpp"
@@ -505,4 +506,64 @@ TEST_CASE("the report writer's rationals are GMP's decimal text at every length"
     ++checked;
   }
   REQUIRE(checked == 3000);
+}
+
+TEST_CASE("the report writer's integers are their decimal text at the edges of its chunks and limbs", "[io]") {
+  // The writer's digits (json_write.cpp) come in chunks of 19 (below 10^19 < 2^64), each as a head
+  // of 3 and two words of 8; the quotients are limbs and the text beyond 64 limbs is GMP's. A
+  // decimal text read as an Integer must come back as the same text (and as mpz_get_str's):
+  // nines and zeros across every such edge, powers of two at limb edges, and random digits.
+  const auto written = [](const Rational& x) {
+    std::string text;
+    relpos::io::detail::JsonWriter w(text);
+    w.rational(x);
+    return text;
+  };
+  std::vector<std::string> texts = {"0",
+                                    "1",
+                                    "9",
+                                    "10",
+                                    "99999999",
+                                    "100000000",
+                                    "1000000000000000000",
+                                    "9999999999999999999",
+                                    "10000000000000000000",
+                                    "10000000000000000001",
+                                    "18446744073709551615",
+                                    "18446744073709551616",
+                                    "18446744073709551617",
+                                    "99999999999999999999",
+                                    "100000000000000000000000000000000000000",
+                                    "340282366920938463463374607431768211455",
+                                    "340282366920938463463374607431768211456"};
+  for (int digits = 1; digits <= 1300; digits += digits < 80 ? 1 : 37) {  // 1300 digits: beyond 64 limbs
+    texts.push_back("1" + std::string(digits, '0'));                      // 10^digits
+    texts.push_back(std::string(digits, '9'));                            // 10^digits - 1
+    texts.push_back("1" + std::string(digits, '0') + "1");                // zeros inside the chunks
+  }
+  relpos::Integer power(1);
+  for (int bits = 0; bits <= 64 * 70; ++bits, power = power * relpos::Integer(2))  // 2^bits and its neighbours
+    if (bits % 64 <= 1 || bits % 64 == 63)
+      for (const relpos::Integer& z : {power - 1, power, power + 1}) texts.push_back(relpos::to_string(Rational(z)));
+  std::mt19937_64 rng(64);
+  for (int trial = 0; trial < 2000; ++trial) {  // random digits, with runs of 0 and 9
+    std::string t(1, static_cast<char>('1' + rng() % 9));
+    const std::size_t length = rng() % (trial < 1900 ? 120 : 1400);
+    while (t.size() < length)
+      t.append(rng() % 8 + 1, "0987654321"[rng() % 4 == 0 ? 0 : rng() % 3 == 0 ? 1 : rng() % 10]);
+    texts.push_back(t);
+  }
+  for (const std::string& t : texts) {
+    CAPTURE(t);
+    const relpos::Integer z(t);
+    REQUIRE(written(Rational(z)) == "\"" + t + "\"");
+    REQUIRE(relpos::to_string(Rational(z)) == t);  // the text is GMP's
+    if (z != 0) REQUIRE(written(Rational(-z)) == "\"-" + t + "\"");
+    const Rational third(relpos::Integer(3), z * 2 + 1);  // a denominator of the same size
+    REQUIRE(written(third) == "\"" + relpos::to_string(third) + "\"");
+  }
+  // A denominator whose lowest limb is 1 is not 1: 1/(2^64 + 1) keeps its denominator.
+  const Rational tiny(relpos::Integer(1), relpos::Integer("18446744073709551617"));
+  CHECK(written(tiny) == "\"1/18446744073709551617\"");
+  CHECK(written(Rational(-7)) == "\"-7\"");
 }
