@@ -2,6 +2,7 @@
 
 #include <gmp.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -58,28 +59,37 @@ constexpr std::uint64_t kChunk = 10000000000000000000ULL;  // 10^19 < 2^64 <= 10
 /// floor((2^128 - 1) / 10^19) - 2^64: the reciprocal of the division below.
 constexpr std::uint64_t kChunkInverse = static_cast<std::uint64_t>(~Word(0) / kChunk);
 
-/// q = a / 10^19 for the n limbs of a (q may be a), returning the remainder: the 2-by-1 division by
-/// a normalized invariant divisor of Möller and Granlund ("Improved division by invariant
-/// integers", 2011, Algorithm 4), as mpn_divrem_1 does after computing the reciprocal anew on
+/// The quotient of r 2^64 + x by 10^19 (r < 10^19), r set to the remainder: the 2-by-1 division
+/// by a normalized invariant divisor of Möller and Granlund ("Improved division by invariant
+/// integers", 2011, Algorithm 4), which mpn_divrem_1 does after computing the reciprocal anew on
 /// each call.
-std::uint64_t divide_by_chunk(std::uint64_t* q, const std::uint64_t* a, std::size_t n) {
-  std::uint64_t r = 0;  // < 10^19 throughout
-  for (std::size_t i = n; i-- > 0;) {
-    const Word p = Word(r) * kChunkInverse + ((Word(r) + 1) << 64 | a[i]);
-    auto qi = static_cast<std::uint64_t>(p >> 64);
-    std::uint64_t ri = a[i] - qi * kChunk;
-    if (ri > static_cast<std::uint64_t>(p)) {
-      --qi;
-      ri += kChunk;
-    }
-    if (ri >= kChunk) {
-      ++qi;
-      ri -= kChunk;
-    }
-    q[i] = qi;
-    r = ri;
+std::uint64_t divide_step(std::uint64_t& r, std::uint64_t x) {
+  const Word p = Word(r) * kChunkInverse + ((Word(r) + 1) << 64 | x);
+  auto q = static_cast<std::uint64_t>(p >> 64);
+  r = x - q * kChunk;
+  if (r > static_cast<std::uint64_t>(p)) {
+    --q;
+    r += kChunk;
   }
-  return r;
+  if (r >= kChunk) {
+    ++q;
+    r -= kChunk;
+  }
+  return q;
+}
+
+/// q = a / 10^(19 K) for the n limbs of a (q may be a), and the K chunks of 19 digits divided
+/// out, the lowest first: K divisions by 10^19 in one pass, each taking the previous one's
+/// quotient limb by limb, so that their chains of dependent multiplications overlap.
+template <int K>
+void divide_by_chunks(std::uint64_t* q, const std::uint64_t* a, std::size_t n, std::uint64_t* chunks) {
+  std::uint64_t r[K] = {};  // < 10^19
+  for (std::size_t i = n; i-- > 0;) {
+    std::uint64_t x = a[i];
+    for (int k = 0; k < K; ++k) x = divide_step(r[k], x);
+    q[i] = x;
+  }
+  std::copy(r, r + K, chunks);
 }
 
 /// The 8 decimal digits of x < 10^8 with leading zeros, as the bytes of one word (the first digit
@@ -108,9 +118,9 @@ void put_19_digits(char* p, std::uint64_t v) {
 }
 
 /// The decimal text of z, as mpz_get_str(.., 10, z) writes it, appended to out: the limbs divided by
-/// 10^19 (one pass a chunk, as GMP's basecase, with the reciprocal computed once) and each chunk
-/// written eight digits at a time, into a buffer appended once (several times as fast as
-/// mpz_get_str on the few-hundred-bit numbers of a report). Longer numbers: mpz_get_str itself.
+/// 10^19 as GMP's basecase does (with the reciprocal computed once, and up to four divisions a
+/// pass) and each chunk written eight digits at a time, into a buffer appended once (several times
+/// as fast as mpz_get_str on the few-hundred-bit numbers of a report). Longer numbers: mpz_get_str.
 void append_decimal(std::string& out, mpz_srcptr z) {
   constexpr std::size_t kMaxLimbs = 64;
   static_assert(sizeof(mp_limb_t) == sizeof(std::uint64_t) && GMP_NAIL_BITS == 0, "64-bit limbs");
@@ -127,7 +137,27 @@ void append_decimal(std::string& out, mpz_srcptr z) {
   std::uint64_t chunk[kMaxLimbs + 1];  // 10^19 > 2^63: at most one chunk a limb, and one more
   std::size_t chunks = 0;
   const std::uint64_t* a = mpz_limbs_read(z);
-  for (; n > 1; a = quotient, n -= quotient[n - 1] == 0) chunk[chunks++] = divide_by_chunk(quotient, a, n);
+  while (n > 1) {
+    // At most n - 1 divisions: the quotient stays at least 2^(64 (n - 1)) / 10^(19 (n - 1)) >= 1, so
+    // every chunk is one of z's and the lead is non-zero.
+    const std::size_t k = std::min<std::size_t>(n - 1, 4);
+    switch (k) {
+      case 1:
+        divide_by_chunks<1>(quotient, a, n, chunk + chunks);
+        break;
+      case 2:
+        divide_by_chunks<2>(quotient, a, n, chunk + chunks);
+        break;
+      case 3:
+        divide_by_chunks<3>(quotient, a, n, chunk + chunks);
+        break;
+      default:
+        divide_by_chunks<4>(quotient, a, n, chunk + chunks);
+    }
+    chunks += k;
+    a = quotient;
+    while (quotient[n - 1] == 0) --n;
+  }
   std::uint64_t lead = n == 1 ? a[0] : 0;  // the quotient left: non-zero unless z is
   if (lead >= kChunk) {
     chunk[chunks++] = lead % kChunk;
