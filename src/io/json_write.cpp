@@ -14,9 +14,15 @@
 namespace relpos::io::detail {
 
 void JsonWriter::key(std::string_view name) {
-  out_ += '"';
-  out_.append(name);
-  out_ += "\":";
+  char text[64];  // "name": in one append (the reports' names are short)
+  if (name.size() + 3 > sizeof text) {
+    out_.append(1, '"').append(name).append("\":");
+    return;
+  }
+  text[0] = '"';
+  std::memcpy(text + 1, name.data(), name.size());
+  std::memcpy(text + 1 + name.size(), "\":", 2);
+  out_.append(text, name.size() + 3);
 }
 
 void JsonWriter::string(std::string_view s) {
@@ -32,7 +38,10 @@ void JsonWriter::string(std::string_view s) {
   out_ += '"';
 }
 
-void JsonWriter::integer(long n) { out_ += std::to_string(n); }
+void JsonWriter::integer(long n) {
+  char text[24];
+  out_.append(text, static_cast<std::size_t>(std::to_chars(text, text + sizeof text, n).ptr - text));
+}
 
 void JsonWriter::number(double x) {
   // What dump_json writes for a double (nlohmann's serializer: null when not finite, else its
@@ -117,22 +126,18 @@ void put_19_digits(char* p, std::uint64_t v) {
   std::memcpy(p + 11, &low, 8);
 }
 
-/// The decimal text of z, as mpz_get_str(.., 10, z) writes it, appended to out: the limbs divided by
-/// 10^19 as GMP's basecase does (with the reciprocal computed once, and up to four divisions a
-/// pass) and each chunk written eight digits at a time, into a buffer appended once (several times
-/// as fast as mpz_get_str on the few-hundred-bit numbers of a report). Longer numbers: mpz_get_str.
-void append_decimal(std::string& out, mpz_srcptr z) {
-  constexpr std::size_t kMaxLimbs = 64;
+constexpr std::size_t kMaxLimbs = 64;  ///< longer numbers: mpz_get_str
+/// The longest text of put_decimal: a sign, a lead of up to 20 digits, and chunks of 19.
+constexpr std::size_t kMaxDecimal = 1 + 20 + 19 * (kMaxLimbs + 1);
+
+/// The decimal text of z (at most kMaxLimbs limbs), as mpz_get_str(.., 10, z) writes it, at p;
+/// returns its end. The limbs are divided by 10^19 as GMP's basecase does (with the reciprocal
+/// computed once, and up to four divisions a pass) and each chunk written eight digits at a time
+/// (several times as fast as mpz_get_str on the few-hundred-bit numbers of a report).
+char* put_decimal(char* p, mpz_srcptr z) {
   static_assert(sizeof(mp_limb_t) == sizeof(std::uint64_t) && GMP_NAIL_BITS == 0, "64-bit limbs");
   static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "eight_digits writes the first digit in the low byte");
   std::size_t n = mpz_size(z);
-  if (n > kMaxLimbs) {
-    const std::size_t at = out.size();
-    out.resize(at + mpz_sizeinbase(z, 10) + 2);
-    mpz_get_str(&out[at], 10, z);
-    out.resize(at + std::char_traits<char>::length(&out[at]));
-    return;
-  }
   std::uint64_t quotient[kMaxLimbs];
   std::uint64_t chunk[kMaxLimbs + 1];  // 10^19 > 2^63: at most one chunk a limb, and one more
   std::size_t chunks = 0;
@@ -163,24 +168,49 @@ void append_decimal(std::string& out, mpz_srcptr z) {
     chunk[chunks++] = lead % kChunk;
     lead /= kChunk;
   }
-  char text[1 + 20 + 19 * (kMaxLimbs + 1)];
-  char* p = text;
   if (mpz_sgn(z) < 0) *p++ = '-';
   p = std::to_chars(p, p + 20, lead).ptr;
   for (std::size_t i = chunks; i-- > 0; p += 19) put_19_digits(p, chunk[i]);
-  out.append(text, static_cast<std::size_t>(p - text));
+  return p;
+}
+
+/// The decimal text of z appended to out (mpz_get_str's beyond kMaxLimbs limbs).
+void append_decimal(std::string& out, mpz_srcptr z) {
+  if (mpz_size(z) > kMaxLimbs) {
+    const std::size_t at = out.size();
+    out.resize(at + mpz_sizeinbase(z, 10) + 2);
+    mpz_get_str(&out[at], 10, z);
+    out.resize(at + std::char_traits<char>::length(&out[at]));
+    return;
+  }
+  char text[kMaxDecimal];
+  out.append(text, static_cast<std::size_t>(put_decimal(text, z) - text));
 }
 
 }  // namespace
 
 void JsonWriter::rational(const Rational& q) {
   // Digits straight into the output from the mpq's own integers: no temporary strings for the
-  // longest values of a report, and no copies of the numerator and denominator.
+  // longest values of a report, no copies of the numerator and denominator, and one append.
   const mpq_srcptr x = q.mpq();
+  const mpz_srcptr num = mpq_numref(x), den = mpq_denref(x);
+  const bool integer = mpz_size(den) == 1 && mpz_getlimbn(den, 0) == 1;  // written without "/1"
+  if (mpz_size(num) <= kMaxLimbs && mpz_size(den) <= kMaxLimbs) {
+    char text[2 * kMaxDecimal + 3];
+    char* p = text;
+    *p++ = '"';
+    p = put_decimal(p, num);
+    if (!integer) {
+      *p++ = '/';
+      p = put_decimal(p, den);
+    }
+    *p++ = '"';
+    out_.append(text, static_cast<std::size_t>(p - text));
+    return;
+  }
   out_ += '"';
-  append_decimal(out_, mpq_numref(x));
-  const mpz_srcptr den = mpq_denref(x);
-  if (mpz_size(den) != 1 || mpz_getlimbn(den, 0) != 1) {  // an integer is written without "/1"
+  append_decimal(out_, num);
+  if (!integer) {
     out_ += '/';
     append_decimal(out_, den);
   }
