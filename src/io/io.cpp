@@ -788,6 +788,7 @@ void append_classification(const Classification& c, const RenderOptions& options
 
 std::string classification_json_text(const Classification& c, const RenderOptions& options) {
   std::string out;
+  out.reserve(c.has_full_evidence ? 2048 : 512);  // the reports of ordinary pairs fit: no reallocation
   detail::JsonWriter w(out);
   detail::append_classification(c, options, w);
   out[0] = '{';  // the members start with a comma (batch writes the id before them)
