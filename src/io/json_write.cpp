@@ -126,6 +126,28 @@ void put_19_digits(char* p, std::uint64_t v) {
   std::memcpy(p + 11, &low, 8);
 }
 
+/// The decimal text of v < 10^19 without leading zeros ("0" for 0) at p; returns its end. The
+/// digits are made as a chunk's (a word of eight when they fit) and the leading zeros skipped:
+/// their count from the bit length of v (log10 2 ~ 1233 / 2^12) and one comparison.
+char* put_lead(char* p, std::uint64_t v) {
+  static constexpr std::array<std::uint64_t, 20> kPowers = [] {  // 10^0 .. 10^19
+    std::array<std::uint64_t, 20> t{1};
+    for (std::size_t k = 1; k < t.size(); ++k) t[k] = 10 * t[k - 1];
+    return t;
+  }();
+  const auto below = static_cast<std::size_t>((64 - __builtin_clzll(v | 1)) * 1233 >> 12);  // v's length or one less
+  const std::size_t length = below + ((v | 1) >= kPowers[below]);                           // v | 1: "0" has one digit
+  char digits[19];
+  if (length <= 8) {
+    const std::uint64_t word = eight_digits(static_cast<std::uint32_t>(v));
+    std::memcpy(digits + 11, &word, 8);
+  } else {
+    put_19_digits(digits, v);
+  }
+  std::memcpy(p, digits + 19 - length, length);
+  return p + length;
+}
+
 constexpr std::size_t kMaxLimbs = 64;  ///< longer numbers: mpz_get_str
 /// The longest text of put_decimal: a sign, a lead of up to 20 digits, and chunks of 19.
 constexpr std::size_t kMaxDecimal = 1 + 20 + 19 * (kMaxLimbs + 1);
@@ -169,7 +191,7 @@ char* put_decimal(char* p, mpz_srcptr z) {
     lead /= kChunk;
   }
   if (mpz_sgn(z) < 0) *p++ = '-';
-  p = std::to_chars(p, p + 20, lead).ptr;
+  p = put_lead(p, lead);
   for (std::size_t i = chunks; i-- > 0; p += 19) put_19_digits(p, chunk[i]);
   return p;
 }
