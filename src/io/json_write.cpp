@@ -91,7 +91,7 @@ std::uint64_t divide_step(std::uint64_t& r, std::uint64_t x) {
 /// out, the lowest first: K divisions by 10^19 in one pass, each taking the previous one's
 /// quotient limb by limb, so that their chains of dependent multiplications overlap.
 template <int K>
-void divide_by_chunks(std::uint64_t* q, const std::uint64_t* a, std::size_t n, std::uint64_t* chunks) {
+void divide_by_chunks(mp_limb_t* q, const mp_limb_t* a, std::size_t n, std::uint64_t* chunks) {
   std::uint64_t r[K] = {};  // < 10^19
   for (std::size_t i = n; i-- > 0;) {
     std::uint64_t x = a[i];
@@ -160,10 +160,10 @@ char* put_decimal(char* p, mpz_srcptr z) {
   static_assert(sizeof(mp_limb_t) == sizeof(std::uint64_t) && GMP_NAIL_BITS == 0, "64-bit limbs");
   static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "eight_digits writes the first digit in the low byte");
   std::size_t n = mpz_size(z);
-  std::uint64_t quotient[kMaxLimbs];
+  mp_limb_t quotient[kMaxLimbs];
   std::uint64_t chunk[kMaxLimbs + 1];  // 10^19 > 2^63: at most one chunk a limb, and one more
   std::size_t chunks = 0;
-  const std::uint64_t* a = mpz_limbs_read(z);
+  const mp_limb_t* a = mpz_limbs_read(z);
   while (n > 1) {
     // At most n - 1 divisions: the quotient stays at least 2^(64 (n - 1)) / 10^(19 (n - 1)) >= 1, so
     // every chunk is one of z's and the lead is non-zero.
