@@ -102,14 +102,18 @@ void divide_by_chunks(mp_limb_t* q, const mp_limb_t* a, std::size_t n, std::uint
 }
 
 /// The 8 decimal digits of x < 10^8 with leading zeros, as the bytes of one word (the first digit
-/// in the lowest byte): the four digit pairs, then the eight digits, split in parallel lanes.
+/// first in memory): the four digit pairs, then the eight digits, split in parallel lanes.
 std::uint64_t eight_digits(std::uint32_t x) {
   std::uint64_t v = x / 10000 | std::uint64_t(x % 10000) << 32;              // 2 lanes of 32 bits, < 10^4
   const std::uint64_t hundreds = (v * 10486 >> 20) & 0x0000007F0000007FULL;  // lane / 100, exact below 10^4
   v = hundreds | (v - 100 * hundreds) << 16;                                 // 4 lanes of 16 bits, < 100
   const std::uint64_t tens = (v * 103 >> 10) & 0x000F000F000F000FULL;        // lane / 10, exact below 179
   v = tens | (v - 10 * tens) << 8;                                           // 8 bytes, < 10
-  return v + 0x3030303030303030ULL;
+  v += 0x3030303030303030ULL;
+#if __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+  v = __builtin_bswap64(v);  // the first digit in the first byte in memory
+#endif
+  return v;
 }
 
 /// The 19 decimal digits of v < 10^19 with leading zeros, at p[0..19).
@@ -122,7 +126,7 @@ void put_19_digits(char* p, std::uint64_t v) {
   static_assert(sizeof high == 8, "a word of eight digits");
   p[0] = static_cast<char>('0' + head / 100);
   std::memcpy(p + 1, kDigitPairs + 2 * (head % 100), 2);
-  std::memcpy(p + 3, &high, 8);  // little-endian: the first digit first
+  std::memcpy(p + 3, &high, 8);  // the first digit first (eight_digits' byte order)
   std::memcpy(p + 11, &low, 8);
 }
 
@@ -158,7 +162,6 @@ constexpr std::size_t kMaxDecimal = 1 + 20 + 19 * (kMaxLimbs + 1);
 /// (several times as fast as mpz_get_str on the few-hundred-bit numbers of a report).
 char* put_decimal(char* p, mpz_srcptr z) {
   static_assert(sizeof(mp_limb_t) == sizeof(std::uint64_t) && GMP_NAIL_BITS == 0, "64-bit limbs");
-  static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "eight_digits writes the first digit in the low byte");
   std::size_t n = mpz_size(z);
   mp_limb_t quotient[kMaxLimbs];
   std::uint64_t chunk[kMaxLimbs + 1];  // 10^19 > 2^63: at most one chunk a limb, and one more
