@@ -6,11 +6,11 @@
 #include <flint/fmpz.h>
 #include <flint/fmpz_poly.h>
 #include <flint/nmod_poly.h>
-#include <flint/ulong_extras.h>
 #include <gmp.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -150,40 +150,74 @@ double horner(const double* c, double x) {
   return v;
 }
 
-/// A root of c (degree N) in [lo, hi] where c changes sign (flo: the value at lo): Newton steps kept inside the
-/// shrinking bracket, bisection when a step leaves it or does not halve the bracket (safeguarded Newton), until the
-/// bracket or the step is below 2^-50 of the root. A handful of steps instead of the ~70 of plain bisection; the result
-/// is only an approximation, certified afterwards by exact signs.
+/// The safeguarded Newton iteration for a root of c in [lo, hi] where c changes sign (flo: the value
+/// at lo), started at the midpoint.
+struct Bracket {
+  double x = 0, lo = 0, hi = 0, width = 0, flo = 0;
+  int steps = 0;
+  static Bracket of(double lo, double hi, double flo) { return {lo + (hi - lo) / 2, lo, hi, hi - lo, flo, 0}; }
+};
+
+/// One step for c of degree N (a template parameter: the loops unroll): Newton steps kept inside the
+/// shrinking bracket, bisection when a step leaves it or does not halve the bracket (safeguarded
+/// Newton), until the bracket or the step is below 2^-50 of the root, or after 2100 steps. A handful
+/// of steps instead of the ~70 of plain bisection; the result is only an approximation, certified
+/// afterwards by exact signs. False when done, the root in b.x. Always inlined: a call per step
+/// would cost about as much as the step.
 template <int N>
-double bracketed_root(const double* c, double lo, double hi, double flo) {
-  double x = lo + (hi - lo) / 2, width = hi - lo;
-  for (int it = 0; it < 2100; ++it) {
-    double fx = c[N], dfx = 0;  // value and derivative by Horner
-    for (int i = N - 1; i >= 0; --i) {
-      dfx = dfx * x + fx;
-      fx = fx * x + c[i];
-    }
-    if (fx == 0) return x;
-    if ((fx < 0) == (flo < 0))
-      lo = x;
-    else
-      hi = x;
-    const double tol = 0x1p-50 * std::max(std::fabs(lo), std::fabs(hi));
-    if (!(hi - lo > tol)) break;
-    double next = x - fx / dfx;
-    const bool inside = next > lo && next < hi;
-    if (!inside || !(std::fabs(next - x) < width / 2)) next = lo + (hi - lo) / 2;  // bisect
-    width = std::fabs(next - x);
-    if (!(next > lo && next < hi)) break;  // the bracket cannot shrink further
-    x = next;
-    if (inside && width <= tol) break;  // a Newton step this small: converged
+[[gnu::always_inline]] inline bool newton_step(const double* c, Bracket& b) {
+  const double x = b.x;
+  double fx = c[N], dfx = 0;  // value and derivative by Horner
+  for (int i = N - 1; i >= 0; --i) {
+    dfx = dfx * x + fx;
+    fx = fx * x + c[i];
   }
-  return x;
+  if (fx == 0) return false;
+  if ((fx < 0) == (b.flo < 0))
+    b.lo = x;
+  else
+    b.hi = x;
+  const double tol = 0x1p-50 * std::max(std::fabs(b.lo), std::fabs(b.hi));
+  if (!(b.hi - b.lo > tol)) return false;
+  double next = x - fx / dfx;
+  const bool inside = next > b.lo && next < b.hi;
+  if (!inside || !(std::fabs(next - x) < b.width / 2)) next = b.lo + (b.hi - b.lo) / 2;  // bisect
+  b.width = std::fabs(next - x);
+  if (!(next > b.lo && next < b.hi)) return false;  // the bracket cannot shrink further
+  b.x = next;
+  return !(inside && b.width <= tol) && ++b.steps < 2100;  // a Newton step this small: converged
+}
+
+/// A root of c (degree N) in a bracket.
+template <int N>
+double bracketed_root(const double* c, Bracket b) {
+  while (newton_step<N>(c, b)) {
+  }
+  return b.x;
+}
+
+/// The roots in two brackets, their steps interleaved: each step touches only its own bracket, so
+/// the iterates are those of bracketed_root, while the two chains of dependent floating-point
+/// operations (Horner, division) overlap in the processor (an iteration is bound by their latency).
+/// The brackets are local copies: their state stays in registers.
+template <int N>
+void bracketed_roots(const double* c, Bracket a, Bracket b, double& root_a, double& root_b) {
+  bool more_a = true, more_b = true;
+  while (more_a && more_b) {
+    more_a = newton_step<N>(c, a);
+    more_b = newton_step<N>(c, b);
+  }
+  while (more_a) more_a = newton_step<N>(c, a);
+  while (more_b) more_b = newton_step<N>(c, b);
+  root_a = a.x;
+  root_b = b.x;
 }
 
 /// Approximate real roots of c (degree N <= 4, c[N] != 0) in (-bound, bound), increasing, into
 /// out[0..count): the roots of the derivative split the line into monotone pieces, each with at most
-/// one sign change. Fixed arrays (no allocation): a few hundred nanoseconds.
+/// one sign change. The brackets are solved in pairs from the outside in (the two outer ones, far
+/// from the roots of the derivative, take the most steps, and about as many). Fixed arrays (no
+/// allocation): a few hundred nanoseconds.
 template <int N>
 int approximate_real_roots(const double* c, double bound, double* out) {
   if constexpr (N == 1) {
@@ -198,17 +232,26 @@ int approximate_real_roots(const double* c, double bound, double* out) {
     for (int k = 0; k < m; ++k)
       if (inner[k] > cuts[cut_count - 1] && inner[k] < bound) cuts[cut_count++] = inner[k];
     cuts[cut_count++] = bound;
-    int count = 0;
+    Bracket brackets[N];
+    int count = 0, bracket_count = 0, at[N];  // at: where each bracket's root goes in out
     double b = horner<N>(c, cuts[0]);
     for (int k = 0; k + 1 < cut_count; ++k) {
       const double a = b;  // the value at each cut computed once
       b = horner<N>(c, cuts[k + 1]);
       if (a == 0) {
+        // The last entry, when a bracket's root still to come, lies below its bracket's upper cut,
+        // itself below cuts[k]: NaN (unequal to everything) says the same.
         if (count == 0 || out[count - 1] != cuts[k]) out[count++] = cuts[k];
       } else if ((a < 0) != (b < 0) && b != 0) {
-        out[count++] = bracketed_root<N>(c, cuts[k], cuts[k + 1], a);
+        brackets[bracket_count] = Bracket::of(cuts[k], cuts[k + 1], a);
+        at[bracket_count++] = count;
+        out[count++] = std::numeric_limits<double>::quiet_NaN();
       }
     }
+    int first = 0, last = bracket_count - 1;
+    for (; first < last; ++first, --last)
+      bracketed_roots<N>(c, brackets[first], brackets[last], out[at[first]], out[at[last]]);
+    if (first == last) out[at[first]] = bracketed_root<N>(c, brackets[first]);
     return count;
   }
 }
@@ -229,40 +272,61 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
   }
 }
 
-/// True when Res(f, s) != 0 is shown modulo one word-sized prime p not dividing either leading
-/// coefficient (then Res(f, s) mod p = Res(f mod p, s mod p)) for a quartic f and a quadratic s;
-/// false when that is 0 (the caller computes the gcd over the integers). On machine words, by the
-/// pseudo-remainder r = r1 x + r0 of s2^3 f modulo s: Res(f, s) is a non-zero multiple of the
-/// product of r over the two roots of s, r0^2 s2 - r0 r1 s1 + r1^2 s0 (over s2). A few dozen word
-/// operations, no allocation and no inverse.
+/// The residue of z modulo a compile-time constant M < 2^32, in [0, M) (mpz_fdiv_ui's value), from
+/// its limbs by Horner in base 2^GMP_NUMB_BITS: every product stays below 2^64 and every remainder
+/// is by a constant (a multiplication), without mpz_fdiv_ui's set-up for a run-time divisor.
+template <unsigned long long M>
+unsigned long residue(mpz_srcptr z) {
+  static_assert(M > 1 && M < (1ULL << 32) && GMP_NAIL_BITS == 0 && GMP_NUMB_BITS <= 64);
+  constexpr unsigned long long base = (static_cast<unsigned long long>(GMP_NUMB_MAX) % M + 1) % M;  // 2^bits mod M
+  const mp_limb_t* limbs = mpz_limbs_read(z);
+  unsigned long long r = 0;
+  for (mp_size_t i = static_cast<mp_size_t>(mpz_size(z)); i-- > 0;)
+    r = (r * base + static_cast<unsigned long long>(limbs[i]) % M) % M;  // < M^2 + M <= 2^64
+  return static_cast<unsigned long>(mpz_sgn(z) < 0 && r != 0 ? M - r : r);
+}
+
+/// True when Res(f, s) != 0 is shown modulo one prime p not dividing either leading coefficient
+/// (then Res(f, s) mod p = Res(f mod p, s mod p)) for a quartic f and a quadratic s; false when that
+/// is 0 (the caller computes the gcd over the integers: the answer is the same, only slower). On
+/// machine words, by the pseudo-remainder r = r1 x + r0 of s2^3 f modulo s: Res(f, s) is a non-zero
+/// multiple of the product of r over the two roots of s, r0^2 s2 - r0 r1 s1 + r1^2 s0 (over s2). The
+/// largest prime below 2^32, so that products of residues fit a word: a few dozen word operations,
+/// no allocation and no inverse.
 bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
-  static const mp_limb_t p = n_nextprime(UWORD(1) << 62, 1);
-  static const mp_limb_t p_inverse = n_preinvert_limb(p);
-  auto mod = [](const Integer& z) { return static_cast<mp_limb_t>(mpz_fdiv_ui(z.mpz(), p)); };
-  auto mul = [](mp_limb_t a, mp_limb_t b) { return n_mulmod2_preinv(a, b, p, p_inverse); };
-  auto sub = [](mp_limb_t a, mp_limb_t b) { return n_submod(a, b, p); };
-  mp_limb_t f[5];
-  for (int i = 0; i < 5; ++i) f[i] = mod(fc[static_cast<std::size_t>(i)]);
-  const mp_limb_t s2 = mod(sc[2]), s1 = mod(sc[1]), s0 = mod(sc[0]);
+  constexpr unsigned long long p = 4294967291ULL;  // 2^32 - 5
+  auto mul = [](unsigned long long a, unsigned long long b) { return a * b % p; };
+  auto sub = [](unsigned long long a, unsigned long long b) { return a >= b ? a - b : a + p - b; };
+  unsigned long long f[5];
+  for (int i = 0; i < 5; ++i) f[i] = residue<p>(fc[static_cast<std::size_t>(i)].mpz());
+  const unsigned long long s2 = residue<p>(sc[2].mpz()), s1 = residue<p>(sc[1].mpz()), s0 = residue<p>(sc[0].mpz());
   if (f[4] == 0 || s2 == 0) return false;
   for (int k = 4; k >= 2; --k) {  // f <- s2 f - f_k x^(k-2) s: degree k - 1
     for (int i = 0; i < k; ++i) f[i] = mul(f[i], s2);
     f[k - 1] = sub(f[k - 1], mul(f[k], s1));
     f[k - 2] = sub(f[k - 2], mul(f[k], s0));
   }
-  const mp_limb_t r1 = f[1], r0 = f[0];
-  return n_addmod(sub(mul(mul(r0, r0), s2), mul(mul(r0, r1), s1)), mul(mul(r1, r1), s0), p) != 0;
+  const unsigned long long r1 = f[1], r0 = f[0];
+  return (sub(mul(mul(r0, r0), s2), mul(mul(r0, r1), s1)) + mul(mul(r1, r1), s0)) % p != 0;
 }
 
 /// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
 /// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
-/// The product of the small primes 3, 5, ..., 47 of no_root_modulo_small_primes (< 2^63).
-constexpr unsigned long small_prime_product = 307444891294245705UL;
+/// The small primes 3, ..., 47 of no_root_modulo_small_primes in two products below 2^32: the
+/// residues modulo each product, then modulo each prime.
+constexpr unsigned long long small_primes_low = 3ULL * 5 * 7 * 11 * 13 * 17 * 19 * 23;  // 111546435
+constexpr unsigned long long small_primes_high = 29ULL * 31 * 37 * 41 * 43 * 47;        // 2756205443
+
+/// The residues of f's coefficients modulo the two products.
+struct SmallResidues {
+  unsigned long low[5] = {0, 0, 0, 0, 0}, high[5] = {0, 0, 0, 0, 0};
+};
 
 /// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant: the
 /// remainders are multiplications, not divisions (a few hundred of them per quartic).
 template <unsigned long P>
-bool no_root_modulo(const unsigned long* residue, long deg) {
+bool no_root_modulo(const SmallResidues& r, long deg) {
+  const unsigned long* residue = small_primes_low % P == 0 ? r.low : r.high;
   unsigned long c[5] = {0, 0, 0, 0, 0};
   for (long i = 0; i <= deg; ++i) c[i] = residue[i] % P;
   if (c[deg] == 0) return false;  // p divides lc(f): a rational root need not reduce
@@ -274,33 +338,30 @@ bool no_root_modulo(const unsigned long* residue, long deg) {
   return true;
 }
 
-/// True when f (degree 1..4, coefficients given modulo small_prime_product) has no root modulo
-/// one of the primes 3..47 not dividing lc(f), every residue tried by Horner on machine words: most
-/// irreducible quartics (and products of irreducible quadratics) have no root modulo one of them.
-bool no_root_modulo_small_primes(const unsigned long* residue, long deg) {
+/// True when f (degree 1..4, its coefficients' SmallResidues) has no root modulo one of the primes
+/// 3..47 not dividing lc(f), every residue tried by Horner on machine words: most irreducible
+/// quartics (and products of irreducible quadratics) have no root modulo one of them.
+bool no_root_modulo_small_primes(const SmallResidues& r, long deg) {
   if (deg < 1 || deg > 4) return false;
-  return no_root_modulo<3>(residue, deg) || no_root_modulo<5>(residue, deg) || no_root_modulo<7>(residue, deg) ||
-         no_root_modulo<11>(residue, deg) || no_root_modulo<13>(residue, deg) || no_root_modulo<17>(residue, deg) ||
-         no_root_modulo<19>(residue, deg) || no_root_modulo<23>(residue, deg) || no_root_modulo<29>(residue, deg) ||
-         no_root_modulo<31>(residue, deg) || no_root_modulo<37>(residue, deg) || no_root_modulo<41>(residue, deg) ||
-         no_root_modulo<43>(residue, deg) || no_root_modulo<47>(residue, deg);
+  return no_root_modulo<3>(r, deg) || no_root_modulo<5>(r, deg) || no_root_modulo<7>(r, deg) ||
+         no_root_modulo<11>(r, deg) || no_root_modulo<13>(r, deg) || no_root_modulo<17>(r, deg) ||
+         no_root_modulo<19>(r, deg) || no_root_modulo<23>(r, deg) || no_root_modulo<29>(r, deg) ||
+         no_root_modulo<31>(r, deg) || no_root_modulo<37>(r, deg) || no_root_modulo<41>(r, deg) ||
+         no_root_modulo<43>(r, deg) || no_root_modulo<47>(r, deg);
 }
 
 /// The small-prime test on integer coefficients (no FLINT polynomial), degree 4.
 bool no_root_modulo_small_primes(const Quartic<Integer>& f) {
-  unsigned long residue[5];
-  for (std::size_t i = 0; i < 5; ++i) residue[i] = mpz_fdiv_ui(f[i].mpz(), small_prime_product);
-  return no_root_modulo_small_primes(residue, 4);
+  SmallResidues r;
+  for (std::size_t i = 0; i < 5; ++i) {
+    r.low[i] = residue<small_primes_low>(f[i].mpz());
+    r.high[i] = residue<small_primes_high>(f[i].mpz());
+  }
+  return no_root_modulo_small_primes(r, 4);
 }
 
-bool certainly_no_rational_root(const fmpz_poly_t f) {
-  detail::flint_thread_cleanup_at_exit();
-  // Small primes first, then word-sized ones by FLINT.
-  const slong deg = fmpz_poly_degree(f);
-  unsigned long residue[5] = {0, 0, 0, 0, 0};
-  if (deg >= 1 && deg <= 4)
-    for (slong i = 0; i <= deg; ++i) residue[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), small_prime_product);
-  if (no_root_modulo_small_primes(residue, deg)) return true;
+/// The word-sized primes' part of certainly_no_rational_root (FLINT's arithmetic modulo p).
+bool no_root_modulo_word_primes(const fmpz_poly_t f) {
   static const mp_limb_t primes[] = {1000003, 1000033, 1000037, 1000039, 1000081, 1000099, 1000117, 1000121,
                                      1000133, 1000151, 1000159, 1000171, 1000183, 1000187, 1000193, 1000199};
   bool found = false;
@@ -325,6 +386,19 @@ bool certainly_no_rational_root(const fmpz_poly_t f) {
     if (found) return true;
   }
   return false;
+}
+
+bool certainly_no_rational_root(const fmpz_poly_t f) {
+  detail::flint_thread_cleanup_at_exit();
+  // Small primes first, then word-sized ones by FLINT.
+  const slong deg = fmpz_poly_degree(f);
+  SmallResidues r;
+  if (deg >= 1 && deg <= 4)
+    for (slong i = 0; i <= deg; ++i) {
+      r.low[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), small_primes_low);
+      r.high[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), small_primes_high);
+    }
+  return no_root_modulo_small_primes(r, deg) || no_root_modulo_word_primes(f);
 }
 
 /// The rational roots of f, from its linear factors over Z (FLINT's factorisation; a quartic's is a
@@ -641,12 +715,12 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
       n = integer_coefficients(h, hc.emplace());
       hp = hc->data();
     } else if (ok) {  // gcd 1 after all
-      ok = no_root_modulo_small_primes(fc) || certainly_no_rational_root(f().p);
+      ok = no_root_modulo_small_primes(fc) || no_root_modulo_word_primes(f().p);
     }
     fmpz_poly_clear(g);
     fmpz_poly_clear(h);
   } else {
-    ok = no_root_modulo_small_primes(fc) || certainly_no_rational_root(f().p);
+    ok = no_root_modulo_small_primes(fc) || no_root_modulo_word_primes(f().p);
   }
   fmpz_clear(z);
   if (!ok) return std::nullopt;
