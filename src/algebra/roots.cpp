@@ -272,20 +272,6 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
   }
 }
 
-/// The residue of z modulo a compile-time constant M < 2^32, in [0, M) (mpz_fdiv_ui's value), from
-/// its limbs by Horner in base 2^GMP_NUMB_BITS: every product stays below 2^64 and every remainder
-/// is by a constant (a multiplication), without mpz_fdiv_ui's set-up for a run-time divisor.
-template <unsigned long long M>
-unsigned long residue(mpz_srcptr z) {
-  static_assert(M > 1 && M < (1ULL << 32) && GMP_NAIL_BITS == 0 && GMP_NUMB_BITS <= 64);
-  constexpr unsigned long long base = (static_cast<unsigned long long>(GMP_NUMB_MAX) % M + 1) % M;  // 2^bits mod M
-  const mp_limb_t* limbs = mpz_limbs_read(z);
-  unsigned long long r = 0;
-  for (mp_size_t i = static_cast<mp_size_t>(mpz_size(z)); i-- > 0;)
-    r = (r * base + static_cast<unsigned long long>(limbs[i]) % M) % M;  // < M^2 + M <= 2^64
-  return static_cast<unsigned long>(mpz_sgn(z) < 0 && r != 0 ? M - r : r);
-}
-
 /// True when Res(f, s) != 0 is shown modulo one prime p not dividing either leading coefficient
 /// (then Res(f, s) mod p = Res(f mod p, s mod p)) for a quartic f and a quadratic s; false when that
 /// is 0 (the caller computes the gcd over the integers: the answer is the same, only slower). On
@@ -298,8 +284,9 @@ bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc)
   auto mul = [](unsigned long long a, unsigned long long b) { return a * b % p; };
   auto sub = [](unsigned long long a, unsigned long long b) { return a >= b ? a - b : a + p - b; };
   unsigned long long f[5];
-  for (int i = 0; i < 5; ++i) f[i] = residue<p>(fc[static_cast<std::size_t>(i)].mpz());
-  const unsigned long long s2 = residue<p>(sc[2].mpz()), s1 = residue<p>(sc[1].mpz()), s0 = residue<p>(sc[0].mpz());
+  for (int i = 0; i < 5; ++i) f[i] = detail::residue<p>(fc[static_cast<std::size_t>(i)].mpz());
+  const unsigned long long s2 = detail::residue<p>(sc[2].mpz()), s1 = detail::residue<p>(sc[1].mpz()),
+                           s0 = detail::residue<p>(sc[0].mpz());
   if (f[4] == 0 || s2 == 0) return false;
   for (int k = 4; k >= 2; --k) {  // f <- s2 f - f_k x^(k-2) s: degree k - 1
     for (int i = 0; i < k; ++i) f[i] = mul(f[i], s2);
@@ -354,8 +341,8 @@ bool no_root_modulo_small_primes(const SmallResidues& r, long deg) {
 bool no_root_modulo_small_primes(const Quartic<Integer>& f) {
   SmallResidues r;
   for (std::size_t i = 0; i < 5; ++i) {
-    r.low[i] = residue<small_primes_low>(f[i].mpz());
-    r.high[i] = residue<small_primes_high>(f[i].mpz());
+    r.low[i] = detail::residue<small_primes_low>(f[i].mpz());
+    r.high[i] = detail::residue<small_primes_high>(f[i].mpz());
   }
   return no_root_modulo_small_primes(r, 4);
 }
