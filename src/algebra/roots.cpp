@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 #include "algebra/flint_thread.hpp"
@@ -300,20 +301,14 @@ bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc)
 /// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
 /// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
 /// The small primes 3, ..., 47 of no_root_modulo_small_primes in two products below 2^32: the
-/// residues modulo each product, then modulo each prime.
+/// residues modulo a product, then modulo each of its primes.
 constexpr unsigned long long small_primes_low = 3ULL * 5 * 7 * 11 * 13 * 17 * 19 * 23;  // 111546435
 constexpr unsigned long long small_primes_high = 29ULL * 31 * 37 * 41 * 43 * 47;        // 2756205443
-
-/// The residues of f's coefficients modulo the two products.
-struct SmallResidues {
-  unsigned long low[5] = {0, 0, 0, 0, 0}, high[5] = {0, 0, 0, 0, 0};
-};
 
 /// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant: the
 /// remainders are multiplications, not divisions (a few hundred of them per quartic).
 template <unsigned long P>
-bool no_root_modulo(const SmallResidues& r, long deg) {
-  const unsigned long* residue = small_primes_low % P == 0 ? r.low : r.high;
+bool no_root_modulo(const unsigned long* residue, long deg) {
   unsigned long c[5] = {0, 0, 0, 0, 0};
   for (long i = 0; i <= deg; ++i) c[i] = residue[i] % P;
   if (c[deg] == 0) return false;  // p divides lc(f): a rational root need not reduce
@@ -325,26 +320,30 @@ bool no_root_modulo(const SmallResidues& r, long deg) {
   return true;
 }
 
-/// True when f (degree 1..4, its coefficients' SmallResidues) has no root modulo one of the primes
-/// 3..47 not dividing lc(f), every residue tried by Horner on machine words: most irreducible
-/// quartics (and products of irreducible quadratics) have no root modulo one of them.
-bool no_root_modulo_small_primes(const SmallResidues& r, long deg) {
+/// True when f (degree deg in 1..4) has no root modulo one of the primes 3..47 not dividing lc(f),
+/// every residue tried by Horner on machine words: most irreducible quartics (and products of
+/// irreducible quadratics) have no root modulo one of them, usually one of the first few.
+/// residue_of(i, std::integral_constant<unsigned long long, M>) is f_i mod M in [0, M), asked for
+/// the second product only when the first one's primes do not settle it.
+template <class ResidueOf>
+bool no_root_modulo_small_primes(long deg, ResidueOf residue_of) {
   if (deg < 1 || deg > 4) return false;
-  return no_root_modulo<3>(r, deg) || no_root_modulo<5>(r, deg) || no_root_modulo<7>(r, deg) ||
-         no_root_modulo<11>(r, deg) || no_root_modulo<13>(r, deg) || no_root_modulo<17>(r, deg) ||
-         no_root_modulo<19>(r, deg) || no_root_modulo<23>(r, deg) || no_root_modulo<29>(r, deg) ||
-         no_root_modulo<31>(r, deg) || no_root_modulo<37>(r, deg) || no_root_modulo<41>(r, deg) ||
-         no_root_modulo<43>(r, deg) || no_root_modulo<47>(r, deg);
+  unsigned long r[5] = {0, 0, 0, 0, 0};
+  for (long i = 0; i <= deg; ++i) r[i] = residue_of(i, std::integral_constant<unsigned long long, small_primes_low>());
+  if (no_root_modulo<3>(r, deg) || no_root_modulo<5>(r, deg) || no_root_modulo<7>(r, deg) ||
+      no_root_modulo<11>(r, deg) || no_root_modulo<13>(r, deg) || no_root_modulo<17>(r, deg) ||
+      no_root_modulo<19>(r, deg) || no_root_modulo<23>(r, deg))
+    return true;
+  for (long i = 0; i <= deg; ++i) r[i] = residue_of(i, std::integral_constant<unsigned long long, small_primes_high>());
+  return no_root_modulo<29>(r, deg) || no_root_modulo<31>(r, deg) || no_root_modulo<37>(r, deg) ||
+         no_root_modulo<41>(r, deg) || no_root_modulo<43>(r, deg) || no_root_modulo<47>(r, deg);
 }
 
 /// The small-prime test on integer coefficients (no FLINT polynomial), degree 4.
 bool no_root_modulo_small_primes(const Quartic<Integer>& f) {
-  SmallResidues r;
-  for (std::size_t i = 0; i < 5; ++i) {
-    r.low[i] = detail::residue<small_primes_low>(f[i].mpz());
-    r.high[i] = detail::residue<small_primes_high>(f[i].mpz());
-  }
-  return no_root_modulo_small_primes(r, 4);
+  return no_root_modulo_small_primes(4, [&f](long i, auto modulus) {
+    return detail::residue<decltype(modulus)::value>(f[static_cast<std::size_t>(i)].mpz());
+  });
 }
 
 /// The word-sized primes' part of certainly_no_rational_root (FLINT's arithmetic modulo p).
@@ -378,14 +377,10 @@ bool no_root_modulo_word_primes(const fmpz_poly_t f) {
 bool certainly_no_rational_root(const fmpz_poly_t f) {
   detail::flint_thread_cleanup_at_exit();
   // Small primes first, then word-sized ones by FLINT.
-  const slong deg = fmpz_poly_degree(f);
-  SmallResidues r;
-  if (deg >= 1 && deg <= 4)
-    for (slong i = 0; i <= deg; ++i) {
-      r.low[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), small_primes_low);
-      r.high[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), small_primes_high);
-    }
-  return no_root_modulo_small_primes(r, deg) || no_root_modulo_word_primes(f);
+  auto residue_of = [f](long i, auto modulus) {
+    return fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), static_cast<unsigned long>(decltype(modulus)::value));
+  };
+  return no_root_modulo_small_primes(fmpz_poly_degree(f), residue_of) || no_root_modulo_word_primes(f);
 }
 
 /// The rational roots of f, from its linear factors over Z (FLINT's factorisation; a quartic's is a
