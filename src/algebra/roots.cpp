@@ -305,19 +305,22 @@ bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc)
 constexpr unsigned long long small_primes_low = 3ULL * 5 * 7 * 11 * 13 * 17 * 19 * 23;  // 111546435
 constexpr unsigned long long small_primes_high = 29ULL * 31 * 37 * 41 * 43 * 47;        // 2756205443
 
-/// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant: the
-/// remainders are multiplications, not divisions (a few hundred of them per quartic).
-template <unsigned long P>
+/// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant at most 47:
+/// Horner on the residues below p without any reduction (every value is below 47^5 < 2^32), one
+/// remainder by the constant per point, no early exit (a loop the compiler unrolls or vectorises).
+template <unsigned P>
 bool no_root_modulo(const unsigned long* residue, long deg) {
-  unsigned long c[5] = {0, 0, 0, 0, 0};
-  for (long i = 0; i <= deg; ++i) c[i] = residue[i] % P;
+  static_assert(P <= 47);
+  unsigned c[5] = {0, 0, 0, 0, 0};  // zero above deg: the same values
+  for (long i = 0; i <= deg; ++i) c[i] = static_cast<unsigned>(residue[i] % P);
   if (c[deg] == 0) return false;  // p divides lc(f): a rational root need not reduce
-  for (unsigned long x = 0; x < P; ++x) {
-    unsigned long v = 0;
-    for (long i = deg; i >= 0; --i) v = (v * x + c[i]) % P;
-    if (v == 0) return false;
+  bool root = false;
+  for (unsigned x = 0; x < P; ++x) {
+    unsigned v = 0;
+    for (int i = 4; i >= 0; --i) v = v * x + c[i];
+    root |= v % P == 0;
   }
-  return true;
+  return !root;
 }
 
 /// True when f (degree deg in 1..4) has no root modulo one of the primes 3..47 not dividing lc(f),
