@@ -154,9 +154,13 @@ double horner(const double* c, double x) {
 /// The safeguarded Newton iteration for a root of c in [lo, hi] where c changes sign (flo: the value
 /// at lo), started at the midpoint.
 struct Bracket {
-  double x = 0, lo = 0, hi = 0, width = 0, flo = 0;
+  double x = 0, lo = 0, hi = 0;
+  double half_step = 0;  // half the last step (at first half the bracket), computed as the step's test reads it
+  bool flo_negative = false;
   int steps = 0;
-  static Bracket of(double lo, double hi, double flo) { return {lo + (hi - lo) / 2, lo, hi, hi - lo, flo, 0}; }
+  static Bracket of(double lo, double hi, double flo) {
+    return {lo + (hi - lo) / 2, lo, hi, (hi - lo) / 2, flo < 0, 0};
+  }
 };
 
 /// One step for c of degree N (a template parameter: the loops unroll): Newton steps kept inside the
@@ -174,7 +178,7 @@ template <int N>
     fx = fx * x + c[i];
   }
   if (fx == 0) return false;
-  if ((fx < 0) == (b.flo < 0))
+  if ((fx < 0) == b.flo_negative)
     b.lo = x;
   else
     b.hi = x;
@@ -182,11 +186,12 @@ template <int N>
   if (!(b.hi - b.lo > tol)) return false;
   double next = x - fx / dfx;
   const bool inside = next > b.lo && next < b.hi;
-  if (!inside || !(std::fabs(next - x) < b.width / 2)) next = b.lo + (b.hi - b.lo) / 2;  // bisect
-  b.width = std::fabs(next - x);
+  if (!inside || !(std::fabs(next - x) < b.half_step)) next = b.lo + (b.hi - b.lo) / 2;  // bisect
+  const double step = std::fabs(next - x);
+  b.half_step = step / 2;
   if (!(next > b.lo && next < b.hi)) return false;  // the bracket cannot shrink further
   b.x = next;
-  return !(inside && b.width <= tol) && ++b.steps < 2100;  // a Newton step this small: converged
+  return !(inside && step <= tol) && ++b.steps < 2100;  // a Newton step this small: converged
 }
 
 /// A root of c (degree N) in a bracket.
