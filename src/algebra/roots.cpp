@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
@@ -418,17 +420,27 @@ std::vector<Rational> rational_roots(const Quartic<Integer>& fc) {
 
 namespace {
 
+/// m 2^e, as std::ldexp(m, e) (exact, or one rounding into the subnormal range), by a
+/// multiplication when 2^e is a normal double.
+double times_power_of_two(double m, long e) {
+  if (e < -1022 || e > 1023) return std::ldexp(m, static_cast<int>(std::clamp(e, -4000L, 4000L)));
+  const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
+  double p = 0;
+  std::memcpy(&p, &bits, sizeof p);
+  return m * p;
+}
+
 /// h's coefficients as doubles, all divided by one power of two 2^top (the roots do not move), into c;
 /// returns the Cauchy bound 2 (1 + max |c_i / c_n|) on the roots, or 0 when it is not a finite double.
 double scaled_doubles(const Integer* h, int n, double* c, long* top_out = nullptr) {
-  long top = 0;
-  for (int i = 0; i <= n; ++i)
-    if (h[i] != 0) top = std::max<long>(top, static_cast<long>(mpz_sizeinbase(h[i].mpz(), 2)));
+  // h_i = m_i 2^(e_i) with 1/2 <= |m_i| < 1 (m_i truncated to 53 bits): e_i is h_i's bit length.
+  double m[5];
+  long e[5], top = 0;
   for (int i = 0; i <= n; ++i) {
-    long ex = 0;
-    const double m = mpz_get_d_2exp(&ex, h[i].mpz());
-    c[i] = std::ldexp(m, static_cast<int>(std::max<long>(ex - top, -2000)));
+    m[i] = mpz_get_d_2exp(&e[i], h[i].mpz());
+    top = std::max(top, e[i]);
   }
+  for (int i = 0; i <= n; ++i) c[i] = times_power_of_two(m[i], std::max<long>(e[i] - top, -2000));
   if (top_out != nullptr) *top_out = top;
   double bound = 0;
   for (int i = 0; i < n; ++i) bound = std::max(bound, std::fabs(c[i] / c[n]));
@@ -467,7 +479,7 @@ bool DoubleSign::split() {
     long ex = 0;
     const double m = mpz_get_d_2exp(&ex, scratch.r);
     if (ex - top_ < -1000) return false;
-    lo_[i] = std::ldexp(m, static_cast<int>(ex - top_));
+    lo_[i] = times_power_of_two(m, ex - top_);
   }
   return true;
 }
@@ -555,7 +567,8 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
     if (r == 0 || !std::isfinite(r)) return false;
     bool ok = false;
     for (int widen = 0; widen < 4 && !ok; ++widen) {
-      const double delta = std::fabs(r) * std::ldexp(1.0, -44 + 10 * widen);
+      static constexpr double relative[4] = {0x1p-44, 0x1p-34, 0x1p-24, 0x1p-14};  // 2^(-44 + 10 widen)
+      const double delta = std::fabs(r) * relative[widen];
       const double lo = r - delta, hi = r + delta;
       if (!(lo > prev_hi) || (lo < 0) != (r < 0) || (hi < 0) != (r < 0)) break;
       if (k + 1 < count && !(hi < roots[k + 1])) break;
