@@ -146,6 +146,8 @@ TEST_CASE("residues from the limbs agree with mpz_fdiv_ui", "[roots]") {
   check_residues<4294967291ULL>(rng);  // the coprimality prime
   check_residues<111546435ULL>(rng);   // 3 * 5 * ... * 23
   check_residues<2756205443ULL>(rng);  // 29 * ... * 47
+  check_residues<907383479ULL>(rng);   // 53 * ... * 71
+  check_residues<4132280413ULL>(rng);  // 73 * ... * 97
   check_residues<4294967295ULL>(rng);  // the largest allowed modulus
   check_residues<2ULL>(rng);
   check_residues<3ULL>(rng);

@@ -305,48 +305,49 @@ bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc)
   return (sub(mul(mul(r0, r0), s2), mul(mul(r0, r1), s1)) + mul(mul(r1, r1), s0)) % p != 0;
 }
 
-/// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
-/// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
-/// The small primes 3, ..., 47 of no_root_modulo_small_primes in two products below 2^32: the
-/// residues modulo a product, then modulo each of its primes.
-constexpr unsigned long long small_primes_low = 3ULL * 5 * 7 * 11 * 13 * 17 * 19 * 23;  // 111546435
-constexpr unsigned long long small_primes_high = 29ULL * 31 * 37 * 41 * 43 * 47;        // 2756205443
-
-/// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant at most 47:
-/// Horner on the residues below p without any reduction (every value is below 47^5 < 2^32), one
-/// remainder by the constant per point, no early exit (a loop the compiler unrolls or vectorises).
+/// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant below 100:
+/// Horner on the residues below p without any reduction (every value is below 2 p^5: 32 bits up to
+/// p = 47, else 64), one remainder by the constant per point, no early exit (a loop the compiler
+/// unrolls or vectorises).
 template <unsigned P>
 bool no_root_modulo(const unsigned long* residue, long deg) {
-  static_assert(P <= 47);
-  unsigned c[5] = {0, 0, 0, 0, 0};  // zero above deg: the same values
-  for (long i = 0; i <= deg; ++i) c[i] = static_cast<unsigned>(residue[i] % P);
+  static_assert(P < 100);
+  using Word = std::conditional_t<(P <= 47), unsigned, unsigned long long>;
+  Word c[5] = {0, 0, 0, 0, 0};  // zero above deg: the same values
+  for (long i = 0; i <= deg; ++i) c[i] = static_cast<Word>(residue[i] % P);
   if (c[deg] == 0) return false;  // p divides lc(f): a rational root need not reduce
   bool root = false;
-  for (unsigned x = 0; x < P; ++x) {
-    unsigned v = 0;
+  for (Word x = 0; x < P; ++x) {
+    Word v = 0;
     for (int i = 4; i >= 0; --i) v = v * x + c[i];
     root |= v % P == 0;
   }
   return !root;
 }
 
-/// True when f (degree deg in 1..4) has no root modulo one of the primes 3..47 not dividing lc(f),
-/// every residue tried by Horner on machine words: most irreducible quartics (and products of
-/// irreducible quadratics) have no root modulo one of them, usually one of the first few.
-/// residue_of(i, std::integral_constant<unsigned long long, M>) is f_i mod M in [0, M), asked for
-/// the second product only when the first one's primes do not settle it.
+/// no_root_modulo for the primes P..., from the residues of f's coefficients modulo their product
+/// (below 2^32).
+template <unsigned... P, class ResidueOf>
+bool no_root_modulo_any(long deg, ResidueOf residue_of) {
+  constexpr unsigned long long product = (1ULL * ... * P);
+  unsigned long r[5] = {0, 0, 0, 0, 0};
+  for (long i = 0; i <= deg; ++i) r[i] = residue_of(i, std::integral_constant<unsigned long long, product>());
+  return (no_root_modulo<P>(r, deg) || ...);
+}
+
+/// True when f (degree deg in 1..4) has no root modulo one of the odd primes below 100 not
+/// dividing lc(f), every residue tried by Horner on machine words: most irreducible quartics (and
+/// products of irreducible quadratics) have no root modulo one of them, usually one of the first
+/// few. residue_of(i, std::integral_constant<unsigned long long, M>) is f_i mod M in [0, M); the
+/// primes go in four groups, each group's residues asked for only when the groups before it do not
+/// settle it.
 template <class ResidueOf>
 bool no_root_modulo_small_primes(long deg, ResidueOf residue_of) {
   if (deg < 1 || deg > 4) return false;
-  unsigned long r[5] = {0, 0, 0, 0, 0};
-  for (long i = 0; i <= deg; ++i) r[i] = residue_of(i, std::integral_constant<unsigned long long, small_primes_low>());
-  if (no_root_modulo<3>(r, deg) || no_root_modulo<5>(r, deg) || no_root_modulo<7>(r, deg) ||
-      no_root_modulo<11>(r, deg) || no_root_modulo<13>(r, deg) || no_root_modulo<17>(r, deg) ||
-      no_root_modulo<19>(r, deg) || no_root_modulo<23>(r, deg))
-    return true;
-  for (long i = 0; i <= deg; ++i) r[i] = residue_of(i, std::integral_constant<unsigned long long, small_primes_high>());
-  return no_root_modulo<29>(r, deg) || no_root_modulo<31>(r, deg) || no_root_modulo<37>(r, deg) ||
-         no_root_modulo<41>(r, deg) || no_root_modulo<43>(r, deg) || no_root_modulo<47>(r, deg);
+  return no_root_modulo_any<3, 5, 7, 11, 13, 17, 19, 23>(deg, residue_of) ||
+         no_root_modulo_any<29, 31, 37, 41, 43, 47>(deg, residue_of) ||
+         no_root_modulo_any<53, 59, 61, 67, 71>(deg, residue_of) ||
+         no_root_modulo_any<73, 79, 83, 89, 97>(deg, residue_of);
 }
 
 /// The small-prime test on integer coefficients (no FLINT polynomial), degree 4.
@@ -384,6 +385,8 @@ bool no_root_modulo_word_primes(const fmpz_poly_t f) {
   return false;
 }
 
+/// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
+/// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
 bool certainly_no_rational_root(const fmpz_poly_t f) {
   detail::flint_thread_cleanup_at_exit();
   // Small primes first, then word-sized ones by FLINT.
