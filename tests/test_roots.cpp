@@ -143,7 +143,7 @@ void check_against_known(const relpos::RootStructure& rs, const std::vector<Know
 
 TEST_CASE("residues from the limbs agree with mpz_fdiv_ui", "[roots]") {
   std::mt19937_64 rng(relpos::testing::announced_seed("residues", 20261126));
-  check_residues<4294967291ULL>(rng);  // the coprimality prime
+  check_residues<4294967291ULL>(rng);  // the largest prime below 2^32
   check_residues<111546435ULL>(rng);   // 3 * 5 * ... * 23
   check_residues<2756205443ULL>(rng);  // 29 * ... * 47
   check_residues<907383479ULL>(rng);   // 53 * ... * 71

@@ -280,29 +280,48 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
   }
 }
 
-/// True when Res(f, s) != 0 is shown modulo one prime p not dividing either leading coefficient
-/// (then Res(f, s) mod p = Res(f mod p, s mod p)) for a quartic f and a quadratic s; false when that
-/// is 0 (the caller computes the gcd over the integers: the answer is the same, only slower). On
-/// machine words, by the pseudo-remainder r = r1 x + r0 of s2^3 f modulo s: Res(f, s) is a non-zero
-/// multiple of the product of r over the two roots of s, r0^2 s2 - r0 r1 s1 + r1^2 s0 (over s2). The
-/// largest prime below 2^32, so that products of residues fit a word: a few dozen word operations,
-/// no allocation and no inverse.
-bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
-  constexpr unsigned long long p = 4294967291ULL;  // 2^32 - 5
-  auto mul = [](unsigned long long a, unsigned long long b) { return a * b % p; };
-  auto sub = [](unsigned long long a, unsigned long long b) { return a >= b ? a - b : a + p - b; };
-  unsigned long long f[5];
-  for (int i = 0; i < 5; ++i) f[i] = detail::residue<p>(fc[static_cast<std::size_t>(i)].mpz());
-  const unsigned long long s2 = detail::residue<p>(sc[2].mpz()), s1 = detail::residue<p>(sc[1].mpz()),
-                           s0 = detail::residue<p>(sc[0].mpz());
+/// The odd primes below 24, the first group of the small-prime tests below, and their product
+/// (below 2^32): f's residues modulo it serve both the coprimality and the rational-root test.
+using FirstPrimes = std::integer_sequence<unsigned, 3, 5, 7, 11, 13, 17, 19, 23>;
+constexpr unsigned long long first_primes_product = 3ULL * 5 * 7 * 11 * 13 * 17 * 19 * 23;  // 111546435
+
+/// Whether Res(f, s) mod q != 0 for a prime q (a compile-time constant below 24) not dividing
+/// either leading coefficient (then Res(f, s) mod q = Res(f mod q, s mod q)), for a quartic f and a
+/// quadratic s given by their residues modulo a multiple of q. By the pseudo-remainder
+/// r = r1 x + r0 of s2^3 f modulo s: Res(f, s) is a non-zero multiple of the product of r over the
+/// two roots of s, r0^2 s2 - r0 r1 s1 + r1^2 s0 (over s2). A few dozen word operations.
+template <unsigned Q>
+bool resultant_nonzero_modulo(const unsigned long* f_residues, const unsigned long* s_residues) {
+  auto mul = [](unsigned a, unsigned b) { return a * b % Q; };
+  auto sub = [](unsigned a, unsigned b) { return (a + Q - b) % Q; };
+  unsigned f[5];
+  for (int i = 0; i < 5; ++i) f[i] = static_cast<unsigned>(f_residues[i] % Q);
+  const unsigned s2 = static_cast<unsigned>(s_residues[2] % Q), s1 = static_cast<unsigned>(s_residues[1] % Q),
+                 s0 = static_cast<unsigned>(s_residues[0] % Q);
   if (f[4] == 0 || s2 == 0) return false;
   for (int k = 4; k >= 2; --k) {  // f <- s2 f - f_k x^(k-2) s: degree k - 1
     for (int i = 0; i < k; ++i) f[i] = mul(f[i], s2);
     f[k - 1] = sub(f[k - 1], mul(f[k], s1));
     f[k - 2] = sub(f[k - 2], mul(f[k], s0));
   }
-  const unsigned long long r1 = f[1], r0 = f[0];
-  return (sub(mul(mul(r0, r0), s2), mul(mul(r0, r1), s1)) + mul(mul(r1, r1), s0)) % p != 0;
+  const unsigned r1 = f[1], r0 = f[0];
+  return (sub(mul(mul(r0, r0), s2), mul(mul(r0, r1), s1)) + mul(mul(r1, r1), s0)) % Q != 0;
+}
+
+template <unsigned... Q>
+bool resultant_nonzero_modulo_any(std::integer_sequence<unsigned, Q...>, const unsigned long* f_residues,
+                                  const unsigned long* s_residues) {
+  return (resultant_nonzero_modulo<Q>(f_residues, s_residues) || ...);
+}
+
+/// True when Res(f, s) != 0 is shown modulo one of the FirstPrimes (f_residues: f's coefficients
+/// modulo first_primes_product), usually the first one; false when each of them divides Res(f, s)
+/// or a leading coefficient (then the caller computes the gcd over the integers: the same answer,
+/// only slower).
+bool certainly_coprime(const unsigned long* f_residues, const Quadratic<Integer>& sc) {
+  unsigned long s_residues[3];
+  for (std::size_t i = 0; i < 3; ++i) s_residues[i] = detail::residue<first_primes_product>(sc[i].mpz());
+  return resultant_nonzero_modulo_any(FirstPrimes(), f_residues, s_residues);
 }
 
 /// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant below 100:
@@ -328,7 +347,7 @@ bool no_root_modulo(const unsigned long* residue, long deg) {
 /// no_root_modulo for the primes P..., from the residues of f's coefficients modulo their product
 /// (below 2^32).
 template <unsigned... P, class ResidueOf>
-bool no_root_modulo_any(long deg, ResidueOf residue_of) {
+bool no_root_modulo_any(std::integer_sequence<unsigned, P...>, long deg, ResidueOf residue_of) {
   constexpr unsigned long long product = (1ULL * ... * P);
   unsigned long r[5] = {0, 0, 0, 0, 0};
   for (long i = 0; i <= deg; ++i) r[i] = residue_of(i, std::integral_constant<unsigned long long, product>());
@@ -344,16 +363,21 @@ bool no_root_modulo_any(long deg, ResidueOf residue_of) {
 template <class ResidueOf>
 bool no_root_modulo_small_primes(long deg, ResidueOf residue_of) {
   if (deg < 1 || deg > 4) return false;
-  return no_root_modulo_any<3, 5, 7, 11, 13, 17, 19, 23>(deg, residue_of) ||
-         no_root_modulo_any<29, 31, 37, 41, 43, 47>(deg, residue_of) ||
-         no_root_modulo_any<53, 59, 61, 67, 71>(deg, residue_of) ||
-         no_root_modulo_any<73, 79, 83, 89, 97>(deg, residue_of);
+  return no_root_modulo_any(FirstPrimes(), deg, residue_of) ||
+         no_root_modulo_any(std::integer_sequence<unsigned, 29, 31, 37, 41, 43, 47>(), deg, residue_of) ||
+         no_root_modulo_any(std::integer_sequence<unsigned, 53, 59, 61, 67, 71>(), deg, residue_of) ||
+         no_root_modulo_any(std::integer_sequence<unsigned, 73, 79, 83, 89, 97>(), deg, residue_of);
 }
 
-/// The small-prime test on integer coefficients (no FLINT polynomial), degree 4.
-bool no_root_modulo_small_primes(const Quartic<Integer>& f) {
-  return no_root_modulo_small_primes(4, [&f](long i, auto modulus) {
-    return detail::residue<decltype(modulus)::value>(f[static_cast<std::size_t>(i)].mpz());
+/// The small-prime test on integer coefficients (no FLINT polynomial), degree 4, with f's residues
+/// modulo first_primes_product already computed.
+bool no_root_modulo_small_primes(const Quartic<Integer>& f, const unsigned long* first_residues) {
+  return no_root_modulo_small_primes(4, [&f, first_residues](long i, auto modulus) {
+    constexpr unsigned long long m = decltype(modulus)::value;
+    if constexpr (m == first_primes_product)
+      return first_residues[i];
+    else
+      return detail::residue<m>(f[static_cast<std::size_t>(i)].mpz());
   });
 }
 
@@ -683,7 +707,9 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   const Integer* hp = fc.data();             // h's coefficients: f's own when f and s are coprime
   int n = 4, disc_h = disc;
   bool ok = true;
-  if (!certainly_coprime(fc, sc)) {
+  unsigned long f_residues[5];  // f modulo first_primes_product: for both modular tests
+  for (std::size_t i = 0; i < 5; ++i) f_residues[i] = detail::residue<first_primes_product>(fc[i].mpz());
+  if (!certainly_coprime(f_residues, sc)) {
     fmpz_poly_t g, h;
     fmpz_poly_init(g);
     fmpz_poly_init(h);
@@ -721,12 +747,12 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
       n = integer_coefficients(h, hc.emplace());
       hp = hc->data();
     } else if (ok) {  // gcd 1 after all
-      ok = no_root_modulo_small_primes(fc) || no_root_modulo_word_primes(f().p);
+      ok = no_root_modulo_small_primes(fc, f_residues) || no_root_modulo_word_primes(f().p);
     }
     fmpz_poly_clear(g);
     fmpz_poly_clear(h);
   } else {
-    ok = no_root_modulo_small_primes(fc) || no_root_modulo_word_primes(f().p);
+    ok = no_root_modulo_small_primes(fc, f_residues) || no_root_modulo_word_primes(f().p);
   }
   fmpz_clear(z);
   if (!ok) return std::nullopt;
