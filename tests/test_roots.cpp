@@ -1,7 +1,7 @@
 // roots.hpp's fast paths against what they stand for: the residues read from the limbs against
 // mpz_fdiv_ui, and the isolation of simple_root_structure (roots approximated in doubles, bracket
-// pairs interleaved, intervals certified by exact signs; word-sized modular tests for coprimality
-// and rational roots) against roots known by construction, with exact comparisons, on random
+// pairs interleaved, intervals certified by exact signs; modular tests on machine words for
+// coprimality and rational roots) against roots known by construction, with exact comparisons, on random
 // quartics: products of two quadratics (far, close, huge and tiny roots, non-real pairs, repeated
 // factors), and a rational root shared with s times an irreducible cubic.
 #include <gmp.h>
