@@ -168,7 +168,7 @@ TEST_CASE("simple_root_structure against roots known by construction", "[roots]"
     if (u == 0) u = 1;
     if (v == 0) v = -2;
     Quadratic<Integer> s{Integer(u * v), Integer(u + v), Integer(1)};
-    bool must_be_fast = true;
+    bool must_be_fast = true, shared = false;
     if (kind <= 2) {  // 4, 2 or 0 real roots
       const Quad p = random_quad(rng, kind <= 1), q = random_quad(rng, kind == 0);
       if (p.a * q.b == q.a * p.b && p.a * q.c == q.a * p.c) continue;  // the same roots: another kind
@@ -199,12 +199,14 @@ TEST_CASE("simple_root_structure against roots known by construction", "[roots]"
       f = product(ps, qs);
       add_roots(ps, known);
       add_roots(qs, known);
-    } else if (kind == 5) {  // a rational root shared with s, times x^3 - m (m not a cube)
+    } else if (kind == 5) {  // a rational root, shared with s or not, times x^3 - m (m not a cube)
       const int m = 2 + static_cast<int>(rng() % 60);
       Integer cube_root;
       if (mpz_root(cube_root.mpz(), Integer(m).mpz(), 3) != 0) continue;
-      // f = (x - u')(x^3 - m) with u' = -u a root of s.
-      const Integer r(-u), mm(m);
+      // f = (x - r)(x^3 - m) with r = -u a root of s, or r = 10 (s's roots are in -9..9): then the
+      // fast path must see the rational root and leave f to the general path.
+      shared = iteration % 2 == 1;
+      const Integer r(shared ? -u : 10), mm(m);
       f = {r * mm, -mm, Integer(0), -r, Integer(1)};
       KnownRoot rational;
       rational.exact = Rational(r);
@@ -214,6 +216,7 @@ TEST_CASE("simple_root_structure against roots known by construction", "[roots]"
       cubic.below = [mm](const Rational& t) { return t * t * t < Rational(mm); };
       cubic.sign = 1;
       known = {rational, cubic};
+      must_be_fast = shared;
     } else {  // a repeated factor (Disc(f) = 0): not the fast path's case, the general path's
       const Quad p = random_quad(rng, rng() % 2 == 0);
       f = product(p, p);
@@ -232,6 +235,7 @@ TEST_CASE("simple_root_structure against roots known by construction", "[roots]"
     CAPTURE(detail);
     const auto rs = relpos::simple_root_structure(f, s);
     if (must_be_fast) CHECK(rs.has_value());
+    if (kind == 5 && !shared) CHECK_FALSE(rs.has_value());  // a rational root not shared with s
     if (rs) {
       ++fast;
       check_against_known(*rs, known, 4 - static_cast<int>(known.size()));
