@@ -6,12 +6,15 @@
 #include <flint/fmpz.h>
 #include <flint/fmpz_poly.h>
 #include <flint/nmod_poly.h>
-#include <flint/ulong_extras.h>
 #include <gmp.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 #include "algebra/flint_thread.hpp"
@@ -150,40 +153,79 @@ double horner(const double* c, double x) {
   return v;
 }
 
-/// A root of c (degree N) in [lo, hi] where c changes sign (flo: the value at lo): Newton steps kept inside the
-/// shrinking bracket, bisection when a step leaves it or does not halve the bracket (safeguarded Newton), until the
-/// bracket or the step is below 2^-50 of the root. A handful of steps instead of the ~70 of plain bisection; the result
-/// is only an approximation, certified afterwards by exact signs.
-template <int N>
-double bracketed_root(const double* c, double lo, double hi, double flo) {
-  double x = lo + (hi - lo) / 2, width = hi - lo;
-  for (int it = 0; it < 2100; ++it) {
-    double fx = c[N], dfx = 0;  // value and derivative by Horner
-    for (int i = N - 1; i >= 0; --i) {
-      dfx = dfx * x + fx;
-      fx = fx * x + c[i];
-    }
-    if (fx == 0) return x;
-    if ((fx < 0) == (flo < 0))
-      lo = x;
-    else
-      hi = x;
-    const double tol = 0x1p-50 * std::max(std::fabs(lo), std::fabs(hi));
-    if (!(hi - lo > tol)) break;
-    double next = x - fx / dfx;
-    const bool inside = next > lo && next < hi;
-    if (!inside || !(std::fabs(next - x) < width / 2)) next = lo + (hi - lo) / 2;  // bisect
-    width = std::fabs(next - x);
-    if (!(next > lo && next < hi)) break;  // the bracket cannot shrink further
-    x = next;
-    if (inside && width <= tol) break;  // a Newton step this small: converged
+/// The safeguarded Newton iteration for a root of c in [lo, hi] where c changes sign (flo: the value
+/// at lo), started at the midpoint.
+struct Bracket {
+  double x = 0, lo = 0, hi = 0;
+  double half_step = 0;  // half the last step (at first half the bracket), computed as the step's test reads it
+  bool flo_negative = false;
+  int steps = 0;
+  static Bracket of(double lo, double hi, double flo) {
+    return {lo + (hi - lo) / 2, lo, hi, (hi - lo) / 2, flo < 0, 0};
   }
-  return x;
+};
+
+/// One step for c of degree N (a template parameter: the loops unroll): Newton steps kept inside the
+/// shrinking bracket, bisection when a step leaves it or does not halve the bracket (safeguarded
+/// Newton), until the bracket or the step is below 2^-50 of the root, or after 2100 steps. A handful
+/// of steps instead of the ~70 of plain bisection; the result is only an approximation, certified
+/// afterwards by exact signs. False when done, the root in b.x. Always inlined: a call per step
+/// would cost about as much as the step.
+template <int N>
+[[gnu::always_inline]] inline bool newton_step(const double* c, Bracket& b) {
+  const double x = b.x;
+  double fx = c[N], dfx = 0;  // value and derivative by Horner
+  for (int i = N - 1; i >= 0; --i) {
+    dfx = dfx * x + fx;
+    fx = fx * x + c[i];
+  }
+  if (fx == 0) return false;
+  if ((fx < 0) == b.flo_negative)
+    b.lo = x;
+  else
+    b.hi = x;
+  const double tol = 0x1p-50 * std::max(std::fabs(b.lo), std::fabs(b.hi));
+  if (!(b.hi - b.lo > tol)) return false;
+  double next = x - fx / dfx;
+  const bool inside = next > b.lo && next < b.hi;
+  if (!inside || !(std::fabs(next - x) < b.half_step)) next = b.lo + (b.hi - b.lo) / 2;  // bisect
+  const double step = std::fabs(next - x);
+  b.half_step = step / 2;
+  if (!(next > b.lo && next < b.hi)) return false;  // the bracket cannot shrink further
+  b.x = next;
+  return !(inside && step <= tol) && ++b.steps < 2100;  // a Newton step this small: converged
+}
+
+/// A root of c (degree N) in a bracket.
+template <int N>
+double bracketed_root(const double* c, Bracket b) {
+  while (newton_step<N>(c, b)) {
+  }
+  return b.x;
+}
+
+/// The roots in two brackets, their steps interleaved: each step touches only its own bracket, so
+/// the iterates are those of bracketed_root, while the two chains of dependent floating-point
+/// operations (Horner, division) overlap in the processor (an iteration is bound by their latency).
+/// The brackets are local copies: their state stays in registers.
+template <int N>
+void bracketed_roots(const double* c, Bracket a, Bracket b, double& root_a, double& root_b) {
+  bool more_a = true, more_b = true;
+  while (more_a && more_b) {
+    more_a = newton_step<N>(c, a);
+    more_b = newton_step<N>(c, b);
+  }
+  while (more_a) more_a = newton_step<N>(c, a);
+  while (more_b) more_b = newton_step<N>(c, b);
+  root_a = a.x;
+  root_b = b.x;
 }
 
 /// Approximate real roots of c (degree N <= 4, c[N] != 0) in (-bound, bound), increasing, into
 /// out[0..count): the roots of the derivative split the line into monotone pieces, each with at most
-/// one sign change. Fixed arrays (no allocation): a few hundred nanoseconds.
+/// one sign change. The brackets are solved in pairs from the outside in (the two outer ones, far
+/// from the roots of the derivative, take the most steps, and about as many). Fixed arrays (no
+/// allocation): a few hundred nanoseconds.
 template <int N>
 int approximate_real_roots(const double* c, double bound, double* out) {
   if constexpr (N == 1) {
@@ -198,17 +240,26 @@ int approximate_real_roots(const double* c, double bound, double* out) {
     for (int k = 0; k < m; ++k)
       if (inner[k] > cuts[cut_count - 1] && inner[k] < bound) cuts[cut_count++] = inner[k];
     cuts[cut_count++] = bound;
-    int count = 0;
+    Bracket brackets[N];
+    int count = 0, bracket_count = 0, at[N];  // at: where each bracket's root goes in out
     double b = horner<N>(c, cuts[0]);
     for (int k = 0; k + 1 < cut_count; ++k) {
       const double a = b;  // the value at each cut computed once
       b = horner<N>(c, cuts[k + 1]);
       if (a == 0) {
+        // The last entry, when a bracket's root still to come, lies below its bracket's upper cut,
+        // itself below cuts[k]: NaN (unequal to everything) says the same.
         if (count == 0 || out[count - 1] != cuts[k]) out[count++] = cuts[k];
       } else if ((a < 0) != (b < 0) && b != 0) {
-        out[count++] = bracketed_root<N>(c, cuts[k], cuts[k + 1], a);
+        brackets[bracket_count] = Bracket::of(cuts[k], cuts[k + 1], a);
+        at[bracket_count++] = count;
+        out[count++] = std::numeric_limits<double>::quiet_NaN();
       }
     }
+    int first = 0, last = bracket_count - 1;
+    for (; first < last; ++first, --last)
+      bracketed_roots<N>(c, brackets[first], brackets[last], out[at[first]], out[at[last]]);
+    if (first == last) out[at[first]] = bracketed_root<N>(c, brackets[first]);
     return count;
   }
 }
@@ -229,78 +280,109 @@ int approximate_real_roots(const double* c, int n, double bound, double* out) {
   }
 }
 
-/// True when Res(f, s) != 0 is shown modulo one word-sized prime p not dividing either leading
-/// coefficient (then Res(f, s) mod p = Res(f mod p, s mod p)) for a quartic f and a quadratic s;
-/// false when that is 0 (the caller computes the gcd over the integers). On machine words, by the
-/// pseudo-remainder r = r1 x + r0 of s2^3 f modulo s: Res(f, s) is a non-zero multiple of the
-/// product of r over the two roots of s, r0^2 s2 - r0 r1 s1 + r1^2 s0 (over s2). A few dozen word
-/// operations, no allocation and no inverse.
-bool certainly_coprime(const Quartic<Integer>& fc, const Quadratic<Integer>& sc) {
-  static const mp_limb_t p = n_nextprime(UWORD(1) << 62, 1);
-  static const mp_limb_t p_inverse = n_preinvert_limb(p);
-  auto mod = [](const Integer& z) { return static_cast<mp_limb_t>(mpz_fdiv_ui(z.mpz(), p)); };
-  auto mul = [](mp_limb_t a, mp_limb_t b) { return n_mulmod2_preinv(a, b, p, p_inverse); };
-  auto sub = [](mp_limb_t a, mp_limb_t b) { return n_submod(a, b, p); };
-  mp_limb_t f[5];
-  for (int i = 0; i < 5; ++i) f[i] = mod(fc[static_cast<std::size_t>(i)]);
-  const mp_limb_t s2 = mod(sc[2]), s1 = mod(sc[1]), s0 = mod(sc[0]);
+/// The odd primes below 24, the first group of the small-prime tests below, and their product
+/// (below 2^32): f's residues modulo it serve both the coprimality and the rational-root test.
+using FirstPrimes = std::integer_sequence<unsigned, 3, 5, 7, 11, 13, 17, 19, 23>;
+constexpr unsigned long long first_primes_product = 3ULL * 5 * 7 * 11 * 13 * 17 * 19 * 23;  // 111546435
+
+/// Whether Res(f, s) mod q != 0 for a prime q (a compile-time constant below 24) not dividing
+/// either leading coefficient (then Res(f, s) mod q = Res(f mod q, s mod q)), for a quartic f and a
+/// quadratic s given by their residues modulo a multiple of q. By the pseudo-remainder
+/// r = r1 x + r0 of s2^3 f modulo s: Res(f, s) is a non-zero multiple of the product of r over the
+/// two roots of s, r0^2 s2 - r0 r1 s1 + r1^2 s0 (over s2). A few dozen word operations.
+template <unsigned Q>
+bool resultant_nonzero_modulo(const unsigned long* f_residues, const unsigned long* s_residues) {
+  auto mul = [](unsigned a, unsigned b) { return a * b % Q; };
+  auto sub = [](unsigned a, unsigned b) { return (a + Q - b) % Q; };
+  unsigned f[5];
+  for (int i = 0; i < 5; ++i) f[i] = static_cast<unsigned>(f_residues[i] % Q);
+  const unsigned s2 = static_cast<unsigned>(s_residues[2] % Q), s1 = static_cast<unsigned>(s_residues[1] % Q),
+                 s0 = static_cast<unsigned>(s_residues[0] % Q);
   if (f[4] == 0 || s2 == 0) return false;
   for (int k = 4; k >= 2; --k) {  // f <- s2 f - f_k x^(k-2) s: degree k - 1
     for (int i = 0; i < k; ++i) f[i] = mul(f[i], s2);
     f[k - 1] = sub(f[k - 1], mul(f[k], s1));
     f[k - 2] = sub(f[k - 2], mul(f[k], s0));
   }
-  const mp_limb_t r1 = f[1], r0 = f[0];
-  return n_addmod(sub(mul(mul(r0, r0), s2), mul(mul(r0, r1), s1)), mul(mul(r1, r1), s0), p) != 0;
+  const unsigned r1 = f[1], r0 = f[0];
+  return (sub(mul(mul(r0, r0), s2), mul(mul(r0, r1), s1)) + mul(mul(r1, r1), s0)) % Q != 0;
 }
 
-/// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
-/// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
-/// The product of the small primes 3, 5, ..., 47 of no_root_modulo_small_primes (< 2^63).
-constexpr unsigned long small_prime_product = 307444891294245705UL;
+template <unsigned... Q>
+bool resultant_nonzero_modulo_any(std::integer_sequence<unsigned, Q...>, const unsigned long* f_residues,
+                                  const unsigned long* s_residues) {
+  return (resultant_nonzero_modulo<Q>(f_residues, s_residues) || ...);
+}
 
-/// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant: the
-/// remainders are multiplications, not divisions (a few hundred of them per quartic).
-template <unsigned long P>
+/// True when Res(f, s) != 0 is shown modulo one of the FirstPrimes (f_residues: f's coefficients
+/// modulo first_primes_product), usually the first one; false when each of them divides Res(f, s)
+/// or a leading coefficient (then the caller computes the gcd over the integers: the same answer,
+/// only slower).
+bool certainly_coprime(const unsigned long* f_residues, const Quadratic<Integer>& sc) {
+  unsigned long s_residues[3];
+  for (std::size_t i = 0; i < 3; ++i) s_residues[i] = detail::residue<first_primes_product>(sc[i].mpz());
+  return resultant_nonzero_modulo_any(FirstPrimes(), f_residues, s_residues);
+}
+
+/// Whether p does not divide lc(f) and f has no root modulo p, p a compile-time constant below 100:
+/// Horner on the residues below p without any reduction (every value is below 2 p^5: 32 bits up to
+/// p = 47, else 64), one remainder by the constant per point, no early exit (a loop the compiler
+/// unrolls or vectorises).
+template <unsigned P>
 bool no_root_modulo(const unsigned long* residue, long deg) {
-  unsigned long c[5] = {0, 0, 0, 0, 0};
-  for (long i = 0; i <= deg; ++i) c[i] = residue[i] % P;
+  static_assert(P < 100);
+  using Word = std::conditional_t<(P <= 47), unsigned, unsigned long long>;
+  Word c[5] = {0, 0, 0, 0, 0};  // zero above deg: the same values
+  for (long i = 0; i <= deg; ++i) c[i] = static_cast<Word>(residue[i] % P);
   if (c[deg] == 0) return false;  // p divides lc(f): a rational root need not reduce
-  for (unsigned long x = 0; x < P; ++x) {
-    unsigned long v = 0;
-    for (long i = deg; i >= 0; --i) v = (v * x + c[i]) % P;
-    if (v == 0) return false;
+  bool root = false;
+  for (Word x = 0; x < P; ++x) {
+    Word v = 0;
+    for (int i = 4; i >= 0; --i) v = v * x + c[i];
+    root |= v % P == 0;
   }
-  return true;
+  return !root;
 }
 
-/// True when f (degree 1..4, coefficients given modulo small_prime_product) has no root modulo
-/// one of the primes 3..47 not dividing lc(f), every residue tried by Horner on machine words: most
-/// irreducible quartics (and products of irreducible quadratics) have no root modulo one of them.
-bool no_root_modulo_small_primes(const unsigned long* residue, long deg) {
+/// no_root_modulo for the primes P..., from the residues of f's coefficients modulo their product
+/// (below 2^32).
+template <unsigned... P, class ResidueOf>
+bool no_root_modulo_any(std::integer_sequence<unsigned, P...>, long deg, ResidueOf residue_of) {
+  constexpr unsigned long long product = (1ULL * ... * P);
+  unsigned long r[5] = {0, 0, 0, 0, 0};
+  for (long i = 0; i <= deg; ++i) r[i] = residue_of(i, std::integral_constant<unsigned long long, product>());
+  return (no_root_modulo<P>(r, deg) || ...);
+}
+
+/// True when f (degree deg in 1..4) has no root modulo one of the odd primes below 100 not
+/// dividing lc(f), every residue tried by Horner on machine words: most irreducible quartics (and
+/// products of irreducible quadratics) have no root modulo one of them, usually one of the first
+/// few. residue_of(i, std::integral_constant<unsigned long long, M>) is f_i mod M in [0, M); the
+/// primes go in four groups, each group's residues asked for only when the groups before it do not
+/// settle it.
+template <class ResidueOf>
+bool no_root_modulo_small_primes(long deg, ResidueOf residue_of) {
   if (deg < 1 || deg > 4) return false;
-  return no_root_modulo<3>(residue, deg) || no_root_modulo<5>(residue, deg) || no_root_modulo<7>(residue, deg) ||
-         no_root_modulo<11>(residue, deg) || no_root_modulo<13>(residue, deg) || no_root_modulo<17>(residue, deg) ||
-         no_root_modulo<19>(residue, deg) || no_root_modulo<23>(residue, deg) || no_root_modulo<29>(residue, deg) ||
-         no_root_modulo<31>(residue, deg) || no_root_modulo<37>(residue, deg) || no_root_modulo<41>(residue, deg) ||
-         no_root_modulo<43>(residue, deg) || no_root_modulo<47>(residue, deg);
+  return no_root_modulo_any(FirstPrimes(), deg, residue_of) ||
+         no_root_modulo_any(std::integer_sequence<unsigned, 29, 31, 37, 41, 43, 47>(), deg, residue_of) ||
+         no_root_modulo_any(std::integer_sequence<unsigned, 53, 59, 61, 67, 71>(), deg, residue_of) ||
+         no_root_modulo_any(std::integer_sequence<unsigned, 73, 79, 83, 89, 97>(), deg, residue_of);
 }
 
-/// The small-prime test on integer coefficients (no FLINT polynomial), degree 4.
-bool no_root_modulo_small_primes(const Quartic<Integer>& f) {
-  unsigned long residue[5];
-  for (std::size_t i = 0; i < 5; ++i) residue[i] = mpz_fdiv_ui(f[i].mpz(), small_prime_product);
-  return no_root_modulo_small_primes(residue, 4);
+/// The small-prime test on integer coefficients (no FLINT polynomial), degree 4, with f's residues
+/// modulo first_primes_product already computed.
+bool no_root_modulo_small_primes(const Quartic<Integer>& f, const unsigned long* first_residues) {
+  return no_root_modulo_small_primes(4, [&f, first_residues](long i, auto modulus) {
+    constexpr unsigned long long m = decltype(modulus)::value;
+    if constexpr (m == first_primes_product)
+      return first_residues[i];
+    else
+      return detail::residue<m>(f[static_cast<std::size_t>(i)].mpz());
+  });
 }
 
-bool certainly_no_rational_root(const fmpz_poly_t f) {
-  detail::flint_thread_cleanup_at_exit();
-  // Small primes first, then word-sized ones by FLINT.
-  const slong deg = fmpz_poly_degree(f);
-  unsigned long residue[5] = {0, 0, 0, 0, 0};
-  if (deg >= 1 && deg <= 4)
-    for (slong i = 0; i <= deg; ++i) residue[i] = fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), small_prime_product);
-  if (no_root_modulo_small_primes(residue, deg)) return true;
+/// The word-sized primes' part of certainly_no_rational_root (FLINT's arithmetic modulo p).
+bool no_root_modulo_word_primes(const fmpz_poly_t f) {
   static const mp_limb_t primes[] = {1000003, 1000033, 1000037, 1000039, 1000081, 1000099, 1000117, 1000121,
                                      1000133, 1000151, 1000159, 1000171, 1000183, 1000187, 1000193, 1000199};
   bool found = false;
@@ -325,6 +407,17 @@ bool certainly_no_rational_root(const fmpz_poly_t f) {
     if (found) return true;
   }
   return false;
+}
+
+/// True when f certainly has no rational root: for some prime p not dividing lc(f), f has no root
+/// in F_p (gcd(x^p - x, f mod p) = 1). A rational root a/b has b | lc(f), so it would reduce to one.
+bool certainly_no_rational_root(const fmpz_poly_t f) {
+  detail::flint_thread_cleanup_at_exit();
+  // Small primes first, then word-sized ones by FLINT.
+  auto residue_of = [f](long i, auto modulus) {
+    return fmpz_fdiv_ui(fmpz_poly_get_coeff_ptr(f, i), static_cast<unsigned long>(decltype(modulus)::value));
+  };
+  return no_root_modulo_small_primes(fmpz_poly_degree(f), residue_of) || no_root_modulo_word_primes(f);
 }
 
 /// The rational roots of f, from its linear factors over Z (FLINT's factorisation; a quartic's is a
@@ -354,17 +447,27 @@ std::vector<Rational> rational_roots(const Quartic<Integer>& fc) {
 
 namespace {
 
+/// m 2^e, as std::ldexp(m, e) (exact, or one rounding into the subnormal range), by a
+/// multiplication when 2^e is a normal double.
+double times_power_of_two(double m, long e) {
+  if (e < -1022 || e > 1023) return std::ldexp(m, static_cast<int>(std::clamp(e, -4000L, 4000L)));
+  const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
+  double p = 0;
+  std::memcpy(&p, &bits, sizeof p);
+  return m * p;
+}
+
 /// h's coefficients as doubles, all divided by one power of two 2^top (the roots do not move), into c;
 /// returns the Cauchy bound 2 (1 + max |c_i / c_n|) on the roots, or 0 when it is not a finite double.
 double scaled_doubles(const Integer* h, int n, double* c, long* top_out = nullptr) {
-  long top = 0;
-  for (int i = 0; i <= n; ++i)
-    if (h[i] != 0) top = std::max<long>(top, static_cast<long>(mpz_sizeinbase(h[i].mpz(), 2)));
+  // h_i = m_i 2^(e_i) with 1/2 <= |m_i| < 1 (m_i truncated to 53 bits): e_i is h_i's bit length.
+  double m[5];
+  long e[5], top = 0;
   for (int i = 0; i <= n; ++i) {
-    long ex = 0;
-    const double m = mpz_get_d_2exp(&ex, h[i].mpz());
-    c[i] = std::ldexp(m, static_cast<int>(std::max<long>(ex - top, -2000)));
+    m[i] = mpz_get_d_2exp(&e[i], h[i].mpz());
+    top = std::max(top, e[i]);
   }
+  for (int i = 0; i <= n; ++i) c[i] = times_power_of_two(m[i], std::max<long>(e[i] - top, -2000));
   if (top_out != nullptr) *top_out = top;
   double bound = 0;
   for (int i = 0; i < n; ++i) bound = std::max(bound, std::fabs(c[i] / c[n]));
@@ -403,7 +506,7 @@ bool DoubleSign::split() {
     long ex = 0;
     const double m = mpz_get_d_2exp(&ex, scratch.r);
     if (ex - top_ < -1000) return false;
-    lo_[i] = std::ldexp(m, static_cast<int>(ex - top_));
+    lo_[i] = times_power_of_two(m, ex - top_);
   }
   return true;
 }
@@ -491,7 +594,8 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
     if (r == 0 || !std::isfinite(r)) return false;
     bool ok = false;
     for (int widen = 0; widen < 4 && !ok; ++widen) {
-      const double delta = std::fabs(r) * std::ldexp(1.0, -44 + 10 * widen);
+      static constexpr double relative[4] = {0x1p-44, 0x1p-34, 0x1p-24, 0x1p-14};  // 2^(-44 + 10 widen)
+      const double delta = std::fabs(r) * relative[widen];
       const double lo = r - delta, hi = r + delta;
       if (!(lo > prev_hi) || (lo < 0) != (r < 0) || (hi < 0) != (r < 0)) break;
       if (k + 1 < count && !(hi < roots[k + 1])) break;
@@ -603,7 +707,9 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
   const Integer* hp = fc.data();             // h's coefficients: f's own when f and s are coprime
   int n = 4, disc_h = disc;
   bool ok = true;
-  if (!certainly_coprime(fc, sc)) {
+  unsigned long f_residues[5];  // f modulo first_primes_product: for both modular tests
+  for (std::size_t i = 0; i < 5; ++i) f_residues[i] = detail::residue<first_primes_product>(fc[i].mpz());
+  if (!certainly_coprime(f_residues, sc)) {
     fmpz_poly_t g, h;
     fmpz_poly_init(g);
     fmpz_poly_init(h);
@@ -641,12 +747,12 @@ std::optional<RootStructure> simple_root_structure(const Quartic<Integer>& fc, c
       n = integer_coefficients(h, hc.emplace());
       hp = hc->data();
     } else if (ok) {  // gcd 1 after all
-      ok = no_root_modulo_small_primes(fc) || certainly_no_rational_root(f().p);
+      ok = no_root_modulo_small_primes(fc, f_residues) || no_root_modulo_word_primes(f().p);
     }
     fmpz_poly_clear(g);
     fmpz_poly_clear(h);
   } else {
-    ok = no_root_modulo_small_primes(fc) || certainly_no_rational_root(f().p);
+    ok = no_root_modulo_small_primes(fc, f_residues) || no_root_modulo_word_primes(f().p);
   }
   fmpz_clear(z);
   if (!ok) return std::nullopt;

@@ -10,6 +10,8 @@
 // Theorem 5: -a^2, -b^2 in the normal frame) and is not a tangency.
 #pragma once
 
+#include <gmp.h>
+
 #include <array>
 #include <optional>
 #include <string>
@@ -77,6 +79,20 @@ std::vector<std::string> real_root_decimals(const Quartic<Integer>& f, int digit
 int sign_of_discriminant(const std::vector<Integer>& coefficients);
 
 namespace detail {
+
+/// The residue of z modulo a compile-time constant M < 2^32, in [0, M) (mpz_fdiv_ui's value), from
+/// its limbs by Horner in base 2^GMP_NUMB_BITS: every product stays below 2^64 and every remainder
+/// is by a constant (a multiplication), without mpz_fdiv_ui's set-up for a run-time divisor.
+template <unsigned long long M>
+unsigned long residue(mpz_srcptr z) {
+  static_assert(M > 1 && M < (1ULL << 32) && GMP_NAIL_BITS == 0 && GMP_NUMB_BITS <= 64);
+  constexpr unsigned long long base = (static_cast<unsigned long long>(GMP_NUMB_MAX) % M + 1) % M;  // 2^bits mod M
+  const mp_limb_t* limbs = mpz_limbs_read(z);
+  unsigned long long r = 0;
+  for (mp_size_t i = static_cast<mp_size_t>(mpz_size(z)); i-- > 0;)
+    r = (r * base + static_cast<unsigned long long>(limbs[i]) % M) % M;  // < M^2 + M <= 2^64
+  return static_cast<unsigned long>(mpz_sgn(z) < 0 && r != 0 ? M - r : r);
+}
 
 /// The exact sign of an integer polynomial h (h[0..n], n <= 4, h[n] != 0) at doubles, as the root
 /// certification asks for it: the double Horner value against a crude bound (2^-48 of the
