@@ -201,7 +201,84 @@ std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m) {
 
 namespace detail {
 
-QuadricMatrix::QuadricMatrix(Matrix4 m) {
+namespace {
+
+/// 2^k for -1022 <= k <= 1023, from the bits (std::ldexp is an out-of-line libm call).
+double power_of_two(int k) {
+  const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
+/// Two doubles operated on lane by lane (GCC/Clang vector extension; SSE2 on x86-64), and a lane
+/// mask (all ones where a comparison holds).
+typedef double Lanes2 __attribute__((vector_size(16)));
+typedef long long Mask2 __attribute__((vector_size(16)));
+
+Lanes2 lanes_max(Lanes2 a, Lanes2 b) { return a > b ? a : b; }  // maxpd
+Lanes2 lanes_min(Lanes2 a, Lanes2 b) { return a < b ? a : b; }  // minpd
+
+}  // namespace
+
+// Run for every quadric made from doubles: on eight lane pairs, with the largest |entry|, the
+// smallest non-zero one and finiteness as trees of lane operations (short dependency chains), where
+// a scalar loop over the bits costs twice as much. Only the rare cases (an entry that would turn
+// subnormal, a largest entry in the top binade) take the scalar code.
+bool normalize_doubles(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool& plain) {
+  const Mask2 magnitude = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
+  const Mask2 infinity = {0x7ff0000000000000LL, 0x7ff0000000000000LL};
+  const Lanes2 largest = {DBL_MAX, DBL_MAX};
+  Lanes2 a[8], nonzero[8];  // |x|, and |x| with zero replaced by infinity (never the smallest)
+  Mask2 finite = {-1, -1};
+  for (std::size_t k = 0; k < 8; ++k) {
+    Lanes2 x;
+    std::memcpy(&x, &in[2 * k], sizeof x);
+    a[k] = reinterpret_cast<Lanes2>(reinterpret_cast<Mask2>(x) & magnitude);
+    finite &= a[k] <= largest;  // false for NaN
+    nonzero[k] = reinterpret_cast<Lanes2>(reinterpret_cast<Mask2>(a[k]) | ((a[k] == 0) & infinity));
+  }
+  const Lanes2 hi = lanes_max(lanes_max(lanes_max(a[0], a[1]), lanes_max(a[2], a[3])),
+                              lanes_max(lanes_max(a[4], a[5]), lanes_max(a[6], a[7])));
+  const Lanes2 lo = lanes_min(lanes_min(lanes_min(nonzero[0], nonzero[1]), lanes_min(nonzero[2], nonzero[3])),
+                              lanes_min(lanes_min(nonzero[4], nonzero[5]), lanes_min(nonzero[6], nonzero[7])));
+  if (!(finite[0] & finite[1])) return false;
+  const double mx = hi[0] > hi[1] ? hi[0] : hi[1], mn = lo[0] < lo[1] ? lo[0] : lo[1];
+  if (!(mx >= DBL_MIN)) return false;  // zero, or the largest entry subnormal
+  std::uint64_t mx_bits, mn_bits;
+  std::memcpy(&mx_bits, &mx, sizeof mx_bits);
+  std::memcpy(&mn_bits, &mn, sizeof mn_bits);
+  const int emax = static_cast<int>(mx_bits >> 52) - 1023;
+  const int k = -emax - 1;
+  exponent = emax + 1;
+  const int lo_exponent = static_cast<int>(mn_bits >> 52);  // biased: 0 when some entry is subnormal
+  // Common case: every non-zero entry normal, and the smallest stays normal once scaled by 2^k.
+  if (lo_exponent >= 1 && lo_exponent - 1023 + k >= -1022 && k >= -1022) {
+    const double s = power_of_two(k);
+    const Lanes2 scale = {s, s};
+    for (std::size_t i = 0; i < 8; ++i) {
+      Lanes2 x;
+      std::memcpy(&x, &in[2 * i], sizeof x);
+      x = x * scale;  // exact
+      std::memcpy(&out[2 * i], &x, sizeof x);
+    }
+    plain = exponent <= 1023;
+    return true;
+  }
+  // 2^-(e+1) is below the normal range when e = 1023: then scale in two exact steps (an entry that
+  // turns subnormal on the way stays below DBL_MIN and is refused below).
+  const double pre = k < -1022 ? 0x1p-512 : 1.0;
+  const double scale = power_of_two(k < -1022 ? k + 512 : k);  // multiplying by it is exact
+  bool lost = false;
+  for (std::size_t i = 0; i < 16; ++i) {
+    out[i] = in[i] * pre * scale;
+    lost = lost || (in[i] != 0 && std::fabs(out[i]) < DBL_MIN);
+  }
+  plain = lo_exponent >= 1 && exponent <= 1023;  // no entry subnormal, 2^exponent normal
+  return !lost;
+}
+
+QuadricMatrix::QuadricMatrix(Matrix4 m) : v_{} {
   if (const std::optional<DoubleMatrix4> d = exact_doubles(m)) *this = QuadricMatrix(*d);
   m_ = std::make_shared<const Matrix4>(std::move(m));
 }
@@ -221,7 +298,7 @@ void QuadricMatrix::negate_doubles() {
 }
 
 QuadricMatrix::QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source)
-    : cold_(std::make_shared<const Cold>(Cold{enclosure, std::move(source)})) {}
+    : v_{}, cold_(std::make_shared<const Cold>(Cold{enclosure, std::move(source)})) {}
 
 std::optional<DoubleMatrix4> QuadricMatrix::doubles() const {
   if (!has_doubles()) return std::nullopt;

@@ -117,8 +117,9 @@ class QuadricMatrix {
   };
   const Matrix4& materialize() const;
   /// kNormalized: the normalized doubles, and the doubles are v_ * 2^exponent_; kDoubles alone: the
-  /// doubles themselves (exponent_ 0); neither: unused.
-  DoubleMatrix4 v_{};
+  /// doubles themselves (exponent_ 0); neither: zeros. Not zero-initialised by the constructor from
+  /// doubles, which writes every entry (a rep stos costs as much as the normalization).
+  DoubleMatrix4 v_;
   int exponent_ = 0;
   unsigned char flags_ = 0;
   std::shared_ptr<const Cold> cold_;
