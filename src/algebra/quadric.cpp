@@ -219,13 +219,12 @@ typedef long long Mask2 __attribute__((vector_size(16)));
 Lanes2 lanes_max(Lanes2 a, Lanes2 b) { return a > b ? a : b; }  // maxpd
 Lanes2 lanes_min(Lanes2 a, Lanes2 b) { return a < b ? a : b; }  // minpd
 
-}  // namespace
-
-// Run for every quadric made from doubles: on eight lane pairs, with the largest |entry|, the
-// smallest non-zero one and finiteness as trees of lane operations (short dependency chains), where
-// a scalar loop over the bits costs twice as much. Only the rare cases (an entry that would turn
-// subnormal, a largest entry in the top binade) take the scalar code.
-bool normalize_doubles(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool& plain) {
+// normalize_doubles, inlined into the constructor from doubles (which has just read the same
+// entries for its symmetry test). Run for every quadric made from doubles: on eight lane pairs, with
+// the largest |entry|, the smallest non-zero one and finiteness as trees of lane operations (short
+// dependency chains), where a scalar loop over the bits costs twice as much. Only the rare cases (an
+// entry that would turn subnormal, a largest entry in the top binade) take the scalar code.
+[[gnu::always_inline]] inline bool normalize(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool& plain) {
   const Mask2 magnitude = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
   const Mask2 infinity = {0x7ff0000000000000LL, 0x7ff0000000000000LL};
   const Lanes2 largest = {DBL_MAX, DBL_MAX};
@@ -278,6 +277,12 @@ bool normalize_doubles(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponen
   return !lost;
 }
 
+}  // namespace
+
+bool normalize_doubles(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool& plain) {
+  return normalize(in, out, exponent, plain);
+}
+
 QuadricMatrix::QuadricMatrix(Matrix4 m) : v_{} {
   if (const std::optional<DoubleMatrix4> d = exact_doubles(m)) *this = QuadricMatrix(*d);
   m_ = std::make_shared<const Matrix4>(std::move(m));
@@ -285,7 +290,8 @@ QuadricMatrix::QuadricMatrix(Matrix4 m) : v_{} {
 
 QuadricMatrix::QuadricMatrix(const DoubleMatrix4& d) : flags_(kDoubles) {
   bool plain;
-  if (normalize_doubles(d, v_, exponent_, plain)) {
+  // Not symmetric: no quadric (the shape tests, which read the normalized doubles, reject it).
+  if (shape_filter::impl::symmetric(d) && normalize(d, v_, exponent_, plain)) {
     flags_ |= kNormalized | (plain ? kPlainScale : 0);
   } else {
     v_ = d;
