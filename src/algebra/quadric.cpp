@@ -211,46 +211,48 @@ double power_of_two(int k) {
   return x;
 }
 
-/// Two doubles operated on lane by lane (GCC/Clang vector extension; SSE2 on x86-64), and a lane
-/// mask (all ones where a comparison holds).
-typedef double Lanes2 __attribute__((vector_size(16)));
-typedef long long Mask2 __attribute__((vector_size(16)));
+/// Two 64-bit lanes of bits and eight 16-bit lanes (GCC/Clang vector extension; SSE2 on x86-64).
+typedef long long Bits2 __attribute__((vector_size(16)));
+typedef short Words8 __attribute__((vector_size(16)));
 
-Lanes2 lanes_max(Lanes2 a, Lanes2 b) { return a > b ? a : b; }  // maxpd
-Lanes2 lanes_min(Lanes2 a, Lanes2 b) { return a < b ? a : b; }  // minpd
+Words8 words_max(Words8 a, Words8 b) { return a > b ? a : b; }  // pmaxsw
+Words8 words_min(Words8 a, Words8 b) { return a < b ? a : b; }  // pminsw
 
 // normalize_doubles, inlined into the constructor from doubles (which has just read the same
-// entries for its symmetry test). Run for every quadric made from doubles: on eight lane pairs, with
-// the largest |entry|, the smallest non-zero one and finiteness as trees of lane operations (short
-// dependency chains), where a scalar loop over the bits costs twice as much. Only the rare cases (an
-// entry that would turn subnormal, a largest entry in the top binade) take the scalar code.
+// entries for its symmetry test). Run for every quadric made from doubles, on the top 16 bits of
+// each entry's bits (sign, exponent, 4 bits of the significand), eight entries at a time: the
+// largest top word of the |entries| gives the largest exponent (0x7ff: an infinity or a NaN), and
+// the smallest top word of |entry| - 1 (as integers, compared unsigned; zero wraps to the largest)
+// the exponent of the smallest non-zero |entry|, or one less when that entry is a power of two
+// (then the exact scalar code below decides). Only rare cases (an entry that would turn subnormal,
+// a largest entry in the top binade) take that code.
 [[gnu::always_inline]] inline bool normalize(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool& plain) {
-  const Mask2 magnitude = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
-  const Mask2 infinity = {0x7ff0000000000000LL, 0x7ff0000000000000LL};
-  const Lanes2 largest = {DBL_MAX, DBL_MAX};
-  Lanes2 a[8], nonzero[8];  // |x|, and |x| with zero replaced by infinity (never the smallest)
-  Mask2 finite = {-1, -1};
+  const Bits2 magnitude = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL}, one = {1, 1};
+  const Bits2 flip = {static_cast<long long>(0x8000800080008000ULL), static_cast<long long>(0x8000800080008000ULL)};
+  Words8 top[8], low[8];  // |x|, and (|x| - 1) with its words' signs flipped (signed order = unsigned order)
   for (std::size_t k = 0; k < 8; ++k) {
-    Lanes2 x;
+    Bits2 x;
     std::memcpy(&x, &in[2 * k], sizeof x);
-    a[k] = reinterpret_cast<Lanes2>(reinterpret_cast<Mask2>(x) & magnitude);
-    finite &= a[k] <= largest;  // false for NaN
-    nonzero[k] = reinterpret_cast<Lanes2>(reinterpret_cast<Mask2>(a[k]) | ((a[k] == 0) & infinity));
+    const Bits2 a = x & magnitude;
+    top[k] = reinterpret_cast<Words8>(a);
+    low[k] = reinterpret_cast<Words8>((a - one) ^ flip);
   }
-  const Lanes2 hi = lanes_max(lanes_max(lanes_max(a[0], a[1]), lanes_max(a[2], a[3])),
-                              lanes_max(lanes_max(a[4], a[5]), lanes_max(a[6], a[7])));
-  const Lanes2 lo = lanes_min(lanes_min(lanes_min(nonzero[0], nonzero[1]), lanes_min(nonzero[2], nonzero[3])),
-                              lanes_min(lanes_min(nonzero[4], nonzero[5]), lanes_min(nonzero[6], nonzero[7])));
-  if (!(finite[0] & finite[1])) return false;
-  const double mx = hi[0] > hi[1] ? hi[0] : hi[1], mn = lo[0] < lo[1] ? lo[0] : lo[1];
-  if (!(mx >= DBL_MIN)) return false;  // zero, or the largest entry subnormal
-  std::uint64_t mx_bits, mn_bits;
-  std::memcpy(&mx_bits, &mx, sizeof mx_bits);
-  std::memcpy(&mn_bits, &mn, sizeof mn_bits);
-  const int emax = static_cast<int>(mx_bits >> 52) - 1023;
+  // The two halves folded onto each other: the top word of the first entry is lane 3 (no branch).
+  auto fold = [](Words8 w) { return __builtin_shufflevector(w, w, 4, 5, 6, 7, 0, 1, 2, 3); };
+  Words8 hi = words_max(words_max(words_max(top[0], top[1]), words_max(top[2], top[3])),
+                        words_max(words_max(top[4], top[5]), words_max(top[6], top[7])));
+  Words8 lo = words_min(words_min(words_min(low[0], low[1]), words_min(low[2], low[3])),
+                        words_min(words_min(low[4], low[5]), words_min(low[6], low[7])));
+  hi = words_max(hi, fold(hi));
+  lo = words_min(lo, fold(lo));
+  const int top_exponent = hi[3] >> 4;                           // biased exponent of the largest |entry|
+  if (top_exponent == 0 || top_exponent == 0x7ff) return false;  // zero or subnormal; infinity or NaN
+  // Biased exponent of the smallest non-zero |entry| (or one less, see above): 0 when it is subnormal.
+  const unsigned lo_word = static_cast<std::uint16_t>(lo[3]) ^ 0x8000u;
+  const int lo_exponent = static_cast<int>(lo_word >> 4);
+  const int emax = top_exponent - 1023;
   const int k = -emax - 1;
   exponent = emax + 1;
-  const int lo_exponent = static_cast<int>(mn_bits >> 52);  // biased: 0 when some entry is subnormal
   // Common case: every non-zero entry normal, and the smallest stays normal once scaled by 2^k.
   if (lo_exponent >= 1 && lo_exponent - 1023 + k >= -1022 && k >= -1022) {
     const double s = power_of_two(k);
@@ -264,16 +266,19 @@ Lanes2 lanes_min(Lanes2 a, Lanes2 b) { return a < b ? a : b; }  // minpd
     plain = exponent <= 1023;
     return true;
   }
-  // 2^-(e+1) is below the normal range when e = 1023: then scale in two exact steps (an entry that
-  // turns subnormal on the way stays below DBL_MIN and is refused below).
-  const double pre = k < -1022 ? 0x1p-512 : 1.0;
-  const double scale = power_of_two(k < -1022 ? k + 512 : k);  // multiplying by it is exact
-  bool lost = false;
+  // 2^-(e+1) is below the normal range when e = 1023: then scale in two exact steps. An entry is
+  // kept exactly iff scaling back gives it again (a product that turned subnormal may have been
+  // rounded, in any rounding mode even up to DBL_MIN; scaling back by powers of two is exact).
+  const bool two_steps = k < -1022;
+  const double pre = two_steps ? 0x1p-512 : 1.0, scale = power_of_two(two_steps ? k + 512 : k);
+  const double back_pre = two_steps ? 0x1p512 : 1.0, back_scale = power_of_two(two_steps ? -k - 512 : -k);
+  bool lost = false, subnormal = false;
   for (std::size_t i = 0; i < 16; ++i) {
     out[i] = in[i] * pre * scale;
-    lost = lost || (in[i] != 0 && std::fabs(out[i]) < DBL_MIN);
+    lost = lost || out[i] * back_scale * back_pre != in[i];
+    subnormal = subnormal || (in[i] != 0 && std::fabs(in[i]) < DBL_MIN);
   }
-  plain = lo_exponent >= 1 && exponent <= 1023;  // no entry subnormal, 2^exponent normal
+  plain = !subnormal && exponent <= 1023;  // no entry subnormal, 2^exponent normal
   return !lost;
 }
 

@@ -295,6 +295,19 @@ inline int paraboloid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* no
   return zero && *zero ? trace_sign : 0;
 }
 
+namespace impl {
+
+/// det Q < 0 for a matrix paraboloid_before_det accepted. With Q3 diagonal, its entry z zero and the
+/// two others of one sign, expanding along row z gives det Q = -(the product of those two) q_z^2
+/// (q_z = entry (z, 3)): negative iff q_z != 0, by signs alone. Otherwise det4_sign (the test of
+/// the rounding mode was paraboloid_before_det's).
+inline bool paraboloid_det_negative(const DoubleMatrix4& n) {
+  if (diagonal_block(n)) return n[n[0] == 0 ? 3 : (n[5] == 0 ? 7 : 11)] != 0;
+  return det4_sign(n) == -1;
+}
+
+}  // namespace impl
+
 /// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
 /// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
 /// `normalized` as for ellipsoid_before_det, or null: the semi-static stage reads it; the interval
@@ -315,7 +328,7 @@ inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* norm
 /// certified_ellipsoid.
 inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
   if (const int trace_sign = paraboloid_before_det(d, normalized);
-      trace_sign != 0 && impl::det4_sign(*normalized) == -1)
+      trace_sign != 0 && impl::paraboloid_det_negative(*normalized))
     return trace_sign;
   if (!impl::symmetric(d)) return 0;
   int trace_sign;
