@@ -266,16 +266,17 @@ Words8 words_min(Words8 a, Words8 b) { return a < b ? a : b; }  // pminsw
     plain = exponent <= 1023;
     return true;
   }
-  // 2^-(e+1) is below the normal range when e = 1023: then scale in two exact steps. An entry is
-  // kept exactly iff scaling back gives it again (a product that turned subnormal may have been
-  // rounded, in any rounding mode even up to DBL_MIN; scaling back by powers of two is exact).
+  // 2^-(e+1) is below the normal range when e = 1023: then scale in two exact steps. No entry may
+  // turn subnormal, and each must be kept exactly: scaling back must give it again (a product below
+  // DBL_MIN may have been rounded, in any rounding mode even up to DBL_MIN itself; scaling back by
+  // powers of two is exact).
   const bool two_steps = k < -1022;
   const double pre = two_steps ? 0x1p-512 : 1.0, scale = power_of_two(two_steps ? k + 512 : k);
   const double back_pre = two_steps ? 0x1p512 : 1.0, back_scale = power_of_two(two_steps ? -k - 512 : -k);
   bool lost = false, subnormal = false;
   for (std::size_t i = 0; i < 16; ++i) {
     out[i] = in[i] * pre * scale;
-    lost = lost || out[i] * back_scale * back_pre != in[i];
+    lost = lost || (in[i] != 0 && std::fabs(out[i]) < DBL_MIN) || out[i] * back_scale * back_pre != in[i];
     subnormal = subnormal || (in[i] != 0 && std::fabs(in[i]) < DBL_MIN);
   }
   plain = !subnormal && exponent <= 1023;  // no entry subnormal, 2^exponent normal
