@@ -257,16 +257,24 @@ inline int det4_sign(const DoubleMatrix4& n) {
 /// 0 without `normalized`: the quadric's filter_doubles() (quadric_matrix.hpp), d scaled by a power
 /// of two and symmetric, or null. certified_ellipsoid adds det Q < 0; the decision on 32 doubles
 /// reads that sign off the pencil instead, whose f(0) is det E (math.md §2).
-inline int ellipsoid_before_det(const DoubleMatrix4* normalized) {
+inline int ellipsoid_before_det(const DoubleMatrix4* normalized);
+
+/// ellipsoid_before_det without its test of the rounding mode: its answer is sound only in round to
+/// nearest, for a caller that uses it only after a later stage has found that mode (the decision on
+/// 32 doubles: its pencil stage runs only then; otherwise the two steps decide, with their tests).
+inline int ellipsoid_before_det_if_nearest(const DoubleMatrix4* normalized) {
   if (!normalized) return 0;
   const DoubleMatrix4& n = *normalized;
-  if (!detail::rounding_to_nearest()) return 0;
   const int want = n[0] > 0 ? 1 : (n[0] < 0 ? -1 : 0);  // normalized entries are finite
   using impl::Mag;
   const int s2 =
       impl::filtered_sign<2>(n[0] * n[5] - n[1] * n[1], [&] { return Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1]); });
   const int s3 = impl::filtered_sign<6>(impl::det3<double>(n), [&] { return impl::det3<Mag>(n); });
   return want != 0 && s2 == 1 && s3 == want ? want : 0;
+}
+
+inline int ellipsoid_before_det(const DoubleMatrix4* normalized) {
+  return detail::rounding_to_nearest() ? ellipsoid_before_det_if_nearest(normalized) : 0;
 }
 
 /// The same for an elliptic paraboloid: the sign of the trace of Q3 when E2 > 0 and the trace are
