@@ -392,3 +392,206 @@ TEST_CASE("decide_position on 32 doubles is from_doubles then decide_position", 
     }
   }
 }
+
+namespace {
+
+constexpr int kRoundingModes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+
+/// What normalize_doubles must give, by another route: the exponent e of the largest |entry| plus
+/// one, and every entry times 2^-e, which must be normal (or zero) to be kept; refused when an
+/// entry is not finite, the largest is zero or subnormal, or some entry would turn subnormal.
+struct Normalized {
+  bool ok = false;
+  DoubleMatrix4 out{};
+  int exponent = 0;
+  bool plain = false;
+};
+
+Normalized reference_normalized(const DoubleMatrix4& d) {
+  Normalized r;
+  double mx = 0;
+  bool subnormal = false;
+  for (double x : d) {
+    if (!std::isfinite(x)) return r;
+    mx = std::max(mx, std::fabs(x));
+    subnormal = subnormal || (x != 0 && std::fpclassify(x) == FP_SUBNORMAL);
+  }
+  if (!(mx >= std::numeric_limits<double>::min())) return r;
+  r.exponent = std::ilogb(mx) + 1;
+  for (std::size_t i = 0; i < 16; ++i) {
+    if (d[i] != 0 && std::ilogb(d[i]) - r.exponent < std::numeric_limits<double>::min_exponent - 1) return r;
+    r.out[i] = std::ldexp(d[i], -r.exponent);  // normal: exact
+  }
+  r.ok = true;
+  r.plain = !subnormal && r.exponent <= 1023;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("the normalization of doubles keeps every entry exactly, in every rounding mode", "[from_doubles]") {
+  // Entries over the whole range, and at the edges the normalization tests: the smallest kept one
+  // (2^(e - 1022) once the largest is below 2^e), one just below it, and (2 - 2^-52) 2^(e - 1023),
+  // whose product rounds up to DBL_MIN (to nearest: a tie, to even).
+  Gen g;
+  const double dmin = std::numeric_limits<double>::min(), dmax = std::numeric_limits<double>::max();
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  int accepted = 0, refused = 0, plain = 0;
+  for (int k = 0; k < 20000; ++k) {
+    DoubleMatrix4 d{};
+    const int top = g.small(-1060, 1023);  // the largest |entry| is in [2^top, 2^(top + 1))
+    const double largest = std::ldexp(g.uniform(1, 2), top);
+    const int e = top + 1;
+    for (double& x : d) {
+      switch (g.small(0, 11)) {
+        case 0:
+        case 1:
+          x = 0;
+          break;
+        case 2:
+          x = std::ldexp(1.0, std::max(e - 1022, -1074));  // the smallest kept (when normal)
+          break;
+        case 3:
+          x = std::nextafter(std::ldexp(1.0, std::max(e - 1022, -1074)), 0.0);  // just below it
+          break;
+        case 4:
+          x = std::nextafter(std::ldexp(2.0, std::max(e - 1023, -1074)), 0.0);  // rounds up to DBL_MIN
+          break;
+        case 5:
+          x = std::ldexp(g.uniform(1, 2), g.small(-1074, top));
+          break;
+        case 6:
+          x = std::ldexp(1.0, g.small(-1074, top));  // a power of two
+          break;
+        case 7:
+          x = g.small(0, 40) == 0 ? (g.coin() ? inf : nan) : g.uniform(-1, 1) * largest;
+          break;
+        default:
+          x = g.uniform(-1, 1) * largest;
+      }
+      if (g.coin()) x = -x;
+    }
+    d[static_cast<std::size_t>(g.small(0, 15))] = g.coin() ? largest : -largest;
+    if (g.small(0, 200) == 0) d[static_cast<std::size_t>(g.small(0, 15))] = g.coin() ? dmax : dmin;
+    const Normalized want = reference_normalized(d);
+    for (int mode : kRoundingModes) {
+      DoubleMatrix4 out;
+      int exponent = 0;
+      bool is_plain = false;
+      std::fesetround(mode);
+      const bool ok = relpos::detail::normalize_doubles(d, out, exponent, is_plain);
+      std::fesetround(FE_TONEAREST);
+      CAPTURE(k, mode, top);
+      REQUIRE(ok == want.ok);
+      if (!ok) continue;
+      CHECK(exponent == want.exponent);
+      CHECK(out == want.out);
+      CHECK(is_plain == want.plain);
+    }
+    (want.ok ? accepted : refused) += 1;
+    plain += want.plain;
+  }
+  CHECK(accepted > 2000);
+  CHECK(refused > 2000);
+  CHECK(plain > 300);
+}
+
+TEST_CASE("a quadric from doubles keeps its doubles at the edge of the normalization", "[from_doubles]") {
+  // The unit sphere with an entry (2 - 2^-52) 2^-1022 and its mirror: normalized by 2^-1, that entry
+  // would round up to DBL_MIN (a tie, to even); the quadric keeps the given doubles in every mode.
+  const double x = std::nextafter(2 * std::numeric_limits<double>::min(), 0.0);
+  const DoubleMatrix4 sphere{1, 0, 0, x, 0, 1, 0, 0, 0, 0, 1, 0, x, 0, 0, -1};
+  const DoubleMatrix4 cup{1, 0, 0, x, 0, 1, 0, 0, 0, 0, 0, -0.5, x, 0, -0.5, 0};
+  for (int mode : kRoundingModes) {
+    std::fesetround(mode);
+    const auto e = agree<Ellipsoid>(sphere);
+    const auto p = agree<Paraboloid>(cup);
+    std::fesetround(FE_TONEAREST);
+    CAPTURE(mode);
+    REQUIRE(e);
+    REQUIRE(p);
+    CHECK(*e->doubles() == sphere);
+    CHECK(e->matrix() == exact(sphere));
+    CHECK(*p->doubles() == cup);
+    CHECK(p->matrix() == exact(cup));
+  }
+}
+
+TEST_CASE("axis-aligned paraboloids and the shortcuts of a diagonal block, both doors", "[from_doubles]") {
+  // A diagonal Q3 is certified by the signs of its entries (rank 2 and semidefinite: one zero, two of
+  // one sign; det P = -a b q_z^2). The cases that just miss: two zeros, opposite signs, q_z = 0,
+  // and a block one off-diagonal entry away from diagonal; each zero position, each orientation.
+  Gen g;
+  const DoubleMatrix4 sphere{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, -0.5, 0, 0, -0.5, 0.1875};
+  int accepted = 0, refused = 0;
+  for (int k = 0; k < 4000; ++k) {
+    DoubleMatrix4 p{};
+    const int z = g.small(0, 2);  // the zero diagonal entry
+    for (int i = 0; i < 3; ++i) Gen::set(p, i, i, i == z ? 0.0 : g.uniform(0.25, 4));
+    for (int i = 0; i < 3; ++i) Gen::set(p, i, 3, g.coin() ? 0.0 : g.uniform(-1, 1));
+    Gen::set(p, z, 3, g.small(0, 5) == 0 ? 0.0 : g.uniform(-1, 1));  // q_z = 0: a cylinder
+    p[15] = g.coin() ? 0.0 : g.uniform(-1, 1);
+    switch (g.small(0, 7)) {
+      case 0:  // opposite signs: a hyperbolic paraboloid or cylinder
+        p[static_cast<std::size_t>(5 * ((z + 1) % 3))] *= -1;
+        break;
+      case 1:  // two zeros: rank 1
+        p[static_cast<std::size_t>(5 * ((z + 2) % 3))] = 0;
+        break;
+      case 2: {  // one off-diagonal entry of Q3 (and its mirror), sometimes tiny
+        const int i = g.small(0, 1), j = g.small(i + 1, 2);
+        Gen::set(p, i, j, g.coin() ? 1e-300 : g.uniform(-0.5, 0.5));
+        break;
+      }
+      case 3:  // the diagonal entries far apart in magnitude
+        p[static_cast<std::size_t>(5 * ((z + 1) % 3))] *= std::ldexp(1.0, g.small(-600, 600));
+        break;
+      default:
+        break;
+    }
+    if (g.coin())
+      for (double& v : p) v = -v;
+    const int mode = kRoundingModes[k % 4];
+    std::fesetround(mode);
+    const auto made = agree<Paraboloid>(p);
+    const bool decided = same_decision(sphere, p);
+    std::fesetround(FE_TONEAREST);
+    CHECK(decided == made.has_value());
+    (made ? accepted : refused) += 1;
+  }
+  CHECK(accepted > 1000);
+  CHECK(refused > 1000);
+}
+
+TEST_CASE("the symmetry test on lanes: each mirrored pair, NaN and infinities, both doors", "[from_doubles]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const DoubleMatrix4 sphere{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, -0.5, 0, 0, -0.5, 0.1875};
+  const DoubleMatrix4 cup{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0};
+  for (int mode : kRoundingModes) {
+    std::fesetround(mode);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        if (i == j) continue;
+        const std::size_t at = static_cast<std::size_t>(4 * i + j);
+        for (double v : {0.0, 0.25, nan, inf}) {
+          DoubleMatrix4 e = sphere, p = cup;
+          // One entry off its mirror: by one ulp (v = 0), by v, or not finite.
+          e[at] = v == 0 ? std::nextafter(e[at], 1.0) : (std::isfinite(v) ? e[at] + v : v);
+          p[at] = v == 0 ? std::nextafter(p[at], 1.0) : (std::isfinite(v) ? p[at] + v : v);
+          CHECK_FALSE(agree<Ellipsoid>(e));
+          CHECK_FALSE(agree<Paraboloid>(p));
+          CHECK_FALSE(same_decision(e, cup));
+          CHECK_FALSE(same_decision(sphere, p));
+          if (i < j) {  // the same value in both mirrored places: symmetric (NaN never is)
+            Gen::set(e, i, j, e[at]);
+            Gen::set(p, i, j, p[at]);
+            same_decision(e, cup);
+            same_decision(sphere, p);
+            agree<Ellipsoid>(e);
+            agree<Paraboloid>(p);
+          }
+        }
+      }
+    std::fesetround(FE_TONEAREST);
+  }
+}

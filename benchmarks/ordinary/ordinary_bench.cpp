@@ -3,7 +3,7 @@
 // its public headers only (benchmarks/ordinary/CMakeLists.txt; doc/performance.md, "Ordinary pairs").
 //
 //   ordinary_bench [--quick] [--out FILE] [--rounds R] [--batches B] [--seed S]
-//                  [--cache N] [--issue N] [--large N] [--full N]
+//                  [--cache N] [--issue N] [--large N] [--full N] [--paths P,...] [--sets S,...]
 //
 // Pairs: the paper's regime written as doubles (make_regime). Three sets: N_cache pairs looped (in
 // cache), N_issue pairs and N_large pairs held in std::vectors (out of cache once they exceed the
@@ -19,7 +19,10 @@
 // Every round times each path over B batches per set, the paths interleaved batch by batch; a path's
 // time in a round is its median batch (ns per pair), its ratios are to the two float decisions of the
 // same set and round. Printed and written (--out): per path the median over rounds of the time and
-// of each ratio, with the range of the ratios.
+// of each ratio, with the range of the ratios. --paths and --sets restrict the run to the named
+// paths and sets (for profiling one path, or a quick A/B run): the two float decisions are always
+// timed, as every ratio is to them; the pairs of a set left out are drawn (the others stay the
+// same pairs) but neither checked nor timed.
 //
 // Before timing, every pair of every set is checked: decide_position on the prebuilt objects, on
 // fresh objects from the doubles, on the doubles in one call and classify_exact (the exact
@@ -104,6 +107,7 @@ constexpr const char* kPathText[kPaths] = {
 
 struct PairSet {
   std::string name, text;
+  bool timed = true;
   std::vector<Raw> raw;
   std::vector<Ellipsoid> es;  // as a user holds them
   std::vector<Paraboloid> ps;
@@ -271,6 +275,21 @@ std::string load_average() {
 
 std::size_t parse_size(const char* s) { return static_cast<std::size_t>(std::strtoull(s, nullptr, 10)); }
 
+/// The comma-separated names of an option's value.
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  for (std::size_t at = 0; at <= s.size();) {
+    const std::size_t end = std::min(s.find(',', at), s.size());
+    out.push_back(s.substr(at, end - at));
+    at = end + 1;
+  }
+  return out;
+}
+
+bool named(const std::vector<std::string>& names, const std::string& name) {
+  return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -278,6 +297,7 @@ int main(int argc, char** argv) {
   int rounds = 5, batches = 5;
   unsigned long seed = 20261125;
   std::string out;
+  std::vector<std::string> paths, set_names;  // empty: all
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -299,10 +319,15 @@ int main(int argc, char** argv) {
       n_large = std::max<std::size_t>(1, parse_size(argv[++i]));
     } else if (a == "--full" && has_value) {
       n_full = parse_size(argv[++i]);
+    } else if (a == "--paths" && has_value) {
+      paths = split(argv[++i]);
+    } else if (a == "--sets" && has_value) {
+      set_names = split(argv[++i]);
     } else {
-      std::fprintf(stderr,
-                   "usage: ordinary_bench [--quick] [--out FILE] [--rounds R] [--batches B] [--seed S]\n"
-                   "                      [--cache N] [--issue N] [--large N] [--full N]\n");
+      std::fprintf(
+          stderr,
+          "usage: ordinary_bench [--quick] [--out FILE] [--rounds R] [--batches B] [--seed S]\n"
+          "                      [--cache N] [--issue N] [--large N] [--full N] [--paths P,...] [--sets S,...]\n");
       return 2;
     }
   }
@@ -315,10 +340,24 @@ int main(int argc, char** argv) {
   const std::size_t sizes[3] = {n_cache, n_issue, n_large};
   Checks checks;
   bool ok = true;
+  std::array<bool, kPaths> timed{};
+  for (int path = 0; path < kPaths; ++path)
+    timed[static_cast<std::size_t>(path)] = path == kMinimal || path == kPaper || named(paths, kPathName[path]);
+  for (const std::string& name : paths)
+    if (std::find_if(kPathName, kPathName + kPaths, [&](const char* p) { return name == p; }) == kPathName + kPaths) {
+      std::fprintf(stderr, "unknown path %s\n", name.c_str());
+      return 2;
+    }
+  for (const std::string& name : set_names)
+    if (name != "cache" && name != "issue" && name != "large") {
+      std::fprintf(stderr, "unknown set %s\n", name.c_str());
+      return 2;
+    }
   for (std::size_t k = 0; k < sets.size(); ++k) {
     sets[k].raw = make_regime(rng, sizes[k]);
     sets[k].reps = std::max<std::size_t>(1, min_calls / sizes[k]);
-    ok = prepare(sets[k], n_full, checks) && ok;
+    sets[k].timed = named(set_names, sets[k].name);
+    if (sets[k].timed) ok = prepare(sets[k], n_full, checks) && ok;
   }
   const double pair_bytes = sizeof(Raw) + sizeof(Ellipsoid) + sizeof(Paraboloid);
   std::printf("ordinary pairs (seed %lu): %zu checked; positions:", seed, checks.pairs);
@@ -342,14 +381,17 @@ int main(int argc, char** argv) {
 
   for (int round = 0; round < rounds; ++round)
     for (PairSet& s : sets) {
+      if (!s.timed) continue;
       std::array<std::vector<double>, kPaths> batch;
       for (int b = 0; b < batches; ++b)
         for (int j = 0; j < kPaths; ++j) {  // interleaved, the order rotated from batch to batch
           const int path = (j + b + round) % kPaths;
-          batch[static_cast<std::size_t>(path)].push_back(time_batch(s, path));
+          if (timed[static_cast<std::size_t>(path)])
+            batch[static_cast<std::size_t>(path)].push_back(time_batch(s, path));
         }
       for (int path = 0; path < kPaths; ++path)
-        s.time[static_cast<std::size_t>(path)].push_back(median(batch[static_cast<std::size_t>(path)]));
+        if (timed[static_cast<std::size_t>(path)])
+          s.time[static_cast<std::size_t>(path)].push_back(median(batch[static_cast<std::size_t>(path)]));
     }
 
   const std::string load_after = load_average();
@@ -381,19 +423,27 @@ int main(int argc, char** argv) {
     const char* sep = "";
     for (const auto& [k, c] : checks.mix) std::fprintf(json, "%s\"%s\": %zu", sep, k.c_str(), c), sep = ", ";
     std::fprintf(json, "},\n  \"paths\": {");
+    sep = "";
     for (int path = 0; path < kPaths; ++path)
-      std::fprintf(json, "%s\"%s\": \"%s\"", path ? ", " : "", kPathName[path], kPathText[path]);
+      if (timed[static_cast<std::size_t>(path)])
+        std::fprintf(json, "%s\"%s\": \"%s\"", sep, kPathName[path], kPathText[path]), sep = ", ";
     std::fprintf(json, "},\n  \"sets\": [\n");
   }
+  const char* set_sep = "";
   for (std::size_t k = 0; k < sets.size(); ++k) {
     const PairSet& s = sets[k];
+    if (!s.timed) continue;
     std::printf("\n%s: %zu pairs, %s (%.1f MB)\n", s.name.c_str(), s.raw.size(), s.text.c_str(),
                 pair_bytes * static_cast<double>(s.raw.size()) / 1e6);
     std::printf("  %-8s %10s   %-22s %-22s  %s\n", "path", "ns/pair", "x minimal [range]", "x paper [range]", "");
     if (json)
-      std::fprintf(json, "    {\"name\": \"%s\", \"pairs\": %zu, \"full_pairs\": %zu, \"text\": \"%s\", \"paths\": {\n",
-                   s.name.c_str(), s.raw.size(), s.full_at.size(), s.text.c_str());
+      std::fprintf(json,
+                   "%s    {\"name\": \"%s\", \"pairs\": %zu, \"full_pairs\": %zu, \"text\": \"%s\", \"paths\": {\n",
+                   set_sep, s.name.c_str(), s.raw.size(), s.full_at.size(), s.text.c_str());
+    set_sep = ",\n";
+    const char* path_sep = "";
     for (int path = 0; path < kPaths; ++path) {
+      if (!timed[static_cast<std::size_t>(path)]) continue;
       const Summary t = summary(s.time[static_cast<std::size_t>(path)]);
       const Summary rm = summary(ratios(s, path, kMinimal)), rp = summary(ratios(s, path, kPaper));
       char a[64], b[64];
@@ -403,15 +453,15 @@ int main(int argc, char** argv) {
       if (json)
         std::fprintf(
             json,
-            "      \"%s\": {\"ns\": %.2f, \"ns_lo\": %.2f, \"ns_hi\": %.2f, \"vs_minimal\": [%.4f, %.4f, %.4f], "
-            "\"vs_paper\": [%.4f, %.4f, %.4f]}%s\n",
-            kPathName[path], t.median, t.lo, t.hi, rm.median, rm.lo, rm.hi, rp.median, rp.lo, rp.hi,
-            path + 1 < kPaths ? "," : "");
+            "%s      \"%s\": {\"ns\": %.2f, \"ns_lo\": %.2f, \"ns_hi\": %.2f, \"vs_minimal\": [%.4f, %.4f, %.4f], "
+            "\"vs_paper\": [%.4f, %.4f, %.4f]}",
+            path_sep, kPathName[path], t.median, t.lo, t.hi, rm.median, rm.lo, rm.hi, rp.median, rp.lo, rp.hi);
+      path_sep = ",\n";
     }
-    if (json) std::fprintf(json, "    }}%s\n", k + 1 < sets.size() ? "," : "");
+    if (json) std::fprintf(json, "\n    }}");
   }
   if (json) {
-    std::fprintf(json, "  ]\n}\n");
+    std::fprintf(json, "\n  ]\n}\n");
     std::fclose(json);
   }
   if (!ok) std::printf("\nFAILED (see above)\n");

@@ -12,9 +12,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 
 #include "algebra/cramer.hpp"
+#include "algebra/pencil.hpp"
 #include "algebra/rounding.hpp"
 #include "relpos/quadric.hpp"
 
@@ -106,9 +108,28 @@ inline int certain_sign(const I& x) {
   return 0;  // uncertain (or zero)
 }
 
-/// Without a branch per pair (& on the comparisons, not &&): for valid input all six hold.
+/// d == d^T exactly (false for a NaN off the diagonal): the six mirrored pairs as three lane pairs,
+/// (d01, d02) against (d10, d20), (d03, d13) against (d30, d31), (d12, d23) against (d21, d32).
 inline bool symmetric(const DoubleMatrix4& d) {
-  return (d[1] == d[4]) & (d[2] == d[8]) & (d[3] == d[12]) & (d[6] == d[9]) & (d[7] == d[13]) & (d[11] == d[14]);
+  using detail::Lanes2;
+  Lanes2 r[8];  // (d[2k], d[2k + 1])
+  for (std::size_t k = 0; k < 8; ++k) std::memcpy(&r[k], &d[2 * k], sizeof r[k]);
+  const auto same = (__builtin_shufflevector(r[0], r[1], 1, 2) == __builtin_shufflevector(r[2], r[4], 0, 2)) &
+                    (__builtin_shufflevector(r[1], r[3], 1, 3) == r[6]) &
+                    (__builtin_shufflevector(r[3], r[5], 0, 3) == __builtin_shufflevector(r[4], r[7], 1, 2));
+  return same[0] & same[1];
+}
+
+/// Whether Q3 of a symmetric matrix is diagonal: then its minors are products of its diagonal, and
+/// their signs are the signs of the diagonal entries, without arithmetic.
+inline bool diagonal_block(const DoubleMatrix4& n) { return (n[1] == 0) & (n[2] == 0) & (n[6] == 0); }
+
+/// The numbers of positive and of negative entries on the diagonal of Q3.
+struct DiagonalSigns {
+  int positive, negative;
+};
+inline DiagonalSigns diagonal_signs(const DoubleMatrix4& n) {
+  return {(n[0] > 0) + (n[5] > 0) + (n[10] > 0), (n[0] < 0) + (n[5] < 0) + (n[10] < 0)};
 }
 
 /// A growing floating-point expansion (Shewchuk 1997): the exact sum of its components, which are
@@ -233,12 +254,17 @@ inline int det4_sign(const DoubleMatrix4& n) {
 
 /// Every sign of the ellipsoid test but det Q < 0, certified on the normalized doubles (static, then
 /// semi-static bounds; round to nearest): the orientation (+1 or -1, the sign of the first entry)
-/// when d is symmetric, its 2x2 leading minor is positive and det Q3 has the first entry's sign;
-/// else 0, and always 0 without `normalized` (d scaled by a power of two, power_of_two_normalized).
-/// certified_ellipsoid adds det Q < 0; the decision on 32 doubles reads that sign off the pencil
-/// instead, whose f(0) is det E (math.md §2).
-inline int ellipsoid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  if (!normalized || !impl::symmetric(d) || !detail::rounding_to_nearest()) return 0;
+/// when its 2x2 leading minor is positive and det Q3 has the first entry's sign; else 0, and always
+/// 0 without `normalized`: the quadric's filter_doubles() (quadric_matrix.hpp), d scaled by a power
+/// of two and symmetric, or null. certified_ellipsoid adds det Q < 0; the decision on 32 doubles
+/// reads that sign off the pencil instead, whose f(0) is det E (math.md §2).
+inline int ellipsoid_before_det(const DoubleMatrix4* normalized);
+
+/// ellipsoid_before_det without its test of the rounding mode: its answer is sound only in round to
+/// nearest, for a caller that uses it only after a later stage has found that mode (the decision on
+/// 32 doubles: its pencil stage runs only then; otherwise the two steps decide, with their tests).
+inline int ellipsoid_before_det_if_nearest(const DoubleMatrix4* normalized) {
+  if (!normalized) return 0;
   const DoubleMatrix4& n = *normalized;
   const int want = n[0] > 0 ? 1 : (n[0] < 0 ? -1 : 0);  // normalized entries are finite
   using impl::Mag;
@@ -248,12 +274,23 @@ inline int ellipsoid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* nor
   return want != 0 && s2 == 1 && s3 == want ? want : 0;
 }
 
-/// The same for an elliptic paraboloid: the sign of the trace of Q3 when d is symmetric, E2 > 0
-/// and the trace are certain and det Q3 = 0 exactly; else 0. det Q < 0 is certified_paraboloid's,
-/// or the pencil's leading coefficient det P (math.md §2).
+inline int ellipsoid_before_det(const DoubleMatrix4* normalized) {
+  return detail::rounding_to_nearest() ? ellipsoid_before_det_if_nearest(normalized) : 0;
+}
+
+/// The same for an elliptic paraboloid: the sign of the trace of Q3 when E2 > 0 and the trace are
+/// certain and det Q3 = 0 exactly; else 0. A diagonal Q3 (an axis-aligned paraboloid, the usual
+/// input) is decided by signs alone: semidefinite of rank 2 iff exactly one diagonal entry is zero
+/// and the other two share a sign. det Q < 0 is certified_paraboloid's, or the pencil's leading
+/// coefficient det P (math.md §2).
 inline int paraboloid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  if (!normalized || !impl::symmetric(d) || !detail::rounding_to_nearest()) return 0;
+  if (!normalized) return 0;
   const DoubleMatrix4& n = *normalized;
+  if (impl::diagonal_block(n)) {  // one entry zero, the two others of one sign
+    const impl::DiagonalSigns s = impl::diagonal_signs(n);
+    return s.positive + s.negative != 2 ? 0 : (s.positive == 2 ? 1 : (s.negative == 2 ? -1 : 0));
+  }
+  if (!detail::rounding_to_nearest()) return 0;
   using impl::Mag;
   const int e2 = impl::filtered_sign<6>(
       (n[0] * n[5] - n[1] * n[1]) + (n[0] * n[10] - n[2] * n[2]) + (n[5] * n[10] - n[6] * n[6]), [&] {
@@ -267,13 +304,25 @@ inline int paraboloid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* no
   return zero && *zero ? trace_sign : 0;
 }
 
+namespace impl {
+
+/// det Q < 0 for a matrix paraboloid_before_det accepted. With Q3 diagonal, its entry z zero and the
+/// two others of one sign, expanding along row z gives det Q = -(the product of those two) q_z^2
+/// (q_z = entry (z, 3)): negative iff q_z != 0, by signs alone. Otherwise det4_sign (the test of
+/// the rounding mode was paraboloid_before_det's).
+inline bool paraboloid_det_negative(const DoubleMatrix4& n) {
+  if (diagonal_block(n)) return n[n[0] == 0 ? 3 : (n[5] == 0 ? 7 : 11)] != 0;
+  return det4_sign(n) == -1;
+}
+
+}  // namespace impl
+
 /// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
 /// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
 /// `normalized` as for ellipsoid_before_det, or null: the semi-static stage reads it; the interval
 /// stage reads d.
 inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  if (const int want = ellipsoid_before_det(d, normalized); want != 0 && impl::det4_sign(*normalized) == -1)
-    return want;
+  if (const int want = ellipsoid_before_det(normalized); want != 0 && impl::det4_sign(*normalized) == -1) return want;
   if (!impl::symmetric(d)) return 0;
   const double a = d[0];
   if (!(a > 0) && !(a < 0)) return 0;
@@ -288,7 +337,7 @@ inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* norm
 /// certified_ellipsoid.
 inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
   if (const int trace_sign = paraboloid_before_det(d, normalized);
-      trace_sign != 0 && impl::det4_sign(*normalized) == -1)
+      trace_sign != 0 && impl::paraboloid_det_negative(*normalized))
     return trace_sign;
   if (!impl::symmetric(d)) return 0;
   int trace_sign;

@@ -748,14 +748,16 @@ Verdict decide_position(const Ellipsoid& e, const Paraboloid& p) {
 Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
   // The objects from_doubles builds (normalized in place, the same orientation), with every shape
   // sign but the determinants certified; run_stages certifies those from the pencil or gives up.
+  // Matrices of doubles are within the size limit (check_normalized_pair_size): no check. The
+  // ellipsoid's signs assume round to nearest: run_stages certifies the determinants (clears
+  // `pending`) only in that mode; in any other the two steps below decide.
   Ellipsoid ell(e);
   Paraboloid par(p);
-  const int oe = shape_filter::ellipsoid_before_det(e, ell.m_.filter_doubles());
+  const int oe = shape_filter::ellipsoid_before_det_if_nearest(ell.m_.filter_doubles());
   const int op = oe != 0 ? shape_filter::paraboloid_before_det(p, par.m_.filter_doubles()) : 0;
   if (op != 0) {
     if (oe < 0) ell.m_.negate_doubles();
     if (op < 0) par.m_.negate_doubles();
-    check_normalized_pair_size(ell, par);  // never throws for doubles, as in decide_position
     bool pending = true;
     std::optional<ExactData> exact;
     const Verdict v = run_stages(ell, par, true, exact, &pending);

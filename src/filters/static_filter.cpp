@@ -130,66 +130,16 @@ bool scale_into_unit(double* v, double* err, int n) {
 }
 
 /// Scale a matrix so its largest entry is in [1/2, 1); false if an entry would lose bits (subnormal)
-/// or the input is not finite. `exponent`: in = out * 2^exponent; `plain`: no entry of `in` is
-/// subnormal and 2^exponent is normal.
-bool normalize(const DoubleMatrix4& in, DoubleMatrix4& out, int& exponent, bool& plain) {
-  // On the bits first (this runs for every quadric made from doubles): for finite doubles, |x|
-  // orders as the integer of x's bits with the sign cleared. The largest gives the scaling; the
-  // smallest non-zero one says whether every product is exact without looking at the products.
-  // Two accumulators each (even and odd entries): shorter dependency chains. Zero wraps to the
-  // largest value in b - 1, so it is never the minimum, without a branch.
-  std::uint64_t mx0 = 0, mx1 = 0, mn0 = ~std::uint64_t{0}, mn1 = ~std::uint64_t{0};
-  for (std::size_t i = 0; i < 16; i += 2) {
-    std::uint64_t b0, b1;
-    std::memcpy(&b0, &in[i], sizeof b0);
-    std::memcpy(&b1, &in[i + 1], sizeof b1);
-    b0 &= 0x7fffffffffffffffULL;
-    b1 &= 0x7fffffffffffffffULL;
-    mx0 = b0 > mx0 ? b0 : mx0;
-    mx1 = b1 > mx1 ? b1 : mx1;
-    mn0 = b0 - 1 < mn0 ? b0 - 1 : mn0;
-    mn1 = b1 - 1 < mn1 ? b1 - 1 : mn1;
-  }
-  const std::uint64_t mx = mx0 > mx1 ? mx0 : mx1;
-  const std::uint64_t mn = (mn0 < mn1 ? mn0 : mn1) + 1;                         // the smallest non-zero |x|
-  if (mx < 0x0010000000000000ULL || mx >= 0x7ff0000000000000ULL) return false;  // zero, subnormal, inf or NaN
-  const int emax = static_cast<int>(mx >> 52) - 1023;
-  const int k = -emax - 1;
-  exponent = emax + 1;
-  const int lo = static_cast<int>(mn >> 52);  // 0: some entry is subnormal
-  // Common case: every non-zero entry normal, and the smallest stays normal once scaled by 2^k.
-  if (lo >= 1 && lo - 1023 + k >= -1022 && k >= -1022) {
-    const double scale = power_of_two(k);
-    for (std::size_t i = 0; i < 16; ++i) out[i] = in[i] * scale;  // exact
-    plain = exponent <= 1023;
-    return true;
-  }
-  // 2^-(e+1) is below the normal range when e = 1023: then scale in two exact steps (an entry that
-  // turns subnormal on the way stays below DBL_MIN and is refused below).
-  const double pre = k < -1022 ? 0x1p-512 : 1.0;
-  const double scale = power_of_two(k < -1022 ? k + 512 : k);  // multiplying by it is exact
-  bool lost = false;
-  for (std::size_t i = 0; i < 16; ++i) {
-    out[i] = in[i] * pre * scale;
-    lost = lost || (in[i] != 0 && std::fabs(out[i]) < DBL_MIN);
-  }
-  plain = lo >= 1 && exponent <= 1023;  // no entry subnormal, 2^exponent normal
-  return !lost;
-}
-
+/// or the input is not finite (detail::normalize_doubles, quadric_matrix.hpp).
 bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
   int exponent;
   bool plain;
-  return normalize(in, out.a, exponent, plain);
+  return detail::normalize_doubles(in, out.a, exponent, plain);
 }
 
 DecisionSigns uncertain() { return DecisionSigns{}; }
 
 }  // namespace
-
-bool detail::normalize_doubles(const DoubleMatrix4& d, DoubleMatrix4& out, int& exponent, bool& plain) {
-  return normalize(d, out, exponent, plain);
-}
 
 std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m) {
   if (!m) return std::nullopt;

@@ -60,7 +60,8 @@ class QuadricMatrix {
   /// Entries known by enclosures (not all lo == hi) and built exactly by `source` on first use.
   /// The caller proves the shape, the sign normalization and the size limit (within_size_limit()).
   QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source);
-  /// From doubles that are all finite (checked by the caller); no heap allocation.
+  /// From doubles; no heap allocation. Normalized (filter_doubles()) only when they are symmetric and
+  /// finite: the shape tests of the callers read them.
   explicit QuadricMatrix(const DoubleMatrix4& d);
   /// -Q for a quadric made from doubles whose exact matrix is not built yet (a matrix given with
   /// the other orientation, found by the caller's shape test).
@@ -98,7 +99,8 @@ class QuadricMatrix {
   /// The entries as doubles (nullopt unless has_doubles()), given back exactly from the stored form.
   std::optional<DoubleMatrix4> doubles() const;
   /// The doubles, power-of-two normalized once for the static filter (power_of_two_normalized);
-  /// null when there are none or they cannot be normalized without losing bits.
+  /// null when there are none, they are not symmetric (no quadric: its shape test rejects it) or
+  /// they cannot be normalized without losing bits.
   const DoubleMatrix4* filter_doubles() const { return (flags_ & kNormalized) ? &v_ : nullptr; }
   /// Enclosures of the entries when the quadric was made from them (null otherwise).
   const EnclosureMatrix4* enclosure() const { return cold_ ? &cold_->enclosure : nullptr; }
@@ -117,8 +119,9 @@ class QuadricMatrix {
   };
   const Matrix4& materialize() const;
   /// kNormalized: the normalized doubles, and the doubles are v_ * 2^exponent_; kDoubles alone: the
-  /// doubles themselves (exponent_ 0); neither: unused.
-  DoubleMatrix4 v_{};
+  /// doubles themselves (exponent_ 0); neither: zeros. Not zero-initialised by the constructor from
+  /// doubles, which writes every entry (a rep stos costs as much as the normalization).
+  DoubleMatrix4 v_;
   int exponent_ = 0;
   unsigned char flags_ = 0;
   std::shared_ptr<const Cold> cold_;
