@@ -639,7 +639,7 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
     mpq_div(r, out.s[2].mpq(), out.f[4].mpq());  // f4 = det P, s0 = det M and lambda_s are not 0
     mpq_mul(r, r, out.f[0].mpq());
     mpq_div(r, r, out.s[0].mpq());
-    mpq_mul(r, r, forms::inverse_square(ls.value.a).mpq());
+    mpq_mul(r, r, forms::inverse_square(ls.value().a).mpq());
     out.rho = rho;
     out.rho_approx = nearest_double(*out.rho);
   } else {
