@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "algebra/forms.hpp"
+#include "filters/pooled_integer.hpp"
 
 namespace relpos::anysize {
 
@@ -164,23 +165,23 @@ void LambdaS::settle() const {
 }
 
 std::pair<double, double> tight_interval_of_quotient(mpz_srcptr n, mpz_srcptr d) {
-  mpq_t q;  // n / d as it is: mpq_get_d truncates the value, whatever fraction represents it
-  mpq_init(q);
-  mpz_set(mpq_numref(q), n);
-  mpz_set(mpq_denref(q), d);
-  const double t = mpq_get_d(q);
+  // n / d as it is: mpq_get_d truncates the value, whatever fraction represents it (read only).
+  const __mpq_struct q{*n, *d};
+  const double t = mpq_get_d(&q);
   std::pair<double, double> out;
   if (!(std::fabs(t) >= DBL_MIN && std::fabs(t) < DBL_MAX)) {  // 0, subnormal, huge: reduced, the general way
-    mpq_canonicalize(q);
-    Rational r;  // fresh: written in place
-    mpq_swap(r.mpq(), q);
+    Rational r;                                                // fresh: written in place
+    mpz_set(mpq_numref(r.mpq()), n);
+    mpz_set(mpq_denref(r.mpq()), d);
+    mpq_canonicalize(r.mpq());
     out = forms::tight_interval(r);
   } else {
     // n / d is the double t = m 2^k (m an integer) iff n 2^max(-k, 0) = m d 2^max(k, 0).
     int e = 0;
     const double m = std::ldexp(std::frexp(t, &e), 53);
     const long k = static_cast<long>(e) - 53;
-    const mpz_ptr lhs = mpq_numref(q), rhs = mpq_denref(q);  // q's integers, reused
+    PooledInteger lhs_, rhs_;
+    const mpz_ptr lhs = lhs_.mpz(), rhs = rhs_.mpz();
     mpz_mul_2exp(lhs, n, static_cast<mp_bitcnt_t>(k < 0 ? -k : 0));
     mpz_set_d(rhs, m);
     mpz_mul(rhs, rhs, d);
@@ -192,7 +193,6 @@ std::pair<double, double> tight_interval_of_quotient(mpz_srcptr n, mpz_srcptr d)
       out = t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
     }
   }
-  mpq_clear(q);
   return out;
 }
 

@@ -596,18 +596,12 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
   for (std::size_t i = 0; i < 3; ++i) times(h[i], pa[i], pb[3 - i], si[i]);
 }
 
-/// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
-/// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square. lambda_s is
-/// computed once here, for rho and for the certificate, from h: with mu = lambda le / lp,
-/// s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales),
-/// rational iff Disc(h) is a square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2). A rational rho comes from the
-/// reduced f, s and lambda_s; an irrational one only as a double, from the reduced f and s.
-void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
-                        const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp, const Integer& le,
-                        Classification& out, anysize::LambdaS& ls) {
-  out.has_full_evidence = true;
-  out.degree_ftilde = rs.degree_ftilde;
-  out.roots = std::move(rs.real_roots);
+/// lambda_s, the root of s nearest 0, computed once for rho and for the certificate, from h: with
+/// mu = lambda le / lp, s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along
+/// the split scales), rational iff Disc(h) is a square R^2, and then
+/// lambda_s = (lp / le) (R - h1) / (2 h2). `s` is the reduced s.
+anysize::LambdaS lambda_s_of_pencil(const Quadratic<PooledInteger>& h, const forms::SplitScale& sp,
+                                    const forms::SplitScale& se, const Quadratic<Rational>& s) {
   PooledInteger disc, t;
   mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
   mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
@@ -620,13 +614,21 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
     mpz_sub(root_minus_h1.mpz(), root_minus_h1.mpz(), h[1].mpz());
     Rational l;  // fresh: written in place
     forms::divided_by_powers(root_minus_h1.mpz(), {{sp, 1}, {se, 2}}, l.mpq());
-    mpq_div(l.mpq(), l.mpq(), out.s[2].mpq());
+    mpq_div(l.mpq(), l.mpq(), s[2].mpq());
     mpq_div_2exp(l.mpq(), l.mpq(), 1);
-    ls = anysize::rational_lambda_s(l);
-  } else {
-    ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3),
-                              forms::divided_by_powers(disc.mpz(), {{sp, 2}, {se, 4}}));
+    return anysize::rational_lambda_s(l);
   }
+  return anysize::lambda_s_of(anysize::to_poly(s.data(), 3), forms::divided_by_powers(disc.mpz(), {{sp, 2}, {se, 4}}));
+}
+
+/// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
+/// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square (lambda_s of
+/// lambda_s_of_pencil). A rational rho comes from the reduced f, s and lambda_s; an irrational one
+/// only as a double, from the reduced f and s.
+void fill_full_evidence(RootStructure&& rs, const anysize::LambdaS& ls, Classification& out) {
+  out.has_full_evidence = true;
+  out.degree_ftilde = rs.degree_ftilde;
+  out.roots = std::move(rs.real_roots);
   // k = (f0 s2) / (f4 s0)
   if (ls.rational()) {
     // rho = (f0 / f4) (s2 / s0) / lambda_s^2 from the reduced coefficients and lambda_s: GMP's
@@ -667,6 +669,13 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
   }
 }
 
+/// The split of the scale 1 without a heap allocation: a copy of the thread's (its rest shares the
+/// thread's 1; the integer forms' writers assign a whole split, never its rest in place).
+forms::SplitScale unit_split() {
+  thread_local const forms::SplitScale unit;
+  return unit;
+}
+
 /// A default Classification without a heap allocation per number: a copy of the thread's default
 /// one, its numbers sharing that one's (a Gmpq copy shares its value; each default Gmpq costs two
 /// allocations, and a certificate holds some twenty, most never written). Safe because every
@@ -693,7 +702,7 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     Integer lp, le;                                                         // fresh: written in place
     const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();  // copies: read once
     MatrixOf<PooledInteger> pp, ep;
-    forms::SplitScale sp, se;
+    forms::SplitScale sp = unit_split(), se = unit_split();
     if (pd)
       forms::integer_form(*pd, forms::entries(pp), lp);
     else
@@ -704,15 +713,15 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
       forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se});
     const Quartic<PooledInteger> g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
     const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
-    if (pd) sp = forms::split_scale(lp);
-    if (ed) se = forms::split_scale(le);
+    if (pd) sp.twos = mpz_scan1(lp.mpz(), 0);  // split_scale(lp): lp is a power of two
+    if (ed) se.twos = mpz_scan1(le.mpz(), 0);
     Quartic<Integer> f;
     Quadratic<Integer> s;
     reported_polynomials(g, h, sp, se, lp, le, out, f, s);
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
     RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
-    anysize::LambdaS ls;
-    fill_full_evidence(std::move(rs), g, h, sp, se, lp, le, out, ls);
+    const anysize::LambdaS ls = lambda_s_of_pencil(h, sp, se, out.s);
+    fill_full_evidence(std::move(rs), ls, out);
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f. The forms
     // with their scales only where it reads them (the points of C, TE and TI, not the multipliers
     // of E and I) and cannot take them from the doubles: copied from the pooled ones on first use.
