@@ -231,59 +231,61 @@ LambdaS lambda_s_of(const Poly& s) {
   return lambda_s_of(s, forms::divided_by_power(num, forms::split_scale(l), 2));
 }
 
+LambdaS LambdaS::blank() {
+  thread_local const LambdaS prototype;
+  return prototype;
+}
+
 LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
   if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
   if (disc < 0) throw std::logic_error("s has non-real roots");
-  LambdaS out;  // fresh d = 0 and value = 0 + 0 sqrt(d): written in place (GMP's canonical results)
+  // d = 0 and value = 0 + 0 sqrt(d); each number written in place below is made fresh first.
+  LambdaS out = LambdaS::blank();
   // disc = N / Den in lowest terms: sqrt(disc) = sqrt(N Den) / Den, rational iff N Den is a perfect
   // square.
   const mpz_srcptr den = mpq_denref(disc.mpq());
-  const mpq_ptr a = out.value_.a.mpq();
   std::pair<double, double> a_interval;
-  mpz_t nd;
-  mpz_init(nd);
+  PooledInteger nd_, t_num, t_den;
+  const mpz_ptr nd = nd_.mpz(), tn = t_num.mpz(), td = t_den.mpz();
   mpz_mul(nd, mpq_numref(disc.mpq()), den);
-  mpq_t two_s2, t;
-  mpq_init(two_s2);
-  mpq_init(t);
-  mpq_mul_2exp(two_s2, s[2].mpq(), 1);
+  Rational two_s2;  // fresh: written in place
+  mpq_mul_2exp(two_s2.mpq(), s[2].mpq(), 1);
   if (mpz_perfect_square_p(nd)) {  // lambda_s = (-s1 + r / Den) / (2 s2)
-    mpz_sqrt(mpq_numref(t), nd);
-    mpz_set(mpq_denref(t), den);
-    mpq_canonicalize(t);
-    mpq_sub(t, t, s[1].mpq());
-    mpq_div(a, t, two_s2);
+    Rational t;                    // fresh: written in place
+    mpz_sqrt(mpq_numref(t.mpq()), nd);
+    mpz_set(mpq_denref(t.mpq()), den);
+    mpq_canonicalize(t.mpq());
+    mpq_sub(t.mpq(), t.mpq(), s[1].mpq());
+    out.value_.a = Rational();
+    mpq_div(out.value_.a.mpq(), t.mpq(), two_s2.mpq());
     a_interval = forms::tight_interval(out.value_.a);
   } else {  // lambda_s = -s1 / (2 s2) + sqrt(N Den) / (Den 2 s2)
-    mpz_set(out.d.mpz(), nd);
+    out.d = Integer();
+    mpz_swap(out.d.mpz(), nd);
     // b = D2 / (Den N2) for 2 s2 = N2 / D2 (lowest terms, N2 > 0): in lowest terms after dividing
     // out g = gcd(Den, D2) alone, as gcd(D2, N2) = 1. One gcd of two denominators (powers of two
     // for doubles), where a rational product and inverse take two and reduce twice.
+    out.value_.b = Rational();
     const mpz_ptr bn = mpq_numref(out.value_.b.mpq()), bd = mpq_denref(out.value_.b.mpq());
-    mpz_ptr g = mpq_numref(t);  // a temporary
-    mpz_gcd(g, den, mpq_denref(two_s2));
-    mpz_divexact(bn, mpq_denref(two_s2), g);
-    mpz_divexact(bd, den, g);
-    mpz_mul(bd, bd, mpq_numref(two_s2));
+    const mpz_srcptr n2 = mpq_numref(two_s2.mpq()), d2 = mpq_denref(two_s2.mpq());
+    mpz_gcd(tn, den, d2);
+    mpz_divexact(bn, d2, tn);
+    mpz_divexact(bd, den, tn);
+    mpz_mul(bd, bd, n2);
     // a = -s1 / (2 s2) = -(n1 D2) / (d1 N2), reduced on first use (value()): its enclosure from
     // that fraction as it is.
-    mpz_mul(mpq_numref(t), mpq_numref(s[1].mpq()), mpq_denref(two_s2));
-    mpz_neg(mpq_numref(t), mpq_numref(t));
-    mpz_mul(mpq_denref(t), mpq_denref(s[1].mpq()), mpq_numref(two_s2));
-    a_interval = tight_interval_of_quotient(mpq_numref(t), mpq_denref(t));
-    out.pending_.emplace();
-    out.pending_->num = s[1];
-    mpq_swap(out.pending_->den.mpq(), two_s2);  // a fresh Rational: written in place
+    mpz_mul(tn, mpq_numref(s[1].mpq()), d2);
+    mpz_neg(tn, tn);
+    mpz_mul(td, mpq_denref(s[1].mpq()), n2);
+    a_interval = tight_interval_of_quotient(tn, td);
+    out.pending_ = LambdaS::Pending{s[1], two_s2};
   }
-  mpz_clear(nd);
-  mpq_clear(two_s2);
-  mpq_clear(t);
   enclose(out, out.value_, a_interval);
   return out;
 }
 
 LambdaS rational_lambda_s(const Rational& value) {
-  LambdaS out;  // d = 0 and b = 0 as constructed
+  LambdaS out = LambdaS::blank();  // d = 0 and b = 0
   out.value_.a = value;
   enclose(out, out.value_, forms::tight_interval(value));
   return out;

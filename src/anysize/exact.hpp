@@ -67,6 +67,9 @@ class LambdaS {
  private:
   friend LambdaS lambda_s_of(const Poly& s, const Rational& disc);
   friend LambdaS rational_lambda_s(const Rational& value);
+  /// A copy of the thread's default LambdaS, its numbers sharing that one's values (no heap
+  /// allocation): a number is assigned a fresh one before it is written in place.
+  static LambdaS blank();
   void settle() const;
   mutable QuadraticReal value_;
   struct Pending {

@@ -539,11 +539,9 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
 /// The double nearest q (ties to even; CGAL's to_double of a Gmpq truncates): rounded once to 53
 /// bits by MPFR, which is the double itself unless it is subnormal, then rounded from 40 digits.
 double nearest_double(const Rational& q) {
-  mpfr_t x;
-  mpfr_init2(x, 53);
+  MPFR_DECL_INIT(x, 53);  // on the stack: no allocation, nothing to clear
   mpfr_set_q(x, q.mpq(), MPFR_RNDN);
   const double d = mpfr_get_d(x, MPFR_RNDN);
-  mpfr_clear(x);
   if (d == 0 || std::fabs(d) < DBL_MIN || !std::isfinite(d)) return std::strtod(to_decimal(q, 40).c_str(), nullptr);
   return d;
 }
@@ -647,9 +645,8 @@ void fill_full_evidence(RootStructure&& rs, const anysize::LambdaS& ls, Classifi
   } else {
     // k only as a double (CGAL::to_double is mpq_get_d: the exact quotient truncated, whatever
     // fraction represents it), so from the unreduced product of the reduced coefficients: no gcd.
-    mpq_t k;
-    mpq_init(k);
-    const mpz_ptr kn = mpq_numref(k), kd = mpq_denref(k);
+    PooledInteger kn_, kd_;
+    const mpz_ptr kn = kn_.mpz(), kd = kd_.mpz();
     mpz_mul(kn, mpq_numref(out.f[0].mpq()), mpq_denref(out.f[4].mpq()));
     mpz_mul(kn, kn, mpq_numref(out.s[2].mpq()));
     mpz_mul(kn, kn, mpq_denref(out.s[0].mpq()));
@@ -660,8 +657,8 @@ void fill_full_evidence(RootStructure&& rs, const anysize::LambdaS& ls, Classifi
       mpz_neg(kn, kn);
       mpz_neg(kd, kd);
     }
-    const double k_double = mpq_get_d(k);
-    mpq_clear(k);
+    const __mpq_struct k{*kn, *kd};  // a read-only view of the fraction
+    const double k_double = mpq_get_d(&k);
     const double s2 = forms::truncated_double(out.s[2]), s1 = forms::truncated_double(out.s[1]),
                  s0 = forms::truncated_double(out.s[0]);
     const double u1 = (2 * s0) / (s1 + std::sqrt(s1 * s1 - 4 * s2 * s0));  // stable smaller root
