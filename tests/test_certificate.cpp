@@ -571,6 +571,18 @@ TEST_CASE("an irrational lambda_s: a reduced on first use, the enclosure as from
     const LambdaS ls = relpos::anysize::lambda_s_of(s);
     if (ls.rational()) continue;
     ++irrational;
+    {
+      // Between irrational ones, a rational lambda_s = r1 (s = s2 (l - r1)(l - r2), r2 < r1 < 0): the
+      // numbers an irrational lambda_s wrote must not show through (each LambdaS starts blank).
+      const Rational r1 = -coefficient(1, 1L << 30), r2 = r1 - coefficient(1, 1L << 30);
+      const LambdaS rl = relpos::anysize::lambda_s_of({s2 * r1 * r2, -s2 * (r1 + r2), s2});
+      CHECK(rl.rational());
+      CHECK(rl.d == 0);
+      CHECK(rl.value().a == r1);
+      CHECK(rl.value().b == 0);
+      CHECK(Rational(rl.lo) <= r1);
+      CHECK(r1 <= Rational(rl.hi));
+    }
     CAPTURE(relpos::to_string(s0), relpos::to_string(s1), relpos::to_string(s2));
     // The enclosure first (before value() reduces a), then the exact value.
     const double lo = ls.lo, hi = ls.hi;
