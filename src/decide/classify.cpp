@@ -666,6 +666,13 @@ void fill_full_evidence(RootStructure&& rs, const anysize::LambdaS& ls, Classifi
   }
 }
 
+/// An Integer 0 without a heap allocation, to be assigned (never written in place): a copy of the
+/// thread's.
+Integer shared_zero() {
+  thread_local const Integer zero;
+  return zero;
+}
+
 /// The split of the scale 1 without a heap allocation: a copy of the thread's (its rest shares the
 /// thread's 1; the integer forms' writers assign a whole split, never its rest in place).
 forms::SplitScale unit_split() {
@@ -696,8 +703,10 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // traffic for temporaries): from the doubles when the entries are doubles, without a rational
     // matrix; else from the quadric's exact source, with the scale's split (each scale's rest kept as
     // its denominators' factors: every gcd of the reduction is short).
-    Integer lp, le;                                                         // fresh: written in place
     const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();  // copies: read once
+    // The scales: fresh where an exact source writes them in place; integer_form of doubles assigns
+    // its own, so there a copy of the thread's 0 (no allocation) is what it replaces.
+    Integer lp = pd ? shared_zero() : Integer(), le = ed ? shared_zero() : Integer();
     MatrixOf<PooledInteger> pp, ep;
     forms::SplitScale sp = unit_split(), se = unit_split();
     if (pd)
