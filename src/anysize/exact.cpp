@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "algebra/forms.hpp"
-#include "filters/pooled_integer.hpp"
 
 namespace relpos::anysize {
 
@@ -180,8 +179,9 @@ std::pair<double, double> tight_interval_of_quotient(mpz_srcptr n, mpz_srcptr d)
     int e = 0;
     const double m = std::ldexp(std::frexp(t, &e), 53);
     const long k = static_cast<long>(e) - 53;
-    PooledInteger lhs_, rhs_;
-    const mpz_ptr lhs = lhs_.mpz(), rhs = rhs_.mpz();
+    mpz_t lhs, rhs;
+    mpz_init(lhs);
+    mpz_init(rhs);
     mpz_mul_2exp(lhs, n, static_cast<mp_bitcnt_t>(k < 0 ? -k : 0));
     mpz_set_d(rhs, m);
     mpz_mul(rhs, rhs, d);
@@ -192,6 +192,8 @@ std::pair<double, double> tight_interval_of_quotient(mpz_srcptr n, mpz_srcptr d)
       const double away = std::nextafter(t, t < 0 ? -HUGE_VAL : HUGE_VAL);
       out = t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
     }
+    mpz_clear(lhs);
+    mpz_clear(rhs);
   }
   return out;
 }
@@ -245,8 +247,10 @@ LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
   // square.
   const mpz_srcptr den = mpq_denref(disc.mpq());
   std::pair<double, double> a_interval;
-  PooledInteger nd_, t_num, t_den;
-  const mpz_ptr nd = nd_.mpz(), tn = t_num.mpz(), td = t_den.mpz();
+  mpz_t nd, tn, td;
+  mpz_init(nd);
+  mpz_init(tn);
+  mpz_init(td);
   mpz_mul(nd, mpq_numref(disc.mpq()), den);
   Rational two_s2;  // fresh: written in place
   mpq_mul_2exp(two_s2.mpq(), s[2].mpq(), 1);
@@ -280,6 +284,9 @@ LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
     a_interval = tight_interval_of_quotient(tn, td);
     out.pending_ = LambdaS::Pending{s[1], two_s2};
   }
+  mpz_clear(nd);
+  mpz_clear(tn);
+  mpz_clear(td);
   enclose(out, out.value_, a_interval);
   return out;
 }

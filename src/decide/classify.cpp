@@ -666,6 +666,18 @@ void fill_full_evidence(RootStructure&& rs, const anysize::LambdaS& ls, Classifi
   }
 }
 
+/// The integer forms of the full evidence, one pair per thread: rewritten (all 16 entries each) by
+/// every classify_impl and read only within that call (by the certificate too), so their integers
+/// are not taken from and given back to the pool 32 times per pair. classify_impl never runs
+/// inside itself.
+struct PooledForms {
+  MatrixOf<PooledInteger> p, e;
+};
+PooledForms& pooled_forms() {
+  thread_local PooledForms forms;
+  return forms;
+}
+
 /// An Integer 0 without a heap allocation, to be assigned (never written in place): a copy of the
 /// thread's.
 Integer shared_zero() {
@@ -707,7 +719,8 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // The scales: fresh where an exact source writes them in place; integer_form of doubles assigns
     // its own, so there a copy of the thread's 0 (no allocation) is what it replaces.
     Integer lp = pd ? shared_zero() : Integer(), le = ed ? shared_zero() : Integer();
-    MatrixOf<PooledInteger> pp, ep;
+    MatrixOf<PooledInteger>& pp = pooled_forms().p;  // every entry rewritten below
+    MatrixOf<PooledInteger>& ep = pooled_forms().e;
     forms::SplitScale sp = unit_split(), se = unit_split();
     if (pd)
       forms::integer_form(*pd, forms::entries(pp), lp);
