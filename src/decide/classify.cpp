@@ -678,6 +678,13 @@ PooledForms& pooled_forms() {
   return forms;
 }
 
+/// Makes z safe to write in place: a fresh Integer when another handle shares its value (a copy
+/// kept by a callee), else z itself. CGAL's reference count is on Gmpz's private base, which a
+/// C-style cast converts to all the same (C++17 [expr.cast]/4).
+void make_unshared(Integer& z) {
+  if (((const CGAL::Handle_for<CGAL::Gmpz_rep>&)z).is_shared()) z = Integer();  // NOLINT: the private base
+}
+
 /// An Integer 0 without a heap allocation, to be assigned (never written in place): a copy of the
 /// thread's.
 Integer shared_zero() {
@@ -734,8 +741,11 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
     if (pd) sp.twos = mpz_scan1(lp.mpz(), 0);  // split_scale(lp): lp is a power of two
     if (ed) se.twos = mpz_scan1(le.mpz(), 0);
-    Quartic<Integer> f;
-    Quadratic<Integer> s;
+    // S^4 f and S^3 s: the thread's, written in place (their limbs kept from call to call).
+    thread_local Quartic<Integer> f;
+    thread_local Quadratic<Integer> s;
+    for (Integer& c : f) make_unshared(c);
+    for (Integer& c : s) make_unshared(c);
     reported_polynomials(g, h, sp, se, lp, le, out, f, s);
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
     RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
