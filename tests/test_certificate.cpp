@@ -12,6 +12,9 @@
 #include <relpos/io.hpp>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <utility>
+#include <vector>
 
 #include "algebra/forms.hpp"
 #include "anysize/exact.hpp"
@@ -599,4 +602,53 @@ TEST_CASE("an irrational lambda_s: a reduced on first use, the enclosure as from
     CHECK(hi == want.sup());
   }
   CHECK(irrational > 2000);
+}
+
+TEST_CASE("full evidence on a thread does not depend on the calls before it", "[certificate]") {
+  // classify keeps per-thread integers between calls (written in place unless a callee kept a
+  // copy): each report, certificate included, must be the one a fresh thread gives. Pairs of
+  // doubles (spheres and general ellipsoids near a cup, every position) and of exact rationals.
+  std::mt19937_64 bits(4242);
+  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(bits); };
+  std::vector<std::pair<Ellipsoid, Paraboloid>> pairs;
+  for (int k = 0; k < 120; ++k) {
+    relpos::DoubleMatrix4 p{}, e{};
+    const double a = uniform(0.5, 2), b = uniform(0.5, 2);
+    p[0] = 1 / (a * a), p[5] = 1 / (b * b), p[11] = p[14] = -0.5;
+    const double c[3] = {uniform(-0.5, 0.5), uniform(-0.5, 0.5), uniform(-0.2, 0.8)}, r = uniform(0.05, 0.4);
+    double m[3][3] = {{1 / (r * r), 0, 0}, {0, 1 / (r * r), 0}, {0, 0, 1 / (r * r)}};
+    if (k % 2) {  // a general ellipsoid: the sphere's block plus a symmetric perturbation
+      for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) m[i][j] = m[j][i] = m[i][j] + uniform(-0.2, 0.2) / (r * r);
+    }
+    double e0 = -1;
+    for (int i = 0; i < 3; ++i) {
+      double mc = 0;
+      for (int j = 0; j < 3; ++j) {
+        e[static_cast<std::size_t>(4 * i + j)] = m[i][j];
+        mc += m[i][j] * c[j];
+      }
+      e[static_cast<std::size_t>(4 * i + 3)] = e[static_cast<std::size_t>(12 + i)] = -mc;
+      e0 += mc * c[i];
+    }
+    e[15] = e0;
+    try {
+      pairs.emplace_back(Ellipsoid::from_doubles(e), Paraboloid::from_doubles(p));
+    } catch (const std::exception&) {  // a perturbed block that is not positive definite
+    }
+    pairs.emplace_back(sphere(q(k % 7 - 2, 3), q(1 + k % 5, 4)), cup());
+  }
+  std::vector<std::string> sequential;
+  for (const auto& [e, p] : pairs)
+    sequential.push_back(relpos::io::classification_json_text(relpos::classify(e, p, relpos::Evidence::Full)));
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    std::string alone;
+    std::thread([&] {
+      alone = relpos::io::classification_json_text(
+          relpos::classify(pairs[i].first, pairs[i].second, relpos::Evidence::Full));
+    }).join();
+    CAPTURE(i);
+    CHECK(alone == sequential[i]);
+  }
+  CHECK(pairs.size() > 200);
 }
