@@ -163,6 +163,21 @@ void LambdaS::settle() const {
   pending_.reset();
 }
 
+namespace {
+
+/// Whether n 2^max(-k, 0) = m d 2^max(k, 0) modulo p = 2^31 - 1 (necessary for equality).
+bool equal_modulo_mersenne_31(mpz_srcptr n, mpz_srcptr d, long long m, long k) {
+  using U = unsigned long long;  // residues below 2^31: their products fit
+  constexpr U p = (U{1} << 31) - 1;
+  auto two_to = [](long j) { return U{1} << (j % 31); };  // 2^j mod p, as 2^31 = 1
+  const U mm = m >= 0 ? static_cast<U>(m) % p : (p - static_cast<U>(-m) % p) % p;
+  const U lhs = mpz_fdiv_ui(n, p) * two_to(k < 0 ? -k : 0) % p;  // fdiv: a residue in [0, p)
+  const U rhs = mm * mpz_fdiv_ui(d, p) % p * two_to(k > 0 ? k : 0) % p;
+  return lhs == rhs;
+}
+
+}  // namespace
+
 std::pair<double, double> tight_interval_of_quotient(mpz_srcptr n, mpz_srcptr d) {
   // n / d as it is: mpq_get_d truncates the value, whatever fraction represents it (read only).
   const __mpq_struct q{*n, *d};
@@ -175,10 +190,15 @@ std::pair<double, double> tight_interval_of_quotient(mpz_srcptr n, mpz_srcptr d)
     mpq_canonicalize(r.mpq());
     out = forms::tight_interval(r);
   } else {
-    // n / d is the double t = m 2^k (m an integer) iff n 2^max(-k, 0) = m d 2^max(k, 0).
+    // n / d is the double t = m 2^k (m an integer) iff n 2^max(-k, 0) = m d 2^max(k, 0): first
+    // modulo the prime 2^31 - 1 (no allocation; a difference there decides), then exactly.
     int e = 0;
     const double m = std::ldexp(std::frexp(t, &e), 53);
     const long k = static_cast<long>(e) - 53;
+    if (!equal_modulo_mersenne_31(n, d, static_cast<long long>(m), k)) {
+      const double away = std::nextafter(t, t < 0 ? -HUGE_VAL : HUGE_VAL);
+      return t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
+    }
     mpz_t lhs, rhs;
     mpz_init(lhs);
     mpz_init(rhs);
