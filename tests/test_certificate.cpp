@@ -1,7 +1,10 @@
 // The certificates (classify.hpp): the independent verifier and the JSON form of certificates. Every case is built by
 // hand (spheres against z = x^2 + y^2, where the pencil lambda P + E is block diagonal), the true
 // certificate must be accepted and tampered variants rejected.
+#include <CGAL/Interval_nt.h>
+
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <optional>
 #include <random>
 #include <relpos/classify.hpp>
@@ -9,8 +12,12 @@
 #include <relpos/io.hpp>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
+#include "algebra/forms.hpp"
+#include "anysize/exact.hpp"
 #include "certificate/build.hpp"
 #include "certificate/verify.hpp"
 #include "io/json_write.hpp"
@@ -566,4 +573,142 @@ TEST_CASE("the report writer's integers are their decimal text at the edges of i
   const Rational tiny(relpos::Integer(1), relpos::Integer("18446744073709551617"));
   CHECK(written(tiny) == "\"1/18446744073709551617\"");
   CHECK(written(Rational(-7)) == "\"-7\"");
+}
+
+TEST_CASE("tight_interval_of_quotient is tight_interval of the reduced fraction, bit for bit", "[certificate]") {
+  // Doubles (a point), dyadics beyond 53 bits, general rationals, subnormal and huge values, of
+  // either sign, each written as n / d with a common factor c (even, odd, long) that the function
+  // must not need removed.
+  std::mt19937_64 bits(2718);
+  auto uniform = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(bits); };
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double x =
+        std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits), static_cast<int>(uniform(-1100, 1100)));
+    const double d = std::isfinite(x) && x != 0 ? x : 0.75;
+    Rational value;
+    switch (trial % 4) {
+      case 0:
+        value = Rational(d);
+        break;
+      case 1:
+        value = Rational(d) + Rational(relpos::Integer(1), relpos::Integer(1) << 200);
+        break;
+      case 2:
+        value = Rational(relpos::Integer(uniform(-(1L << 60), 1L << 60)), relpos::Integer(uniform(1, 1L << 60)));
+        break;
+      default:
+        value = Rational(relpos::Integer(uniform(1, 1000)), relpos::Integer(3)) * Rational(d);
+    }
+    relpos::Integer c(uniform(1, 1L << 40));
+    if (trial % 3 == 0) c = c << static_cast<unsigned long>(uniform(0, 90));
+    if (trial % 5 == 0) c = c * c * c;
+    const relpos::Integer n = value.numerator() * c, den = value.denominator() * c;
+    CAPTURE(relpos::to_string(value), relpos::to_string(c));
+    const std::pair<double, double> got = relpos::anysize::tight_interval_of_quotient(n.mpz(), den.mpz()),
+                                    want = relpos::forms::tight_interval(value);
+    CHECK(got.first == want.first);
+    CHECK(got.second == want.second);
+  }
+}
+
+TEST_CASE("an irrational lambda_s: a reduced on first use, the enclosure as from the reduced a", "[certificate]") {
+  // s = s2 (l - r1)(l - r2) + t with two negative roots and an irrational discriminant; its
+  // coefficients are dyadic (as from doubles) or general rationals. lambda_s = a + b sqrt(d) with
+  // a = -s1 / (2 s2), and [lo, hi] the interval sum of the tight enclosures of a, b and sqrt(d).
+  using relpos::anysize::LambdaS;
+  using relpos::anysize::QuadraticReal;
+  using I = CGAL::Interval_nt<false>;
+  std::mt19937_64 bits(1618);
+  auto uniform = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(bits); };
+  int irrational = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const bool dyadic = trial % 2 == 0;
+    auto coefficient = [&](long lo, long hi) {
+      const long den = dyadic ? 1L << uniform(0, 60) : uniform(1, 1L << 40);
+      return Rational(relpos::Integer(uniform(lo, hi)), relpos::Integer(den)) * Rational(1L << uniform(0, 20));
+    };
+    const Rational s2 = coefficient(1, 1L << 50), s1 = coefficient(1, 1L << 50);
+    // s0 in (0, s1^2 / (4 s2)): two negative roots.
+    const Rational s0 = s1 * s1 / (4 * s2) * q(uniform(1, 999), 1000);
+    const relpos::anysize::Poly s{s0, s1, s2};
+    const LambdaS ls = relpos::anysize::lambda_s_of(s);
+    if (ls.rational()) continue;
+    ++irrational;
+    {
+      // Between irrational ones, a rational lambda_s = r1 (s = s2 (l - r1)(l - r2), r2 < r1 < 0): the
+      // numbers an irrational lambda_s wrote must not show through (each LambdaS starts blank).
+      const Rational r1 = -coefficient(1, 1L << 30), r2 = r1 - coefficient(1, 1L << 30);
+      const LambdaS rl = relpos::anysize::lambda_s_of({s2 * r1 * r2, -s2 * (r1 + r2), s2});
+      CHECK(rl.rational());
+      CHECK(rl.d == 0);
+      CHECK(rl.value().a == r1);
+      CHECK(rl.value().b == 0);
+      CHECK(Rational(rl.lo) <= r1);
+      CHECK(r1 <= Rational(rl.hi));
+    }
+    CAPTURE(relpos::to_string(s0), relpos::to_string(s1), relpos::to_string(s2));
+    // The enclosure first (before value() reduces a), then the exact value.
+    const double lo = ls.lo, hi = ls.hi;
+    const QuadraticReal& v = ls.value();
+    CHECK(v.a == -s1 / (2 * s2));
+    const Rational disc = s1 * s1 - 4 * s2 * s0;
+    CHECK(v.b * v.b * Rational(ls.d) == disc / (4 * s2 * s2));  // b sqrt(d) = sqrt(disc) / (2 s2)
+    CHECK(ls.sign({v.a - Rational(lo), v.b}) >= 0);
+    CHECK(ls.sign({v.a - Rational(hi), v.b}) <= 0);
+    CGAL::Protect_FPU_rounding<true> guard;
+    const I want = I(relpos::forms::tight_interval(v.a)) +
+                   I(relpos::forms::tight_interval(v.b)) * CGAL::sqrt(I(CGAL::to_interval(ls.d)));
+    CHECK(lo == want.inf());
+    CHECK(hi == want.sup());
+  }
+  CHECK(irrational > 2000);
+}
+
+TEST_CASE("full evidence on a thread does not depend on the calls before it", "[certificate]") {
+  // classify keeps per-thread integers between calls (written in place unless a callee kept a
+  // copy): each report, certificate included, must be the one a fresh thread gives. Pairs of
+  // doubles (spheres and general ellipsoids near a cup, every position) and of exact rationals.
+  std::mt19937_64 bits(4242);
+  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(bits); };
+  std::vector<std::pair<Ellipsoid, Paraboloid>> pairs;
+  for (int k = 0; k < 120; ++k) {
+    relpos::DoubleMatrix4 p{}, e{};
+    const double a = uniform(0.5, 2), b = uniform(0.5, 2);
+    p[0] = 1 / (a * a), p[5] = 1 / (b * b), p[11] = p[14] = -0.5;
+    const double c[3] = {uniform(-0.5, 0.5), uniform(-0.5, 0.5), uniform(-0.2, 0.8)}, r = uniform(0.05, 0.4);
+    double m[3][3] = {{1 / (r * r), 0, 0}, {0, 1 / (r * r), 0}, {0, 0, 1 / (r * r)}};
+    if (k % 2) {  // a general ellipsoid: the sphere's block plus a symmetric perturbation
+      for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) m[i][j] = m[j][i] = m[i][j] + uniform(-0.2, 0.2) / (r * r);
+    }
+    double e0 = -1;
+    for (int i = 0; i < 3; ++i) {
+      double mc = 0;
+      for (int j = 0; j < 3; ++j) {
+        e[static_cast<std::size_t>(4 * i + j)] = m[i][j];
+        mc += m[i][j] * c[j];
+      }
+      e[static_cast<std::size_t>(4 * i + 3)] = e[static_cast<std::size_t>(12 + i)] = -mc;
+      e0 += mc * c[i];
+    }
+    e[15] = e0;
+    try {
+      pairs.emplace_back(Ellipsoid::from_doubles(e), Paraboloid::from_doubles(p));
+    } catch (const std::exception&) {  // a perturbed block that is not positive definite
+    }
+    pairs.emplace_back(sphere(q(k % 7 - 2, 3), q(1 + k % 5, 4)), cup());
+  }
+  std::vector<std::string> sequential;
+  for (const auto& [e, p] : pairs)
+    sequential.push_back(relpos::io::classification_json_text(relpos::classify(e, p, relpos::Evidence::Full)));
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    std::string alone;
+    std::thread([&] {
+      alone = relpos::io::classification_json_text(
+          relpos::classify(pairs[i].first, pairs[i].second, relpos::Evidence::Full));
+    }).join();
+    CAPTURE(i);
+    CHECK(alone == sequential[i]);
+  }
+  CHECK(pairs.size() > 200);
 }

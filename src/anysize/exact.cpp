@@ -3,6 +3,8 @@
 #include <CGAL/Interval_nt.h>
 #include <gmp.h>
 
+#include <cfloat>
+#include <cmath>
 #include <stdexcept>
 
 #include "algebra/forms.hpp"
@@ -141,7 +143,7 @@ QuadraticReal LambdaS::div(const QuadraticReal& x, const QuadraticReal& y) const
 
 QuadraticReal LambdaS::at(const Poly& p) const {
   QuadraticReal acc{Rational(0), Rational(0)};
-  for (std::size_t i = p.size(); i-- > 0;) acc = add(mul(acc, value), {p[i], Rational(0)});
+  for (std::size_t i = p.size(); i-- > 0;) acc = add(mul(acc, value()), {p[i], Rational(0)});
   return acc;
 }
 
@@ -149,18 +151,82 @@ int LambdaS::compare(const Rational& q) const {
   const std::pair<double, double> x = forms::tight_interval(q);  // certified: decided without rationals
   if (x.second < lo) return -1;
   if (x.first > hi) return 1;
-  return sign({q - value.a, -value.b});
+  const QuadraticReal& v = value();
+  return sign({q - v.a, -v.b});
+}
+
+void LambdaS::settle() const {
+  Rational a;  // fresh: written in place (value_.a may share its value with a copy's)
+  mpq_div(a.mpq(), pending_->num.mpq(), pending_->den.mpq());
+  mpq_neg(a.mpq(), a.mpq());
+  value_.a = a;
+  pending_.reset();
+}
+
+namespace {
+
+/// Whether n 2^max(-k, 0) = m d 2^max(k, 0) modulo p = 2^31 - 1 (necessary for equality).
+bool equal_modulo_mersenne_31(mpz_srcptr n, mpz_srcptr d, long long m, long k) {
+  using U = unsigned long long;  // residues below 2^31: their products fit
+  constexpr U p = (U{1} << 31) - 1;
+  auto two_to = [](long j) { return U{1} << (j % 31); };  // 2^j mod p, as 2^31 = 1
+  const U mm = m >= 0 ? static_cast<U>(m) % p : (p - static_cast<U>(-m) % p) % p;
+  const U lhs = mpz_fdiv_ui(n, p) * two_to(k < 0 ? -k : 0) % p;  // fdiv: a residue in [0, p)
+  const U rhs = mm * mpz_fdiv_ui(d, p) % p * two_to(k > 0 ? k : 0) % p;
+  return lhs == rhs;
+}
+
+}  // namespace
+
+std::pair<double, double> tight_interval_of_quotient(mpz_srcptr n, mpz_srcptr d) {
+  // n / d as it is: mpq_get_d truncates the value, whatever fraction represents it (read only).
+  const __mpq_struct q{*n, *d};
+  const double t = mpq_get_d(&q);
+  std::pair<double, double> out;
+  if (!(std::fabs(t) >= DBL_MIN && std::fabs(t) < DBL_MAX)) {  // 0, subnormal, huge: reduced, the general way
+    Rational r;                                                // fresh: written in place
+    mpz_set(mpq_numref(r.mpq()), n);
+    mpz_set(mpq_denref(r.mpq()), d);
+    mpq_canonicalize(r.mpq());
+    out = forms::tight_interval(r);
+  } else {
+    // n / d is the double t = m 2^k (m an integer) iff n 2^max(-k, 0) = m d 2^max(k, 0): first
+    // modulo the prime 2^31 - 1 (no allocation; a difference there decides), then exactly.
+    int e = 0;
+    const double m = std::ldexp(std::frexp(t, &e), 53);
+    const long k = static_cast<long>(e) - 53;
+    if (!equal_modulo_mersenne_31(n, d, static_cast<long long>(m), k)) {
+      const double away = std::nextafter(t, t < 0 ? -HUGE_VAL : HUGE_VAL);
+      return t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
+    }
+    mpz_t lhs, rhs;
+    mpz_init(lhs);
+    mpz_init(rhs);
+    mpz_mul_2exp(lhs, n, static_cast<mp_bitcnt_t>(k < 0 ? -k : 0));
+    mpz_set_d(rhs, m);
+    mpz_mul(rhs, rhs, d);
+    mpz_mul_2exp(rhs, rhs, static_cast<mp_bitcnt_t>(k > 0 ? k : 0));
+    if (mpz_cmp(lhs, rhs) == 0) {
+      out = {t, t};
+    } else {
+      const double away = std::nextafter(t, t < 0 ? -HUGE_VAL : HUGE_VAL);
+      out = t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
+    }
+    mpz_clear(lhs);
+    mpz_clear(rhs);
+  }
+  return out;
 }
 
 namespace {
 
 /// The enclosure of lambda_s = a + b sqrt(d) for compare(): interval arithmetic on certified
-/// enclosures of a, b and d (infinite bounds, hence no filtering, beyond the double range).
-void enclose(LambdaS& out) {
+/// enclosures of a (forms::tight_interval(a), given), b and d (infinite bounds, hence no filtering,
+/// beyond the double range).
+void enclose(LambdaS& out, const QuadraticReal& value, std::pair<double, double> a) {
   using I = CGAL::Interval_nt<false>;
-  const std::pair<double, double> a = forms::tight_interval(out.value.a);
   const bool irrational = out.d != 0;
-  const std::pair<double, double> b = irrational ? forms::tight_interval(out.value.b) : std::make_pair(0.0, 0.0);
+  const std::pair<double, double> b = irrational ? forms::tight_interval(value.b) : std::make_pair(0.0, 0.0);
   const std::pair<double, double> d = irrational ? CGAL::to_interval(out.d) : std::make_pair(0.0, 0.0);
   CGAL::Protect_FPU_rounding<true> guard;
   const I v = I(a) + (irrational ? I(b) * CGAL::sqrt(I(d)) : I(0));
@@ -187,52 +253,68 @@ LambdaS lambda_s_of(const Poly& s) {
   return lambda_s_of(s, forms::divided_by_power(num, forms::split_scale(l), 2));
 }
 
+LambdaS LambdaS::blank() {
+  thread_local const LambdaS prototype;
+  return prototype;
+}
+
 LambdaS lambda_s_of(const Poly& s, const Rational& disc) {
   if (s.size() != 3 || !(s[2] > 0)) throw std::logic_error("s must be a quadratic with positive leading coefficient");
   if (disc < 0) throw std::logic_error("s has non-real roots");
-  LambdaS out;  // fresh d = 0 and value = 0 + 0 sqrt(d): written in place (GMP's canonical results)
+  // d = 0 and value = 0 + 0 sqrt(d); each number written in place below is made fresh first.
+  LambdaS out = LambdaS::blank();
   // disc = N / Den in lowest terms: sqrt(disc) = sqrt(N Den) / Den, rational iff N Den is a perfect
   // square.
   const mpz_srcptr den = mpq_denref(disc.mpq());
-  const mpq_ptr a = out.value.a.mpq();
-  mpz_t nd;
+  std::pair<double, double> a_interval;
+  mpz_t nd, tn, td;
   mpz_init(nd);
+  mpz_init(tn);
+  mpz_init(td);
   mpz_mul(nd, mpq_numref(disc.mpq()), den);
-  mpq_t two_s2, t;
-  mpq_init(two_s2);
-  mpq_init(t);
-  mpq_mul_2exp(two_s2, s[2].mpq(), 1);
+  Rational two_s2;  // fresh: written in place
+  mpq_mul_2exp(two_s2.mpq(), s[2].mpq(), 1);
   if (mpz_perfect_square_p(nd)) {  // lambda_s = (-s1 + r / Den) / (2 s2)
-    mpz_sqrt(mpq_numref(t), nd);
-    mpz_set(mpq_denref(t), den);
-    mpq_canonicalize(t);
-    mpq_sub(t, t, s[1].mpq());
-    mpq_div(a, t, two_s2);
+    Rational t;                    // fresh: written in place
+    mpz_sqrt(mpq_numref(t.mpq()), nd);
+    mpz_set(mpq_denref(t.mpq()), den);
+    mpq_canonicalize(t.mpq());
+    mpq_sub(t.mpq(), t.mpq(), s[1].mpq());
+    out.value_.a = Rational();
+    mpq_div(out.value_.a.mpq(), t.mpq(), two_s2.mpq());
+    a_interval = forms::tight_interval(out.value_.a);
   } else {  // lambda_s = -s1 / (2 s2) + sqrt(N Den) / (Den 2 s2)
-    mpz_set(out.d.mpz(), nd);
-    mpq_div(a, s[1].mpq(), two_s2);
-    mpq_neg(a, a);
+    out.d = Integer();
+    mpz_swap(out.d.mpz(), nd);
     // b = D2 / (Den N2) for 2 s2 = N2 / D2 (lowest terms, N2 > 0): in lowest terms after dividing
     // out g = gcd(Den, D2) alone, as gcd(D2, N2) = 1. One gcd of two denominators (powers of two
     // for doubles), where a rational product and inverse take two and reduce twice.
-    const mpz_ptr bn = mpq_numref(out.value.b.mpq()), bd = mpq_denref(out.value.b.mpq());
-    mpz_ptr g = mpq_numref(t);  // a temporary
-    mpz_gcd(g, den, mpq_denref(two_s2));
-    mpz_divexact(bn, mpq_denref(two_s2), g);
-    mpz_divexact(bd, den, g);
-    mpz_mul(bd, bd, mpq_numref(two_s2));
+    out.value_.b = Rational();
+    const mpz_ptr bn = mpq_numref(out.value_.b.mpq()), bd = mpq_denref(out.value_.b.mpq());
+    const mpz_srcptr n2 = mpq_numref(two_s2.mpq()), d2 = mpq_denref(two_s2.mpq());
+    mpz_gcd(tn, den, d2);
+    mpz_divexact(bn, d2, tn);
+    mpz_divexact(bd, den, tn);
+    mpz_mul(bd, bd, n2);
+    // a = -s1 / (2 s2) = -(n1 D2) / (d1 N2), reduced on first use (value()): its enclosure from
+    // that fraction as it is.
+    mpz_mul(tn, mpq_numref(s[1].mpq()), d2);
+    mpz_neg(tn, tn);
+    mpz_mul(td, mpq_denref(s[1].mpq()), n2);
+    a_interval = tight_interval_of_quotient(tn, td);
+    out.pending_ = LambdaS::Pending{s[1], two_s2};
   }
   mpz_clear(nd);
-  mpq_clear(two_s2);
-  mpq_clear(t);
-  enclose(out);
+  mpz_clear(tn);
+  mpz_clear(td);
+  enclose(out, out.value_, a_interval);
   return out;
 }
 
 LambdaS rational_lambda_s(const Rational& value) {
-  LambdaS out;  // d = 0 and b = 0 as constructed
-  out.value.a = value;
-  enclose(out);
+  LambdaS out = LambdaS::blank();  // d = 0 and b = 0
+  out.value_.a = value;
+  enclose(out, out.value_, forms::tight_interval(value));
   return out;
 }
 
@@ -249,7 +331,7 @@ AnySizeFacts any_size_facts(const Poly& f, const Poly& s) {
     // no convention for a root at the endpoint.
     if (ls.sign(ls.at(g)) == 0) {
       x.multiplicity_at_lambda_s = mult;
-      g = quotient(g, ls.rational() ? Poly{-ls.value.a, Rational(1)} : monic(s));
+      g = quotient(g, ls.rational() ? Poly{-ls.value().a, Rational(1)} : monic(s));
     }
     if (g.size() <= 1) continue;
     const std::vector<Poly> seq = sturm_sequence(g);

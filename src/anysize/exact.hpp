@@ -4,8 +4,11 @@
 // only for exact tangencies, special roots and certificates, never on the filtered path.
 #pragma once
 
+#include <gmp.h>
+
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "algebra/pencil.hpp"
@@ -39,11 +42,17 @@ struct QuadraticReal {
 
 /// lambda_s and the field it lives in: lambda_s = a + b sqrt(d), with b = 0 and d = 0 when lambda_s
 /// is rational (Disc(s) a perfect square, e.g. a circular paraboloid or axis-aligned bodies).
-struct LambdaS {
+class LambdaS {
+ public:
   Integer d;
-  QuadraticReal value;
   double lo = -HUGE_VAL, hi = HUGE_VAL;  ///< a certified enclosure lo <= lambda_s <= hi (compare's filter)
-  bool rational() const { return value.b == 0; }
+  /// a + b sqrt(d). An irrational lambda_s's a = -s1 / (2 s2) is reduced on first use: most
+  /// certificates read only the enclosure, and reducing a is a gcd of s1's and s2's long numerators.
+  const QuadraticReal& value() const {
+    if (pending_) settle();
+    return value_;
+  }
+  bool rational() const { return value_.b == 0; }  // b is never pending
   /// Exact sign of x + y sqrt(d).
   int sign(const QuadraticReal& x) const;
   QuadraticReal add(const QuadraticReal& x, const QuadraticReal& y) const;
@@ -54,7 +63,23 @@ struct LambdaS {
   QuadraticReal at(const Poly& p) const;
   /// sign(q - lambda_s) for rational q.
   int compare(const Rational& q) const;
+
+ private:
+  friend LambdaS lambda_s_of(const Poly& s, const Rational& disc);
+  friend LambdaS rational_lambda_s(const Rational& value);
+  /// A copy of the thread's default LambdaS, its numbers sharing that one's values (no heap
+  /// allocation): a number is assigned a fresh one before it is written in place.
+  static LambdaS blank();
+  void settle() const;
+  mutable QuadraticReal value_;
+  struct Pending {
+    Rational num, den;  ///< a = -num / den (den = 2 s2 > 0), not yet reduced
+  };
+  mutable std::optional<Pending> pending_;
 };
+
+/// forms::tight_interval(n / d) for d > 0, bit for bit, without reducing the fraction (no gcd).
+std::pair<double, double> tight_interval_of_quotient(mpz_srcptr n, mpz_srcptr d);
 
 /// lambda_s from s = s0 + s1 l + s2 l^2 (two negative roots, s2 > 0).
 LambdaS lambda_s_of(const Poly& s);

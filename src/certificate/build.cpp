@@ -485,8 +485,8 @@ bool hard_case(const Pair& pr, Certificate& c) {
   const LambdaS& ls = pr.ls;
   std::array<std::array<QuadraticReal, 4>, 3> m;
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m[i][j] = ls.add(ls.mul(ls.value, q_of(pr.P(i, j))), q_of(pr.E(i, j)));
-    const QuadraticReal r = ls.add(ls.mul(ls.value, q_of(pr.P(i, 3))), q_of(pr.E(i, 3)));
+    for (int j = 0; j < 3; ++j) m[i][j] = ls.add(ls.mul(ls.value(), q_of(pr.P(i, j))), q_of(pr.E(i, j)));
+    const QuadraticReal r = ls.add(ls.mul(ls.value(), q_of(pr.P(i, 3))), q_of(pr.E(i, 3)));
     m[i][3] = {-r.a, -r.b};
   }
   const LinearSolution sol = solve3(ls, m);
@@ -528,7 +528,7 @@ bool hard_case(const Pair& pr, Certificate& c) {
   const QuadraticReal ex = e_at(ls, pr.E, x);
   c.kind = Certificate::Kind::HardTangent;
   c.d = ls.d;
-  c.lambda_q = {ls.value.a, ls.value.b};
+  c.lambda_q = {ls.value().a, ls.value().b};
   for (int i = 0; i < 3; ++i) c.centre[i] = {x[i].a, x[i].b};
   c.directions.clear();
   for (const auto& v : w) c.directions.push_back({QuadraticNumber{v[0].a, v[0].b}, {v[1].a, v[1].b}, {v[2].a, v[2].b}});
@@ -727,7 +727,7 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
     // rational approximation.
     const double ls = std::isfinite(lambda_s.hi) && lambda_s.hi - lambda_s.lo <= 0x1p-40 * std::fabs(lambda_s.hi)
                           ? lambda_s.hi
-                          : CGAL::to_double(approximate(lambda_s, lambda_s.value, 64, true));
+                          : CGAL::to_double(approximate(lambda_s, lambda_s.value(), 64, true));
     if (std::isfinite(ls) && ls < 0) {
       // approach lambda_s from 0: the first lambda with e(x(lambda)) > 0
       for (double l = ls / 2, step = ls / 4; l > ls && l < 0; l += step, step /= 2) {
@@ -941,7 +941,7 @@ void min_side_point(const Pair& pr, const Secular& sec, std::optional<V3>& found
 /// A rational in (lambda_s, 0) within about 2^-bits of lambda_s (relative to lambda_s, or to the
 /// irrational part's coefficient); nullopt while the approximation is too coarse.
 std::optional<Rational> above_lambda_s(const LambdaS& ls, unsigned bits) {
-  Rational l = approximate(ls, ls.value, bits, true);
+  Rational l = approximate(ls, ls.value(), bits, true);
   if (ls.rational()) {
     Rational step = l < 0 ? -l : l;
     mpq_div_2exp(step.mpq(), step.mpq(), bits);

@@ -539,11 +539,9 @@ Verdict run_stages(const Ellipsoid& e, const Paraboloid& p, bool use_filter, std
 /// The double nearest q (ties to even; CGAL's to_double of a Gmpq truncates): rounded once to 53
 /// bits by MPFR, which is the double itself unless it is subnormal, then rounded from 40 digits.
 double nearest_double(const Rational& q) {
-  mpfr_t x;
-  mpfr_init2(x, 53);
+  MPFR_DECL_INIT(x, 53);  // on the stack: no allocation, nothing to clear
   mpfr_set_q(x, q.mpq(), MPFR_RNDN);
   const double d = mpfr_get_d(x, MPFR_RNDN);
-  mpfr_clear(x);
   if (d == 0 || std::fabs(d) < DBL_MIN || !std::isfinite(d)) return std::strtod(to_decimal(q, 40).c_str(), nullptr);
   return d;
 }
@@ -596,18 +594,12 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
   for (std::size_t i = 0; i < 3; ++i) times(h[i], pa[i], pb[3 - i], si[i]);
 }
 
-/// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
-/// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square. lambda_s is
-/// computed once here, for rho and for the certificate, from h: with mu = lambda le / lp,
-/// s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales),
-/// rational iff Disc(h) is a square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2). A rational rho comes from the
-/// reduced f, s and lambda_s; an irrational one only as a double, from the reduced f and s.
-void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
-                        const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp, const Integer& le,
-                        Classification& out, anysize::LambdaS& ls) {
-  out.has_full_evidence = true;
-  out.degree_ftilde = rs.degree_ftilde;
-  out.roots = std::move(rs.real_roots);
+/// lambda_s, the root of s nearest 0, computed once for rho and for the certificate, from h: with
+/// mu = lambda le / lp, s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along
+/// the split scales), rational iff Disc(h) is a square R^2, and then
+/// lambda_s = (lp / le) (R - h1) / (2 h2). `s` is the reduced s.
+anysize::LambdaS lambda_s_of_pencil(const Quadratic<PooledInteger>& h, const forms::SplitScale& sp,
+                                    const forms::SplitScale& se, const Quadratic<Rational>& s) {
   PooledInteger disc, t;
   mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
   mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
@@ -620,13 +612,21 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
     mpz_sub(root_minus_h1.mpz(), root_minus_h1.mpz(), h[1].mpz());
     Rational l;  // fresh: written in place
     forms::divided_by_powers(root_minus_h1.mpz(), {{sp, 1}, {se, 2}}, l.mpq());
-    mpq_div(l.mpq(), l.mpq(), out.s[2].mpq());
+    mpq_div(l.mpq(), l.mpq(), s[2].mpq());
     mpq_div_2exp(l.mpq(), l.mpq(), 1);
-    ls = anysize::rational_lambda_s(l);
-  } else {
-    ls = anysize::lambda_s_of(anysize::to_poly(out.s.data(), 3),
-                              forms::divided_by_powers(disc.mpz(), {{sp, 2}, {se, 4}}));
+    return anysize::rational_lambda_s(l);
   }
+  return anysize::lambda_s_of(anysize::to_poly(s.data(), 3), forms::divided_by_powers(disc.mpz(), {{sp, 2}, {se, 4}}));
+}
+
+/// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
+/// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square (lambda_s of
+/// lambda_s_of_pencil). A rational rho comes from the reduced f, s and lambda_s; an irrational one
+/// only as a double, from the reduced f and s.
+void fill_full_evidence(RootStructure&& rs, const anysize::LambdaS& ls, Classification& out) {
+  out.has_full_evidence = true;
+  out.degree_ftilde = rs.degree_ftilde;
+  out.roots = std::move(rs.real_roots);
   // k = (f0 s2) / (f4 s0)
   if (ls.rational()) {
     // rho = (f0 / f4) (s2 / s0) / lambda_s^2 from the reduced coefficients and lambda_s: GMP's
@@ -639,15 +639,14 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
     mpq_div(r, out.s[2].mpq(), out.f[4].mpq());  // f4 = det P, s0 = det M and lambda_s are not 0
     mpq_mul(r, r, out.f[0].mpq());
     mpq_div(r, r, out.s[0].mpq());
-    mpq_mul(r, r, forms::inverse_square(ls.value.a).mpq());
+    mpq_mul(r, r, forms::inverse_square(ls.value().a).mpq());
     out.rho = rho;
     out.rho_approx = nearest_double(*out.rho);
   } else {
     // k only as a double (CGAL::to_double is mpq_get_d: the exact quotient truncated, whatever
     // fraction represents it), so from the unreduced product of the reduced coefficients: no gcd.
-    mpq_t k;
-    mpq_init(k);
-    const mpz_ptr kn = mpq_numref(k), kd = mpq_denref(k);
+    PooledInteger kn_, kd_;
+    const mpz_ptr kn = kn_.mpz(), kd = kd_.mpz();
     mpz_mul(kn, mpq_numref(out.f[0].mpq()), mpq_denref(out.f[4].mpq()));
     mpz_mul(kn, kn, mpq_numref(out.s[2].mpq()));
     mpz_mul(kn, kn, mpq_denref(out.s[0].mpq()));
@@ -658,13 +657,46 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
       mpz_neg(kn, kn);
       mpz_neg(kd, kd);
     }
-    const double k_double = mpq_get_d(k);
-    mpq_clear(k);
+    const __mpq_struct k{*kn, *kd};  // a read-only view of the fraction
+    const double k_double = mpq_get_d(&k);
     const double s2 = forms::truncated_double(out.s[2]), s1 = forms::truncated_double(out.s[1]),
                  s0 = forms::truncated_double(out.s[0]);
     const double u1 = (2 * s0) / (s1 + std::sqrt(s1 * s1 - 4 * s2 * s0));  // stable smaller root
     out.rho_approx = k_double / (u1 * u1);
   }
+}
+
+/// The integer forms of the full evidence, one pair per thread: rewritten (all 16 entries each) by
+/// every classify_impl and read only within that call (by the certificate too), so their integers
+/// are not taken from and given back to the pool 32 times per pair. classify_impl never runs
+/// inside itself.
+struct PooledForms {
+  MatrixOf<PooledInteger> p, e;
+};
+PooledForms& pooled_forms() {
+  thread_local PooledForms forms;
+  return forms;
+}
+
+/// Makes z safe to write in place: a fresh Integer when another handle shares its value (a copy
+/// kept by a callee), else z itself. CGAL's reference count is on Gmpz's private base, which a
+/// C-style cast converts to all the same (C++17 [expr.cast]/4).
+void make_unshared(Integer& z) {
+  if (((const CGAL::Handle_for<CGAL::Gmpz_rep>&)z).is_shared()) z = Integer();  // NOLINT: the private base
+}
+
+/// An Integer 0 without a heap allocation, to be assigned (never written in place): a copy of the
+/// thread's.
+Integer shared_zero() {
+  thread_local const Integer zero;
+  return zero;
+}
+
+/// The split of the scale 1 without a heap allocation: a copy of the thread's (its rest shares the
+/// thread's 1; the integer forms' writers assign a whole split, never its rest in place).
+forms::SplitScale unit_split() {
+  thread_local const forms::SplitScale unit;
+  return unit;
 }
 
 /// A default Classification without a heap allocation per number: a copy of the thread's default
@@ -690,10 +722,13 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // traffic for temporaries): from the doubles when the entries are doubles, without a rational
     // matrix; else from the quadric's exact source, with the scale's split (each scale's rest kept as
     // its denominators' factors: every gcd of the reduction is short).
-    Integer lp, le;                                                         // fresh: written in place
     const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();  // copies: read once
-    MatrixOf<PooledInteger> pp, ep;
-    forms::SplitScale sp, se;
+    // The scales: fresh where an exact source writes them in place; integer_form of doubles assigns
+    // its own, so there a copy of the thread's 0 (no allocation) is what it replaces.
+    Integer lp = pd ? shared_zero() : Integer(), le = ed ? shared_zero() : Integer();
+    MatrixOf<PooledInteger>& pp = pooled_forms().p;  // every entry rewritten below
+    MatrixOf<PooledInteger>& ep = pooled_forms().e;
+    forms::SplitScale sp = unit_split(), se = unit_split();
     if (pd)
       forms::integer_form(*pd, forms::entries(pp), lp);
     else
@@ -704,15 +739,18 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
       forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se});
     const Quartic<PooledInteger> g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
     const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
-    if (pd) sp = forms::split_scale(lp);
-    if (ed) se = forms::split_scale(le);
-    Quartic<Integer> f;
-    Quadratic<Integer> s;
+    if (pd) sp.twos = mpz_scan1(lp.mpz(), 0);  // split_scale(lp): lp is a power of two
+    if (ed) se.twos = mpz_scan1(le.mpz(), 0);
+    // S^4 f and S^3 s: the thread's, written in place (their limbs kept from call to call).
+    thread_local Quartic<Integer> f;
+    thread_local Quadratic<Integer> s;
+    for (Integer& c : f) make_unshared(c);
+    for (Integer& c : s) make_unshared(c);
     reported_polynomials(g, h, sp, se, lp, le, out, f, s);
     // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
     RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
-    anysize::LambdaS ls;
-    fill_full_evidence(std::move(rs), g, h, sp, se, lp, le, out, ls);
+    const anysize::LambdaS ls = lambda_s_of_pencil(h, sp, se, out.s);
+    fill_full_evidence(std::move(rs), ls, out);
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f. The forms
     // with their scales only where it reads them (the points of C, TE and TI, not the multipliers
     // of E and I) and cannot take them from the doubles: copied from the pooled ones on first use.
