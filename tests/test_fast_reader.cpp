@@ -393,3 +393,86 @@ TEST_CASE("fast reader: spheres and paraboloids on the axis over the whole expon
                       R"({"vertex":[0,0,-2.5e-3],"a":0.5,"b":125})", false);
   REQUIRE(fast_ellipsoid(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})", false)->matrix()(3, 3) == 0);
 }
+
+TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path's f, s, lambda_s and rho",
+          "[io][fast]") {
+  // Mantissas made of a few primes, the radius, the centre and vz often multiples of a's or b's
+  // mantissa and a's of b's: the closed forms' reductions then meet the common factors that
+  // rational arithmetic cancels (beyond the powers of 2 and 5), and zeros and w = vz - z = 0 occur.
+  // Compared in lowest terms with rational arithmetic on the general reader's matrices, and the
+  // whole report with the general path's (check_pair_evidence).
+  std::mt19937_64 rng(41);
+  const std::uint64_t primes[] = {2, 3, 5, 7, 11, 13, 9, 343, 1000003};
+  auto mantissa = [&] {
+    std::uint64_t m = 1 + rng() % 9;
+    for (int k = static_cast<int>(rng() % 7); k > 0; --k) {
+      const std::uint64_t p = primes[rng() % 9];
+      if (m > 100000000000000000ULL / p) break;
+      m *= p;
+    }
+    return m;
+  };
+  auto text = [&](std::uint64_t m, bool negative) {
+    const int e = -static_cast<int>(rng() % 12);
+    return (negative ? "-" : "") + std::to_string(m) + "e" + std::to_string(e);
+  };
+  auto same = [](const relpos::Rational& got, const relpos::Rational& want) {  // the same canonical form
+    CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(want.mpq())) == 0);
+    CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(want.mpq())) == 0);
+  };
+  int closed = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    const std::uint64_t ma = mantissa(), mb = trial % 3 == 0 ? ma * (1 + rng() % 12) : mantissa();
+    auto related = [&](bool negative) {  // a multiple of ma or mb, a free mantissa, or zero
+      switch (rng() % 5) {
+        case 0:
+          return text(ma * (1 + rng() % 50), negative);
+        case 1:
+          return text(mb * (1 + rng() % 50), negative);
+        case 2:
+          return std::string("0");
+        default:
+          return text(mantissa(), negative);
+      }
+    };
+    const std::string z = related(rng() % 2 == 0);
+    const std::string r = rng() % 3 == 0 ? text(ma, false) : text(mantissa(), false);
+    const std::string vz = trial % 7 == 0 ? z : related(rng() % 2 == 0);
+    const std::string e_text =
+        "{\"sphere\":{\"center\":" + vec3(related(true), related(false), z) + ",\"radius\":" + r + "}}";
+    const std::string p_text =
+        "{\"vertex\":" + vec3("0", "0", vz) + ",\"a\":" + text(ma, false) + ",\"b\":" + text(mb, false) + "}";
+    INFO(e_text << "  " << p_text);
+    const auto fe = fast_ellipsoid(e_text, false);
+    const auto fp = fast_paraboloid(p_text, false);
+    REQUIRE(fe);
+    REQUIRE(fp);
+    const relpos::detail::ExactSource* se = storage_of(*fe).exact_source();
+    const relpos::detail::ExactSource* sp = storage_of(*fp).exact_source();
+    if (!se || !sp) continue;  // every number an exact double: the doubles' path
+    REQUIRE(se->decimal_shape());
+    REQUIRE(sp->decimal_shape());
+    ++closed;
+    relpos::Quartic<relpos::Rational> f;
+    relpos::Quadratic<relpos::Rational> s;
+    relpos::Rational lambda_s, rho;
+    relpos::forms::sphere_standard_evidence(*se->decimal_shape(), *sp->decimal_shape(), {f, s, lambda_s, rho});
+    const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, false), "ellipsoid");
+    const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, false), "paraboloid");
+    const auto want_f = relpos::characteristic_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
+    const auto want_s = relpos::special_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
+    for (std::size_t k = 0; k < 5; ++k) same(f[k], want_f[k]);
+    for (std::size_t k = 0; k < 3; ++k) same(s[k], want_s[k]);
+    // lambda_s: the root of s nearest 0 (s = (1 + A l)(1 + B l): its discriminant is a square).
+    const relpos::Rational disc = want_s[1] * want_s[1] - 4 * want_s[2] * want_s[0];
+    relpos::Rational root;
+    mpz_sqrt(mpq_numref(root.mpq()), mpq_numref(disc.mpq()));
+    mpz_sqrt(mpq_denref(root.mpq()), mpq_denref(disc.mpq()));
+    REQUIRE(root * root == disc);
+    const relpos::Rational want_lambda_s = (root - want_s[1]) / (2 * want_s[2]);
+    same(lambda_s, want_lambda_s);
+    same(rho, want_f[0] * want_s[2] / (want_f[4] * want_s[0] * want_lambda_s * want_lambda_s));
+    if (trial % 5 == 0) check_pair_evidence(e_text, p_text, false);
+  }
+  CHECK(closed > 450);
+}

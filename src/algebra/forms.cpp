@@ -572,4 +572,199 @@ MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l) {
   return out;
 }
 
+namespace {
+
+/// The scratch integers of sphere_standard_evidence, one set per thread: warm limbs, no malloc.
+struct ClosedScratch {
+  static constexpr std::size_t kCount = 16;
+  mpz_t t[kCount];
+  ClosedScratch() {
+    for (auto& x : t) mpz_init(x);
+  }
+  ~ClosedScratch() {
+    for (auto& x : t) mpz_clear(x);
+  }
+  ClosedScratch(const ClosedScratch&) = delete;
+  ClosedScratch& operator=(const ClosedScratch&) = delete;
+};
+
+/// A standard paraboloid's 1/a^2 = 2^p 5^q / R^2, R the part of a's mantissa prime to 10.
+struct InverseSquare {
+  std::uint64_t rest = 1;
+  long p = 0, q = 0;
+};
+InverseSquare inverse_square_of(const Decimal& a) {
+  InverseSquare out;
+  std::uint64_t m = a.m;  // a > 0: m != 0
+  const int twos = __builtin_ctzll(m);
+  m >>= twos;
+  long fives = 0;
+  for (; m % 5 == 0; m /= 5) ++fives;
+  out.rest = m;
+  out.p = -2L * (a.e + twos);
+  out.q = -2L * (a.e + fives);
+  return out;
+}
+
+/// out = (-1)^neg m 10^(e - low) (e >= low).
+void set_scaled(mpz_ptr out, const Decimal& x, int low) {
+  mpz_set_ui(out, x.m);
+  if (x.m == 0) return;
+  const auto k = static_cast<unsigned long>(x.e - low);
+  times_power_of_five(out, out, k);
+  mpz_mul_2exp(out, out, k);
+  if (x.neg) mpz_neg(out, out);
+}
+
+/// One term c 2^u 5^v of a sum (c may be zero).
+struct Term {
+  mpz_srcptr c;
+  long u, v;
+};
+
+/// sum = sum of c 2^(u - u0) 5^(v - v0) over the terms, u0 and v0 the smallest exponents: the sum is
+/// sum 2^u0 5^v0. `t` is scratch.
+void sum_terms(std::initializer_list<Term> terms, mpz_ptr sum, long& u0, long& v0, mpz_ptr t) {
+  u0 = v0 = 0;
+  bool any = false;
+  for (const Term& x : terms) {
+    if (mpz_sgn(x.c) == 0) continue;
+    u0 = any ? std::min(u0, x.u) : x.u;
+    v0 = any ? std::min(v0, x.v) : x.v;
+    any = true;
+  }
+  mpz_set_ui(sum, 0);
+  for (const Term& x : terms) {
+    if (mpz_sgn(x.c) == 0) continue;
+    times_power_of_five(t, x.c, static_cast<unsigned long>(x.v - v0));
+    mpz_mul_2exp(t, t, static_cast<unsigned long>(x.u - u0));
+    mpz_add(sum, sum, t);
+  }
+}
+
+/// The rests R_a and R_b of a and b, their squares and the product of the squares.
+struct Rests {
+  std::uint64_t a, b;
+  mpz_srcptr a2, b2, both;
+};
+
+/// n 2^e2 5^e5 / (R_a^ja R_b^jb) in lowest terms into `out` (a fresh mpq; n is overwritten).
+/// R_a and R_b are prime to 10; the common factor of n with R_a^ja R_b^jb is found by at most ja
+/// gcds with R_a, then jb with R_b, each taking min(v_p(n), v_p(R)) more of every prime p (as in
+/// divided_by_powers: the caps add up whether R_a and R_b share primes or not).
+void reduce(mpz_ptr n, long e2, long e5, int ja, int jb, const Rests& r, mpz_ptr common, mpq_ptr out) {
+  const mpz_ptr num = mpq_numref(out), den = mpq_denref(out);
+  if (mpz_sgn(n) == 0) {
+    mpq_set_ui(out, 0, 1);
+    return;
+  }
+  const mp_bitcnt_t twos = mpz_scan1(n, 0);
+  mpz_tdiv_q_2exp(n, n, twos);
+  e2 += static_cast<long>(twos);
+  e5 += static_cast<long>(remove_fives(n, ~0UL));
+  mpz_set_ui(common, 1);
+  for (const auto& [base, steps] : {std::make_pair(r.a, ja), std::make_pair(r.b, jb)})
+    for (int i = 0; i < steps; ++i) {
+      const unsigned long c = mpz_gcd_ui(nullptr, n, base);
+      if (c == 1) break;
+      mpz_divexact_ui(n, n, c);
+      mpz_mul_ui(common, common, c);
+    }
+  times_power_of_five(num, n, static_cast<unsigned long>(std::max(0L, e5)));
+  mpz_mul_2exp(num, num, static_cast<unsigned long>(std::max(0L, e2)));
+  set_power_of_five(den, static_cast<unsigned long>(std::max(0L, -e5)));
+  mpz_mul_2exp(den, den, static_cast<unsigned long>(std::max(0L, -e2)));
+  const mpz_srcptr rest = ja && jb ? r.both : ja ? r.a2 : jb ? r.b2 : nullptr;
+  if (!rest) return;
+  if (mpz_cmp_ui(common, 1) != 0) {
+    mpz_divexact(common, rest, common);
+    mpz_mul(den, den, common);
+  } else {
+    mpz_mul(den, den, rest);
+  }
+}
+
+}  // namespace
+
+void sphere_standard_evidence(const DecimalShape& sphere, const DecimalShape& paraboloid, const ClosedEvidence& out) {
+  thread_local ClosedScratch scratch;
+  auto& t = scratch.t;
+  const Decimal &x = sphere.n[0], &y = sphere.n[1], &z = sphere.n[2], &r = sphere.n[3];
+  const Decimal& vz = paraboloid.n[2];
+  // The sphere's numbers and vz as integers over 10^low: X = x 10^-low, ...
+  int low = 0;
+  for (const Decimal* d : {&x, &y, &z, &r, &vz})
+    if (d->m != 0) low = std::min(low, d->e);
+  const mpz_ptr X2 = t[0], Y2 = t[1], R2 = t[2], W = t[3], P1 = t[4], P2 = t[5], Q0 = t[6], sum = t[7], tmp = t[8],
+                common = t[9], a2 = t[10], b2 = t[11], both = t[12], ra_w = t[13], rb_w = t[14];
+  set_scaled(X2, x, low);
+  mpz_mul(X2, X2, X2);
+  set_scaled(Y2, y, low);
+  mpz_mul(Y2, Y2, Y2);
+  set_scaled(R2, r, low);
+  mpz_mul(R2, R2, R2);
+  set_scaled(W, vz, low);  // w = vz - z = W 10^low
+  set_scaled(tmp, z, low);
+  mpz_sub(W, W, tmp);
+  mpz_sub(P1, X2, R2);  // (x^2 - r^2) 10^(-2 low)
+  mpz_sub(P2, Y2, R2);  // (y^2 - r^2) 10^(-2 low)
+  mpz_add(Q0, P1, Y2);  // (x^2 + y^2 - r^2) 10^(-2 low)
+  // A = 2^pa 5^qa / R_a^2, B = 2^pb 5^qb / R_b^2.
+  const InverseSquare A = inverse_square_of(paraboloid.n[0]), B = inverse_square_of(paraboloid.n[1]);
+  mpz_set_ui(a2, A.rest);
+  mpz_mul(a2, a2, a2);
+  mpz_set_ui(b2, B.rest);
+  mpz_mul(b2, b2, b2);
+  mpz_mul(both, a2, b2);
+  const Rests rests{A.rest, B.rest, a2, b2, both};
+  const long l1 = low, l2 = 2L * low, pab = A.p + B.p, qab = A.q + B.q;
+  long u0 = 0, v0 = 0;
+  auto coefficient = [&](std::initializer_list<Term> terms, int ja, int jb, Rational& to) {
+    sum_terms(terms, sum, u0, v0, tmp);
+    reduce(sum, u0, v0, ja, jb, rests, common, to.mpq());
+  };
+  // Over R_a^2 R_b^2 (f1 to f4, s1, s2): A = 2^pa 5^qa R_b^2 / (R_a^2 R_b^2), and so on.
+  mpz_neg(tmp, R2);
+  mpz_set(sum, tmp);
+  reduce(sum, l2, l2, 0, 0, rests, common, out.f[0].mpq());  // -r^2
+  mpz_mul(ra_w, a2, P2);                                     // R_a^2 (y^2 - r^2)
+  mpz_mul(rb_w, b2, P1);                                     // R_b^2 (x^2 - r^2)
+  mpz_mul(P1, both, W);                                      // R_a^2 R_b^2 w
+  coefficient({{rb_w, A.p + l2, A.q + l2}, {ra_w, B.p + l2, B.q + l2}, {P1, l1, l1}}, 2, 2, out.f[1]);
+  mpz_mul(ra_w, a2, W);  // R_a^2 w
+  mpz_mul(rb_w, b2, W);  // R_b^2 w
+  mpz_neg(P2, both);     // -R_a^2 R_b^2
+  coefficient({{Q0, pab + l2, qab + l2}, {rb_w, A.p + l1, A.q + l1}, {ra_w, B.p + l1, B.q + l1}, {P2, -2, 0}}, 2, 2,
+              out.f[2]);
+  mpz_neg(ra_w, a2);
+  mpz_neg(rb_w, b2);
+  coefficient({{W, pab + l1, qab + l1}, {rb_w, A.p - 2, A.q}, {ra_w, B.p - 2, B.q}}, 2, 2, out.f[3]);
+  mpz_set_si(P1, -1);
+  coefficient({{P1, pab - 2, qab}}, 2, 2, out.f[4]);
+  mpq_set_ui(out.s[0].mpq(), 1, 1);
+  coefficient({{b2, A.p, A.q}, {a2, B.p, B.q}}, 2, 2, out.s[1]);
+  mpz_set_ui(P1, 1);
+  coefficient({{P1, pab, qab}}, 2, 2, out.s[2]);
+  // lambda_s = -min(a, b)^2 = -1 / max(A, B): a <= b compared as integers over 10^min(ea, eb).
+  const Decimal &a = paraboloid.n[0], &b = paraboloid.n[1];
+  const int e0 = std::min(a.e, b.e);
+  set_scaled(P1, a, e0);
+  set_scaled(P2, b, e0);
+  const bool a_smaller = mpz_cmp(P1, P2) <= 0;
+  const InverseSquare& m = a_smaller ? A : B;
+  // -R^2 2^-p 5^-q: R is prime to 10, so this is in lowest terms.
+  const mpz_ptr ln = mpq_numref(out.lambda_s.mpq()), ld = mpq_denref(out.lambda_s.mpq());
+  times_power_of_five(ln, a_smaller ? a2 : b2, static_cast<unsigned long>(std::max(0L, -m.q)));
+  mpz_mul_2exp(ln, ln, static_cast<unsigned long>(std::max(0L, -m.p)));
+  mpz_neg(ln, ln);
+  set_power_of_five(ld, static_cast<unsigned long>(std::max(0L, m.q)));
+  mpz_mul_2exp(ld, ld, static_cast<unsigned long>(std::max(0L, m.p)));
+  // rho = (2 r / min(a, b)^2)^2: 2 r 2^p 5^q / R^2 reduced, then squared (coprime parts stay coprime).
+  mpz_set_ui(sum, r.m);
+  reduce(sum, 1L + r.e + m.p, static_cast<long>(r.e) + m.q, a_smaller ? 2 : 0, a_smaller ? 0 : 2, rests, common,
+         out.rho.mpq());
+  mpz_mul(mpq_numref(out.rho.mpq()), mpq_numref(out.rho.mpq()), mpq_numref(out.rho.mpq()));
+  mpz_mul(mpq_denref(out.rho.mpq()), mpq_denref(out.rho.mpq()), mpq_denref(out.rho.mpq()));
+}
+
 }  // namespace relpos::forms

@@ -596,18 +596,49 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
   for (std::size_t i = 0; i < 3; ++i) times(h[i], pa[i], pb[3 - i], si[i]);
 }
 
+/// The numbers of a sphere or standard paraboloid read from decimal text, or nullptr.
+const forms::DecimalShape* decimal_shape_of(const detail::QuadricMatrix& q) {
+  const detail::ExactSource* source = q.exact_source();
+  return source ? source->decimal_shape() : nullptr;
+}
+
+/// S^4 f and S^3 s, S = lcm(lp, le), from the reduced f and s: S^4 f_i = num(f_i) (S^4 / den(f_i)),
+/// the integers reported_polynomials gives from g and h.
+void common_lcm_forms(const Classification& out, const Integer& lp, const Integer& le, Quartic<Integer>& fi,
+                      Quadratic<Integer>& si) {
+  PooledInteger lcm, power, q;
+  mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
+  auto scaled = [&](const Rational& c, Integer& to) {  // `to` a fresh Integer: written in place
+    mpz_divexact(q.mpz(), power.mpz(), mpq_denref(c.mpq()));
+    mpz_mul(to.mpz(), q.mpz(), mpq_numref(c.mpq()));
+  };
+  mpz_pow_ui(power.mpz(), lcm.mpz(), 4);
+  for (std::size_t i = 0; i < 5; ++i) scaled(out.f[i], fi[i]);
+  mpz_pow_ui(power.mpz(), lcm.mpz(), 3);
+  for (std::size_t i = 0; i < 3; ++i) scaled(out.s[i], si[i]);
+}
+
 /// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
 /// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square. lambda_s is
 /// computed once here, for rho and for the certificate, from h: with mu = lambda le / lp,
 /// s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales),
 /// rational iff Disc(h) is a square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2). A rational rho comes from the
 /// reduced f, s and lambda_s; an irrational one only as a double, from the reduced f and s.
-void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
-                        const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp, const Integer& le,
-                        Classification& out, anysize::LambdaS& ls) {
+void take_roots(RootStructure&& rs, Classification& out) {
   out.has_full_evidence = true;
   out.degree_ftilde = rs.degree_ftilde;
   out.roots = std::move(rs.real_roots);
+}
+
+void take_rho(const Rational& rho, Classification& out) {
+  out.rho = rho;
+  out.rho_approx = nearest_double(*out.rho);
+}
+
+void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
+                        const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp, const Integer& le,
+                        Classification& out, anysize::LambdaS& ls) {
+  take_roots(std::move(rs), out);
   PooledInteger disc, t;
   mpz_mul(disc.mpz(), h[1].mpz(), h[1].mpz());
   mpz_mul(t.mpz(), h[2].mpz(), h[0].mpz());
@@ -640,8 +671,7 @@ void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, con
     mpq_mul(r, r, out.f[0].mpq());
     mpq_div(r, r, out.s[0].mpq());
     mpq_mul(r, r, forms::inverse_square(ls.value.a).mpq());
-    out.rho = rho;
-    out.rho_approx = nearest_double(*out.rho);
+    take_rho(rho, out);
   } else {
     // k only as a double (CGAL::to_double is mpq_get_d: the exact quotient truncated, whatever
     // fraction represents it), so from the unreduced product of the reduced coefficients: no gcd.
@@ -702,17 +732,30 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
       forms::integer_form(*ed, forms::entries(ep), le);
     else
       forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se});
-    const Quartic<PooledInteger> g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
-    const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
-    if (pd) sp = forms::split_scale(lp);
-    if (ed) se = forms::split_scale(le);
     Quartic<Integer> f;
     Quadratic<Integer> s;
-    reported_polynomials(g, h, sp, se, lp, le, out, f, s);
-    // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
-    RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
     anysize::LambdaS ls;
-    fill_full_evidence(std::move(rs), g, h, sp, se, lp, le, out, ls);
+    const forms::DecimalShape* es = ed ? nullptr : decimal_shape_of(storage_of(e));
+    const forms::DecimalShape* ps = pd ? nullptr : decimal_shape_of(storage_of(p));
+    if (es && ps && es->sphere && !ps->sphere) {
+      // A sphere and a standard paraboloid read from decimal text: f, s, lambda_s and rho from
+      // their closed forms, on short integers; S^4 f and S^3 s from them.
+      Rational lambda_s, rho;  // fresh: written in place
+      forms::sphere_standard_evidence(*es, *ps, {out.f, out.s, lambda_s, rho});
+      common_lcm_forms(out, lp, le, f, s);
+      take_roots(exact_root_structure(f, s, v.sign_disc_f), out);
+      ls = anysize::rational_lambda_s(lambda_s);
+      take_rho(rho, out);
+    } else {
+      const Quartic<PooledInteger> g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
+      const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
+      if (pd) sp = forms::split_scale(lp);
+      if (ed) se = forms::split_scale(le);
+      reported_polynomials(g, h, sp, se, lp, le, out, f, s);
+      // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
+      RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
+      fill_full_evidence(std::move(rs), g, h, sp, se, lp, le, out, ls);
+    }
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f. The forms
     // with their scales only where it reads them (the points of C, TE and TI, not the multipliers
     // of E and I) and cannot take them from the doubles: copied from the pooled ones on first use.

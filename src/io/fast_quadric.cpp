@@ -527,7 +527,17 @@ Matrix4 symmetric(const std::array<Rational, 10>& u) {
 /// (tests/test_fast_reader.cpp).
 class NumberSource final : public relpos::detail::ExactSource {
  public:
-  NumberSource(const Recipe& recipe, bool doubles) : recipe_(recipe), doubles_(doubles) {}
+  NumberSource(const Recipe& recipe, bool doubles) : recipe_(recipe), doubles_(doubles) {
+    const auto& n = recipe.n;
+    const bool standard = recipe.form == Recipe::Form::Standard && n[0].m == 0 && n[1].m == 0;
+    if (doubles || !(recipe.form == Recipe::Form::Sphere || standard)) return;
+    shape_.sphere = !standard;
+    const std::array<std::size_t, 4> from =
+        standard ? std::array<std::size_t, 4>{3, 4, 2, 2} : std::array<std::size_t, 4>{0, 1, 2, 3};
+    for (std::size_t i = 0; i < 4; ++i) shape_.n[i] = {n[from[i]].m, n[from[i]].e, n[from[i]].neg};
+    has_shape_ = true;
+  }
+  const forms::DecimalShape* decimal_shape() const override { return has_shape_ ? &shape_ : nullptr; }
   Matrix4 build() const override {
     const auto& n = recipe_.n;
     // The exact value of n[k], negated when `minus`.
@@ -601,6 +611,8 @@ class NumberSource final : public relpos::detail::ExactSource {
  private:
   Recipe recipe_;
   bool doubles_;
+  bool has_shape_ = false;
+  forms::DecimalShape shape_;
 };
 
 /// The storage of a certified quadric: its doubles when every enclosure is a point (the exact
