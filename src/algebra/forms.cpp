@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <numeric>
 
 namespace relpos::forms {
 namespace {
@@ -576,7 +577,7 @@ namespace {
 
 /// The scratch integers of sphere_standard_evidence, one set per thread: warm limbs, no malloc.
 struct ClosedScratch {
-  static constexpr std::size_t kCount = 16;
+  static constexpr std::size_t kCount = 23;
   mpz_t t[kCount];
   ClosedScratch() {
     for (auto& x : t) mpz_init(x);
@@ -648,39 +649,80 @@ struct Rests {
   mpz_srcptr a2, b2, both;
 };
 
-/// n 2^e2 5^e5 / (R_a^ja R_b^jb) in lowest terms into `out` (a fresh mpq; n is overwritten).
-/// R_a and R_b are prime to 10; the common factor of n with R_a^ja R_b^jb is found by at most ja
-/// gcds with R_a, then jb with R_b, each taking min(v_p(n), v_p(R)) more of every prime p (as in
-/// divided_by_powers: the caps add up whether R_a and R_b share primes or not).
-void reduce(mpz_ptr n, long e2, long e5, int ja, int jb, const Rests& r, mpz_ptr common, mpq_ptr out) {
-  const mpz_ptr num = mpq_numref(out), den = mpq_denref(out);
-  if (mpz_sgn(n) == 0) {
-    mpq_set_ui(out, 0, 1);
-    return;
+/// A coefficient n 2^e2 5^e5 / (R_a^ja R_b^jb) on its way to lowest terms (R_a, R_b prime to 10;
+/// ja, jb in {0, 2}), written into `out` (a fresh mpq) by reduce_all.
+struct Pending {
+  mpz_ptr n;  // its own integer: overwritten
+  long e2 = 0, e5 = 0;
+  int ja = 2, jb = 2;
+  mpq_ptr out = nullptr;
+};
+
+/// The pending coefficients in lowest terms. Their factors 2 and 5 go into the exponents; the common
+/// factor of n with R_a^ja R_b^jb is found by at most ja gcds with R_a, then jb with R_b, each
+/// taking min(v_p(n), v_p(R)) more of every prime p (as in divided_by_powers: the caps add up
+/// whether R_a and R_b share primes or not). Those gcds are taken only where one can be more than
+/// 1: for each R, g = gcd(prod (n mod R), R) over the coefficients with R in their denominator is
+/// one word gcd; gcd(n, R) divides g, so g = 1 clears every n, and else gcd(n mod R, g) = 1 clears
+/// that n (the residues are taken before any division by a factor of R_a: a divisor of a number
+/// prime to R_b is prime to R_b).
+void reduce_all(Pending* p, std::size_t count, const Rests& r, mpz_ptr common) {
+  constexpr std::size_t kMost = 8;
+  bool check[kMost][2] = {};
+  for (std::size_t i = 0; i < count; ++i) {
+    if (mpz_sgn(p[i].n) == 0) continue;
+    const mp_bitcnt_t twos = mpz_scan1(p[i].n, 0);
+    mpz_tdiv_q_2exp(p[i].n, p[i].n, twos);
+    p[i].e2 += static_cast<long>(twos);
+    p[i].e5 += static_cast<long>(remove_fives(p[i].n, ~0UL));
   }
-  const mp_bitcnt_t twos = mpz_scan1(n, 0);
-  mpz_tdiv_q_2exp(n, n, twos);
-  e2 += static_cast<long>(twos);
-  e5 += static_cast<long>(remove_fives(n, ~0UL));
-  mpz_set_ui(common, 1);
-  for (const auto& [base, steps] : {std::make_pair(r.a, ja), std::make_pair(r.b, jb)})
-    for (int i = 0; i < steps; ++i) {
-      const unsigned long c = mpz_gcd_ui(nullptr, n, base);
-      if (c == 1) break;
-      mpz_divexact_ui(n, n, c);
-      mpz_mul_ui(common, common, c);
+  for (int side = 0; side < 2; ++side) {
+    const std::uint64_t base = side ? r.b : r.a;
+    if (base == 1) continue;
+    std::uint64_t residue[kMost] = {};
+    __extension__ unsigned __int128 product = 1;  // residues below 2^64: no overflow
+    auto takes = [&](const Pending& x) {
+      return mpz_sgn(x.n) != 0 && mpz_cmpabs_ui(x.n, 1) != 0 && (side ? x.jb : x.ja) > 0;
+    };
+    for (std::size_t i = 0; i < count; ++i)
+      if (takes(p[i])) {
+        residue[i] = mpz_fdiv_ui(p[i].n, base);
+        product = product * residue[i] % base;
+      }
+    const std::uint64_t g = std::gcd(static_cast<std::uint64_t>(product), base);
+    if (g == 1) continue;
+    for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && std::gcd(residue[i], g) > 1;
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const Pending& x = p[i];
+    const mpz_ptr num = mpq_numref(x.out), den = mpq_denref(x.out);
+    if (mpz_sgn(x.n) == 0) {
+      mpq_set_ui(x.out, 0, 1);
+      continue;
     }
-  times_power_of_five(num, n, static_cast<unsigned long>(std::max(0L, e5)));
-  mpz_mul_2exp(num, num, static_cast<unsigned long>(std::max(0L, e2)));
-  set_power_of_five(den, static_cast<unsigned long>(std::max(0L, -e5)));
-  mpz_mul_2exp(den, den, static_cast<unsigned long>(std::max(0L, -e2)));
-  const mpz_srcptr rest = ja && jb ? r.both : ja ? r.a2 : jb ? r.b2 : nullptr;
-  if (!rest) return;
-  if (mpz_cmp_ui(common, 1) != 0) {
-    mpz_divexact(common, rest, common);
-    mpz_mul(den, den, common);
-  } else {
-    mpz_mul(den, den, rest);
+    mpz_set_ui(common, 1);
+    for (int side = 0; side < 2; ++side) {
+      if (!check[i][side]) continue;
+      const std::uint64_t base = side ? r.b : r.a;
+      for (int step = 0; step < (side ? x.jb : x.ja); ++step) {
+        const unsigned long c = mpz_gcd_ui(nullptr, x.n, base);
+        if (c == 1) break;
+        mpz_divexact_ui(x.n, x.n, c);
+        mpz_mul_ui(common, common, c);
+      }
+    }
+    times_power_of_five(num, x.n, static_cast<unsigned long>(std::max(0L, x.e5)));
+    mpz_mul_2exp(num, num, static_cast<unsigned long>(std::max(0L, x.e2)));
+    set_power_of_five(den, static_cast<unsigned long>(std::max(0L, -x.e5)));
+    mpz_mul_2exp(den, den, static_cast<unsigned long>(std::max(0L, -x.e2)));
+    const mpz_srcptr rest = x.ja && x.jb ? r.both : x.ja ? r.a2 : x.jb ? r.b2 : nullptr;
+    if (!rest) continue;
+    if (mpz_cmp_ui(common, 1) != 0) {
+      mpz_divexact(common, rest, common);
+      mpz_mul(den, den, common);
+    } else {
+      mpz_mul(den, den, rest);
+    }
   }
 }
 
@@ -718,33 +760,35 @@ void sphere_standard_evidence(const DecimalShape& sphere, const DecimalShape& pa
   mpz_mul(both, a2, b2);
   const Rests rests{A.rest, B.rest, a2, b2, both};
   const long l1 = low, l2 = 2L * low, pab = A.p + B.p, qab = A.q + B.q;
-  long u0 = 0, v0 = 0;
-  auto coefficient = [&](std::initializer_list<Term> terms, int ja, int jb, Rational& to) {
-    sum_terms(terms, sum, u0, v0, tmp);
-    reduce(sum, u0, v0, ja, jb, rests, common, to.mpq());
+  // The coefficients' numerators over 2^u 5^v R_a^2 R_b^2 (f1 to f4, s1, s2; A = 2^pa 5^qa R_b^2 /
+  // (R_a^2 R_b^2), and so on) or 2^u 5^v (f0 = -r^2), each into its own integer.
+  Pending pending[8];
+  const mpz_ptr f0 = t[15], f1 = t[16], f2 = t[17], f3 = t[18], f4 = t[19], s1 = t[20], s2 = t[21], rho = t[22];
+  auto coefficient = [&](std::size_t k, mpz_ptr n, std::initializer_list<Term> terms, mpq_ptr to) {
+    sum_terms(terms, n, pending[k].e2, pending[k].e5, tmp);
+    pending[k].n = n;
+    pending[k].out = to;
   };
-  // Over R_a^2 R_b^2 (f1 to f4, s1, s2): A = 2^pa 5^qa R_b^2 / (R_a^2 R_b^2), and so on.
-  mpz_neg(tmp, R2);
-  mpz_set(sum, tmp);
-  reduce(sum, l2, l2, 0, 0, rests, common, out.f[0].mpq());  // -r^2
-  mpz_mul(ra_w, a2, P2);                                     // R_a^2 (y^2 - r^2)
-  mpz_mul(rb_w, b2, P1);                                     // R_b^2 (x^2 - r^2)
-  mpz_mul(P1, both, W);                                      // R_a^2 R_b^2 w
-  coefficient({{rb_w, A.p + l2, A.q + l2}, {ra_w, B.p + l2, B.q + l2}, {P1, l1, l1}}, 2, 2, out.f[1]);
+  mpz_neg(f0, R2);
+  pending[0] = {f0, l2, l2, 0, 0, out.f[0].mpq()};
+  mpz_mul(ra_w, a2, P2);  // R_a^2 (y^2 - r^2)
+  mpz_mul(rb_w, b2, P1);  // R_b^2 (x^2 - r^2)
+  mpz_mul(sum, both, W);  // R_a^2 R_b^2 w
+  coefficient(1, f1, {{rb_w, A.p + l2, A.q + l2}, {ra_w, B.p + l2, B.q + l2}, {sum, l1, l1}}, out.f[1].mpq());
   mpz_mul(ra_w, a2, W);  // R_a^2 w
   mpz_mul(rb_w, b2, W);  // R_b^2 w
-  mpz_neg(P2, both);     // -R_a^2 R_b^2
-  coefficient({{Q0, pab + l2, qab + l2}, {rb_w, A.p + l1, A.q + l1}, {ra_w, B.p + l1, B.q + l1}, {P2, -2, 0}}, 2, 2,
-              out.f[2]);
+  mpz_neg(sum, both);    // -R_a^2 R_b^2
+  coefficient(2, f2, {{Q0, pab + l2, qab + l2}, {rb_w, A.p + l1, A.q + l1}, {ra_w, B.p + l1, B.q + l1}, {sum, -2, 0}},
+              out.f[2].mpq());
   mpz_neg(ra_w, a2);
   mpz_neg(rb_w, b2);
-  coefficient({{W, pab + l1, qab + l1}, {rb_w, A.p - 2, A.q}, {ra_w, B.p - 2, B.q}}, 2, 2, out.f[3]);
-  mpz_set_si(P1, -1);
-  coefficient({{P1, pab - 2, qab}}, 2, 2, out.f[4]);
+  coefficient(3, f3, {{W, pab + l1, qab + l1}, {rb_w, A.p - 2, A.q}, {ra_w, B.p - 2, B.q}}, out.f[3].mpq());
+  mpz_set_si(sum, -1);
+  coefficient(4, f4, {{sum, pab - 2, qab}}, out.f[4].mpq());
   mpq_set_ui(out.s[0].mpq(), 1, 1);
-  coefficient({{b2, A.p, A.q}, {a2, B.p, B.q}}, 2, 2, out.s[1]);
-  mpz_set_ui(P1, 1);
-  coefficient({{P1, pab, qab}}, 2, 2, out.s[2]);
+  coefficient(5, s1, {{b2, A.p, A.q}, {a2, B.p, B.q}}, out.s[1].mpq());
+  mpz_set_ui(sum, 1);
+  coefficient(6, s2, {{sum, pab, qab}}, out.s[2].mpq());
   // lambda_s = -min(a, b)^2 = -1 / max(A, B): a <= b compared as integers over 10^min(ea, eb).
   const Decimal &a = paraboloid.n[0], &b = paraboloid.n[1];
   const int e0 = std::min(a.e, b.e);
@@ -760,9 +804,9 @@ void sphere_standard_evidence(const DecimalShape& sphere, const DecimalShape& pa
   set_power_of_five(ld, static_cast<unsigned long>(std::max(0L, m.q)));
   mpz_mul_2exp(ld, ld, static_cast<unsigned long>(std::max(0L, m.p)));
   // rho = (2 r / min(a, b)^2)^2: 2 r 2^p 5^q / R^2 reduced, then squared (coprime parts stay coprime).
-  mpz_set_ui(sum, r.m);
-  reduce(sum, 1L + r.e + m.p, static_cast<long>(r.e) + m.q, a_smaller ? 2 : 0, a_smaller ? 0 : 2, rests, common,
-         out.rho.mpq());
+  mpz_set_ui(rho, r.m);
+  pending[7] = {rho, 1L + r.e + m.p, static_cast<long>(r.e) + m.q, a_smaller ? 2 : 0, a_smaller ? 0 : 2, out.rho.mpq()};
+  reduce_all(pending, 8, rests, common);
   mpz_mul(mpq_numref(out.rho.mpq()), mpq_numref(out.rho.mpq()), mpq_numref(out.rho.mpq()));
   mpz_mul(mpq_denref(out.rho.mpq()), mpq_denref(out.rho.mpq()), mpq_denref(out.rho.mpq()));
 }

@@ -190,6 +190,9 @@ struct IntegerFormOut {
   std::array<mpz_ptr, 16> form;
   Integer& l;
   SplitScale& split;
+  /// False when the caller reads only the split's twos, fives and rest: a source may then leave
+  /// rest_power and factors empty.
+  bool factors = true;
 };
 
 /// integer_form(q.matrix(), l) and split_scale(l, q.matrix()): written by q's exact source from the

@@ -603,11 +603,18 @@ const forms::DecimalShape* decimal_shape_of(const detail::QuadricMatrix& q) {
 }
 
 /// S^4 f and S^3 s, S = lcm(lp, le), from the reduced f and s: S^4 f_i = num(f_i) (S^4 / den(f_i)),
-/// the integers reported_polynomials gives from g and h.
-void common_lcm_forms(const Classification& out, const Integer& lp, const Integer& le, Quartic<Integer>& fi,
-                      Quadratic<Integer>& si) {
+/// the integers reported_polynomials gives from g and h. S = 2^max 5^max lcm(rest_p, rest_e) from
+/// the splits, without a gcd when a rest is 1 (a sphere's scale has no other prime).
+void common_lcm_forms(const Classification& out, const forms::SplitScale& sp, const forms::SplitScale& se,
+                      const Integer& lp, const Integer& le, Quartic<Integer>& fi, Quadratic<Integer>& si) {
   PooledInteger lcm, power, q;
-  mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
+  if (mpz_cmp_ui(se.rest.mpz(), 1) == 0 || mpz_cmp_ui(sp.rest.mpz(), 1) == 0) {
+    forms::set_power_of_five(lcm.mpz(), std::max(sp.fives, se.fives));
+    mpz_mul_2exp(lcm.mpz(), lcm.mpz(), std::max(sp.twos, se.twos));
+    mpz_mul(lcm.mpz(), lcm.mpz(), (mpz_cmp_ui(se.rest.mpz(), 1) == 0 ? sp : se).rest.mpz());
+  } else {
+    mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
+  }
   auto scaled = [&](const Rational& c, Integer& to) {  // `to` a fresh Integer: written in place
     mpz_divexact(q.mpz(), power.mpz(), mpq_denref(c.mpq()));
     mpz_mul(to.mpz(), q.mpz(), mpq_numref(c.mpq()));
@@ -724,25 +731,26 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();  // copies: read once
     MatrixOf<PooledInteger> pp, ep;
     forms::SplitScale sp, se;
+    // A sphere and a standard paraboloid read from decimal text: f, s, lambda_s and rho from their
+    // closed forms, on short integers (the splits then need no factors).
+    const forms::DecimalShape* es = ed ? nullptr : decimal_shape_of(storage_of(e));
+    const forms::DecimalShape* ps = pd ? nullptr : decimal_shape_of(storage_of(p));
+    const bool closed = es && ps && es->sphere && !ps->sphere;
     if (pd)
       forms::integer_form(*pd, forms::entries(pp), lp);
     else
-      forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp});
+      forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp, !closed});
     if (ed)
       forms::integer_form(*ed, forms::entries(ep), le);
     else
-      forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se});
+      forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se, !closed});
     Quartic<Integer> f;
     Quadratic<Integer> s;
     anysize::LambdaS ls;
-    const forms::DecimalShape* es = ed ? nullptr : decimal_shape_of(storage_of(e));
-    const forms::DecimalShape* ps = pd ? nullptr : decimal_shape_of(storage_of(p));
-    if (es && ps && es->sphere && !ps->sphere) {
-      // A sphere and a standard paraboloid read from decimal text: f, s, lambda_s and rho from
-      // their closed forms, on short integers; S^4 f and S^3 s from them.
+    if (closed) {
       Rational lambda_s, rho;  // fresh: written in place
       forms::sphere_standard_evidence(*es, *ps, {out.f, out.s, lambda_s, rho});
-      common_lcm_forms(out, lp, le, f, s);
+      common_lcm_forms(out, sp, se, lp, le, f, s);
       take_roots(exact_root_structure(f, s, v.sign_disc_f), out);
       ls = anysize::rational_lambda_s(lambda_s);
       take_rho(rho, out);

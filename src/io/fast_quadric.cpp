@@ -490,6 +490,12 @@ class DecimalForm {
     forms::set_power_of_five(l, static_cast<unsigned long>(u5));
     mpz_mul_2exp(l, l, static_cast<unsigned long>(u2));
     mpz_mul(l, l, rest.mpz());
+    if (!out.factors) {
+      out.split.twos = static_cast<unsigned long>(u2);
+      out.split.fives = static_cast<unsigned long>(u5);
+      out.split.rest = rest;
+      return;
+    }
     std::vector<forms::SplitScale::Factor> rests;
     for (std::size_t r = 1; r < 3; ++r)
       if (rest_[r] > 1 && (r == 1 || rest_[2] != rest_[1])) rests.push_back({Integer(rest_[r]), 2});
