@@ -475,4 +475,20 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     if (trial % 5 == 0) check_pair_evidence(e_text, p_text, false);
   }
   CHECK(closed > 450);
+  // Other forms keep the general path: a vertex off the axis, a matrix, --numbers double.
+  for (const auto& [body, doubles] : {std::make_pair(R"({"vertex":[0.1,0,0],"a":1.3,"b":0.7})", false),
+                                      std::make_pair(R"({"vertex":[0,0,0.1],"a":1.3,"b":0.7})", true)}) {
+    const auto q = fast_paraboloid(body, doubles);
+    REQUIRE(q);
+    const relpos::detail::ExactSource* source = storage_of(*q).exact_source();
+    CHECK((!source || !source->decimal_shape()));
+  }
+  const auto m = fast_ellipsoid("[[1,0,0,0.1],[0,1,0,0],[0,0,1,0],[0.1,0,0,-0.3]]", false);
+  REQUIRE(m);
+  REQUIRE(storage_of(*m).exact_source());
+  CHECK_FALSE(storage_of(*m).exact_source()->decimal_shape());
+  const auto sphere = fast_ellipsoid(R"({"sphere":{"center":[0.1,0,0],"radius":0.3}})", false);
+  REQUIRE(sphere);
+  REQUIRE(storage_of(*sphere).exact_source());
+  CHECK(storage_of(*sphere).exact_source()->decimal_shape());
 }
