@@ -691,7 +691,7 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, mpz_ptr common) {
       }
     const std::uint64_t g = std::gcd(static_cast<std::uint64_t>(product), base);
     if (g == 1) continue;
-    for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && std::gcd(residue[i], g) > 1;
+    for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && std::gcd(residue[i] % g, g) > 1;
   }
   for (std::size_t i = 0; i < count; ++i) {
     const Pending& x = p[i];
