@@ -456,13 +456,27 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     relpos::Quartic<relpos::Rational> f;
     relpos::Quadratic<relpos::Rational> s;
     relpos::Rational lambda_s, rho;
-    relpos::forms::sphere_standard_evidence(*se->decimal_shape(), *sp->decimal_shape(), {f, s, lambda_s, rho});
+    // S = lcm(lp, le) of the integer forms, its exponents of 2 and 5 from their splits.
+    relpos::Integer lp, le, lcm;
+    relpos::forms::SplitScale p_split, e_split;
+    relpos::forms::MatrixOf<relpos::Integer> pm, em;
+    relpos::forms::integer_form_of(storage_of(*fp), {relpos::forms::entries(pm), lp, p_split});
+    relpos::forms::integer_form_of(storage_of(*fe), {relpos::forms::entries(em), le, e_split});
+    mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
+    relpos::Quartic<relpos::Integer> f_multiple;
+    relpos::Quadratic<relpos::Integer> s_multiple;
+    relpos::forms::sphere_standard_evidence(*se->decimal_shape(), *sp->decimal_shape(),
+                                            {f, s, lambda_s, rho, std::max(p_split.twos, e_split.twos),
+                                             std::max(p_split.fives, e_split.fives), f_multiple, s_multiple});
     const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, false), "ellipsoid");
     const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, false), "paraboloid");
     const auto want_f = relpos::characteristic_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
     const auto want_s = relpos::special_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
     for (std::size_t k = 0; k < 5; ++k) same(f[k], want_f[k]);
     for (std::size_t k = 0; k < 3; ++k) same(s[k], want_s[k]);
+    const relpos::Rational cube = relpos::Rational(lcm * lcm * lcm), fourth = cube * relpos::Rational(lcm);
+    for (std::size_t k = 0; k < 5; ++k) CHECK(relpos::Rational(f_multiple[k]) == fourth * want_f[k]);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(relpos::Rational(s_multiple[k]) == cube * want_s[k]);
     // lambda_s: the root of s nearest 0 (s = (1 + A l)(1 + B l): its discriminant is a square).
     const relpos::Rational disc = want_s[1] * want_s[1] - 4 * want_s[2] * want_s[0];
     relpos::Rational root;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <numeric>
+#include <stdexcept>
 
 namespace relpos::forms {
 namespace {
@@ -577,7 +578,7 @@ namespace {
 
 /// The scratch integers of sphere_standard_evidence, one set per thread: warm limbs, no malloc.
 struct ClosedScratch {
-  static constexpr std::size_t kCount = 23;
+  static constexpr std::size_t kCount = 28;
   mpz_t t[kCount];
   ClosedScratch() {
     for (auto& x : t) mpz_init(x);
@@ -649,6 +650,13 @@ struct Rests {
   mpz_srcptr a2, b2, both;
 };
 
+/// Where reduce_all writes S^k times a coefficient: S = 2^twos 5^fives rest, and
+/// q[k] = S's rest^k / (R_a^2 R_b^2) for k = 3, 4 (q[0] = rest^4, for a coefficient without R).
+struct Multiples {
+  unsigned long twos, fives;
+  mpz_srcptr q[5];
+};
+
 /// A coefficient n 2^e2 5^e5 / (R_a^ja R_b^jb) on its way to lowest terms (R_a, R_b prime to 10;
 /// ja, jb in {0, 2}), written into `out` (a fresh mpq) by reduce_all.
 struct Pending {
@@ -656,6 +664,8 @@ struct Pending {
   long e2 = 0, e5 = 0;
   int ja = 2, jb = 2;
   mpq_ptr out = nullptr;
+  mpz_ptr multiple = nullptr;  // S^k times the coefficient, or nullptr
+  unsigned long k = 4;
 };
 
 /// The pending coefficients in lowest terms. Their factors 2 and 5 go into the exponents; the common
@@ -666,7 +676,7 @@ struct Pending {
 /// one word gcd; gcd(n, R) divides g, so g = 1 clears every n, and else gcd(n mod R, g) = 1 clears
 /// that n (the residues are taken before any division by a factor of R_a: a divisor of a number
 /// prime to R_b is prime to R_b).
-void reduce_all(Pending* p, std::size_t count, const Rests& r, mpz_ptr common) {
+void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& m, mpz_ptr common) {
   constexpr std::size_t kMost = 8;
   bool check[kMost][2] = {};
   for (std::size_t i = 0; i < count; ++i) {
@@ -698,7 +708,16 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, mpz_ptr common) {
     const mpz_ptr num = mpq_numref(x.out), den = mpq_denref(x.out);
     if (mpz_sgn(x.n) == 0) {
       mpq_set_ui(x.out, 0, 1);
+      if (x.multiple) mpz_set_ui(x.multiple, 0);
       continue;
+    }
+    if (x.multiple) {
+      // S^k n 2^e2 5^e5 / (R_a^ja R_b^jb), n prime to 10: an integer, so both exponents are >= 0.
+      const long twos = static_cast<long>(x.k * m.twos) + x.e2, fives = static_cast<long>(x.k * m.fives) + x.e5;
+      if (twos < 0 || fives < 0 || (x.ja != x.jb)) throw std::logic_error("sphere_standard_evidence: not a multiple");
+      mpz_mul(x.multiple, x.n, m.q[x.ja ? x.k : 0]);
+      times_power_of_five(x.multiple, x.multiple, static_cast<unsigned long>(fives));
+      mpz_mul_2exp(x.multiple, x.multiple, static_cast<unsigned long>(twos));
     }
     mpz_set_ui(common, 1);
     for (int side = 0; side < 2; ++side) {
@@ -770,7 +789,7 @@ void sphere_standard_evidence(const DecimalShape& sphere, const DecimalShape& pa
     pending[k].out = to;
   };
   mpz_neg(f0, R2);
-  pending[0] = {f0, l2, l2, 0, 0, out.f[0].mpq()};
+  pending[0] = {f0, l2, l2, 0, 0, out.f[0].mpq(), nullptr, 4};
   mpz_mul(ra_w, a2, P2);  // R_a^2 (y^2 - r^2)
   mpz_mul(rb_w, b2, P1);  // R_b^2 (x^2 - r^2)
   mpz_mul(sum, both, W);  // R_a^2 R_b^2 w
@@ -806,7 +825,29 @@ void sphere_standard_evidence(const DecimalShape& sphere, const DecimalShape& pa
   // rho = (2 r / min(a, b)^2)^2: 2 r 2^p 5^q / R^2 reduced, then squared (coprime parts stay coprime).
   mpz_set_ui(rho, r.m);
   pending[7] = {rho, 1L + r.e + m.p, static_cast<long>(r.e) + m.q, a_smaller ? 2 : 0, a_smaller ? 0 : 2, out.rho.mpq()};
-  reduce_all(pending, 8, rests, common);
+  // S^4 f and S^3 s: S's rest is lcm(R_a^2, R_b^2) = (R_a R_b / g)^2; q[k] = rest^(k-1) / g^2.
+  const std::uint64_t g = std::gcd(A.rest, B.rest);
+  const mpz_ptr rest = t[23], q3 = t[24], q4 = t[25], rest4 = t[26];
+  mpz_set_ui(rest, A.rest / g);
+  mpz_mul_ui(rest, rest, B.rest);
+  mpz_mul(rest, rest, rest);
+  mpz_mul(q3, rest, rest);  // rest^2
+  mpz_mul(q4, q3, rest);    // rest^3
+  mpz_mul(rest4, q4, rest);
+  const mpz_ptr s0 = out.s_multiple[0].mpz();  // S^3 s0 = S^3
+  times_power_of_five(s0, q4, 3 * out.s_fives);
+  mpz_mul_2exp(s0, s0, 3 * out.s_twos);
+  for (int i = 0; g > 1 && i < 2; ++i) {  // g divides R_a R_b / g, so g^2 divides rest
+    mpz_divexact_ui(q3, q3, g);
+    mpz_divexact_ui(q4, q4, g);
+  }
+  for (std::size_t k = 0; k < 5; ++k) pending[k].multiple = out.f_multiple[k].mpz();
+  for (std::size_t k = 5; k < 7; ++k) {
+    pending[k].multiple = out.s_multiple[k - 4].mpz();
+    pending[k].k = 3;
+  }
+  const Multiples multiples{out.s_twos, out.s_fives, {rest4, nullptr, nullptr, q3, q4}};
+  reduce_all(pending, 8, rests, multiples, common);
   mpz_mul(mpq_numref(out.rho.mpq()), mpq_numref(out.rho.mpq()), mpq_numref(out.rho.mpq()));
   mpz_mul(mpq_denref(out.rho.mpq()), mpq_denref(out.rho.mpq()), mpq_denref(out.rho.mpq()));
 }

@@ -216,11 +216,17 @@ struct DecimalShape {
 };
 
 /// Where sphere_standard_evidence writes: f and s in lowest terms, lambda_s and rho.
+/// With the exponents of 2 and 5 in S = lcm(lp, le), the lcm of the two integer forms' scales
+/// (their rest is lcm(R_a^2, R_b^2), R the parts of a's and b's mantissas prime to 10), also the
+/// common-lcm integer forms S^4 f and S^3 s.
 struct ClosedEvidence {
   Quartic<Rational>& f;
   Quadratic<Rational>& s;
   Rational& lambda_s;
   Rational& rho;
+  unsigned long s_twos, s_fives;
+  Quartic<Integer>& f_multiple;    ///< S^4 f (fresh Integers: written in place)
+  Quadratic<Integer>& s_multiple;  ///< S^3 s
 };
 
 /// The reported f = det(lambda P + E) and s = det(lambda A + M), lambda_s and rho of a sphere E
@@ -232,7 +238,9 @@ struct ClosedEvidence {
 /// = (2 r / min(a, b)^2)^2. Each coefficient is a short integer over 2^i 5^j and the squares of the
 /// parts of a's and b's mantissas prime to 10, reduced by a bit scan, single-limb remainders and
 /// word gcds with those two parts: the same rationals as the general path (the integer forms'
-/// determinants reduced along their scales), without their long integers.
+/// determinants reduced along their scales), without their long integers. S^k times a coefficient
+/// n 2^i 5^j / (R_a^2 R_b^2) is n 2^(k s_twos + i) 5^(k s_fives + j) lcm(R_a^2, R_b^2)^(k-1) / g^2,
+/// g = gcd(R_a, R_b): products, no division of long integers.
 void sphere_standard_evidence(const DecimalShape& sphere, const DecimalShape& paraboloid, const ClosedEvidence& out);
 
 /// The smallest integer form the *decisions* need (not the evidence: the roots move). With

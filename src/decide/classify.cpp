@@ -602,29 +602,6 @@ const forms::DecimalShape* decimal_shape_of(const detail::QuadricMatrix& q) {
   return source ? source->decimal_shape() : nullptr;
 }
 
-/// S^4 f and S^3 s, S = lcm(lp, le), from the reduced f and s: S^4 f_i = num(f_i) (S^4 / den(f_i)),
-/// the integers reported_polynomials gives from g and h. S = 2^max 5^max lcm(rest_p, rest_e) from
-/// the splits, without a gcd when a rest is 1 (a sphere's scale has no other prime).
-void common_lcm_forms(const Classification& out, const forms::SplitScale& sp, const forms::SplitScale& se,
-                      const Integer& lp, const Integer& le, Quartic<Integer>& fi, Quadratic<Integer>& si) {
-  PooledInteger lcm, power, q;
-  if (mpz_cmp_ui(se.rest.mpz(), 1) == 0 || mpz_cmp_ui(sp.rest.mpz(), 1) == 0) {
-    forms::set_power_of_five(lcm.mpz(), std::max(sp.fives, se.fives));
-    mpz_mul_2exp(lcm.mpz(), lcm.mpz(), std::max(sp.twos, se.twos));
-    mpz_mul(lcm.mpz(), lcm.mpz(), (mpz_cmp_ui(se.rest.mpz(), 1) == 0 ? sp : se).rest.mpz());
-  } else {
-    mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
-  }
-  auto scaled = [&](const Rational& c, Integer& to) {  // `to` a fresh Integer: written in place
-    mpz_divexact(q.mpz(), power.mpz(), mpq_denref(c.mpq()));
-    mpz_mul(to.mpz(), q.mpz(), mpq_numref(c.mpq()));
-  };
-  mpz_pow_ui(power.mpz(), lcm.mpz(), 4);
-  for (std::size_t i = 0; i < 5; ++i) scaled(out.f[i], fi[i]);
-  mpz_pow_ui(power.mpz(), lcm.mpz(), 3);
-  for (std::size_t i = 0; i < 3; ++i) scaled(out.s[i], si[i]);
-}
-
 /// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
 /// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square. lambda_s is
 /// computed once here, for rho and for the certificate, from h: with mu = lambda le / lp,
@@ -749,8 +726,9 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     anysize::LambdaS ls;
     if (closed) {
       Rational lambda_s, rho;  // fresh: written in place
-      forms::sphere_standard_evidence(*es, *ps, {out.f, out.s, lambda_s, rho});
-      common_lcm_forms(out, sp, se, lp, le, f, s);
+      // S = lcm(lp, le): a sphere's scale is 2^a 5^b, a standard paraboloid's 2^c 5^d lcm(R_a^2, R_b^2).
+      forms::sphere_standard_evidence(
+          *es, *ps, {out.f, out.s, lambda_s, rho, std::max(sp.twos, se.twos), std::max(sp.fives, se.fives), f, s});
       take_roots(exact_root_structure(f, s, v.sign_disc_f), out);
       ls = anysize::rational_lambda_s(lambda_s);
       take_rho(rho, out);
