@@ -578,7 +578,7 @@ namespace {
 
 /// The scratch integers of sphere_standard_evidence, one set per thread: warm limbs, no malloc.
 struct ClosedScratch {
-  static constexpr std::size_t kCount = 28;
+  static constexpr std::size_t kCount = 27;
   mpz_t t[kCount];
   ClosedScratch() {
     for (auto& x : t) mpz_init(x);
@@ -714,7 +714,8 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
     if (x.multiple) {
       // S^k n 2^e2 5^e5 / (R_a^ja R_b^jb), n prime to 10: an integer, so both exponents are >= 0.
       const long twos = static_cast<long>(x.k * m.twos) + x.e2, fives = static_cast<long>(x.k * m.fives) + x.e5;
-      if (twos < 0 || fives < 0 || (x.ja != x.jb)) throw std::logic_error("sphere_standard_evidence: not a multiple");
+      if (twos < 0 || fives < 0 || x.ja != x.jb)
+        throw std::logic_error("relpos internal error: S^k times a closed-form coefficient is not an integer");
       mpz_mul(x.multiple, x.n, m.q[x.ja ? x.k : 0]);
       times_power_of_five(x.multiple, x.multiple, static_cast<unsigned long>(fives));
       mpz_mul_2exp(x.multiple, x.multiple, static_cast<unsigned long>(twos));

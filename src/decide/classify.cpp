@@ -602,23 +602,25 @@ const forms::DecimalShape* decimal_shape_of(const detail::QuadricMatrix& q) {
   return source ? source->decimal_shape() : nullptr;
 }
 
-/// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
-/// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square. lambda_s is
-/// computed once here, for rho and for the certificate, from h: with mu = lambda le / lp,
-/// s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales),
-/// rational iff Disc(h) is a square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2). A rational rho comes from the
-/// reduced f, s and lambda_s; an irrational one only as a double, from the reduced f and s.
+/// The root facts of the full evidence.
 void take_roots(RootStructure&& rs, Classification& out) {
   out.has_full_evidence = true;
   out.degree_ftilde = rs.degree_ftilde;
   out.roots = std::move(rs.real_roots);
 }
 
+/// A rational rho, with the double nearest it.
 void take_rho(const Rational& rho, Classification& out) {
   out.rho = rho;
   out.rho_approx = nearest_double(*out.rho);
 }
 
+/// The rest of the reported evidence: the roots, and rho = (f0/f4)(s2/s0) / u1^2 with
+/// u1 = -lambda_s, the smallest root of s(-u), rational iff Disc(s) is a square. lambda_s is
+/// computed once here, for rho and for the certificate, from h: with mu = lambda le / lp,
+/// s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along the split scales),
+/// rational iff Disc(h) is a square R^2, and then lambda_s = (lp / le) (R - h1) / (2 h2). A rational rho comes from the
+/// reduced f, s and lambda_s; an irrational one only as a double, from the reduced f and s.
 void fill_full_evidence(RootStructure&& rs, const Quartic<PooledInteger>& g, const Quadratic<PooledInteger>& h,
                         const forms::SplitScale& sp, const forms::SplitScale& se, const Integer& lp, const Integer& le,
                         Classification& out, anysize::LambdaS& ls) {
