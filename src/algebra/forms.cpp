@@ -638,6 +638,10 @@ void sum_terms(std::initializer_list<Term> terms, mpz_ptr sum, long& u0, long& v
   mpz_set_ui(sum, 0);
   for (const Term& x : terms) {
     if (mpz_sgn(x.c) == 0) continue;
+    if (x.u == u0 && x.v == v0) {
+      mpz_add(sum, sum, x.c);
+      continue;
+    }
     times_power_of_five(t, x.c, static_cast<unsigned long>(x.v - v0));
     mpz_mul_2exp(t, t, static_cast<unsigned long>(x.u - u0));
     mpz_add(sum, sum, t);
@@ -699,7 +703,9 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
         residue[i] = mpz_fdiv_ui(p[i].n, base);
         product = product * residue[i] % base;
       }
-    const std::uint64_t g = std::gcd(static_cast<std::uint64_t>(product), base);
+    // gcd(P, R) for odd R: GMP's word gcd of two odd numbers, P's factors 2 removed.
+    const auto low = static_cast<std::uint64_t>(product);
+    const std::uint64_t g = low == 0 ? base : mpn_gcd_11(low >> __builtin_ctzll(low), base);
     if (g == 1) continue;
     for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && std::gcd(residue[i] % g, g) > 1;
   }
