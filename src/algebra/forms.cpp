@@ -722,7 +722,11 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
       const long twos = static_cast<long>(x.k * m.twos) + x.e2, fives = static_cast<long>(x.k * m.fives) + x.e5;
       if (twos < 0 || fives < 0 || x.ja != x.jb)
         throw std::logic_error("relpos internal error: S^k times a closed-form coefficient is not an integer");
-      mpz_mul(x.multiple, x.n, m.q[x.ja ? x.k : 0]);
+      const mpz_srcptr q = m.q[x.ja ? x.k : 0];
+      // Sized once (5 < 2^3), not regrown by each product: a caller's integer is fresh.
+      mpz_realloc2(x.multiple, mpz_sizeinbase(x.n, 2) + mpz_sizeinbase(q, 2) + 3 * static_cast<unsigned long>(fives) +
+                                   static_cast<unsigned long>(twos) + 64);
+      mpz_mul(x.multiple, x.n, q);
       times_power_of_five(x.multiple, x.multiple, static_cast<unsigned long>(fives));
       mpz_mul_2exp(x.multiple, x.multiple, static_cast<unsigned long>(twos));
     }
@@ -737,11 +741,17 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
         mpz_mul_ui(common, common, c);
       }
     }
-    times_power_of_five(num, x.n, static_cast<unsigned long>(std::max(0L, x.e5)));
-    mpz_mul_2exp(num, num, static_cast<unsigned long>(std::max(0L, x.e2)));
-    set_power_of_five(den, static_cast<unsigned long>(std::max(0L, -x.e5)));
-    mpz_mul_2exp(den, den, static_cast<unsigned long>(std::max(0L, -x.e2)));
     const mpz_srcptr rest = x.ja && x.jb ? r.both : x.ja ? r.a2 : x.jb ? r.b2 : nullptr;
+    const auto n5 = static_cast<unsigned long>(std::max(0L, x.e5)), n2 = static_cast<unsigned long>(std::max(0L, x.e2)),
+               d5 = static_cast<unsigned long>(std::max(0L, -x.e5)),
+               d2 = static_cast<unsigned long>(std::max(0L, -x.e2));
+    // Each part sized once (5 < 2^3): the caller's rational is fresh.
+    mpz_realloc2(num, mpz_sizeinbase(x.n, 2) + 3 * n5 + n2 + 64);
+    mpz_realloc2(den, (rest ? mpz_sizeinbase(rest, 2) : 0) + 3 * d5 + d2 + 64);
+    times_power_of_five(num, x.n, n5);
+    mpz_mul_2exp(num, num, n2);
+    set_power_of_five(den, d5);
+    mpz_mul_2exp(den, den, d2);
     if (!rest) continue;
     if (mpz_cmp_ui(common, 1) != 0) {
       mpz_divexact(common, rest, common);
