@@ -393,3 +393,116 @@ TEST_CASE("fast reader: spheres and paraboloids on the axis over the whole expon
                       R"({"vertex":[0,0,-2.5e-3],"a":0.5,"b":125})", false);
   REQUIRE(fast_ellipsoid(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})", false)->matrix()(3, 3) == 0);
 }
+
+TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path's f, s, lambda_s and rho",
+          "[io][fast]") {
+  // Mantissas made of a few primes, the radius, the centre and vz often multiples of a's or b's
+  // mantissa and a's of b's: the closed forms' reductions then meet the common factors that
+  // rational arithmetic cancels (beyond the powers of 2 and 5), and zeros and w = vz - z = 0 occur.
+  // Compared in lowest terms with rational arithmetic on the general reader's matrices, and the
+  // whole report with the general path's (check_pair_evidence).
+  std::mt19937_64 rng(41);
+  const std::uint64_t primes[] = {2, 3, 5, 7, 11, 13, 9, 343, 1000003};
+  auto mantissa = [&] {
+    std::uint64_t m = 1 + rng() % 9;
+    for (int k = static_cast<int>(rng() % 7); k > 0; --k) {
+      const std::uint64_t p = primes[rng() % 9];
+      if (m > 100000000000000000ULL / p) break;
+      m *= p;
+    }
+    return m;
+  };
+  auto text = [&](std::uint64_t m, bool negative) {
+    const int e = -static_cast<int>(rng() % 12);
+    return (negative ? "-" : "") + std::to_string(m) + "e" + std::to_string(e);
+  };
+  auto same = [](const relpos::Rational& got, const relpos::Rational& want) {  // the same canonical form
+    CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(want.mpq())) == 0);
+    CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(want.mpq())) == 0);
+  };
+  int closed = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    const std::uint64_t ma = mantissa(), mb = trial % 3 == 0 ? ma * (1 + rng() % 12) : mantissa();
+    auto related = [&](bool negative) {  // a multiple of ma or mb, a free mantissa, or zero
+      switch (rng() % 5) {
+        case 0:
+          return text(ma * (1 + rng() % 50), negative);
+        case 1:
+          return text(mb * (1 + rng() % 50), negative);
+        case 2:
+          return std::string("0");
+        default:
+          return text(mantissa(), negative);
+      }
+    };
+    const std::string z = related(rng() % 2 == 0);
+    const std::string r = rng() % 3 == 0 ? text(ma, false) : text(mantissa(), false);
+    const std::string vz = trial % 7 == 0 ? z : related(rng() % 2 == 0);
+    const std::string e_text =
+        "{\"sphere\":{\"center\":" + vec3(related(true), related(false), z) + ",\"radius\":" + r + "}}";
+    const std::string p_text =
+        "{\"vertex\":" + vec3("0", "0", vz) + ",\"a\":" + text(ma, false) + ",\"b\":" + text(mb, false) + "}";
+    INFO(e_text << "  " << p_text);
+    const auto fe = fast_ellipsoid(e_text, false);
+    const auto fp = fast_paraboloid(p_text, false);
+    REQUIRE(fe);
+    REQUIRE(fp);
+    const relpos::detail::ExactSource* se = storage_of(*fe).exact_source();
+    const relpos::detail::ExactSource* sp = storage_of(*fp).exact_source();
+    if (!se || !sp) continue;  // every number an exact double: the doubles' path
+    REQUIRE(se->decimal_shape());
+    REQUIRE(sp->decimal_shape());
+    ++closed;
+    relpos::Quartic<relpos::Rational> f;
+    relpos::Quadratic<relpos::Rational> s;
+    relpos::Rational lambda_s, rho;
+    // S = lcm(lp, le) of the integer forms, its exponents of 2 and 5 from their splits.
+    relpos::Integer lp, le, lcm;
+    relpos::forms::SplitScale p_split, e_split;
+    relpos::forms::MatrixOf<relpos::Integer> pm, em;
+    relpos::forms::integer_form_of(storage_of(*fp), {relpos::forms::entries(pm), lp, p_split});
+    relpos::forms::integer_form_of(storage_of(*fe), {relpos::forms::entries(em), le, e_split});
+    mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
+    relpos::Quartic<relpos::Integer> f_multiple;
+    relpos::Quadratic<relpos::Integer> s_multiple;
+    relpos::forms::sphere_standard_evidence(*se->decimal_shape(), *sp->decimal_shape(),
+                                            {f, s, lambda_s, rho, std::max(p_split.twos, e_split.twos),
+                                             std::max(p_split.fives, e_split.fives), f_multiple, s_multiple});
+    const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, false), "ellipsoid");
+    const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, false), "paraboloid");
+    const auto want_f = relpos::characteristic_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
+    const auto want_s = relpos::special_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
+    for (std::size_t k = 0; k < 5; ++k) same(f[k], want_f[k]);
+    for (std::size_t k = 0; k < 3; ++k) same(s[k], want_s[k]);
+    const relpos::Rational cube = relpos::Rational(lcm * lcm * lcm), fourth = cube * relpos::Rational(lcm);
+    for (std::size_t k = 0; k < 5; ++k) CHECK(relpos::Rational(f_multiple[k]) == fourth * want_f[k]);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(relpos::Rational(s_multiple[k]) == cube * want_s[k]);
+    // lambda_s: the root of s nearest 0 (s = (1 + A l)(1 + B l): its discriminant is a square).
+    const relpos::Rational disc = want_s[1] * want_s[1] - 4 * want_s[2] * want_s[0];
+    relpos::Rational root;
+    mpz_sqrt(mpq_numref(root.mpq()), mpq_numref(disc.mpq()));
+    mpz_sqrt(mpq_denref(root.mpq()), mpq_denref(disc.mpq()));
+    REQUIRE(root * root == disc);
+    const relpos::Rational want_lambda_s = (root - want_s[1]) / (2 * want_s[2]);
+    same(lambda_s, want_lambda_s);
+    same(rho, want_f[0] * want_s[2] / (want_f[4] * want_s[0] * want_lambda_s * want_lambda_s));
+    if (trial % 5 == 0) check_pair_evidence(e_text, p_text, false);
+  }
+  CHECK(closed > 450);
+  // Other forms keep the general path: a vertex off the axis, a matrix, --numbers double.
+  for (const auto& [body, doubles] : {std::make_pair(R"({"vertex":[0.1,0,0],"a":1.3,"b":0.7})", false),
+                                      std::make_pair(R"({"vertex":[0,0,0.1],"a":1.3,"b":0.7})", true)}) {
+    const auto q = fast_paraboloid(body, doubles);
+    REQUIRE(q);
+    const relpos::detail::ExactSource* source = storage_of(*q).exact_source();
+    CHECK((!source || !source->decimal_shape()));
+  }
+  const auto m = fast_ellipsoid("[[1,0,0,0.1],[0,1,0,0],[0,0,1,0],[0.1,0,0,-0.3]]", false);
+  REQUIRE(m);
+  REQUIRE(storage_of(*m).exact_source());
+  CHECK_FALSE(storage_of(*m).exact_source()->decimal_shape());
+  const auto sphere = fast_ellipsoid(R"({"sphere":{"center":[0.1,0,0],"radius":0.3}})", false);
+  REQUIRE(sphere);
+  REQUIRE(storage_of(*sphere).exact_source());
+  CHECK(storage_of(*sphere).exact_source()->decimal_shape());
+}

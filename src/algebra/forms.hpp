@@ -8,12 +8,14 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "relpos/numbers.hpp"
+#include "relpos/polynomials.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos::forms {
@@ -188,12 +190,58 @@ struct IntegerFormOut {
   std::array<mpz_ptr, 16> form;
   Integer& l;
   SplitScale& split;
+  /// False when the caller reads only the split's twos, fives and rest: a source may then leave
+  /// rest_power and factors empty.
+  bool factors = true;
 };
 
 /// integer_form(q.matrix(), l) and split_scale(l, q.matrix()): written by q's exact source from the
 /// numbers it was read from when it can (decimal text: the lcm and the split from the exponents and
 /// the mantissas, no rationals and no gcd of long numbers), else from the matrix.
 void integer_form_of(const detail::QuadricMatrix& q, const IntegerFormOut& out);
+
+/// A number read from decimal text: (-1)^neg m 10^e.
+struct Decimal {
+  std::uint64_t m = 0;
+  int e = 0;
+  bool neg = false;
+};
+
+/// The numbers a sphere or a standard paraboloid with its vertex on the z axis was read from: the
+/// centre x, y, z and the radius r; or a, b and the vertex's z (n[3] unused). Written by the fast
+/// reader's exact source (ExactSource::decimal_shape).
+struct DecimalShape {
+  bool sphere = true;
+  std::array<Decimal, 4> n;
+};
+
+/// Where sphere_standard_evidence writes: f and s in lowest terms, lambda_s and rho.
+/// With the exponents of 2 and 5 in S = lcm(lp, le), the lcm of the two integer forms' scales
+/// (their rest is lcm(R_a^2, R_b^2), R the parts of a's and b's mantissas prime to 10), also the
+/// common-lcm integer forms S^4 f and S^3 s.
+struct ClosedEvidence {
+  Quartic<Rational>& f;
+  Quadratic<Rational>& s;
+  Rational& lambda_s;
+  Rational& rho;
+  unsigned long s_twos, s_fives;
+  Quartic<Integer>& f_multiple;    ///< S^4 f (fresh Integers: written in place)
+  Quadratic<Integer>& s_multiple;  ///< S^3 s
+};
+
+/// The reported f = det(lambda P + E) and s = det(lambda A + M), lambda_s and rho of a sphere E
+/// and a standard paraboloid P with its vertex on the axis, from closed forms (math.md §2, §5).
+/// With A = 1/a^2, B = 1/b^2, w = vz - z, E's block is the identity and P's is diag(A, B, 0):
+///   f0 = -r^2,  f1 = A (x^2 - r^2) + B (y^2 - r^2) + w,  f2 = A B (x^2 + y^2 - r^2) + (A + B) w - 1/4,
+///   f3 = A B w - (A + B) / 4,  f4 = -A B / 4,  s = (1 + A lambda)(1 + B lambda),
+/// so lambda_s, the root of s nearest 0, is -min(a, b)^2 and rho = (f0 / f4)(s2 / s0) / lambda_s^2
+/// = (2 r / min(a, b)^2)^2. Each coefficient is a short integer over 2^i 5^j and the squares of the
+/// parts of a's and b's mantissas prime to 10, reduced by a bit scan, single-limb remainders and
+/// word gcds with those two parts: the same rationals as the general path (the integer forms'
+/// determinants reduced along their scales), without their long integers. S^k times a coefficient
+/// n 2^i 5^j / (R_a^2 R_b^2) is n 2^(k s_twos + i) 5^(k s_fives + j) lcm(R_a^2, R_b^2)^(k-1) / g^2,
+/// g = gcd(R_a, R_b): products, no division of long integers.
+void sphere_standard_evidence(const DecimalShape& sphere, const DecimalShape& paraboloid, const ClosedEvidence& out);
 
 /// The smallest integer form the *decisions* need (not the evidence: the roots move). With
 /// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive

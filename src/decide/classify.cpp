@@ -594,6 +594,25 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
   for (std::size_t i = 0; i < 3; ++i) times(h[i], pa[i], pb[3 - i], si[i]);
 }
 
+/// The numbers of a sphere or standard paraboloid read from decimal text, or nullptr.
+const forms::DecimalShape* decimal_shape_of(const detail::QuadricMatrix& q) {
+  const detail::ExactSource* source = q.exact_source();
+  return source ? source->decimal_shape() : nullptr;
+}
+
+/// The root facts of the full evidence.
+void take_roots(RootStructure&& rs, Classification& out) {
+  out.has_full_evidence = true;
+  out.degree_ftilde = rs.degree_ftilde;
+  out.roots = std::move(rs.real_roots);
+}
+
+/// A rational rho, with the double nearest it.
+void take_rho(const Rational& rho, Classification& out) {
+  out.rho = rho;
+  out.rho_approx = nearest_double(*out.rho);
+}
+
 /// lambda_s, the root of s nearest 0, computed once for rho and for the certificate, from h: with
 /// mu = lambda le / lp, s(lambda) = h(mu) / le^3, so Disc(s) = Disc(h) / (lp le^2)^2 (reduced along
 /// the split scales), rational iff Disc(h) is a square R^2, and then
@@ -624,9 +643,7 @@ anysize::LambdaS lambda_s_of_pencil(const Quadratic<PooledInteger>& h, const for
 /// lambda_s_of_pencil). A rational rho comes from the reduced f, s and lambda_s; an irrational one
 /// only as a double, from the reduced f and s.
 void fill_full_evidence(RootStructure&& rs, const anysize::LambdaS& ls, Classification& out) {
-  out.has_full_evidence = true;
-  out.degree_ftilde = rs.degree_ftilde;
-  out.roots = std::move(rs.real_roots);
+  take_roots(std::move(rs), out);
   // k = (f0 s2) / (f4 s0)
   if (ls.rational()) {
     // rho = (f0 / f4) (s2 / s0) / lambda_s^2 from the reduced coefficients and lambda_s: GMP's
@@ -640,8 +657,7 @@ void fill_full_evidence(RootStructure&& rs, const anysize::LambdaS& ls, Classifi
     mpq_mul(r, r, out.f[0].mpq());
     mpq_div(r, r, out.s[0].mpq());
     mpq_mul(r, r, forms::inverse_square(ls.value().a).mpq());
-    out.rho = rho;
-    out.rho_approx = nearest_double(*out.rho);
+    take_rho(rho, out);
   } else {
     // k only as a double (CGAL::to_double is mpq_get_d: the exact quotient truncated, whatever
     // fraction represents it), so from the unreduced product of the reduced coefficients: no gcd.
@@ -729,28 +745,45 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     MatrixOf<PooledInteger>& pp = pooled_forms().p;  // every entry rewritten below
     MatrixOf<PooledInteger>& ep = pooled_forms().e;
     forms::SplitScale sp = unit_split(), se = unit_split();
+    // A sphere and a standard paraboloid read from decimal text: f, s, lambda_s and rho from their
+    // closed forms, on short integers (the splits then need no factors).
+    const forms::DecimalShape* es = ed ? nullptr : decimal_shape_of(storage_of(e));
+    const forms::DecimalShape* ps = pd ? nullptr : decimal_shape_of(storage_of(p));
+    const bool closed = es && ps && es->sphere && !ps->sphere;
     if (pd)
       forms::integer_form(*pd, forms::entries(pp), lp);
     else
-      forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp});
+      forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp, !closed});
     if (ed)
       forms::integer_form(*ed, forms::entries(ep), le);
     else
-      forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se});
-    const Quartic<PooledInteger> g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
-    const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
-    if (pd) sp.twos = mpz_scan1(lp.mpz(), 0);  // split_scale(lp): lp is a power of two
-    if (ed) se.twos = mpz_scan1(le.mpz(), 0);
+      forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se, !closed});
     // S^4 f and S^3 s: the thread's, written in place (their limbs kept from call to call).
     thread_local Quartic<Integer> f;
     thread_local Quadratic<Integer> s;
     for (Integer& c : f) make_unshared(c);
     for (Integer& c : s) make_unshared(c);
-    reported_polynomials(g, h, sp, se, lp, le, out, f, s);
-    // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
-    RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
-    const anysize::LambdaS ls = lambda_s_of_pencil(h, sp, se, out.s);
-    fill_full_evidence(std::move(rs), ls, out);
+    const anysize::LambdaS ls = [&] {
+      if (closed) {
+        Rational lambda_s, rho;  // fresh: written in place
+        // S = lcm(lp, le): a sphere's scale is 2^a 5^b, a standard paraboloid's 2^c 5^d lcm(R_a^2, R_b^2).
+        forms::sphere_standard_evidence(
+            *es, *ps, {out.f, out.s, lambda_s, rho, std::max(sp.twos, se.twos), std::max(sp.fives, se.fives), f, s});
+        take_roots(exact_root_structure(f, s, v.sign_disc_f), out);
+        take_rho(rho, out);
+        return anysize::rational_lambda_s(lambda_s);
+      }
+      const Quartic<PooledInteger> g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
+      const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
+      if (pd) sp.twos = mpz_scan1(lp.mpz(), 0);  // split_scale(lp): lp is a power of two
+      if (ed) se.twos = mpz_scan1(le.mpz(), 0);
+      reported_polynomials(g, h, sp, se, lp, le, out, f, s);
+      // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
+      RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
+      anysize::LambdaS from_pencil = lambda_s_of_pencil(h, sp, se, out.s);
+      fill_full_evidence(std::move(rs), from_pencil, out);
+      return from_pencil;
+    }();
     // The certificate reuses f, s, lambda_s, the isolation, the integer forms and S^4 f. The forms
     // with their scales only where it reads them (the points of C, TE and TI, not the multipliers
     // of E and I) and cannot take them from the doubles: copied from the pooled ones on first use.

@@ -374,22 +374,27 @@ int sphere_sum(const std::array<Exact, 16>& n, mpz_ptr sum) {
   bool any = false;
   for (std::size_t i = 0; i < 4; ++i)
     if (n[i].m != 0) low = any ? std::min(low, n[i].e) : n[i].e, any = true;
-  mpz_t term, power;
-  mpz_init(term);
-  mpz_init(power);
+  struct Term {  // one per thread: its limbs are kept
+    mpz_t z;
+    Term() { mpz_init(z); }
+    ~Term() { mpz_clear(z); }
+    Term(const Term&) = delete;
+    Term& operator=(const Term&) = delete;
+  };
+  thread_local Term scratch;
+  const mpz_ptr term = scratch.z;
   mpz_set_ui(sum, 0);
   for (std::size_t i = 0; i < 4; ++i) {
     if (n[i].m == 0) continue;
     mpz_set_ui(term, n[i].m);
     mpz_mul(term, term, term);
-    if (n[i].e != low) {
-      mpz_ui_pow_ui(power, 10, static_cast<unsigned long>(2 * (n[i].e - low)));
-      mpz_mul(term, term, power);
+    if (n[i].e != low) {  // times 10^(2 (e - low))
+      const auto k = static_cast<unsigned long>(2 * (n[i].e - low));
+      forms::times_power_of_five(term, term, k);
+      mpz_mul_2exp(term, term, k);
     }
     (i < 3 ? mpz_add : mpz_sub)(sum, sum, term);  // the radius is n[3]
   }
-  mpz_clear(term);
-  mpz_clear(power);
   return low;
 }
 
@@ -422,12 +427,24 @@ class DecimalForm {
  public:
   DecimalForm() {
     for (auto& x : n_) mpz_init(x);
+    for (auto& x : cof_) mpz_init(x);
   }
   ~DecimalForm() {
     for (auto& x : n_) mpz_clear(x);
+    for (auto& x : cof_) mpz_clear(x);
   }
   DecimalForm(const DecimalForm&) = delete;
   DecimalForm& operator=(const DecimalForm&) = delete;
+
+  /// Every entry zero, ready for a new matrix; the integers keep their limbs (a form reused by a
+  /// thread writes quadric after quadric without malloc).
+  void reset() {
+    for (auto& x : n_) mpz_set_ui(x, 0);
+    std::fill(std::begin(t2_), std::end(t2_), 0L);
+    std::fill(std::begin(t5_), std::end(t5_), 0L);
+    std::fill(std::begin(which_), std::end(which_), 0);
+    std::fill(std::begin(rest_), std::end(rest_), std::uint64_t{1});
+  }
 
   /// Entry k is (-1)^neg m 10^e (zero for m = 0).
   void decimal(std::size_t k, std::uint64_t m, int e, bool neg) {
@@ -461,15 +478,14 @@ class DecimalForm {
     // rest = lcm(R_a^2, R_b^2) = (R_a R_b / g)^2 multiplies the entries without R; the others
     // rest / R_a^2 = (R_b / g)^2 and rest / R_b^2 = (R_a / g)^2.
     const std::uint64_t g = std::gcd(rest_[1], rest_[2]);
-    mpz_t cof[3];
-    mpz_init_set_ui(cof[1], rest_[2] / g);
-    mpz_init_set_ui(cof[2], rest_[1] / g);
+    auto& cof = cof_;
+    mpz_set_ui(cof[1], rest_[2] / g);
+    mpz_set_ui(cof[2], rest_[1] / g);
     for (std::size_t r = 1; r < 3; ++r) mpz_mul(cof[r], cof[r], cof[r]);
-    Integer rest;  // fresh: written through mpz()
-    mpz_set_ui(rest.mpz(), rest_[1]);
-    mpz_mul(rest.mpz(), rest.mpz(), rest.mpz());
-    mpz_mul(rest.mpz(), rest.mpz(), cof[1]);
-    mpz_init_set(cof[0], rest.mpz());
+    const mpz_ptr rest = cof[0];
+    mpz_set_ui(rest, rest_[1]);
+    mpz_mul(rest, rest, rest);
+    mpz_mul(rest, rest, cof[1]);
     constexpr std::size_t kAt[10][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {1, 1}, {1, 2}, {1, 3}, {2, 2}, {2, 3}, {3, 3}};
     for (std::size_t k = 0; k < 10; ++k) {
       const mpz_ptr z = out.form[4 * kAt[k][0] + kAt[k][1]];
@@ -489,16 +505,23 @@ class DecimalForm {
     const mpz_ptr l = out.l.mpz();  // fresh: written in place
     forms::set_power_of_five(l, static_cast<unsigned long>(u5));
     mpz_mul_2exp(l, l, static_cast<unsigned long>(u2));
-    mpz_mul(l, l, rest.mpz());
+    mpz_mul(l, l, rest);
+    if (!out.factors) {
+      out.split.twos = static_cast<unsigned long>(u2);
+      out.split.fives = static_cast<unsigned long>(u5);
+      out.split.rest = Integer(rest);
+      return;
+    }
     std::vector<forms::SplitScale::Factor> rests;
     for (std::size_t r = 1; r < 3; ++r)
       if (rest_[r] > 1 && (r == 1 || rest_[2] != rest_[1])) rests.push_back({Integer(rest_[r]), 2});
-    out.split = forms::split_scale(static_cast<unsigned long>(u2), static_cast<unsigned long>(u5), rest, rests);
-    for (auto& x : cof) mpz_clear(x);
+    out.split =
+        forms::split_scale(static_cast<unsigned long>(u2), static_cast<unsigned long>(u5), Integer(rest), rests);
   }
 
  private:
   mpz_t n_[10];
+  mpz_t cof_[3];  // the rest (cof_[0]) and the cofactors of R_a^2 and R_b^2 in it
   long t2_[10] = {}, t5_[10] = {};
   int which_[10] = {};
   std::uint64_t rest_[3] = {1, 1, 1};
@@ -527,7 +550,17 @@ Matrix4 symmetric(const std::array<Rational, 10>& u) {
 /// (tests/test_fast_reader.cpp).
 class NumberSource final : public relpos::detail::ExactSource {
  public:
-  NumberSource(const Recipe& recipe, bool doubles) : recipe_(recipe), doubles_(doubles) {}
+  NumberSource(const Recipe& recipe, bool doubles) : recipe_(recipe), doubles_(doubles) {
+    const auto& n = recipe.n;
+    const bool standard = recipe.form == Recipe::Form::Standard && n[0].m == 0 && n[1].m == 0;
+    if (doubles || !(recipe.form == Recipe::Form::Sphere || standard)) return;
+    shape_.sphere = !standard;
+    const std::array<std::size_t, 4> from =
+        standard ? std::array<std::size_t, 4>{3, 4, 2, 2} : std::array<std::size_t, 4>{0, 1, 2, 3};
+    for (std::size_t i = 0; i < 4; ++i) shape_.n[i] = {n[from[i]].m, n[from[i]].e, n[from[i]].neg};
+    has_shape_ = true;
+  }
+  const forms::DecimalShape* decimal_shape() const override { return has_shape_ ? &shape_ : nullptr; }
   Matrix4 build() const override {
     const auto& n = recipe_.n;
     // The exact value of n[k], negated when `minus`.
@@ -559,7 +592,8 @@ class NumberSource final : public relpos::detail::ExactSource {
   bool integer_form(const forms::IntegerFormOut& out) const override {
     const auto& n = recipe_.n;
     if (doubles_) return false;
-    DecimalForm form;
+    thread_local DecimalForm form;
+    form.reset();
     switch (recipe_.form) {
       case Recipe::Form::Sphere: {
         for (std::size_t k : {0, 4, 7}) form.decimal(k, 1, 0, false);
@@ -601,6 +635,8 @@ class NumberSource final : public relpos::detail::ExactSource {
  private:
   Recipe recipe_;
   bool doubles_;
+  bool has_shape_ = false;
+  forms::DecimalShape shape_;
 };
 
 /// The storage of a certified quadric: its doubles when every enclosure is a point (the exact

@@ -13,7 +13,8 @@
 // from_matrix applies): the rationals and the evidence are those of the general path
 // (tests/test_fast_reader.cpp compares them). For decimal numbers the same source also writes the
 // evidence's integer form and its scale's split (forms::integer_form_of) from the exponents and
-// mantissas, without the rationals.
+// mantissas, without the rationals, and gives the numbers of a sphere or a standard paraboloid
+// with its vertex on the axis to the evidence's closed forms (ExactSource::decimal_shape).
 //
 // Forms: a 4x4 array or {"matrix": 4x4} (ellipsoid or paraboloid; an exactly symmetric matrix whose
 // shape the interval filter certifies, and for a paraboloid det Q3 = 0 by exactly-zero entries),

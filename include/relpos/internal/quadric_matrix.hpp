@@ -17,7 +17,8 @@ class Paraboloid;
 
 namespace forms {
 struct IntegerFormOut;
-}
+struct DecimalShape;
+}  // namespace forms
 
 namespace detail {
 
@@ -43,6 +44,9 @@ class ExactSource {
   /// The integer form of build()'s matrix and its scale's split (forms::integer_form_of), written
   /// without building the matrix when the source can; false (nothing written) when it cannot.
   virtual bool integer_form(const forms::IntegerFormOut& out) const = 0;
+  /// The numbers of a sphere, or of a standard paraboloid with its vertex on the axis, read from
+  /// decimal text (forms::sphere_standard_evidence); nullptr for any other source.
+  virtual const forms::DecimalShape* decimal_shape() const { return nullptr; }
 };
 
 /// The matrix of a validated quadric: exact rationals, and the doubles when every entry is one.
