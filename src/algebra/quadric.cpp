@@ -523,15 +523,23 @@ bool all_finite(const DoubleMatrix4& d) {
 
 }  // namespace
 
-Ellipsoid Ellipsoid::from_doubles(const DoubleMatrix4& e) {
+// flatten: the constructor and the signs in doubles in one frame, the values just normalized read
+// without a call between; the rest (intervals, the exact path) out of line.
+[[gnu::flatten]] Ellipsoid Ellipsoid::from_doubles(const DoubleMatrix4& e) {
   // Built in the returned object (one return: no copy of the 16 doubles) and normalized in place;
   // normalized doubles are finite, so all_finite runs only when the normalization did not.
   Ellipsoid out(e);
   const DoubleMatrix4* normalized = out.m_.filter_doubles();
-  const int orientation = normalized || all_finite(e) ? shape_filter::certified_ellipsoid(e, normalized) : 0;
+  int orientation = shape_filter::certified_ellipsoid_in_doubles(normalized);
+  if (orientation == 0) {
+    [&]() __attribute__((noinline)) {
+      orientation = normalized || all_finite(e) ? shape_filter::certified_ellipsoid_by_intervals(e) : 0;
+      // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
+      if (orientation == 0) out = Ellipsoid(*from_matrix(exact_matrix(e)).doubles());
+    }
+    ();
+  }
   if (orientation < 0) out.m_.negate_doubles();
-  // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
-  if (orientation == 0) out = Ellipsoid(*from_matrix(exact_matrix(e)).doubles());
   return out;
 }
 
@@ -609,12 +617,18 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
 
 // The same steps as Ellipsoid::from_doubles with the paraboloid's certifier, written out: a template
 // over both would have to be a friend of both classes for these six lines.
-Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
+[[gnu::flatten]] Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
   Paraboloid out(p);
   const DoubleMatrix4* normalized = out.m_.filter_doubles();
-  const int orientation = normalized || all_finite(p) ? shape_filter::certified_paraboloid(p, normalized) : 0;
+  int orientation = shape_filter::certified_paraboloid_in_doubles(p, normalized);
+  if (orientation == 0) {
+    [&]() __attribute__((noinline)) {
+      orientation = normalized || all_finite(p) ? shape_filter::certified_paraboloid_by_intervals(p) : 0;
+      if (orientation == 0) out = Paraboloid(*from_matrix(exact_matrix(p)).doubles());
+    }
+    ();
+  }
   if (orientation < 0) out.m_.negate_doubles();
-  if (orientation == 0) out = Paraboloid(*from_matrix(exact_matrix(p)).doubles());
   return out;
 }
 

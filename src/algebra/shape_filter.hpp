@@ -252,30 +252,96 @@ inline int det4_sign(const DoubleMatrix4& n) {
 
 }  // namespace impl
 
-/// Every sign of the ellipsoid test but det Q < 0, certified on the normalized doubles (static, then
-/// semi-static bounds; round to nearest): the orientation (+1 or -1, the sign of the first entry)
-/// when its 2x2 leading minor is positive and det Q3 has the first entry's sign; else 0, and always
-/// 0 without `normalized`: the quadric's filter_doubles() (quadric_matrix.hpp), d scaled by a power
-/// of two and symmetric, or null. certified_ellipsoid adds det Q < 0; the decision on 32 doubles
-/// reads that sign off the pencil instead, whose f(0) is det E (math.md §2).
-inline int ellipsoid_before_det(const DoubleMatrix4* normalized);
+namespace impl {
 
-/// ellipsoid_before_det without its test of the rounding mode: its answer is sound only in round to
-/// nearest, for a caller that uses it only after a later stage has found that mode (the decision on
-/// 32 doubles: its pencil stage runs only then; otherwise the two steps decide, with their tests).
-inline int ellipsoid_before_det_if_nearest(const DoubleMatrix4* normalized) {
-  if (!normalized) return 0;
-  const DoubleMatrix4& n = *normalized;
+using detail::Lanes2;
+
+/// The 2x2 minors of rows a and b (lane pairs (a0, a1), (a2, a3) and (b0, b1), (b2, b3)) on the
+/// column pairs ((0, 1), (0, 2)), ((0, 3), (1, 2)), ((1, 3), (2, 3)), each x y - z w (det4's s and c
+/// minors: the same operations); with Magnitude, the rows are absolute values and each is x y + z w.
+template <bool Magnitude>
+std::array<Lanes2, 3> row_minors(Lanes2 alo, Lanes2 ahi, Lanes2 blo, Lanes2 bhi) {
+  const Lanes2 x[3] = {__builtin_shufflevector(alo, alo, 0, 0), alo, __builtin_shufflevector(alo, ahi, 1, 2)};
+  const Lanes2 y[3] = {__builtin_shufflevector(blo, bhi, 1, 2), __builtin_shufflevector(bhi, bhi, 1, 0),
+                       __builtin_shufflevector(bhi, bhi, 1, 1)};
+  const Lanes2 z[3] = {__builtin_shufflevector(blo, blo, 0, 0), blo, __builtin_shufflevector(blo, bhi, 1, 2)};
+  const Lanes2 w[3] = {__builtin_shufflevector(alo, ahi, 1, 2), __builtin_shufflevector(ahi, ahi, 1, 0),
+                       __builtin_shufflevector(ahi, ahi, 1, 1)};
+  std::array<Lanes2, 3> m;
+  for (std::size_t k = 0; k < 3; ++k) m[k] = Magnitude ? x[k] * y[k] + z[k] * w[k] : x[k] * y[k] - z[k] * w[k];
+  return m;
+}
+
+/// The three determinants of the ellipsoid test on a symmetric matrix n, from one set of 2x2 minors
+/// s of rows 0 and 1 (and c of rows 2 and 3 for det Q): the leading minor s01, det Q3 =
+/// (n22 s01 - n21 s02) + n20 s12 (expanded along row 2) and det Q = sum of +-s c over complementary
+/// column pairs, two terms per lane. At most 6 successive roundings each; with Magnitude, the same
+/// formulas on |n| with every subtraction an addition (their magnitudes, as Mag gives them).
+struct EllipsoidDeterminants {
+  double minor2, det3, det4;
+};
+template <bool Magnitude>
+[[gnu::always_inline]] inline EllipsoidDeterminants ellipsoid_determinants(const DoubleMatrix4& n, bool with_det4) {
+  Lanes2 lo[4], hi[4];
+  for (std::size_t r = 0; r < 4; ++r) {
+    std::memcpy(&lo[r], &n[4 * r], sizeof lo[r]);
+    std::memcpy(&hi[r], &n[4 * r + 2], sizeof hi[r]);
+    if (Magnitude) {
+      lo[r] = Lanes2{std::fabs(lo[r][0]), std::fabs(lo[r][1])};
+      hi[r] = Lanes2{std::fabs(hi[r][0]), std::fabs(hi[r][1])};
+    }
+  }
+  const std::array<Lanes2, 3> sm = row_minors<Magnitude>(lo[0], hi[0], lo[1], hi[1]);
+  // sm[0] = (s01, s02), sm[1] = (s03, s12), sm[2] = (s13, s23); n2j = lo[2], hi[2][0]
+  const double t = Magnitude ? hi[2][0] * sm[0][0] + lo[2][1] * sm[0][1] : hi[2][0] * sm[0][0] - lo[2][1] * sm[0][1];
+  EllipsoidDeterminants d{sm[0][0], t + lo[2][0] * sm[1][1], 0};
+  if (with_det4) {
+    const std::array<Lanes2, 3> cm = row_minors<Magnitude>(lo[2], hi[2], lo[3], hi[3]);
+    auto swap = [](Lanes2 x) { return __builtin_shufflevector(x, x, 1, 0); };
+    // u = (s01 c23, s02 c13) with signs (+, -), v = (s03 c12, s12 c03) (+, +), w = (s13 c02, s23 c01) (-, +)
+    const Lanes2 u = sm[0] * swap(cm[2]), v = sm[1] * swap(cm[1]), w = sm[2] * swap(cm[0]);
+    const Lanes2 sum =
+        Magnitude ? (u + w) + v : (__builtin_shufflevector(u, w, 0, 3) - __builtin_shufflevector(w, u, 0, 3)) + v;
+    d.det4 = sum[0] + sum[1];
+  }
+  return d;
+}
+
+/// The magnitudes, out of line: read only when a static bound does not decide.
+[[gnu::noinline]] inline EllipsoidDeterminants ellipsoid_magnitudes(const DoubleMatrix4& n, bool with_det4) {
+  return ellipsoid_determinants<true>(n, with_det4);
+}
+
+/// The ellipsoid test's signs on the normalized doubles (round to nearest, the caller's test): the
+/// orientation (+1 or -1, the sign of the first entry) when the 2x2 leading minor is positive and
+/// det Q3 has the first entry's sign, else 0; with `det`, also det Q's certified sign (0 when
+/// uncertain) into *det. Static bounds for entries below 1 (2, 6 and 24: each minor is at most 2 in
+/// magnitude), then the magnitudes of this matrix.
+inline int ellipsoid_signs(const DoubleMatrix4& n, int* det) {
+  const EllipsoidDeterminants v = ellipsoid_determinants<false>(n, det != nullptr);
+  bool have = false;
+  EllipsoidDeterminants m{};
+  auto magnitudes = [&]() -> const EllipsoidDeterminants& {
+    if (!have) m = ellipsoid_magnitudes(n, det != nullptr), have = true;
+    return m;
+  };
   const int want = n[0] > 0 ? 1 : (n[0] < 0 ? -1 : 0);  // normalized entries are finite
-  using impl::Mag;
-  const int s2 =
-      impl::filtered_sign<2>(n[0] * n[5] - n[1] * n[1], [&] { return Mag(n[0]) * Mag(n[5]) + Mag(n[1]) * Mag(n[1]); });
-  const int s3 = impl::filtered_sign<6>(impl::det3<double>(n), [&] { return impl::det3<Mag>(n); });
+  const int s2 = filtered_sign<2>(v.minor2, [&] { return Mag(magnitudes().minor2); });
+  const int s3 = filtered_sign<6>(v.det3, [&] { return Mag(magnitudes().det3); });
+  if (det) *det = filtered_sign<24>(v.det4, [&] { return Mag(magnitudes().det4); });
   return want != 0 && s2 == 1 && s3 == want ? want : 0;
 }
 
-inline int ellipsoid_before_det(const DoubleMatrix4* normalized) {
-  return detail::rounding_to_nearest() ? ellipsoid_before_det_if_nearest(normalized) : 0;
+}  // namespace impl
+
+/// Every sign of the ellipsoid test but det Q < 0 (impl::ellipsoid_signs), always 0 without
+/// `normalized`: the quadric's filter_doubles() (quadric_matrix.hpp), d scaled by a power of two and
+/// symmetric, or null. Without a test of the rounding mode: its answer is sound only in round to
+/// nearest, for a caller that uses it only after a later stage has found that mode (the decision on
+/// 32 doubles: its pencil stage runs only then, and reads det Q < 0 off the pencil, whose f(0) is
+/// det E (math.md §2); otherwise the two steps decide, with their tests).
+inline int ellipsoid_before_det_if_nearest(const DoubleMatrix4* normalized) {
+  return normalized ? impl::ellipsoid_signs(*normalized, nullptr) : 0;
 }
 
 /// The same for an elliptic paraboloid: the sign of the trace of Q3 when E2 > 0 and the trace are
@@ -286,8 +352,10 @@ inline int ellipsoid_before_det(const DoubleMatrix4* normalized) {
 inline int paraboloid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
   if (!normalized) return 0;
   const DoubleMatrix4& n = *normalized;
-  if (impl::diagonal_block(n)) {  // one entry zero, the two others of one sign
-    const impl::DiagonalSigns s = impl::diagonal_signs(n);
+  // Signs and zeros are read from d, which has those of n (n is d times a power of two, exactly),
+  // and is already in registers or the cache, where n was just stored.
+  if (impl::diagonal_block(d)) {  // one entry zero, the two others of one sign
+    const impl::DiagonalSigns s = impl::diagonal_signs(d);
     return s.positive + s.negative != 2 ? 0 : (s.positive == 2 ? 1 : (s.negative == 2 ? -1 : 0));
   }
   if (!detail::rounding_to_nearest()) return 0;
@@ -309,20 +377,18 @@ namespace impl {
 /// det Q < 0 for a matrix paraboloid_before_det accepted. With Q3 diagonal, its entry z zero and the
 /// two others of one sign, expanding along row z gives det Q = -(the product of those two) q_z^2
 /// (q_z = entry (z, 3)): negative iff q_z != 0, by signs alone. Otherwise det4_sign (the test of
-/// the rounding mode was paraboloid_before_det's).
-inline bool paraboloid_det_negative(const DoubleMatrix4& n) {
-  if (diagonal_block(n)) return n[n[0] == 0 ? 3 : (n[5] == 0 ? 7 : 11)] != 0;
+/// the rounding mode was paraboloid_before_det's). d and its normalized n as there (the signs read
+/// from d).
+inline bool paraboloid_det_negative(const DoubleMatrix4& d, const DoubleMatrix4& n) {
+  if (diagonal_block(d)) return d[d[0] == 0 ? 3 : (d[5] == 0 ? 7 : 11)] != 0;
   return det4_sign(n) == -1;
 }
 
 }  // namespace impl
 
-/// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
-/// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
-/// `normalized` as for ellipsoid_before_det, or null: the semi-static stage reads it; the interval
-/// stage reads d.
-inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  if (const int want = ellipsoid_before_det(normalized); want != 0 && impl::det4_sign(*normalized) == -1) return want;
+/// The interval stage of certified_ellipsoid on d itself (out of line: rarely run, and kept out of
+/// the callers' frames).
+[[gnu::noinline]] inline int certified_ellipsoid_by_intervals(const DoubleMatrix4& d) {
   if (!impl::symmetric(d)) return 0;
   const double a = d[0];
   if (!(a > 0) && !(a < 0)) return 0;
@@ -330,15 +396,26 @@ inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* norm
   return certified_ellipsoid_intervals(impl::interval_entries(d), a > 0 ? 1 : -1);
 }
 
-/// +1 when the symmetric matrix is certainly an elliptic paraboloid with Q3 positive semidefinite,
-/// -1 with Q3 negative semidefinite, 0 when the filter cannot tell (or it is not one). Q3 has rank 2
-/// and is semidefinite iff det Q3 = 0 (exact) and E2 > 0 (the sum of its 2x2 principal minors: the
-/// product of the two other eigenvalues); rank Q = 4 iff det Q != 0. `normalized` as for
-/// certified_ellipsoid.
-inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  if (const int trace_sign = paraboloid_before_det(d, normalized);
-      trace_sign != 0 && impl::paraboloid_det_negative(*normalized))
-    return trace_sign;
+/// The signs in doubles of certified_ellipsoid (round to nearest, tested here; 0 in any other mode).
+inline int certified_ellipsoid_in_doubles(const DoubleMatrix4* normalized) {
+  if (!normalized || !detail::rounding_to_nearest()) return 0;
+  int det;
+  const int want = impl::ellipsoid_signs(*normalized, &det);
+  return det == -1 ? want : 0;
+}
+
+/// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
+/// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
+/// `normalized` as for ellipsoid_before_det_if_nearest, or null: the signs in doubles read it (round
+/// to nearest); the interval stage reads d.
+inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
+  if (const int want = certified_ellipsoid_in_doubles(normalized)) return want;
+  return certified_ellipsoid_by_intervals(d);
+}
+
+/// The interval stage of certified_paraboloid, and its exact test of det Q3 = 0, on d itself (out of
+/// line, as for the ellipsoid).
+[[gnu::noinline]] inline int certified_paraboloid_by_intervals(const DoubleMatrix4& d) {
   if (!impl::symmetric(d)) return 0;
   int trace_sign;
   {
@@ -348,6 +425,22 @@ inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* nor
   if (trace_sign == 0) return 0;
   const auto zero = impl::det3_is_zero(d);
   return zero && *zero ? trace_sign : 0;
+}
+
+/// The signs in doubles of certified_paraboloid (paraboloid_before_det and det Q < 0).
+inline int certified_paraboloid_in_doubles(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
+  const int trace_sign = paraboloid_before_det(d, normalized);
+  return trace_sign != 0 && impl::paraboloid_det_negative(d, *normalized) ? trace_sign : 0;
+}
+
+/// +1 when the symmetric matrix is certainly an elliptic paraboloid with Q3 positive semidefinite,
+/// -1 with Q3 negative semidefinite, 0 when the filter cannot tell (or it is not one). Q3 has rank 2
+/// and is semidefinite iff det Q3 = 0 (exact) and E2 > 0 (the sum of its 2x2 principal minors: the
+/// product of the two other eigenvalues); rank Q = 4 iff det Q != 0. `normalized` as for
+/// certified_ellipsoid.
+inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
+  if (const int trace_sign = certified_paraboloid_in_doubles(d, normalized)) return trace_sign;
+  return certified_paraboloid_by_intervals(d);
 }
 
 }  // namespace relpos::shape_filter
