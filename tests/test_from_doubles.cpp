@@ -595,3 +595,79 @@ TEST_CASE("the symmetry test on lanes: each mirrored pair, NaN and infinities, b
     std::fesetround(FE_TONEAREST);
   }
 }
+
+TEST_CASE("the ellipsoid's three determinants from shared minors: each at and just off zero, both doors",
+          "[from_doubles]") {
+  // The ellipsoid test reads its 2x2 leading minor, det Q3 and det Q off one set of 2x2 minors
+  // (static bounds, then the magnitudes of the matrix, then intervals, then the exact path). Blocks
+  // built to make each one zero up to the rounding of their entries, nudged by a few ulps either
+  // way, with general (rotated) blocks, blocks much smaller than the last entry (the magnitudes
+  // decide, not the static bounds), both orientations and every rounding mode; from_doubles must
+  // agree with from_matrix, and the one call with the two steps.
+  Gen g;
+  const DoubleMatrix4 paraboloid{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0};
+  int accepted = 0, refused = 0;
+  for (int k = 0; k < 3000; ++k) {
+    // Q3 = L L^T + t I (L 3x3, or of rank 2 for det Q3 near zero), scaled by 2^-s.
+    double l[3][3];
+    for (auto& row : l)
+      for (double& x : row) x = g.uniform(-1, 1);
+    const int target = g.small(0, 3);  // 0: the 2x2 minor, 1: det Q3, 2: det Q, 3: none near zero
+    if (target == 0)
+      for (int i = 0; i < 3; ++i) l[i][1] = l[i][2] = 0, l[i][0] = i < 2 ? l[i][0] : g.uniform(-1, 1);
+    if (target == 1)
+      for (int i = 0; i < 3; ++i) l[i][2] = 0;
+    const double scale = std::ldexp(1.0, -g.small(0, 40));
+    double q[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        q[i][j] = 0;
+        for (int r = 0; r < 3; ++r) q[i][j] += l[i][r] * l[j][r];
+        q[i][j] *= scale;
+      }
+    // Only the 2x2 minor near zero; with q_22 lowered, det Q3 = q_22 (the minor) takes its sign from the
+    // minor's with the orientation's: an indefinite block that only the minor's sign refuses.
+    if (target == 0) q[2][2] += (g.coin() ? 1 : -1) * scale * g.uniform(0.5, 1);
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j) q[j][i] = q[i][j];
+    // The entry nudged, (1, 1) or (2, 2): by a few ulps (only intervals or the exact path can
+    // tell), or by 2^-20 to 2^-48 of itself (the signs in doubles certify it, unless wrong).
+    const int at = target == 0 ? 1 : 2;
+    if (g.coin())
+      for (int step = g.small(-3, 3); step != 0; step += step > 0 ? -1 : 1)
+        q[at][at] = std::nextafter(q[at][at], step > 0 ? 10.0 : -10.0);
+    else
+      q[at][at] *= 1 + (g.coin() ? 1 : -1) * std::ldexp(1.0, -g.small(20, 48));
+    DoubleMatrix4 m{};
+    const double c[3] = {g.uniform(-1, 1), g.uniform(-1, 1), g.uniform(-1, 1)};
+    double e0 = 0;
+    for (int i = 0; i < 3; ++i) {
+      double qc = 0;
+      for (int j = 0; j < 3; ++j) {
+        Gen::set(m, i, j, q[i][j]);
+        qc += q[i][j] * c[j];
+      }
+      Gen::set(m, i, 3, -qc);
+      e0 += c[i] * qc;
+    }
+    // det Q = det Q3 (q_33 - c^T Q3 c): near zero when q_33 is c^T Q3 c up to a few ulps; otherwise
+    // sometimes positive with det Q3 < 0 (an indefinite block that only det Q3's sign refuses).
+    e0 = target == 2 ? e0 : e0 + (g.small(0, 3) == 0 ? 1 : -1) * scale * g.uniform(0.01, 1);
+    if (target == 2 && g.coin())
+      e0 += (g.coin() ? 1 : -1) * std::ldexp(std::fabs(e0), -g.small(20, 48));
+    else
+      for (int step = target == 2 ? g.small(-3, 3) : 0; step != 0; step += step > 0 ? -1 : 1)
+        e0 = std::nextafter(e0, step > 0 ? 10.0 : -10.0);
+    m[15] = e0;
+    if (g.coin())
+      for (double& x : m) x = -x;
+    std::fesetround(kRoundingModes[k % 4]);
+    const auto made = agree<Ellipsoid>(m);
+    const bool decided = same_decision(m, paraboloid);
+    std::fesetround(FE_TONEAREST);
+    CHECK(decided == made.has_value());
+    (made ? accepted : refused) += 1;
+  }
+  CHECK(accepted > 500);
+  CHECK(refused > 500);
+}
