@@ -397,6 +397,19 @@ namespace {
 
 constexpr int kRoundingModes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
 
+/// In rounding mode `mode`: from_doubles of m (a Q) against from_matrix, and the one call on the pair
+/// (e, p) m is part of against the two steps, which must accept it exactly when from_doubles does.
+/// True when m was accepted.
+template <class Q>
+bool both_doors(const DoubleMatrix4& m, const DoubleMatrix4& e, const DoubleMatrix4& p, int mode) {
+  std::fesetround(mode);
+  const auto made = agree<Q>(m);
+  const bool decided = same_decision(e, p);
+  std::fesetround(FE_TONEAREST);
+  CHECK(decided == made.has_value());
+  return made.has_value();
+}
+
 /// What normalize_doubles must give, by another route: the exponent e of the largest |entry| plus
 /// one, and every entry times 2^-e, which must be normal (or zero) to be kept; refused when an
 /// entry is not finite, the largest is zero or subnormal, or some entry would turn subnormal.
@@ -551,13 +564,7 @@ TEST_CASE("axis-aligned paraboloids and the shortcuts of a diagonal block, both 
     }
     if (g.coin())
       for (double& v : p) v = -v;
-    const int mode = kRoundingModes[k % 4];
-    std::fesetround(mode);
-    const auto made = agree<Paraboloid>(p);
-    const bool decided = same_decision(sphere, p);
-    std::fesetround(FE_TONEAREST);
-    CHECK(decided == made.has_value());
-    (made ? accepted : refused) += 1;
+    (both_doors<Paraboloid>(p, sphere, p, kRoundingModes[k % 4]) ? accepted : refused) += 1;
   }
   CHECK(accepted > 1000);
   CHECK(refused > 1000);
@@ -661,12 +668,7 @@ TEST_CASE("the ellipsoid's three determinants from shared minors: each at and ju
     m[15] = e0;
     if (g.coin())
       for (double& x : m) x = -x;
-    std::fesetround(kRoundingModes[k % 4]);
-    const auto made = agree<Ellipsoid>(m);
-    const bool decided = same_decision(m, paraboloid);
-    std::fesetround(FE_TONEAREST);
-    CHECK(decided == made.has_value());
-    (made ? accepted : refused) += 1;
+    (both_doors<Ellipsoid>(m, m, paraboloid, kRoundingModes[k % 4]) ? accepted : refused) += 1;
   }
   CHECK(accepted > 500);
   CHECK(refused > 500);
