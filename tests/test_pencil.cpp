@@ -8,6 +8,7 @@
 
 #include "algebra/between.hpp"
 #include "algebra/exact_pencil.hpp"
+#include "algebra/fixed_pencil.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "algebra/roots.hpp"
@@ -173,6 +174,79 @@ TEST_CASE("the generic pencil code gives the same polynomial over Z, Q and doubl
     const auto sl = special_polynomial<Integer>(pl, el);
     const auto sel = exact_special_polynomial<relpos::PooledInteger>(ppl, epl);
     for (std::size_t k = 0; k < 3; ++k) CHECK(sel[k].to_integer() == sl[k]);
+  }
+}
+
+TEST_CASE("the fixed-size pencil equals the GMP one on entries below 2^62 and declines larger ones", "[pencil]") {
+  // Against the generic formulas on Integer (another order, other arithmetic): random entries of
+  // every length up to 62 bits and every sign, zeros in a paraboloid's places, the largest entries
+  // 2^62 - 1 in a Hadamard sign pattern (coefficients near the 2^257 of the overflow proof, and
+  // every carry and borrow of the 320-bit sums); 2^62 and two-limb entries take the GMP path.
+  using relpos::PooledInteger;
+  using Forms = relpos::forms::MatrixOf<PooledInteger>;
+  Rng g(6262);
+  const long top = (1L << 62) - 1;
+  auto check = [](const std::array<long, 16>& pv, const std::array<long, 16>& ev) {
+    Forms pp, ep;
+    std::array<Integer, 16> pi, ei;
+    for (std::size_t k = 0; k < 16; ++k) {
+      mpz_set_si(pp.a[k].mpz(), pv[k]);
+      mpz_set_si(ep.a[k].mpz(), ev[k]);
+      pi[k] = Integer(pv[k]);
+      ei[k] = Integer(ev[k]);
+    }
+    relpos::Quartic<PooledInteger> f;
+    relpos::Quadratic<PooledInteger> s;
+    REQUIRE(relpos::small_pencil_polynomials(pp, ep, f, s));
+    const auto fz =
+        characteristic_polynomial<Integer>(relpos::forms::MatrixOf<Integer>{pi}, relpos::forms::MatrixOf<Integer>{ei});
+    const auto sz = exact_special_polynomial<PooledInteger>(pp, ep);
+    for (std::size_t k = 0; k < 5; ++k) CHECK(f[k].to_integer() == fz[k]);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(s[k].to_integer() == sz[k].to_integer());
+  };
+  static constexpr int hadamard[4][4] = {{1, 1, 1, 1}, {1, -1, 1, -1}, {1, 1, -1, -1}, {1, -1, -1, 1}};
+  for (int flip = 0; flip < 16; ++flip) {  // +-(2^62 - 1) with det +-16 (2^62 - 1)^4 at mu = 0 and mu -> oo
+    std::array<long, 16> pv{}, ev{};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) {
+        const auto k = static_cast<std::size_t>(4 * r + c);
+        ev[k] = hadamard[r][c] * top * ((flip >> r & 1) ? -1 : 1);
+        pv[k] = hadamard[c][r] * top * ((flip >> c & 1) ? -1 : 1) * (r == 3 ? -1 : 1);
+      }
+    check(pv, ev);
+    for (std::size_t k = 0; k < 16; ++k) pv[k] = (k % 5 == 0 || k == 11 || k == 14) ? pv[k] : 0;  // sparse P
+    check(pv, ev);
+  }
+  for (int i = 0; i < 300; ++i) {
+    std::array<long, 16> pv{}, ev{};
+    for (std::size_t k = 0; k < 16; ++k) {
+      const int bits = static_cast<int>(g.uniform(0, 62));
+      const long mag = bits == 0 ? 0 : static_cast<long>(g.gen() >> (64 - bits));
+      ev[k] = g.chance(50) ? -mag : mag;
+      const long pmag = g.chance(20) ? top : static_cast<long>(g.gen() >> 2);
+      pv[k] = (i % 2 == 0 && !(k % 5 == 0 || k == 11 || k == 14)) ? 0 : (g.chance(50) ? -pmag : pmag);
+    }
+    check(pv, ev);
+  }
+  // 2^62, -2^62 and a two-limb entry: declined, f and s untouched.
+  for (int which = 0; which < 3; ++which) {
+    Forms pp, ep;
+    for (std::size_t k = 0; k < 16; ++k) {
+      mpz_set_si(pp.a[k].mpz(), g.uniform(-1000, 1000));
+      mpz_set_si(ep.a[k].mpz(), g.uniform(-1000, 1000));
+    }
+    mpz_set_ui(ep.a[5].mpz(), 1);
+    mpz_mul_2exp(ep.a[5].mpz(), ep.a[5].mpz(), which == 2 ? 64 : 62);
+    if (which == 1) mpz_neg(ep.a[5].mpz(), ep.a[5].mpz());
+    relpos::Quartic<PooledInteger> f{PooledInteger(7), PooledInteger(7), PooledInteger(7), PooledInteger(7),
+                                     PooledInteger(7)};
+    relpos::Quadratic<PooledInteger> s{PooledInteger(7), PooledInteger(7), PooledInteger(7)};
+    CHECK_FALSE(relpos::small_pencil_polynomials(pp, ep, f, s));
+    CHECK_FALSE(relpos::small_pencil_polynomials(ep, pp, f, s));
+    for (const auto& c : f) CHECK(c.to_integer() == Integer(7));
+    for (const auto& c : s) CHECK(c.to_integer() == Integer(7));
+    mpz_set_si(ep.a[5].mpz(), which == 1 ? -top : top);  // one less in magnitude: taken
+    CHECK(relpos::small_pencil_polynomials(pp, ep, f, s));
   }
 }
 

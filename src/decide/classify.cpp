@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "algebra/exact_pencil.hpp"
+#include "algebra/fixed_pencil.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/rounding.hpp"
 #include "algebra/shape_filter.hpp"
@@ -773,8 +774,14 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
         take_rho(rho, out);
         return anysize::rational_lambda_s(lambda_s);
       }
-      const Quartic<PooledInteger> g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
-      const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
+      // g and h in fixed-size integers when the entries are short (the integer forms of doubles
+      // nearly always are), else with GMP.
+      Quartic<PooledInteger> g;
+      Quadratic<PooledInteger> h;
+      if (!small_pencil_polynomials(pp, ep, g, h)) {
+        g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
+        h = exact_special_polynomial<PooledInteger>(pp, ep);
+      }
       if (pd) sp.twos = mpz_scan1(lp.mpz(), 0);  // split_scale(lp): lp is a power of two
       if (ed) se.twos = mpz_scan1(le.mpz(), 0);
       reported_polynomials(g, h, sp, se, lp, le, out, f, s);
