@@ -43,7 +43,7 @@ struct Int320 {
   /// Without a branch on the signs (they are as good as random: a mispredicted branch per product
   /// would cost more than the arithmetic): |x| |y| in 256 bits, then acc + (P xor m) + (m and 1)
   /// over five limbs with m all ones for a negative term, the two's complement of P in 320 bits.
-  void add(Int128 x, Int128 y, bool negate) {
+  [[gnu::always_inline]] inline void add(Int128 x, Int128 y, bool negate) {
     using U = UInt128;
     const Int128 sx = x >> 127, sy = y >> 127;  // 0 or -1
     const U ax = static_cast<U>((x ^ sx) - sx), ay = static_cast<U>((y ^ sy) - sy);
@@ -101,7 +101,7 @@ inline void sub_product(Int320& acc, const Int128& x, const Int128& y) {
 }
 
 /// Whether every entry of m is below 2^62 in absolute value, then copied into out.
-inline bool small_entries(const forms::MatrixOf<PooledInteger>& m, forms::MatrixOf<Int128>& out) {
+inline bool small_entries(const forms::MatrixOf<PooledInteger>& m, forms::MatrixOf<std::int64_t>& out) {
   for (std::size_t i = 0; i < 16; ++i) {
     const mpz_srcptr z = m.a[i].mpz();
     const int size = z->_mp_size;
@@ -123,12 +123,12 @@ inline bool small_entries(const forms::MatrixOf<PooledInteger>& m, forms::Matrix
 /// false (g and h untouched) otherwise.
 inline bool small_pencil_polynomials(const forms::MatrixOf<PooledInteger>& p, const forms::MatrixOf<PooledInteger>& e,
                                      Quartic<PooledInteger>& g, Quadratic<PooledInteger>& h) {
-  forms::MatrixOf<Int128> ps, es;
+  forms::MatrixOf<std::int64_t> ps, es;  // the minors in 128 bits: products of two 64-bit words
   if (!detail::small_entries(p, ps) || !detail::small_entries(e, es)) return false;
   const Quartic<detail::Int320> gs =
-      exact_characteristic_polynomial<Int128, forms::MatrixOf<Int128>, detail::Int320>(ps, es);
+      exact_characteristic_polynomial<Int128, forms::MatrixOf<std::int64_t>, detail::Int320>(ps, es);
   const Quadratic<detail::Int320> hs =
-      exact_special_polynomial<Int128, forms::MatrixOf<Int128>, detail::Int320>(ps, es);
+      exact_special_polynomial<Int128, forms::MatrixOf<std::int64_t>, detail::Int320>(ps, es);
   for (std::size_t i = 0; i < 5; ++i) gs[i].to_mpz(g[i].mpz());
   for (std::size_t i = 0; i < 3; ++i) hs[i].to_mpz(h[i].mpz());
   return true;
