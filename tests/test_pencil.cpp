@@ -831,6 +831,52 @@ TEST_CASE("integer_form of doubles equals integer_form of their exact rationals"
   }
 }
 
+TEST_CASE("small_integer_form: integer_form in words exactly when every entry is below 2^62", "[forms]") {
+  // Against integer_form: taken iff its largest entry is below 2^62, then the same entries and
+  // l = 2^twos. Exponents spread over windows of 0 to 20 binades around the 2^62 bound, and the
+  // bound itself: 2^61 and (2^53 - 1) 2^9 (62 bits: taken), 2^62 and (2^53 - 1) 2^10 (declined).
+  rt::Rng g(62);
+  auto check = [](const relpos::DoubleMatrix4& d) {
+    Integer l;
+    const auto a = relpos::forms::integer_form(d, l);
+    Integer bound(1);
+    mpz_mul_2exp(bound.mpz(), bound.mpz(), 62);
+    bool fits = true;
+    for (const Integer& x : a.a) fits = fits && CGAL::abs(x) < bound;
+    relpos::forms::MatrixOf<std::int64_t> w;
+    unsigned long twos = 0;
+    const bool taken = relpos::forms::small_integer_form(d, w, twos);
+    CHECK(taken == fits);
+    if (!taken || !fits) return fits;
+    Integer two_to(1);
+    mpz_mul_2exp(two_to.mpz(), two_to.mpz(), twos);
+    CHECK(l == two_to);
+    for (std::size_t i = 0; i < 16; ++i) CHECK(a.a[i] == Integer(static_cast<long>(w.a[i])));
+    return fits;
+  };
+  int taken = 0, declined = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    relpos::DoubleMatrix4 d{};
+    const long window = g.uniform(0, 20), base = g.uniform(-80, 40);
+    for (double& x : d) {
+      if (g.chance(30)) continue;  // 0
+      const long m = g.chance(50) ? g.uniform(-(1L << 53) + 1, (1L << 53) - 1) : g.uniform(-9, 9);
+      x = std::ldexp(static_cast<double>(m), static_cast<int>(base + g.uniform(0, window)));
+    }
+    (check(d) ? taken : declined) += 1;
+  }
+  CHECK(taken > 100);
+  CHECK(declined > 100);
+  const double full = std::ldexp(static_cast<double>((1L << 53) - 1), -52);  // 53 bits, just below 2
+  for (const double a : {1.0, -1.0, full, -full})
+    for (const int k : {61, 62}) {
+      relpos::DoubleMatrix4 d{};
+      d[0] = a;
+      d[5] = std::ldexp(1.0, -k);  // lcm 2^k: a becomes a 2^k, 62 bits for k = 61, 63 for k = 62
+      CHECK(check(d) == (k == 61));
+    }
+}
+
 namespace {
 
 /// The exact sign of h (integer coefficients h[0..n]) at a double x, in rationals.
