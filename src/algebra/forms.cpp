@@ -441,9 +441,18 @@ void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors,
     return;
   }
   unsigned long twos = 0, fives = 0;
-  for (const ScalePower& d : divisors) twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
+  bool factors = false;
+  for (const ScalePower& d : divisors) {
+    twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
+    factors = factors || (d.k > 0 && !d.scale.factors.empty());
+  }
   const unsigned long shift = std::min<unsigned long>(mpz_scan1(z, 0), twos);
   mpz_tdiv_q_2exp(num, z, shift);
+  if (fives == 0 && !factors) {  // powers of two only (doubles): the denominator is one bit
+    mpz_set_ui(den, 0);
+    mpz_setbit(den, twos - shift);
+    return;
+  }
   const unsigned long removed = remove_fives(num, fives);
   set_power_of_five(den, fives - removed);
   mpz_mul_2exp(den, den, twos - shift);
