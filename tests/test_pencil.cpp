@@ -8,7 +8,7 @@
 
 #include "algebra/between.hpp"
 #include "algebra/exact_pencil.hpp"
-#include "algebra/fixed_pencil.hpp"
+#include "filters/fixed_pencil.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "algebra/roots.hpp"

@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "algebra/exact_pencil.hpp"
-#include "algebra/fixed_pencil.hpp"
+#include "filters/fixed_pencil.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/rounding.hpp"
 #include "algebra/shape_filter.hpp"
