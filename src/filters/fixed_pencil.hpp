@@ -37,7 +37,10 @@ __extension__ typedef unsigned __int128 UInt128;  // __extension__: a GCC/Clang 
 struct Int320 {
   std::uint64_t limb[5] = {0, 0, 0, 0, 0};
   Int320() = default;
-  explicit Int320(int zero) { (void)zero; }  // the formulas' NT(0); only 0 is ever passed
+  explicit Int320(int v) {  // the formulas' NT(0): v sign-extended
+    for (std::uint64_t& x : limb) x = v < 0 ? ~std::uint64_t{0} : 0;
+    limb[0] = static_cast<std::uint64_t>(static_cast<std::int64_t>(v));
+  }
 
   /// acc + x y (negate: acc - x y) for |x|, |y| < 2^127 with |x y| < 2^254 (the proof above).
   /// Without a branch on the signs (they are as good as random: a mispredicted branch per product
