@@ -8,6 +8,7 @@
 
 #include "algebra/between.hpp"
 #include "algebra/exact_pencil.hpp"
+#include "filters/fixed_pencil.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "algebra/roots.hpp"
@@ -173,6 +174,79 @@ TEST_CASE("the generic pencil code gives the same polynomial over Z, Q and doubl
     const auto sl = special_polynomial<Integer>(pl, el);
     const auto sel = exact_special_polynomial<relpos::PooledInteger>(ppl, epl);
     for (std::size_t k = 0; k < 3; ++k) CHECK(sel[k].to_integer() == sl[k]);
+  }
+}
+
+TEST_CASE("the fixed-size pencil equals the GMP one on entries below 2^62 and declines larger ones", "[pencil]") {
+  // Against the generic formulas on Integer (another order, other arithmetic): random entries of
+  // every length up to 62 bits and every sign, zeros in a paraboloid's places, the largest entries
+  // 2^62 - 1 in a Hadamard sign pattern (coefficients near the 2^257 of the overflow proof, and
+  // every carry and borrow of the 320-bit sums); 2^62 and two-limb entries take the GMP path.
+  using relpos::PooledInteger;
+  using Forms = relpos::forms::MatrixOf<PooledInteger>;
+  Rng g(6262);
+  const long top = (1L << 62) - 1;
+  auto check = [](const std::array<long, 16>& pv, const std::array<long, 16>& ev) {
+    Forms pp, ep;
+    std::array<Integer, 16> pi, ei;
+    for (std::size_t k = 0; k < 16; ++k) {
+      mpz_set_si(pp.a[k].mpz(), pv[k]);
+      mpz_set_si(ep.a[k].mpz(), ev[k]);
+      pi[k] = Integer(pv[k]);
+      ei[k] = Integer(ev[k]);
+    }
+    relpos::Quartic<PooledInteger> f;
+    relpos::Quadratic<PooledInteger> s;
+    REQUIRE(relpos::small_pencil_polynomials(pp, ep, f, s));
+    const auto fz =
+        characteristic_polynomial<Integer>(relpos::forms::MatrixOf<Integer>{pi}, relpos::forms::MatrixOf<Integer>{ei});
+    const auto sz = exact_special_polynomial<PooledInteger>(pp, ep);
+    for (std::size_t k = 0; k < 5; ++k) CHECK(f[k].to_integer() == fz[k]);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(s[k].to_integer() == sz[k].to_integer());
+  };
+  static constexpr int hadamard[4][4] = {{1, 1, 1, 1}, {1, -1, 1, -1}, {1, 1, -1, -1}, {1, -1, -1, 1}};
+  for (int flip = 0; flip < 16; ++flip) {  // +-(2^62 - 1) with det +-16 (2^62 - 1)^4 at mu = 0 and mu -> oo
+    std::array<long, 16> pv{}, ev{};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) {
+        const auto k = static_cast<std::size_t>(4 * r + c);
+        ev[k] = hadamard[r][c] * top * ((flip >> r & 1) ? -1 : 1);
+        pv[k] = hadamard[c][r] * top * ((flip >> c & 1) ? -1 : 1) * (r == 3 ? -1 : 1);
+      }
+    check(pv, ev);
+    for (std::size_t k = 0; k < 16; ++k) pv[k] = (k % 5 == 0 || k == 11 || k == 14) ? pv[k] : 0;  // sparse P
+    check(pv, ev);
+  }
+  for (int i = 0; i < 300; ++i) {
+    std::array<long, 16> pv{}, ev{};
+    for (std::size_t k = 0; k < 16; ++k) {
+      const int bits = static_cast<int>(g.uniform(0, 62));
+      const long mag = bits == 0 ? 0 : static_cast<long>(g.gen() >> (64 - bits));
+      ev[k] = g.chance(50) ? -mag : mag;
+      const long pmag = g.chance(20) ? top : static_cast<long>(g.gen() >> 2);
+      pv[k] = (i % 2 == 0 && !(k % 5 == 0 || k == 11 || k == 14)) ? 0 : (g.chance(50) ? -pmag : pmag);
+    }
+    check(pv, ev);
+  }
+  // 2^62, -2^62 and a two-limb entry: declined, f and s untouched.
+  for (int which = 0; which < 3; ++which) {
+    Forms pp, ep;
+    for (std::size_t k = 0; k < 16; ++k) {
+      mpz_set_si(pp.a[k].mpz(), g.uniform(-1000, 1000));
+      mpz_set_si(ep.a[k].mpz(), g.uniform(-1000, 1000));
+    }
+    mpz_set_ui(ep.a[5].mpz(), 1);
+    mpz_mul_2exp(ep.a[5].mpz(), ep.a[5].mpz(), which == 2 ? 64 : 62);
+    if (which == 1) mpz_neg(ep.a[5].mpz(), ep.a[5].mpz());
+    relpos::Quartic<PooledInteger> f{PooledInteger(7), PooledInteger(7), PooledInteger(7), PooledInteger(7),
+                                     PooledInteger(7)};
+    relpos::Quadratic<PooledInteger> s{PooledInteger(7), PooledInteger(7), PooledInteger(7)};
+    CHECK_FALSE(relpos::small_pencil_polynomials(pp, ep, f, s));
+    CHECK_FALSE(relpos::small_pencil_polynomials(ep, pp, f, s));
+    for (const auto& c : f) CHECK(c.to_integer() == Integer(7));
+    for (const auto& c : s) CHECK(c.to_integer() == Integer(7));
+    mpz_set_si(ep.a[5].mpz(), which == 1 ? -top : top);  // one less in magnitude: taken
+    CHECK(relpos::small_pencil_polynomials(pp, ep, f, s));
   }
 }
 
@@ -535,10 +609,11 @@ TEST_CASE("divided_by_power: z / scale^k in lowest terms, as rational division g
   rt::Rng g(4242);
   const long rests[] = {1, 3, 7, 9, 21, 1000003, 3 * 3 * 11};
   for (int trial = 0; trial < 2000; ++trial) {
+    // Every 4th scale without fives: with rest 1 (every 7th), a double's power of two alone.
     const auto a = static_cast<unsigned long>(g.uniform(0, 40)), b = static_cast<unsigned long>(g.uniform(0, 40));
     Integer scale = Integer(rests[trial % 7]);
     for (unsigned long i = 0; i < a; ++i) scale *= Integer(2);
-    for (unsigned long i = 0; i < b; ++i) scale *= Integer(5);
+    for (unsigned long i = 0; i < (trial % 4 == 0 ? 0 : b); ++i) scale *= Integer(5);
     Integer z(static_cast<long>(g.uniform(-1000000, 1000000)));
     const auto extra = g.uniform(0, 6);
     for (long i = 0; i < extra; ++i) z *= Integer(trial % 3 == 0 ? 5 : trial % 3 == 1 ? 2 : rests[trial % 7]);
@@ -755,6 +830,52 @@ TEST_CASE("integer_form of doubles equals integer_form of their exact rationals"
     CHECK(l1 == l2);
     for (std::size_t i = 0; i < 16; ++i) CHECK(a.a[i] == b.a[i]);
   }
+}
+
+TEST_CASE("small_integer_form: integer_form in words exactly when every entry is below 2^62", "[forms]") {
+  // Against integer_form: taken iff its largest entry is below 2^62, then the same entries and
+  // l = 2^twos. Exponents spread over windows of 0 to 20 binades around the 2^62 bound, and the
+  // bound itself: 2^61 and (2^53 - 1) 2^9 (62 bits: taken), 2^62 and (2^53 - 1) 2^10 (declined).
+  rt::Rng g(62);
+  auto check = [](const relpos::DoubleMatrix4& d) {
+    Integer l;
+    const auto a = relpos::forms::integer_form(d, l);
+    Integer bound(1);
+    mpz_mul_2exp(bound.mpz(), bound.mpz(), 62);
+    bool fits = true;
+    for (const Integer& x : a.a) fits = fits && CGAL::abs(x) < bound;
+    relpos::forms::MatrixOf<std::int64_t> w;
+    unsigned long twos = 0;
+    const bool taken = relpos::forms::small_integer_form(d, w, twos);
+    CHECK(taken == fits);
+    if (!taken || !fits) return fits;
+    Integer two_to(1);
+    mpz_mul_2exp(two_to.mpz(), two_to.mpz(), twos);
+    CHECK(l == two_to);
+    for (std::size_t i = 0; i < 16; ++i) CHECK(a.a[i] == Integer(static_cast<long>(w.a[i])));
+    return fits;
+  };
+  int taken = 0, declined = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    relpos::DoubleMatrix4 d{};
+    const long window = g.uniform(0, 20), base = g.uniform(-80, 40);
+    for (double& x : d) {
+      if (g.chance(30)) continue;  // 0
+      const long m = g.chance(50) ? g.uniform(-(1L << 53) + 1, (1L << 53) - 1) : g.uniform(-9, 9);
+      x = std::ldexp(static_cast<double>(m), static_cast<int>(base + g.uniform(0, window)));
+    }
+    (check(d) ? taken : declined) += 1;
+  }
+  CHECK(taken > 100);
+  CHECK(declined > 100);
+  const double full = std::ldexp(static_cast<double>((1L << 53) - 1), -52);  // 53 bits, just below 2
+  for (const double a : {1.0, -1.0, full, -full})
+    for (const int k : {61, 62}) {
+      relpos::DoubleMatrix4 d{};
+      d[0] = a;
+      d[5] = std::ldexp(1.0, -k);  // lcm 2^k: a becomes a 2^k, 62 bits for k = 61, 63 for k = 62
+      CHECK(check(d) == (k == 61));
+    }
 }
 
 namespace {

@@ -441,9 +441,18 @@ void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors,
     return;
   }
   unsigned long twos = 0, fives = 0;
-  for (const ScalePower& d : divisors) twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
+  bool factors = false;
+  for (const ScalePower& d : divisors) {
+    twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
+    factors = factors || (d.k > 0 && !d.scale.factors.empty());
+  }
   const unsigned long shift = std::min<unsigned long>(mpz_scan1(z, 0), twos);
   mpz_tdiv_q_2exp(num, z, shift);
+  if (fives == 0 && !factors) {  // powers of two only (doubles): the denominator is one bit
+    mpz_set_ui(den, 0);
+    mpz_setbit(den, twos - shift);
+    return;
+  }
   const unsigned long removed = remove_fives(num, fives);
   set_power_of_five(den, fives - removed);
   mpz_mul_2exp(den, den, twos - shift);
@@ -543,11 +552,13 @@ void integer_form_of(const detail::QuadricMatrix& q, const IntegerFormOut& out) 
   out.split = split_scale(out.l, q.matrix());
 }
 
-void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l) {
-  // d[i] = m_i 2^k_i with m_i odd (|m_i| < 2^53): the lcm of the denominators is 2^top with
-  // top = max(0, -k_i), and the integer entries are m_i 2^(k_i + top).
-  std::int64_t m[16];
-  long k[16], top = 0;
+namespace {
+
+/// d[i] = m_i 2^k_i with m_i odd (|m_i| < 2^53), or m_i = k_i = 0 for d[i] = 0: the lcm of the
+/// denominators is 2^top with top = max(0, -k_i) (returned), and the integer entries are
+/// m_i 2^(k_i + top).
+long dyadic_entries(const DoubleMatrix4& d, std::int64_t (&m)[16], long (&k)[16]) {
+  long top = 0;
   for (std::size_t i = 0; i < 16; ++i) {
     if (d[i] == 0) {
       m[i] = 0;
@@ -559,6 +570,34 @@ void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, In
     k[i] = x.k;
     top = std::max(top, -k[i]);
   }
+  return top;
+}
+
+}  // namespace
+
+bool small_integer_form(const DoubleMatrix4& d, MatrixOf<std::int64_t>& out, unsigned long& twos) {
+  std::int64_t m[16];
+  long k[16];
+  const long top = dyadic_entries(d, m, k);
+  for (std::size_t i = 0; i < 16; ++i) {
+    if (m[i] == 0) {
+      out.a[i] = 0;
+      continue;
+    }
+    // |m_i| 2^shift < 2^62 iff bit_length(|m_i|) + shift <= 62 (|m_i| < 2^53: no overflow below).
+    const long shift = k[i] + top;
+    const auto magnitude = static_cast<std::uint64_t>(m[i] < 0 ? -m[i] : m[i]);
+    if (64 - __builtin_clzll(magnitude) + shift > 62) return false;
+    out.a[i] = m[i] * (std::int64_t{1} << shift);
+  }
+  twos = static_cast<unsigned long>(top);
+  return true;
+}
+
+void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l) {
+  std::int64_t m[16];
+  long k[16];
+  const long top = dyadic_entries(d, m, k);
   for (std::size_t i = 0; i < 16; ++i) {
     mpz_set_si(out[i], static_cast<long>(m[i]));
     if (m[i] != 0) mpz_mul_2exp(out[i], out[i], static_cast<mp_bitcnt_t>(k[i] + top));

@@ -174,6 +174,10 @@ MatrixOf<Integer> integer_form(const Matrix4& m, Integer& l);
 MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l);
 /// The same written into the caller's integers (16 distinct mpz, row-major), e.g. pooled ones.
 void integer_form(const DoubleMatrix4& d, const std::array<mpz_ptr, 16>& out, Integer& l);
+/// The same in machine words when every entry is below 2^62 in absolute value (the integer forms of
+/// doubles nearly always are: 53-bit significands shifted to a common power of two), with the lcm
+/// as its exponent: l = 2^twos. False (out and twos unspecified) otherwise.
+bool small_integer_form(const DoubleMatrix4& d, MatrixOf<std::int64_t>& out, unsigned long& twos);
 
 /// The 16 entries' integers (row-major) of a matrix of fresh Integers (their values not shared) or
 /// PooledIntegers, for the functions that write a form in place.

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "algebra/exact_pencil.hpp"
+#include "filters/fixed_pencil.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/rounding.hpp"
 #include "algebra/shape_filter.hpp"
@@ -750,14 +751,23 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const forms::DecimalShape* es = ed ? nullptr : decimal_shape_of(storage_of(e));
     const forms::DecimalShape* ps = pd ? nullptr : decimal_shape_of(storage_of(p));
     const bool closed = es && ps && es->sphere && !ps->sphere;
-    if (pd)
-      forms::integer_form(*pd, forms::entries(pp), lp);
-    else
-      forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp, !closed});
-    if (ed)
-      forms::integer_form(*ed, forms::entries(ep), le);
-    else
-      forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se, !closed});
+    // Doubles whose integer forms fit in machine words (nearly all): those forms with their scales'
+    // exponents straight from the doubles, and none in GMP (lp and le are not read: the scales are
+    // powers of two; the certificate forms its own from the doubles when it needs one).
+    MatrixOf<std::int64_t> pw, ew;
+    const bool words =
+        pd && ed && forms::small_integer_form(*pd, pw, sp.twos) && forms::small_integer_form(*ed, ew, se.twos);
+    // Else in pooled integers (sp.twos and se.twos of doubles set below, from lp and le).
+    if (!words) {
+      if (pd)
+        forms::integer_form(*pd, forms::entries(pp), lp);
+      else
+        forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp, !closed});
+      if (ed)
+        forms::integer_form(*ed, forms::entries(ep), le);
+      else
+        forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se, !closed});
+    }
     // S^4 f and S^3 s: the thread's, written in place (their limbs kept from call to call).
     thread_local Quartic<Integer> f;
     thread_local Quadratic<Integer> s;
@@ -773,10 +783,17 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
         take_rho(rho, out);
         return anysize::rational_lambda_s(lambda_s);
       }
-      const Quartic<PooledInteger> g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
-      const Quadratic<PooledInteger> h = exact_special_polynomial<PooledInteger>(pp, ep);
-      if (pd) sp.twos = mpz_scan1(lp.mpz(), 0);  // split_scale(lp): lp is a power of two
-      if (ed) se.twos = mpz_scan1(le.mpz(), 0);
+      // g and h in fixed-size integers when the entries are short, else with GMP.
+      Quartic<PooledInteger> g;
+      Quadratic<PooledInteger> h;
+      if (words) {
+        small_pencil_polynomials(pw, ew, g, h);
+      } else if (!small_pencil_polynomials(pp, ep, g, h)) {
+        g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
+        h = exact_special_polynomial<PooledInteger>(pp, ep);
+      }
+      if (!words && pd) sp.twos = mpz_scan1(lp.mpz(), 0);  // split_scale(lp): lp is a power of two
+      if (!words && ed) se.twos = mpz_scan1(le.mpz(), 0);
       reported_polynomials(g, h, sp, se, lp, le, out, f, s);
       // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
       RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);
@@ -788,8 +805,10 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // with their scales only where it reads them (the points of C, TE and TI, not the multipliers
     // of E and I) and cannot take them from the doubles: copied from the pooled ones on first use.
     certificate::Known known{&out.f, &out.s, &out.roots, &ls, nullptr, &f};
-    known.ez_pooled = &ep;
-    known.pz_pooled = &pp;
+    if (!words) {
+      known.ez_pooled = &ep;
+      known.pz_pooled = &pp;
+    }
     if (!(pd && ed) && v.position != Position::E && v.position != Position::I) {
       known.le_pooled = &le;
       known.lp_pooled = &lp;
