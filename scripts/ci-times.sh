@@ -47,7 +47,8 @@ echo
 echo "Compiler CPU seconds (user + system) by build:"
 awk -v root="$work/relpos/" '{
   path = substr($3, 1, length(root)) == root ? substr($3, length(root) + 1) : "(temporary: package tests)"
-  if ((i = index(path, "/tests/check_headers/")) > 0) path = substr(path, 1, i - 1) "/tests/check_headers"
+  if ($3 ~ /\/$/) path = "(no object file: cgal_licences preprocessing)"
+  else if ((i = index(path, "/tests/check_headers/")) > 0) path = substr(path, 1, i - 1) "/tests/check_headers"
   else if ((i = index(path, "/tests/pip-test/")) > 0) path = substr(path, 1, i - 1) "/tests/pip-test (pip install)"
   else if ((i = index(path, "/")) > 0) path = substr(path, 1, i - 1)
   cpu[path] += $1 + $2; n[path]++ }
