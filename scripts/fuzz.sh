@@ -16,7 +16,9 @@ PACKAGES=(clang libclang-rt-14-dev make cmake libcgal-dev libgmp-dev libmpfr-dev
 scripts/install-packages.sh "${PACKAGES[@]}"
 
 SECONDS=0
-cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ >/dev/null
+# -O1 -g1, as for scripts/sanitize.sh (and libFuzzer's documentation): three quarters of the compile
+# time of -O2 -g (doc/testing.md, "Time in CI"); line tables are all a report's stack trace needs.
+cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" >/dev/null
 cmake --build build-fuzz -j"$(nproc)"
 echo "relpos: build-fuzz configured and built in $SECONDS s"
 mkdir -p build-fuzz/artifacts
