@@ -17,5 +17,9 @@ PACKAGES=(g++ make cmake libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost
           python3-distributed python3-setuptools python3-wheel python3-venv)
 scripts/install-packages.sh "${PACKAGES[@]}"
 
+SECONDS=0
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+echo "relpos: $BUILD_DIR configured in $SECONDS s"
+SECONDS=0
 cmake --build "$BUILD_DIR" -j"$(nproc)"
+echo "relpos: $BUILD_DIR built in $SECONDS s"

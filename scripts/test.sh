@@ -4,4 +4,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh build -DRELPOS_BUILD_TESTS=ON
 cd build
+SECONDS=0
 ctest --output-on-failure -j"$(nproc)"
+echo "relpos: CTest run in $SECONDS s"
