@@ -122,7 +122,7 @@ inline bool symmetric(const DoubleMatrix4& d) {
 
 /// Whether Q3 of a symmetric matrix is diagonal: then its minors are products of its diagonal, and
 /// their signs are the signs of the diagonal entries, without arithmetic.
-inline bool diagonal_block(const DoubleMatrix4& n) { return (n[1] == 0) & (n[2] == 0) & (n[6] == 0); }
+inline bool diagonal_block(const DoubleMatrix4& n) { return (n[1] == 0) + (n[2] == 0) + (n[6] == 0) == 3; }
 
 /// The numbers of positive and of negative entries on the diagonal of Q3.
 struct DiagonalSigns {
