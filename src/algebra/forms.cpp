@@ -445,6 +445,10 @@ void divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divisors,
   for (const ScalePower& d : divisors) {
     twos += d.scale.twos * d.k, fives += d.scale.fives * d.k;
     factors = factors || (d.k > 0 && !d.scale.factors.empty());
+    // A split made without its factors (the closed-form evidence's) keeps its rest apart: dividing
+    // by it here would drop the rest.
+    if (d.k > 0 && d.scale.factors.empty() && mpz_cmp_ui(d.scale.rest.mpz(), 1) != 0)
+      throw std::logic_error("divided_by_powers: a split scale without its factors");
   }
   const unsigned long shift = std::min<unsigned long>(mpz_scan1(z, 0), twos);
   mpz_tdiv_q_2exp(num, z, shift);

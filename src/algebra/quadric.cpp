@@ -237,7 +237,9 @@ Words8 words_min(Words8 a, Words8 b) { return a < b ? a : b; }  // pminsw
     top[k] = reinterpret_cast<Words8>(a);
     low[k] = reinterpret_cast<Words8>((a - one) ^ flip);
   }
-  // The two halves folded onto each other: the top word of the first entry is lane 3 (no branch).
+  // The two halves folded onto each other: the top word of the first entry is lane 3 on a
+  // little-endian machine, lane 0 on a big-endian one (no branch).
+  constexpr int kTop = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ ? 3 : 0;
   auto fold = [](Words8 w) { return __builtin_shufflevector(w, w, 4, 5, 6, 7, 0, 1, 2, 3); };
   Words8 hi = words_max(words_max(words_max(top[0], top[1]), words_max(top[2], top[3])),
                         words_max(words_max(top[4], top[5]), words_max(top[6], top[7])));
@@ -245,10 +247,10 @@ Words8 words_min(Words8 a, Words8 b) { return a < b ? a : b; }  // pminsw
                         words_min(words_min(low[4], low[5]), words_min(low[6], low[7])));
   hi = words_max(hi, fold(hi));
   lo = words_min(lo, fold(lo));
-  const int top_exponent = hi[3] >> 4;                           // biased exponent of the largest |entry|
+  const int top_exponent = hi[kTop] >> 4;                        // biased exponent of the largest |entry|
   if (top_exponent == 0 || top_exponent == 0x7ff) return false;  // zero or subnormal; infinity or NaN
   // Biased exponent of the smallest non-zero |entry| (or one less, see above): 0 when it is subnormal.
-  const unsigned lo_word = static_cast<std::uint16_t>(lo[3]) ^ 0x8000u;
+  const unsigned lo_word = static_cast<std::uint16_t>(lo[kTop]) ^ 0x8000u;
   const int lo_exponent = static_cast<int>(lo_word >> 4);
   const int emax = top_exponent - 1023;
   const int k = -emax - 1;

@@ -274,7 +274,8 @@ inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const Dou
   certify_bit(out, DiscriminantSignBits::kGraeffe, sq.graeffe, b.a[7] + b.r[7] * eps);
   // The gap test, when the signs leave only it open: four distinct negative roots and rho > 1.
   // One branch, rarely taken: `&` rather than `&&`, whose first test (the case) is unpredictable.
-  if (gap && ((out.discriminant_case() == DiscriminantCase::AllNegative) && (out.rho_vs_one() == 1))) {
+  if (gap && (static_cast<int>(out.discriminant_case() == DiscriminantCase::AllNegative) &
+              static_cast<int>(out.rho_vs_one() == 1))) {
     double q[anysize::kGapSigns];
     anysize::GapQuantities<double>(f, s).flatten(q);
     std::optional<int> signs[anysize::kGapSigns];
