@@ -462,6 +462,22 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     relpos::forms::MatrixOf<relpos::Integer> pm, em;
     relpos::forms::integer_form_of(storage_of(*fp), {relpos::forms::entries(pm), lp, p_split});
     relpos::forms::integer_form_of(storage_of(*fe), {relpos::forms::entries(em), le, e_split});
+    // The scales alone (what the closed forms read for E and I): the same scale and exponents, and
+    // no entry written.
+    auto scales_only = [](const relpos::detail::QuadricMatrix& q, const relpos::Integer& l,
+                          const relpos::forms::SplitScale& split) {
+      relpos::Integer l_only;
+      relpos::forms::SplitScale split_only;
+      relpos::forms::MatrixOf<relpos::Integer> untouched;
+      relpos::forms::integer_form_of(q, {relpos::forms::entries(untouched), l_only, split_only, false, false});
+      CHECK(l_only == l);
+      CHECK(split_only.twos == split.twos);
+      CHECK(split_only.fives == split.fives);
+      CHECK(split_only.rest == split.rest);
+      for (const relpos::Integer& x : untouched.a) CHECK(x == 0);
+    };
+    scales_only(storage_of(*fp), lp, p_split);
+    scales_only(storage_of(*fe), le, e_split);
     mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
     relpos::Quartic<relpos::Integer> f_multiple;
     relpos::Quadratic<relpos::Integer> s_multiple;

@@ -197,6 +197,8 @@ struct IntegerFormOut {
   /// False when the caller reads only the split's twos, fives and rest: a source may then leave
   /// rest_power and factors empty.
   bool factors = true;
+  /// False when the caller reads only l and the split: a source may then leave `form` unwritten.
+  bool entries = true;
 };
 
 /// integer_form(q.matrix(), l) and split_scale(l, q.matrix()): written by q's exact source from the

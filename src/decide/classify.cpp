@@ -12,7 +12,6 @@
 #include <utility>
 
 #include "algebra/exact_pencil.hpp"
-#include "filters/fixed_pencil.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/rounding.hpp"
 #include "algebra/shape_filter.hpp"
@@ -22,6 +21,7 @@
 #include "anysize/gap.hpp"
 #include "certificate/build.hpp"
 #include "decide/unchecked.hpp"
+#include "filters/fixed_pencil.hpp"
 #include "filters/multiple_roots.hpp"
 #include "filters/pooled_integer.hpp"
 #include "filters/running_bound.hpp"
@@ -751,6 +751,9 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const forms::DecimalShape* es = ed ? nullptr : decimal_shape_of(storage_of(e));
     const forms::DecimalShape* ps = pd ? nullptr : decimal_shape_of(storage_of(p));
     const bool closed = es && ps && es->sphere && !ps->sphere;
+    // The closed forms read only the scales' exponents, and the multipliers of E and I no integer
+    // form: then the forms' entries are not written (nor handed to the certificate).
+    const bool scales_only = closed && (v.position == Position::E || v.position == Position::I);
     // Doubles whose integer forms fit in machine words (nearly all): those forms with their scales'
     // exponents straight from the doubles, and none in GMP (lp and le are not read: the scales are
     // powers of two; the certificate forms its own from the doubles when it needs one).
@@ -762,11 +765,11 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
       if (pd)
         forms::integer_form(*pd, forms::entries(pp), lp);
       else
-        forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp, !closed});
+        forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp, !closed, !scales_only});
       if (ed)
         forms::integer_form(*ed, forms::entries(ep), le);
       else
-        forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se, !closed});
+        forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se, !closed, !scales_only});
     }
     // S^4 f and S^3 s: the thread's, written in place (their limbs kept from call to call).
     thread_local Quartic<Integer> f;
@@ -805,7 +808,7 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // with their scales only where it reads them (the points of C, TE and TI, not the multipliers
     // of E and I) and cannot take them from the doubles: copied from the pooled ones on first use.
     certificate::Known known{&out.f, &out.s, &out.roots, &ls, nullptr, &f};
-    if (!words) {
+    if (!words && !scales_only) {
       known.ez_pooled = &ep;
       known.pz_pooled = &pp;
     }

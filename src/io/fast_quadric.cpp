@@ -487,7 +487,7 @@ class DecimalForm {
     mpz_mul(rest, rest, rest);
     mpz_mul(rest, rest, cof[1]);
     constexpr std::size_t kAt[10][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {1, 1}, {1, 2}, {1, 3}, {2, 2}, {2, 3}, {3, 3}};
-    for (std::size_t k = 0; k < 10; ++k) {
+    for (std::size_t k = 0; k < 10 && out.entries; ++k) {
       const mpz_ptr z = out.form[4 * kAt[k][0] + kAt[k][1]];
       if (mpz_sgn(n_[k]) == 0) {
         mpz_set_ui(z, 0);
