@@ -746,9 +746,7 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
         residue[i] = mpz_fdiv_ui(p[i].n, base);
         product = product * residue[i] % base;
       }
-    // gcd(P, R) for odd R: GMP's word gcd of two odd numbers, P's factors 2 removed.
-    const auto low = static_cast<std::uint64_t>(product);
-    const std::uint64_t g = low == 0 ? base : mpn_gcd_11(low >> __builtin_ctzll(low), base);
+    const std::uint64_t g = std::gcd(static_cast<std::uint64_t>(product), base);  // gcd(0, R) = R
     if (g == 1) continue;
     for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && std::gcd(residue[i] % g, g) > 1;
   }
