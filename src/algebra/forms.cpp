@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <numeric>
 #include <stdexcept>
 
 namespace relpos::forms {
@@ -746,9 +745,9 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
         residue[i] = mpz_fdiv_ui(p[i].n, base);
         product = product * residue[i] % base;
       }
-    const std::uint64_t g = std::gcd(static_cast<std::uint64_t>(product), base);  // gcd(0, R) = R
+    const std::uint64_t g = word_gcd(static_cast<std::uint64_t>(product), base);  // gcd(0, R) = R
     if (g == 1) continue;
-    for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && std::gcd(residue[i] % g, g) > 1;
+    for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && word_gcd(residue[i] % g, g) > 1;
   }
   for (std::size_t i = 0; i < count; ++i) {
     const Pending& x = p[i];
@@ -884,7 +883,7 @@ void sphere_standard_evidence(const DecimalShape& sphere, const DecimalShape& pa
   mpz_set_ui(rho, r.m);
   pending[7] = {rho, 1L + r.e + m.p, static_cast<long>(r.e) + m.q, a_smaller ? 2 : 0, a_smaller ? 0 : 2, out.rho.mpq()};
   // S^4 f and S^3 s: S's rest is lcm(R_a^2, R_b^2) = (R_a R_b / g)^2; q[k] = rest^(k-1) / g^2.
-  const std::uint64_t g = std::gcd(A.rest, B.rest);
+  const std::uint64_t g = word_gcd(A.rest, B.rest);
   const mpz_ptr rest = t[23], q3 = t[24], q4 = t[25], rest4 = t[26];
   mpz_set_ui(rest, A.rest / g);
   mpz_mul_ui(rest, rest, B.rest);
