@@ -9,8 +9,12 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "algebra/word_arithmetic.hpp"
+
 namespace relpos::forms {
 namespace {
+
+using detail::word_gcd;
 
 /// The power of two that brings mx into [1/2, 1) (1 for zero or a non-finite mx), as an interval.
 Interval scale_below_one(double mx) {
@@ -747,8 +751,7 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
       }
     const std::uint64_t g = word_gcd(static_cast<std::uint64_t>(product), base);  // gcd(0, R) = R
     if (g == 1) continue;
-    for (std::size_t i = 0; i < count; ++i)
-      check[i][side] = takes(p[i]) && word_gcd(residue[i][side] % g, g) > 1;
+    for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && word_gcd(residue[i][side] % g, g) > 1;
   }
   for (std::size_t i = 0; i < count; ++i) {
     const Pending& x = p[i];

@@ -21,6 +21,7 @@
 
 #include "algebra/forms.hpp"
 #include "algebra/shape_filter.hpp"
+#include "algebra/word_arithmetic.hpp"
 
 namespace relpos::io::detail {
 namespace {
@@ -476,7 +477,7 @@ class DecimalForm {
     }
     // rest = lcm(R_a^2, R_b^2) = (R_a R_b / g)^2 multiplies the entries without R; the others
     // rest / R_a^2 = (R_b / g)^2 and rest / R_b^2 = (R_a / g)^2.
-    const std::uint64_t g = forms::word_gcd(rest_[1], rest_[2]);
+    const std::uint64_t g = relpos::detail::word_gcd(rest_[1], rest_[2]);
     auto& cof = cof_;
     mpz_set_ui(cof[1], rest_[2] / g);
     mpz_set_ui(cof[2], rest_[1] / g);
