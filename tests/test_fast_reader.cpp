@@ -71,6 +71,20 @@ void check_integer_form(const Q& q) {
   }
 }
 
+/// The truncated doubles the quadric's exact source writes without its matrix (the certificate's
+/// curve search reads them) are those of the exact matrix, entry by entry; the sources of the
+/// closed forms (a decimal_shape()) write them, the others leave them to the matrix.
+template <class Q>
+void check_truncated_doubles(const Q& q) {
+  const relpos::detail::ExactSource* source = storage_of(q).exact_source();
+  if (!source) return;
+  relpos::DoubleMatrix4 d;
+  const bool written = source->truncated_doubles(d);
+  REQUIRE(written == (source->decimal_shape() != nullptr));
+  if (!written) return;
+  for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(q.matrix().a[k]));
+}
+
 /// The full evidence of a pair read by the fast reader (integer forms from the numbers read, reduced
 /// along their split scales) against rational arithmetic on the general reader's matrices: f and s
 /// coefficient by coefficient, rho = (f0 / f4) (s2 / s0) / lambda_s^2 with lambda_s the root of s
@@ -118,6 +132,8 @@ void check_pair(const std::string& e_text, const std::string& p_text, bool doubl
   const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
   check_integer_form(*fe);
   check_integer_form(*fp);
+  check_truncated_doubles(*fe);
+  check_truncated_doubles(*fp);
   check_storage(*fe);
   check_storage(*fp);
   REQUIRE(fe->matrix() == ge.matrix());

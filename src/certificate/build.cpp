@@ -208,6 +208,10 @@ class LazyMatrix {
   /// without building its rationals.
   DoubleMatrix4 doubles() const {
     if (const std::optional<DoubleMatrix4> d = q_.doubles()) return *d;
+    if (const detail::ExactSource* source = storage_of(q_).exact_source(); source && !m_) {
+      DoubleMatrix4 out;
+      if (source->truncated_doubles(out)) return out;
+    }
     return to_doubles(get());
   }
   /// The quadric's own doubles (a copy), if it has them.

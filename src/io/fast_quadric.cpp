@@ -632,6 +632,53 @@ class NumberSource final : public relpos::detail::ExactSource {
     return true;
   }
 
+  /// For a sphere and a standard paraboloid with its vertex on the axis read from decimal text: each
+  /// entry of build()'s matrix made canonical in one scratch rational (as exact() and
+  /// sphere_constant() make it) and truncated, with no matrix of rationals.
+  bool truncated_doubles(DoubleMatrix4& out) const override {
+    if (!has_shape_) return false;
+    struct Scratch {  // one per thread: its limbs are kept
+      mpq_t q;
+      Scratch() { mpq_init(q); }
+      ~Scratch() { mpq_clear(q); }
+      Scratch(const Scratch&) = delete;
+      Scratch& operator=(const Scratch&) = delete;
+    };
+    thread_local Scratch scratch;
+    const mpq_ptr q = scratch.q;
+    const mpz_ptr num = mpq_numref(q), den = mpq_denref(q);
+    // The entry (-1)^minus x of a decimal x, truncated.
+    auto decimal = [&](const Exact& x, bool minus) {
+      if (x.m == 0) return 0.0;
+      mpz_set_ui(num, x.m);
+      if (x.neg != minus) mpz_neg(num, num);
+      times_powers_of_2_and_5(q, x.e, x.e);
+      return forms::truncated_double(q);
+    };
+    const auto& n = recipe_.n;
+    out.fill(0.0);
+    if (shape_.sphere) {
+      out[0] = out[5] = out[10] = 1.0;
+      for (std::size_t i = 0; i < 3; ++i) out[4 * i + 3] = out[12 + i] = decimal(n[i], true);
+      const int low = sphere_sum(n, num);
+      if (mpz_sgn(num) != 0) {
+        times_powers_of_2_and_5(q, 2 * low, 2 * low);
+        out[15] = forms::truncated_double(q);
+      }
+      return true;
+    }
+    for (std::size_t i = 0; i < 2; ++i) {  // 1/a^2, 1/b^2 (forms::inverse_square): a > 0 canonical, inverted, squared
+      decimal(n[3 + i], false);
+      mpz_swap(num, den);
+      mpz_mul(num, num, num);
+      mpz_mul(den, den, den);
+      out[5 * i] = forms::truncated_double(q);
+    }
+    out[11] = out[14] = -0.5;
+    out[15] = decimal(n[2], false);
+    return true;
+  }
+
  private:
   Recipe recipe_;
   bool doubles_;
