@@ -478,8 +478,8 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     relpos::forms::MatrixOf<relpos::Integer> pm, em;
     relpos::forms::integer_form_of(storage_of(*fp), {relpos::forms::entries(pm), lp, p_split});
     relpos::forms::integer_form_of(storage_of(*fe), {relpos::forms::entries(em), le, e_split});
-    // The scales alone (what the closed forms read for E and I): the same scale and exponents, and
-    // no entry written.
+    // The scales alone: the same scale and exponents, and no entry written; the exponents alone
+    // (what the closed forms read for E and I): the same exponents.
     auto scales_only = [](const relpos::detail::QuadricMatrix& q, const relpos::Integer& l,
                           const relpos::forms::SplitScale& split) {
       relpos::Integer l_only;
@@ -490,6 +490,12 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
       CHECK(split_only.twos == split.twos);
       CHECK(split_only.fives == split.fives);
       CHECK(split_only.rest == split.rest);
+      for (const relpos::Integer& x : untouched.a) CHECK(x == 0);
+      relpos::Integer unused;
+      relpos::forms::SplitScale exponents;
+      relpos::forms::integer_form_of(q, {relpos::forms::entries(untouched), unused, exponents, false, false, false});
+      CHECK(exponents.twos == split.twos);
+      CHECK(exponents.fives == split.fives);
       for (const relpos::Integer& x : untouched.a) CHECK(x == 0);
     };
     scales_only(storage_of(*fp), lp, p_split);

@@ -475,6 +475,11 @@ class DecimalForm {
       u2 = std::max(u2, -t2_[k]);
       u5 = std::max(u5, -t5_[k]);
     }
+    if (!out.scale) {  // the exponents alone: no rest, no lcm
+      out.split.twos = static_cast<unsigned long>(u2);
+      out.split.fives = static_cast<unsigned long>(u5);
+      return;
+    }
     // rest = lcm(R_a^2, R_b^2) = (R_a R_b / g)^2 multiplies the entries without R; the others
     // rest / R_a^2 = (R_b / g)^2 and rest / R_b^2 = (R_a / g)^2.
     const std::uint64_t g = relpos::detail::word_gcd(rest_[1], rest_[2]);
