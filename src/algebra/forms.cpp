@@ -723,13 +723,14 @@ struct Pending {
 /// taking min(v_p(n), v_p(R)) more of every prime p (as in divided_by_powers: the caps add up
 /// whether R_a and R_b share primes or not). Those gcds are taken only where one can be more than
 /// 1: for each R, g = gcd(prod (n mod R), R) over the coefficients with R in their denominator is
-/// one word gcd; gcd(n, R) divides g, so g = 1 clears every n, and else gcd(n mod R, g) = 1 clears
-/// that n (the residues are taken before any division by a factor of R_a: a divisor of a number
-/// prime to R_b is prime to R_b).
+/// one word gcd; gcd(n, R) divides g, so g = 1 clears every n, and else gcd(n, R) = gcd(n mod R, g),
+/// a gcd with the short g, is the first step's factor (the residues are taken before any division by
+/// a factor of R_a: a divisor of a number prime to R_b is prime to R_b). Each next step's factor
+/// divides the previous one: gcd(n / c, R) = gcd(n / c, c) for c = gcd(n, R) (a prime of R dividing
+/// n / c divides c with the power it has in R), and gcd(n', R) = gcd(n', c) for a divisor n' of n.
 void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& m, mpz_ptr common) {
   constexpr std::size_t kMost = 8;
-  bool check[kMost][2] = {};
-  std::uint64_t residue[kMost][2] = {};  // n mod R_a, n mod R_b of the n before any division by them
+  std::uint64_t shared[kMost][2] = {};  // gcd(n, R_a), gcd(n, R_b) of the n before any division (0: 1)
   for (std::size_t i = 0; i < count; ++i) {
     if (mpz_sgn(p[i].n) == 0) continue;
     const mp_bitcnt_t twos = mpz_scan1(p[i].n, 0);
@@ -740,18 +741,20 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
   for (int side = 0; side < 2; ++side) {
     const std::uint64_t base = side ? r.b : r.a;
     if (base == 1) continue;
+    std::uint64_t residue[kMost] = {};
     __extension__ unsigned __int128 product = 1;  // residues below 2^64: no overflow
     auto takes = [&](const Pending& x) {
       return mpz_sgn(x.n) != 0 && mpz_cmpabs_ui(x.n, 1) != 0 && (side ? x.jb : x.ja) > 0;
     };
     for (std::size_t i = 0; i < count; ++i)
       if (takes(p[i])) {
-        residue[i][side] = mpz_fdiv_ui(p[i].n, base);
-        product = product * residue[i][side] % base;
+        residue[i] = mpz_fdiv_ui(p[i].n, base);
+        product = product * residue[i] % base;
       }
     const std::uint64_t g = word_gcd(static_cast<std::uint64_t>(product), base);  // gcd(0, R) = R
     if (g == 1) continue;
-    for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && word_gcd(residue[i][side] % g, g) > 1;
+    for (std::size_t i = 0; i < count; ++i)
+      if (takes(p[i])) shared[i][side] = word_gcd(residue[i] % g, g);
   }
   for (std::size_t i = 0; i < count; ++i) {
     const Pending& x = p[i];
@@ -774,17 +777,12 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
       times_power_of_five(x.multiple, x.multiple, static_cast<unsigned long>(fives));
       mpz_mul_2exp(x.multiple, x.multiple, static_cast<unsigned long>(twos));
     }
-    // Each step's gcd c_k = gcd(n_k, R), n_(k+1) = n_k / c_k: the first from n's residue while n is
-    // undivided, each next one gcd(n_(k+1), c_k) (a prime of R dividing n_(k+1) divides n_k, so
-    // c_k, with the same power: min(v_p(n_(k+1)), v_p(R)) = min(v_p(n_(k+1)), v_p(c_k)) since
-    // v_p(n_(k+1)) > 0 means v_p(c_k) = v_p(R)), a gcd with a short word.
     mpz_set_ui(common, 1);
     for (int side = 0; side < 2; ++side) {
-      if (!check[i][side]) continue;
-      const std::uint64_t base = side ? r.b : r.a;
-      std::uint64_t c = base;
+      std::uint64_t c = shared[i][side];  // gcd(n, R) of the undivided n
+      if (c <= 1) continue;
       for (int step = 0; step < (side ? x.jb : x.ja); ++step) {
-        c = step == 0 && mpz_cmp_ui(common, 1) == 0 ? word_gcd(residue[i][side], base) : mpz_gcd_ui(nullptr, x.n, c);
+        if (step > 0 || mpz_cmp_ui(common, 1) != 0) c = mpz_gcd_ui(nullptr, x.n, c);
         if (c == 1) break;
         mpz_divexact_ui(x.n, x.n, c);
         mpz_mul_ui(common, common, c);
