@@ -205,7 +205,8 @@ class LazyMatrix {
   operator const Matrix4&() const { return get(); }  // NOLINT: reads as the matrix it stands for
   const Rational& operator()(int i, int j) const { return get()(i, j); }
   /// The entries as doubles (CGAL::to_double of each): the quadric's own doubles when it has them,
-  /// without building its rationals.
+  /// else those its exact source writes from the numbers read (a decimal sphere or axis
+  /// paraboloid), without building its rationals.
   DoubleMatrix4 doubles() const {
     if (const std::optional<DoubleMatrix4> d = q_.doubles()) return *d;
     if (const detail::ExactSource* source = storage_of(q_).exact_source(); source && !m_) {
