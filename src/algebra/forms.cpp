@@ -93,9 +93,9 @@ double truncated_double(mpq_srcptr x, long k) {
 
 }  // namespace
 
-double truncated_double(mpq_srcptr q) { return truncated_double(q, power_of_two_exponent(mpq_denref(q))); }
-
-double truncated_double(const Rational& q) { return truncated_double(q.mpq()); }
+double truncated_double(const Rational& q) {
+  return truncated_double(q.mpq(), power_of_two_exponent(mpq_denref(q.mpq())));
+}
 
 std::pair<double, double> tight_interval(const Rational& q) {
   const mpq_srcptr x = q.mpq();

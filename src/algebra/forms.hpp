@@ -144,8 +144,6 @@ inline long power_of_two_exponent(mpz_srcptr z) {
 /// mpq_get_d(q) (CGAL::to_double): q truncated towards zero to a double. For a dyadic q in the
 /// normal range without mpq_get_d's division (the searches' points and pulls are dyadic).
 double truncated_double(const Rational& q);
-/// The same for q in canonical form (e.g. a scratch mpq written in place).
-double truncated_double(mpq_srcptr q);
 
 /// CGAL::to_interval(q), the tightest interval of doubles around q, bit for bit: in the normal
 /// range from mpq_get_d (q truncated towards zero) and the next double away from zero, or the point

@@ -642,15 +642,8 @@ class NumberSource final : public relpos::detail::ExactSource {
   /// sphere_constant() make it) and truncated, with no matrix of rationals.
   bool truncated_doubles(DoubleMatrix4& out) const override {
     if (!has_shape_) return false;
-    struct Scratch {  // one per thread: its limbs are kept
-      mpq_t q;
-      Scratch() { mpq_init(q); }
-      ~Scratch() { mpq_clear(q); }
-      Scratch(const Scratch&) = delete;
-      Scratch& operator=(const Scratch&) = delete;
-    };
-    thread_local Scratch scratch;
-    const mpq_ptr q = scratch.q;
+    thread_local Rational scratch;  // one per thread, never copied (so written in place): its limbs are kept
+    const mpq_ptr q = scratch.mpq();
     const mpz_ptr num = mpq_numref(q), den = mpq_denref(q);
     // The entry (-1)^minus x of a decimal x, truncated.
     auto decimal = [&](const Exact& x, bool minus) {
@@ -658,7 +651,7 @@ class NumberSource final : public relpos::detail::ExactSource {
       mpz_set_ui(num, x.m);
       if (x.neg != minus) mpz_neg(num, num);
       times_powers_of_2_and_5(q, x.e, x.e);
-      return forms::truncated_double(q);
+      return forms::truncated_double(scratch);
     };
     const auto& n = recipe_.n;
     out.fill(0.0);
@@ -668,7 +661,7 @@ class NumberSource final : public relpos::detail::ExactSource {
       const int low = sphere_sum(n, num);
       if (mpz_sgn(num) != 0) {
         times_powers_of_2_and_5(q, 2 * low, 2 * low);
-        out[15] = forms::truncated_double(q);
+        out[15] = forms::truncated_double(scratch);
       }
       return true;
     }
@@ -677,7 +670,7 @@ class NumberSource final : public relpos::detail::ExactSource {
       mpz_swap(num, den);
       mpz_mul(num, num, num);
       mpz_mul(den, den, den);
-      out[5 * i] = forms::truncated_double(q);
+      out[5 * i] = forms::truncated_double(scratch);
     }
     out[11] = out[14] = -0.5;
     out[15] = decimal(n[2], false);
