@@ -1064,8 +1064,9 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
   return power_of_two((log2_of(-e_at_centre) - least) / 2);
 }
 
-/// sign(X^T Q X), X = (x, 1), for a matrix of exact doubles and x in the enclosure, when interval
-/// arithmetic decides it; 0 when it does not (an enclosure containing 0, overflow or NaN).
+/// sign(X^T Q X), X = (x, 1), for every matrix Q within the entries' enclosures (exact doubles:
+/// lo = hi) and x in the point's, when interval arithmetic decides it; 0 when it does not (an
+/// enclosure containing 0, overflow or NaN).
 int interval_sign(const detail::EnclosureMatrix4& q, const Enclosure3& x) {
   using I = CGAL::Interval_nt<false>;
   CGAL::Protect_FPU_rounding<true> guard;
