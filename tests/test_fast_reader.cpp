@@ -71,6 +71,20 @@ void check_integer_form(const Q& q) {
   }
 }
 
+/// The truncated doubles the quadric's exact source writes without its matrix (the certificate's
+/// curve search reads them) are those of the exact matrix, entry by entry; the sources of the
+/// closed forms (a decimal_shape()) write them, the others leave them to the matrix.
+template <class Q>
+void check_truncated_doubles(const Q& q) {
+  const relpos::detail::ExactSource* source = storage_of(q).exact_source();
+  if (!source) return;
+  relpos::DoubleMatrix4 d;
+  const bool written = source->truncated_doubles(d);
+  REQUIRE(written == (source->decimal_shape() != nullptr));
+  if (!written) return;
+  for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(q.matrix().a[k]));
+}
+
 /// The full evidence of a pair read by the fast reader (integer forms from the numbers read, reduced
 /// along their split scales) against rational arithmetic on the general reader's matrices: f and s
 /// coefficient by coefficient, rho = (f0 / f4) (s2 / s0) / lambda_s^2 with lambda_s the root of s
@@ -118,6 +132,8 @@ void check_pair(const std::string& e_text, const std::string& p_text, bool doubl
   const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
   check_integer_form(*fe);
   check_integer_form(*fp);
+  check_truncated_doubles(*fe);
+  check_truncated_doubles(*fp);
   check_storage(*fe);
   check_storage(*fp);
   REQUIRE(fe->matrix() == ge.matrix());
@@ -462,8 +478,8 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     relpos::forms::MatrixOf<relpos::Integer> pm, em;
     relpos::forms::integer_form_of(storage_of(*fp), {relpos::forms::entries(pm), lp, p_split});
     relpos::forms::integer_form_of(storage_of(*fe), {relpos::forms::entries(em), le, e_split});
-    // The scales alone (what the closed forms read for E and I): the same scale and exponents, and
-    // no entry written.
+    // The scales alone: the same scale and exponents, and no entry written; the exponents alone
+    // (what the closed forms read for E and I): the same exponents.
     auto scales_only = [](const relpos::detail::QuadricMatrix& q, const relpos::Integer& l,
                           const relpos::forms::SplitScale& split) {
       relpos::Integer l_only;
@@ -474,6 +490,12 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
       CHECK(split_only.twos == split.twos);
       CHECK(split_only.fives == split.fives);
       CHECK(split_only.rest == split.rest);
+      for (const relpos::Integer& x : untouched.a) CHECK(x == 0);
+      relpos::Integer unused;
+      relpos::forms::SplitScale exponents;
+      relpos::forms::integer_form_of(q, {relpos::forms::entries(untouched), unused, exponents, false, false, false});
+      CHECK(exponents.twos == split.twos);
+      CHECK(exponents.fives == split.fives);
       for (const relpos::Integer& x : untouched.a) CHECK(x == 0);
     };
     scales_only(storage_of(*fp), lp, p_split);

@@ -9,12 +9,14 @@
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <functional>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "algebra/roots.hpp"
+#include "algebra/word_arithmetic.hpp"
 #include "support/seed.hpp"
 
 namespace {
@@ -151,6 +153,25 @@ TEST_CASE("residues from the limbs agree with mpz_fdiv_ui", "[roots]") {
   check_residues<4294967295ULL>(rng);  // the largest allowed modulus
   check_residues<2ULL>(rng);
   check_residues<3ULL>(rng);
+}
+
+TEST_CASE("word_gcd agrees with std::gcd", "[roots]") {
+  using relpos::detail::word_gcd;
+  std::mt19937_64 rng(relpos::testing::announced_seed("word gcd", 20261126));
+  const std::uint64_t top = ~std::uint64_t{0};
+  for (const auto& [u, v] : std::vector<std::pair<std::uint64_t, std::uint64_t>>{
+           {0, 0}, {0, 7}, {7, 0}, {1, 1}, {12, 18}, {top, top}, {top, 1}, {top - 1, top}, {1ULL << 63, 1ULL << 40}})
+    CHECK(word_gcd(u, v) == std::gcd(u, v));
+  for (int i = 0; i < 20000; ++i) {
+    // Random words with a random common factor (often > 1), shifted by random powers of two.
+    const std::uint64_t g = (rng() >> (rng() % 64)) | 1;
+    const int bits = 64 - (64 - __builtin_clzll(g));  // room for the cofactors
+    const std::uint64_t a = bits > 0 ? rng() >> (64 - bits) : 1, b = bits > 0 ? rng() >> (64 - bits) : 1;
+    const std::uint64_t u = (a * g) << (rng() % 4 == 0 ? rng() % 8 : 0), v = b * g;
+    CHECK(word_gcd(u, v) == std::gcd(u, v));
+    const std::uint64_t x = rng() >> (rng() % 64), y = rng() >> (rng() % 64);
+    CHECK(word_gcd(x, y) == std::gcd(x, y));
+  }
 }
 
 TEST_CASE("simple_root_structure against roots known by construction", "[roots]") {

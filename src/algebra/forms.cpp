@@ -7,11 +7,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <numeric>
 #include <stdexcept>
+
+#include "algebra/word_arithmetic.hpp"
 
 namespace relpos::forms {
 namespace {
+
+using detail::word_gcd;
 
 /// The power of two that brings mx into [1/2, 1) (1 for zero or a non-finite mx), as an interval.
 Interval scale_below_one(double mx) {
@@ -720,12 +723,14 @@ struct Pending {
 /// taking min(v_p(n), v_p(R)) more of every prime p (as in divided_by_powers: the caps add up
 /// whether R_a and R_b share primes or not). Those gcds are taken only where one can be more than
 /// 1: for each R, g = gcd(prod (n mod R), R) over the coefficients with R in their denominator is
-/// one word gcd; gcd(n, R) divides g, so g = 1 clears every n, and else gcd(n mod R, g) = 1 clears
-/// that n (the residues are taken before any division by a factor of R_a: a divisor of a number
-/// prime to R_b is prime to R_b).
+/// one word gcd; gcd(n, R) divides g, so g = 1 clears every n, and else gcd(n, R) = gcd(n mod R, g),
+/// a gcd with the short g, is the first step's factor (the residues are taken before any division by
+/// a factor of R_a: a divisor of a number prime to R_b is prime to R_b). Each next step's factor
+/// divides the previous one: gcd(n / c, R) = gcd(n / c, c) for c = gcd(n, R) (a prime of R dividing
+/// n / c divides c with the power it has in R), and gcd(n', R) = gcd(n', c) for a divisor n' of n.
 void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& m, mpz_ptr common) {
   constexpr std::size_t kMost = 8;
-  bool check[kMost][2] = {};
+  std::uint64_t shared[kMost][2] = {};  // gcd(n, R_a), gcd(n, R_b) of the n before any division (0: 1)
   for (std::size_t i = 0; i < count; ++i) {
     if (mpz_sgn(p[i].n) == 0) continue;
     const mp_bitcnt_t twos = mpz_scan1(p[i].n, 0);
@@ -746,9 +751,10 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
         residue[i] = mpz_fdiv_ui(p[i].n, base);
         product = product * residue[i] % base;
       }
-    const std::uint64_t g = std::gcd(static_cast<std::uint64_t>(product), base);  // gcd(0, R) = R
+    const std::uint64_t g = word_gcd(static_cast<std::uint64_t>(product), base);  // gcd(0, R) = R
     if (g == 1) continue;
-    for (std::size_t i = 0; i < count; ++i) check[i][side] = takes(p[i]) && std::gcd(residue[i] % g, g) > 1;
+    for (std::size_t i = 0; i < count; ++i)
+      if (takes(p[i])) shared[i][side] = word_gcd(residue[i] % g, g);
   }
   for (std::size_t i = 0; i < count; ++i) {
     const Pending& x = p[i];
@@ -773,10 +779,10 @@ void reduce_all(Pending* p, std::size_t count, const Rests& r, const Multiples& 
     }
     mpz_set_ui(common, 1);
     for (int side = 0; side < 2; ++side) {
-      if (!check[i][side]) continue;
-      const std::uint64_t base = side ? r.b : r.a;
+      std::uint64_t c = shared[i][side];  // gcd(n, R) of the undivided n
+      if (c <= 1) continue;
       for (int step = 0; step < (side ? x.jb : x.ja); ++step) {
-        const unsigned long c = mpz_gcd_ui(nullptr, x.n, base);
+        if (step > 0 || mpz_cmp_ui(common, 1) != 0) c = mpz_gcd_ui(nullptr, x.n, c);
         if (c == 1) break;
         mpz_divexact_ui(x.n, x.n, c);
         mpz_mul_ui(common, common, c);
@@ -884,7 +890,7 @@ void sphere_standard_evidence(const DecimalShape& sphere, const DecimalShape& pa
   mpz_set_ui(rho, r.m);
   pending[7] = {rho, 1L + r.e + m.p, static_cast<long>(r.e) + m.q, a_smaller ? 2 : 0, a_smaller ? 0 : 2, out.rho.mpq()};
   // S^4 f and S^3 s: S's rest is lcm(R_a^2, R_b^2) = (R_a R_b / g)^2; q[k] = rest^(k-1) / g^2.
-  const std::uint64_t g = std::gcd(A.rest, B.rest);
+  const std::uint64_t g = word_gcd(A.rest, B.rest);
   const mpz_ptr rest = t[23], q3 = t[24], q4 = t[25], rest4 = t[26];
   mpz_set_ui(rest, A.rest / g);
   mpz_mul_ui(rest, rest, B.rest);

@@ -199,6 +199,9 @@ struct IntegerFormOut {
   bool factors = true;
   /// False when the caller reads only l and the split: a source may then leave `form` unwritten.
   bool entries = true;
+  /// False when the caller reads only the split's twos and fives (and neither the form nor the
+  /// factors): a source may then leave l and the split's rest unwritten too.
+  bool scale = true;
 };
 
 /// integer_form(q.matrix(), l) and split_scale(l, q.matrix()): written by q's exact source from the

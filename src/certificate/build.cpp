@@ -205,13 +205,20 @@ class LazyMatrix {
   operator const Matrix4&() const { return get(); }  // NOLINT: reads as the matrix it stands for
   const Rational& operator()(int i, int j) const { return get()(i, j); }
   /// The entries as doubles (CGAL::to_double of each): the quadric's own doubles when it has them,
-  /// without building its rationals.
+  /// else those its exact source writes from the numbers read (a decimal sphere or axis
+  /// paraboloid), without building its rationals.
   DoubleMatrix4 doubles() const {
     if (const std::optional<DoubleMatrix4> d = q_.doubles()) return *d;
+    if (const detail::ExactSource* source = storage_of(q_).exact_source(); source && !m_) {
+      DoubleMatrix4 out;
+      if (source->truncated_doubles(out)) return out;
+    }
     return to_doubles(get());
   }
   /// The quadric's own doubles (a copy), if it has them.
   std::optional<DoubleMatrix4> own_doubles() const { return q_.doubles(); }
+  /// The enclosures of the entries stored by the reader of decimal text, if it has them.
+  const detail::EnclosureMatrix4* enclosure() const { return storage_of(q_).enclosure(); }
   /// forms::integer_form of the matrix, from the doubles when the quadric has them.
   forms::MatrixOf<Integer> integer_form(Integer& l) const {
     if (const std::optional<DoubleMatrix4> d = q_.doubles()) return forms::integer_form(*d, l);
@@ -1057,15 +1064,17 @@ Rational body_scale(const Matrix4& e, const Rational& e_at_centre) {
   return power_of_two((log2_of(-e_at_centre) - least) / 2);
 }
 
-/// sign(X^T Q X), X = (x, 1), for a matrix of exact doubles and x in the enclosure, when interval
-/// arithmetic decides it; 0 when it does not (an enclosure containing 0, overflow or NaN).
-int interval_sign(const DoubleMatrix4& q, const Enclosure3& x) {
+/// sign(X^T Q X), X = (x, 1), for every matrix Q within the entries' enclosures (exact doubles:
+/// lo = hi) and x in the point's, when interval arithmetic decides it; 0 when it does not (an
+/// enclosure containing 0, overflow or NaN).
+int interval_sign(const detail::EnclosureMatrix4& q, const Enclosure3& x) {
   using I = CGAL::Interval_nt<false>;
   CGAL::Protect_FPU_rounding<true> guard;
-  I acc(q[15]);
+  auto entry = [&q](std::size_t k) { return I(q.lo[k], q.hi[k]); };
+  I acc = entry(15);
   for (std::size_t i = 0; i < 3; ++i) {
-    I row = I(q[4 * i + 3]) * 2;  // off-diagonal entries appear twice
-    for (std::size_t j = 0; j < 3; ++j) row += I(q[4 * i + j]) * I(x[j]);
+    I row = entry(4 * i + 3) * 2;  // off-diagonal entries appear twice
+    for (std::size_t j = 0; j < 3; ++j) row += entry(4 * i + j) * I(x[j]);
     acc += row * I(x[i]);
   }
   if (acc.inf() > 0) return 1;
@@ -1097,17 +1106,24 @@ void crossing_points(const Pair& pr, Certificate& c) {
     }
     return {*ez_form, *pz_form};
   };
-  // The signs in interval arithmetic on the quadrics' exact doubles first (0: undecided, then the
-  // exact sign on integers decides): most candidates are far enough from both surfaces.
-  auto filtered = [](const std::optional<DoubleMatrix4>& q, const std::optional<Enclosure3>& x) {
+  // The signs in interval arithmetic on the quadrics' entries first (0: undecided, then the exact
+  // sign on integers decides): most candidates are far enough from both surfaces. The entries are
+  // the quadric's exact doubles, else the enclosures the reader of decimal text stored.
+  auto entries = [](const std::optional<DoubleMatrix4>& own, const detail::EnclosureMatrix4* stored) {
+    if (own) return std::optional<detail::EnclosureMatrix4>({*own, *own});
+    return stored ? std::optional<detail::EnclosureMatrix4>(*stored) : std::nullopt;
+  };
+  const std::optional<detail::EnclosureMatrix4> e_entries = entries(ed_own, pr.E.enclosure()),
+                                                p_entries = entries(pr.P.own_doubles(), pr.P.enclosure());
+  auto filtered = [](const std::optional<detail::EnclosureMatrix4>& q, const std::optional<Enclosure3>& x) {
     return q && x ? interval_sign(*q, *x) : 0;
   };
   // `known`: the point's enclosure when the caller has it (a point of doubles), else null.
   auto consider_at = [&](const V3& x, const std::optional<Enclosure3>* known) {
-    const std::optional<Enclosure3> at = !(ed_own && pd_own) ? std::nullopt : known ? *known : enclosure(x);
-    const int se = filtered(ed_own, at);
+    const std::optional<Enclosure3> at = !(e_entries && p_entries) ? std::nullopt : known ? *known : enclosure(x);
+    const int se = filtered(e_entries, at);
     if (se > 0) return;
-    int sp = filtered(pd_own, at);
+    int sp = filtered(p_entries, at);
     if (se == 0 || sp == 0) {
       const IntegerForm::Point xz(x);
       const auto [ez, pz] = exact_forms();
@@ -1126,7 +1142,7 @@ void crossing_points(const Pair& pr, Certificate& c) {
   std::optional<V3> pull = approximate_centre(ed, pull_doubles);
   const std::optional<Enclosure3> pull_at = pull ? std::optional<Enclosure3>(enclosure(pull_doubles)) : std::nullopt;
   auto pull_e_sign = [&]() {
-    const int s = filtered(ed_own, ed_own ? pull_at : std::nullopt);
+    const int s = filtered(e_entries, pull_at);
     return s != 0 ? s : exact_forms().first.sign(IntegerForm::Point(*pull));
   };
   if (pull && pull_e_sign() < 0 && !small_for_doubles(ed, pull_doubles)) {

@@ -752,7 +752,7 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     const forms::DecimalShape* ps = pd ? nullptr : decimal_shape_of(storage_of(p));
     const bool closed = es && ps && es->sphere && !ps->sphere;
     // The closed forms read only the scales' exponents, and the multipliers of E and I no integer
-    // form: then the forms' entries are not written (nor handed to the certificate).
+    // form: then only those exponents are written (no entries, lcm or rest; nothing for the certificate).
     const bool scales_only = closed && (v.position == Position::E || v.position == Position::I);
     // Doubles whose integer forms fit in machine words (nearly all): those forms with their scales'
     // exponents straight from the doubles, and none in GMP (lp and le are not read: the scales are
@@ -765,11 +765,11 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
       if (pd)
         forms::integer_form(*pd, forms::entries(pp), lp);
       else
-        forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp, !closed, !scales_only});
+        forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp, !closed, !scales_only, !scales_only});
       if (ed)
         forms::integer_form(*ed, forms::entries(ep), le);
       else
-        forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se, !closed, !scales_only});
+        forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se, !closed, !scales_only, !scales_only});
     }
     // S^4 f and S^3 s: the thread's, written in place (their limbs kept from call to call).
     thread_local Quartic<Integer> f;

@@ -16,12 +16,12 @@
 #include <cstdint>
 #include <memory>
 #include <new>
-#include <numeric>
 #include <type_traits>
 #include <vector>
 
 #include "algebra/forms.hpp"
 #include "algebra/shape_filter.hpp"
+#include "algebra/word_arithmetic.hpp"
 
 namespace relpos::io::detail {
 namespace {
@@ -475,9 +475,14 @@ class DecimalForm {
       u2 = std::max(u2, -t2_[k]);
       u5 = std::max(u5, -t5_[k]);
     }
+    if (!out.scale) {  // the exponents alone: no rest, no lcm
+      out.split.twos = static_cast<unsigned long>(u2);
+      out.split.fives = static_cast<unsigned long>(u5);
+      return;
+    }
     // rest = lcm(R_a^2, R_b^2) = (R_a R_b / g)^2 multiplies the entries without R; the others
     // rest / R_a^2 = (R_b / g)^2 and rest / R_b^2 = (R_a / g)^2.
-    const std::uint64_t g = std::gcd(rest_[1], rest_[2]);
+    const std::uint64_t g = relpos::detail::word_gcd(rest_[1], rest_[2]);
     auto& cof = cof_;
     mpz_set_ui(cof[1], rest_[2] / g);
     mpz_set_ui(cof[2], rest_[1] / g);
@@ -629,6 +634,46 @@ class NumberSource final : public relpos::detail::ExactSource {
       }
     }
     form.write(out);
+    return true;
+  }
+
+  /// For a sphere and a standard paraboloid with its vertex on the axis read from decimal text: each
+  /// entry of build()'s matrix made canonical in one scratch rational (as exact() and
+  /// sphere_constant() make it) and truncated, with no matrix of rationals.
+  bool truncated_doubles(DoubleMatrix4& out) const override {
+    if (!has_shape_) return false;
+    thread_local Rational scratch;  // one per thread, never copied (so written in place): its limbs are kept
+    const mpq_ptr q = scratch.mpq();
+    const mpz_ptr num = mpq_numref(q), den = mpq_denref(q);
+    // The entry (-1)^minus x of a decimal x, truncated.
+    auto decimal = [&](const Exact& x, bool minus) {
+      if (x.m == 0) return 0.0;
+      mpz_set_ui(num, x.m);
+      if (x.neg != minus) mpz_neg(num, num);
+      times_powers_of_2_and_5(q, x.e, x.e);
+      return forms::truncated_double(scratch);
+    };
+    const auto& n = recipe_.n;
+    out.fill(0.0);
+    if (shape_.sphere) {
+      out[0] = out[5] = out[10] = 1.0;
+      for (std::size_t i = 0; i < 3; ++i) out[4 * i + 3] = out[12 + i] = decimal(n[i], true);
+      const int low = sphere_sum(n, num);
+      if (mpz_sgn(num) != 0) {
+        times_powers_of_2_and_5(q, 2 * low, 2 * low);
+        out[15] = forms::truncated_double(scratch);
+      }
+      return true;
+    }
+    for (std::size_t i = 0; i < 2; ++i) {  // 1/a^2, 1/b^2 (forms::inverse_square): a > 0 canonical, inverted, squared
+      decimal(n[3 + i], false);
+      mpz_swap(num, den);
+      mpz_mul(num, num, num);
+      mpz_mul(den, den, den);
+      out[5 * i] = forms::truncated_double(scratch);
+    }
+    out[11] = out[14] = -0.5;
+    out[15] = decimal(n[2], false);
     return true;
   }
 

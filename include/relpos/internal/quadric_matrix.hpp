@@ -44,6 +44,12 @@ class ExactSource {
   /// The integer form of build()'s matrix and its scale's split (forms::integer_form_of), written
   /// without building the matrix when the source can; false (nothing written) when it cannot.
   virtual bool integer_form(const forms::IntegerFormOut& out) const = 0;
+  /// build()'s entries truncated towards zero (forms::truncated_double of each), written without
+  /// building the matrix when the source can; false (out unspecified) when it cannot.
+  virtual bool truncated_doubles(DoubleMatrix4& out) const {
+    static_cast<void>(out);
+    return false;
+  }
   /// The numbers of a sphere, or of a standard paraboloid with its vertex on the axis, read from
   /// decimal text (forms::sphere_standard_evidence); nullptr for any other source.
   virtual const forms::DecimalShape* decimal_shape() const { return nullptr; }
