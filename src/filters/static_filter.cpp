@@ -11,6 +11,7 @@
 #include "algebra/forms.hpp"
 #include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
+#include "base/hot_targets.hpp"
 
 namespace relpos {
 namespace {
@@ -372,7 +373,7 @@ const std::array<signed char, 16>& detail::rho_vs_one_table() {
   return discriminant_bits(pn, en, need, gap).signs();
 }
 
-[[gnu::flatten]] DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn,
+[[gnu::flatten]] RELPOS_HOT_TARGETS DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn,
                                                                                  const DoubleMatrix4& en,
                                                                                  std::optional<bool>* gap) {
   return discriminant_bits(
