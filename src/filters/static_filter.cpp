@@ -373,9 +373,8 @@ const std::array<signed char, 16>& detail::rho_vs_one_table() {
   return discriminant_bits(pn, en, need, gap).signs();
 }
 
-[[gnu::flatten]] RELPOS_HOT_TARGETS DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn,
-                                                                                 const DoubleMatrix4& en,
-                                                                                 std::optional<bool>* gap) {
+[[gnu::flatten]] RELPOS_HOT_TARGETS DiscriminantSignBits
+static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en, std::optional<bool>* gap) {
   return discriminant_bits(
       pn, en, [](const DiscriminantSignBits&) { return true; }, gap);
 }
