@@ -137,10 +137,16 @@ inline detail::Lanes2 lanes_abs(detail::Lanes2 x) {
 }
 inline detail::Lanes2 lanes_max(detail::Lanes2 x, detail::Lanes2 y) { return x < y ? y : x; }
 
-/// The power of two scale_into_unit() multiplies by for the maximum mx, or 0 where it returns false.
-double unit_scale(double mx) {
-  if (!normal_range(mx) || exponent_of(mx) >= 1022) return 0;
-  return power_of_two(-exponent_of(mx) - 1);
+/// The power of two scale_into_unit() multiplies by for the maximum mx, in both lanes, or 0 where
+/// it returns false. Computed on the bits in the vector register (2^-(e+1) has the biased exponent
+/// 2045 - (e + 1023)): a move to an integer register and back costs more than the arithmetic, and
+/// the filter waits on this number. The range test is a branch, off that path.
+detail::Lanes2 unit_scale(double mx) {
+  if (!normal_range(mx) || exponent_of(mx) >= 1022) return detail::Lanes2{0.0, 0.0};
+  typedef long long Bits2 __attribute__((vector_size(16)));
+  constexpr long long kExponent = 0x7ffLL << 52, kScale = 2045LL << 52;
+  const Bits2 e = reinterpret_cast<Bits2>(detail::Lanes2{mx, mx}) & Bits2{kExponent, kExponent};
+  return reinterpret_cast<detail::Lanes2>(Bits2{kScale, kScale} - e);
 }
 
 /// Scale a matrix so its largest entry is in [1/2, 1); false if an entry would lose bits (subnormal)
@@ -272,11 +278,11 @@ inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const Dou
   Lanes2 e01 = Lanes2{b.f[0], b.f[1]} * w01, e23 = Lanes2{b.f[2], b.f[3]} * w23;
   double e4 = b.f[4] * w4;
   const Lanes2 y = lanes_max(lanes_abs(f01) + e01, lanes_abs(f23) + e23);
-  const double scale = unit_scale(std::max(std::max(y[0], y[1]), std::fabs(f4) + e4));
+  const Lanes2 scale2 = unit_scale(std::max(std::max(y[0], y[1]), std::fabs(f4) + e4));
+  const double scale = scale2[0];
   if (scale == 0) return out;
   const Lanes2 e = lanes_max(e01, e23);
   double eps = std::max(std::max(e[0], e[1]), e4) * scale;
-  const Lanes2 scale2 = {scale, scale};
   f01 *= scale2;
   f23 *= scale2;
   f4 *= scale;
@@ -297,9 +303,10 @@ inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const Dou
   const Lanes2 es01 = Lanes2{b.s[0], b.s[1]} * w01;
   const double es2 = b.s[2] * w2;
   const Lanes2 ys = lanes_abs(s01) + es01;
-  const double s_scale = unit_scale(std::max(std::max(ys[0], ys[1]), std::fabs(s2) + es2));
+  const Lanes2 s_scale2 = unit_scale(std::max(std::max(ys[0], ys[1]), std::fabs(s2) + es2));
+  const double s_scale = s_scale2[0];
   if (s_scale == 0) return out;
-  s01 *= Lanes2{s_scale, s_scale};
+  s01 *= s_scale2;
   s2 *= s_scale;
   s = {s01[0], s01[1], s2};
   eps = std::max(eps, std::max(std::max(es01[0], es01[1]), es2) * s_scale);
