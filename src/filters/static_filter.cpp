@@ -136,23 +136,6 @@ inline detail::Lanes2 lanes_abs(detail::Lanes2 x) {
 }
 inline detail::Lanes2 lanes_max(detail::Lanes2 x, detail::Lanes2 y) { return x < y ? y : x; }
 
-/// (step, step^2) of balancing_step() for f0 = x0, f4 = x4 (both normal), computed on the high 32
-/// bits of each in the vector register (the filter waits on this number; see unit_scale): the biased
-/// exponents E0, E4, t = (E0 - E4) / 4 rounded toward zero as in C, and the doubles with biased
-/// exponents t + 1023 and 2t + 1023 (|t| <= 511: both normal), bit for bit power_of_two(t) and
-/// power_of_two(2 t).
-detail::Lanes2 balancing_powers(double x0, double x4) {
-  typedef int Ints4 __attribute__((vector_size(16)));
-  // Lanes H and 2 + H hold the high words; M0, M1 is the mask of -1 on them, as a pair.
-  constexpr int H = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ ? 1 : 0, M0 = H == 0 ? -1 : 0, M1 = H == 1 ? -1 : 0;
-  const Ints4 e = (reinterpret_cast<Ints4>(detail::Lanes2{x0, x4}) >> 20) & 0x7ff;  // E0 in lane H, E4 in 2 + H
-  const Ints4 d = e - __builtin_shufflevector(e, e, 2, 3, 0, 1);                    // lane H: E0 - E4
-  const Ints4 t = __builtin_shufflevector(d, d, H, H, H, H);                        // every lane: E0 - E4
-  const Ints4 q = (t + ((t >> 31) & 3)) >> 2;                                       // every lane: t
-  const Ints4 k = q + (q & Ints4{0, 0, M0, M1});                                    // (t, 2t) in the high words
-  return reinterpret_cast<detail::Lanes2>(((k + 1023) << 20) & Ints4{M0, M1, M0, M1});
-}
-
 /// The power of two scale_into_unit() multiplies by for the maximum mx, in both lanes, or 0 where
 /// it returns false. Computed on the bits in the vector register (2^-(e+1) has the biased exponent
 /// 2045 - (e + 1023)): a move to an integer register and back costs more than the arithmetic, and
@@ -278,18 +261,17 @@ inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const Dou
   DiscriminantSignBits out;
   // The numbers of static_filter_signs_normalized()'s balancing and scaling, each the same double,
   // with shorter dependency chains and in lanes (the filter waits on them, not on throughput):
-  // - the powers w_i = step^i: step and step^2 are normal (|t| <= 511), from their bits
-  //   (balancing_powers); step^3 = step^2 step and step^4 = step^2 step^2 are each the exact
-  //   power rounded once, as the loop's products are (when 2^(3t) is out of range, 2^(4t) is
-  //   beyond it on the same side);
+  // - the powers w_i = step^i: step and step^2 are normal (|t| <= 511) and exact from their bits;
+  //   step^3 = step^2 step and step^4 = step^2 step^2 are each the exact power rounded once, as the
+  //   loop's products are (when 2^(3t) is out of range, 2^(4t) is beyond it on the same side);
   // - the largest y_i = |f_i w_i| + err_i w_i in any order: every y_i >= 0, and a NaN (f_i = 0,
   //   w_i = inf) implies w_4 = inf, so y_4 = inf, taken last, makes the result inf or NaN, which
   //   unit_scale() rejects as scale_into_unit() rejects the loop's inf;
   // - eps, the largest scaled error, as the largest error scaled (rounding is monotone).
   if (!normal_range(std::fabs(f[0])) || !normal_range(std::fabs(f[4]))) return out;  // balancing_step() 0
-  const Lanes2 w12 = balancing_powers(f[0], f[4]);
-  const double w2 = w12[1], w4 = w2 * w2;
-  const Lanes2 w01 = {1.0, w12[0]}, w23 = Lanes2{w2, w2} * w01;
+  const int t = (exponent_of(f[0]) - exponent_of(f[4])) / 4;
+  const double w1 = power_of_two(t), w2 = power_of_two(2 * t), w4 = w2 * w2;
+  const Lanes2 w01 = {1.0, w1}, w23 = Lanes2{w2, w2} * w01;
   Lanes2 f01 = Lanes2{f[0], f[1]} * w01, f23 = Lanes2{f[2], f[3]} * w23;
   double f4 = f[4] * w4;
   Lanes2 e01 = Lanes2{b.f[0], b.f[1]} * w01, e23 = Lanes2{b.f[2], b.f[3]} * w23;
