@@ -103,6 +103,18 @@ void check_pair(const DoubleMatrix4& pn, const DoubleMatrix4& en, Tally& t) {
     ++t.gaps;
     t.gaps_true += *gap;
   }
+  // The discriminant route balances and scales f and s to the same doubles as the full pipeline
+  // (written separately, in lanes): f's coefficients and the smallness quantities are certified
+  // alike whenever the full pipeline got past the scaling of s (it returns nothing when that fails).
+  bool st_any = false;
+  for (const USign& s : st) st_any = st_any || CGAL::is_certain(s);
+  if (st_any)
+    for (std::size_t i : {0, 1, 2, 3, 4, 11, 12}) {
+      CAPTURE(i);
+      CHECK(CGAL::is_certain(sd[i]) == CGAL::is_certain(st[i]));
+      if (CGAL::is_certain(sd[i]) && CGAL::is_certain(st[i]))
+        CHECK(CGAL::get_certain(sd[i]) == CGAL::get_certain(st[i]));
+    }
   bool all_st = true, all_ss = true;
   for (std::size_t i = 0; i < 13; ++i) {
     ++t.quantities;

@@ -267,19 +267,23 @@ void decide_from_facts(const RootFacts& x, int rho_vs_one, Verdict& v) {
   decide(v);
 }
 
+/// The 3 cases x 3 outcomes of rho of the fast route, generated once from the one written decision
+/// (decide_from_facts).
+struct CaseTable {
+  Verdict v[4][3];
+  CaseTable() {
+    for (int c = 1; c < 4; ++c)
+      for (int rho = -1; rho <= 1; ++rho)
+        decide_from_facts(root_facts_of(static_cast<DiscriminantCase>(c)), rho, v[c][rho + 1]);
+  }
+};
+
 /// The fast route (math.md §8): with Disc(f) != 0 the signs of f's coefficients and of Disc(f) give
 /// every root count (discriminant_case), so the Sturm-Habicht g2 and g1 are not needed; rho is
-/// always compared (the answer reports smallness). The 3 cases x 3 outcomes of rho are generated once
-/// from the one written decision (decide_from_facts). False when the case or rho is uncertain.
-bool decide_from_discriminant(DiscriminantCase c, int rho, Verdict& v) {  // rho: 2 when uncertain
-  struct CaseTable {
-    Verdict v[4][3];
-    CaseTable() {
-      for (int c = 1; c < 4; ++c)
-        for (int rho = -1; rho <= 1; ++rho)
-          decide_from_facts(root_facts_of(static_cast<DiscriminantCase>(c)), rho, v[c][rho + 1]);
-    }
-  };
+/// always compared (the answer reports smallness). False when the case or rho is uncertain.
+/// Always inlined: on every pair's path, where a call and its frame cost as much as the lookup.
+[[gnu::always_inline]] inline bool decide_from_discriminant(DiscriminantCase c, int rho,
+                                                            Verdict& v) {  // rho: 2 when uncertain
   static const CaseTable table;
   if (c == DiscriminantCase::Undecided || rho == 2) return false;
   const Stage stage = v.stage;

@@ -129,6 +129,25 @@ bool scale_into_unit(double* v, double* err, int n) {
   return true;
 }
 
+/// std::fabs and std::max in each lane.
+inline detail::Lanes2 lanes_abs(detail::Lanes2 x) {
+  typedef long long Bits2 __attribute__((vector_size(16)));
+  return reinterpret_cast<detail::Lanes2>(reinterpret_cast<Bits2>(x) & Bits2{INT64_MAX, INT64_MAX});
+}
+inline detail::Lanes2 lanes_max(detail::Lanes2 x, detail::Lanes2 y) { return x < y ? y : x; }
+
+/// The power of two scale_into_unit() multiplies by for the maximum mx, in both lanes, or 0 where
+/// it returns false. Computed on the bits in the vector register (2^-(e+1) has the biased exponent
+/// 2045 - (e + 1023)): a move to an integer register and back costs more than the arithmetic, and
+/// the filter waits on this number. The range test is a branch, off that path.
+detail::Lanes2 unit_scale(double mx) {
+  if (!normal_range(mx) || exponent_of(mx) >= 1022) return detail::Lanes2{0.0, 0.0};
+  typedef long long Bits2 __attribute__((vector_size(16)));
+  constexpr long long kExponent = 0x7ffLL << 52, kScale = 2045LL << 52;
+  const Bits2 e = reinterpret_cast<Bits2>(detail::Lanes2{mx, mx}) & Bits2{kExponent, kExponent};
+  return reinterpret_cast<detail::Lanes2>(Bits2{kScale, kScale} - e);
+}
+
 /// Scale a matrix so its largest entry is in [1/2, 1); false if an entry would lose bits (subnormal)
 /// or the input is not finite (detail::normalize_doubles, quadric_matrix.hpp).
 bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
@@ -239,35 +258,57 @@ inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const Dou
                                               std::optional<bool>* gap) {
   const Bounds& b = bounds();
   auto f = characteristic_polynomial_lanes(pn, en);  // bit for bit the generic template
-  double ef[5];
-  for (int i = 0; i < 5; ++i) ef[i] = b.f[i];
   DiscriminantSignBits out;
-  const double step = balancing_step(f);
-  if (step == 0) return out;
-  double w = 1;
-  for (int i = 0; i < 5; ++i, w *= step) {
-    f[static_cast<std::size_t>(i)] *= w;
-    ef[i] *= w;
-  }
-  if (!scale_into_unit(f.data(), ef, 5)) return out;
-  certify_bit_pair(out, 0, Lanes2{f[0], f[1]}, Lanes2{ef[0], ef[1]});
-  certify_bit_pair(out, 2, Lanes2{f[2], f[3]}, Lanes2{ef[2], ef[3]});
-  certify_bit(out, 4, f[4], ef[4]);
-  double eps = 0;
-  for (int i = 0; i < 5; ++i) eps = std::max(eps, ef[i]);
+  // The numbers of static_filter_signs_normalized()'s balancing and scaling, each the same double,
+  // with shorter dependency chains and in lanes (the filter waits on them, not on throughput):
+  // - the powers w_i = step^i: step and step^2 are normal (|t| <= 511) and exact from their bits;
+  //   step^3 = step^2 step and step^4 = step^2 step^2 are each the exact power rounded once, as the
+  //   loop's products are (when 2^(3t) is out of range, 2^(4t) is beyond it on the same side);
+  // - the largest y_i = |f_i w_i| + err_i w_i in any order: every y_i >= 0, and a NaN (f_i = 0,
+  //   w_i = inf) implies w_4 = inf, so y_4 = inf, taken last, makes the result inf or NaN, which
+  //   unit_scale() rejects as scale_into_unit() rejects the loop's inf;
+  // - eps, the largest scaled error, as the largest error scaled (rounding is monotone).
+  if (!normal_range(std::fabs(f[0])) || !normal_range(std::fabs(f[4]))) return out;  // balancing_step() 0
+  const int t = (exponent_of(f[0]) - exponent_of(f[4])) / 4;
+  const double w1 = power_of_two(t), w2 = power_of_two(2 * t), w4 = w2 * w2;
+  const Lanes2 w01 = {1.0, w1}, w23 = Lanes2{w2, w2} * w01;
+  Lanes2 f01 = Lanes2{f[0], f[1]} * w01, f23 = Lanes2{f[2], f[3]} * w23;
+  double f4 = f[4] * w4;
+  Lanes2 e01 = Lanes2{b.f[0], b.f[1]} * w01, e23 = Lanes2{b.f[2], b.f[3]} * w23;
+  double e4 = b.f[4] * w4;
+  const Lanes2 y = lanes_max(lanes_abs(f01) + e01, lanes_abs(f23) + e23);
+  const Lanes2 scale2 = unit_scale(std::max(std::max(y[0], y[1]), std::fabs(f4) + e4));
+  const double scale = scale2[0];
+  if (scale == 0) return out;
+  const Lanes2 e = lanes_max(e01, e23);
+  double eps = std::max(std::max(e[0], e[1]), e4) * scale;
+  f01 *= scale2;
+  f23 *= scale2;
+  f4 *= scale;
+  e01 *= scale2;
+  e23 *= scale2;
+  e4 *= scale;
+  certify_bit_pair(out, 0, f01, e01);
+  certify_bit_pair(out, 2, f23, e23);
+  certify_bit(out, 4, f4, e4);
   if (!(eps <= kEps0)) return out;
+  f = {f01[0], f01[1], f23[0], f23[1], f4};
   // The same template as the bound was derived from: the same operations in the same order.
   certify_bit(out, DiscriminantSignBits::kDisc, discriminant_times_27(f), b.a[kDisc27] + b.r[kDisc27] * eps);
   if (!need(out)) return out;
   auto s = special_polynomial_lanes(pn, en);  // bit for bit the generic template
-  double es[3];
-  w = 1;
-  for (int i = 0; i < 3; ++i, w *= step) {
-    s[static_cast<std::size_t>(i)] *= w;
-    es[i] = b.s[i] * w;
-  }
-  if (!scale_into_unit(s.data(), es, 3)) return out;
-  for (int i = 0; i < 3; ++i) eps = std::max(eps, es[i]);
+  Lanes2 s01 = Lanes2{s[0], s[1]} * w01;
+  double s2 = s[2] * w2;
+  const Lanes2 es01 = Lanes2{b.s[0], b.s[1]} * w01;
+  const double es2 = b.s[2] * w2;
+  const Lanes2 ys = lanes_abs(s01) + es01;
+  const Lanes2 s_scale2 = unit_scale(std::max(std::max(ys[0], ys[1]), std::fabs(s2) + es2));
+  const double s_scale = s_scale2[0];
+  if (s_scale == 0) return out;
+  s01 *= s_scale2;
+  s2 *= s_scale;
+  s = {s01[0], s01[1], s2};
+  eps = std::max(eps, std::max(std::max(es01[0], es01[1]), es2) * s_scale);
   if (!(eps <= kEps0)) return out;
   SmallnessQuantities<double> sq(f, s);
   certify_bit(out, DiscriminantSignBits::kVertex, sq.vertex, b.a[6] + b.r[6] * eps);
@@ -327,6 +368,18 @@ const std::array<signed char, 16>& detail::rho_vs_one_table() {
   return table;
 }
 
+// RELPOS_HOT_TARGETS: a hot function compiled twice on x86-64 (ELF, GCC), for AVX2 and for the
+// baseline, one of the two chosen when the library is loaded (target_clones: an ifunc). Only the
+// encoding changes -- three operands and unaligned memory operands, about a sixth fewer instructions
+// on decide_position's path -- not the arithmetic: the same IEEE double operations in the same order
+// (AVX2 brings no FMA, and contraction is off), so every value, error bound and sign is the same
+// double on either path. GCC only: Clang refuses target_clones on a function that is also flatten.
+#if defined(__x86_64__) && defined(__ELF__) && defined(__GNUC__) && !defined(__clang__)
+#define RELPOS_HOT_TARGETS __attribute__((target_clones("avx2", "default")))
+#else
+#define RELPOS_HOT_TARGETS
+#endif
+
 // flatten: the balancing and scaling helpers inlined (out of line they cost 15 % of decide_position).
 [[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& pn,
                                                                            const DoubleMatrix4& en,
@@ -338,9 +391,8 @@ const std::array<signed char, 16>& detail::rho_vs_one_table() {
   return discriminant_bits(pn, en, need, gap).signs();
 }
 
-[[gnu::flatten]] DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn,
-                                                                                 const DoubleMatrix4& en,
-                                                                                 std::optional<bool>* gap) {
+[[gnu::flatten]] RELPOS_HOT_TARGETS DiscriminantSignBits
+static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en, std::optional<bool>* gap) {
   return discriminant_bits(
       pn, en, [](const DiscriminantSignBits&) { return true; }, gap);
 }
