@@ -368,18 +368,6 @@ const std::array<signed char, 16>& detail::rho_vs_one_table() {
   return table;
 }
 
-// RELPOS_HOT_TARGETS: a hot function compiled twice on x86-64 (ELF, GCC), for AVX2 and for the
-// baseline, one of the two chosen when the library is loaded (target_clones: an ifunc). Only the
-// encoding changes -- three operands and unaligned memory operands, about a sixth fewer instructions
-// on decide_position's path -- not the arithmetic: the same IEEE double operations in the same order
-// (AVX2 brings no FMA, and contraction is off), so every value, error bound and sign is the same
-// double on either path. GCC only: Clang refuses target_clones on a function that is also flatten.
-#if defined(__x86_64__) && defined(__ELF__) && defined(__GNUC__) && !defined(__clang__)
-#define RELPOS_HOT_TARGETS __attribute__((target_clones("avx2", "default")))
-#else
-#define RELPOS_HOT_TARGETS
-#endif
-
 // flatten: the balancing and scaling helpers inlined (out of line they cost 15 % of decide_position).
 [[gnu::flatten]] DecisionSigns static_filter_discriminant_signs_normalized(const DoubleMatrix4& pn,
                                                                            const DoubleMatrix4& en,
@@ -391,10 +379,79 @@ const std::array<signed char, 16>& detail::rho_vs_one_table() {
   return discriminant_bits(pn, en, need, gap).signs();
 }
 
-[[gnu::flatten]] RELPOS_HOT_TARGETS DiscriminantSignBits
-static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en, std::optional<bool>* gap) {
-  return discriminant_bits(
-      pn, en, [](const DiscriminantSignBits&) { return true; }, gap);
+namespace {
+
+/// The need of static_filter_discriminant_bits_normalized(): smallness always computed.
+struct AlwaysNeeded {
+  bool operator()(const DiscriminantSignBits&) const { return true; }
+};
+
+[[gnu::flatten]] DiscriminantSignBits bits_baseline(const DoubleMatrix4& pn, const DoubleMatrix4& en,
+                                                    std::optional<bool>* gap) {
+  return discriminant_bits(pn, en, AlwaysNeeded{}, gap);
+}
+
+}  // namespace
+
+// On x86-64 (ELF, GCC) static_filter_discriminant_bits_normalized() is the same template compiled
+// twice, for AVX2 and for the baseline, one of the two chosen once when the library is loaded (an
+// ifunc: the call costs what any call into the library costs). Only the encoding changes -- three
+// operands and unaligned memory operands, about a sixth fewer instructions on decide_position's
+// path -- not the arithmetic: the same IEEE double operations in the same order (AVX2 brings no FMA,
+// and contraction is off), so every value, error bound and sign is the same double on either path;
+// tests run both copies (detail::static_filter_discriminant_bits_copy). Elsewhere (Clang, other
+// platforms) only the baseline copy is built.
+#if defined(__x86_64__) && defined(__ELF__) && defined(__GNUC__) && !defined(__clang__)
+#define RELPOS_AVX2_COPY 1
+
+namespace {
+
+[[gnu::flatten, gnu::target("avx2")]] DiscriminantSignBits bits_avx2(const DoubleMatrix4& pn, const DoubleMatrix4& en,
+                                                                     std::optional<bool>* gap) {
+  return discriminant_bits(pn, en, AlwaysNeeded{}, gap);
+}
+
+bool cpu_has_avx2() {
+  __builtin_cpu_init();  // a resolver may run before the constructors that would do it
+  return __builtin_cpu_supports("avx2");
+}
+
+}  // namespace
+
+using BitsFunction = DiscriminantSignBits(const DoubleMatrix4&, const DoubleMatrix4&, std::optional<bool>*);
+
+// C linkage: the ifunc attribute names its resolver by the assembler name.
+extern "C" {
+static BitsFunction* relpos_resolve_static_filter_bits() { return cpu_has_avx2() ? bits_avx2 : bits_baseline; }
+}
+
+DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en,
+                                                                std::optional<bool>* gap)
+    __attribute__((ifunc("relpos_resolve_static_filter_bits")));
+#else
+#define RELPOS_AVX2_COPY 0
+
+[[gnu::flatten]] DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn,
+                                                                                 const DoubleMatrix4& en,
+                                                                                 std::optional<bool>* gap) {
+  return bits_baseline(pn, en, gap);
+}
+#endif
+
+bool detail::static_filter_copy_runs(FilterCopy copy) {
+#if RELPOS_AVX2_COPY
+  if (copy == FilterCopy::avx2) return cpu_has_avx2();
+#endif
+  return copy == FilterCopy::baseline;
+}
+
+DiscriminantSignBits detail::static_filter_discriminant_bits_copy(FilterCopy copy, const DoubleMatrix4& pn,
+                                                                  const DoubleMatrix4& en, std::optional<bool>* gap) {
+#if RELPOS_AVX2_COPY
+  if (copy == FilterCopy::avx2) return bits_avx2(pn, en, gap);
+#endif
+  (void)copy;
+  return bits_baseline(pn, en, gap);
 }
 
 }  // namespace relpos

@@ -81,4 +81,17 @@ inline int DiscriminantSignBits::rho_vs_one() const {
 DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& p, const DoubleMatrix4& e,
                                                                 std::optional<bool>* gap);
 
+namespace detail {
+/// The copies of static_filter_discriminant_bits_normalized() the build holds: the baseline one
+/// everywhere, an AVX2 one on x86-64 with GCC (the same source and IEEE operations; one of them is
+/// chosen when the library is loaded). For tests, which must run both to see they agree.
+enum class FilterCopy { baseline, avx2 };
+/// True when `copy` is built and this CPU can run it.
+bool static_filter_copy_runs(FilterCopy copy);
+/// static_filter_discriminant_bits_normalized() computed by `copy`; requires
+/// static_filter_copy_runs(copy).
+DiscriminantSignBits static_filter_discriminant_bits_copy(FilterCopy copy, const DoubleMatrix4& p,
+                                                          const DoubleMatrix4& e, std::optional<bool>* gap);
+}  // namespace detail
+
 }  // namespace relpos
