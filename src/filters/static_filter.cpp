@@ -420,9 +420,15 @@ bool cpu_has_avx2() {
 
 using BitsFunction = DiscriminantSignBits(const DoubleMatrix4&, const DoubleMatrix4&, std::optional<bool>*);
 
-// C linkage: the ifunc attribute names its resolver by the assembler name.
+// C linkage: the ifunc attribute names its resolver by the assembler name. The resolver runs while
+// the loader relocates, before any constructor and before a sanitizer's runtime has mapped its shadow
+// memory: it must not be instrumented (an instrumented load of the CPU model faults there).
 extern "C" {
-static BitsFunction* relpos_resolve_static_filter_bits() { return cpu_has_avx2() ? bits_avx2 : bits_baseline; }
+[[gnu::no_sanitize_address, gnu::no_sanitize_undefined, gnu::no_instrument_function]] static BitsFunction*
+relpos_resolve_static_filter_bits() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") ? bits_avx2 : bits_baseline;
+}
 }
 
 DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn, const DoubleMatrix4& en,
