@@ -411,8 +411,11 @@ namespace {
   return discriminant_bits(pn, en, AlwaysNeeded{}, gap);
 }
 
-bool cpu_has_avx2() {
-  __builtin_cpu_init();  // a resolver may run before the constructors that would do it
+// Called by the ifunc resolver below, which runs while the loader relocates, before any constructor
+// (hence the explicit init) and before a sanitizer's runtime has mapped its shadow memory: it must not
+// be instrumented (an instrumented load of the CPU model faults there).
+[[gnu::no_sanitize_address, gnu::no_sanitize_undefined, gnu::no_instrument_function]] bool cpu_has_avx2() {
+  __builtin_cpu_init();
   return __builtin_cpu_supports("avx2");
 }
 
@@ -420,14 +423,12 @@ bool cpu_has_avx2() {
 
 using BitsFunction = DiscriminantSignBits(const DoubleMatrix4&, const DoubleMatrix4&, std::optional<bool>*);
 
-// C linkage: the ifunc attribute names its resolver by the assembler name. The resolver runs while
-// the loader relocates, before any constructor and before a sanitizer's runtime has mapped its shadow
-// memory: it must not be instrumented (an instrumented load of the CPU model faults there).
+// C linkage: the ifunc attribute names its resolver by the assembler name. Not instrumented, as
+// cpu_has_avx2().
 extern "C" {
 [[gnu::no_sanitize_address, gnu::no_sanitize_undefined, gnu::no_instrument_function]] static BitsFunction*
 relpos_resolve_static_filter_bits() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") ? bits_avx2 : bits_baseline;
+  return cpu_has_avx2() ? bits_avx2 : bits_baseline;
 }
 }
 

@@ -356,14 +356,19 @@ void times_powers_of_2_and_5(mpq_ptr r, long t2, long t5) {
   if (t2 < 0) mpz_mul_2exp(den, den, static_cast<unsigned long>(-t2));
 }
 
+/// The value m 10^e of a decimal number x != 0, negated when `minus`, written into r in canonical form.
+void decimal_value(const Exact& x, bool minus, mpq_ptr r) {
+  mpz_set_ui(mpq_numref(r), x.m);
+  if (x.neg != minus) mpz_neg(mpq_numref(r), mpq_numref(r));
+  times_powers_of_2_and_5(r, x.e, x.e);
+}
+
 /// The exact value of a number as read: m 10^e, or the double itself (a point enclosure).
 Rational exact(const Exact& x, bool doubles) {
   if (doubles) return Rational(std::ldexp(x.neg ? -double(x.m) : double(x.m), x.e - 53));
   if (x.m == 0) return Rational(0);
   Rational q;  // fresh: its mpq is not shared
-  mpz_set_ui(mpq_numref(q.mpq()), x.m);
-  if (x.neg) mpz_neg(mpq_numref(q.mpq()), mpq_numref(q.mpq()));
-  times_powers_of_2_and_5(q.mpq(), x.e, x.e);
+  decimal_value(x, false, q.mpq());
   return q;
 }
 
@@ -398,14 +403,20 @@ int sphere_sum(const std::array<Exact, 16>& n, mpz_ptr sum) {
   return low;
 }
 
-/// The entry c0^2 + c1^2 + c2^2 - r^2 of Ellipsoid::sphere for decimal numbers: the integer sum over
-/// the smallest power of ten, then reduced by its factors 2 and 5 alone (no rational additions).
+/// The entry c0^2 + c1^2 + c2^2 - r^2 of Ellipsoid::sphere for decimal numbers, written into r: the
+/// integer sum over the smallest power of ten, then reduced by its factors 2 and 5 alone (no rational
+/// additions). False (r unspecified) when the entry is zero.
+bool sphere_constant_value(const std::array<Exact, 16>& n, mpq_ptr r) {
+  const int low = sphere_sum(n, mpq_numref(r));
+  if (mpz_sgn(mpq_numref(r)) == 0) return false;
+  times_powers_of_2_and_5(r, 2 * low, 2 * low);
+  return true;
+}
+
+/// sphere_constant_value() as a Rational.
 Rational sphere_constant(const std::array<Exact, 16>& n) {
   Rational q;  // fresh: its mpq is not shared
-  const int low = sphere_sum(n, mpq_numref(q.mpq()));
-  if (mpz_sgn(mpq_numref(q.mpq())) == 0) return Rational(0);
-  times_powers_of_2_and_5(q.mpq(), 2 * low, 2 * low);
-  return q;
+  return sphere_constant_value(n, q.mpq()) ? q : Rational(0);
 }
 
 /// 5^k for k < 28 (< 2^64): the powers of five of decimal text, multiplied in one word.
@@ -638,8 +649,9 @@ class NumberSource final : public relpos::detail::ExactSource {
   }
 
   /// For a sphere and a standard paraboloid with its vertex on the axis read from decimal text: each
-  /// entry of build()'s matrix made canonical in one scratch rational (as exact() and
-  /// sphere_constant() make it) and truncated, with no matrix of rationals.
+  /// entry of build()'s matrix made canonical in one scratch rational (decimal_value() and
+  /// sphere_constant_value(), as exact() and sphere_constant() make it) and truncated, with no
+  /// matrix of rationals.
   bool truncated_doubles(DoubleMatrix4& out) const override {
     if (!has_shape_) return false;
     thread_local Rational scratch;  // one per thread, never copied (so written in place): its limbs are kept
@@ -648,9 +660,7 @@ class NumberSource final : public relpos::detail::ExactSource {
     // The entry (-1)^minus x of a decimal x, truncated.
     auto decimal = [&](const Exact& x, bool minus) {
       if (x.m == 0) return 0.0;
-      mpz_set_ui(num, x.m);
-      if (x.neg != minus) mpz_neg(num, num);
-      times_powers_of_2_and_5(q, x.e, x.e);
+      decimal_value(x, minus, q);
       return forms::truncated_double(scratch);
     };
     const auto& n = recipe_.n;
@@ -658,11 +668,7 @@ class NumberSource final : public relpos::detail::ExactSource {
     if (shape_.sphere) {
       out[0] = out[5] = out[10] = 1.0;
       for (std::size_t i = 0; i < 3; ++i) out[4 * i + 3] = out[12 + i] = decimal(n[i], true);
-      const int low = sphere_sum(n, num);
-      if (mpz_sgn(num) != 0) {
-        times_powers_of_2_and_5(q, 2 * low, 2 * low);
-        out[15] = forms::truncated_double(scratch);
-      }
+      if (sphere_constant_value(n, q)) out[15] = forms::truncated_double(scratch);
       return true;
     }
     for (std::size_t i = 0; i < 2; ++i) {  // 1/a^2, 1/b^2 (forms::inverse_square): a > 0 canonical, inverted, squared
