@@ -9,6 +9,7 @@
 #include <cstring>
 #include <utility>
 
+#include "algebra/double_bits.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
@@ -202,14 +203,6 @@ std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m) {
 namespace detail {
 
 namespace {
-
-/// 2^k for -1022 <= k <= 1023, from the bits (std::ldexp is an out-of-line libm call).
-double power_of_two(int k) {
-  const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
-  double x;
-  std::memcpy(&x, &bits, sizeof x);
-  return x;
-}
 
 /// Two 64-bit lanes of bits and eight 16-bit lanes (GCC/Clang vector extension; SSE2 on x86-64).
 typedef long long Bits2 __attribute__((vector_size(16)));
@@ -618,7 +611,7 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
 }
 
 // The same steps as Ellipsoid::from_doubles with the paraboloid's certifier, written out: a template
-// over both would have to be a friend of both classes for these six lines.
+// over both would have to be a friend of both classes for these few lines.
 [[gnu::flatten]] Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
   Paraboloid out(p);
   const DoubleMatrix4* normalized = out.m_.filter_doubles();

@@ -347,7 +347,7 @@ inline int ellipsoid_before_det_if_nearest(const DoubleMatrix4* normalized) {
 /// The same for an elliptic paraboloid: the sign of the trace of Q3 when E2 > 0 and the trace are
 /// certain and det Q3 = 0 exactly; else 0. A diagonal Q3 (an axis-aligned paraboloid, the usual
 /// input) is decided by signs alone: semidefinite of rank 2 iff exactly one diagonal entry is zero
-/// and the other two share a sign. det Q < 0 is certified_paraboloid's, or the pencil's leading
+/// and the other two share a sign. det Q < 0 is certified_paraboloid_in_doubles's, or the pencil's leading
 /// coefficient det P (math.md §2).
 inline int paraboloid_before_det(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
   if (!normalized) return 0;
@@ -386,8 +386,22 @@ inline bool paraboloid_det_negative(const DoubleMatrix4& d, const DoubleMatrix4&
 
 }  // namespace impl
 
-/// The interval stage of certified_ellipsoid on d itself (out of line: rarely run, and kept out of
-/// the callers' frames).
+// The ellipsoid and paraboloid certification of from_doubles, in two stages: the signs in doubles
+// on the normalized matrix, then, when they leave it open, intervals on d itself.
+
+/// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
+/// is one with Q3 negative definite, 0 when these signs cannot tell (or it is not an ellipsoid): the
+/// signs in doubles on `normalized` (as for ellipsoid_before_det_if_nearest, or null), in round to
+/// nearest (tested here; 0 in any other mode).
+inline int certified_ellipsoid_in_doubles(const DoubleMatrix4* normalized) {
+  if (!normalized || !detail::rounding_to_nearest()) return 0;
+  int det;
+  const int want = impl::ellipsoid_signs(*normalized, &det);
+  return det == -1 ? want : 0;
+}
+
+/// The same answer by the interval stage on d itself (out of line: rarely run, and kept out of the
+/// callers' frames).
 [[gnu::noinline]] inline int certified_ellipsoid_by_intervals(const DoubleMatrix4& d) {
   if (!impl::symmetric(d)) return 0;
   const double a = d[0];
@@ -396,25 +410,18 @@ inline bool paraboloid_det_negative(const DoubleMatrix4& d, const DoubleMatrix4&
   return certified_ellipsoid_intervals(impl::interval_entries(d), a > 0 ? 1 : -1);
 }
 
-/// The signs in doubles of certified_ellipsoid (round to nearest, tested here; 0 in any other mode).
-inline int certified_ellipsoid_in_doubles(const DoubleMatrix4* normalized) {
-  if (!normalized || !detail::rounding_to_nearest()) return 0;
-  int det;
-  const int want = impl::ellipsoid_signs(*normalized, &det);
-  return det == -1 ? want : 0;
+/// +1 when the symmetric matrix is certainly an elliptic paraboloid with Q3 positive semidefinite,
+/// -1 with Q3 negative semidefinite, 0 when these signs cannot tell (or it is not one). Q3 has rank 2
+/// and is semidefinite iff det Q3 = 0 (exact) and E2 > 0 (the sum of its 2x2 principal minors: the
+/// product of the two other eigenvalues); rank Q = 4 iff det Q != 0. The signs in doubles:
+/// paraboloid_before_det and det Q < 0, `normalized` as for certified_ellipsoid_in_doubles.
+inline int certified_paraboloid_in_doubles(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
+  const int trace_sign = paraboloid_before_det(d, normalized);
+  return trace_sign != 0 && impl::paraboloid_det_negative(d, *normalized) ? trace_sign : 0;
 }
 
-/// +1 when the symmetric matrix is certainly a real ellipsoid with Q3 positive definite, -1 when it
-/// is one with Q3 negative definite, 0 when the filter cannot tell (or it is not an ellipsoid).
-/// `normalized` as for ellipsoid_before_det_if_nearest, or null: the signs in doubles read it (round
-/// to nearest); the interval stage reads d.
-inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  if (const int want = certified_ellipsoid_in_doubles(normalized)) return want;
-  return certified_ellipsoid_by_intervals(d);
-}
-
-/// The interval stage of certified_paraboloid, and its exact test of det Q3 = 0, on d itself (out of
-/// line, as for the ellipsoid).
+/// The same answer by the interval stage, and its exact test of det Q3 = 0, on d itself (out of line,
+/// as for the ellipsoid).
 [[gnu::noinline]] inline int certified_paraboloid_by_intervals(const DoubleMatrix4& d) {
   if (!impl::symmetric(d)) return 0;
   int trace_sign;
@@ -425,22 +432,6 @@ inline int certified_ellipsoid(const DoubleMatrix4& d, const DoubleMatrix4* norm
   if (trace_sign == 0) return 0;
   const auto zero = impl::det3_is_zero(d);
   return zero && *zero ? trace_sign : 0;
-}
-
-/// The signs in doubles of certified_paraboloid (paraboloid_before_det and det Q < 0).
-inline int certified_paraboloid_in_doubles(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  const int trace_sign = paraboloid_before_det(d, normalized);
-  return trace_sign != 0 && impl::paraboloid_det_negative(d, *normalized) ? trace_sign : 0;
-}
-
-/// +1 when the symmetric matrix is certainly an elliptic paraboloid with Q3 positive semidefinite,
-/// -1 with Q3 negative semidefinite, 0 when the filter cannot tell (or it is not one). Q3 has rank 2
-/// and is semidefinite iff det Q3 = 0 (exact) and E2 > 0 (the sum of its 2x2 principal minors: the
-/// product of the two other eigenvalues); rank Q = 4 iff det Q != 0. `normalized` as for
-/// certified_ellipsoid.
-inline int certified_paraboloid(const DoubleMatrix4& d, const DoubleMatrix4* normalized) {
-  if (const int trace_sign = certified_paraboloid_in_doubles(d, normalized)) return trace_sign;
-  return certified_paraboloid_by_intervals(d);
 }
 
 }  // namespace relpos::shape_filter

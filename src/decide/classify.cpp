@@ -739,10 +739,11 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     // Fresh numbers: reported_polynomials writes them in place.
     for (Rational& c : out.f) c = Rational();
     for (Rational& c : out.s) c = Rational();
-    // The integer forms written straight into pooled integers (the generic formulas without heap
-    // traffic for temporaries): from the doubles when the entries are doubles, without a rational
-    // matrix; else from the quadric's exact source, with the scale's split (each scale's rest kept as
-    // its denominators' factors: every gcd of the reduction is short).
+    // The integer forms, without a rational matrix: as machine words for doubles whose forms fit
+    // (below), else written straight into pooled integers (the generic formulas without heap traffic
+    // for temporaries), from the doubles or from the quadric's exact source with the scale's split
+    // (each scale's rest kept as its denominators' factors: every gcd of the reduction is short); the
+    // closed forms of a decimal sphere and standard paraboloid may need no form at all.
     const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();  // copies: read once
     // The scales: fresh where an exact source writes them in place; integer_form of doubles assigns
     // its own, so there a copy of the thread's 0 (no allocation) is what it replaces.
@@ -764,16 +765,20 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     MatrixOf<std::int64_t> pw, ew;
     const bool words =
         pd && ed && forms::small_integer_form(*pd, pw, sp.twos) && forms::small_integer_form(*ed, ew, se.twos);
-    // Else in pooled integers (sp.twos and se.twos of doubles set below, from lp and le).
+    // Else in pooled integers (a scale of doubles is a power of two: its split is its exponent).
     if (!words) {
-      if (pd)
+      if (pd) {
         forms::integer_form(*pd, forms::entries(pp), lp);
-      else
+        sp.twos = mpz_scan1(lp.mpz(), 0);
+      } else {
         forms::integer_form_of(storage_of(p), {forms::entries(pp), lp, sp, !closed, !scales_only, !scales_only});
-      if (ed)
+      }
+      if (ed) {
         forms::integer_form(*ed, forms::entries(ep), le);
-      else
+        se.twos = mpz_scan1(le.mpz(), 0);
+      } else {
         forms::integer_form_of(storage_of(e), {forms::entries(ep), le, se, !closed, !scales_only, !scales_only});
+      }
     }
     // S^4 f and S^3 s: the thread's, written in place (their limbs kept from call to call).
     thread_local Quartic<Integer> f;
@@ -799,8 +804,6 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
         g = exact_characteristic_polynomial<PooledInteger>(pp, ep);
         h = exact_special_polynomial<PooledInteger>(pp, ep);
       }
-      if (!words && pd) sp.twos = mpz_scan1(lp.mpz(), 0);  // split_scale(lp): lp is a power of two
-      if (!words && ed) se.twos = mpz_scan1(le.mpz(), 0);
       reported_polynomials(g, h, sp, se, lp, le, out, f, s);
       // The verdict's sign of Disc(f) is certified (a positive rescaling of f keeps it).
       RootStructure rs = exact_root_structure(f, s, v.sign_disc_f);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "algebra/double_bits.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
@@ -93,19 +94,8 @@ USign certified(double v, double bound) {
   return USign(static_cast<CGAL::Sign>(2 * pos - 1), static_cast<CGAL::Sign>(1 - 2 * neg));
 }
 
-// Exponent arithmetic on the bits of the double (std::ilogb / std::ldexp are out-of-line libm
-// calls that cost as much as the whole pencil). Valid for normal numbers; callers check ranges.
-inline int exponent_of(double x) {  // floor(log2 |x|) for a normal, non-zero x
-  std::uint64_t b;
-  std::memcpy(&b, &x, sizeof b);
-  return static_cast<int>((b >> 52) & 0x7ff) - 1023;
-}
-inline double power_of_two(int k) {  // 2^k, for -1022 <= k <= 1023
-  const std::uint64_t b = static_cast<std::uint64_t>(k + 1023) << 52;
-  double x;
-  std::memcpy(&x, &b, sizeof x);
-  return x;
-}
+using detail::exponent_of;
+using detail::power_of_two;
 inline bool normal_range(double x) { return x >= DBL_MIN && x <= DBL_MAX; }
 
 /// The step 2^t of the balancing lambda = 2^t mu that makes |f4| 2^(4t) ~ |f0|, or 0 when f0 or f4
