@@ -19,7 +19,7 @@
 #include "algebra/flint_thread.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
-#include "algebra/roots.hpp"
+#include "algebra/double_sign.hpp"
 #include "anysize/exact.hpp"
 #include "filters/checked_int.hpp"
 #include "filters/pooled_integer.hpp"
