@@ -1,4 +1,10 @@
-// quadric.hpp: exact affine types, constructors, sign normalization, affine invariance of the type.
+// quadric.hpp: exact affine types (quadric_kind.cpp), constructors (quadric.cpp), sign
+// normalization, affine invariance of the type; the size limit's primitive form (pair_size.cpp)
+// invariant under rescaling. The storage and the constructors from doubles: test_from_doubles.
+#include <gmp.h>
+
+#include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <relpos/error.hpp>
 #include <relpos/quadric.hpp>
@@ -287,4 +293,35 @@ TEST_CASE("constructor arguments are validated", "[quadric][errors]") {
   CHECK_THROWS_AS(Paraboloid::standard(c, Q(1), Q(-1)), InputError);
   CHECK_THROWS_AS(Paraboloid::standard(c, Q(1), Q(1), {Q(0), Q(0), Q(0), Q(0)}), InputError);
   CHECK_THROWS_AS(Paraboloid::from_map(diag3(Q(1), Q(1), Q(0)), c), InputError);
+}
+
+TEST_CASE("normalized_bits: the primitive integer form's bits, the same for every rescaling", "[quadric][size]") {
+  // Computed here by another route: the matrix times the product of its denominators (not their
+  // lcm), divided by the gcd of the resulting integers, which is the same primitive form up to sign.
+  Rng g(4096);
+  for (int trial = 0; trial < 400; ++trial) {
+    Matrix4 m;
+    for (auto& x : m.a)
+      if (!g.chance(30)) x = g.rational(-1000, 1000, trial % 2 ? 97 : 1024);
+    if (trial % 7 == 0) m.a[5] = Rational(Integer(1) << 300, Integer(g.uniform(1, 9)));
+    Integer product(1);
+    for (const Rational& x : m.a) product *= x.denominator();
+    Integer content(0);
+    std::array<Integer, 16> z;
+    for (std::size_t i = 0; i < 16; ++i) {
+      z[i] = m.a[i].numerator() * (product / m.a[i].denominator());
+      mpz_gcd(content.mpz(), content.mpz(), z[i].mpz());
+    }
+    std::size_t want = 0;
+    if (content != 0)
+      for (const Integer& x : z)
+        if (x != 0) want = std::max<std::size_t>(want, mpz_sizeinbase(Integer(x / content).mpz(), 2));
+    CAPTURE(trial);
+    CHECK(relpos::normalized_bits(m) == want);
+    Rational c = g.nonzero_rational(-50, 50, 50);
+    if (trial % 3 == 0) c *= Rational(Integer(1) << 2000, Integer(3) << 10);  // far beyond the limit as a common form
+    Matrix4 scaled;
+    for (std::size_t i = 0; i < 16; ++i) scaled.a[i] = c * m.a[i];
+    CHECK(relpos::normalized_bits(scaled) == want);
+  }
 }
