@@ -2,7 +2,8 @@
 // storage's normalization by a power of two (QuadricMatrix's constructor from doubles, with
 // normalize_doubles) and the certified shape in doubles, inlined into each other (flatten); the
 // intervals and the exact path out of line. The constructor lives here, not with the rest of the
-// storage (quadric_matrix.cpp), so that the flattened constructors can inline it.
+// storage (quadric_matrix.cpp), so that the flattened constructors can inline it. Also the same
+// normalization on its own (power_of_two_normalized, the static filter's input range).
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -113,6 +114,15 @@ void QuadricMatrix::negate_doubles() {
 }
 
 }  // namespace detail
+
+std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m) {
+  if (!m) return std::nullopt;
+  DoubleMatrix4 out;
+  int exponent;
+  bool plain;
+  if (!detail::normalize_doubles(*m, out, exponent, plain)) return std::nullopt;
+  return out;
+}
 
 namespace {
 

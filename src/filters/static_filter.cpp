@@ -150,13 +150,6 @@ DecisionSigns uncertain() { return DecisionSigns{}; }
 
 }  // namespace
 
-std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m) {
-  if (!m) return std::nullopt;
-  Mat<double> out;
-  if (!normalize(*m, out)) return std::nullopt;
-  return out.a;
-}
-
 DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4& ein) {
   Mat<double> p, e;
   if (!normalize(pin, p) || !normalize(ein, e)) return uncertain();
