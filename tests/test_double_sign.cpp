@@ -1,14 +1,18 @@
-// double_sign.hpp and approximate_roots.hpp: the double layer of root isolation. DoubleSign's
+// double_sign.hpp, approximate_roots.hpp and double_bits.hpp: the double layer of root isolation. DoubleSign's
 // floating-point stages answer only with the exact sign (computed here in rationals) at and near
 // roots known by construction; approximate_real_roots finds, in doubles, the real roots of
-// polynomials built from known factors, and only those.
+// polynomials built from known factors, and only those; the exponent arithmetic on a double's bits
+// is std::ilogb's and std::ldexp's.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <random>
 #include <vector>
 
 #include "algebra/approximate_roots.hpp"
+#include "algebra/double_bits.hpp"
 #include "algebra/double_sign.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
@@ -169,4 +173,16 @@ TEST_CASE("approximate_real_roots: the real roots of polynomials built from know
   double out[4];
   CHECK(relpos::detail::approximate_real_roots(quartic, 4, 4, out) == 0);
   CHECK_THROWS(relpos::detail::approximate_real_roots(quartic, 5, 4, out));
+}
+
+TEST_CASE("double_bits: exponent_of and power_of_two are std::ilogb and std::ldexp on normal numbers", "[roots]") {
+  std::mt19937_64 rng(1023);
+  for (int k = -1022; k <= 1023; ++k) CHECK(relpos::detail::power_of_two(k) == std::ldexp(1.0, k));
+  for (int i = 0; i < 100000; ++i) {
+    std::uint64_t bits = rng();
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    if (!std::isnormal(x)) continue;
+    CHECK(relpos::detail::exponent_of(x) == std::ilogb(x));
+  }
 }

@@ -1,9 +1,12 @@
-// sturm.hpp and smallness.hpp: root counts from the Sturm-Habicht signs on quartics with known
-// roots, the identity g0 = Disc(f) (against the 16-term formula and a^6 prod (ri - rj)^2), and the
+// sturm.hpp, sturm_habicht_quartic.hpp, small_factor.hpp and smallness.hpp: root counts from the
+// Sturm-Habicht signs on quartics with known roots, the identity g0 = Disc(f) (against the 16-term
+// formula and a^6 prod (ri - rj)^2), the sequence beside a known discriminant equal to the full one,
+// the counts of a square-free factor of degree <= 2 against the roots it was built from, and the
 // smallness test rho <= 1 on the paper's closed forms, invariant under positive rescalings.
 #include <catch2/catch.hpp>
 #include <vector>
 
+#include "algebra/small_factor.hpp"
 #include "algebra/smallness.hpp"
 #include "algebra/sturm.hpp"
 #include "support/construct.hpp"
@@ -120,5 +123,52 @@ TEST_CASE("compare_rho_with_one: rho = 4 r^2 / min(a,b)^4 against 1", "[smallnes
       REQUIRE(cmp2.has_value());
       CHECK(*cmp2 == k.want);
     }
+  }
+}
+
+TEST_CASE("the Sturm-Habicht g2, g1 beside a known discriminant are the full sequence's", "[sturm][random]") {
+  // SturmHabicht(f, Disc f) computes only g2 and g1 (the generated second routine of
+  // sturm_habicht_quartic.hpp): they must be the first routine's, on integers and rationals.
+  Rng g(4242);
+  for (int i = 0; i < 300; ++i) {
+    const Quartic<Rational> f{g.nonzero_rational(-30, 30, 4), g.rational(-30, 30, 4), g.rational(-30, 30, 4),
+                              g.rational(-30, 30, 4), g.nonzero_rational(-30, 30, 4)};
+    const relpos::SturmHabicht<Rational> full(f);
+    const relpos::SturmHabicht<Rational> given(f, quartic_discriminant(f));
+    for (int k = 0; k < 3; ++k) CHECK(given.g2[k] == full.g2[k]);
+    for (int k = 0; k < 2; ++k) CHECK(given.g1[k] == full.g1[k]);
+    CHECK(given.discriminant() == full.discriminant());
+  }
+}
+
+TEST_CASE("count_small: the real roots of a square-free factor of degree <= 2, by sign, from signs",
+          "[sturm][random]") {
+  // Factors built from their roots: a (x - r1)(x - r2) with distinct non-zero rational roots, a
+  // quadratic without real roots (x - u)^2 + v, v > 0, and a linear factor; the counts from the
+  // coefficients' and the discriminant's signs alone must be the roots built in.
+  Rng g(777);
+  for (int i = 0; i < 2000; ++i) {
+    const Rational a = g.nonzero_rational(-9, 9, 4);
+    const int kind = i % 3;
+    Rational r1 = g.nonzero_rational(-20, 20, 5), r2 = g.nonzero_rational(-20, 20, 5);
+    if (kind == 0 && r1 == r2) continue;
+    Rational h2(0), h1, h0;
+    int negative = 0, positive = 0;
+    if (kind == 0) {  // two real roots
+      h2 = a, h1 = -a * (r1 + r2), h0 = a * r1 * r2;
+      negative = (r1 < 0) + (r2 < 0), positive = (r1 > 0) + (r2 > 0);
+    } else if (kind == 1) {  // a non-real pair
+      const Rational v = g.positive_rational(20, 5);
+      h2 = a, h1 = -2 * a * r1, h0 = a * (r1 * r1 + v);
+    } else {  // linear: a (x - r1)
+      h1 = a, h0 = -a * r1;
+      (r1 < 0 ? negative : positive) = 1;
+    }
+    const int degree = kind == 2 ? 1 : 2;
+    const relpos::detail::SmallCount c =
+        relpos::detail::count_small(degree, sgn(h1 * h1 - 4 * h2 * h0), sgn(h2), sgn(h1), sgn(h0));
+    CAPTURE(i, relpos::to_string(h2), relpos::to_string(h1), relpos::to_string(h0));
+    CHECK(c.negative == negative);
+    CHECK(c.positive == positive);
   }
 }
