@@ -13,6 +13,8 @@
 
 #include "algebra/exact_pencil.hpp"
 #include "algebra/forms.hpp"
+#include "algebra/root_facts.hpp"
+#include "algebra/roots.hpp"
 #include "algebra/rounding.hpp"
 #include "algebra/shape_filter.hpp"
 #include "algebra/smallness.hpp"
