@@ -304,8 +304,8 @@ void QuadricMatrix::negate_doubles() {
   for (double& x : v_) x = -x;
 }
 
-QuadricMatrix::QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source)
-    : v_{}, cold_(std::make_shared<const Cold>(Cold{enclosure, std::move(source)})) {}
+QuadricMatrix::QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const DecimalRecipe> recipe)
+    : v_{}, cold_(std::make_shared<const Cold>(Cold{enclosure, std::move(recipe)})) {}
 
 std::optional<DoubleMatrix4> QuadricMatrix::doubles() const {
   if (!has_doubles()) return std::nullopt;
@@ -327,7 +327,7 @@ const Matrix4& QuadricMatrix::materialize() const {
   if (const std::optional<DoubleMatrix4> d = doubles()) {
     for (std::size_t i = 0; i < 16; ++i) built->a[i] = Rational((*d)[i]);  // finite: exact
   } else {
-    *built = cold_->source->build();
+    *built = exact_matrix(*cold_->recipe);
   }
   std::shared_ptr<const Matrix4> expected;
   std::shared_ptr<const Matrix4> desired = std::move(built);
