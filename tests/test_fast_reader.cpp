@@ -10,7 +10,8 @@
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "io/fast_quadric.hpp"
-#include "io/json_read.hpp"
+#include "io/json_tree.hpp"
+#include "io/quadric_json.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/io.hpp"
 
@@ -22,7 +23,7 @@ using relpos::Paraboloid;
 using relpos::io::detail::fast_ellipsoid;
 using relpos::io::detail::fast_paraboloid;
 
-nlohmann::ordered_json general_json(const std::string& text, bool doubles) {
+relpos::io::detail::Json general_json(const std::string& text, bool doubles) {
   relpos::io::detail::JsonReadOptions read;
   read.doubles = doubles;
   read.max_elements = 16;
@@ -46,7 +47,7 @@ void check_storage(const Q& q) {
   }
 }
 
-/// The integer form and split scale the quadric's exact source writes from its numbers
+/// The integer form and split scale the quadric's recipe writes from its numbers
 /// (forms::integer_form_of) are those of its exact matrix, factor for factor.
 template <class Q>
 void check_integer_form(const Q& q) {
@@ -71,16 +72,16 @@ void check_integer_form(const Q& q) {
   }
 }
 
-/// The truncated doubles the quadric's exact source writes without its matrix (the certificate's
-/// curve search reads them) are those of the exact matrix, entry by entry; the sources of the
-/// closed forms (a decimal_shape()) write them, the others leave them to the matrix.
+/// The truncated doubles the quadric's recipe writes without its matrix (the certificate's curve
+/// search reads them) are those of the exact matrix, entry by entry; the recipes of the closed forms
+/// (has_closed_form) write them, the others leave them to the matrix.
 template <class Q>
 void check_truncated_doubles(const Q& q) {
-  const relpos::detail::ExactSource* source = storage_of(q).exact_source();
-  if (!source) return;
+  const relpos::detail::DecimalRecipe* recipe = storage_of(q).recipe();
+  if (!recipe) return;
   relpos::DoubleMatrix4 d;
-  const bool written = source->truncated_doubles(d);
-  REQUIRE(written == (source->decimal_shape() != nullptr));
+  const bool written = relpos::detail::truncated_doubles(*recipe, d);
+  REQUIRE(written == relpos::detail::has_closed_form(*recipe));
   if (!written) return;
   for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(q.matrix().a[k]));
 }
@@ -128,8 +129,8 @@ void check_pair(const std::string& e_text, const std::string& p_text, bool doubl
   const auto fp = fast_paraboloid(p_text, doubles);
   REQUIRE(fe);
   REQUIRE(fp);
-  const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid");
-  const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
+  const Ellipsoid ge = relpos::io::detail::ellipsoid_from_tree(general_json(e_text, doubles), "ellipsoid");
+  const Paraboloid gp = relpos::io::detail::paraboloid_from_tree(general_json(p_text, doubles), "paraboloid");
   check_integer_form(*fe);
   check_integer_form(*fp);
   check_truncated_doubles(*fe);
@@ -146,8 +147,8 @@ void check_pair_evidence(const std::string& e_text, const std::string& p_text, b
   check_pair(e_text, p_text, doubles);
   INFO(e_text << "  " << p_text << (doubles ? "  (--numbers double)" : ""));
   check_full_evidence(*fast_ellipsoid(e_text, doubles), *fast_paraboloid(p_text, doubles),
-                      relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid"),
-                      relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid"));
+                      relpos::io::detail::ellipsoid_from_tree(general_json(e_text, doubles), "ellipsoid"),
+                      relpos::io::detail::paraboloid_from_tree(general_json(p_text, doubles), "paraboloid"));
 }
 
 /// The decimal d 10^exponent, d of `digits` random significant digits, in one of the spellings JSON
@@ -282,7 +283,7 @@ TEST_CASE("fast reader: texts it leaves to the general reader", "[io][fast]") {
   // entries: the general reader takes it.
   const char* tilted = "[[2,3,4,-0.5],[3,5,7,1],[4,7,10,-0.5],[-0.5,1,-0.5,0]]";
   REQUIRE_FALSE(fast_paraboloid(tilted, false));
-  REQUIRE_NOTHROW(relpos::io::paraboloid_from_json(general_json(tilted, false), "paraboloid"));
+  REQUIRE_NOTHROW(relpos::io::detail::paraboloid_from_tree(general_json(tilted, false), "paraboloid"));
   // det Q3 = 0 by zeros, although rotated about the axis: taken.
   REQUIRE(fast_paraboloid("[[1,0.5,0,0],[0.5,1,0,0],[0,0,0,-0.5],[0,0,-0.5,0]]", false));
   // Exactly symmetric although spelled differently: taken.
@@ -463,11 +464,10 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     const auto fp = fast_paraboloid(p_text, false);
     REQUIRE(fe);
     REQUIRE(fp);
-    const relpos::detail::ExactSource* se = storage_of(*fe).exact_source();
-    const relpos::detail::ExactSource* sp = storage_of(*fp).exact_source();
+    const relpos::detail::DecimalRecipe* se = storage_of(*fe).recipe();
+    const relpos::detail::DecimalRecipe* sp = storage_of(*fp).recipe();
     if (!se || !sp) continue;  // every number an exact double: the doubles' path
-    REQUIRE(se->decimal_shape());
-    REQUIRE(sp->decimal_shape());
+    REQUIRE(relpos::forms::has_closed_evidence(*se, *sp));
     ++closed;
     relpos::Quartic<relpos::Rational> f;
     relpos::Quadratic<relpos::Rational> s;
@@ -503,11 +503,11 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
     relpos::Quartic<relpos::Integer> f_multiple;
     relpos::Quadratic<relpos::Integer> s_multiple;
-    relpos::forms::sphere_standard_evidence(*se->decimal_shape(), *sp->decimal_shape(),
+    relpos::forms::sphere_standard_evidence(*se, *sp,
                                             {f, s, lambda_s, rho, std::max(p_split.twos, e_split.twos),
                                              std::max(p_split.fives, e_split.fives), f_multiple, s_multiple});
-    const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, false), "ellipsoid");
-    const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, false), "paraboloid");
+    const Ellipsoid ge = relpos::io::detail::ellipsoid_from_tree(general_json(e_text, false), "ellipsoid");
+    const Paraboloid gp = relpos::io::detail::paraboloid_from_tree(general_json(p_text, false), "paraboloid");
     const auto want_f = relpos::characteristic_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
     const auto want_s = relpos::special_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
     for (std::size_t k = 0; k < 5; ++k) same(f[k], want_f[k]);
@@ -532,15 +532,15 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
                                       std::make_pair(R"({"vertex":[0,0,0.1],"a":1.3,"b":0.7})", true)}) {
     const auto q = fast_paraboloid(body, doubles);
     REQUIRE(q);
-    const relpos::detail::ExactSource* source = storage_of(*q).exact_source();
-    CHECK((!source || !source->decimal_shape()));
+    const relpos::detail::DecimalRecipe* recipe = storage_of(*q).recipe();
+    CHECK((!recipe || !relpos::detail::has_closed_form(*recipe)));
   }
   const auto m = fast_ellipsoid("[[1,0,0,0.1],[0,1,0,0],[0,0,1,0],[0.1,0,0,-0.3]]", false);
   REQUIRE(m);
-  REQUIRE(storage_of(*m).exact_source());
-  CHECK_FALSE(storage_of(*m).exact_source()->decimal_shape());
+  REQUIRE(storage_of(*m).recipe());
+  CHECK_FALSE(relpos::detail::has_closed_form(*storage_of(*m).recipe()));
   const auto sphere = fast_ellipsoid(R"({"sphere":{"center":[0.1,0,0],"radius":0.3}})", false);
   REQUIRE(sphere);
-  REQUIRE(storage_of(*sphere).exact_source());
-  CHECK(storage_of(*sphere).exact_source()->decimal_shape());
+  REQUIRE(storage_of(*sphere).recipe());
+  CHECK(relpos::detail::has_closed_form(*storage_of(*sphere).recipe()));
 }
