@@ -58,7 +58,7 @@ const std::string& stage_member(Stage st) { return verdict_texts().stage.at(stat
 
 /// The full answer's multiple roots: value, interval, approx, multiplicities, tangency.
 void append_multiple_roots(const Classification& c, const RenderOptions& options, JsonWriter& w) {
-  w.raw("[");
+  w.raw('[');
   const auto approx_roots = root_decimals(c, options.digits, /*only_multiple=*/true);
   bool first = true;
   for (std::size_t i = 0; i < c.roots.size(); ++i) {
@@ -79,9 +79,9 @@ void append_multiple_roots(const Classification& c, const RenderOptions& options
     w.integer(r.multiplicity_s);
     w.member("tangency");
     w.boolean(r.tangency());
-    w.raw("}");
+    w.raw('}');
   }
-  w.raw("]");
+  w.raw(']');
 }
 
 /// The counts of f's roots: real, negative, positive, nonreal.
@@ -95,7 +95,7 @@ void append_root_counts(const Verdict& v, JsonWriter& w) {
     w.key(counts[k].first);
     w.integer(counts[k].second);
   }
-  w.raw("}");
+  w.raw('}');
 }
 
 }  // namespace
@@ -104,7 +104,7 @@ void append_members(const Verdict& v, JsonWriter& w) {
   append_verdict_head(v, w);
   w.raw(rule_member(v.rule));
   w.raw(stage_member(v.stage));
-  w.raw("}");
+  w.raw('}');
 }
 
 void append_members(const Classification& c, const RenderOptions& options, JsonWriter& w) {
@@ -130,7 +130,7 @@ void append_members(const Classification& c, const RenderOptions& options, JsonW
   w.member("roots");
   append_root_counts(v, w);
   if (!c.has_full_evidence) {
-    w.raw("}");
+    w.raw('}');
     return;
   }
   w.member("f");
@@ -141,7 +141,7 @@ void append_members(const Classification& c, const RenderOptions& options, JsonW
   append_multiple_roots(c, options, w);
   w.member("certificate");
   append_certificate(c.certificate, options.digits, w);
-  w.raw("}");
+  w.raw('}');
 }
 
 void append_members(const ContactAnswer& a, JsonWriter& w) {
@@ -153,7 +153,7 @@ void append_members(const ContactAnswer& a, JsonWriter& w) {
   w.string(describe(a.rule));
   w.member("decided_by");
   w.string(decided_by(a.stage));
-  w.raw("}");
+  w.raw('}');
 }
 
 void reserve_for_id(std::string& out, std::string_view id) {

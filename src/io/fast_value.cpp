@@ -74,7 +74,7 @@ int FastValue::value(int depth) {
   return number();
 }
 
-bool FastValue::member_key(int self, std::string_view& name) {
+inline bool FastValue::member_key(int self, std::string_view& name) {
   // A key: plain ASCII without escapes or control characters (anything else: the general reader).
   if (i_ >= s_.size() || s_[i_] != '"') return false;
   const std::size_t end = plain_string_end(s_, i_);
@@ -125,23 +125,20 @@ int FastValue::number() {
   const char* const last = s_.data() + s_.size();
   const int self = new_node(FastKind::Number);
   if (self < 0) return -1;
-  FastNumber& x = nodes_[self].node.number;  // read in place (a copy of a number stalls on its parts)
-  DecimalDigits digits{x.d};
+  FastNumber& n = nodes_[self].node.number;  // read in place (a copy of a number stalls on its parts)
+  Decimal& x = n.d;
+  DecimalDigits digits{x};
   const char* const p = scan_number(first, last, digits);
   if (!p) return -1;
   if (p < last && *p != ',' && *p != ']' && *p != '}' && !is_json_space(*p)) return -1;
   i_ += static_cast<std::size_t>(p - first);
-  return identify(x, first, p, digits.exponent, digits.scale, digits.zeros) ? self : -1;
-}
-
-bool FastValue::identify(FastNumber& n, const char* first, const char* end, int exponent, int scale, int zeros) {
-  Decimal& x = n.d;
+  int zeros = digits.zeros;
   while (x.m != 0 && x.m % 10 == 0) x.m /= 10, ++zeros;  // m without trailing zeros: one identity a value
   if (doubles_) {  // round to nearest here: the caller's guard starts after parse()
     double d = 0;
-    const auto r = std::from_chars(first, end, d);
-    if (r.ec != std::errc() || r.ptr != end) return false;
-    if (d != 0 && !(std::fabs(d) >= 0x1p-100 && std::fabs(d) <= 0x1p100)) return false;
+    const auto r = std::from_chars(first, p, d);
+    if (r.ec != std::errc() || r.ptr != p) return -1;
+    if (d != 0 && !(std::fabs(d) >= 0x1p-100 && std::fabs(d) <= 0x1p100)) return -1;
     // The identity of a double: its bits, read through the same fields (exact symmetry, zeros).
     n.x = FastInterval(d);
     x.neg = d < 0;
@@ -152,11 +149,11 @@ bool FastValue::identify(FastNumber& n, const char* first, const char* end, int 
     x.neg = false;
     x.e = 0;
   } else {
-    x.e = exponent + scale + zeros;
-    if (x.e > kMaxExponent || x.e < -kMaxExponent) return false;
+    x.e = digits.exponent + digits.scale + zeros;
+    if (x.e > kMaxExponent || x.e < -kMaxExponent) return -1;
     decimals_ = true;  // enclosed by enclose_decimals()
   }
-  return true;
+  return self;
 }
 
 void FastValue::enclose_decimals() {

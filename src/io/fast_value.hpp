@@ -79,10 +79,8 @@ class FastValue {
   int new_node(FastKind kind);
   int value(int depth);
   int container(int depth, bool object);
-  bool member_key(int self, std::string_view& name);
+  [[gnu::always_inline]] inline bool member_key(int self, std::string_view& name);
   int number();
-  /// A number's identity from its decimal parts, or false when beyond the reader's bounds.
-  bool identify(FastNumber& n, const char* first, const char* end, int exponent, int scale, int zeros);
 
   std::string_view s_;
   bool doubles_;

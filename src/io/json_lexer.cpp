@@ -75,27 +75,4 @@ bool valid_utf8(std::string_view s) {
   return true;
 }
 
-std::size_t value_end(std::string_view s, std::size_t i) {
-  if (i >= s.size()) return std::string_view::npos;
-  if (s[i] == '"') return string_end(s, i);
-  if (s[i] == '{' || s[i] == '[') {
-    std::size_t depth = 0;
-    while (i < s.size()) {
-      const char c = s[i];
-      if (c == '"') {
-        i = string_end(s, i);
-        if (i == std::string_view::npos) return i;
-        continue;
-      }
-      if (c == '{' || c == '[') ++depth;
-      if ((c == '}' || c == ']') && --depth == 0) return i + 1;
-      ++i;
-    }
-    return std::string_view::npos;
-  }
-  const std::size_t start = i;
-  while (i < s.size() && !is_json_space(s[i]) && s[i] != ',' && s[i] != '}' && s[i] != ']') ++i;
-  return i == start ? std::string_view::npos : i;
-}
-
 }  // namespace relpos::io::detail

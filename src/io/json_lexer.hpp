@@ -50,7 +50,28 @@ bool valid_utf8(std::string_view s);
 
 /// End of the JSON value starting at s[i] (structure only: brackets matched outside strings; the
 /// span is validated by whoever reads it), or npos.
-std::size_t value_end(std::string_view s, std::size_t i);
+inline std::size_t value_end(std::string_view s, std::size_t i) {
+  if (i >= s.size()) return std::string_view::npos;
+  if (s[i] == '"') return string_end(s, i);
+  if (s[i] == '{' || s[i] == '[') {
+    std::size_t depth = 0;
+    while (i < s.size()) {
+      const char c = s[i];
+      if (c == '"') {
+        i = string_end(s, i);
+        if (i == std::string_view::npos) return i;
+        continue;
+      }
+      if (c == '{' || c == '[') ++depth;
+      if ((c == '}' || c == ']') && --depth == 0) return i + 1;
+      ++i;
+    }
+    return std::string_view::npos;
+  }
+  const std::size_t start = i;
+  while (i < s.size() && !is_json_space(s[i]) && s[i] != ',' && s[i] != '}' && s[i] != ']') ++i;
+  return i == start ? std::string_view::npos : i;
+}
 
 constexpr std::uint64_t kNotDigits = ~std::uint64_t(0);
 
@@ -85,8 +106,10 @@ struct NumberGrammar {
 };
 
 /// The digits from p on (the first one a digit), to the sink; the end, or nullptr if it refused.
+/// Inlined into its caller (as scan_number): the sink's counters then stay in registers, where a
+/// call would keep them in memory (the fast reader's numbers are most of a batch line's bytes).
 template <class Sink>
-const char* scan_digits(const char* p, const char* last, Sink& sink, bool fraction) {
+[[gnu::always_inline]] inline const char* scan_digits(const char* p, const char* last, Sink& sink, bool fraction) {
   for (;;) {
     if (sink.wants_eight() && last - p >= 8) {
       if (const std::uint64_t block = eight_digits(p); block != kNotDigits) {
@@ -104,7 +127,7 @@ const char* scan_digits(const char* p, const char* last, Sink& sink, bool fracti
 /// to `sink`. Returns the end of the token (what follows is the caller's to check), or nullptr when
 /// the text at p is not a number or the sink refused it.
 template <class Sink>
-const char* scan_number(const char* p, const char* last, Sink& sink) {
+[[gnu::always_inline]] inline const char* scan_number(const char* p, const char* last, Sink& sink) {
   if (p < last && *p == '-') {
     sink.negative();
     ++p;

@@ -18,6 +18,7 @@ class JsonWriter {
   explicit JsonWriter(std::string& out) : out_(out) {}
 
   void raw(std::string_view text) { out_.append(text); }
+  void raw(char c) { out_ += c; }
   void key(std::string_view name);      ///< "name": (name is plain ASCII)
   void member(std::string_view name) {  ///< ,"name": (a member after the first)
     out_ += ',';
