@@ -1,6 +1,6 @@
 // The common quadric forms read straight from JSON text into double enclosures: no DOM,
-// no rationals, no heap traffic per number. Used by the batch reader (batch.cpp) before the general
-// reader of io.cpp.
+// no rationals, no heap traffic per number. Used by the batch line's reader (batch.cpp) before the
+// general reader (quadric_json.hpp).
 //
 // A value is read here only when it is one of the forms below, its JSON is plainly valid (keys
 // without escapes, no duplicate keys, no other keys) and each number is short (at most 19
