@@ -1,6 +1,6 @@
 // The storage of a quadric's matrix (internal/quadric_matrix.hpp) apart from its construction from
 // doubles (quadric_doubles.cpp): the exact doubles of a rational matrix, the storage of a
-// rational matrix or of an enclosure with its exact source, the doubles given back, and the exact
+// rational matrix or of an enclosure with its decimal recipe, the doubles given back, and the exact
 // matrix built once, on first use.
 #include <gmp.h>
 
@@ -12,6 +12,8 @@
 #include <utility>
 
 #include "relpos/quadric.hpp"
+
+#include "algebra/decimal_recipe.hpp"
 
 namespace relpos {
 
@@ -42,8 +44,8 @@ QuadricMatrix::QuadricMatrix(Matrix4 m) : v_{} {
   m_ = std::make_shared<const Matrix4>(std::move(m));
 }
 
-QuadricMatrix::QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source)
-    : v_{}, cold_(std::make_shared<const Cold>(Cold{enclosure, std::move(source)})) {}
+QuadricMatrix::QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const DecimalRecipe> recipe)
+    : v_{}, cold_(std::make_shared<const Cold>(Cold{enclosure, std::move(recipe)})) {}
 
 std::optional<DoubleMatrix4> QuadricMatrix::doubles() const {
   if (!has_doubles()) return std::nullopt;
@@ -65,7 +67,7 @@ const Matrix4& QuadricMatrix::materialize() const {
   if (const std::optional<DoubleMatrix4> d = doubles()) {
     for (std::size_t i = 0; i < 16; ++i) built->a[i] = Rational((*d)[i]);  // finite: exact
   } else {
-    *built = cold_->source->build();
+    *built = exact_matrix(*cold_->recipe);
   }
   std::shared_ptr<const Matrix4> expected;
   std::shared_ptr<const Matrix4> desired = std::move(built);

@@ -205,13 +205,13 @@ class LazyMatrix {
   operator const Matrix4&() const { return get(); }  // NOLINT: reads as the matrix it stands for
   const Rational& operator()(int i, int j) const { return get()(i, j); }
   /// The entries as doubles (CGAL::to_double of each): the quadric's own doubles when it has them,
-  /// else those its exact source writes from the numbers read (a decimal sphere or axis
+  /// else those its recipe gives from the numbers read (a decimal sphere or axis
   /// paraboloid), without building its rationals.
   DoubleMatrix4 doubles() const {
     if (const std::optional<DoubleMatrix4> d = q_.doubles()) return *d;
-    if (const detail::ExactSource* source = storage_of(q_).exact_source(); source && !m_) {
+    if (const detail::DecimalRecipe* recipe = storage_of(q_).recipe(); recipe && !m_) {
       DoubleMatrix4 out;
-      if (source->truncated_doubles(out)) return out;
+      if (detail::truncated_doubles(*recipe, out)) return out;
     }
     return to_doubles(get());
   }

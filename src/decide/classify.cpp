@@ -601,12 +601,6 @@ void reported_polynomials(const Quartic<PooledInteger>& g, const Quadratic<Poole
   for (std::size_t i = 0; i < 3; ++i) times(h[i], pa[i], pb[3 - i], si[i]);
 }
 
-/// The numbers of a sphere or standard paraboloid read from decimal text, or nullptr.
-const forms::DecimalShape* decimal_shape_of(const detail::QuadricMatrix& q) {
-  const detail::ExactSource* source = q.exact_source();
-  return source ? source->decimal_shape() : nullptr;
-}
-
 /// The root facts of the full evidence.
 void take_roots(RootStructure&& rs, Classification& out) {
   out.has_full_evidence = true;
@@ -743,11 +737,11 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     for (Rational& c : out.s) c = Rational();
     // The integer forms, without a rational matrix: as machine words for doubles whose forms fit
     // (below), else written straight into pooled integers (the generic formulas without heap traffic
-    // for temporaries), from the doubles or from the quadric's exact source with the scale's split
+    // for temporaries), from the doubles or from the quadric's recipe with the scale's split
     // (each scale's rest kept as its denominators' factors: every gcd of the reduction is short); the
     // closed forms of a decimal sphere and standard paraboloid may need no form at all.
     const std::optional<DoubleMatrix4> pd = p.doubles(), ed = e.doubles();  // copies: read once
-    // The scales: fresh where an exact source writes them in place; integer_form of doubles assigns
+    // The scales: fresh where a recipe writes them in place; integer_form of doubles assigns
     // its own, so there a copy of the thread's 0 (no allocation) is what it replaces.
     Integer lp = pd ? shared_zero() : Integer(), le = ed ? shared_zero() : Integer();
     MatrixOf<PooledInteger>& pp = pooled_forms().p;  // every entry rewritten below
@@ -755,9 +749,9 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
     forms::SplitScale sp = unit_split(), se = unit_split();
     // A sphere and a standard paraboloid read from decimal text: f, s, lambda_s and rho from their
     // closed forms, on short integers (the splits then need no factors).
-    const forms::DecimalShape* es = ed ? nullptr : decimal_shape_of(storage_of(e));
-    const forms::DecimalShape* ps = pd ? nullptr : decimal_shape_of(storage_of(p));
-    const bool closed = es && ps && es->sphere && !ps->sphere;
+    const detail::DecimalRecipe* es = ed ? nullptr : storage_of(e).recipe();
+    const detail::DecimalRecipe* ps = pd ? nullptr : storage_of(p).recipe();
+    const bool closed = es && ps && forms::has_closed_evidence(*es, *ps);
     // The closed forms read only the scales' exponents, and the multipliers of E and I no integer
     // form: then only those exponents are written (no entries, lcm or rest; nothing for the certificate).
     const bool scales_only = closed && (v.position == Position::E || v.position == Position::I);
