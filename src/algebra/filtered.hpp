@@ -73,7 +73,13 @@ template <class Exact, class... Levels>
 Settled<std::decay_t<decltype(std::declval<Exact&>()())>> settle(Exact&& exact, Levels&&... levels) {
   std::optional<std::decay_t<decltype(exact())>> answer;
   int by = 0;
-  ((answer = approximate<std::decay_t<Levels>::rounding>(levels.approx), answer ? true : (++by, false)) || ...);
+  auto certain = [&](auto& level) {  // true when `level` answered; else counts it
+    answer = approximate<std::decay_t<decltype(level)>::rounding>(level.approx);
+    if (answer) return true;
+    ++by;
+    return false;
+  };
+  static_cast<void>((certain(levels) || ...));
   if (answer) return {*std::move(answer), by};
   return {exact(), by};
 }

@@ -26,7 +26,7 @@ struct EvidenceScratch {
   Quadratic<Integer> s_multiple;          ///< S^3 s
   Integer lp, le;                         ///< the forms' scales (not in words)
   forms::SplitScale sp, se;               ///< their splits
-  const forms::SplitScale unit;           ///< the split of 1, copied into sp and se (never written)
+  const forms::SplitScale unit{};         ///< the split of 1, copied into sp and se (never written)
 };
 
 /// One pair's reported pencil; scratch's f_multiple and s_multiple hold S^4 f and S^3 s, and its

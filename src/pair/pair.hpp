@@ -40,6 +40,24 @@ struct IntegerForms {
   Integer le, lp;
 };
 
+/// What a PairContext builds on first use, in one place: the hot path constructs and destroys an
+/// empty optional only.
+struct PairCold {
+  int sign_disc_f = 0;
+  bool certificate_reads_forms = true;
+  std::optional<IntervalEntries> intervals;
+  std::optional<Enclosures> enclosures;
+  std::optional<CompactPencil> compact;
+  std::optional<Recycled<EvidenceScratch>> scratch;
+  std::optional<EvidencePencil> evidence;
+  std::optional<RootStructure> roots;
+  std::optional<IntegerForms> forms;
+  std::optional<PointForm> e_point, p_point;
+  std::optional<anysize::Poly> f_poly, s_poly;
+  std::optional<IntegerPoly> fz, f_multiple;
+  std::optional<DoubleSign> f_at_doubles;  // reads f_multiple in place: declared after it
+};
+
 class PairContext {
  public:
   PairContext(const Ellipsoid& e, const Paraboloid& p) : e_(e), p_(p) {}
@@ -106,30 +124,16 @@ class PairContext {
   int f_sign(const Rational& x) const;
 
  private:
-  /// Everything built on first use, in one place: the hot path constructs and destroys an empty
-  /// optional only.
-  struct Cold {
-    int sign_disc_f = 0;
-    bool certificate_reads_forms = true;
-    std::optional<IntervalEntries> intervals;
-    std::optional<Enclosures> enclosures;
-    std::optional<CompactPencil> compact;
-    std::optional<Recycled<EvidenceScratch>> scratch;
-    std::optional<EvidencePencil> evidence;
-    std::optional<RootStructure> roots;
-    std::optional<IntegerForms> forms;
-    std::optional<PointForm> e_point, p_point;
-    std::optional<anysize::Poly> f_poly, s_poly;
-    std::optional<IntegerPoly> fz, f_multiple;
-    std::optional<DoubleSign> f_at_doubles;  // reads f_multiple in place: declared after it
-  };
-  Cold& cold() const {
-    if (!cold_) cold_.emplace();
-    return *cold_;
-  }
+  using Cold = PairCold;
+  Cold& cold() const;
   const Ellipsoid& e_;
   const Paraboloid& p_;
   mutable std::optional<Cold> cold_;
 };
+
+inline PairContext::Cold& PairContext::cold() const {
+  if (!cold_) cold_.emplace();
+  return *cold_;
+}
 
 }  // namespace relpos::detail
