@@ -132,7 +132,7 @@ bool decide_from_signs_slow(const DecisionSigns& d, Verdict& v) {
 /// few compares and one lookup instead of a chain of data-dependent (hence mispredicted) branches.
 struct SignTable {
   Verdict v[256][3];  // [sign bits][rho_vs_one + 1]
-  SignTable() {
+  [[gnu::flatten]] SignTable() {  // flatten: the one written decision inlined into its 768 runs
     auto sg = [](int bit) { return USign(bit ? CGAL::POSITIVE : CGAL::NEGATIVE); };
     for (int bits = 0; bits < 256; ++bits)
       for (int rho = -1; rho <= 1; ++rho) {
