@@ -131,7 +131,7 @@ bool decide_from_signs_slow(const DecisionSigns& d, Verdict& v) {
 /// written decision -- on every combination, so nothing is decided twice; the hot path becomes a
 /// few compares and one lookup instead of a chain of data-dependent (hence mispredicted) branches.
 struct SignTable {
-  Verdict v[256][3];  // [sign bits][rho_vs_one + 1]
+  Verdict v[256][3];              // [sign bits][rho_vs_one + 1]
   [[gnu::flatten]] SignTable() {  // flatten: the one written decision inlined into its 768 runs
     auto sg = [](int bit) { return USign(bit ? CGAL::POSITIVE : CGAL::NEGATIVE); };
     for (int bits = 0; bits < 256; ++bits)

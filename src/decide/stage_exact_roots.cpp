@@ -34,7 +34,7 @@ RootFacts exact_facts(const Quartic<Integer>& fi, const Quadratic<Integer>& si, 
 }  // namespace
 
 Step ExactRootsStage::run(Climb& c) {
-  CompactPencil& x = c.pair.compact();
+  const CompactPencil& x = c.pair.compact();
   c.v.stage = Stage::ExactRoots;
   const Quartic<Integer> fi = x.f_integer();
   const Quadratic<Integer> si = x.s_integer();

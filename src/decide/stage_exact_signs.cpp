@@ -20,7 +20,7 @@ bool only_disc_uncertain(const DecisionSigns& d) {
 }  // namespace
 
 Step ExactSignsStage::run(Climb& c) {
-  CompactPencil& x = c.pair.compact();
+  const CompactPencil& x = c.pair.compact();
   c.v.stage = Stage::ExactSigns;
   if (c.use_filter && only_disc_uncertain(c.signs)) {
     c.signs.quartic.g0 = sign_of(x.discriminant_times_27());

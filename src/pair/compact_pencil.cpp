@@ -19,12 +19,12 @@ CompactPencil::CompactPencil(const Matrix4& p, const Matrix4& e) {
   s_ = special_polynomial<PooledInteger>(pp, ep);
 }
 
-const PooledInteger& CompactPencil::discriminant_times_27() {
+const PooledInteger& CompactPencil::discriminant_times_27() const {
   if (!disc27_) disc27_.emplace(relpos::discriminant_times_27(f_));
   return *disc27_;
 }
 
-const SturmHabicht<PooledInteger>& CompactPencil::sturm_habicht() {
+const SturmHabicht<PooledInteger>& CompactPencil::sturm_habicht() const {
   if (!sturm_habicht_) {
     discriminant_times_27();
     PooledInteger disc = std::move(*disc27_);  // not read again once the sequence holds Disc(f)

@@ -22,9 +22,9 @@ class CompactPencil {
   const Quartic<PooledInteger>& f() const { return f_; }
   const Quadratic<PooledInteger>& s() const { return s_; }
   /// 27 Disc(f), on first use (sturm_habicht() takes it over: asked again after it, recomputed).
-  const PooledInteger& discriminant_times_27();
+  const PooledInteger& discriminant_times_27() const;
   /// f's Sturm-Habicht sequence (sturm.hpp), on first use; its g0 is Disc(f), from discriminant_times_27().
-  const SturmHabicht<PooledInteger>& sturm_habicht();
+  const SturmHabicht<PooledInteger>& sturm_habicht() const;
   /// f and s as Integer (the factorisation stage's type).
   Quartic<Integer> f_integer() const;
   Quadratic<Integer> s_integer() const;
@@ -32,8 +32,8 @@ class CompactPencil {
  private:
   Quartic<PooledInteger> f_;
   Quadratic<PooledInteger> s_;
-  std::optional<PooledInteger> disc27_;
-  std::optional<SturmHabicht<PooledInteger>> sturm_habicht_;
+  mutable std::optional<PooledInteger> disc27_;  // built on first use, as the pair's other values
+  mutable std::optional<SturmHabicht<PooledInteger>> sturm_habicht_;
 };
 
 }  // namespace relpos::detail

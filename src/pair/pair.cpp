@@ -71,7 +71,7 @@ const Enclosures& PairContext::enclosures() const {
   return *c.enclosures;
 }
 
-CompactPencil& PairContext::compact() const {
+const CompactPencil& PairContext::compact() const {
   Cold& c = cold();
   if (!c.compact) c.compact.emplace(p_.matrix(), e_.matrix());
   return *c.compact;

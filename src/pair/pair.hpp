@@ -83,19 +83,25 @@ class PairContext {
   /// rationals.
   const Enclosures& enclosures() const;
   /// f and s in the compact integer form (exact signs and multiplicities only).
-  CompactPencil& compact() const;
+  const CompactPencil& compact() const;
 
   // ---- The evidence's values (the certificate reads them too). ----
   /// What the decision knows that the evidence reuses: the certified sign of Disc(f) (0: unknown),
   /// and whether the certificate will read the integer forms (C, TE, TI). Before the evidence is built.
-  void expect(int sign_disc_f, bool certificate_reads_forms) const {
+  void expect(int sign_disc_f, bool certificate_reads_forms) {
     cold().sign_disc_f = sign_disc_f;
     cold().certificate_reads_forms = certificate_reads_forms;
   }
   /// The reported f and s, S^4 f and S^3 s, lambda_s (and rho from closed forms).
   const EvidencePencil& evidence() const;
-  const Quartic<Integer>& f_multiple() const { return (evidence(), (*cold().scratch)->f_multiple); }
-  const Quadratic<Integer>& s_multiple() const { return (evidence(), (*cold().scratch)->s_multiple); }
+  const Quartic<Integer>& f_multiple() const {
+    evidence();
+    return (*cold().scratch)->f_multiple;
+  }
+  const Quadratic<Integer>& s_multiple() const {
+    evidence();
+    return (*cold().scratch)->s_multiple;
+  }
   const anysize::LambdaS& lambda_s() const { return evidence().lambda_s; }
   /// The real roots of f with multiplicities and isolating intervals (exact_root_structure on S^4 f).
   const RootStructure& roots() const;
