@@ -6,6 +6,7 @@
 #include <string>
 
 #include "algebra/polynomial_text.hpp"
+#include "decide/stages.hpp"
 #include "io/root_decimals.hpp"
 #include "relpos/io.hpp"
 
@@ -31,29 +32,7 @@ std::string rho_vs_one_text(int sign) { return sign < 0 ? "<1" : sign == 0 ? "=1
 
 namespace {
 
-std::string stage_meaning(Stage s) {
-  switch (s) {
-    case Stage::InsideCertificate:
-      return "certified inside: P < 0 on the solid ellipsoid (scene early-out)";
-    case Stage::OutsideCertificate:
-      return "certified outside: P > 0 on the solid ellipsoid (scene early-out)";
-    case Stage::DiscriminantFilter:
-      return "signs of f and Disc(f) certified in double arithmetic, no Sturm-Habicht sequence (contact only)";
-    case Stage::StaticDouble:
-      return "all signs certified in double arithmetic with static error bounds";
-    case Stage::SemiStaticDouble:
-      return "all signs certified in double arithmetic with error bounds from the operands' magnitudes";
-    case Stage::MultipleRootWitness:
-      return "Disc(f) = 0 certified by exact rational multiple roots of f (machine integers)";
-    case Stage::Interval:
-      return "all signs certified by interval arithmetic";
-    case Stage::ExactSigns:
-      return "exact integer signs";
-    case Stage::ExactRoots:
-      return "exact factorisation of f: Disc(f) = 0 or a defective Sturm-Habicht sequence";
-  }
-  return "?";
-}
+std::string stage_meaning(Stage s) { return relpos::detail::stage_row(s).meaning; }
 
 std::string double_text(double x, int digits) {
   if (!std::isfinite(x)) return std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
