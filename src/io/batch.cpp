@@ -266,10 +266,13 @@ namespace {
 
 /// read_batch_line; with `id`, the id is not copied into out.id: *id is set to its text instead (a
 /// view into `raw`, or of out.id when it is the line number or re-encoded), before anything is thrown.
+/// The same for `meta` and out.meta (empty until the line's members are scanned).
 void read_line(std::string_view raw, long line_number, const BatchOptions& options, const Paraboloid* fixed,
-               BatchLine& out, std::string_view* id) {
+               BatchLine& out, std::string_view* id, std::string_view* meta) {
   out.id = std::to_string(line_number);
   if (id) *id = out.id;
+  out.meta.clear();
+  if (meta) *meta = std::string_view();
   out.ellipsoid.reset();  // the fast reader makes the quadrics here as the line is scanned
   out.paraboloid.reset();
   const std::string_view line = normalize_line(raw, line_number, options.max_line_bytes);
@@ -282,7 +285,7 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
     throw InputError(expected);
   }
   // Scan the members; all structural errors are reported by the parser's message on the whole line.
-  Member members[4];
+  Member members[5];
   std::size_t count = 0;
   std::string unknown, duplicate, key_storage;
   i = skip_ws(line, i + 1);
@@ -315,14 +318,14 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
       const std::string_view value = line.substr(i, end - i);
       // nlohmann skips a byte order mark at the start of what it parses; inside a line it is not JSON.
       if (value.substr(0, 3) == "\xEF\xBB\xBF") invalid_json(line);
-      static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment"};
+      static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment", "meta"};
       bool known = false;
       for (const std::string_view k : kKeys) {
         if (key != k || (fixed && key == "paraboloid")) continue;
         known = true;
         for (std::size_t m = 0; m < count; ++m)
           if (members[m].key == k && duplicate.empty()) duplicate = key;
-        if (count < 4) members[count++] = Member{k, value, taken};
+        if (count < 5) members[count++] = Member{k, value, taken};
       }
       if (!known) {
         if (unknown.empty()) unknown = key.substr(0, 40);
@@ -346,7 +349,7 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
   }
   if (i != line.size()) invalid_json(line);
 
-  // The id and the comment: valid JSON, not stored (the id is kept as its text).
+  // The id, the comment and the meta: valid JSON, not stored (the id and the meta are kept as their text).
   for (std::size_t m = 0; m < count; ++m) {
     if (members[m].key == "ellipsoid" || members[m].key == "paraboloid") continue;
     if (plainly_valid(members[m].value)) continue;
@@ -366,6 +369,18 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
         *id = value;  // byte for byte, not copied
       } else {
         out.id.assign(value.data(), value.size());  // byte for byte
+      }
+    }
+  for (std::size_t m = count; m-- > 0;)  // the first "meta", as for the id
+    if (members[m].key == "meta") {
+      const std::string_view value = members[m].value;
+      if (!valid_utf8(value)) {
+        out.meta = dump_json(detail::parse_json(value, detail::JsonReadOptions{}));
+        if (meta) *meta = out.meta;
+      } else if (meta) {
+        *meta = value;
+      } else {
+        out.meta.assign(value.data(), value.size());
       }
     }
   // The quadrics: small bounded trees, numbers exact (or the nearest doubles).
@@ -403,47 +418,63 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
 
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
                      BatchLine& out) {
-  read_line(line, line_number, options, fixed, out, nullptr);
+  read_line(line, line_number, options, fixed, out, nullptr, nullptr);
+}
+
+void append_trailer(std::string& answer, std::string_view meta, bool numbers_as_doubles) {
+  if ((!numbers_as_doubles && meta.empty()) || answer.empty() || answer.back() != '}') return;
+  answer.pop_back();
+  if (numbers_as_doubles) answer.append(",\"numbers\":\"double\"");
+  if (!meta.empty()) answer.append(",\"meta\":").append(meta);
+  answer.push_back('}');
 }
 
 void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out) {
   // The line's memory: the caller's line, the answer, and no copy of the id (a view into the line).
   // The answer is computed before the id is written, so that no long id is held meanwhile.
   BatchLine in;
-  std::string_view id;
+  std::string_view id, meta;
   std::string internal;
+  // The answer's last members (append_trailer); out of memory there, the line's error below.
+  const auto finish = [&]() noexcept {
+    try {
+      append_trailer(out, meta, options.numbers_as_doubles);
+      return true;
+    } catch (...) {
+      return false;
+    }
+  };
   try {
-    read_line(line, line_number, options, nullptr, in, &id);
+    read_line(line, line_number, options, nullptr, in, &id, &meta);
     if (options.contact_only) {
       const std::string report = dump_json(contact_to_json(contact(*in.ellipsoid, *in.paraboloid)));
       reserve_for_id(out, id);
       out.assign("{\"id\":").append(id).append(",").append(report, 1, std::string::npos);
-      return;
-    }
-    if (options.evidence == Evidence::Minimal) {  // the verdict alone: classify's, without its evidence
+    } else if (options.evidence == Evidence::Minimal) {  // the verdict alone: classify's, without its evidence
       const Verdict v = decide_position(*in.ellipsoid, *in.paraboloid);
       reserve_for_id(out, id);
       out.assign("{\"id\":").append(id);  // the id goes first
       append_minimal(v, out);
-      return;
+    } else {
+      const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full);
+      reserve_for_id(out, id);
+      out.assign("{\"id\":").append(id);
+      detail::JsonWriter w(out);
+      detail::append_classification(c, options.render, w);
     }
-    const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full);
-    reserve_for_id(out, id);
-    out.assign("{\"id\":").append(id);
-    detail::JsonWriter w(out);
-    detail::append_classification(c, options.render, w);
+    append_trailer(out, meta, options.numbers_as_doubles);
     return;
   } catch (const InputError& err) {
-    if (write_error(out, id, err.what())) return;
+    if (write_error(out, id, err.what()) && finish()) return;
   } catch (const std::bad_alloc&) {
   } catch (const std::exception& err) {
     try {
       internal = std::string("internal error: ") + err.what();
     } catch (...) {
     }
-    if (!internal.empty() && write_error(out, id, internal)) return;
+    if (!internal.empty() && write_error(out, id, internal) && finish()) return;
   } catch (...) {
-    if (write_error(out, id, "internal error: unknown exception")) return;
+    if (write_error(out, id, "internal error: unknown exception") && finish()) return;
   }
   // Out of memory: that line's error, with its id when it can be echoed (the partial answer's
   // capacity is reused), else with the line number (doc/cli.md, "Out of memory").

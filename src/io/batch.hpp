@@ -15,6 +15,7 @@ namespace relpos::io {
 /// One input line, read: the id as the JSON text to echo, and the quadrics.
 struct BatchLine {
   std::string id;  ///< the id's JSON text exactly as in the input, or the line number
+  std::string meta;  ///< the "meta" member's JSON text exactly as in the input, or empty (doc/cli.md)
   std::optional<Ellipsoid> ellipsoid;
   std::optional<Paraboloid> paraboloid;
 };
@@ -27,8 +28,8 @@ std::string too_long_message(std::size_t max_line_bytes);
 /// later line, or a NUL byte (the message names the column).
 std::string_view normalize_line(std::string_view line, long line_number, std::size_t max_line_bytes);
 
-/// Read one JSON Lines line {"id", "ellipsoid", "paraboloid", "comment"} (with `fixed`, a scene line:
-/// {"id", "ellipsoid", "comment"}, and the size limit is checked against *fixed). The top-level
+/// Read one JSON Lines line {"id", "ellipsoid", "paraboloid", "comment", "meta"} (with `fixed`, a scene
+/// line: {"id", "ellipsoid", "comment", "meta"}, and the size limit is checked against *fixed). The top-level
 /// object is scanned once: the id's text is kept, "comment" is validated without being stored,
 /// duplicate keys are refused. out.id is set (to the line number at first, to the id once it is
 /// read) before any InputError is thrown, so that errors echo the id; out's quadrics are the line's
@@ -38,5 +39,10 @@ void read_batch_line(std::string_view line, long line_number, const BatchOptions
 
 /// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced (std::bad_alloc when out of memory).
 std::string error_line(const std::string& id_text, const std::string& message);
+
+/// The members every answer line ends with (doc/cli.md, "relpos batch"): `"numbers":"double"` when
+/// the line was read with options.numbers_as_doubles, then `"meta":<meta>` when the input line had
+/// a "meta" member (its text, echoed byte for byte), written before the closing brace of `answer`.
+void append_trailer(std::string& answer, std::string_view meta, bool numbers_as_doubles);
 
 }  // namespace relpos::io
