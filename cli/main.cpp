@@ -64,6 +64,8 @@ void print_main_help(std::ostream& os) {
         "  scene     one paraboloid against many ellipsoids (JSON Lines or CSV), on all cores\n"
         "  motion    a body moving by a polynomial translation and rotation: when the position changes\n"
         "  verify    check the certificates of a batch output against its input\n"
+        "  cases     hard pairs of known position for judging float code (doc/oracle.md)\n"
+        "  judge     a float code's answers against the cases: error rates, confusion, misses, chart\n"
         "\n"
         "Positions: I (interior), TI (tangent from inside), C (crossing), TE (tangent from outside),\n"
         "E (exterior): every valid pair gets one of them, whatever the ellipsoid's size.\n"
@@ -434,7 +436,8 @@ int main(int argc, char** argv) {
   using namespace relpos_cli;
   Args args(std::vector<std::string>(all.begin() + 1, all.end()));
   const bool known =
-      command == "classify" || command == "batch" || command == "scene" || command == "motion" || command == "verify";
+      command == "classify" || command == "batch" || command == "scene" || command == "motion" || command == "verify" ||
+      command == "cases" || command == "judge";
   try {
     const bool about = command == "--help" || command == "-h" || command == "help" || command == "--version";
     if (about && !args.done()) throw UsageError{command + " takes no argument, got '" + args.peek() + "'"};
@@ -451,6 +454,8 @@ int main(int argc, char** argv) {
     if (command == "verify") return run_verify(args);
     if (command == "scene") return run_scene(args);
     if (command == "motion") return run_motion(args);
+    if (command == "cases") return run_cases(args);
+    if (command == "judge") return run_judge(args);
     throw UsageError{(command.rfind("-", 0) == 0 ? "unknown option '" : "unknown command '") + command + "'"};
   } catch (const UsageError& u) {
     std::cerr << "relpos: " << u.message << "\nTry 'relpos --help'";
