@@ -11,6 +11,7 @@
 
 #include "algebra/double_bits.hpp"
 #include "algebra/forms.hpp"
+#include "algebra/kind_filter.hpp"
 #include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
 
@@ -488,15 +489,28 @@ int filtered_paraboloid(const Matrix4& p) {
   return shape_filter::certified_paraboloid_intervals(entry_intervals(p));
 }
 
+/// The refusal of a matrix of another kind as an ellipsoid (from_matrix, from_doubles).
+[[noreturn]] void refuse_as_ellipsoid(QuadricKind k) {
+  if (k == QuadricKind::EllipticParaboloid)
+    throw InputError(
+        "not an ellipsoid: the matrix describes an elliptic paraboloid (ellipsoid and paraboloid swapped?)");
+  throw InputError("not an ellipsoid: the matrix describes " + found(k));
+}
+
+/// The same as an elliptic paraboloid.
+[[noreturn]] void refuse_as_paraboloid(QuadricKind k) {
+  if (k == QuadricKind::Ellipsoid)
+    throw InputError(
+        "not an elliptic paraboloid: the matrix describes an ellipsoid (ellipsoid and paraboloid swapped?)");
+  throw InputError("not an elliptic paraboloid: the matrix describes " + found(k));
+}
+
 }  // namespace
 
 Ellipsoid Ellipsoid::from_matrix(const Matrix4& e) {
   if (const int orientation = filtered_ellipsoid(e)) return Ellipsoid(orientation > 0 ? e : negated(e));
   QuadricKind k = classify_quadric(e);
-  if (k == QuadricKind::EllipticParaboloid)
-    throw InputError(
-        "not an ellipsoid: the matrix describes an elliptic paraboloid (ellipsoid and paraboloid swapped?)");
-  if (k != QuadricKind::Ellipsoid) throw InputError("not an ellipsoid: the matrix describes " + found(k));
+  if (k != QuadricKind::Ellipsoid) refuse_as_ellipsoid(k);
   // Q3 is definite; make it positive definite (interior X^T E X < 0).
   return Ellipsoid(e(0, 0) > 0 ? e : negated(e));
 }
@@ -516,6 +530,16 @@ bool all_finite(const DoubleMatrix4& d) {
   return true;
 }
 
+/// A matrix the shape tests did not certify: refused at once when the filtered type test finds it of
+/// another kind (kind_filter.hpp; the exact path's message, a few microseconds instead of an exact
+/// classification). Its orientation when it finds an ellipsoid and one is wanted (the sign of the
+/// first entry: Q3 is definite), else 0: the exact path decides.
+int kind_orientation(const DoubleMatrix4& d, QuadricKind want, void (*refuse)(QuadricKind)) {
+  const std::optional<QuadricKind> k = shape_filter::certified_kind(d);
+  if (k && *k != want) refuse(*k);
+  return k && *k == QuadricKind::Ellipsoid ? (d[0] > 0 ? 1 : -1) : 0;
+}
+
 }  // namespace
 
 // flatten: the constructor and the signs in doubles in one frame, the values just normalized read
@@ -530,6 +554,7 @@ bool all_finite(const DoubleMatrix4& d) {
     [&]() __attribute__((noinline)) {
       orientation = normalized || all_finite(e) ? shape_filter::certified_ellipsoid_by_intervals(e) : 0;
       // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
+      if (orientation == 0) orientation = kind_orientation(e, QuadricKind::Ellipsoid, refuse_as_ellipsoid);
       if (orientation == 0) out = Ellipsoid(*from_matrix(exact_matrix(e)).doubles());
     }
     ();
@@ -601,11 +626,7 @@ Ellipsoid Ellipsoid::from_map(const Vector3& c, const Matrix3& l) {
 Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
   if (const int orientation = filtered_paraboloid(p)) return Paraboloid(orientation > 0 ? p : negated(p));
   QuadricKind k = classify_quadric(p);
-  if (k == QuadricKind::Ellipsoid)
-    throw InputError(
-        "not an elliptic paraboloid: the matrix describes an ellipsoid (ellipsoid and paraboloid swapped?)");
-  if (k != QuadricKind::EllipticParaboloid)
-    throw InputError("not an elliptic paraboloid: the matrix describes " + found(k));
+  if (k != QuadricKind::EllipticParaboloid) refuse_as_paraboloid(k);
   // Q3 is semidefinite of rank 2; its trace has the sign of its non-zero eigenvalues.
   return Paraboloid(p(0, 0) + p(1, 1) + p(2, 2) > 0 ? p : negated(p));
 }
@@ -619,6 +640,7 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
   if (orientation == 0) {
     [&]() __attribute__((noinline)) {
       orientation = normalized || all_finite(p) ? shape_filter::certified_paraboloid_by_intervals(p) : 0;
+      if (orientation == 0) kind_orientation(p, QuadricKind::EllipticParaboloid, refuse_as_paraboloid);
       if (orientation == 0) out = Paraboloid(*from_matrix(exact_matrix(p)).doubles());
     }
     ();
