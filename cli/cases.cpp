@@ -1,12 +1,13 @@
 // relpos cases FAMILY... [--n N] [--eps LIST] [--seed S] [--form exact|double|matrix] [--threads N]:
 // the constructed pairs of src/oracle/ as JSON Lines (doc/oracle.md; doc/cli.md, "relpos cases").
+#include "oracle/cases.hpp"
+
 #include <iostream>
 #include <string>
 #include <thread>
 
 #include "commands.hpp"
 #include "common.hpp"
-#include "oracle/cases.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos_cli {
@@ -31,7 +32,9 @@ void print_cases_help(std::ostream& os) {
         "Options:\n"
         "  --n N          cases per family and eps (default 100)\n"
         "  --eps LIST     relative distances, exact numbers in [0, 1), comma-separated (default\n"
-        "                 " << relpos::oracle::kDefaultEps << "): the ellipsoid scaled by 1 +- eps\n"
+        "                 "
+     << relpos::oracle::kDefaultEps
+     << "): the ellipsoid scaled by 1 +- eps\n"
         "                 about its centre touches the paraboloid; 0 gives the exact tangencies\n"
         "  --seed S       the random seed (default 1)\n"
         "  --form F       what \"ellipsoid\" and \"paraboloid\" hold: exact (default: the exact parameters,\n"

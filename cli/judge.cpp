@@ -1,6 +1,8 @@
 // relpos judge CASES ANSWERS [--truth exact|double|matrix] [--tolerance T] [--by KEYS]
 //                            [--format md|csv|json] [--plot FILE.png] [--misses N] [--no-baselines]:
 // an implementation's answers against the cases (src/oracle/judge.hpp; doc/oracle.md).
+#include "oracle/judge.hpp"
+
 #include <unistd.h>
 
 #include <fstream>
@@ -12,7 +14,6 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "oracle/chart.hpp"
-#include "oracle/judge.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos_cli {

@@ -435,9 +435,8 @@ int main(int argc, char** argv) {
   const std::string command = all.front();
   using namespace relpos_cli;
   Args args(std::vector<std::string>(all.begin() + 1, all.end()));
-  const bool known =
-      command == "classify" || command == "batch" || command == "scene" || command == "motion" || command == "verify" ||
-      command == "cases" || command == "judge";
+  const bool known = command == "classify" || command == "batch" || command == "scene" || command == "motion" ||
+                     command == "verify" || command == "cases" || command == "judge";
   try {
     const bool about = command == "--help" || command == "-h" || command == "help" || command == "--version";
     if (about && !args.done()) throw UsageError{command + " takes no argument, got '" + args.peek() + "'"};

@@ -99,7 +99,8 @@ TEST_CASE("png_indexed writes what an independent decoder reads back, across sev
   const std::size_t w = 301, h = 257;  // more than 65535 bytes of filtered data: two blocks
   std::vector<std::uint8_t> pixels(w * h);
   for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = static_cast<std::uint8_t>((i * 7 + i / w) % 5);
-  const std::vector<std::array<std::uint8_t, 3>> palette = {{0, 0, 0}, {255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {9, 9, 9}};
+  const std::vector<std::array<std::uint8_t, 3>> palette = {
+      {0, 0, 0}, {255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {9, 9, 9}};
   const Decoded d = decode(png_indexed(w, h, palette, pixels));
   CHECK(d.width == w);
   CHECK(d.height == h);
@@ -125,10 +126,10 @@ TEST_CASE("the font and the canvas: distinct glyphs, lines to their ends, text w
   CHECK(c.at(5, 29) == 0);
   Canvas t(20, 20, 0);
   CHECK(t.text(5, 5, "I", 3, 2) == Canvas::text_width("I", 2));
-  CHECK(t.at(7, 5) == 3);   // the top bar of I, doubled
-  CHECK(t.at(5, 5) == 0);   // its first column is blank
-  CHECK(t.at(9, 8) == 3);   // the stem
-  c.set(-1, 100, 3);        // clipped, no effect
+  CHECK(t.at(7, 5) == 3);  // the top bar of I, doubled
+  CHECK(t.at(5, 5) == 0);  // its first column is blank
+  CHECK(t.at(9, 8) == 3);  // the stem
+  c.set(-1, 100, 3);       // clipped, no effect
   CHECK(decode(c.png({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}})).pixels.size() == 40 * 30);
 }
 
@@ -147,11 +148,12 @@ TEST_CASE("the chart of a judged file is a PNG with the curves' colours", "[char
   CHECK(d.width == 1000);
   CHECK(d.height == 620);
   std::set<std::uint8_t> used(d.pixels.begin(), d.pixels.end());
-  CHECK(used.count(0));  // white
-  CHECK(used.count(1));  // black: text and the curve of all families
+  CHECK(used.count(0));     // white
+  CHECK(used.count(1));     // black: text and the curve of all families
   CHECK(used.size() >= 6);  // grid, baselines, two families
-  JudgeReport empty = judge("{\"id\":1,\"ellipsoid\":{\"sphere\":{\"center\":[0,0,1],\"radius\":\"1/4\"}},"
-                            "\"paraboloid\":{\"vertex\":[0,0,0],\"a\":1,\"b\":1}}",
-                            "", JudgeOptions{});
+  JudgeReport empty = judge(
+      "{\"id\":1,\"ellipsoid\":{\"sphere\":{\"center\":[0,0,1],\"radius\":\"1/4\"}},"
+      "\"paraboloid\":{\"vertex\":[0,0,0],\"a\":1,\"b\":1}}",
+      "", JudgeOptions{});
   CHECK(decode(chart_png(empty)).width == 1000);  // no eps: the frame and a note
 }

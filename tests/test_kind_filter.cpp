@@ -45,9 +45,9 @@ DoubleMatrix4 congruent(const std::array<double, 4>& s, std::mt19937_64& rng, do
 
 TEST_CASE("certified_kind answers only with classify_quadric's type", "[kind_filter]") {
   std::mt19937_64 rng(testing::announced_seed("kind_filter", 5));
-  const std::array<double, 4> signatures[] = {{1, 1, 1, -1},  {1, 1, 1, 1},  {1, 1, -1, 1},  {1, 1, -1, -1},
-                                              {-1, -1, -1, 1}, {1, 1, 0, -1}, {1, 0, 0, -1}, {1, 1, -1, 0},
-                                              {1, 1, 1, 0},   {1e-17, 1, 1, -1}};
+  const std::array<double, 4> signatures[] = {{1, 1, 1, -1},   {1, 1, 1, 1},     {1, 1, -1, 1}, {1, 1, -1, -1},
+                                              {-1, -1, -1, 1}, {1, 1, 0, -1},    {1, 0, 0, -1}, {1, 1, -1, 0},
+                                              {1, 1, 1, 0},    {1e-17, 1, 1, -1}};
   int answered = 0;
   for (int round = 0; round < 400; ++round)
     for (const auto& s : signatures) {

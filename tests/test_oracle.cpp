@@ -147,9 +147,9 @@ TEST_CASE("tolerance: sphere margins with s* in closed form", "[oracle]") {
     CHECK(compare_with(t, root) == sign);
   // tau = 3/10: factors [7/10, 13/10] reach s*: TI, I and C are excused; outside positions never.
   CHECK(within_tolerance(Position::TI, CentreSide::Inside, root, q(3, 10)));
-  CHECK(within_tolerance(Position::I, CentreSide::Inside, root, q(3, 10)));    // the factor 7/10 < s*
+  CHECK(within_tolerance(Position::I, CentreSide::Inside, root, q(3, 10)));     // the factor 7/10 < s*
   CHECK(!within_tolerance(Position::I, CentreSide::Inside, root, q(29, 100)));  // 71/100 > s*: no factor below
-  CHECK(within_tolerance(Position::C, CentreSide::Inside, root, q(0)));  // s* < 1: the pair itself crosses
+  CHECK(within_tolerance(Position::C, CentreSide::Inside, root, q(0)));         // s* < 1: the pair itself crosses
   CHECK(!within_tolerance(Position::TI, CentreSide::Inside, root, q(29, 100)));
   CHECK(!within_tolerance(Position::E, CentreSide::Inside, root, q(1, 2)));
   CHECK(!within_tolerance(Position::TE, CentreSide::Inside, root, q(1, 2)));
@@ -167,7 +167,7 @@ TEST_CASE("tolerance: sphere margins with s* in closed form", "[oracle]") {
   // Refused margins.
   CHECK_THROWS_AS(margin_from_json(margin_json(q(8, 10), q(9, 10), {-1, 0, 2})), InputError);  // no root inside
   CHECK_THROWS_AS(margin_from_json(margin_json(q(9, 10), q(8, 10), {-1, 0, 2})), InputError);  // lo > hi
-  CHECK_THROWS_AS(margin_from_json(nlohmann::ordered_json{{"approx", 0.7}}), InputError);       // approx alone
+  CHECK_THROWS_AS(margin_from_json(nlohmann::ordered_json{{"approx", 0.7}}), InputError);      // approx alone
 }
 
 TEST_CASE("judge: counts of hand-written answers, the tolerance on a sphere, the three truths", "[oracle]") {
@@ -217,8 +217,9 @@ TEST_CASE("judge: counts of hand-written answers, the tolerance on a sphere, the
   tol.tolerance = q(29, 100);
   CHECK(judge(cases, c_ti, tol).total.counts.excused == 0);
   // An answer's own margin comes first; a forged one (no root) is a warning, not an excuse.
-  const std::string forged = "{\"id\":\"c\",\"position\":\"TI\",\"margin\":{\"lo\":\"8/10\",\"hi\":\"9/10\","
-                             "\"polynomial\":[\"-1\",\"0\",\"2\"]}}\n";
+  const std::string forged =
+      "{\"id\":\"c\",\"position\":\"TI\",\"margin\":{\"lo\":\"8/10\",\"hi\":\"9/10\","
+      "\"polynomial\":[\"-1\",\"0\",\"2\"]}}\n";
   tol.tolerance = q(3, 10);
   r = judge(cases, forged, tol);
   CHECK(r.total.counts.excused == 0);

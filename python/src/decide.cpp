@@ -166,20 +166,24 @@ struct Parameters {
 
   Parameters(py::handle mapping, const char* name, bool ellipsoid) {
     const std::vector<std::pair<const char*, std::size_t>> keys =
-        ellipsoid ? std::vector<std::pair<const char*, std::size_t>>{{"center", 3}, {"axes", 3}, {"rotation", 4}}
-                  : std::vector<std::pair<const char*, std::size_t>>{{"vertex", 3}, {"a", 1}, {"b", 1}, {"rotation", 4}};
+        ellipsoid
+            ? std::vector<std::pair<const char*, std::size_t>>{{"center", 3}, {"axes", 3}, {"rotation", 4}}
+            : std::vector<std::pair<const char*, std::size_t>>{{"vertex", 3}, {"a", 1}, {"b", 1}, {"rotation", 4}};
     const py::dict d = py::reinterpret_borrow<py::dict>(mapping);
     for (const auto& item : d) {
       const std::string key = py::str(item.first).cast<std::string>();
       if (std::none_of(keys.begin(), keys.end(), [&](const auto& k) { return key == k.first; }) &&
           !(ellipsoid && key == "centre"))
-        throw relpos::InputError(std::string(name) + ": unknown key '" + key + "' (the parameters of " +
-                                 (ellipsoid ? "an ellipsoid: center, axes, rotation)" : "a paraboloid: vertex, a, b, rotation)"));
+        throw relpos::InputError(
+            std::string(name) + ": unknown key '" + key + "' (the parameters of " +
+            (ellipsoid ? "an ellipsoid: center, axes, rotation)" : "a paraboloid: vertex, a, b, rotation)"));
     }
     for (const auto& [key, width] : keys) {
       py::object value;
-      if (d.contains(key)) value = d[key];
-      else if (ellipsoid && std::string(key) == "center" && d.contains("centre")) value = d["centre"];
+      if (d.contains(key))
+        value = d[key];
+      else if (ellipsoid && std::string(key) == "center" && d.contains("centre"))
+        value = d["centre"];
       if (!value) {
         if (std::string(key) != "rotation") throw relpos::InputError(std::string(name) + ": '" + key + "' is missing");
         value = py::module_::import("numpy").attr("array")(py::make_tuple(1.0, 0.0, 0.0, 0.0));
@@ -190,12 +194,12 @@ struct Parameters {
       Column c{read_array(value, path.c_str()), width, true};
       const py::array& a = c.values.array;
       const bool one = width == 1 ? a.ndim() == 0 : a.ndim() == 1 && a.shape(0) == static_cast<py::ssize_t>(width);
-      const bool many = width == 1 ? a.ndim() == 1
-                                   : a.ndim() == 2 && a.shape(1) == static_cast<py::ssize_t>(width);
+      const bool many = width == 1 ? a.ndim() == 1 : a.ndim() == 2 && a.shape(1) == static_cast<py::ssize_t>(width);
       if (!one && !many)
         throw relpos::InputError(path + ": expected shape " +
-                                 (width == 1 ? std::string("(n,) or ()")
-                                             : "(n, " + std::to_string(width) + ") or (" + std::to_string(width) + ",)") +
+                                 (width == 1
+                                      ? std::string("(n,) or ()")
+                                      : "(n, " + std::to_string(width) + ") or (" + std::to_string(width) + ",)") +
                                  ", got " + shape_text(a));
       if (many) {
         c.shared = false;
@@ -340,8 +344,8 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
                 error_index = i;
                 const bool is_e = failed[0] == 'E';
                 const bool matrix = is_e ? e_side.matrices.has_value() : p_side.matrices.has_value();
-                error_message = std::string(failed) + "[" + std::to_string(i) + "]: " +
-                                (is_e ? "ellipsoid: " : "paraboloid: ") + err.what() +
+                error_message = std::string(failed) + "[" + std::to_string(i) +
+                                "]: " + (is_e ? "ellipsoid: " : "paraboloid: ") + err.what() +
                                 (matrix ? hint(is_e, err.what()) : "");
               }
             }

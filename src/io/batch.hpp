@@ -14,7 +14,7 @@ namespace relpos::io {
 
 /// One input line, read: the id as the JSON text to echo, and the quadrics.
 struct BatchLine {
-  std::string id;  ///< the id's JSON text exactly as in the input, or the line number
+  std::string id;    ///< the id's JSON text exactly as in the input, or the line number
   std::string meta;  ///< the "meta" member's JSON text exactly as in the input, or empty (doc/cli.md)
   std::optional<Ellipsoid> ellipsoid;
   std::optional<Paraboloid> paraboloid;

@@ -33,10 +33,10 @@ Paraboloid paraboloid_of(const Parameters& p) { return Paraboloid::standard(p.ve
 void label(Case& c) {
   const Parameters d = exact_parameters(c.doubles);
   c.double_position = decide_position(ellipsoid_of(d), paraboloid_of(d)).position;
-  c.exact_position = c.construction.position ? *c.construction.position
-                                             : decide_position(ellipsoid_of(c.construction.exact),
-                                                               paraboloid_of(c.construction.exact))
-                                                   .position;
+  c.exact_position =
+      c.construction.position
+          ? *c.construction.position
+          : decide_position(ellipsoid_of(c.construction.exact), paraboloid_of(c.construction.exact)).position;
   const char* role = "ellipsoid";
   try {
     const Ellipsoid e = Ellipsoid::from_doubles(upper_triangle(c.e_matrix));
@@ -71,11 +71,14 @@ Json exact_ellipsoid(const Parameters& p) {
   return Json{{"center", exact_json(p.centre)}, {"axes", exact_json(p.axes)}, {"rotation", exact_json(p.e_rotation)}};
 }
 Json exact_paraboloid(const Parameters& p) {
-  return Json{{"vertex", exact_json(p.vertex)}, {"a", exact_json(p.a)}, {"b", exact_json(p.b)},
+  return Json{{"vertex", exact_json(p.vertex)},
+              {"a", exact_json(p.a)},
+              {"b", exact_json(p.b)},
               {"rotation", exact_json(p.p_rotation)}};
 }
 Json double_ellipsoid(const DoubleParameters& d) {
-  return Json{{"center", double_json(d.centre)}, {"axes", double_json(d.axes)}, {"rotation", double_json(d.e_rotation)}};
+  return Json{
+      {"center", double_json(d.centre)}, {"axes", double_json(d.axes)}, {"rotation", double_json(d.e_rotation)}};
 }
 Json double_paraboloid(const DoubleParameters& d) {
   return Json{{"vertex", double_json(d.vertex)}, {"a", d.a}, {"b", d.b}, {"rotation", double_json(d.p_rotation)}};

@@ -33,9 +33,9 @@ struct Case {
   std::uint64_t index = 0;
   Construction construction;
   DoubleParameters doubles;
-  DoubleMatrix4 e_matrix{}, p_matrix{};  ///< the float code's matrices (float_matrices.hpp)
-  Position exact_position = Position::I;  ///< the construction's, or relpos's for the random family
-  Position double_position = Position::I;  ///< relpos on the doubles of the parameters
+  DoubleMatrix4 e_matrix{}, p_matrix{};     ///< the float code's matrices (float_matrices.hpp)
+  Position exact_position = Position::I;    ///< the construction's, or relpos's for the random family
+  Position double_position = Position::I;   ///< relpos on the doubles of the parameters
   std::optional<Position> matrix_position;  ///< relpos on the matrices' upper triangles, if they are a pair
   std::string matrix_error;                 ///< why not, otherwise
 };

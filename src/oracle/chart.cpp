@@ -16,11 +16,26 @@ enum Colour : std::uint8_t { kWhite, kBlack, kAxis, kGrid, kBaseline0, kBaseline
 
 const std::vector<std::array<std::uint8_t, 3>>& palette() {
   static const std::vector<std::array<std::uint8_t, 3>> p = {
-      {255, 255, 255}, {0, 0, 0},       {80, 80, 80},    {222, 222, 222}, {120, 120, 120}, {160, 160, 160},
+      {255, 255, 255},
+      {0, 0, 0},
+      {80, 80, 80},
+      {222, 222, 222},
+      {120, 120, 120},
+      {160, 160, 160},
       {190, 190, 190},
       // families: a categorical palette (Tableau 10) and two more
-      {31, 119, 180},  {255, 127, 14},  {44, 160, 44},   {214, 39, 40},   {148, 103, 189}, {140, 86, 75},
-      {227, 119, 194}, {188, 189, 34},  {23, 190, 207},  {127, 127, 127}, {0, 90, 50},     {120, 0, 90}};
+      {31, 119, 180},
+      {255, 127, 14},
+      {44, 160, 44},
+      {214, 39, 40},
+      {148, 103, 189},
+      {140, 86, 75},
+      {227, 119, 194},
+      {188, 189, 34},
+      {23, 190, 207},
+      {127, 127, 127},
+      {0, 90, 50},
+      {120, 0, 90}};
   return p;
 }
 constexpr int kFamilyColours = 12;
@@ -97,8 +112,8 @@ std::string chart_png(const JudgeReport& r) {
       if (!has(p)) continue;
       const double x = x_of(p.eps), y = y_of(rate(p));
       if (!first && !(p.eps > 0 && px == x_of(0))) c.line(px, py, x, y, colour, thickness, dash);
-      c.fill(static_cast<int>(x) - thickness - 1, static_cast<int>(y) - thickness - 1, static_cast<int>(x) + thickness + 1,
-             static_cast<int>(y) + thickness + 1, colour);
+      c.fill(static_cast<int>(x) - thickness - 1, static_cast<int>(y) - thickness - 1,
+             static_cast<int>(x) + thickness + 1, static_cast<int>(y) + thickness + 1, colour);
       px = x, py = y, first = false;
     }
   };

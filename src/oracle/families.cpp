@@ -217,7 +217,8 @@ Case far(Random& rng, const Rational& s_star, bool inside) {
   Case c = rotated(rng, s_star, inside);
   const long e = rng.integer(6, 8);
   const long bound = e == 6 ? 1000000 : (e == 7 ? 10000000 : 100000000);
-  c.placement.translation = {q(rng.integer(-bound, bound)), q(rng.integer(-bound, bound)), q(rng.integer(-bound, bound))};
+  c.placement.translation = {q(rng.integer(-bound, bound)), q(rng.integer(-bound, bound)),
+                             q(rng.integer(-bound, bound))};
   return c;
 }
 
@@ -227,7 +228,7 @@ Case far(Random& rng, const Rational& s_star, bool inside) {
 Case exact(Random& rng, bool inside) {
   static const long kNormals[][4] = {{0, 0, 1, 1}, {3, 0, 4, 5}, {0, 3, 4, 5}, {2, 2, 1, 3}, {2, 1, 2, 3},
                                      {1, 2, 2, 3}, {8, 4, 1, 9}, {4, 8, 1, 9}, {4, 1, 8, 9}, {1, 4, 8, 9}};
-  static const long kRotations[][4] = {{1, 0, 0, 0}, {1, 1, 0, 0},  {1, 0, 1, 0},  {1, 0, 0, 1},  {1, -1, 0, 0},
+  static const long kRotations[][4] = {{1, 0, 0, 0},  {1, 1, 0, 0},  {1, 0, 1, 0},  {1, 0, 0, 1},  {1, -1, 0, 0},
                                        {1, 0, -1, 0}, {1, 0, 0, -1}, {0, 1, 0, 0},  {0, 0, 1, 0},  {0, 0, 0, 1},
                                        {1, 1, 1, 1},  {1, 1, 1, -1}, {1, 1, -1, 1}, {1, -1, 1, 1}, {1, -1, -1, -1}};
   const long* n = kNormals[rng.integer(0, 9)];
@@ -315,17 +316,28 @@ Construction construct(const Family& family, const Rational& eps, std::uint64_t 
   const bool closer = ((inside_only ? index : index / 2) % 2) == 1;
   const Rational s_star = family.uses_eps ? (closer ? 1 - eps : 1 + eps) : Rational(1);
   Case c;
-  if (name == "axis") c = axis(rng, s_star, inside);
-  else if (name == "offaxis") c = offaxis(rng, s_star, inside);
-  else if (name == "rotated") c = rotated(rng, s_star, inside);
-  else if (name == "ellipsoid") c = ellipsoid(rng, s_star, inside);
-  else if (name == "special") c = special(rng, s_star);
-  else if (name == "circular") c = circular(rng, s_star);
-  else if (name == "tiny") c = tiny(rng, s_star, inside);
-  else if (name == "huge") c = huge(rng, s_star, inside);
-  else if (name == "far") c = far(rng, s_star, inside);
-  else if (name == "exact") c = exact(rng, inside);
-  else throw InputError("unknown family '" + name + "'");
+  if (name == "axis")
+    c = axis(rng, s_star, inside);
+  else if (name == "offaxis")
+    c = offaxis(rng, s_star, inside);
+  else if (name == "rotated")
+    c = rotated(rng, s_star, inside);
+  else if (name == "ellipsoid")
+    c = ellipsoid(rng, s_star, inside);
+  else if (name == "special")
+    c = special(rng, s_star);
+  else if (name == "circular")
+    c = circular(rng, s_star);
+  else if (name == "tiny")
+    c = tiny(rng, s_star, inside);
+  else if (name == "huge")
+    c = huge(rng, s_star, inside);
+  else if (name == "far")
+    c = far(rng, s_star, inside);
+  else if (name == "exact")
+    c = exact(rng, inside);
+  else
+    throw InputError("unknown family '" + name + "'");
   out.exact = place(c.base, c.placement);
   out.position = position_of(c.inside, s_star);
   out.s_star = s_star;

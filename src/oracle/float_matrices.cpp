@@ -49,7 +49,9 @@ std::array<double, 3> times(const M3& m, const std::array<double, 3>& v) {
   return out;
 }
 
-double dot(const std::array<double, 3>& u, const std::array<double, 3>& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
+double dot(const std::array<double, 3>& u, const std::array<double, 3>& v) {
+  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
 
 DoubleMatrix4 assemble(const M3& m, const std::array<double, 3>& u, double corner) {
   DoubleMatrix4 out;
@@ -64,8 +66,8 @@ DoubleMatrix4 assemble(const M3& m, const std::array<double, 3>& u, double corne
 }  // namespace
 
 DoubleParameters nearest_parameters(const Parameters& p) {
-  return {nearest_array(p.centre), nearest_array(p.axes),   nearest_array(p.e_rotation), nearest_array(p.vertex),
-          nearest_double(p.a),     nearest_double(p.b),     nearest_array(p.p_rotation)};
+  return {nearest_array(p.centre), nearest_array(p.axes), nearest_array(p.e_rotation), nearest_array(p.vertex),
+          nearest_double(p.a),     nearest_double(p.b),   nearest_array(p.p_rotation)};
 }
 
 Parameters exact_parameters(const DoubleParameters& d) {
@@ -81,8 +83,8 @@ Parameters exact_parameters(const DoubleParameters& d) {
 }
 
 DoubleMatrix4 ellipsoid_matrix(const DoubleParameters& d) {
-  const M3 m = rdrt(rotation(d.e_rotation), {1 / (d.axes[0] * d.axes[0]), 1 / (d.axes[1] * d.axes[1]),
-                                             1 / (d.axes[2] * d.axes[2])});
+  const M3 m = rdrt(rotation(d.e_rotation),
+                    {1 / (d.axes[0] * d.axes[0]), 1 / (d.axes[1] * d.axes[1]), 1 / (d.axes[2] * d.axes[2])});
   const std::array<double, 3> mc = times(m, d.centre);
   return assemble(m, {-mc[0], -mc[1], -mc[2]}, dot(d.centre, mc) - 1);
 }

@@ -169,12 +169,24 @@ std::string key_text(const Json* v) {
 void add(Counts& c, Outcome o) {
   ++c.cases;
   switch (o) {
-    case Outcome::Right: ++c.right; break;
-    case Outcome::Wrong: ++c.wrong; break;
-    case Outcome::Excused: ++c.excused; break;
-    case Outcome::Undecided: ++c.undecided; break;
-    case Outcome::Missing: ++c.missing; break;
-    case Outcome::NoTruth: ++c.no_truth; break;
+    case Outcome::Right:
+      ++c.right;
+      break;
+    case Outcome::Wrong:
+      ++c.wrong;
+      break;
+    case Outcome::Excused:
+      ++c.excused;
+      break;
+    case Outcome::Undecided:
+      ++c.undecided;
+      break;
+    case Outcome::Missing:
+      ++c.missing;
+      break;
+    case Outcome::NoTruth:
+      ++c.no_truth;
+      break;
   }
 }
 
@@ -253,9 +265,8 @@ JudgeReport judge(std::string_view cases_text, std::string_view answers_text, co
   std::map<std::vector<std::string>, std::size_t> group_of;
   std::map<std::string, std::map<double, CurvePoint>> curves;  // family ("" all) -> eps -> point
   std::vector<std::string> family_order{""};
-  const char* const margin_key = options.truth == Truth::Exact ? "margin"
-                                                               : (options.truth == Truth::Double ? "double_margin"
-                                                                                                 : "matrix_margin");
+  const char* const margin_key =
+      options.truth == Truth::Exact ? "margin" : (options.truth == Truth::Double ? "double_margin" : "matrix_margin");
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const CaseLine& c = cases[i];
     std::optional<Position> truth;
@@ -297,8 +308,8 @@ JudgeReport judge(std::string_view cases_text, std::string_view answers_text, co
         if (m) {
           try {
             const Margin margin = margin_from_json(*m);
-            CentreSide side = *truth == Position::I || *truth == Position::TI ? CentreSide::Inside
-                                                                                : CentreSide::Outside;
+            CentreSide side =
+                *truth == Position::I || *truth == Position::TI ? CentreSide::Inside : CentreSide::Outside;
             if (*truth == Position::C) {
               TruthPair& p = the_pair();
               side = side_of(*p.e, *p.p);
@@ -359,7 +370,11 @@ JudgeReport judge(std::string_view cases_text, std::string_view answers_text, co
     }
     if (truth && (outcome == Outcome::Wrong || outcome == Outcome::Undecided || outcome == Outcome::Missing)) {
       Miss miss{c.json["id"].is_string() ? c.json["id"].get<std::string>() : c.id,
-                key_text(member(c.meta, "family")), key_text(member(c.meta, "eps")), *truth, answer_text, ""};
+                key_text(member(c.meta, "family")),
+                key_text(member(c.meta, "eps")),
+                *truth,
+                answer_text,
+                ""};
       try {
         TruthPair& p = the_pair();
         if (!p.ellipsoid.is_null() && !p.paraboloid.is_null())
@@ -390,10 +405,9 @@ const char* const kAnswerColumns[7] = {"I", "TI", "C", "TE", "E", "undecided", "
 std::string tolerance_text(const JudgeOptions& o) { return o.tolerance ? to_string(*o.tolerance) : "none"; }
 
 Json counts_json(const Counts& c) {
-  return Json{{"cases", c.cases},         {"right", c.right},
-              {"wrong", c.wrong},         {"excused", c.excused},
-              {"undecided", c.undecided}, {"missing", c.missing},
-              {"no_truth", c.no_truth},   {"error_rate", c.error_rate()}};
+  return Json{
+      {"cases", c.cases},         {"right", c.right},     {"wrong", c.wrong},       {"excused", c.excused},
+      {"undecided", c.undecided}, {"missing", c.missing}, {"no_truth", c.no_truth}, {"error_rate", c.error_rate()}};
 }
 
 Json baselines_json(const BaselineCounts& b) {
@@ -471,7 +485,8 @@ std::string report_csv(const JudgeReport& r) {
     return q + "\"";
   };
   auto row = [&](const Group& g, bool total) {
-    for (std::size_t k = 0; k < r.options.by.size(); ++k) out << (total ? (k == 0 ? "all" : "") : quoted(g.key[k])) << ',';
+    for (std::size_t k = 0; k < r.options.by.size(); ++k)
+      out << (total ? (k == 0 ? "all" : "") : quoted(g.key[k])) << ',';
     const Counts& c = g.counts;
     char rate[32];
     std::snprintf(rate, sizeof rate, "%.6g", c.error_rate());

@@ -65,14 +65,14 @@ struct CurvePoint {
   BaselineCounts baselines;
 };
 struct Curve {
-  std::string family;  ///< "" for all the families together
+  std::string family;              ///< "" for all the families together
   std::vector<CurvePoint> points;  ///< in increasing eps
 };
 
 struct Miss {
   std::string id, family, eps;
   Position truth;
-  std::string answer;  ///< the position, "undecided" or "missing"
+  std::string answer;     ///< the position, "undecided" or "missing"
   std::string reproduce;  ///< a `relpos classify` command giving the truth
 };
 
@@ -81,9 +81,9 @@ struct JudgeReport {
   std::vector<Group> groups;  ///< in the order of the cases' first appearance
   Group total;
   std::array<std::array<std::size_t, 7>, 5> confusion{};  ///< [truth][answer: I TI C TE E undecided missing]
-  std::size_t malformed = 0, unknown = 0, duplicate = 0;   ///< answer lines matching no case once
+  std::size_t malformed = 0, unknown = 0, duplicate = 0;  ///< answer lines matching no case once
   std::vector<Miss> misses;
-  std::vector<Curve> curves;  ///< by eps: all families, then each family
+  std::vector<Curve> curves;          ///< by eps: all families, then each family
   std::vector<std::string> warnings;  ///< case lines that could not be read, margins refused
 };
 

@@ -26,9 +26,7 @@ class Random {
     return mix(state_);
   }
   /// An integer in [lo, hi] (hi - lo < 2^32: the bias of the modulo is below 2^-32).
-  long integer(long lo, long hi) {
-    return lo + static_cast<long>(next() % static_cast<std::uint64_t>(hi - lo + 1));
-  }
+  long integer(long lo, long hi) { return lo + static_cast<long>(next() % static_cast<std::uint64_t>(hi - lo + 1)); }
   /// A fraction p/q in [lo, hi] with q in [1, max_den] (lo, hi integers or fractions of small height).
   Rational fraction(const Rational& lo, const Rational& hi, long max_den) {
     const long q = integer(1, max_den);

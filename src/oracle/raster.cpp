@@ -48,7 +48,8 @@ int Canvas::text(int x, int y, std::string_view s, std::uint8_t colour, int scal
     for (int row = 0; row < 7; ++row)
       for (int col = 0; col < 5; ++col)
         if ((g[static_cast<std::size_t>(row)] >> (4 - col)) & 1)
-          fill(left + col * scale, y + row * scale, left + col * scale + scale - 1, y + row * scale + scale - 1, colour);
+          fill(left + col * scale, y + row * scale, left + col * scale + scale - 1, y + row * scale + scale - 1,
+               colour);
   }
   return text_width(s, scale);
 }
