@@ -206,14 +206,15 @@ namespace {
 constexpr std::size_t kAnswerReserve = 256;
 
 /// {"id":N,"error":"message"} and a newline, written in pieces (no allocation); message is plain ASCII.
-void write_error_line(Output& out, long number, std::string_view message) {
+/// With `doubles` (--numbers double) the line says so, as every answer does (io::append_trailer).
+void write_error_line(Output& out, long number, std::string_view message, bool doubles) {
   char digits[24];
   const auto end = std::to_chars(digits, digits + sizeof digits, number).ptr;
   out.write("{\"id\":");
   out.write(std::string_view(digits, static_cast<std::size_t>(end - digits)));
   out.write(",\"error\":\"");
   out.write(message);
-  out.write("\"}");
+  out.write(doubles ? "\",\"numbers\":\"double\"}" : "\"}");
 }
 
 /// The lines of `relpos batch` answered on the pool's threads and written in input order. Each
@@ -336,11 +337,11 @@ class BatchPipeline {
     for (std::size_t i = 0; i < s.n; ++i) {
       const long line_number = s.first + static_cast<long>(i);
       if (s.status[i] == LineReader::Status::TooLong)
-        write_error_line(out_, line_number, too_long_);
+        write_error_line(out_, line_number, too_long_, options_.numbers_as_doubles);
       else if (s.status[i] == LineReader::Status::OutOfMemory)
-        write_error_line(out_, line_number, "out of memory while reading this line");
+        write_error_line(out_, line_number, "out of memory while reading this line", options_.numbers_as_doubles);
       else if (s.answers[i].empty())  // not even the short error fitted (relpos::io::answer_batch_line)
-        write_error_line(out_, line_number, relpos::io::kOutOfMemoryNoIdMessage);
+        write_error_line(out_, line_number, relpos::io::kOutOfMemoryNoIdMessage, options_.numbers_as_doubles);
       else
         out_.write(s.answers[i]);
       out_.write("\n");

@@ -423,9 +423,13 @@ void read_batch_line(std::string_view line, long line_number, const BatchOptions
 
 void append_trailer(std::string& answer, std::string_view meta, bool numbers_as_doubles) {
   if ((!numbers_as_doubles && meta.empty()) || answer.empty() || answer.back() != '}') return;
+  constexpr std::string_view kNumbers = ",\"numbers\":\"double\"", kMeta = ",\"meta\":";
+  // Room first: out of memory leaves the answer as it was, a whole JSON object.
+  answer.reserve(answer.size() + (numbers_as_doubles ? kNumbers.size() : 0) +
+                 (meta.empty() ? 0 : kMeta.size() + meta.size()));
   answer.pop_back();
-  if (numbers_as_doubles) answer.append(",\"numbers\":\"double\"");
-  if (!meta.empty()) answer.append(",\"meta\":").append(meta);
+  if (numbers_as_doubles) answer.append(kNumbers);
+  if (!meta.empty()) answer.append(kMeta).append(meta);
   answer.push_back('}');
 }
 
@@ -477,12 +481,19 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
     if (write_error(out, id, "internal error: unknown exception") && finish()) return;
   }
   // Out of memory: that line's error, with its id when it can be echoed (the partial answer's
-  // capacity is reused), else with the line number (doc/cli.md, "Out of memory").
-  if (write_error(out, id, kOutOfMemoryMessage)) return;
+  // capacity is reused), else with the line number (doc/cli.md, "Out of memory"); its last members
+  // when they fit.
+  if (write_error(out, id, kOutOfMemoryMessage)) {
+    finish();
+    return;
+  }
   char number[24];
   const auto end = std::to_chars(number, number + sizeof number, line_number).ptr;
-  if (write_error(out, std::string_view(number, static_cast<std::size_t>(end - number)), kOutOfMemoryNoIdMessage))
+  if (write_error(out, std::string_view(number, static_cast<std::size_t>(end - number)), kOutOfMemoryNoIdMessage)) {
+    meta = std::string_view();
+    finish();
     return;
+  }
   out.clear();  // not even that: the caller writes its own line (doc/cli.md)
 }
 
