@@ -8,7 +8,8 @@ of examples/oracle around the paper's rule in doubles, `relpos judge`.
                                                       # stored deflate blocks; the repository's copy
                                                       # is the same image recompressed by zlib)
   scripts/oracle-tables.py RELPOS_CLI --check         # fail unless doc/oracle.md holds these tables
-                                                      # (CTest doc_oracle)
+                                                      # and doc/figures/oracle-chart.png this chart's
+                                                      # pixels (CTest doc_oracle)
 
 The commands are the walkthrough's (CASES below), seed 1: the same build gives the same bytes.
 """
@@ -46,8 +47,8 @@ def tables(cli, chart=None):
         return "```\n" + "\n".join(out).rstrip("\n") + "\n```\n"
 
 
-def recompressed(png):
-    """The same PNG with its image data deflated by zlib (chunks re-checksummed)."""
+def chunks_of(png):
+    """The chunks other than IDAT, and the inflated image data."""
     chunks, at, data = [], 8, b""
     while at < len(png):
         (n,) = struct.unpack(">I", png[at:at + 4])
@@ -57,7 +58,13 @@ def recompressed(png):
         else:
             chunks.append((kind, body))
         at += 12 + n
-    chunks.insert(2, (b"IDAT", zlib.compress(zlib.decompress(data), 9)))  # after IHDR and PLTE
+    return chunks, zlib.decompress(data)
+
+
+def recompressed(png):
+    """The same PNG with its image data deflated by zlib (chunks re-checksummed)."""
+    chunks, data = chunks_of(png)
+    chunks.insert(2, (b"IDAT", zlib.compress(data, 9)))  # after IHDR and PLTE
     out = png[:8]
     for kind, body in chunks:
         out += struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
@@ -68,7 +75,8 @@ def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
     cli, mode = sys.argv[1], (sys.argv[2] if len(sys.argv) > 2 else "")
-    text = tables(cli, CHART if mode == "--write" else None)
+    fresh = tempfile.NamedTemporaryFile(suffix=".png", delete=False).name
+    text = tables(cli, CHART if mode == "--write" else fresh)
     if not mode:
         sys.stdout.write(text)
         return 0
@@ -85,7 +93,13 @@ def main():
         print("doc/oracle.md: the walkthrough's tables differ from scripts/oracle-tables.py's output:")
         print(text)
         return 1
-    print("doc/oracle.md: the walkthrough's tables are the script's output")
+    with open(fresh, "rb") as f, open(CHART, "rb") as g:
+        same = chunks_of(f.read()) == chunks_of(g.read())
+    os.unlink(fresh)
+    if not same:
+        print("doc/figures/oracle-chart.png: not the chart of this run (scripts/oracle-tables.py --write)")
+        return 1
+    print("doc/oracle.md: the walkthrough's tables and chart are the script's output")
     return 0
 
 
