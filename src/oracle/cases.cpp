@@ -96,9 +96,11 @@ Json construction_margin(const Rational& s) {
 
 }  // namespace
 
-std::vector<Case> make_cases(const CaseOptions& options) {
+namespace {
+
+std::vector<const Family*> chosen_families(const std::vector<std::string>& names) {
   std::vector<const Family*> chosen;
-  for (const std::string& name : options.families) {
+  for (const std::string& name : names) {
     if (name == "all") {
       for (const Family& f : families()) chosen.push_back(&f);
       continue;
@@ -111,42 +113,49 @@ std::vector<Case> make_cases(const CaseOptions& options) {
     }
     chosen.push_back(f);
   }
-  std::vector<std::string> eps_texts = options.eps.empty() ? split(kDefaultEps) : options.eps;
+  return chosen;
+}
+
+Rational eps_of(const std::string& text) {
+  Rational e;
+  try {
+    e = parse_rational(text);
+  } catch (const InputError& err) {
+    throw InputError("--eps: " + std::string(err.what()));
+  }
+  if (e < 0 || e >= 1) throw InputError("--eps: each eps must lie in [0, 1), got " + text);
+  return e;
+}
+
+/// The n cases of family f at one eps, not yet constructed.
+void add_cases(std::vector<Case>& out, const Family* f, const std::string& eps_text, const Rational& eps,
+               std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    Case c;
+    c.family = f;
+    c.eps_text = eps_text;
+    c.eps = eps;
+    c.index = i;
+    c.id = std::string(f->name) + "/" + eps_text + "/" + std::to_string(i);
+    out.push_back(std::move(c));
+  }
+}
+
+}  // namespace
+
+std::vector<Case> make_cases(const CaseOptions& options) {
+  const std::vector<std::string> eps_texts = options.eps.empty() ? split(kDefaultEps) : options.eps;
   std::vector<Rational> eps;
-  for (const std::string& t : eps_texts) {
-    Rational e;
-    try {
-      e = parse_rational(t);
-    } catch (const InputError& err) {
-      throw InputError("--eps: " + std::string(err.what()));
-    }
-    if (e < 0 || e >= 1) throw InputError("--eps: each eps must lie in [0, 1), got " + t);
-    eps.push_back(e);
-  }
+  for (const std::string& t : eps_texts) eps.push_back(eps_of(t));
   std::vector<Case> out;
-  for (const Family* f : chosen) {
-    for (std::size_t k = 0; k < eps.size(); ++k) {
-      if (!f->uses_eps && eps[k] != 0) continue;  // made at eps = 0 only
-      for (std::size_t i = 0; i < options.n; ++i) {
-        Case c;
-        c.family = f;
-        c.eps_text = f->uses_eps ? eps_texts[k] : "0";
-        c.eps = f->uses_eps ? eps[k] : Rational(0);
-        c.index = i;
-        c.id = std::string(f->name) + "/" + c.eps_text + "/" + std::to_string(i);
-        out.push_back(std::move(c));
-      }
+  for (const Family* f : chosen_families(options.families)) {
+    if (!f->uses_eps) {  // made once, at eps = 0, whatever the epsilons
+      add_cases(out, f, "0", Rational(0), options.n);
+      continue;
     }
-    if (!f->uses_eps && std::find(eps.begin(), eps.end(), Rational(0)) == eps.end())  // made all the same
-      for (std::size_t i = 0; i < options.n; ++i) {
-        Case c;
-        c.family = f;
-        c.eps_text = "0";
-        c.index = i;
-        c.id = std::string(f->name) + "/0/" + std::to_string(i);
-        out.push_back(std::move(c));
-      }
+    for (std::size_t k = 0; k < eps.size(); ++k) add_cases(out, f, eps_texts[k], eps[k], options.n);
   }
+  // Construct and label on the pool (a classification or three per case).
   const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   detail::WorkerPool pool(threads);
   std::vector<std::string> errors(out.size());

@@ -196,24 +196,16 @@ void add(BaselineCounts& b, const std::optional<std::array<bool, 3>>& wrong) {
   for (std::size_t k = 0; k < 3; ++k) b.errors[k] += (*wrong)[k];
 }
 
-const char* truth_name(Truth t) { return t == Truth::Exact ? "exact" : (t == Truth::Double ? "double" : "matrix"); }
-
-std::string percent(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f %%", 100 * x);
-  return text;
-}
-
-}  // namespace
-
-JudgeReport judge(std::string_view cases_text, std::string_view answers_text, const JudgeOptions& options) {
-  JudgeReport r;
-  r.options = options;
-  // The cases.
-  std::vector<CaseLine> cases;
+/// The cases of a judge's file, by id.
+struct Cases {
+  std::vector<CaseLine> lines;
   std::map<std::string, std::size_t> index;
+};
+
+Cases read_cases(std::string_view text) {
+  Cases out;
   long number = 0;
-  for (const std::string_view line : lines_of(cases_text)) {
+  for (const std::string_view line : lines_of(text)) {
     ++number;
     if (blank(line)) continue;
     CaseLine c;
@@ -227,13 +219,17 @@ JudgeReport judge(std::string_view cases_text, std::string_view answers_text, co
     if (!member(c.json, "id")) throw InputError("cases, line " + std::to_string(number) + ": no \"id\"");
     c.id = dump(c.json["id"]);
     if (const Json* m = member(c.json, "meta")) c.meta = *m;
-    if (!index.emplace(c.id, cases.size()).second)
+    if (!out.index.emplace(c.id, out.lines.size()).second)
       throw InputError("cases, line " + std::to_string(number) + ": the id " + c.id + " is given twice");
-    cases.push_back(std::move(c));
+    out.lines.push_back(std::move(c));
   }
-  // The answers: the first answer of each case counts.
-  std::vector<std::optional<Answer>> answers(cases.size());
-  for (const std::string_view line : lines_of(answers_text)) {
+  return out;
+}
+
+/// The first answer of each case (nullopt: none), counting the lines that match no case once.
+std::vector<std::optional<Answer>> read_answers(std::string_view text, const Cases& cases, JudgeReport& r) {
+  std::vector<std::optional<Answer>> answers(cases.lines.size());
+  for (const std::string_view line : lines_of(text)) {
     if (blank(line)) continue;
     Json a;
     try {
@@ -247,313 +243,179 @@ JudgeReport judge(std::string_view cases_text, std::string_view answers_text, co
       ++r.malformed;
       continue;
     }
-    const auto it = index.find(dump(*id));
-    if (it == index.end()) {
+    const auto it = cases.index.find(dump(*id));
+    if (it == cases.index.end()) {
       ++r.unknown;
-      continue;
-    }
-    if (answers[it->second]) {
+    } else if (answers[it->second]) {
       ++r.duplicate;
-      continue;
-    }
-    Answer answer;
-    if (!member(a, "error")) answer.position = position_from_text(a.value("position", Json()));
-    if (const Json* m = member(a, "margin")) answer.margin = *m;
-    answers[it->second] = std::move(answer);
-  }
-  // Each case.
-  std::map<std::vector<std::string>, std::size_t> group_of;
-  std::map<std::string, std::map<double, CurvePoint>> curves;  // family ("" all) -> eps -> point
-  std::vector<std::string> family_order{""};
-  const char* const margin_key =
-      options.truth == Truth::Exact ? "margin" : (options.truth == Truth::Double ? "double_margin" : "matrix_margin");
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    const CaseLine& c = cases[i];
-    std::optional<Position> truth;
-    std::optional<TruthPair> pair;  // built when needed
-    auto the_pair = [&]() -> TruthPair& {
-      if (!pair) pair = pair_of(c, options.truth);
-      return *pair;
-    };
-    const char* const truth_key = options.truth == Truth::Exact
-                                      ? "position"
-                                      : (options.truth == Truth::Double ? "double_position" : "matrix_position");
-    try {
-      if (const Json* t = member(c.meta, truth_key)) {
-        truth = position_from_text(*t);
-        if (!truth && !t->is_null())
-          r.warnings.push_back(c.id + ": meta." + truth_key + " is not a position: " + dump(*t));
-      } else {
-        TruthPair& p = the_pair();
-        if (p.e && p.p) truth = decide_position(*p.e, *p.p).position;
-      }
-    } catch (const InputError& err) {
-      r.warnings.push_back(c.id + ": no " + truth_name(options.truth) + " truth: " + err.what());
-    }
-    Outcome outcome;
-    std::string answer_text = "missing";
-    if (!truth) {
-      outcome = Outcome::NoTruth;
-    } else if (!answers[i]) {
-      outcome = Outcome::Missing;
-    } else if (!answers[i]->position) {
-      outcome = Outcome::Undecided;
-      answer_text = "undecided";
     } else {
-      answer_text = to_string(*answers[i]->position);
-      outcome = *answers[i]->position == *truth ? Outcome::Right : Outcome::Wrong;
-      if (outcome == Outcome::Wrong && options.tolerance) {
-        const Json* m = !answers[i]->margin.is_null() ? &answers[i]->margin : member(c.json, "margin");
-        if (!m) m = member(c.meta, margin_key);
-        if (m) {
-          try {
-            const Margin margin = margin_from_json(*m);
-            CentreSide side =
-                *truth == Position::I || *truth == Position::TI ? CentreSide::Inside : CentreSide::Outside;
-            if (*truth == Position::C) {
-              TruthPair& p = the_pair();
-              side = side_of(*p.e, *p.p);
-            }
-            if (within_tolerance(*answers[i]->position, side, margin, *options.tolerance)) outcome = Outcome::Excused;
-          } catch (const InputError& err) {
-            r.warnings.push_back(c.id + ": " + err.what());
-          }
-        }
-      }
-    }
-    // The baselines on the float code's matrices.
-    std::optional<std::array<bool, 3>> baseline_wrong;
-    if (options.baselines && truth) {
-      const Json* dbl = member(c.meta, "double");
-      const auto e = matrix_of(member(dbl, "E")), p = matrix_of(member(dbl, "P"));
-      if (e && p) {
-        const std::optional<Position> b[3] = {paper_rule_double(*p, *e), paper_rule_long_double(*p, *e),
-                                              minimal_rule_double(*p, *e)};
-        baseline_wrong = std::array<bool, 3>{b[0] != truth, b[1] != truth, b[2] != truth};
-      }
-    }
-    // Tallies.
-    std::vector<std::string> key;
-    for (const std::string& k : options.by) key.push_back(key_text(member(c.meta, k.c_str())));
-    auto [it, fresh] = group_of.emplace(key, r.groups.size());
-    if (fresh) r.groups.push_back(Group{key, {}, {}});
-    Group& g = r.groups[it->second];
-    add(g.counts, outcome);
-    add(g.baselines, baseline_wrong);
-    add(r.total.counts, outcome);
-    add(r.total.baselines, baseline_wrong);
-    if (truth) {
-      const std::size_t column = outcome == Outcome::Missing     ? 6
-                                 : outcome == Outcome::Undecided ? 5
-                                                                 : static_cast<std::size_t>(*answers[i]->position);
-      ++r.confusion[static_cast<std::size_t>(*truth)][column];
-    }
-    if (const Json* eps = member(c.meta, "eps"); eps && (eps->is_number() || eps->is_string())) {
-      double x = 0;
-      try {
-        x = eps->is_number() ? eps->get<double>() : nearest_double(parse_rational(eps->get<std::string>()));
-      } catch (const InputError&) {
-        x = -1;
-      }
-      if (x >= 0) {
-        const std::string family = key_text(member(c.meta, "family"));
-        if (std::find(family_order.begin(), family_order.end(), family) == family_order.end())
-          family_order.push_back(family);
-        for (const std::string& f : {std::string(), family}) {
-          CurvePoint& point = curves[f][x];
-          point.eps = x;
-          point.eps_text = key_text(eps);
-          add(point.counts, outcome);
-          add(point.baselines, baseline_wrong);
-        }
-      }
-    }
-    if (truth && (outcome == Outcome::Wrong || outcome == Outcome::Undecided || outcome == Outcome::Missing)) {
-      Miss miss{c.json["id"].is_string() ? c.json["id"].get<std::string>() : c.id,
-                key_text(member(c.meta, "family")),
-                key_text(member(c.meta, "eps")),
-                *truth,
-                answer_text,
-                ""};
-      try {
-        TruthPair& p = the_pair();
-        if (!p.ellipsoid.is_null() && !p.paraboloid.is_null())
-          miss.reproduce = "relpos classify --ellipsoid " + shell_quoted(dump(p.ellipsoid)) + " --paraboloid " +
-                           shell_quoted(dump(p.paraboloid));
-      } catch (const InputError&) {
-      }
-      r.misses.push_back(std::move(miss));
+      Answer answer;
+      if (!member(a, "error")) answer.position = position_from_text(a.value("position", Json()));
+      if (const Json* m = member(a, "margin")) answer.margin = *m;
+      answers[it->second] = std::move(answer);
     }
   }
-  r.total.key = {"all"};
-  for (const std::string& family : family_order) {
-    if (!curves.count(family)) continue;
-    Curve curve{family, {}};
-    for (auto& [eps, point] : curves[family]) curve.points.push_back(point);
-    r.curves.push_back(std::move(curve));
+  return answers;
+}
+
+const char* truth_key(Truth t) {
+  return t == Truth::Exact ? "position" : (t == Truth::Double ? "double_position" : "matrix_position");
+}
+const char* margin_key(Truth t) {
+  return t == Truth::Exact ? "margin" : (t == Truth::Double ? "double_margin" : "matrix_margin");
+}
+
+/// One case being judged: its line, its pair of the truth asked for (built when first needed).
+struct Judged {
+  const CaseLine& line;
+  Truth truth_kind;
+  std::optional<TruthPair> built;
+  TruthPair& pair() {
+    if (!built) built = pair_of(line, truth_kind);
+    return *built;
   }
-  return r;
+};
+
+/// A miss, with a `relpos classify` command giving the pair of its truth.
+Miss miss_of(Judged& c, Position truth, const std::string& answer) {
+  Miss miss{c.line.json["id"].is_string() ? c.line.json["id"].get<std::string>() : c.line.id,
+            key_text(member(c.line.meta, "family")),
+            key_text(member(c.line.meta, "eps")),
+            truth,
+            answer,
+            ""};
+  try {
+    TruthPair& p = c.pair();
+    if (!p.ellipsoid.is_null() && !p.paraboloid.is_null())
+      miss.reproduce = "relpos classify --ellipsoid " + shell_quoted(dump(p.ellipsoid)) + " --paraboloid " +
+                       shell_quoted(dump(p.paraboloid));
+  } catch (const InputError&) {
+  }
+  return miss;
 }
 
-// ------------------------------------------------------------------------------------------------
-// Reports
-
-namespace {
-
-const char* const kAnswerColumns[7] = {"I", "TI", "C", "TE", "E", "undecided", "missing"};
-
-std::string tolerance_text(const JudgeOptions& o) { return o.tolerance ? to_string(*o.tolerance) : "none"; }
-
-Json counts_json(const Counts& c) {
-  return Json{
-      {"cases", c.cases},         {"right", c.right},     {"wrong", c.wrong},       {"excused", c.excused},
-      {"undecided", c.undecided}, {"missing", c.missing}, {"no_truth", c.no_truth}, {"error_rate", c.error_rate()}};
+/// The truth of a case: its meta member, else relpos on its pair; nullopt (and a warning) when none.
+std::optional<Position> truth_of(Judged& c, JudgeReport& r) {
+  try {
+    if (const Json* t = member(c.line.meta, truth_key(c.truth_kind))) {
+      const std::optional<Position> p = position_from_text(*t);
+      if (!p && !t->is_null())
+        r.warnings.push_back(c.line.id + ": meta." + truth_key(c.truth_kind) + " is not a position: " + dump(*t));
+      return p;
+    }
+    TruthPair& p = c.pair();
+    if (p.e && p.p) return decide_position(*p.e, *p.p).position;
+  } catch (const InputError& err) {
+    r.warnings.push_back(c.line.id + ": no " + truth_name(c.truth_kind) + " truth: " + err.what());
+  }
+  return std::nullopt;
 }
 
-Json baselines_json(const BaselineCounts& b) {
-  Json out{{"cases", b.cases}};
-  for (std::size_t k = 0; k < 3; ++k) out[kBaselineNames[k]] = b.error_rate(k);
-  return out;
+/// Whether a wrong answer is excused within the tolerance (tolerance.hpp), by the answer's margin,
+/// else the case line's, else its meta's.
+bool excused(Judged& c, const Answer& a, Position truth, const Rational& tau, JudgeReport& r) {
+  const Json* m = !a.margin.is_null() ? &a.margin : member(c.line.json, "margin");
+  if (!m) m = member(c.line.meta, margin_key(c.truth_kind));
+  if (!m) return false;
+  try {
+    const Margin margin = margin_from_json(*m);
+    CentreSide side = truth == Position::I || truth == Position::TI ? CentreSide::Inside : CentreSide::Outside;
+    if (truth == Position::C) side = side_of(*c.pair().e, *c.pair().p);
+    return within_tolerance(*a.position, side, margin, tau);
+  } catch (const InputError& err) {
+    r.warnings.push_back(c.line.id + ": " + err.what());
+    return false;
+  }
 }
 
-std::string baseline_cell(const BaselineCounts& b, std::size_t k) { return b.cases ? percent(b.error_rate(k)) : "-"; }
+/// Whether each float baseline is wrong (or undecided) on the case's float matrices, if it has them.
+std::optional<std::array<bool, 3>> baselines_wrong(const CaseLine& c, Position truth) {
+  const Json* dbl = member(c.meta, "double");
+  const auto e = matrix_of(member(dbl, "E")), p = matrix_of(member(dbl, "P"));
+  if (!e || !p) return std::nullopt;
+  const std::optional<Position> b[3] = {paper_rule_double(*p, *e), paper_rule_long_double(*p, *e),
+                                        minimal_rule_double(*p, *e)};
+  return std::array<bool, 3>{b[0] != truth, b[1] != truth, b[2] != truth};
+}
+
+/// The curves of the chart: family ("" all) -> eps -> point, and the families in order.
+struct Curves {
+  std::map<std::string, std::map<double, CurvePoint>> points;
+  std::vector<std::string> order{""};
+  void add(const CaseLine& c, Outcome o, const std::optional<std::array<bool, 3>>& baselines) {
+    const Json* eps = member(c.meta, "eps");
+    if (!eps || !(eps->is_number() || eps->is_string())) return;
+    double x = -1;
+    try {
+      x = eps->is_number() ? eps->get<double>() : nearest_double(parse_rational(eps->get<std::string>()));
+    } catch (const InputError&) {
+    }
+    if (x < 0) return;
+    const std::string family = key_text(member(c.meta, "family"));
+    if (std::find(order.begin(), order.end(), family) == order.end()) order.push_back(family);
+    for (const std::string& f : {std::string(), family}) {
+      CurvePoint& point = points[f][x];
+      point.eps = x;
+      point.eps_text = key_text(eps);
+      oracle::add(point.counts, o);
+      oracle::add(point.baselines, baselines);
+    }
+  }
+  std::vector<Curve> curves() {
+    std::vector<Curve> out;
+    for (const std::string& family : order) {
+      if (!points.count(family)) continue;
+      Curve curve{family, {}};
+      for (auto& [eps, point] : points[family]) curve.points.push_back(point);
+      out.push_back(std::move(curve));
+    }
+    return out;
+  }
+};
 
 }  // namespace
 
-std::string report_markdown(const JudgeReport& r, std::size_t max_misses) {
-  std::ostringstream out;
-  const Counts& t = r.total.counts;
-  out << "relpos judge: " << t.cases << " cases, truth " << truth_name(r.options.truth) << ", tolerance "
-      << tolerance_text(r.options) << "\n\n";
-  out << "|";
-  for (const std::string& k : r.options.by) out << ' ' << k << " |";
-  out << " cases | right | wrong | undecided | missing | excused | error rate |";
-  if (r.options.baselines)
-    for (const char* b : kBaselineNames) out << ' ' << b << " |";
-  out << "\n|";
-  for (std::size_t k = 0; k < r.options.by.size(); ++k) out << "---|";
-  out << "---:|---:|---:|---:|---:|---:|---:|";
-  if (r.options.baselines) out << "---:|---:|---:|";
-  out << "\n";
-  auto row = [&](const Group& g, bool total) {
-    out << "|";
-    for (std::size_t k = 0; k < r.options.by.size(); ++k)
-      out << ' ' << (total ? (k == 0 ? "all" : "") : g.key[k]) << " |";
-    const Counts& c = g.counts;
-    out << ' ' << c.judged() << " | " << c.right << " | " << c.wrong << " | " << c.undecided << " | " << c.missing
-        << " | " << c.excused << " | " << percent(c.error_rate()) << " |";
-    if (r.options.baselines)
-      for (std::size_t k = 0; k < 3; ++k) out << ' ' << baseline_cell(g.baselines, k) << " |";
-    out << "\n";
-  };
-  for (const Group& g : r.groups) row(g, false);
-  row(r.total, true);
-  out << "\nConfusion (rows: truth; columns: answer)\n\n| truth |";
-  for (const char* c : kAnswerColumns) out << ' ' << c << " |";
-  out << "\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (std::size_t i = 0; i < 5; ++i) {
-    out << "| " << to_string(static_cast<Position>(i)) << " |";
-    for (std::size_t j = 0; j < 7; ++j) out << ' ' << r.confusion[i][j] << " |";
-    out << "\n";
-  }
-  out << "\nAnswer lines that match no case: " << r.malformed << " malformed, " << r.unknown << " unknown id, "
-      << r.duplicate << " duplicate id. Cases without a truth: " << t.no_truth << ".\n";
-  if (!r.misses.empty()) {
-    out << "\nMisses (" << std::min(max_misses, r.misses.size()) << " of " << r.misses.size()
-        << "; --format json lists all):\n\n";
-    for (std::size_t i = 0; i < r.misses.size() && i < max_misses; ++i) {
-      const Miss& m = r.misses[i];
-      out << "- " << m.id << ": truth " << to_string(m.truth) << ", answer " << m.answer << "\n";
-      if (!m.reproduce.empty()) out << "  " << m.reproduce << "\n";
-    }
-  }
-  for (const std::string& w : r.warnings) out << "\nwarning: " << w << "\n";
-  return out.str();
-}
+const char* truth_name(Truth t) { return t == Truth::Exact ? "exact" : (t == Truth::Double ? "double" : "matrix"); }
 
-std::string report_csv(const JudgeReport& r) {
-  std::ostringstream out;
-  for (const std::string& k : r.options.by) out << k << ',';
-  out << "cases,right,wrong,undecided,missing,excused,no_truth,error_rate";
-  if (r.options.baselines)
-    for (const char* b : kBaselineNames) out << ',' << b;
-  out << "\n";
-  auto quoted = [](const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string q = "\"";
-    for (const char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + "\"";
-  };
-  auto row = [&](const Group& g, bool total) {
-    for (std::size_t k = 0; k < r.options.by.size(); ++k)
-      out << (total ? (k == 0 ? "all" : "") : quoted(g.key[k])) << ',';
-    const Counts& c = g.counts;
-    char rate[32];
-    std::snprintf(rate, sizeof rate, "%.6g", c.error_rate());
-    out << c.judged() << ',' << c.right << ',' << c.wrong << ',' << c.undecided << ',' << c.missing << ',' << c.excused
-        << ',' << c.no_truth << ',' << rate;
-    if (r.options.baselines)
-      for (std::size_t k = 0; k < 3; ++k) {
-        std::snprintf(rate, sizeof rate, "%.6g", g.baselines.error_rate(k));
-        out << ',' << (g.baselines.cases ? rate : "");
-      }
-    out << "\n";
-  };
-  for (const Group& g : r.groups) row(g, false);
-  row(r.total, true);
-  return out.str();
-}
-
-std::string report_json(const JudgeReport& r) {
-  Json out;
-  out["truth"] = truth_name(r.options.truth);
-  out["tolerance"] = r.options.tolerance ? Json(to_string(*r.options.tolerance)) : Json(nullptr);
-  out["by"] = r.options.by;
-  Json groups = Json::array();
-  for (const Group& g : r.groups) {
-    Json j;
-    Json key;
-    for (std::size_t k = 0; k < r.options.by.size(); ++k) key[r.options.by[k]] = g.key[k];
-    j["key"] = key;
-    j.update(counts_json(g.counts));
-    if (r.options.baselines) j["baselines"] = baselines_json(g.baselines);
-    groups.push_back(j);
-  }
-  out["groups"] = groups;
-  Json total = counts_json(r.total.counts);
-  if (r.options.baselines) total["baselines"] = baselines_json(r.total.baselines);
-  out["total"] = total;
-  Json confusion;
-  for (std::size_t i = 0; i < 5; ++i) {
-    Json row;
-    for (std::size_t j = 0; j < 7; ++j) row[kAnswerColumns[j]] = r.confusion[i][j];
-    confusion[to_string(static_cast<Position>(i))] = row;
-  }
-  out["confusion"] = confusion;
-  out["unmatched"] = Json{{"malformed", r.malformed}, {"unknown", r.unknown}, {"duplicate", r.duplicate}};
-  Json misses = Json::array();
-  for (const Miss& m : r.misses)
-    misses.push_back(Json{{"id", m.id},
-                          {"family", m.family},
-                          {"eps", m.eps},
-                          {"truth", to_string(m.truth)},
-                          {"answer", m.answer},
-                          {"reproduce", m.reproduce}});
-  out["misses"] = misses;
-  Json curves = Json::array();
-  for (const Curve& c : r.curves) {
-    Json points = Json::array();
-    for (const CurvePoint& p : c.points) {
-      Json j{{"eps", p.eps}, {"eps_text", p.eps_text}};
-      j.update(counts_json(p.counts));
-      if (r.options.baselines) j["baselines"] = baselines_json(p.baselines);
-      points.push_back(j);
+JudgeReport judge(std::string_view cases_text, std::string_view answers_text, const JudgeOptions& options) {
+  JudgeReport r;
+  r.options = options;
+  const Cases cases = read_cases(cases_text);
+  const std::vector<std::optional<Answer>> answers = read_answers(answers_text, cases, r);
+  std::map<std::vector<std::string>, std::size_t> group_of;
+  Curves curves;
+  for (std::size_t i = 0; i < cases.lines.size(); ++i) {
+    Judged c{cases.lines[i], options.truth, std::nullopt};
+    const std::optional<Position> truth = truth_of(c, r);
+    const std::optional<Answer>& a = answers[i];
+    Outcome outcome = !truth                   ? Outcome::NoTruth
+                      : !a                     ? Outcome::Missing
+                      : !a->position           ? Outcome::Undecided
+                      : *a->position == *truth ? Outcome::Right
+                                               : Outcome::Wrong;
+    if (outcome == Outcome::Wrong && options.tolerance && excused(c, *a, *truth, *options.tolerance, r))
+      outcome = Outcome::Excused;
+    const auto baselines = options.baselines && truth ? baselines_wrong(c.line, *truth) : std::nullopt;
+    std::vector<std::string> key;
+    for (const std::string& k : options.by) key.push_back(key_text(member(c.line.meta, k.c_str())));
+    const auto [it, fresh] = group_of.emplace(key, r.groups.size());
+    if (fresh) r.groups.push_back(Group{key, {}, {}});
+    for (Group* g : {&r.groups[it->second], &r.total}) {
+      add(g->counts, outcome);
+      add(g->baselines, baselines);
     }
-    curves.push_back(Json{{"family", c.family.empty() ? Json(nullptr) : Json(c.family)}, {"points", points}});
+    curves.add(c.line, outcome, baselines);
+    if (!truth) continue;
+    const std::size_t column = outcome == Outcome::Missing     ? 6
+                               : outcome == Outcome::Undecided ? 5
+                                                               : static_cast<std::size_t>(*a->position);
+    ++r.confusion[static_cast<std::size_t>(*truth)][column];
+    if (outcome == Outcome::Wrong || outcome == Outcome::Undecided || outcome == Outcome::Missing)
+      r.misses.push_back(miss_of(c, *truth, column < 5 ? to_string(*a->position) : kAnswerColumns[column]));
   }
-  out["curves"] = curves;
-  out["warnings"] = r.warnings;
-  return dump(out) + "\n";
+  r.total.key = {"all"};
+  r.curves = curves.curves();
+  return r;
 }
 
 }  // namespace relpos::oracle

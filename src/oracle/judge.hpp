@@ -50,6 +50,8 @@ struct BaselineCounts {
   }
 };
 inline constexpr const char* kBaselineNames[3] = {"paper-double", "paper-long-double", "minimal-double"};
+/// The columns of the confusion matrix: the answers.
+inline constexpr const char* kAnswerColumns[7] = {"I", "TI", "C", "TE", "E", "undecided", "missing"};
 
 struct Group {
   std::vector<std::string> key;  ///< the meta values of JudgeOptions::by, as text ("" when absent)
@@ -87,12 +89,15 @@ struct JudgeReport {
   std::vector<std::string> warnings;  ///< case lines that could not be read, margins refused
 };
 
+/// "exact", "double" or "matrix".
+const char* truth_name(Truth t);
+
 /// Judges `answers` against `cases` (both JSON Lines text). Throws InputError when a case line is
 /// not a JSON object with an id, or two cases share an id.
 JudgeReport judge(std::string_view cases, std::string_view answers, const JudgeOptions& options);
 
-/// The report as Markdown tables, CSV (one row per group, then the total) or JSON. At most
-/// `max_misses` misses are listed in Markdown (all in JSON).
+/// The report as Markdown tables, CSV (one row per group, then the total) or JSON (report.cpp). At
+/// most `max_misses` misses are listed in Markdown (all in JSON).
 std::string report_markdown(const JudgeReport& r, std::size_t max_misses = 20);
 std::string report_csv(const JudgeReport& r);
 std::string report_json(const JudgeReport& r);
