@@ -22,13 +22,15 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "io/batch.hpp"
+#include "io/certificate_json.hpp"
+#include "io/json_tree.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 constexpr const char* kVerifyHelp =
     "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--numbers exact|double] [--quiet]\n"
@@ -151,7 +153,7 @@ int run_verify(Args& args) {
     }
     Json answer;
     try {
-      answer = relpos::io::parse_json_exact(answer_line);
+      answer = relpos::io::detail::parse_json_exact(answer_line);
     } catch (const std::exception& err) {
       fail(number, std::string("the answer is not JSON: ") + clip(err.what()));
       continue;
@@ -212,7 +214,7 @@ int run_verify(Args& args) {
       continue;
     }
     try {
-      const relpos::Certificate c = relpos::certificate_from_json(answer["certificate"]);
+      const relpos::Certificate c = relpos::io::detail::certificate_from_tree(answer["certificate"]);
       if (auto reason = relpos::verify_certificate(*in.e, *in.p, *position, c))
         fail(number, position_text + ": " + clip(*reason));
       else

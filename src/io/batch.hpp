@@ -1,5 +1,6 @@
 // The pieces of a batch line (internal): the reader shared by `relpos batch`, the JSON Lines input of
-// `relpos scene`, `relpos verify` and the fuzzer, and the error line they write.
+// `relpos scene`, `relpos verify` and the fuzzer (batch.cpp); the answer to a line is io.hpp's
+// answer_batch_line (batch_answer.cpp).
 #pragma once
 
 #include <cstddef>
@@ -33,16 +34,10 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 /// object is scanned once: the id's text is kept, "comment" is validated without being stored,
 /// duplicate keys are refused. out.id is set (to the line number at first, to the id once it is
 /// read) before any InputError is thrown, so that errors echo the id; out's quadrics are the line's
-/// only when nothing is thrown.
+/// only when nothing is thrown. With `id`, the id is not copied into out.id: *id is set to its text
+/// instead (a view into `line`, or of out.id), before anything is thrown; the same for `meta` and
+/// out.meta (set once the members are scanned: empty before, and when the line has none).
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
-                     BatchLine& out);
-
-/// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced (std::bad_alloc when out of memory).
-std::string error_line(const std::string& id_text, const std::string& message);
-
-/// The members every answer line ends with (doc/cli.md, "relpos batch"): `"numbers":"double"` when
-/// the line was read with options.numbers_as_doubles, then `"meta":<meta>` when the input line had
-/// a "meta" member (its text, echoed byte for byte), written before the closing brace of `answer`.
-void append_trailer(std::string& answer, std::string_view meta, bool numbers_as_doubles);
+                     BatchLine& out, std::string_view* id = nullptr, std::string_view* meta = nullptr);
 
 }  // namespace relpos::io

@@ -11,6 +11,7 @@
 
 #include "algebra/centre.hpp"
 #include "io/batch.hpp"
+#include "io/quadric_json.hpp"
 #include "oracle/float_matrices.hpp"
 #include "oracle/float_rules.hpp"
 #include "oracle/nearest.hpp"
@@ -132,8 +133,8 @@ TruthPair pair_of(const CaseLine& c, Truth truth) {
   if (truth == Truth::Double && member(dbl, "ellipsoid") && member(dbl, "paraboloid")) {
     out.ellipsoid = exactified(*member(dbl, "ellipsoid"));
     out.paraboloid = exactified(*member(dbl, "paraboloid"));
-    out.e = io::ellipsoid_from_json(out.ellipsoid);
-    out.p = io::paraboloid_from_json(out.paraboloid);
+    out.e = io::detail::ellipsoid_from_tree(out.ellipsoid);
+    out.p = io::detail::paraboloid_from_tree(out.paraboloid);
     return out;
   }
   io::BatchOptions options;
