@@ -65,6 +65,8 @@ void print_main_help(std::ostream& os) {
         "  scene     one paraboloid against many ellipsoids (JSON Lines or CSV), on all cores\n"
         "  motion    a body moving by a polynomial translation and rotation: when the position changes\n"
         "  verify    check the certificates of a batch output against its input\n"
+        "  cases     hard pairs of known position for judging float code (doc/oracle.md)\n"
+        "  judge     a float code's answers against the cases: error rates, confusion, misses, chart\n"
         "\n"
         "Positions: I (interior), TI (tangent from inside), C (crossing), TE (tangent from outside),\n"
         "E (exterior): every valid pair gets one of them, whatever the ellipsoid's size.\n"
@@ -204,14 +206,15 @@ namespace {
 constexpr std::size_t kAnswerReserve = 256;
 
 /// {"id":N,"error":"message"} and a newline, written in pieces (no allocation); message is plain ASCII.
-void write_error_line(Output& out, long number, std::string_view message) {
+/// With `doubles` (--numbers double) the line says so, as every answer does (io::detail::append_trailer).
+void write_error_line(Output& out, long number, std::string_view message, bool doubles) {
   char digits[24];
   const auto end = std::to_chars(digits, digits + sizeof digits, number).ptr;
   out.write("{\"id\":");
   out.write(std::string_view(digits, static_cast<std::size_t>(end - digits)));
   out.write(",\"error\":\"");
   out.write(message);
-  out.write("\"}");
+  out.write(doubles ? "\",\"numbers\":\"double\"}" : "\"}");
 }
 
 /// The lines of `relpos batch` answered on the pool's threads and written in input order. Each
@@ -334,11 +337,11 @@ class BatchPipeline {
     for (std::size_t i = 0; i < s.n; ++i) {
       const long line_number = s.first + static_cast<long>(i);
       if (s.status[i] == LineReader::Status::TooLong)
-        write_error_line(out_, line_number, too_long_);
+        write_error_line(out_, line_number, too_long_, options_.numbers_as_doubles);
       else if (s.status[i] == LineReader::Status::OutOfMemory)
-        write_error_line(out_, line_number, "out of memory while reading this line");
+        write_error_line(out_, line_number, "out of memory while reading this line", options_.numbers_as_doubles);
       else if (s.answers[i].empty())  // not even the short error fitted (relpos::io::answer_batch_line)
-        write_error_line(out_, line_number, relpos::io::kOutOfMemoryNoIdMessage);
+        write_error_line(out_, line_number, relpos::io::kOutOfMemoryNoIdMessage, options_.numbers_as_doubles);
       else
         out_.write(s.answers[i]);
       out_.write("\n");
@@ -433,8 +436,8 @@ int main(int argc, char** argv) {
   const std::string command = all.front();
   using namespace relpos_cli;
   Args args(std::vector<std::string>(all.begin() + 1, all.end()));
-  const bool known =
-      command == "classify" || command == "batch" || command == "scene" || command == "motion" || command == "verify";
+  const bool known = command == "classify" || command == "batch" || command == "scene" || command == "motion" ||
+                     command == "verify" || command == "cases" || command == "judge";
   try {
     const bool about = command == "--help" || command == "-h" || command == "help" || command == "--version";
     if (about && !args.done()) throw UsageError{command + " takes no argument, got '" + args.peek() + "'"};
@@ -451,6 +454,8 @@ int main(int argc, char** argv) {
     if (command == "verify") return run_verify(args);
     if (command == "scene") return run_scene(args);
     if (command == "motion") return run_motion(args);
+    if (command == "cases") return run_cases(args);
+    if (command == "judge") return run_judge(args);
     throw UsageError{(command.rfind("-", 0) == 0 ? "unknown option '" : "unknown command '") + command + "'"};
   } catch (const UsageError& u) {
     std::cerr << "relpos: " << u.message << "\nTry 'relpos --help'";

@@ -30,6 +30,7 @@
 
 #include "commands.hpp"
 #include "common.hpp"
+#include "io/answer_json.hpp"
 #include "io/batch.hpp"
 #include "io/json_tree.hpp"
 #include "relpos/error.hpp"
@@ -127,7 +128,8 @@ enum class Format { Jsonl, Csv };
 struct Parsed {
   bool skip = false;  ///< CSV comment or blank line: no output
   long line = 0;
-  std::string id;  ///< JSON text of the id
+  std::string id;    ///< JSON text of the id
+  std::string meta;  ///< JSON text of the "meta" member, echoed at the end of the answer (or empty)
   std::optional<relpos::Ellipsoid> body;
   std::string error;
 };
@@ -187,9 +189,11 @@ void parse_line(const std::string& line, Format format, const relpos::io::BatchO
         relpos::io::read_batch_line(line, out.line, options, &p, in);
       } catch (...) {
         out.id = std::move(in.id);
+        out.meta = std::move(in.meta);
         throw;
       }
       out.id = std::move(in.id);
+      out.meta = std::move(in.meta);
       out.body = std::move(in.ellipsoid);
     } else {
       parse_csv(line, options, p, out);
@@ -487,10 +491,12 @@ int run_scene(Args& args) {
           out += relpos::to_string(v->position);
           out += "\",\"contact\":";
           out += relpos::contact_of(v->position) != relpos::Contact::None ? "true" : "false";
-          out += ",\"stage\":\"" + relpos::to_string(v->stage) + "\"}\n";
+          out += ",\"stage\":\"" + relpos::to_string(v->stage) + "\"}";
         } else {
-          out += ",\"line\":" + std::to_string(x.line) + ",\"error\":" + dump(Json(x.error)) + "}\n";
+          out += ",\"line\":" + std::to_string(x.line) + ",\"error\":" + dump(Json(x.error)) + "}";
         }
+        relpos::io::detail::append_trailer(x.meta, false, out);
+        out += '\n';
         output.write(out);
       }
       if (!more || !reader.ready()) output.flush();

@@ -1,5 +1,7 @@
-// relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]: checks every certificate of a `relpos batch`
-// output against its input with the independent verifier (include/relpos/position.hpp).
+// relpos verify INPUT.jsonl ANSWERS.jsonl [--numbers exact|double] [--quiet]: checks every
+// certificate of a `relpos batch` output against its input with the independent verifier
+// (include/relpos/position.hpp). An answer's "numbers" member says how its input was read
+// (`relpos batch --numbers double` writes "double"); --numbers is the reading of answers without it.
 //
 // Line N of ANSWERS answers line N of INPUT. An answer with "error" is skipped when its input line is
 // not a valid pair, and counted as unanswered when it is. Prints `line N: <reason>` per failure
@@ -31,12 +33,15 @@ namespace {
 using relpos::io::detail::Json;
 
 constexpr const char* kVerifyHelp =
-    "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]\n"
+    "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--numbers exact|double] [--quiet]\n"
     "\n"
     "Check the certificate of every answer of `relpos batch INPUT.jsonl > ANSWERS.jsonl` with an\n"
     "independent verifier that uses exact rational arithmetic only (no code of the classifier).\n"
     "Line N of ANSWERS must answer line N of INPUT. Answers with \"error\" are skipped when the input\n"
     "line is not a valid pair, and counted as unanswered when it is.\n"
+    "The input line is read as the answer's \"numbers\" member says (`relpos batch --numbers double`\n"
+    "writes \"numbers\": \"double\": each JSON number is the double nearest its text); an answer without\n"
+    "it is read as --numbers says (default exact).\n"
     "Prints 'line N: reason' for each failure (not with --quiet) and a summary line.\n"
     "Exit: 0 all verified, 1 a failure or an unanswered valid pair, 2 usage error.\n";
 
@@ -69,12 +74,15 @@ struct InputPair {
   std::string error;  // why the line is not a valid pair (empty if it is)
 };
 
-/// The input line as `relpos batch` reads it (relpos::io::read_batch_line).
-InputPair read_input(const std::string& line, long number) {
+/// The input line as `relpos batch` reads it (relpos::io::read_batch_line), its numbers exact or
+/// the doubles nearest their text.
+InputPair read_input(const std::string& line, long number, bool doubles) {
   InputPair in;
   relpos::io::BatchLine read;
+  relpos::io::BatchOptions options;
+  options.numbers_as_doubles = doubles;
   try {
-    relpos::io::read_batch_line(line, number, relpos::io::BatchOptions{}, nullptr, read);
+    relpos::io::read_batch_line(line, number, options, nullptr, read);
     in.e = std::move(read.ellipsoid);
     in.p = std::move(read.paraboloid);
   } catch (const std::exception& err) {
@@ -96,13 +104,17 @@ void print_verify_help(std::ostream& os) { os << kVerifyHelp; }
 
 int run_verify(Args& args) {
   std::vector<std::string> files;
-  bool quiet = false;
+  bool quiet = false, doubles = false;
   while (!args.done()) {
+    std::string v;
     if (args.help()) {
       print_verify_help(std::cout);
       return finish_cout();
     } else if (args.flag("--quiet") || args.flag("-q")) {
       quiet = true;
+    } else if (args.value("--numbers", v)) {
+      if (v != "exact" && v != "double") throw UsageError{"--numbers must be exact or double, got '" + v + "'"};
+      doubles = v == "double";
     } else if (args.peek().size() > 1 && args.peek()[0] == '-') {
       args.unexpected();
     } else {
@@ -139,7 +151,6 @@ int run_verify(Args& args) {
       fail(number, "no answer line (the files have different numbers of lines)");
       continue;
     }
-    const InputPair in = read_input(in_line, number);
     Json answer;
     try {
       answer = relpos::io::detail::parse_json_exact(answer_line);
@@ -151,6 +162,16 @@ int run_verify(Args& args) {
       fail(number, "the answer is not a JSON object");
       continue;
     }
+    bool read_doubles = doubles;  // the answer's own number mode first
+    if (answer.contains("numbers")) {
+      const Json& mode = answer["numbers"];
+      if (!mode.is_string() || (mode != "exact" && mode != "double")) {
+        fail(number, "\"numbers\" is " + clip(mode.dump()) + ", not \"exact\" or \"double\"");
+        continue;
+      }
+      read_doubles = mode == "double";
+    }
+    const InputPair in = read_input(in_line, number, read_doubles);
     if (!in.id.is_null() && answer.contains("id")) {
       Json answer_id;
       try {

@@ -48,6 +48,7 @@ __all__ = [
     "INVALID",
     "plot",
     "distributed",
+    "testing",
     "__version__",
 ]
 
@@ -276,6 +277,11 @@ class Classification(_Answer):
     rho = _field("rho", "rho exactly ('p/q') when it is rational, else None.")
 
     @property
+    def meta(self) -> Any:
+        """The meta value given to classify (None when none was)."""
+        return self._fields.get("meta")
+
+    @property
     def certificate(self) -> Optional[Certificate]:
         """The certificate (evidence="full"), else None."""
         c = self._fields.get("certificate")
@@ -316,17 +322,27 @@ def _check_pair(e, p, function):
         raise TypeError("%s: p must be a relpos.Paraboloid, got %s" % (function, type(p).__name__))
 
 
-def classify(e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] = "full") -> Classification:
+def classify(
+    e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] = "full", meta: Any = None
+) -> Classification:
     """Classify ellipsoid `e` against paraboloid `p` exactly.
 
     evidence="full" gives the same fields as `relpos batch` / `relpos classify --json` (exact
     coefficients of f and s, multiple roots, rho, the certificate); "minimal" only what the decision
-    needs. Raises ValueError on bad input (with the CLI's message). The GIL is released.
+    needs. meta: any JSON value, carried through untouched as the answer's "meta" member (as `relpos
+    batch` echoes a line's "meta"). Raises ValueError on bad input (with the CLI's message). The GIL
+    is released.
     """
     _check_pair(e, p, "classify")
     if evidence not in ("full", "minimal"):
         raise ValueError("evidence: expected 'full' or 'minimal', got %r" % (evidence,))
-    return Classification(_json.loads(_relpos._classify_json(e, p, evidence == "full")))
+    fields = _json.loads(_relpos._classify_json(e, p, evidence == "full"))
+    if meta is not None:
+        try:
+            fields["meta"] = _json.loads(_json.dumps(meta))
+        except (TypeError, ValueError) as err:
+            raise TypeError("meta: expected a JSON value (dict, list, str, number, bool, None): %s" % err)
+    return Classification(fields)
 
 
 def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
@@ -366,20 +382,35 @@ def _thread_count(threads):
 
 
 def decide_positions(
-    E: numpy.ndarray, P: numpy.ndarray, threads: int = 0, errors: Literal["raise", "code"] = "raise"
+    E: Union[numpy.ndarray, Mapping[str, Any]],
+    P: Union[numpy.ndarray, Mapping[str, Any]],
+    threads: int = 0,
+    errors: Literal["raise", "code"] = "raise",
+    symmetrize: Optional[Literal["upper"]] = None,
 ) -> numpy.ndarray:
-    """Positions of many pairs given as numpy matrices, exactly, on all cores.
+    """Positions of many pairs given as numpy matrices or parameters, exactly, on all cores.
 
-    E: array (n, 4, 4) of ellipsoid matrices; P: array (n, 4, 4), or one (4, 4) matrix shared by all.
-    Every entry is read exactly: float64, float32, float16, numpy.longdouble and integer arrays (of
-    any width) as the numbers they hold; any other dtype raises TypeError. Returns a numpy int8 array
-    of codes into POSITION_NAMES (0 = "I" ... 4 = "E"). threads=0 uses every core; the GIL is
-    released while deciding. errors="raise" raises ValueError naming the first invalid matrix
-    ("E[17]: ellipsoid: ..."); errors="code" gives such a pair the code INVALID (-1) instead.
+    E: array (n, 4, 4) of ellipsoid matrices, or the parameters a float code starts from, a dict
+    {"center": (n, 3), "axes": (n, 3), "rotation": (n, 4)} (semi-axes along the columns of the
+    quaternion's rotation; "rotation" may be left out). P: array (n, 4, 4), or one (4, 4) matrix
+    shared by all, or {"vertex": (n, 3), "a": (n,), "b": (n,), "rotation": (n, 4)} (an array
+    without the leading n is shared by every pair). Every entry is read exactly: float64, float32,
+    float16, numpy.longdouble and integer arrays (of any width) as the numbers they hold; any other
+    dtype raises TypeError. Parameters are never refused for their shape (a rotated paraboloid
+    rounded into a matrix usually is). symmetrize="upper" reads each matrix from its upper triangle
+    (a float code's R D R^T is symmetric only up to rounding). Returns a numpy int8 array of codes
+    into POSITION_NAMES (0 = "I" ... 4 = "E"). threads=0 uses every core; the GIL is released while
+    deciding. errors="raise" raises ValueError naming the first invalid pair ("E[17]: ellipsoid:
+    ...", and for a matrix what to pass instead); errors="code" gives such a pair the code INVALID
+    (-1) instead.
     """
     if errors not in ("raise", "code"):
         raise ValueError("errors: expected 'raise' or 'code', got %r" % (errors,))
-    return _relpos._decide_positions(E, P, _thread_count(threads), errors == "raise")
+    if symmetrize not in (None, "upper"):
+        raise ValueError("symmetrize: expected None or 'upper', got %r" % (symmetrize,))
+    E = dict(E) if isinstance(E, Mapping) else E
+    P = dict(P) if isinstance(P, Mapping) else P
+    return _relpos._decide_positions(E, P, _thread_count(threads), errors == "raise", symmetrize == "upper")
 
 
 class SceneResult:
@@ -522,9 +553,10 @@ def plot(e: Ellipsoid, p: Paraboloid, ax: Any = None, **kwargs: Any) -> Any:
 
 
 def __getattr__(name):
-    # relpos.distributed is imported on first use (it imports dask.distributed, which is slow).
-    if name == "distributed":
+    # relpos.distributed is imported on first use (it imports dask.distributed, which is slow), and
+    # relpos.testing too (the oracle for float code, doc/oracle.md).
+    if name in ("distributed", "testing"):
         import importlib
 
-        return importlib.import_module(".distributed", __name__)
+        return importlib.import_module("." + name, __name__)
     raise AttributeError("module 'relpos' has no attribute %r" % name)

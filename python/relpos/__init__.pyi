@@ -6,6 +6,7 @@ from typing import Any, Literal, Mapping, Optional, Sequence, Union
 import numpy
 
 from . import distributed as distributed
+from . import testing as testing
 
 __version__: str
 
@@ -71,6 +72,8 @@ class Classification:
     rho_vs_one: str
     rho: Optional[str]
     @property
+    def meta(self) -> Any: ...
+    @property
     def certificate(self) -> Optional[Certificate]: ...
     def as_dict(self) -> dict[str, Any]: ...
 
@@ -116,11 +119,17 @@ class Timeline:
     changes: list[dict[str, Any]]
     def position_at(self, t: Number) -> str: ...
 
-def classify(e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] = "full") -> Classification: ...
+def classify(
+    e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] = "full", meta: Any = None
+) -> Classification: ...
 def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None: ...
 def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer: ...
 def decide_positions(
-    E: numpy.ndarray, P: numpy.ndarray, threads: int = 0, errors: Literal["raise", "code"] = "raise"
+    E: Union[numpy.ndarray, Mapping[str, Any]],
+    P: Union[numpy.ndarray, Mapping[str, Any]],
+    threads: int = 0,
+    errors: Literal["raise", "code"] = "raise",
+    symmetrize: Optional[Literal["upper"]] = None,
 ) -> numpy.ndarray: ...
 def scene(
     p: Union[Paraboloid, Description],

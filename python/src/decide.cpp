@@ -50,21 +50,37 @@ relpos::Rational exact_rational(long double x) {
   return exponent >= 0 ? r * relpos::Rational(power) : r / relpos::Rational(power);
 }
 
+/// The lower triangle of a row-major 4x4 matrix replaced by its upper one (symmetrize="upper").
+template <class T>
+void mirror_upper(T* m) {
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < i; ++j) m[4 * i + j] = m[4 * j + i];
+}
+
 /// One input array: float64 read directly, or long double (for numpy.longdouble and 64-bit integer
 /// arrays, converted exactly) whose matrices take the double path when every entry is a double.
+/// With `upper`, each matrix is read from its upper triangle (doc/python.md, "symmetrize").
 struct Matrices {
   py::array array;
   const double* doubles = nullptr;
   const long double* extended = nullptr;
+  bool upper = false;
+
+  /// Matrix i as doubles, mirrored when asked (doubles arrays only).
+  relpos::DoubleMatrix4 doubles_at(std::size_t i) const {
+    relpos::DoubleMatrix4 d;
+    std::copy(doubles + 16 * i, doubles + 16 * i + 16, d.begin());
+    if (upper) mirror_upper(d.data());
+    return d;
+  }
 
   template <class Q, class FromDoubles, class FromMatrix>
   Q at(std::size_t i, FromDoubles from_doubles, FromMatrix from_matrix) const {
     relpos::DoubleMatrix4 d;
-    if (doubles) {
-      std::copy(doubles + 16 * i, doubles + 16 * i + 16, d.begin());
-      return from_doubles(d);
-    }
-    const long double* m = extended + 16 * i;
+    if (doubles) return from_doubles(doubles_at(i));
+    std::array<long double, 16> m;
+    std::copy(extended + 16 * i, extended + 16 * i + 16, m.begin());
+    if (upper) mirror_upper(m.data());
     bool all_doubles = true;
     for (std::size_t k = 0; k < 16; ++k) {
       d[k] = static_cast<double>(m[k]);
@@ -116,11 +132,160 @@ std::optional<std::size_t> batch_size(const py::array& a, const char* name, bool
                            ", got " + shape);
 }
 
-py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input, unsigned threads, bool raise_errors) {
-  const Matrices e_array = read_array(e_input, "E");
-  const Matrices p_array = read_array(p_input, "P");
-  const std::size_t n = *batch_size(e_array.array, "E", false);
-  const std::optional<std::size_t> np = batch_size(p_array.array, "P", true);
+std::string shape_text(const py::array& a) {
+  std::string shape = "(";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
+  return shape + (a.ndim() == 1 ? ",)" : ")");
+}
+
+/// The parameters of one side, as arrays read exactly (doc/python.md, "Parameters"): an ellipsoid's
+/// "center" (n, 3), "axes" (n, 3) and "rotation" (n, 4), or a paraboloid's "vertex" (n, 3), "a" (n,),
+/// "b" (n,) and "rotation" (n, 4); "rotation" may be left out (no rotation), and an array without the
+/// leading n is shared by every pair. The quadrics are the JSON forms' (doc/cli.md): congruences of
+/// the standard forms, never refused for their shape.
+struct Parameters {
+  struct Column {
+    Matrices values;
+    std::size_t width = 0;
+    bool shared = true;
+    /// Entry k of row i, exactly: a double, or the exact value of a long double.
+    bool double_at(std::size_t i, std::size_t k, double& out) const {
+      const std::size_t at = (shared ? 0 : i * width) + k;
+      if (values.doubles) return out = values.doubles[at], true;
+      out = static_cast<double>(values.extended[at]);
+      return static_cast<long double>(out) == values.extended[at];
+    }
+    relpos::Rational exact_at(std::size_t i, std::size_t k) const {
+      const std::size_t at = (shared ? 0 : i * width) + k;
+      return values.doubles ? relpos::exact_rational(values.doubles[at]) : exact_rational(values.extended[at]);
+    }
+  };
+  std::vector<Column> columns;  // ellipsoid: center, axes, rotation; paraboloid: vertex, a, b, rotation
+  std::optional<std::size_t> n;
+  bool has_rotation = false;
+
+  Parameters(py::handle mapping, const char* name, bool ellipsoid) {
+    const std::vector<std::pair<const char*, std::size_t>> keys =
+        ellipsoid
+            ? std::vector<std::pair<const char*, std::size_t>>{{"center", 3}, {"axes", 3}, {"rotation", 4}}
+            : std::vector<std::pair<const char*, std::size_t>>{{"vertex", 3}, {"a", 1}, {"b", 1}, {"rotation", 4}};
+    const py::dict d = py::reinterpret_borrow<py::dict>(mapping);
+    for (const auto& item : d) {
+      const std::string key = py::str(item.first).cast<std::string>();
+      if (std::none_of(keys.begin(), keys.end(), [&](const auto& k) { return key == k.first; }) &&
+          !(ellipsoid && key == "centre"))
+        throw relpos::InputError(
+            std::string(name) + ": unknown key '" + key + "' (the parameters of " +
+            (ellipsoid ? "an ellipsoid: center, axes, rotation)" : "a paraboloid: vertex, a, b, rotation)"));
+    }
+    for (const auto& [key, width] : keys) {
+      py::object value;
+      if (d.contains(key))
+        value = d[key];
+      else if (ellipsoid && std::string(key) == "center" && d.contains("centre"))
+        value = d["centre"];
+      if (!value) {
+        if (std::string(key) != "rotation") throw relpos::InputError(std::string(name) + ": '" + key + "' is missing");
+        value = py::module_::import("numpy").attr("array")(py::make_tuple(1.0, 0.0, 0.0, 0.0));
+      } else if (std::string(key) == "rotation") {
+        has_rotation = true;
+      }
+      const std::string path = std::string(name) + "['" + key + "']";
+      Column c{read_array(value, path.c_str()), width, true};
+      const py::array& a = c.values.array;
+      const bool one = width == 1 ? a.ndim() == 0 : a.ndim() == 1 && a.shape(0) == static_cast<py::ssize_t>(width);
+      const bool many = width == 1 ? a.ndim() == 1 : a.ndim() == 2 && a.shape(1) == static_cast<py::ssize_t>(width);
+      if (!one && !many)
+        throw relpos::InputError(path + ": expected shape " +
+                                 (width == 1
+                                      ? std::string("(n,) or ()")
+                                      : "(n, " + std::to_string(width) + ") or (" + std::to_string(width) + ",)") +
+                                 ", got " + shape_text(a));
+      if (many) {
+        c.shared = false;
+        const std::size_t rows = static_cast<std::size_t>(a.shape(0));
+        if (n && *n != rows)
+          throw relpos::InputError(path + ": " + std::to_string(rows) + " rows for " + std::to_string(*n) + " pairs");
+        n = rows;
+      }
+      columns.push_back(std::move(c));
+    }
+  }
+
+  template <std::size_t N>
+  bool doubles(std::size_t column, std::size_t i, std::array<double, N>& out) const {
+    bool all = true;
+    for (std::size_t k = 0; k < N; ++k) all = columns[column].double_at(i, k, out[k]) && all;
+    return all;
+  }
+  template <std::size_t N>
+  std::array<relpos::Rational, N> exact(std::size_t column, std::size_t i) const {
+    std::array<relpos::Rational, N> out;
+    for (std::size_t k = 0; k < N; ++k) out[k] = columns[column].exact_at(i, k);
+    return out;
+  }
+
+  relpos::Ellipsoid ellipsoid(std::size_t i) const {
+    std::array<double, 3> c, ax;
+    std::array<double, 4> q;
+    if (doubles(0, i, c) & doubles(1, i, ax) & doubles(2, i, q)) return relpos::Ellipsoid::from_axes(c, ax, q);
+    return relpos::Ellipsoid::from_axes(exact<3>(0, i), exact<3>(1, i), exact<4>(2, i));
+  }
+  relpos::Paraboloid paraboloid(std::size_t i) const {
+    std::array<double, 3> v;
+    std::array<double, 1> a, b;
+    std::array<double, 4> q;
+    if (doubles(0, i, v) & doubles(1, i, a) & doubles(2, i, b) & doubles(3, i, q))
+      return relpos::Paraboloid::standard(v, a[0], b[0], q);
+    return relpos::Paraboloid::standard(exact<3>(0, i), exact<1>(1, i)[0], exact<1>(2, i)[0], exact<4>(3, i));
+  }
+};
+
+/// One side of decide_positions: matrices (n, 4, 4) or (4, 4), or parameters.
+struct Side {
+  std::optional<Matrices> matrices;
+  std::optional<Parameters> parameters;
+  std::optional<std::size_t> n;  // nullopt: one quadric shared by every pair
+
+  Side(py::handle x, const char* name, bool ellipsoid, bool upper) {
+    if (PyDict_Check(x.ptr())) {
+      parameters.emplace(x, name, ellipsoid);
+      n = parameters->n;
+      return;
+    }
+    matrices = read_array(x, name);
+    matrices->upper = upper;
+    n = batch_size(matrices->array, name, !ellipsoid);
+  }
+  const double* doubles() const { return matrices ? matrices->doubles : nullptr; }
+  relpos::Ellipsoid ellipsoid(std::size_t i) const {
+    return matrices ? matrices->ellipsoid(i) : parameters->ellipsoid(i);
+  }
+  relpos::Paraboloid paraboloid(std::size_t i) const {
+    return matrices ? matrices->paraboloid(i) : parameters->paraboloid(i);
+  }
+};
+
+/// What to pass instead of a matrix the library refuses (doc/python.md, "decide_positions").
+std::string hint(bool ellipsoid, const std::string& message) {
+  if (message.find("not symmetric") != std::string::npos)
+    return "; a float code's R D R^T is symmetric only up to rounding: symmetrize='upper' reads the upper triangle";
+  if (ellipsoid && message.find("not an ellipsoid") != std::string::npos)
+    return "; the matrix of a small or far ellipsoid can lose its shape when rounded to doubles: pass the "
+           "parameters instead, E={'center': (n, 3), 'axes': (n, 3), 'rotation': (n, 4)}, read exactly";
+  if (!ellipsoid && message.find("not an elliptic paraboloid") != std::string::npos)
+    return "; a rotated paraboloid's matrix rounded to doubles keeps no exact zero eigenvalue: pass the "
+           "parameters instead, P={'vertex': (n, 3), 'a': (n,), 'b': (n,), 'rotation': (n, 4)}, read exactly";
+  return "";
+}
+
+py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input, unsigned threads, bool raise_errors,
+                                          bool upper) {
+  const Side e_side(e_input, "E", true, upper);
+  const Side p_side(p_input, "P", false, upper);
+  if (!e_side.n) throw relpos::InputError("E: expected n ellipsoids (an array with a leading n), got one");
+  const std::size_t n = *e_side.n;
+  const std::optional<std::size_t> np = p_side.n;
   if (np && *np != n)
     throw relpos::InputError("P: " + std::to_string(*np) + " matrices for " + std::to_string(n) + " ellipsoids");
   py::array_t<std::int8_t> out(static_cast<py::ssize_t>(n));
@@ -133,9 +298,9 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
     py::gil_scoped_release release;
     if (!np) {
       try {
-        shared = p_array.paraboloid(0);
+        shared = p_side.paraboloid(0);
       } catch (const relpos::InputError& err) {
-        error_message = std::string("P: paraboloid: ") + err.what();
+        error_message = std::string("P: paraboloid: ") + err.what() + (p_side.matrices ? hint(false, err.what()) : "");
         if (!raise_errors) std::fill(codes, codes + n, kInvalid);
       }
     }
@@ -153,25 +318,23 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
           const std::size_t end = std::min(n, begin + kChunk);
           for (std::size_t i = begin; i < end; ++i) {
             const char* failed = "E";
-            if (!shared && e_array.doubles && p_array.doubles) {
+            if (!shared && e_side.doubles() && p_side.doubles()) {
               // Both float64: the one-call decision (the shapes' last signs read off the pencil). An
               // error is asked again of the two steps below, which say which matrix it is.
               try {
-                relpos::DoubleMatrix4 ed, pd;
-                std::copy(e_array.doubles + 16 * i, e_array.doubles + 16 * i + 16, ed.begin());
-                std::copy(p_array.doubles + 16 * i, p_array.doubles + 16 * i + 16, pd.begin());
-                codes[i] = position_code(relpos::decide_position(ed, pd).position);
+                codes[i] = position_code(
+                    relpos::decide_position(e_side.matrices->doubles_at(i), p_side.matrices->doubles_at(i)).position);
                 continue;
               } catch (const std::exception&) {
               }
             }
             try {
-              const relpos::Ellipsoid e = e_array.ellipsoid(i);
+              const relpos::Ellipsoid e = e_side.ellipsoid(i);
               if (shared) {
                 codes[i] = position_code(relpos::decide_position(e, *shared).position);
               } else {
                 failed = "P";
-                codes[i] = position_code(relpos::decide_position(e, p_array.paraboloid(i)).position);
+                codes[i] = position_code(relpos::decide_position(e, p_side.paraboloid(i)).position);
               }
             } catch (const std::exception& err) {
               codes[i] = kInvalid;
@@ -179,8 +342,11 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
               const std::lock_guard<std::mutex> lock(error_mutex);
               if (i < error_index) {
                 error_index = i;
+                const bool is_e = failed[0] == 'E';
+                const bool matrix = is_e ? e_side.matrices.has_value() : p_side.matrices.has_value();
                 error_message = std::string(failed) + "[" + std::to_string(i) +
-                                "]: " + (failed[0] == 'E' ? "ellipsoid: " : "paraboloid: ") + err.what();
+                                "]: " + (is_e ? "ellipsoid: " : "paraboloid: ") + err.what() +
+                                (matrix ? hint(is_e, err.what()) : "");
               }
             }
           }
@@ -258,9 +424,9 @@ void bind_decide(py::module_& m) {
   m.def("_scene", &scene, "p"_a, "bodies"_a, "threads"_a, "early_outs"_a,
         "relpos::Scene on the bodies: (position codes, contact codes, stage codes, threads used).");
   m.attr("_INVALID") = kInvalid;
-  m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a, "raise_errors"_a,
+  m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a, "raise_errors"_a, "upper"_a = false,
         "Position codes (int8, 0 = I ... 4 = E, -1 = invalid pair) of the matrices E (n, 4, 4) against P "
-        "(n, 4, 4) or (4, 4).");
+        "(n, 4, 4) or (4, 4), or of parameter dicts; with upper, each matrix read from its upper triangle.");
 }
 
 }  // namespace relpos_python

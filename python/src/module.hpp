@@ -75,6 +75,7 @@ struct built_caster : py::detail::type_caster_base<T> {
 void bind_decide(py::module_& m);  // decide_positions, scene (decide.cpp)
 void bind_motion(py::module_& m);  // first contact, timeline (motion.cpp)
 void bind_batch(py::module_& m);   // _batch_block, the lines of `relpos batch` (batch_binding.cpp)
+void bind_oracle(py::module_& m);  // _cases, _judge: relpos cases and relpos judge (oracle_binding.cpp)
 
 }  // namespace relpos_python
 

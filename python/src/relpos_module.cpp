@@ -185,4 +185,5 @@ PYBIND11_MODULE(_relpos, m) {
   relpos_python::bind_decide(m);
   relpos_python::bind_motion(m);
   relpos_python::bind_batch(m);
+  relpos_python::bind_oracle(m);
 }

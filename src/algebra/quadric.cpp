@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "algebra/forms.hpp"
+#include "algebra/quadric_kind.hpp"
 #include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
 
@@ -98,12 +99,6 @@ Rational squared_norm_minus(const Vector3& c, const Rational& r) {
   return forms::divided_by_power(num, forms::split_scale(l), 2);
 }
 
-std::string found(QuadricKind k) {
-  std::string s = to_string(k);
-  const char* article = (s[0] == 'a' || s[0] == 'e' || s[0] == 'i' || s[0] == 'o' || s[0] == 'u') ? "an " : "a ";
-  return article + s;
-}
-
 }  // namespace
 
 Matrix4 matrix_from_coefficients(const Coefficients10& c) {
@@ -184,10 +179,7 @@ int filtered_paraboloid(const Matrix4& p) {
 Ellipsoid Ellipsoid::from_matrix(const Matrix4& e) {
   if (const int orientation = filtered_ellipsoid(e)) return Ellipsoid(orientation > 0 ? e : negated(e));
   QuadricKind k = classify_quadric(e);
-  if (k == QuadricKind::EllipticParaboloid)
-    throw InputError(
-        "not an ellipsoid: the matrix describes an elliptic paraboloid (ellipsoid and paraboloid swapped?)");
-  if (k != QuadricKind::Ellipsoid) throw InputError("not an ellipsoid: the matrix describes " + found(k));
+  if (k != QuadricKind::Ellipsoid) detail::refuse_as_ellipsoid(k);
   // Q3 is definite; make it positive definite (interior X^T E X < 0).
   return Ellipsoid(e(0, 0) > 0 ? e : negated(e));
 }
@@ -255,11 +247,7 @@ Ellipsoid Ellipsoid::from_map(const Vector3& c, const Matrix3& l) {
 Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
   if (const int orientation = filtered_paraboloid(p)) return Paraboloid(orientation > 0 ? p : negated(p));
   QuadricKind k = classify_quadric(p);
-  if (k == QuadricKind::Ellipsoid)
-    throw InputError(
-        "not an elliptic paraboloid: the matrix describes an ellipsoid (ellipsoid and paraboloid swapped?)");
-  if (k != QuadricKind::EllipticParaboloid)
-    throw InputError("not an elliptic paraboloid: the matrix describes " + found(k));
+  if (k != QuadricKind::EllipticParaboloid) detail::refuse_as_paraboloid(k);
   // Q3 is semidefinite of rank 2; its trace has the sign of its non-zero eigenvalues.
   return Paraboloid(p(0, 0) + p(1, 1) + p(2, 2) > 0 ? p : negated(p));
 }

@@ -8,8 +8,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 
 #include "algebra/double_bits.hpp"
+#include "algebra/kind_filter.hpp"
+#include "algebra/quadric_kind.hpp"
 #include "algebra/shape_filter.hpp"
 #include "relpos/quadric.hpp"
 
@@ -139,6 +142,16 @@ bool all_finite(const DoubleMatrix4& d) {
   return true;
 }
 
+/// A matrix the shape tests did not certify: refused at once when the filtered type test finds it of
+/// another kind (kind_filter.hpp; the exact path's message, a few microseconds instead of an exact
+/// classification). Its orientation when it finds an ellipsoid and one is wanted (the sign of the
+/// first entry: Q3 is definite), else 0: the exact path decides.
+int kind_orientation(const DoubleMatrix4& d, QuadricKind want, void (*refuse)(QuadricKind)) {
+  const std::optional<QuadricKind> k = shape_filter::certified_kind(d);
+  if (k && *k != want) refuse(*k);
+  return k && *k == QuadricKind::Ellipsoid ? (d[0] > 0 ? 1 : -1) : 0;
+}
+
 }  // namespace
 
 // flatten: the constructor and the signs in doubles in one frame, the values just normalized read
@@ -153,6 +166,7 @@ bool all_finite(const DoubleMatrix4& d) {
     [&]() __attribute__((noinline)) {
       orientation = normalized || all_finite(e) ? shape_filter::certified_ellipsoid_by_intervals(e) : 0;
       // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
+      if (orientation == 0) orientation = kind_orientation(e, QuadricKind::Ellipsoid, detail::refuse_as_ellipsoid);
       if (orientation == 0) out = Ellipsoid(*from_matrix(exact_matrix(e)).doubles());
     }
     ();
@@ -170,6 +184,7 @@ bool all_finite(const DoubleMatrix4& d) {
   if (orientation == 0) {
     [&]() __attribute__((noinline)) {
       orientation = normalized || all_finite(p) ? shape_filter::certified_paraboloid_by_intervals(p) : 0;
+      if (orientation == 0) kind_orientation(p, QuadricKind::EllipticParaboloid, detail::refuse_as_paraboloid);
       if (orientation == 0) out = Paraboloid(*from_matrix(exact_matrix(p)).doubles());
     }
     ();

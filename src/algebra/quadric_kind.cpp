@@ -1,6 +1,9 @@
 // The exact affine type of a quadric (classify_quadric): the inertia of its 3x3 block and of the
 // whole matrix from Descartes' rule on characteristic polynomials (exact for real symmetric
-// matrices), and the names the error messages give each type.
+// matrices), the names the error messages give each type, and the refusals of a matrix of another
+// type than the one asked for (quadric_kind.hpp).
+#include "algebra/quadric_kind.hpp"
+
 #include <array>
 #include <string>
 #include <utility>
@@ -127,6 +130,34 @@ std::string to_string(QuadricKind kind) {
   }
   return "unknown quadric";
 }
+
+namespace detail {
+namespace {
+
+/// The name of a type with its article, as a message gives it.
+std::string found(QuadricKind k) {
+  std::string s = to_string(k);
+  const char* article = (s[0] == 'a' || s[0] == 'e' || s[0] == 'i' || s[0] == 'o' || s[0] == 'u') ? "an " : "a ";
+  return article + s;
+}
+
+}  // namespace
+
+void refuse_as_ellipsoid(QuadricKind k) {
+  if (k == QuadricKind::EllipticParaboloid)
+    throw InputError(
+        "not an ellipsoid: the matrix describes an elliptic paraboloid (ellipsoid and paraboloid swapped?)");
+  throw InputError("not an ellipsoid: the matrix describes " + found(k));
+}
+
+void refuse_as_paraboloid(QuadricKind k) {
+  if (k == QuadricKind::Ellipsoid)
+    throw InputError(
+        "not an elliptic paraboloid: the matrix describes an ellipsoid (ellipsoid and paraboloid swapped?)");
+  throw InputError("not an elliptic paraboloid: the matrix describes " + found(k));
+}
+
+}  // namespace detail
 
 QuadricKind classify_quadric(const Matrix4& q) {
   require_symmetric(q);

@@ -174,6 +174,17 @@ bool write_error(std::string_view id, std::string_view message, std::string& out
   }
 }
 
+void append_trailer(std::string_view meta, bool numbers_as_doubles, std::string& out) {
+  if ((!numbers_as_doubles && meta.empty()) || out.empty() || out.back() != '}') return;
+  constexpr std::string_view kNumbers = ",\"numbers\":\"double\"", kMeta = ",\"meta\":";
+  out.reserve(out.size() + (numbers_as_doubles ? kNumbers.size() : 0) +
+              (meta.empty() ? 0 : kMeta.size() + meta.size()));
+  out.pop_back();
+  if (numbers_as_doubles) out.append(kNumbers);
+  if (!meta.empty()) out.append(kMeta).append(meta);
+  out.push_back('}');
+}
+
 }  // namespace detail
 
 std::string classification_json_text(const Classification& c, const RenderOptions& options) {

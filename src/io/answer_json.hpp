@@ -1,6 +1,7 @@
 // The one writer of an answer's JSON text, for every evidence level: the frame ({"id":<id>, or {
 // alone), then the members of the level -- minimal (the verdict), full (the classification with its
-// evidence and certificate) or contact only -- each preceded by a comma, then the closing brace.
+// evidence and certificate) or contact only -- each preceded by a comma, then the closing brace;
+// a batch line's last members (append_trailer: the number mode and the line's "meta") after them.
 // `relpos batch`, `relpos classify --json`, the Python module and the public text functions of
 // io.hpp all write through it; a new answer member goes into the level's append_members, a new
 // level is one more overload (doc/architecture.md, "One batch line, from text to verdict").
@@ -52,5 +53,12 @@ std::string answer_text(std::size_t reserve, const Report&... report) {
 
 /// {"id":<id>,"error":<message>} into `out` (its capacity kept); false when out of memory.
 bool write_error(std::string_view id, std::string_view message, std::string& out) noexcept;
+
+/// The members every answer line of a batch or a scene ends with, answer or error (doc/cli.md,
+/// "relpos batch"): "numbers":"double" when the line was read with --numbers double, then
+/// "meta":<meta> when the input line had a "meta" member (its text, echoed byte for byte), written
+/// before the closing brace of the answer in `out`. Room first: out of memory (std::bad_alloc)
+/// leaves `out` as it was, a whole JSON object.
+void append_trailer(std::string_view meta, bool numbers_as_doubles, std::string& out);
 
 }  // namespace relpos::io::detail

@@ -48,17 +48,18 @@ std::string_view key_name(std::string_view key_text, std::string& storage) {
 
 /// read_batch_line, step by step. With `id`, the id is not copied into out.id: *id is set to its
 /// text instead (a view into the line, or of out.id when it is the line number or re-encoded),
-/// before anything is thrown.
+/// before anything is thrown. The same for `meta` and out.meta (empty until the members are scanned).
 class LineReader {
  public:
   LineReader(std::string_view line, long number, const BatchOptions& options, const Paraboloid* fixed, BatchLine& out,
-             std::string_view* id)
-      : line_(line), number_(number), options_(options), fixed_(fixed), out_(out), id_(id) {}
+             std::string_view* id, std::string_view* meta)
+      : line_(line), number_(number), options_(options), fixed_(fixed), out_(out), id_(id), meta_(meta) {}
 
   void read() {
     scan();
     validate_members();
-    take_id();
+    take_text("id", out_.id, id_);
+    take_text("meta", out_.meta, meta_);
     Json ellipsoid, paraboloid;
     general_quadrics(ellipsoid, paraboloid);
     if (!duplicate_.empty()) throw InputError("duplicate key \"" + duplicate_ + "\"");
@@ -141,14 +142,14 @@ class LineReader {
 
   /// A known member kept (a second one of a key noted), an unknown one noted and validated.
   void keep(std::string_view key, std::string_view value, bool taken) {
-    static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment"};
+    static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment", "meta"};
     bool known = false;
     for (const std::string_view k : kKeys) {
       if (key != k || (fixed_ && key == "paraboloid")) continue;
       known = true;
       for (std::size_t m = 0; m < count_; ++m)
         if (members_[m].key == k && duplicate_.empty()) duplicate_ = key;
-      if (count_ < 4) members_[count_++] = Member{k, value, taken};
+      if (count_ < kMembers) members_[count_++] = Member{k, value, taken};
     }
     if (known) return;
     if (unknown_.empty()) unknown_ = key.substr(0, 40);
@@ -159,7 +160,7 @@ class LineReader {
     }
   }
 
-  /// The id and the comment: valid JSON, not stored (the id is kept as its text).
+  /// The id, the comment and the meta: valid JSON, not stored (the id and the meta are kept as their text).
   void validate_members() {
     for (std::size_t m = 0; m < count_; ++m) {
       if (members_[m].key == "ellipsoid" || members_[m].key == "paraboloid") continue;
@@ -172,17 +173,19 @@ class LineReader {
     }
   }
 
-  void take_id() {
-    for (std::size_t m = count_; m-- > 0;)  // the first "id" when there are two (an error below)
-      if (members_[m].key == "id") {
+  /// The text of the member `key` (the id or the meta), echoed byte for byte: into `stored`, or with
+  /// `view`, *view set to it (not copied; a view of `stored` when it is re-encoded).
+  void take_text(std::string_view key, std::string& stored, std::string_view* view) {
+    for (std::size_t m = count_; m-- > 0;)  // the first one when there are two (an error below)
+      if (members_[m].key == key) {
         const std::string_view value = members_[m].value;
         if (!detail::valid_utf8(value)) {
-          out_.id = detail::dump_json(detail::parse_json_exact(value));
-          set_id(out_.id);
-        } else if (id_) {
-          *id_ = value;  // byte for byte, not copied
+          stored = detail::dump_json(detail::parse_json_exact(value));
+          if (view) *view = stored;
+        } else if (view) {
+          *view = value;  // byte for byte, not copied
         } else {
-          out_.id.assign(value.data(), value.size());  // byte for byte
+          stored.assign(value.data(), value.size());  // byte for byte
         }
       }
   }
@@ -214,7 +217,9 @@ class LineReader {
   const Paraboloid* fixed_;
   BatchLine& out_;
   std::string_view* id_;
-  Member members_[4];
+  std::string_view* meta_;
+  static constexpr std::size_t kMembers = 5;  // one of each known key
+  Member members_[kMembers];
   std::size_t count_ = 0;
   std::string unknown_, duplicate_, key_storage_;
 };
@@ -238,13 +243,15 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 }
 
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
-                     BatchLine& out, std::string_view* id) {
+                     BatchLine& out, std::string_view* id, std::string_view* meta) {
   out.id = std::to_string(line_number);
   if (id) *id = out.id;
+  out.meta.clear();
+  if (meta) *meta = std::string_view();
   out.ellipsoid.reset();  // the fast reader makes the quadrics here as the line is scanned
   out.paraboloid.reset();
   const std::string_view normalized = normalize_line(line, line_number, options.max_line_bytes);
-  LineReader(normalized, line_number, options, fixed, out, id).read();
+  LineReader(normalized, line_number, options, fixed, out, id, meta).read();
 }
 
 }  // namespace relpos::io

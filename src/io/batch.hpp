@@ -15,7 +15,8 @@ namespace relpos::io {
 
 /// One input line, read: the id as the JSON text to echo, and the quadrics.
 struct BatchLine {
-  std::string id;  ///< the id's JSON text exactly as in the input, or the line number
+  std::string id;    ///< the id's JSON text exactly as in the input, or the line number
+  std::string meta;  ///< the "meta" member's JSON text exactly as in the input, or empty (doc/cli.md)
   std::optional<Ellipsoid> ellipsoid;
   std::optional<Paraboloid> paraboloid;
 };
@@ -28,14 +29,15 @@ std::string too_long_message(std::size_t max_line_bytes);
 /// later line, or a NUL byte (the message names the column).
 std::string_view normalize_line(std::string_view line, long line_number, std::size_t max_line_bytes);
 
-/// Read one JSON Lines line {"id", "ellipsoid", "paraboloid", "comment"} (with `fixed`, a scene line:
-/// {"id", "ellipsoid", "comment"}, and the size limit is checked against *fixed). The top-level
+/// Read one JSON Lines line {"id", "ellipsoid", "paraboloid", "comment", "meta"} (with `fixed`, a scene
+/// line: {"id", "ellipsoid", "comment", "meta"}, and the size limit is checked against *fixed). The top-level
 /// object is scanned once: the id's text is kept, "comment" is validated without being stored,
 /// duplicate keys are refused. out.id is set (to the line number at first, to the id once it is
 /// read) before any InputError is thrown, so that errors echo the id; out's quadrics are the line's
 /// only when nothing is thrown. With `id`, the id is not copied into out.id: *id is set to its text
-/// instead (a view into `line`, or of out.id), before anything is thrown.
+/// instead (a view into `line`, or of out.id), before anything is thrown; the same for `meta` and
+/// out.meta (set once the members are scanned: empty before, and when the line has none).
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
-                     BatchLine& out, std::string_view* id = nullptr);
+                     BatchLine& out, std::string_view* id = nullptr, std::string_view* meta = nullptr);
 
 }  // namespace relpos::io

@@ -1,6 +1,7 @@
 // answer_batch_line (io.hpp): one line of `relpos batch`, read (batch.hpp), decided at the evidence
-// level asked, and answered by the one answer writer (answer_json.hpp); any failure is that line's
-// error, out of memory included (doc/cli.md, "Out of memory").
+// level asked, and answered by the one answer writer (answer_json.hpp), the line's last members
+// (number mode, "meta") included; any failure is that line's error, out of memory included (doc/cli.md,
+// "Out of memory").
 #include <charconv>
 #include <new>
 #include <string>
@@ -28,15 +29,32 @@ void answer(const BatchLine& in, std::string_view id, const BatchOptions& option
   }
 }
 
+/// The answer's last members (detail::append_trailer); false when out of memory there.
+bool finish(std::string_view meta, const BatchOptions& options, std::string& out) noexcept {
+  try {
+    detail::append_trailer(meta, options.numbers_as_doubles, out);
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
 /// Out of memory: that line's error, with its id when it can be echoed (the partial answer's
-/// capacity is reused), else with the line number (doc/cli.md, "Out of memory").
-void out_of_memory(std::string_view id, long line_number, std::string& out) noexcept {
-  if (detail::write_error(id, kOutOfMemoryMessage, out)) return;
+/// capacity is reused), else with the line number (doc/cli.md, "Out of memory"); its last members
+/// when they fit (the meta only with the id).
+void out_of_memory(std::string_view id, std::string_view meta, long line_number, const BatchOptions& options,
+                   std::string& out) noexcept {
+  if (detail::write_error(id, kOutOfMemoryMessage, out)) {
+    finish(meta, options, out);
+    return;
+  }
   char number[24];
   const auto end = std::to_chars(number, number + sizeof number, line_number).ptr;
   if (detail::write_error(std::string_view(number, static_cast<std::size_t>(end - number)), kOutOfMemoryNoIdMessage,
-                          out))
+                          out)) {
+    finish(std::string_view(), options, out);
     return;
+  }
   out.clear();  // not even that: the caller writes its own line (doc/cli.md)
 }
 
@@ -46,25 +64,26 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
   // The line's memory: the caller's line, the answer, and no copy of the id (a view into the line).
   // The answer is computed before the id is written, so that no long id is held meanwhile.
   BatchLine in;
-  std::string_view id;
+  std::string_view id, meta;
   std::string internal;
   try {
-    read_batch_line(line, line_number, options, nullptr, in, &id);
+    read_batch_line(line, line_number, options, nullptr, in, &id, &meta);
     answer(in, id, options, out);
+    detail::append_trailer(meta, options.numbers_as_doubles, out);
     return;
   } catch (const InputError& err) {
-    if (detail::write_error(id, err.what(), out)) return;
+    if (detail::write_error(id, err.what(), out) && finish(meta, options, out)) return;
   } catch (const std::bad_alloc&) {
   } catch (const std::exception& err) {
     try {
       internal = std::string("internal error: ") + err.what();
     } catch (...) {
     }
-    if (!internal.empty() && detail::write_error(id, internal, out)) return;
+    if (!internal.empty() && detail::write_error(id, internal, out) && finish(meta, options, out)) return;
   } catch (...) {
-    if (detail::write_error(id, "internal error: unknown exception", out)) return;
+    if (detail::write_error(id, "internal error: unknown exception", out) && finish(meta, options, out)) return;
   }
-  out_of_memory(id, line_number, out);
+  out_of_memory(id, meta, line_number, options, out);
 }
 
 std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options) {

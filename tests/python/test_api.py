@@ -85,7 +85,7 @@ def test_stub_lists_every_public_name():
     stub = open(os.path.join(os.path.dirname(relpos.__file__), "__init__.pyi"), encoding="utf-8").read()
     assert os.path.exists(os.path.join(os.path.dirname(relpos.__file__), "py.typed"))
     for name in relpos.__all__:
-        if name != "distributed":
+        if name not in ("distributed", "testing"):  # modules
             assert ("class " + name) in stub or ("def " + name) in stub or (name + ":") in stub, name
     for name, _ in public_callables():
         assert "def " + name.split(".")[-1] in stub, name
