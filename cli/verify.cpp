@@ -1,5 +1,6 @@
 // relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]: checks every certificate of a `relpos batch`
-// output against its input with the independent verifier (include/relpos/position.hpp).
+// output against its input with the independent verifier (include/relpos/position.hpp), and the
+// margin of an answer that has one (include/relpos/margin.hpp).
 //
 // Line N of ANSWERS answers line N of INPUT. An answer with "error" is skipped when its input line is
 // not a valid pair, and counted as unanswered when it is. Prints `line N: <reason>` per failure
@@ -20,9 +21,11 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "io/batch.hpp"
+#include "io/margin_json.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
+#include "relpos/margin.hpp"
 
 namespace {
 
@@ -32,7 +35,8 @@ constexpr const char* kVerifyHelp =
     "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]\n"
     "\n"
     "Check the certificate of every answer of `relpos batch INPUT.jsonl > ANSWERS.jsonl` with an\n"
-    "independent verifier that uses exact rational arithmetic only (no code of the classifier).\n"
+    "independent verifier that uses exact rational arithmetic only (no code of the classifier), and\n"
+    "the \"margin\" of an answer that has one (`relpos batch --margin`).\n"
     "Line N of ANSWERS must answer line N of INPUT. Answers with \"error\" are skipped when the input\n"
     "line is not a valid pair, and counted as unanswered when it is.\n"
     "Prints 'line N: reason' for each failure (not with --quiet) and a summary line.\n"
@@ -84,6 +88,12 @@ InputPair read_input(const std::string& line, long number) {
     in.id = nullptr;  // not comparable (a number beyond double range)
   }
   return in;
+}
+
+/// Why the answer's "margin" (when it has one) does not prove s* for the pair (relpos/margin.hpp).
+std::optional<std::string> margin_failure(const relpos::Ellipsoid& e, const relpos::Paraboloid& p, const Json& answer) {
+  if (!answer.contains("margin")) return std::nullopt;
+  return relpos::verify_margin(e, p, relpos::io::detail::margin_from_json(answer["margin"]));
 }
 
 }  // namespace
@@ -194,6 +204,8 @@ int run_verify(Args& args) {
       const relpos::Certificate c = relpos::certificate_from_json(answer["certificate"]);
       if (auto reason = relpos::verify_certificate(*in.e, *in.p, *position, c))
         fail(number, position_text + ": " + clip(*reason));
+      else if (auto margin_reason = margin_failure(*in.e, *in.p, answer))
+        fail(number, "margin: " + clip(*margin_reason));
       else
         ++verified;
     } catch (const std::exception& err) {

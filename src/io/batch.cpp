@@ -16,6 +16,7 @@
 #include "io/fast_quadric.hpp"
 #include "io/json_read.hpp"
 #include "io/json_write.hpp"
+#include "io/margin_json.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
@@ -399,6 +400,16 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
   check_normalized_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
 }
 
+/// The answer's last member, "margin", when the options ask for it: written before its closing brace.
+void append_margin_member(const std::optional<Margin>& m, const BatchOptions& options, std::string& out) {
+  if (!m) return;
+  out.pop_back();
+  detail::JsonWriter w(out);
+  w.member("margin");
+  detail::append_margin(*m, options.render.digits, w);
+  out += '}';
+}
+
 }  // namespace
 
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
@@ -414,10 +425,14 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
   std::string internal;
   try {
     read_line(line, line_number, options, nullptr, in, &id);
+    const std::optional<Margin> m =
+        options.margin_bits > 0 ? std::optional<Margin>(margin(*in.ellipsoid, *in.paraboloid, options.margin_bits))
+                                : std::nullopt;
     if (options.contact_only) {
       const std::string report = dump_json(contact_to_json(contact(*in.ellipsoid, *in.paraboloid)));
       reserve_for_id(out, id);
       out.assign("{\"id\":").append(id).append(",").append(report, 1, std::string::npos);
+      append_margin_member(m, options, out);
       return;
     }
     if (options.evidence == Evidence::Minimal) {  // the verdict alone: classify's, without its evidence
@@ -425,6 +440,7 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
       reserve_for_id(out, id);
       out.assign("{\"id\":").append(id);  // the id goes first
       append_minimal(v, out);
+      append_margin_member(m, options, out);
       return;
     }
     const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full);
@@ -432,6 +448,7 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
     out.assign("{\"id\":").append(id);
     detail::JsonWriter w(out);
     detail::append_classification(c, options.render, w);
+    append_margin_member(m, options, out);
     return;
   } catch (const InputError& err) {
     if (write_error(out, id, err.what())) return;

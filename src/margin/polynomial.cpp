@@ -1,0 +1,191 @@
+#include "margin/polynomial.hpp"
+
+#include <flint/fmpz.h>
+#include <flint/fmpz_mpoly.h>
+#include <flint/fmpz_poly.h>
+
+#include <stdexcept>
+
+#include "algebra/flint_thread.hpp"
+#include "algebra/pencil.hpp"
+
+namespace relpos::detail {
+namespace {
+
+/// c[0..n) as a FLINT polynomial divided by its content, which is returned (> 0).
+Integer primitive_part(const Integer* c, int n, fmpz_poly_t out) {
+  fmpz_poly_zero(out);
+  fmpz_t z;
+  fmpz_init(z);
+  for (int i = 0; i < n; ++i) {
+    fmpz_set_mpz(z, c[i].mpz());
+    fmpz_poly_set_coeff_fmpz(out, i, z);
+  }
+  fmpz_poly_content(z, out);
+  fmpz_poly_scalar_divexact_fmpz(out, out, z);
+  Integer content;  // fresh object: written through its mpz_t
+  fmpz_get_mpz(content.mpz(), z);
+  fmpz_clear(z);
+  return content;
+}
+
+/// out = sum_i c_i l^i u^j (variables l = 0, u = 1) added to out.
+void add_terms(fmpz_mpoly_t out, const fmpz_poly_t c, const fmpz_t factor, ulong j, const fmpz_mpoly_ctx_t ctx) {
+  fmpz_t x;
+  fmpz_init(x);
+  for (slong i = 0; i <= fmpz_poly_degree(c); ++i) {
+    fmpz_poly_get_coeff_fmpz(x, c, i);
+    fmpz_mul(x, x, factor);
+    const ulong exps[2] = {static_cast<ulong>(i), j};
+    fmpz_t old;
+    fmpz_init(old);
+    fmpz_mpoly_get_coeff_fmpz_ui(old, out, exps, ctx);
+    fmpz_add(x, x, old);
+    fmpz_mpoly_set_coeff_fmpz_ui(out, x, exps, ctx);
+    fmpz_clear(old);
+  }
+  fmpz_clear(x);
+}
+
+}  // namespace
+
+namespace {
+
+/// A matrix of integers read as m(i, j) (the pencil templates' accessor).
+struct IntegerMatrix {
+  std::array<Integer, 16> a;
+  const Integer& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
+};
+
+/// q times the lcm of its denominators (written to `out`), and that lcm.
+Integer integer_multiple(const Matrix4& q, IntegerMatrix& out) {
+  Integer l(1);
+  for (const Rational& x : q.a) mpz_lcm(l.mpz(), l.mpz(), mpq_denref(x.mpq()));
+  for (std::size_t i = 0; i < 16; ++i) out.a[i] = q.a[i].numerator() * (l / q.a[i].denominator());
+  return l;
+}
+
+}  // namespace
+
+PointPencil point_pencil(const ScaledFamily& family, const Matrix4& p) {
+  IntegerMatrix ez, pz;
+  PointPencil out;
+  out.alpha = integer_multiple(family.point, ez);
+  out.beta = integer_multiple(p, pz);
+  out.f = characteristic_polynomial<Integer>(pz, ez);
+  out.s = special_polynomial<Integer>(pz, ez);
+  out.k = family.k;
+  return out;
+}
+
+Quartic<Rational> PointPencil::scaled(const Rational& v) const {
+  const Rational c = v * Rational(alpha) * k;
+  Quartic<Rational> out;
+  for (std::size_t i = 0; i < 5; ++i) out[i] = i < 3 ? Rational(f[i]) - c * Rational(s[i]) : Rational(f[i]);
+  return out;
+}
+
+Quartic<Rational> PointPencil::scaled_in_lambda(const Rational& v) const {
+  // f0 - v k s0 = (f - v alpha k s)(alpha l / beta) / alpha^4: coefficient i times (alpha / beta)^i / alpha^4.
+  Quartic<Rational> out = scaled(v);
+  const Rational ratio(alpha, beta);
+  Rational power = Rational(1) / Rational(alpha * alpha * alpha * alpha);
+  for (std::size_t i = 0; i < 5; ++i, power *= ratio) out[i] *= power;
+  return out;
+}
+
+Quadratic<Rational> PointPencil::s_in_lambda() const {
+  const Rational ratio(alpha, beta);
+  Rational power = Rational(1) / Rational(alpha * alpha * alpha);
+  Quadratic<Rational> out;
+  for (std::size_t i = 0; i < 3; ++i, power *= ratio) out[i] = Rational(s[i]) * power;
+  return out;
+}
+
+std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
+  flint_thread_cleanup_at_exit();
+  fmpz_poly_t F, S, g, gs, dg;
+  fmpz_poly_init(F);
+  fmpz_poly_init(S);
+  fmpz_poly_init(g);
+  fmpz_poly_init(gs);
+  fmpz_poly_init(dg);
+  // f = a F, s = b S with F, S primitive; g = gcd(F, S); f - u c s = a g (F/g - u (c b / a) S/g)
+  // for c = alpha k.
+  const Integer a = primitive_part(pencil.f.data(), 5, F);
+  const Integer b = primitive_part(pencil.s.data(), 3, S);
+  fmpz_poly_gcd(g, F, S);
+  // Exact divisions (g divides both; it is primitive, so the quotients are integral).
+  bool ok = fmpz_poly_divides(F, F, g) != 0 && fmpz_poly_divides(S, S, g) != 0;
+  const Rational kappa = Rational(pencil.alpha) * pencil.k * Rational(b, a);
+
+  fmpz_mpoly_ctx_t ctx;
+  fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
+  fmpz_mpoly_t H, D, G, R;
+  fmpz_mpoly_init(H, ctx);
+  fmpz_mpoly_init(D, ctx);
+  fmpz_mpoly_init(G, ctx);
+  fmpz_mpoly_init(R, ctx);
+  fmpz_t num, den;
+  fmpz_init(num);
+  fmpz_init(den);
+  fmpz_set_mpz(den, mpq_denref(kappa.mpq()));
+  fmpz_set_mpz(num, mpq_numref(kappa.mpq()));
+  fmpz_neg(num, num);
+  add_terms(H, F, den, 0, ctx);  // den F(l) - num u S(l): a positive multiple of F/g - u kappa S/g
+  add_terms(H, S, num, 1, ctx);
+  ok = ok && fmpz_mpoly_discriminant(D, H, 0, ctx) != 0;
+  if (ok && fmpz_poly_degree(g) >= 1) {
+    // The hard case's values: sigma at the roots of g (math.md §14), from the square-free part of g.
+    fmpz_poly_derivative(dg, g);
+    fmpz_poly_gcd(gs, g, dg);
+    ok = fmpz_poly_divides(gs, g, gs) != 0;
+    fmpz_one(den);
+    add_terms(G, gs, den, 0, ctx);
+    ok = ok && fmpz_mpoly_resultant(R, G, H, 0, ctx) != 0;
+    if (ok) fmpz_mpoly_mul(D, D, R, ctx);
+  }
+  fmpz_poly_t pu;
+  fmpz_poly_init(pu);
+  ok = ok && fmpz_mpoly_get_fmpz_poly(pu, D, 1, ctx) != 0;
+  std::vector<Integer> out;
+  if (ok && !fmpz_poly_is_zero(pu)) {
+    fmpz_poly_primitive_part(pu, pu);  // positive leading coefficient
+    fmpz_t x;
+    fmpz_init(x);
+    for (slong i = 0; i <= fmpz_poly_degree(pu); ++i) {
+      fmpz_poly_get_coeff_fmpz(x, pu, i);
+      Integer c;  // fresh object: written through its mpz_t
+      fmpz_get_mpz(c.mpz(), x);
+      out.push_back(c);
+    }
+    fmpz_clear(x);
+  }
+  fmpz_poly_clear(pu);
+  fmpz_clear(num);
+  fmpz_clear(den);
+  fmpz_mpoly_clear(H, ctx);
+  fmpz_mpoly_clear(D, ctx);
+  fmpz_mpoly_clear(G, ctx);
+  fmpz_mpoly_clear(R, ctx);
+  fmpz_mpoly_ctx_clear(ctx);
+  fmpz_poly_clear(F);
+  fmpz_poly_clear(S);
+  fmpz_poly_clear(g);
+  fmpz_poly_clear(gs);
+  fmpz_poly_clear(dg);
+  // Never zero (math.md §14: F and S are coprime and F / S is not constant).
+  if (out.empty()) throw std::logic_error("internal error: margin_polynomial: no polynomial (a zero discriminant)");
+  return out;
+}
+
+std::vector<Integer> in_square(const std::vector<Integer>& p) {
+  std::vector<Integer> out;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (i > 0) out.emplace_back(0);  // the odd powers of t
+    out.push_back(p[i]);
+  }
+  return out;
+}
+
+}  // namespace relpos::detail
