@@ -34,7 +34,7 @@ bool proven_irreducible(const std::vector<Integer>& h) {
   for (std::size_t d = 0; d <= degree; ++d) possible.set(d);
   bool proven = false;
   ulong p = (ulong(1) << 30);
-  for (int used = 0, tried = 0; used < 4 && tried < 8 && !proven; ++tried) {
+  for (int used = 0, tried = 0; used < 10 && tried < 16 && !proven; ++tried) {
     p = n_nextprime(p, 1);
     nmod_poly_t m;
     nmod_poly_init(m, p);

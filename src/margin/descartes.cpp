@@ -159,8 +159,8 @@ std::vector<RootInterval> positive_roots(const std::vector<Integer>& p) {
   }
   const unsigned long e = static_cast<unsigned long>(top + 1);
   auto at = [&](const Integer& c, unsigned long k) {  // 2^e c / 2^k
-    Integer num = c, den(1);
-    mpz_mul_2exp(num.mpz(), num.mpz(), e);
+    Integer num, den(1);  // fresh objects: written through their mpz_t (a copy of c would share c's)
+    mpz_mul_2exp(num.mpz(), c.mpz(), e);
     mpz_mul_2exp(den.mpz(), den.mpz(), k);
     return Rational(num, den);
   };

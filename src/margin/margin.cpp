@@ -20,6 +20,7 @@
 #include "algebra/polynomial_sign.hpp"
 #include "certificate/build.hpp"
 #include "decide/unchecked.hpp"
+#include "margin/approximate.hpp"
 #include "margin/descartes.hpp"
 #include "margin/family.hpp"
 #include "margin/multiplier.hpp"
@@ -143,7 +144,11 @@ std::size_t find_s_star(const std::vector<Candidate>& c, const detail::ScaledFam
 /// s* from s*^2 in the open interval u of the irreducible polynomial q: its minimal polynomial (the
 /// irreducible factor of q(t^2) that vanishes at s*) and an interval of it isolating s*.
 std::pair<std::vector<Integer>, RootInterval> square_root_of(const std::vector<Integer>& q, RootInterval u) {
-  const std::vector<std::vector<Integer>> factors = factors_of(detail::in_square(q));
+  // q is irreducible; q(t^2) is then irreducible too unless q(t^2) = +-m(t) m(-t) (Capelli), which
+  // needs |lc q| = lc(m)^2 and |q(0)| = m(0)^2 to be squares (math.md §14): usually they are not.
+  const std::vector<Integer> h = detail::in_square(q);
+  const bool squares = mpz_perfect_square_p(q.back().mpz()) && mpz_perfect_square_p(Integer(CGAL::abs(q[0])).mpz());
+  const std::vector<std::vector<Integer>> factors = squares ? factors_of(h) : std::vector<std::vector<Integer>>{h};
   for (int attempt = 0; attempt < 64; ++attempt) {
     // (sqrt(u.lo), sqrt(u.hi)) holds s* and no other positive root of q(t^2); its rational bounds
     // widen it by 2^-64, which keeps that unless roots are closer: then u is halved and tried again.
@@ -161,13 +166,13 @@ std::pair<std::vector<Integer>, RootInterval> square_root_of(const std::vector<I
 /// nearest double, an enclosure [lo, hi] of short dyadics, lo < s* < hi, hi - lo <= 2^-bits lo, in
 /// which s* is the margin polynomial's only root (detail::isolates), and the certificates of the
 /// pair scaled by lo (I for a centre inside the cup, else E) and by hi (C).
-Margin irrational_margin(const std::vector<Integer>& f, RootInterval r, const std::vector<Integer>& pi_t,
-                         const detail::ScaledFamily& family, const detail::PointPencil& pencil, const Paraboloid& p,
-                         int bits, bool inside) {
+Margin irrational_margin(const std::vector<Integer>& f, RootInterval r, const std::optional<long double>& start,
+                         const std::vector<Integer>& pi_t, const detail::ScaledFamily& family,
+                         const detail::PointPencil& pencil, const Paraboloid& p, int bits, bool inside) {
   Margin out;
   out.polynomial = f;
   long fine = std::max(bits, 60) + 4;
-  detail::refine_root(f, r, fine);
+  detail::refine_root(f, r, fine, start ? &*start : nullptr);
   // Rounding to nearest is monotone, so when both ends round alike so does s*; an irrational s* is
   // no tie between two doubles, so the halving ends.
   while (nearest_double(r.lo) != nearest_double(r.hi)) detail::bisect(f, r);
@@ -236,7 +241,12 @@ Margin margin(const Ellipsoid& e, const Paraboloid& p, int bits) {
     u.hi = v * (1 + power_of_two_inverse(8));
   }
   auto [f, r] = square_root_of(*star.factor, u);
-  return irrational_margin(f, r, detail::in_square(pi), family, pencil, p, bits, inside);
+  // A start for Newton's method: the square root of s*^2's approximation in long double.
+  std::optional<long double> start;
+  const long double ulo = CGAL::to_double(u.lo), uhi = CGAL::to_double(u.hi);
+  for (const long double x : detail::approximate_real_roots(*star.factor))
+    if (x >= ulo && x <= uhi) start = std::sqrt(x);
+  return irrational_margin(f, r, start, detail::in_square(pi), family, pencil, p, bits, inside);
 }
 
 }  // namespace relpos

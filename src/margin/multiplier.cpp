@@ -8,6 +8,7 @@
 
 #include "algebra/between.hpp"
 #include "algebra/flint_thread.hpp"
+#include "margin/approximate.hpp"
 #include "margin/descartes.hpp"
 #include "margin/refine.hpp"
 
@@ -38,8 +39,8 @@ std::vector<Integer> reflected(const std::array<Integer, N>& p, int sign) {
   return out;
 }
 
-/// The square-free part of W(sign * t), W = f' s - f s' (the numerator of (f / s)'), primitive: its
-/// positive roots are the critical points of r on the side `sign` (in m = alpha l / beta).
+/// W(sign * t), W = f' s - f s' (the numerator of (f / s)'): its positive roots are the critical
+/// points of r on the side `sign` (in m = alpha l / beta).
 std::vector<Integer> critical_polynomial(const PointPencil& pencil, int sign) {
   const Quartic<Integer>& f = pencil.f;
   const Quadratic<Integer>& s = pencil.s;
@@ -48,31 +49,34 @@ std::vector<Integer> critical_polynomial(const PointPencil& pencil, int sign) {
     for (int j = 0; j <= 2; ++j) w[static_cast<std::size_t>(i - 1 + j)] += Integer(i) * f[i] * s[j];
   for (int i = 0; i <= 4; ++i)
     for (int j = 1; j <= 2; ++j) w[static_cast<std::size_t>(i + j - 1)] -= Integer(j) * f[i] * s[j];
-  const std::vector<Integer> wz = reflected(w, sign);
-  std::vector<Integer> out;
-  if (wz.size() < 2) return out;
-  fmpz_poly_t p, d, g;
-  fmpz_poly_init(p);
+  return reflected(w, sign);
+}
+
+/// The square-free part of p, primitive (for Descartes' rule, which needs simple roots).
+std::vector<Integer> square_free(const std::vector<Integer>& p) {
+  fmpz_poly_t q, d, g;
+  fmpz_poly_init(q);
   fmpz_poly_init(d);
   fmpz_poly_init(g);
   fmpz_t z;
   fmpz_init(z);
-  for (std::size_t i = 0; i < wz.size(); ++i) {
-    fmpz_set_mpz(z, wz[i].mpz());
-    fmpz_poly_set_coeff_fmpz(p, static_cast<slong>(i), z);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    fmpz_set_mpz(z, p[i].mpz());
+    fmpz_poly_set_coeff_fmpz(q, static_cast<slong>(i), z);
   }
-  fmpz_poly_derivative(d, p);
-  fmpz_poly_gcd(g, p, d);
-  fmpz_poly_div(p, p, g);  // exact: g divides p
-  fmpz_poly_primitive_part(p, p);
-  for (slong i = 0; i <= fmpz_poly_degree(p); ++i) {
-    fmpz_poly_get_coeff_fmpz(z, p, i);
+  fmpz_poly_derivative(d, q);
+  fmpz_poly_gcd(g, q, d);
+  fmpz_poly_div(q, q, g);  // exact: g divides q
+  fmpz_poly_primitive_part(q, q);
+  std::vector<Integer> out;
+  for (slong i = 0; i <= fmpz_poly_degree(q); ++i) {
+    fmpz_poly_get_coeff_fmpz(z, q, i);
     Integer c;  // fresh object: written through its mpz_t
     fmpz_get_mpz(c.mpz(), z);
     out.push_back(c);
   }
   fmpz_clear(z);
-  fmpz_poly_clear(p);
+  fmpz_poly_clear(q);
   fmpz_poly_clear(d);
   fmpz_poly_clear(g);
   return out;
@@ -96,10 +100,17 @@ std::optional<Rational> below_multiplier(const PointPencil& pencil, const Ration
     return value(f, m) > 0;
   };
   auto lambda = [&](const Rational& t) { return pencil.lambda_of(sign < 0 ? Rational(-t) : t); };
+  // Proposals first: the critical points in long double (one exact test each, as a rule enough).
   if (w.size() >= 2)
-    for (RootInterval r : positive_roots(w)) {
+    for (const long double x : approximate_real_roots(w))
+      if (x > 0)
+        if (const std::optional<Rational> t = rational_near(x); t && *t > 0 && works(*t)) return lambda(*t);
+  // Then rationals converging to the critical points, isolated exactly.
+  const std::vector<Integer> ws = w.size() >= 2 ? square_free(w) : w;
+  if (ws.size() >= 2)
+    for (RootInterval r : positive_roots(ws)) {
       for (long precision = 16; precision <= 2 * bits + 64; precision *= 2) {
-        if (r.lo != r.hi) refine_root(w, r, precision);
+        if (r.lo != r.hi) refine_root(ws, r, precision);
         const Rational t = r.lo == r.hi ? r.lo : rational_inside(r.lo, r.hi, Shortest::Bits);
         if (works(t)) return lambda(t);
         if (r.lo == r.hi) break;

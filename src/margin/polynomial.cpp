@@ -4,6 +4,7 @@
 #include <flint/fmpz_mpoly.h>
 #include <flint/fmpz_poly.h>
 
+#include <initializer_list>
 #include <stdexcept>
 
 #include "algebra/flint_thread.hpp"
@@ -45,6 +46,56 @@ void add_terms(fmpz_mpoly_t out, const fmpz_poly_t c, const fmpz_t factor, ulong
     fmpz_clear(old);
   }
   fmpz_clear(x);
+}
+
+/// 27 Disc = 4 I^3 - J^2 for the quartic h(l) = a l^4 + b l^3 + c l^2 + d l + e, I = 12ae - 3bd + c^2,
+/// J = 72ace + 9bcd - 27ad^2 - 27eb^2 - 2c^3, here with h_i = den F_i - num u S_i polynomials in u:
+/// out = 4 I^3 - J^2 (a positive multiple of Disc_l h), in u.
+void quartic_discriminant(fmpz_poly_t out, const fmpz_poly_t F, const fmpz_poly_t S, const fmpz_t den,
+                          const fmpz_t num) {
+  fmpz_poly_t h[5], i3, j, t, u;
+  for (auto& x : h) fmpz_poly_init(x);
+  fmpz_poly_init(i3);
+  fmpz_poly_init(j);
+  fmpz_poly_init(t);
+  fmpz_poly_init(u);
+  fmpz_t x;
+  fmpz_init(x);
+  for (slong k = 0; k < 5; ++k) {  // h_k = den F_k + (-num) S_k u (num holds -num)
+    fmpz_poly_get_coeff_fmpz(x, F, k);
+    fmpz_mul(x, x, den);
+    fmpz_poly_set_coeff_fmpz(h[k], 0, x);
+    fmpz_poly_get_coeff_fmpz(x, S, k);
+    fmpz_mul(x, x, num);
+    fmpz_poly_set_coeff_fmpz(h[k], 1, x);
+  }
+  const fmpz_poly_struct *a = h[4], *b = h[3], *c = h[2], *d = h[1], *e = h[0];
+  auto add_term = [&](fmpz_poly_t acc, long coefficient, std::initializer_list<const fmpz_poly_struct*> factors) {
+    fmpz_poly_one(t);
+    for (const fmpz_poly_struct* f : factors) fmpz_poly_mul(t, t, f);
+    fmpz_poly_scalar_mul_si(t, t, coefficient);
+    fmpz_poly_add(acc, acc, t);
+  };
+  fmpz_poly_zero(u);  // I
+  add_term(u, 12, {a, e});
+  add_term(u, -3, {b, d});
+  add_term(u, 1, {c, c});
+  fmpz_poly_zero(j);  // J
+  add_term(j, 72, {a, c, e});
+  add_term(j, 9, {b, c, d});
+  add_term(j, -27, {a, d, d});
+  add_term(j, -27, {e, b, b});
+  add_term(j, -2, {c, c, c});
+  fmpz_poly_pow(i3, u, 3);
+  fmpz_poly_scalar_mul_si(i3, i3, 4);
+  fmpz_poly_sqr(t, j);
+  fmpz_poly_sub(out, i3, t);
+  fmpz_clear(x);
+  for (auto& y : h) fmpz_poly_clear(y);
+  fmpz_poly_clear(i3);
+  fmpz_poly_clear(j);
+  fmpz_poly_clear(t);
+  fmpz_poly_clear(u);
 }
 
 }  // namespace
@@ -132,9 +183,15 @@ std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
   fmpz_set_mpz(den, mpq_denref(kappa.mpq()));
   fmpz_set_mpz(num, mpq_numref(kappa.mpq()));
   fmpz_neg(num, num);
-  add_terms(H, F, den, 0, ctx);  // den F(l) - num u S(l): a positive multiple of F/g - u kappa S/g
-  add_terms(H, S, num, 1, ctx);
-  ok = ok && fmpz_mpoly_discriminant(D, H, 0, ctx) != 0;
+  fmpz_poly_t pu;
+  fmpz_poly_init(pu);
+  if (ok && fmpz_poly_degree(F) == 4) {  // g = 1: the discriminant of a quartic from its invariants
+    quartic_discriminant(pu, F, S, den, num);
+  } else if (ok) {
+    add_terms(H, F, den, 0, ctx);  // den F(l) - num u S(l): a positive multiple of F/g - u kappa S/g
+    add_terms(H, S, num, 1, ctx);
+    ok = fmpz_mpoly_discriminant(D, H, 0, ctx) != 0;
+  }
   if (ok && fmpz_poly_degree(g) >= 1) {
     // The hard case's values: sigma at the roots of g (math.md §14), from the square-free part of g.
     fmpz_poly_derivative(dg, g);
@@ -145,9 +202,7 @@ std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
     ok = ok && fmpz_mpoly_resultant(R, G, H, 0, ctx) != 0;
     if (ok) fmpz_mpoly_mul(D, D, R, ctx);
   }
-  fmpz_poly_t pu;
-  fmpz_poly_init(pu);
-  ok = ok && fmpz_mpoly_get_fmpz_poly(pu, D, 1, ctx) != 0;
+  if (ok && fmpz_poly_degree(F) != 4) ok = fmpz_mpoly_get_fmpz_poly(pu, D, 1, ctx) != 0;
   std::vector<Integer> out;
   if (ok && !fmpz_poly_is_zero(pu)) {
     fmpz_poly_primitive_part(pu, pu);  // positive leading coefficient

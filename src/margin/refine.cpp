@@ -26,15 +26,20 @@ Rational exact(const mpfr_t x) {
   return q;
 }
 
-/// Newton's iteration for the root of f in r, at `prec` bits, from the midpoint of r; false when an
-/// iterate leaves r or the steps do not settle (then the caller bisects).
-bool newton(const std::vector<Integer>& f, const RootInterval& r, mpfr_prec_t prec, mpfr_t x) {
+/// Newton's iteration for the root of f in r, at `prec` bits, from `start` when it lies in r, else from
+/// the midpoint of r; false when an iterate leaves r or the steps do not settle (then the caller
+/// bisects).
+bool newton(const std::vector<Integer>& f, const RootInterval& r, mpfr_prec_t prec, const long double* start,
+            mpfr_t x) {
   mpfr_t v, d, t, lo, hi;
   mpfr_inits2(prec, v, d, t, lo, hi, static_cast<mpfr_ptr>(nullptr));
   mpfr_set_q(lo, r.lo.mpq(), MPFR_RNDD);
   mpfr_set_q(hi, r.hi.mpq(), MPFR_RNDU);
-  mpfr_add(x, lo, hi, MPFR_RNDN);
-  mpfr_div_2ui(x, x, 1, MPFR_RNDN);
+  if (start) mpfr_set_ld(x, *start, MPFR_RNDN);
+  if (!start || mpfr_cmp(x, lo) <= 0 || mpfr_cmp(x, hi) >= 0) {
+    mpfr_add(x, lo, hi, MPFR_RNDN);
+    mpfr_div_2ui(x, x, 1, MPFR_RNDN);
+  }
   bool ok = false;
   for (int step = 0; step < 64; ++step) {
     mpfr_set_z(v, f.back().mpz(), MPFR_RNDN);  // Horner: v = f(x), d = f'(x)
@@ -61,14 +66,14 @@ bool newton(const std::vector<Integer>& f, const RootInterval& r, mpfr_prec_t pr
 
 }  // namespace
 
-void refine_root(const std::vector<Integer>& f, RootInterval& r, long bits) {
+void refine_root(const std::vector<Integer>& f, RootInterval& r, long bits, const long double* start) {
   const Rational scale = power_of_two_inverse(static_cast<unsigned long>(bits));
   if (r.lo == r.hi || narrow(r, scale)) return;
   mpfr_t x, y;
   const mpfr_prec_t prec = static_cast<mpfr_prec_t>(bits) + 64;
   mpfr_inits2(prec, x, y, static_cast<mpfr_ptr>(nullptr));
   for (int attempt = 0; attempt < 6 && !narrow(r, scale); ++attempt) {
-    if (newton(f, r, prec, x)) {
+    if (newton(f, r, prec, attempt == 0 ? start : nullptr, x)) {
       // The proposal x (1 -+ 2^-(bits + 2)): the root lies between them when f's exact signs differ.
       mpfr_div_2ui(y, x, static_cast<unsigned long>(bits) + 2, MPFR_RNDN);
       mpfr_sub(y, x, y, MPFR_RNDN);

@@ -13,7 +13,8 @@ namespace relpos::detail {
 
 /// Shrinks r, an open interval of positive rationals holding exactly one root of f, a simple one,
 /// with a sign change of f at its ends, until r.hi - r.lo <= 2^-bits r.lo (or r.lo == r.hi, the root
-/// itself). bits >= 1.
-void refine_root(const std::vector<Integer>& f, RootInterval& r, long bits);
+/// itself). bits >= 1. `start`: an approximation of the root to start Newton's method from (else the
+/// midpoint of r).
+void refine_root(const std::vector<Integer>& f, RootInterval& r, long bits, const long double* start = nullptr);
 
 }  // namespace relpos::detail
