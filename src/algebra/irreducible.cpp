@@ -33,7 +33,7 @@ bool proven_irreducible(const std::vector<Integer>& h) {
   std::bitset<kMaxDegree + 1> possible;
   for (std::size_t d = 0; d <= degree; ++d) possible.set(d);
   bool proven = false;
-  ulong p = (ulong(1) << 30);
+  ulong p = 1000;  // small primes: the distinct-degree factorisation takes about log p products
   for (int used = 0, tried = 0; used < 10 && tried < 16 && !proven; ++tried) {
     p = n_nextprime(p, 1);
     nmod_poly_t m;

@@ -3,6 +3,7 @@
 #include <flint/fmpz.h>
 #include <flint/fmpz_poly.h>
 
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -23,11 +24,25 @@ Rational value(const std::array<Rational, N>& p, const Rational& x) {
   return v;
 }
 
-/// 2^-n.
-Rational power_of_two_inverse(unsigned long n) {
-  Integer d;
+/// 2^n.
+Integer power_of_two(unsigned long n) {
+  Integer d;  // fresh object: written through its mpz_t
   mpz_setbit(d.mpz(), n);
-  return Rational(Integer(1), d);
+  return d;
+}
+
+/// 2^-n.
+Rational power_of_two_inverse(unsigned long n) { return Rational(Integer(1), power_of_two(n)); }
+
+/// x > 0 rounded to `digits` significant bits, as a dyadic rational.
+std::optional<Rational> rounded(long double x, int digits) {
+  int e = 0;
+  const long double m = std::frexp(x, &e);  // x = m 2^e, 1/2 <= m < 1
+  const long double scaled = std::round(std::ldexp(m, digits));
+  const std::optional<Rational> whole = rational_near(scaled);  // an integer below 2^digits
+  if (!whole) return std::nullopt;
+  return e >= digits ? *whole * Rational(power_of_two(static_cast<unsigned long>(e - digits)))
+                     : *whole / Rational(power_of_two(static_cast<unsigned long>(digits - e)));
 }
 
 /// p(sign * t) for integer coefficients, trailing zeros dropped.
@@ -100,16 +115,20 @@ std::optional<Rational> below_multiplier(const PointPencil& pencil, const Ration
     return value(f, m) > 0;
   };
   auto lambda = [&](const Rational& t) { return pencil.lambda_of(sign < 0 ? Rational(-t) : t); };
-  // Proposals first: the critical points in long double (one exact test each, as a rule enough).
+  // Proposals first: the critical points in long double, rounded to a few significant bits first
+  // (a short multiplier), one exact test each; as a rule one of them is enough.
   if (w.size() >= 2)
     for (const long double x : approximate_real_roots(w))
       if (x > 0)
-        if (const std::optional<Rational> t = rational_near(x); t && *t > 0 && works(*t)) return lambda(*t);
+        for (const int digits : {12, 24, 40, 0})
+          if (const std::optional<Rational> t = digits ? rounded(x, digits) : rational_near(x);
+              t && *t > 0 && works(*t))
+            return lambda(*t);
   // Then rationals converging to the critical points, isolated exactly.
   const std::vector<Integer> ws = w.size() >= 2 ? square_free(w) : w;
   if (ws.size() >= 2)
     for (RootInterval r : positive_roots(ws)) {
-      for (long precision = 16; precision <= 2 * bits + 64; precision *= 2) {
+      for (long precision = 16; precision <= 2 * bits + 64; precision += 8) {
         if (r.lo != r.hi) refine_root(ws, r, precision);
         const Rational t = r.lo == r.hi ? r.lo : rational_inside(r.lo, r.hi, Shortest::Bits);
         if (works(t)) return lambda(t);
@@ -131,7 +150,7 @@ std::optional<Rational> below_multiplier(const PointPencil& pencil, const Ration
     if (!roots.empty()) ts = roots.front();
   }
   if (!ts) return std::nullopt;
-  for (long precision = 8; precision <= 2 * bits + 64; precision *= 2) {
+  for (long precision = 8; precision <= 2 * bits + 64; precision += 8) {
     const Rational below = 1 - power_of_two_inverse(static_cast<unsigned long>(precision));
     if (ts->lo != ts->hi) refine_root(sm, *ts, precision);
     const Rational t = ts->lo == ts->hi ? ts->lo * below : ts->lo;

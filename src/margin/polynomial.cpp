@@ -3,6 +3,8 @@
 #include <flint/fmpz.h>
 #include <flint/fmpz_mpoly.h>
 #include <flint/fmpz_poly.h>
+#include <flint/nmod_poly.h>
+#include <flint/ulong_extras.h>
 
 #include <initializer_list>
 #include <stdexcept>
@@ -46,6 +48,29 @@ void add_terms(fmpz_mpoly_t out, const fmpz_poly_t c, const fmpz_t factor, ulong
     fmpz_clear(old);
   }
   fmpz_clear(x);
+}
+
+/// Whether F and S are proven coprime by a prime p dividing neither leading coefficient with
+/// gcd(F mod p, S mod p) = 1 (a common factor over Z would divide both modulo p, keeping its degree).
+bool coprime_modulo_a_prime(const fmpz_poly_t F, const fmpz_poly_t S) {
+  ulong p = ulong(1) << 20;
+  for (int tried = 0; tried < 3; ++tried) {
+    p = n_nextprime(p, 1);
+    if (fmpz_fdiv_ui(fmpz_poly_lead(F), p) == 0 || fmpz_fdiv_ui(fmpz_poly_lead(S), p) == 0) continue;
+    nmod_poly_t f, s, g;
+    nmod_poly_init(f, p);
+    nmod_poly_init(s, p);
+    nmod_poly_init(g, p);
+    fmpz_poly_get_nmod_poly(f, F);
+    fmpz_poly_get_nmod_poly(s, S);
+    nmod_poly_gcd(g, f, s);
+    const bool one = nmod_poly_degree(g) == 0;
+    nmod_poly_clear(f);
+    nmod_poly_clear(s);
+    nmod_poly_clear(g);
+    if (one) return true;
+  }
+  return false;
 }
 
 /// 27 Disc = 4 I^3 - J^2 for the quartic h(l) = a l^4 + b l^3 + c l^2 + d l + e, I = 12ae - 3bd + c^2,
@@ -165,7 +190,10 @@ std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
   // for c = alpha k.
   const Integer a = primitive_part(pencil.f.data(), 5, F);
   const Integer b = primitive_part(pencil.s.data(), 3, S);
-  fmpz_poly_gcd(g, F, S);
+  if (coprime_modulo_a_prime(F, S))
+    fmpz_poly_one(g);  // the common case, without a gcd over Z
+  else
+    fmpz_poly_gcd(g, F, S);
   // Exact divisions (g divides both; it is primitive, so the quotients are integral).
   bool ok = fmpz_poly_divides(F, F, g) != 0 && fmpz_poly_divides(S, S, g) != 0;
   const Rational kappa = Rational(pencil.alpha) * pencil.k * Rational(b, a);
