@@ -522,6 +522,58 @@ TEST_CASE("margin: bits, the JSON form and the batch member", "[margin]") {
                   relpos::InputError);
 }
 
+TEST_CASE("margin: s* beyond the double range has approx +infinity, JSON null", "[margin]") {
+  // Spheres against z = x^2 + y^2 (known by construction): on the axis below the vertex, centre
+  // (0, 0, -h), the vertex is the nearest point, s* = h / r = 2^1025 exactly (E); on the axis above,
+  // centre (0, 0, h) with h >= 1/2, the circle z = h - 1/2 is nearest, s*^2 = (h - 1/4) / r^2 (I),
+  // here about 2^2300, irrational. Both exceed DBL_MAX < 2^1024: the nearest double is +infinity.
+  const Paraboloid cup = Paraboloid::standard(point(Q(0), Q(0), Q(0)), Q(1), Q(1));
+  Integer h1(1), h2(1), r2(1);
+  mpz_mul_2exp(h1.mpz(), h1.mpz(), 1025);
+  mpz_mul_2exp(h2.mpz(), h2.mpz(), 900);
+  mpz_mul_2exp(r2.mpz(), r2.mpz(), 700);
+  const Ellipsoid below = Ellipsoid::sphere(point(Q(0), Q(0), -Rational(h1)), Q(1));
+  const Ellipsoid above = Ellipsoid::sphere(point(Q(0), Q(0), Rational(h2)), Rational(Integer(1), r2));
+  const Margin rational = relpos::margin(below, cup);
+  CHECK(rational.lo == Rational(h1));
+  CHECK(rational.hi == Rational(h1));
+  CHECK(rational.polynomial == std::vector<Integer>{-h1, Integer(1)});
+  CHECK(rational.at.kind == Certificate::Kind::Tangent);
+  const Rational v = (Rational(h2) - Q(1, 4)) * Rational(r2) * Rational(r2);
+  const Margin irrational = relpos::margin(above, cup);
+  INFO("s*^2 = " << relpos::to_string(v));
+  REQUIRE(irrational.lo < irrational.hi);
+  CHECK(irrational.lo * irrational.lo < v);
+  CHECK(v < irrational.hi * irrational.hi);
+  CHECK(irrational.polynomial == square_root_polynomial(v));
+  auto beyond = [&](const Ellipsoid& e, const Margin& m) {
+    CHECK(m.lo > relpos::exact_rational(std::numeric_limits<double>::max()));
+    CHECK(m.approx == std::numeric_limits<double>::infinity());
+    CHECK_FALSE(relpos::verify_margin(e, cup, m));
+    const std::string text = relpos::io::margin_json_text(m);
+    CHECK(text.rfind("{\"approx\":null,", 0) == 0);
+    const Margin back = relpos::io::margin_from_json_text(text);
+    CHECK(back.approx == std::numeric_limits<double>::infinity());
+    CHECK(back.lo == m.lo);
+    CHECK(back.hi == m.hi);
+    CHECK_FALSE(relpos::verify_margin(e, cup, back));
+    Margin forged = m;
+    forged.approx = -std::numeric_limits<double>::infinity();
+    CHECK(relpos::verify_margin(e, cup, forged));
+    forged.approx = 1e300;  // finite, far below s*
+    CHECK(relpos::verify_margin(e, cup, forged));
+  };
+  beyond(below, rational);
+  beyond(above, irrational);
+  // +infinity (null) claimed for an s* within the double range is rejected.
+  const Ellipsoid small = Ellipsoid::sphere(point(Q(0), Q(0), Q(-1)), Q(1, 2));
+  const Margin two = relpos::margin(small, cup);
+  REQUIRE_FALSE(relpos::verify_margin(small, cup, two));
+  Margin forged = relpos::io::margin_from_json_text(relpos::io::margin_json_text(two));
+  forged.approx = std::numeric_limits<double>::infinity();
+  CHECK(relpos::verify_margin(small, cup, forged));
+}
+
 TEST_CASE("margin pieces: the scaled family", "[margin]") {
   rt::Rng g(run_seed() + 7);
   for (int k = 0; k < 10; ++k) {

@@ -34,7 +34,7 @@ struct Margin {
   /// lo <= s* <= hi. lo == hi exactly when s* is rational (then both are s*); otherwise
   /// lo < s* < hi, hi - lo <= 2^-bits lo, and s* is the only root of the polynomial in (lo, hi).
   Rational lo, hi;
-  /// The double nearest s*.
+  /// The double nearest s* (+infinity beyond the double range: JSON null).
   double approx = 0;
   /// lo < hi: certificate of the pair with the ellipsoid scaled by lo about its centre, I or E
   /// (Certificate::Kind::Definite; lambda < 0: I, the centre inside the cup; lambda > 0: E).

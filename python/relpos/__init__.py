@@ -13,6 +13,7 @@ the exact dyadic value they hold. doc/python.md describes the package.
 """
 
 import json as _json
+import math as _math
 import operator as _operator
 from decimal import Decimal
 from fractions import Fraction
@@ -259,15 +260,21 @@ class Margin(_Answer):
     (doc/certificates.md, "Margins").
 
     s* > 1 for I and E, s* = 1 for TI and TE, s* < 1 for C, s* = 0 when the centre lies on the
-    paraboloid. approx is the double nearest s*; lo <= s* <= hi ('p/q'), lo == hi exactly when s* is
-    rational; polynomial is its minimal polynomial (integer coefficients as strings, lowest degree
-    first); below and above are the certificates of the pair scaled by lo (I or E) and by hi (C), at
-    that of the pair scaled by a rational s* (TI or TE). relpos.verify checks it.
+    paraboloid. approx is the double nearest s* (math.inf beyond the double range, null in the JSON
+    form); lo <= s* <= hi ('p/q'), lo == hi exactly when s* is rational; polynomial is its minimal
+    polynomial (integer coefficients as strings, lowest degree first); below and above are the
+    certificates of the pair scaled by lo (I or E) and by hi (C), at that of the pair scaled by a
+    rational s* (TI or TE). relpos.verify checks it.
     """
 
     __slots__ = ()
 
-    approx = _field("approx", "The double nearest s*.")
+    @property
+    def approx(self) -> float:
+        """The double nearest s*: math.inf beyond the double range (null in the JSON form)."""
+        a = self._fields["approx"]
+        return _math.inf if a is None else a
+
     lo = _field("lo", "A rational lower bound of s* ('p/q').")
     hi = _field("hi", "A rational upper bound of s* ('p/q'); equal to lo when s* is rational.")
     polynomial = _field("polynomial", "The minimal polynomial of s*: integer coefficients as strings, lowest degree first.")

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -21,8 +22,10 @@ Rational exact_number(const Json& j, const std::string& path) {
   return rational_from_json(j, path);
 }
 
-/// The double a JSON number's text denotes (the nearest one; strtod rounds correctly).
+/// The double a JSON number's text denotes (the nearest one; strtod rounds correctly); null stands
+/// for +infinity, the nearest double of an s* beyond the double range.
 double double_number(const Json& j, const std::string& path) {
+  if (j.is_null()) return std::numeric_limits<double>::infinity();
   std::string text;
   if (j.is_string())
     text = j.get<std::string>();
@@ -42,7 +45,7 @@ double double_number(const Json& j, const std::string& path) {
 
 void append_margin(const Margin& m, int digits, JsonWriter& w) {
   w.raw("{\"approx\":");
-  w.number(m.approx);
+  w.number(m.approx);  // null for +infinity, an s* beyond the double range (JSON has no infinity)
   w.member("lo");
   w.rational(m.lo);
   w.member("hi");

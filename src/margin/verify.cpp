@@ -50,9 +50,10 @@ std::optional<std::string> check_scaled(const detail::ScaledFamily& family, cons
 }
 
 /// approx within one unit in the last place of [lo, hi]: its neighbours below and above bracket a
-/// point of the enclosure.
+/// point of the enclosure (+infinity, the nearest double of an s* beyond the double range, has
+/// DBL_MAX below it).
 bool near_enclosure(double approx, const Rational& lo, const Rational& hi) {
-  if (!std::isfinite(approx)) return false;
+  if (std::isnan(approx) || approx == -std::numeric_limits<double>::infinity()) return false;
   const double below = std::nextafter(approx, -std::numeric_limits<double>::infinity());
   const double above = std::nextafter(approx, std::numeric_limits<double>::infinity());
   return (!std::isfinite(below) || exact_rational(below) <= hi) &&

@@ -155,6 +155,21 @@ for bad in (["--margin-bits", "0"], ["--margin-bits", "1001"], ["--margin-bits",
     p = run(args + bad)
     check("classify %s: usage error" % " ".join(bad), p.returncode == 2, p.returncode)
 
+# s* beyond the double range: the sphere of radius 1 centred 2^1025 below the vertex (s* = 2^1025,
+# the vertex nearest) has approx null (+infinity), and verify accepts it.
+big = os.path.join(work, "big.jsonl")
+with open(big, "w") as f:
+    f.write(json.dumps({"id": "big", "ellipsoid": {"sphere": {"center": [0, 0, str(-2**1025)], "radius": 1}},
+                        "paraboloid": {"vertex": [0, 0, 0], "a": 1, "b": 1}}) + "\n")
+out = run(["batch", big, "--margin"])
+m = json.loads(out.stdout)["margin"]
+check("s* = 2^1025: approx null, lo = hi = s*", m["approx"] is None and F(m["lo"]) == F(m["hi"]) == 2**1025, m)
+big_answers = os.path.join(work, "big-answers.jsonl")
+with open(big_answers, "wb") as f:
+    f.write(out.stdout)
+v = run(["verify", big, big_answers])
+check("verify accepts approx null", v.returncode == 0, v.stdout)
+
 if failures:
     print("check_margin: %d failures" % len(failures))
     for f in failures:

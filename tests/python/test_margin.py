@@ -75,3 +75,17 @@ def test_forged_margins_are_rejected():
         with pytest.raises(relpos.CertificateError, match="margin"):
             relpos.verify(e, cup(), relpos.Classification(dict(good, margin=forged)))
     assert relpos.verify(e, cup(), relpos.Classification(good)) is None
+
+
+def test_margin_beyond_the_double_range():
+    # Centre 2^1025 below the vertex of z = x^2 + y^2, radius 1: the vertex is nearest, s* = 2^1025 >
+    # the largest double; approx is math.inf, null in the JSON form, and the margin verifies.
+    e = relpos.Ellipsoid.sphere((0, 0, str(-2**1025)), 1)
+    c = relpos.classify(e, cup(), margin=True)
+    assert c.margin.lo == c.margin.hi == str(2**1025)
+    assert c.margin.approx == math.inf
+    assert c.as_dict()["margin"]["approx"] is None
+    assert relpos.verify(e, cup(), c) is None
+    forged = dict(c.as_dict(), margin=dict(c.as_dict()["margin"], approx=1e308))
+    with pytest.raises(relpos.CertificateError, match="margin"):
+        relpos.verify(e, cup(), relpos.Classification(forged))
