@@ -27,17 +27,20 @@
 
 #include "commands.hpp"
 #include "common.hpp"
+#include "io/answer_json.hpp"
 #include "io/batch.hpp"
+#include "io/json_tree.hpp"
 #include "options.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
+#include "relpos/margin.hpp"
 #include "relpos/version.hpp"
 
 namespace relpos_cli {
 
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 constexpr const char* kExitCodes =
     "Exit codes:\n"
@@ -156,7 +159,7 @@ namespace {
 /// --digits N of classify and batch.
 int parse_digits(const std::string& text) { return static_cast<int>(parse_count(text, "--digits", 1, 1000)); }
 
-void write_json_line(const Json& j) { std::cout << relpos::io::dump_json(j) << '\n'; }
+void write_json_line(const Json& j) { std::cout << relpos::io::detail::dump_json(j) << '\n'; }
 
 /// --margin and --margin-bits B (classify and batch): bits > 0 asks for the margin.
 bool take_margin(Args& args, int& bits) {
@@ -170,12 +173,11 @@ bool take_margin(Args& args, int& bits) {
   return true;
 }
 
-/// A JSON object's text with "margin" as its last member (when there is a margin).
-std::string with_margin(std::string object, const std::optional<relpos::Margin>& m,
+/// An answer's JSON text with "margin" as its last member (when there is a margin), by the answer writer.
+std::string with_margin(std::string answer, const std::optional<relpos::Margin>& m,
                         const relpos::io::RenderOptions& options) {
-  if (!m) return object;
-  object.pop_back();
-  return object + ",\"margin\":" + relpos::io::margin_json_text(*m, options.digits) + "}";
+  if (m) relpos::io::detail::append_margin_member(*m, options.digits, answer);
+  return answer;
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -207,13 +209,12 @@ int run_classify(Args& args) {
     const std::optional<relpos::Margin> m =
         margin_bits > 0 ? std::optional<relpos::Margin>(relpos::margin(*e, *p, margin_bits)) : std::nullopt;
     if (contact_only) {
-      const Json j = relpos::io::contact_to_json(relpos::contact(*e, *p));
+      const relpos::ContactAnswer a = relpos::contact(*e, *p);
       if (json)
-        std::cout << with_margin(relpos::io::dump_json(j), m, options) << '\n';
+        std::cout << with_margin(relpos::io::contact_json_text(a), m, options) << '\n';
       else
-        std::cout << "contact: " << j["contact"].get<std::string>() << " (position " << j["position"].get<std::string>()
-                  << "; " << j["rule"].get<std::string>() << "; decided by " << j["decided_by"].get<std::string>()
-                  << ")\n"
+        std::cout << "contact: " << relpos::to_string(a.contact) << " (position " << relpos::to_string(a.position)
+                  << "; " << relpos::describe(a.rule) << "; decided by " << relpos::decided_by(a.stage) << ")\n"
                   << (m ? relpos::io::margin_to_text(*m, options) : "") << std::flush;
       return std::cout ? kExitOk : kExitIo;
     }

@@ -21,6 +21,8 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "io/batch.hpp"
+#include "io/certificate_json.hpp"
+#include "io/json_tree.hpp"
 #include "io/margin_json.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
@@ -29,7 +31,7 @@
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 constexpr const char* kVerifyHelp =
     "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]\n"
@@ -93,7 +95,7 @@ InputPair read_input(const std::string& line, long number) {
 /// Why the answer's "margin" (when it has one) does not prove s* for the pair (relpos/margin.hpp).
 std::optional<std::string> margin_failure(const relpos::Ellipsoid& e, const relpos::Paraboloid& p, const Json& answer) {
   if (!answer.contains("margin")) return std::nullopt;
-  return relpos::verify_margin(e, p, relpos::io::detail::margin_from_json(answer["margin"]));
+  return relpos::verify_margin(e, p, relpos::io::detail::margin_from_tree(answer["margin"]));
 }
 
 }  // namespace
@@ -150,7 +152,7 @@ int run_verify(Args& args) {
     const InputPair in = read_input(in_line, number);
     Json answer;
     try {
-      answer = relpos::io::parse_json_exact(answer_line);
+      answer = relpos::io::detail::parse_json_exact(answer_line);
     } catch (const std::exception& err) {
       fail(number, std::string("the answer is not JSON: ") + clip(err.what()));
       continue;
@@ -201,7 +203,7 @@ int run_verify(Args& args) {
       continue;
     }
     try {
-      const relpos::Certificate c = relpos::certificate_from_json(answer["certificate"]);
+      const relpos::Certificate c = relpos::io::detail::certificate_from_tree(answer["certificate"]);
       if (auto reason = relpos::verify_certificate(*in.e, *in.p, *position, c))
         fail(number, position_text + ": " + clip(*reason));
       else if (auto margin_reason = margin_failure(*in.e, *in.p, answer))

@@ -1,12 +1,14 @@
+// Margins as JSON (include/relpos/margin.hpp): exact strings out, exact numbers in.
 #include "io/margin_json.hpp"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <set>
 #include <string>
 
+#include "io/certificate_json.hpp"
+#include "io/json_values.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
@@ -14,11 +16,9 @@ namespace relpos::io {
 namespace detail {
 namespace {
 
-using Json = nlohmann::ordered_json;
-
+/// An exact number: what rational_from_json reads (a JSON number's text or a string "p/q").
 Rational exact_number(const Json& j, const std::string& path) {
-  if (j.is_null() || j.is_boolean() || j.is_array() || j.is_object())
-    throw InputError(path + ": expected a number, got " + j.dump().substr(0, 40));
+  if (!j.is_number() && !j.is_string()) fail(path, "expected a number, got " + describe(j));
   return rational_from_json(j, path);
 }
 
@@ -32,13 +32,24 @@ double double_number(const Json& j, const std::string& path) {
   else if (j.is_number())
     text = j.dump();
   else
-    throw InputError(path + ": expected a number, got " + j.dump().substr(0, 40));
+    fail(path, "expected a number, got " + describe(j));
   errno = 0;
   char* end = nullptr;
   const double x = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(x))
-    throw InputError(path + ": expected a finite number, got " + Json(text).dump().substr(0, 40));
+    fail(path, "expected a finite number, got " + describe(Json(text)));
   return x;
+}
+
+/// The certificate under `key`, when there is one; its messages prefixed by the margin's path.
+void read_certificate(const Json& j, const char* key, const std::string& path, Certificate& out) {
+  const auto it = j.find(key);
+  if (it == j.end()) return;
+  try {
+    out = certificate_from_tree(*it);
+  } catch (const InputError& err) {
+    fail(key_path(path, key), err.what());
+  }
 }
 
 }  // namespace
@@ -69,37 +80,26 @@ void append_margin(const Margin& m, int digits, JsonWriter& w) {
   w.raw("}");
 }
 
-Margin margin_from_json(const Json& j) {
+Margin margin_from_tree(const Json& j) {
   const std::string path = "margin";
-  if (!j.is_object()) throw InputError(path + ": expected an object");
-  static const std::set<std::string> keys{"approx", "lo", "hi", "polynomial", "below", "above", "at"};
-  for (const auto& item : j.items())
-    if (!keys.count(item.key())) throw InputError(path + ": unknown key \"" + item.key().substr(0, 40) + "\"");
-  for (const char* key : {"approx", "lo", "hi", "polynomial"})
-    if (!j.contains(key)) throw InputError(path + ": missing \"" + key + "\"");
+  if (!j.is_object()) fail(path, "expected an object, got " + describe(j));
+  check_keys(j, {"approx", "lo", "hi", "polynomial", "below", "above", "at"}, path);
   Margin m;
-  m.approx = double_number(j["approx"], path + ".approx");
-  m.lo = exact_number(j["lo"], path + ".lo");
-  m.hi = exact_number(j["hi"], path + ".hi");
-  const Json& poly = j["polynomial"];
-  if (!poly.is_array() || poly.empty()) throw InputError(path + ".polynomial: expected a non-empty array of integers");
+  m.approx = double_number(required(j, "approx", path), key_path(path, "approx"));
+  m.lo = exact_number(required(j, "lo", path), key_path(path, "lo"));
+  m.hi = exact_number(required(j, "hi", path), key_path(path, "hi"));
+  const std::string poly_path = key_path(path, "polynomial");
+  const Json& poly = required(j, "polynomial", path);
+  if (!poly.is_array() || poly.empty()) fail(poly_path, "expected a non-empty array of integers");
   for (std::size_t i = 0; i < poly.size(); ++i) {
-    const std::string p = path + ".polynomial[" + std::to_string(i) + "]";
+    const std::string p = index_path(poly_path, i);
     const Rational c = exact_number(poly[i], p);
-    if (c.denominator() != 1) throw InputError(p + ": expected an integer, got " + to_string(c));
+    if (c.denominator() != 1) fail(p, "expected an integer, got " + to_string(c));
     m.polynomial.push_back(c.numerator());
   }
-  auto certificate = [&](const char* key, Certificate& out) {
-    if (!j.contains(key)) return;
-    try {
-      out = certificate_from_json(j[key]);
-    } catch (const InputError& err) {
-      throw InputError(path + "." + key + ": " + err.what());
-    }
-  };
-  certificate("below", m.below);
-  certificate("above", m.above);
-  certificate("at", m.at);
+  read_certificate(j, "below", path, m.below);
+  read_certificate(j, "above", path, m.above);
+  read_certificate(j, "at", path, m.at);
   return m;
 }
 
@@ -112,26 +112,6 @@ std::string margin_json_text(const Margin& m, int digits) {
   return text;
 }
 
-Margin margin_from_json_text(std::string_view text) { return detail::margin_from_json(parse_json_exact(text)); }
-
-std::string margin_to_text(const Margin& m, const RenderOptions& options) {
-  const std::string pad(10, ' ');
-  std::string t = "margin:   s* ";
-  if (m.hi == 0) return t + "= 0: the ellipsoid's centre lies on the paraboloid (any scaling crosses it)\n";
-  const bool rational = m.lo == m.hi;
-  t += rational ? "= " + to_string(m.lo) + " exactly" : "~ " + m.value().decimals(options.digits);
-  t += ": the factor by which the ellipsoid, scaled about its centre, first touches the paraboloid\n";
-  t += pad + "minimal polynomial " + polynomial_text(m.polynomial) + "\n";
-  if (rational) {
-    t += pad + "proof: scaled by s* it is tangent (" +
-         (m.at.lambda < 0 || m.at.kind == Certificate::Kind::HardTangent ? std::string("TI") : std::string("TE")) +
-         " certificate)\n";
-  } else {
-    t += pad + "in [" + to_string(m.lo) + ", " + to_string(m.hi) + "]\n";
-    t += pad + "proof: scaled by lo it is " + (m.below.lambda < 0 ? "I" : "E") +
-         " (lambda = " + to_string(m.below.lambda) + "), scaled by hi it is C (two witness points)\n";
-  }
-  return t;
-}
+Margin margin_from_json_text(std::string_view text) { return detail::margin_from_tree(detail::parse_json_exact(text)); }
 
 }  // namespace relpos::io

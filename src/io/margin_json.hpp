@@ -1,9 +1,9 @@
-// The JSON form of a margin (include/relpos/margin.hpp; doc/certificates.md, "Margins"), written by the
-// one JSON writer of the reports (json_write.hpp) and read back with exact numbers.
+// The JSON form of a margin (include/relpos/margin.hpp; doc/certificates.md, "Margins"), private
+// side: written into an answer by the answer writer (answer_json.hpp, append_margin_member), read
+// from an exact tree by `relpos verify`; the public text functions are in io.hpp.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
+#include "io/json_tree.hpp"
 #include "io/json_write.hpp"
 #include "relpos/margin.hpp"
 
@@ -13,8 +13,8 @@ namespace relpos::io::detail {
 /// "above" (lo < hi) or "at" (lo == hi > 0), certificates as append_certificate writes them}.
 void append_margin(const Margin& m, int digits, JsonWriter& w);
 
-/// The inverse of append_margin on a value parsed by parse_json_exact (approx: the double nearest its
-/// decimal text). Throws InputError naming the field ("margin.lo: ...").
-Margin margin_from_json(const nlohmann::ordered_json& j);
+/// The inverse of append_margin on an exact tree (parse_json_exact; approx: the double nearest its
+/// decimal text, null for +infinity). Throws InputError naming the field ("margin.lo: ...").
+Margin margin_from_tree(const Json& j);
 
 }  // namespace relpos::io::detail

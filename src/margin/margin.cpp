@@ -109,16 +109,10 @@ Ellipsoid scaled_square(const detail::ScaledFamily& family, const Rational& v) {
 }
 
 /// The certificate of `position` for the pair scaled by sqrt(v), which is that pair's position
-/// (certificate::build fails, as an internal error, rather than certify anything else), with its
-/// f = f0 - v k s and s known.
-Certificate certificate_of(const detail::ScaledFamily& family, const detail::PointPencil& pencil, const Paraboloid& p,
-                           const Rational& v, Position position) {
-  const Quartic<Rational> f = pencil.scaled_in_lambda(v);
-  const Quadratic<Rational> s = pencil.s_in_lambda();
-  certificate::Known known;
-  known.f = &f;
-  known.s = &s;
-  return certificate::build(scaled_square(family, v), p, position, known);
+/// (certificate::build fails, as an internal error, rather than certify anything else).
+Certificate certificate_of(const detail::ScaledFamily& family, const Paraboloid& p, const Rational& v,
+                           Position position) {
+  return certificate::build(scaled_square(family, v), p, position);
 }
 
 /// s*^2 among the candidates: the nested family has no contact below s* and crosses above it, so
@@ -191,9 +185,9 @@ Margin irrational_margin(const std::vector<Integer>& f, RootInterval r, const st
     out.below.kind = Certificate::Kind::Definite;
     out.below.lambda = std::move(*l);
   } else {
-    out.below = certificate_of(family, pencil, p, out.lo * out.lo, inside ? Position::I : Position::E);
+    out.below = certificate_of(family, p, out.lo * out.lo, inside ? Position::I : Position::E);
   }
-  out.above = certificate_of(family, pencil, p, out.hi * out.hi, Position::C);
+  out.above = certificate_of(family, p, out.hi * out.hi, Position::C);
   return out;
 }
 
@@ -232,7 +226,7 @@ Margin margin(const Ellipsoid& e, const Paraboloid& p, int bits) {
     out.lo = out.hi = Rational(num, den);
     out.polynomial = {-num, den};
     out.approx = nearest_double(out.lo);
-    out.at = certificate_of(family, pencil, p, v, inside ? Position::TI : Position::TE);
+    out.at = certificate_of(family, p, v, inside ? Position::TI : Position::TE);
     return out;
   }
   RootInterval u = star.root;

@@ -161,23 +161,6 @@ Quartic<Rational> PointPencil::scaled(const Rational& v) const {
   return out;
 }
 
-Quartic<Rational> PointPencil::scaled_in_lambda(const Rational& v) const {
-  // f0 - v k s0 = (f - v alpha k s)(alpha l / beta) / alpha^4: coefficient i times (alpha / beta)^i / alpha^4.
-  Quartic<Rational> out = scaled(v);
-  const Rational ratio(alpha, beta);
-  Rational power = Rational(1) / Rational(alpha * alpha * alpha * alpha);
-  for (std::size_t i = 0; i < 5; ++i, power *= ratio) out[i] *= power;
-  return out;
-}
-
-Quadratic<Rational> PointPencil::s_in_lambda() const {
-  const Rational ratio(alpha, beta);
-  Rational power = Rational(1) / Rational(alpha * alpha * alpha);
-  Quadratic<Rational> out;
-  for (std::size_t i = 0; i < 3; ++i, power *= ratio) out[i] = Rational(s[i]) * power;
-  return out;
-}
-
 std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
   flint_thread_cleanup_at_exit();
   fmpz_poly_t F, S, g, gs, dg;

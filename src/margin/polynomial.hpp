@@ -25,10 +25,6 @@ struct PointPencil {
 
   /// f(m) - v (alpha k) s(m): a positive multiple of det(l P + E_q) for q^2 = v, in m.
   Quartic<Rational> scaled(const Rational& v) const;
-  /// The same in l itself: det(l P + E_q) (certificates speak of the sign-normalized matrices).
-  Quartic<Rational> scaled_in_lambda(const Rational& v) const;
-  /// s0(l) = det(l A + M).
-  Quadratic<Rational> s_in_lambda() const;
   /// l = beta m / alpha.
   Rational lambda_of(const Rational& m) const { return m * Rational(beta, alpha); }
 };
