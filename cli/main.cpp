@@ -27,6 +27,7 @@
 
 #include "commands.hpp"
 #include "common.hpp"
+#include "io/answer_json.hpp"
 #include "io/batch.hpp"
 #include "io/json_tree.hpp"
 #include "options.hpp"
@@ -34,6 +35,7 @@
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
+#include "relpos/margin.hpp"
 #include "relpos/version.hpp"
 
 namespace relpos_cli {
@@ -81,7 +83,7 @@ void print_main_help(std::ostream& os) {
 void print_classify_help(std::ostream& os) {
   os << "Usage: relpos classify (--ellipsoid Q | --sphere X,Y,Z,R)\n"
         "                       (--paraboloid Q | --standard-paraboloid A,B) [--digits N] [--json]\n"
-        "                       [--contact-only]\n"
+        "                       [--contact-only] [--margin] [--margin-bits B]\n"
         "\n"
         "Classify one pair and print a report: the position and its meaning, the deciding rule,\n"
         "smallness (rho against 1), the characteristic polynomial f with exact coefficients, its real\n"
@@ -103,6 +105,11 @@ void print_classify_help(std::ostream& os) {
         "  --json                     print the JSON object of `relpos batch` instead of the report\n"
         "  --contact-only             answer only whether the surfaces meet: none, touching or crossing,\n"
         "                             certified like the position (doc/contact.md)\n"
+        "  --margin                   also s*, the factor by which the ellipsoid scaled about its centre\n"
+        "                             first touches the paraboloid, exactly and with its proof (JSON:\n"
+        "                             \"margin\"; doc/certificates.md, \"Margins\")\n"
+        "  --margin-bits B            the margin's enclosure: relative width 2^-B (default 40, 1..1000;\n"
+        "                             implies --margin)\n"
         "  -h, --help                 this help\n"
         "\n"
         "Example:\n"
@@ -115,6 +122,7 @@ void print_classify_help(std::ostream& os) {
 void print_batch_help(std::ostream& os) {
   os << "Usage: relpos batch [FILE|-] [--digits N] [--contact-only] [--evidence full|minimal]\n"
         "                    [--threads N] [--numbers exact|double] [--max-line-bytes N]\n"
+        "                    [--margin] [--margin-bits B]\n"
         "\n"
         "Read JSON Lines from FILE (or standard input when FILE is '-' or absent), one pair per line:\n"
         "  {\"id\": ANY, \"ellipsoid\": Q, \"paraboloid\": Q, \"comment\": ANY}\n"
@@ -138,6 +146,11 @@ void print_batch_help(std::ostream& os) {
         "                   number is the IEEE double nearest its text (a float program's input)\n"
         "  --max-line-bytes N        longest input line (default 67108864 = 64 MiB); a longer line\n"
         "                   is answered with an error and the run goes on\n"
+        "  --margin         every answer ends with \"margin\": s*, the factor by which the ellipsoid\n"
+        "                   scaled about its centre first touches the paraboloid, exactly, with its\n"
+        "                   proof (doc/certificates.md, \"Margins\")\n"
+        "  --margin-bits B  the margin's enclosure: relative width 2^-B (default 40, 1..1000; implies\n"
+        "                   --margin)\n"
         "  -h, --help       this help\n"
         "\n"
      << kExitCodes;
@@ -150,13 +163,32 @@ int parse_digits(const std::string& text) { return static_cast<int>(parse_count(
 
 void write_json_line(const Json& j) { std::cout << relpos::io::detail::dump_json(j) << '\n'; }
 
+/// --margin and --margin-bits B (classify and batch): bits > 0 asks for the margin.
+bool take_margin(Args& args, int& bits) {
+  std::string v;
+  if (args.flag("--margin")) {
+    if (bits == 0) bits = relpos::kDefaultMarginBits;
+    return true;
+  }
+  if (!args.value("--margin-bits", v)) return false;
+  bits = static_cast<int>(parse_count(v, "--margin-bits", 1, relpos::kMaxMarginBits));
+  return true;
+}
+
+/// An answer's JSON text with "margin" as its last member (when there is a margin), by the answer writer.
+std::string with_margin(std::string answer, const std::optional<relpos::Margin>& m,
+                        const relpos::io::RenderOptions& options) {
+  if (m) relpos::io::detail::append_margin_member(*m, options.digits, answer);
+  return answer;
+}
+
 // ------------------------------------------------------------------------------------------------
 
 }  // namespace
 
 int run_classify(Args& args) {
   ShapeOptions shapes;
-  int digits = 12;
+  int digits = 12, margin_bits = 0;
   bool json = false, contact_only = false;
   while (!args.done()) {
     if (args.help()) {
@@ -165,6 +197,7 @@ int run_classify(Args& args) {
     }
     std::string v;
     if (shapes.take(args) || args.flag("--json", json) || args.flag("--contact-only", contact_only)) continue;
+    if (take_margin(args, margin_bits)) continue;
     if (!args.value("--digits", v)) args.unexpected();
     digits = parse_digits(v);
   }
@@ -175,21 +208,23 @@ int run_classify(Args& args) {
   try {
     const std::optional<relpos::Ellipsoid> e = shapes.make_ellipsoid();
     const std::optional<relpos::Paraboloid> p = shapes.make_paraboloid();
+    const std::optional<relpos::Margin> m =
+        margin_bits > 0 ? std::optional<relpos::Margin>(relpos::margin(*e, *p, margin_bits)) : std::nullopt;
     if (contact_only) {
       const relpos::ContactAnswer a = relpos::contact(*e, *p);
       if (json)
-        std::cout << relpos::io::contact_json_text(a) << '\n';
+        std::cout << with_margin(relpos::io::contact_json_text(a), m, options) << '\n';
       else
         std::cout << "contact: " << relpos::to_string(a.contact) << " (position " << relpos::to_string(a.position)
                   << "; " << relpos::describe(a.rule) << "; decided by " << relpos::decided_by(a.stage) << ")\n"
-                  << std::flush;
+                  << (m ? relpos::io::margin_to_text(*m, options) : "") << std::flush;
       return std::cout ? kExitOk : kExitIo;
     }
     const relpos::Classification c = relpos::classify(*e, *p, relpos::Evidence::Full);
     if (json)
-      std::cout << relpos::io::classification_json_text(c, options) << '\n';
+      std::cout << with_margin(relpos::io::classification_json_text(c, options), m, options) << '\n';
     else
-      std::cout << relpos::io::classification_to_text(c, options);
+      std::cout << relpos::io::classification_to_text(c, options) << (m ? relpos::io::margin_to_text(*m, options) : "");
     return finish_cout();
   } catch (const relpos::InputError& err) {
     if (json) write_json_line(Json{{"error", err.what()}});
@@ -398,6 +433,7 @@ int run_batch(Args& args) {
       threads = static_cast<unsigned>(parse_count(v, "--threads", 1, 1024));
     } else if (args.value("--max-line-bytes", v)) {
       options.max_line_bytes = parse_count(v, "--max-line-bytes", 1, std::size_t(1) << 40);
+    } else if (take_margin(args, options.margin_bits)) {  // --margin, --margin-bits B
     } else if (args.peek() != "-" && args.peek().rfind("-", 0) == 0) {
       args.unexpected();
     } else {

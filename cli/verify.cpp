@@ -1,6 +1,7 @@
 // relpos verify INPUT.jsonl ANSWERS.jsonl [--numbers exact|double] [--quiet]: checks every
 // certificate of a `relpos batch` output against its input with the independent verifier
-// (include/relpos/position.hpp). An answer's "numbers" member says how its input was read
+// (include/relpos/position.hpp), and the margin of an answer that has one
+// (include/relpos/margin.hpp). An answer's "numbers" member says how its input was read
 // (`relpos batch --numbers double` writes "double"); --numbers is the reading of answers without it.
 //
 // Line N of ANSWERS answers line N of INPUT. An answer with "error" is skipped when its input line is
@@ -24,9 +25,11 @@
 #include "io/batch.hpp"
 #include "io/certificate_json.hpp"
 #include "io/json_tree.hpp"
+#include "io/margin_json.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
+#include "relpos/margin.hpp"
 
 namespace {
 
@@ -36,7 +39,8 @@ constexpr const char* kVerifyHelp =
     "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--numbers exact|double] [--quiet]\n"
     "\n"
     "Check the certificate of every answer of `relpos batch INPUT.jsonl > ANSWERS.jsonl` with an\n"
-    "independent verifier that uses exact rational arithmetic only (no code of the classifier).\n"
+    "independent verifier that uses exact rational arithmetic only (no code of the classifier), and\n"
+    "the \"margin\" of an answer that has one (`relpos batch --margin`).\n"
     "Line N of ANSWERS must answer line N of INPUT. Answers with \"error\" are skipped when the input\n"
     "line is not a valid pair, and counted as unanswered when it is.\n"
     "The input line is read as the answer's \"numbers\" member says (`relpos batch --numbers double`\n"
@@ -94,6 +98,12 @@ InputPair read_input(const std::string& line, long number, bool doubles) {
     in.id = nullptr;  // not comparable (a number beyond double range)
   }
   return in;
+}
+
+/// Why the answer's "margin" (when it has one) does not prove s* for the pair (relpos/margin.hpp).
+std::optional<std::string> margin_failure(const relpos::Ellipsoid& e, const relpos::Paraboloid& p, const Json& answer) {
+  if (!answer.contains("margin")) return std::nullopt;
+  return relpos::verify_margin(e, p, relpos::io::detail::margin_from_tree(answer["margin"]));
 }
 
 }  // namespace
@@ -217,6 +227,8 @@ int run_verify(Args& args) {
       const relpos::Certificate c = relpos::io::detail::certificate_from_tree(answer["certificate"]);
       if (auto reason = relpos::verify_certificate(*in.e, *in.p, *position, c))
         fail(number, position_text + ": " + clip(*reason));
+      else if (auto margin_reason = margin_failure(*in.e, *in.p, answer))
+        fail(number, "margin: " + clip(*margin_reason));
       else
         ++verified;
     } catch (const std::exception& err) {

@@ -9,9 +9,11 @@
 
 #include "io/answer_json.hpp"
 #include "io/json_tree.hpp"
+#include "io/margin_json.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
 #include "relpos/io.hpp"
+#include "relpos/margin.hpp"
 
 namespace {
 
@@ -98,5 +100,42 @@ TEST_CASE("the error line escapes any message and replaces invalid UTF-8", "[ans
     CHECK(j.size() == 2);
     // What the tree of the message dumps to, invalid bytes replaced (U+FFFD).
     CHECK(relpos::io::detail::dump_json(j["error"]) == relpos::io::detail::dump_json(Json(m)));
+  }
+}
+
+TEST_CASE("the margin is the last member of an answer at every evidence level", "[answer_json]") {
+  // s* of spheres on the axis of z = x^2 + y^2 (math.md §14): the answer's other members are those
+  // written without it, and the margin read back from the tree is the one written.
+  const relpos::Ellipsoid spheres[] = {sphere(Rational(-3), Rational(1)), sphere(Rational(1), Rational(1, 10)),
+                                       sphere(Rational(1, 4), Rational(1, 4))};
+  for (const relpos::Ellipsoid& e : spheres) {
+    const relpos::Margin m = relpos::margin(e, cup());
+    REQUIRE(!relpos::verify_margin(e, cup(), m));
+    std::string plain, with;
+    auto check = [&](const std::string& level) {
+      CAPTURE(level, with);
+      const std::string id = "\"m\"";
+      relpos::io::detail::append_margin_member(m, 12, with);
+      Json j = read_back(with, id);
+      CHECK((--j.end()).key() == "margin");
+      const relpos::Margin back = relpos::io::detail::margin_from_tree(j["margin"]);
+      CHECK(back.lo == m.lo);
+      CHECK(back.hi == m.hi);
+      CHECK(back.polynomial == m.polynomial);
+      CHECK(back.approx == m.approx);
+      CHECK(!relpos::verify_margin(e, cup(), back));
+      j.erase("margin");
+      CHECK(j == Json::parse(plain));
+    };
+    relpos::io::detail::write_answer("\"m\"", plain, relpos::decide_position(e, cup()));
+    relpos::io::detail::write_answer("\"m\"", with, relpos::decide_position(e, cup()));
+    check("minimal");
+    relpos::io::detail::write_answer("\"m\"", plain, relpos::contact(e, cup()));
+    relpos::io::detail::write_answer("\"m\"", with, relpos::contact(e, cup()));
+    check("contact only");
+    const relpos::Classification c = relpos::classify(e, cup(), relpos::Evidence::Full);
+    relpos::io::detail::write_answer("\"m\"", plain, c, relpos::io::RenderOptions{});
+    relpos::io::detail::write_answer("\"m\"", with, c, relpos::io::RenderOptions{});
+    check("full");
   }
 }

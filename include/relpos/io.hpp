@@ -14,6 +14,7 @@
 
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
+#include "relpos/margin.hpp"
 #include "relpos/numbers.hpp"
 #include "relpos/position.hpp"
 #include "relpos/quadric.hpp"
@@ -74,6 +75,9 @@ struct BatchOptions {
   bool numbers_as_doubles = false;     ///< each JSON number is the IEEE double nearest its text
   std::size_t max_line_bytes = kDefaultMaxLineBytes;
   RenderOptions render;
+  /// > 0: every answer ends with "margin" (margin.hpp, margin_json_text), its enclosure of relative
+  /// width 2^-margin_bits; 0: no margin.
+  int margin_bits = 0;
 };
 
 /// The error of a line that ran out of memory, and the error of one whose id could not even be
@@ -92,6 +96,16 @@ std::string answer_batch_line(std::string_view line, long line_number, const Bat
 /// else with the line number (kOutOfMemoryNoIdMessage), and `out` is left empty only when not even
 /// that fits (a caller keeping some capacity in `out` never sees it).
 void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out);
+
+/// The JSON text of a margin (doc/certificates.md, "Margins"): {"approx": <double>, "lo": "p/q",
+/// "hi": "p/q", "polynomial": ["c0", "c1", ...], and "below" and "above" (lo < hi) or "at" (lo == hi >
+/// 0): certificates as certificate_json_text writes them}. `digits`: the hard case's "decimal".
+std::string margin_json_text(const Margin& m, int digits = 12);
+/// The inverse (numbers read exactly, approx as the double nearest its text). Throws InputError
+/// naming the field on malformed text.
+Margin margin_from_json_text(std::string_view text);
+/// Three or four lines of text for `relpos classify --margin` (ends with a newline).
+std::string margin_to_text(const Margin& m, const RenderOptions& options = {});
 
 }  // namespace relpos::io
 

@@ -13,6 +13,7 @@ the exact dyadic value they hold. doc/python.md describes the package.
 """
 
 import json as _json
+import math as _math
 import operator as _operator
 from decimal import Decimal
 from fractions import Fraction
@@ -30,6 +31,7 @@ __all__ = [
     "Classification",
     "Certificate",
     "CertificateError",
+    "Margin",
     "ContactAnswer",
     "SceneResult",
     "Instant",
@@ -253,6 +255,53 @@ class Certificate(_Answer):
         return "relpos.Certificate(kind=%r)" % self.kind
 
 
+class Margin(_Answer):
+    """s*, the factor by which the ellipsoid, scaled about its centre, first touches the paraboloid,
+    exactly, with its proof: the fields of the "margin" object of `relpos batch --margin`
+    (doc/certificates.md, "Margins").
+
+    s* > 1 for I and E, s* = 1 for TI and TE, s* < 1 for C, s* = 0 when the centre lies on the
+    paraboloid. approx is the double nearest s* (math.inf beyond the double range, null in the JSON
+    form); lo <= s* <= hi ('p/q'), lo == hi exactly when s* is rational; polynomial is its minimal
+    polynomial (integer coefficients as strings, lowest degree first); below and above are the
+    certificates of the pair scaled by lo (I or E) and by hi (C), at that of the pair scaled by a
+    rational s* (TI or TE). relpos.verify checks it.
+    """
+
+    __slots__ = ()
+
+    @property
+    def approx(self) -> float:
+        """The double nearest s*: math.inf beyond the double range (null in the JSON form)."""
+        a = self._fields["approx"]
+        return _math.inf if a is None else a
+
+    lo = _field("lo", "A rational lower bound of s* ('p/q').")
+    hi = _field("hi", "A rational upper bound of s* ('p/q'); equal to lo when s* is rational.")
+    polynomial = _field("polynomial", "The minimal polynomial of s*: integer coefficients as strings, lowest degree first.")
+
+    @property
+    def below(self) -> Optional[Certificate]:
+        """The certificate of the pair with the ellipsoid scaled by lo (I or E), when lo < hi."""
+        c = self._fields.get("below")
+        return None if c is None else Certificate(c)
+
+    @property
+    def above(self) -> Optional[Certificate]:
+        """The certificate of the pair with the ellipsoid scaled by hi (C), when lo < hi."""
+        c = self._fields.get("above")
+        return None if c is None else Certificate(c)
+
+    @property
+    def at(self) -> Optional[Certificate]:
+        """The certificate of the pair scaled by a rational s* > 0 (TI or TE)."""
+        c = self._fields.get("at")
+        return None if c is None else Certificate(c)
+
+    def __repr__(self):
+        return "relpos.Margin(approx=%r, lo=%r, hi=%r)" % (self.approx, self.lo, self.hi)
+
+
 class CertificateError(ValueError):
     """relpos.verify: the certificate does not prove the position (the message says why)."""
 
@@ -286,6 +335,12 @@ class Classification(_Answer):
         """The certificate (evidence="full"), else None."""
         c = self._fields.get("certificate")
         return None if c is None else Certificate(c)
+
+    @property
+    def margin(self) -> Optional[Margin]:
+        """The margin s* with its proof (classify(..., margin=True)), else None."""
+        m = self._fields.get("margin")
+        return None if m is None else Margin(m)
 
     def __repr__(self):
         f = self._fields
@@ -323,20 +378,33 @@ def _check_pair(e, p, function):
 
 
 def classify(
-    e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] = "full", meta: Any = None
+    e: Ellipsoid,
+    p: Paraboloid,
+    evidence: Literal["full", "minimal"] = "full",
+    margin: bool = False,
+    margin_bits: int = 40,
+    meta: Any = None,
 ) -> Classification:
     """Classify ellipsoid `e` against paraboloid `p` exactly.
 
     evidence="full" gives the same fields as `relpos batch` / `relpos classify --json` (exact
     coefficients of f and s, multiple roots, rho, the certificate); "minimal" only what the decision
-    needs. meta: any JSON value, carried through untouched as the answer's "meta" member (as `relpos
-    batch` echoes a line's "meta"). Raises ValueError on bad input (with the CLI's message). The GIL
-    is released.
+    needs. margin=True adds the field "margin" (`relpos batch --margin`, the Margin s*: how far the
+    answer is from changing), its enclosure of relative width 2**-margin_bits (1 to 1000). meta: any
+    JSON value, carried through untouched as the answer's last member "meta" (as `relpos batch`
+    echoes a line's "meta"). Raises ValueError on bad input (with the CLI's message). The GIL is
+    released.
     """
     _check_pair(e, p, "classify")
     if evidence not in ("full", "minimal"):
         raise ValueError("evidence: expected 'full' or 'minimal', got %r" % (evidence,))
+    if not isinstance(margin, bool):
+        raise TypeError("margin: expected a bool, got %s" % type(margin).__name__)
+    if isinstance(margin_bits, bool) or not isinstance(margin_bits, int):
+        raise TypeError("margin_bits: expected an int, got %s" % type(margin_bits).__name__)
     fields = _json.loads(_relpos._classify_json(e, p, evidence == "full"))
+    if margin:
+        fields["margin"] = _json.loads(_relpos._margin_json(e, p, margin_bits))
     if meta is not None:
         try:
             fields["meta"] = _json.loads(_json.dumps(meta))
@@ -347,8 +415,9 @@ def classify(
 
 def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
     """Check answer.certificate for answer.position with the library's independent verifier (exact
-    rational arithmetic, no code of the classifier; `relpos verify`). Returns None when it proves
-    the position; raises CertificateError saying why not, ValueError when there is no certificate."""
+    rational arithmetic, no code of the classifier; `relpos verify`), and answer.margin when it has
+    one. Returns None when they prove the position (and s*); raises CertificateError saying why not,
+    ValueError when there is no certificate."""
     _check_pair(e, p, "verify")
     if not isinstance(answer, Classification):
         raise TypeError("verify: answer must be a relpos.Classification, got %s" % type(answer).__name__)
@@ -358,6 +427,11 @@ def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
     reason = _relpos._verify(e, p, answer.position, _json.dumps(certificate.to_json()))
     if reason is not None:
         raise CertificateError(answer.position + ": " + reason)
+    margin = answer.margin
+    if margin is not None:
+        reason = _relpos._verify_margin(e, p, _json.dumps(margin.as_dict()))
+        if reason is not None:
+            raise CertificateError("margin: " + reason)
 
 
 def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer:

@@ -10,6 +10,7 @@
 #include <relpos/classify.hpp>
 #include <relpos/contact.hpp>
 #include <relpos/io.hpp>
+#include <relpos/margin.hpp>
 #include <relpos/numbers.hpp>
 #include <string>
 
@@ -168,6 +169,31 @@ PYBIND11_MODULE(_relpos, m) {
       },
       "e"_a, "p"_a, "position"_a, "certificate"_a,
       "The independent verifier's reason why the certificate (JSON text) does not prove the position, or None.");
+
+  m.def(
+      "_margin_json",
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, int bits) {
+        if (bits < 1 || bits > relpos::kMaxMarginBits)
+          throw relpos::InputError("margin_bits: expected an int from 1 to " + std::to_string(relpos::kMaxMarginBits) +
+                                   ", got " + std::to_string(bits));
+        std::string text;
+        {
+          py::gil_scoped_release release;
+          text = relpos::io::margin_json_text(relpos::margin(e, p, bits));
+        }
+        return text;
+      },
+      "e"_a, "p"_a, "bits"_a = relpos::kDefaultMarginBits,
+      "The JSON object \"margin\" of `relpos batch --margin-bits BITS` for the pair, as text.");
+
+  m.def(
+      "_verify_margin",
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, const std::string& margin) {
+        const relpos::Margin parsed = relpos::io::margin_from_json_text(margin);
+        py::gil_scoped_release release;
+        return relpos::verify_margin(e, p, parsed);
+      },
+      "e"_a, "p"_a, "margin"_a, "The verifier's reason why the margin (JSON text) does not prove s*, or None.");
 
   m.def(
       "_contact_json",

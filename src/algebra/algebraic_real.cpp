@@ -10,10 +10,13 @@
 #include <utility>
 
 #include "algebra/flint_thread.hpp"
+#include "algebra/polynomial_sign.hpp"
 #include "algebra/polynomial_text.hpp"
 
 namespace relpos {
 namespace {
+
+using detail::sign_of_value;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
@@ -22,19 +25,6 @@ Rational inverse_power_of_two(unsigned long n) {
   Integer d;
   mpz_setbit(d.mpz(), n);
   return Rational(Integer(1), d);
-}
-
-/// Sign of p(x) for an integer polynomial and a rational x = a/b: the sign of the homogenised
-/// value sum p_i a^i b^(n-i) (b > 0), computed in integers.
-int sign_of_value(const std::vector<Integer>& p, const Rational& x) {
-  if (p.empty()) return 0;
-  const Integer a = x.numerator(), b = x.denominator();
-  Integer v = p.back(), bpow(1);
-  for (std::size_t k = p.size() - 1; k-- > 0;) {
-    bpow *= b;
-    v = v * a + p[k] * bpow;
-  }
-  return v > 0 ? 1 : (v < 0 ? -1 : 0);
 }
 
 void to_flint(fmpz_poly_t f, const std::vector<Integer>& p) {

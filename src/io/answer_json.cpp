@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "io/certificate_json.hpp"
+#include "io/margin_json.hpp"
 #include "io/root_decimals.hpp"
 
 namespace relpos::io {
@@ -153,6 +154,14 @@ void append_members(const ContactAnswer& a, JsonWriter& w) {
   w.string(describe(a.rule));
   w.member("decided_by");
   w.string(decided_by(a.stage));
+  w.raw('}');
+}
+
+void append_margin_member(const Margin& m, int digits, std::string& out) {
+  out.pop_back();  // the members' closing brace
+  JsonWriter w(out);
+  w.member("margin");
+  append_margin(m, digits, w);
   w.raw('}');
 }
 

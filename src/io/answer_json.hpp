@@ -15,6 +15,7 @@
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
 #include "relpos/io.hpp"
+#include "relpos/margin.hpp"
 
 namespace relpos::io::detail {
 
@@ -26,6 +27,11 @@ void append_members(const Verdict& v, JsonWriter& w);
 void append_members(const Classification& c, const RenderOptions& options, JsonWriter& w);
 /// The contact-only answer (doc/contact.md): contact, position, rule, decided_by.
 void append_members(const ContactAnswer& a, JsonWriter& w);
+
+/// The margin (`--margin`; doc/certificates.md, "Margins") as the answer's last member, ,"margin":{...},
+/// written over the closing brace of the level's members just appended to `out`: any level may end
+/// with it.
+void append_margin_member(const Margin& m, int digits, std::string& out);
 
 /// Room in `out` for a long id and what follows it at once: growing past the id would copy it.
 void reserve_for_id(std::string& out, std::string_view id);

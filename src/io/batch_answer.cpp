@@ -4,6 +4,7 @@
 // "Out of memory").
 #include <charconv>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -13,12 +14,17 @@
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
+#include "relpos/margin.hpp"
 
 namespace relpos::io {
 namespace {
 
-/// The answer of a line read, at the evidence level of the options.
+/// The answer of a line read, at the evidence level of the options, ending with its margin when the
+/// options ask for it (computed first, like the answer, before the id is written).
 void answer(const BatchLine& in, std::string_view id, const BatchOptions& options, std::string& out) {
+  const std::optional<Margin> m =
+      options.margin_bits > 0 ? std::optional<Margin>(margin(*in.ellipsoid, *in.paraboloid, options.margin_bits))
+                              : std::nullopt;
   if (options.contact_only) {
     detail::write_answer(id, out, contact(*in.ellipsoid, *in.paraboloid));
   } else if (options.evidence == Evidence::Minimal) {  // the verdict alone: classify's, without its evidence
@@ -27,6 +33,7 @@ void answer(const BatchLine& in, std::string_view id, const BatchOptions& option
     const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full);
     detail::write_answer(id, out, c, options.render);
   }
+  if (m) detail::append_margin_member(*m, options.render.digits, out);
 }
 
 /// The answer's last members (detail::append_trailer); false when out of memory there.

@@ -1,5 +1,6 @@
-// The human-readable report of a classification (relpos classify without --json) and the texts it
-// shares with other reports: what a position and a stage mean, a polynomial with exact coefficients.
+// The human-readable report of a classification (relpos classify without --json) and of a margin
+// (--margin), and the texts they share with other reports: what a position and a stage mean, a
+// polynomial with exact coefficients.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,7 +9,9 @@
 #include "algebra/polynomial_text.hpp"
 #include "decide/stages.hpp"
 #include "io/root_decimals.hpp"
+#include "relpos/algebraic_real.hpp"
 #include "relpos/io.hpp"
+#include "relpos/margin.hpp"
 
 namespace relpos::io {
 
@@ -160,6 +163,26 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
   line("stage:", to_string(c.verdict.stage) + " (" + stage_meaning(c.verdict.stage) + ")");
   if (c.has_full_evidence) line("proof:", certificate_text(c.certificate));
   return t + "\n" + polynomial_lines(c, options);
+}
+
+std::string margin_to_text(const Margin& m, const RenderOptions& options) {
+  const std::string pad(10, ' ');
+  std::string t = "margin:   s* ";
+  if (m.hi == 0) return t + "= 0: the ellipsoid's centre lies on the paraboloid (any scaling crosses it)\n";
+  const bool rational = m.lo == m.hi;
+  t += rational ? "= " + to_string(m.lo) + " exactly" : "~ " + m.value().decimals(options.digits);
+  t += ": the factor by which the ellipsoid, scaled about its centre, first touches the paraboloid\n";
+  t += pad + "minimal polynomial " + polynomial_text(m.polynomial) + "\n";
+  if (rational) {
+    t += pad + "proof: scaled by s* it is tangent (" +
+         (m.at.lambda < 0 || m.at.kind == Certificate::Kind::HardTangent ? std::string("TI") : std::string("TE")) +
+         " certificate)\n";
+  } else {
+    t += pad + "in [" + to_string(m.lo) + ", " + to_string(m.hi) + "]\n";
+    t += pad + "proof: scaled by lo it is " + (m.below.lambda < 0 ? "I" : "E") +
+         " (lambda = " + to_string(m.below.lambda) + "), scaled by hi it is C (two witness points)\n";
+  }
+  return t;
 }
 
 }  // namespace relpos::io
