@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "general/pencil.hpp"
 
@@ -202,15 +203,19 @@ T quadratic_form(const View<T>& m, const std::array<T, 3>& x) {
   return s;
 }
 
-/// An approximation of the minimiser of g over K's solid (math.md §18): x(0) when the optimal
-/// multiplier is 0, x(s*) at the root s* of the secular polynomial S = F'D - F D' beyond the end
-/// s_lo, or in the hard case a point of the kernel line through lim x(s) (s -> s_lo) on K's surface.
+/// Approximations of the minimiser of g over K's solid (math.md §18), as candidates: x(0) when the
+/// pencil's 3x3 block is definite at 0 (the optimal multiplier may be 0), x(s*) at the root s* of the
+/// secular polynomial S = F'D - F D' beyond the end s_lo of the interval, and the hard case's point:
+/// lim x(s) (s -> s_lo) moved along the kernel of the block at s_lo onto K's surface. Near s_lo the
+/// sign of S is lost in rounding whenever S vanishes there (S = c D^2 for a concentric pair), so no
+/// candidate is trusted: the caller checks each exactly.
 template <class T>
-std::optional<std::array<T, 3>> minimiser(const Matrix4& km, const Matrix4& gm, int bits) {
+std::vector<std::array<T, 3>> minimisers(const Matrix4& km, const Matrix4& gm, int bits) {
+  std::vector<std::array<T, 3>> out;
   const View<T> k = scaled<T>(km), g = scaled<T>(gm);
   const Quartic<T> f = pencil_quartic<T>(k, g);
   const Cubic<T> d = pencil_cubic<T>(k, g);
-  // S = f' d - f d' (degree 6; f' d and f d' written out).
+  // S = f' d - f d' (degree 6).
   std::array<T, 7> s;
   for (T& c : s) c = T(0.0);
   const Cubic<T> fp = derivative(f);
@@ -220,23 +225,21 @@ std::optional<std::array<T, 3>> minimiser(const Matrix4& km, const Matrix4& gm, 
   for (std::size_t i = 0; i < 5; ++i)
     for (std::size_t j = 0; j < 3; ++j) s[i + j] = s[i + j] - f[i] * dp[j];
   const std::array<T, 6> sp = derivative(s);
-  const T r3 = largest_root(d);
   const T zero(0.0);
+  const T r3 = largest_root(d);
   const bool end_at_zero = !(r3 > zero);
   const T lo = end_at_zero ? zero : r3;
-  if (end_at_zero && fabs(d[0]) > fabs(d[3]) * T(1e-12)) {
-    // D(0) != 0 (B_G definite): the optimum is at s = 0 when S(0) <= 0 (g's centre inside K).
-    if (!(s[0] > zero)) return stationary(k, g, zero);
-  }
-  // S just beyond the end: positive unless the optimum is the end itself (the hard case).
+  if (end_at_zero)
+    if (const auto x0 = stationary(k, g, zero)) out.push_back(*x0);
   const T unit = fabs(lo) + T(1.0);
-  T eps = unit, tol = unit;
+  T eps = unit, probe = unit, tol = unit;
   for (int i = 0; i < bits / 2; ++i) eps = eps * T(0.5);
+  for (int i = 0; i < bits / 4; ++i) probe = probe * T(0.5);
   for (int i = 0; i < bits - 2; ++i) tol = tol * T(0.5);
-  T a = lo + eps, b = lo + unit;
+  // The root of S beyond the end, where S goes from + to - (safeguarded Newton).
+  T a = lo + probe, b = lo + unit;
   if (horner(s, a) > zero) {
     for (int i = 0; i < 4000 && !(horner(s, b) < zero); ++i) b = b + (b - lo);
-    // Safeguarded Newton on S in (a, b), S(a) > 0 > S(b), down to the working precision.
     T x = (a + b) * T(0.5);
     for (int i = 0; i < 4 * bits + 200 && b - a > tol * (fabs(x) + T(1.0)); ++i) {
       const T v = horner(s, x);
@@ -248,20 +251,19 @@ std::optional<std::array<T, 3>> minimiser(const Matrix4& km, const Matrix4& gm, 
       if (!(fabs(next - x) > zero)) break;
       x = next;
     }
-    return stationary(k, g, x);
+    if (const auto xs = stationary(k, g, x)) out.push_back(*xs);
   }
-  // The hard case: x_hat = lim x(s), s -> lo; w spans the kernel of B + lo M (inverse iteration).
-  const auto x_hat = stationary(k, g, a);
-  if (!x_hat) return std::nullopt;
-  // At the end 0 (a root of D) g equals its optimum on the whole kernel set, and x_hat is in K.
-  if (end_at_zero) return x_hat;
+  // The hard case: x_hat = lim x(s), s -> s_lo; w spans the kernel of B + s_lo M (inverse iteration).
+  const auto x_hat = stationary(k, g, lo + eps);
+  if (!x_hat) return out;
+  out.push_back(*x_hat);  // at the end 0, a root of D, g equals its optimum on the kernel set
   std::array<T, 3> w{T(1.0), T(0.7), T(0.3)};
   View<T> none = k;  // the zero pencil: stationary(none, p, 0) solves P3 x = -p
   for (T& x : none.a) x = zero;
   for (int it = 0; it < 6; ++it) {
     // (B + a M) w' = M w: the stationary system of the matrix G + a K with its last column -M w.
     View<T> pencil = g;
-    for (std::size_t i = 0; i < 16; ++i) pencil.a[i] = g.a[i] + a * k.a[i];
+    for (std::size_t i = 0; i < 16; ++i) pencil.a[i] = g.a[i] + (lo + eps) * k.a[i];
     for (int i = 0; i < 3; ++i) {
       T mw(0.0);
       for (int j = 0; j < 3; ++j) mw = mw + k(i, j) * w[static_cast<std::size_t>(j)];
@@ -275,8 +277,8 @@ std::optional<std::array<T, 3>> minimiser(const Matrix4& km, const Matrix4& gm, 
     if (!(norm > zero)) break;
     for (std::size_t i = 0; i < 3; ++i) w[i] = (*w2)[i] / norm;
   }
-  // k(x_hat + sigma w) = k0 + 2 sigma k1 + sigma^2 k2: the root sigma puts the point on K's surface,
-  // where g = optimum - lo k is least.
+  // k(x_hat + sigma w) = k0 + 2 sigma k1 + sigma^2 k2: a root sigma puts the point on K's surface,
+  // where g = optimum - s_lo k is least.
   T k1(0.0), k2(0.0);
   for (int i = 0; i < 3; ++i) {
     T row = k(i, 3), mw(0.0);
@@ -289,11 +291,13 @@ std::optional<std::array<T, 3>> minimiser(const Matrix4& km, const Matrix4& gm, 
   }
   const T k0 = quadratic_form(k, *x_hat);
   const T disc = k1 * k1 - k0 * k2;
-  if (!(disc > zero) || !(k2 > zero)) return x_hat;
-  const T sigma = (-k1 + sqrt(disc)) / k2;
-  std::array<T, 3> y;
-  for (std::size_t i = 0; i < 3; ++i) y[i] = (*x_hat)[i] + sigma * w[i];
-  return y;
+  if (!(disc > zero) || !(k2 > zero)) return out;
+  for (const T& sigma : {(-k1 + sqrt(disc)) / k2, (-k1 - sqrt(disc)) / k2}) {
+    std::array<T, 3> y;
+    for (std::size_t i = 0; i < 3; ++i) y[i] = (*x_hat)[i] + sigma * w[i];
+    out.push_back(y);
+  }
+  return out;
 }
 
 Rational form_at(const Matrix4& m, const Vector3& x) {
@@ -353,17 +357,16 @@ std::optional<Vector3> pulled(const Matrix4& km, const Matrix4& gm, const Vector
 Vector3 negative_point(const Matrix4& k, const Matrix4& g) {
   const Vector3 c = centre_of(k);
   if (form_at(g, c) < 0) return c;
-  if (const auto y = minimiser<double>(k, g, 53))
-    if (const auto x = pulled<double>(k, g, c, *y, 53)) return *x;
+  for (const auto& y : minimisers<double>(k, g, 53))
+    if (const auto x = pulled<double>(k, g, c, y, 53)) return *x;
   const mpfr_prec_t saved = working_precision;
   for (int bits = 128; bits <= 8192; bits *= 2) {
     working_precision = bits;
-    const auto y = minimiser<Big>(k, g, bits);
-    if (!y) continue;
-    if (const auto x = pulled<Big>(k, g, c, *y, bits)) {
-      working_precision = saved;
-      return *x;
-    }
+    for (const auto& y : minimisers<Big>(k, g, bits))
+      if (const auto x = pulled<Big>(k, g, c, y, bits)) {
+        working_precision = saved;
+        return *x;
+      }
   }
   working_precision = saved;
   throw std::logic_error("relpos internal error: no crossing witness found within 8192 bits");
