@@ -40,6 +40,11 @@ class Ball {
     return {m, widen(std::fabs(x.m_) * y.r_ + std::fabs(y.m_) * x.r_ + x.r_ * y.r_ + kRel * std::fabs(m))};
   }
   friend Ball operator-(const Ball& x) { return {-x.m_, x.r_}; }
+  /// x times an exact double c (a Horner step at a point): the same bound with r_c = 0.
+  Ball times(double c) const {
+    const double m = m_ * c;
+    return {m, widen(std::fabs(c) * r_ + kRel * std::fabs(m))};
+  }
 
  private:
   static constexpr double kRel = 0x1p-52;
