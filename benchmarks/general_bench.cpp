@@ -233,5 +233,64 @@ int main(int argc, char** argv) {
   std::printf("  decide_position(e, q), prebuilt objects                        %8.1f  (%.2fx)\n", d, d / f);
   if (from)
     std::printf("  from_doubles + decide_position                                 %8.1f  (%.2fx)\n", fr, fr / f);
+  // Scaled matrices: the same pairs with E times 3 and Q times 1/3 (rationals that are not doubles:
+  // the filter reads enclosures) against E times 10^300 and Q times 10^-300, on the filter and on the
+  // exact stage (each matrix's own primitive integer form: the same integers, math.md §17).
+  {
+    const std::size_t m = std::min<std::size_t>(n, 2000);
+    Rational big(1);
+    for (int i = 0; i < 300; ++i) big *= 10;
+    auto scaled = [](const DoubleMatrix4& d, const Rational& s) {
+      Matrix4 out;
+      for (std::size_t i = 0; i < 16; ++i) out.a[i] = Rational(d[i]) * s;
+      return out;
+    };
+    std::vector<Ellipsoid> e3, eb;
+    std::vector<Quadric> q3, qb;
+    for (std::size_t i = 0; i < m; ++i) {
+      e3.push_back(Ellipsoid::from_matrix(scaled(em[i], Rational(3))));
+      q3.push_back(Quadric::from_matrix(scaled(qm[i], Rational(1, 3))));
+      eb.push_back(Ellipsoid::from_matrix(scaled(em[i], big)));
+      qb.push_back(Quadric::from_matrix(scaled(qm[i], Rational(1) / big)));
+    }
+    for (std::size_t i = 0; i < m; ++i)
+      if (decide_position(e3[i], q3[i]).position != decide_position(eb[i], qb[i]).position) {
+        std::printf("MISMATCH (scaled) at pair %zu\n", i);
+        return 1;
+      }
+    std::vector<double> t3, tb, x3, xb;
+    for (int r = 0; r < rounds; ++r) {
+      t3.push_back(seconds([&] {
+        int s = 0;
+        for (std::size_t i = 0; i < m; ++i) s += static_cast<int>(decide_position(e3[i], q3[i]).position);
+        sink = sink + s;
+      }));
+      tb.push_back(seconds([&] {
+        int s = 0;
+        for (std::size_t i = 0; i < m; ++i) s += static_cast<int>(decide_position(eb[i], qb[i]).position);
+        sink = sink + s;
+      }));
+      if (r < 3) {
+        x3.push_back(seconds([&] {
+          int s = 0;
+          for (std::size_t i = 0; i < m; ++i) s += static_cast<int>(decide_position_exact(e3[i], q3[i]).position);
+          sink = sink + s;
+        }));
+        xb.push_back(seconds([&] {
+          int s = 0;
+          for (std::size_t i = 0; i < m; ++i) s += static_cast<int>(decide_position_exact(eb[i], qb[i]).position);
+          sink = sink + s;
+        }));
+      }
+    }
+    const double k = 1e9 / static_cast<double>(m);
+    std::printf("scaled matrices (%zu pairs as rationals), ns a pair:\n", m);
+    std::printf("  decide_position, E x 3, Q x 1/3          %10.1f\n", median(t3) * k);
+    std::printf("  decide_position, E x 1e300, Q x 1e-300   %10.1f  (%.2fx)\n", median(tb) * k,
+                median(tb) / median(t3));
+    std::printf("  exact stage, E x 3, Q x 1/3              %10.1f\n", median(x3) * k);
+    std::printf("  exact stage, E x 1e300, Q x 1e-300       %10.1f  (%.2fx)\n", median(xb) * k,
+                median(xb) / median(x3));
+  }
   return 0;
 }

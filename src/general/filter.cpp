@@ -55,41 +55,42 @@ struct RBMatrix {
 };
 
 /// The matrix's entries as running bounds, scaled by a power of two (largest entry near 1; exact, a
-/// positive scaling changes no sign): the normalized doubles, the stored enclosures, or enclosures of
-/// the rationals (mpq_get_d truncates towards zero: the entry lies between it and the next double
-/// away from zero). False when an entry would leave the normal range.
+/// positive scaling changes no sign): the normalized doubles, or enclosures of the rationals read
+/// from the leading bits of their numerators and denominators (mpz_get_d_2exp truncates towards
+/// zero, so |n| lies in [m, m + 2^-53) 2^e), whatever their length: a matrix scaled by 10^300 costs
+/// what the unscaled one costs (math.md §17). False when an entry would leave the normal range.
 bool load(const detail::QuadricMatrix& s, RBMatrix& out) {
   if (const DoubleMatrix4* d = s.filter_doubles()) {
     for (std::size_t i = 0; i < 16; ++i) out.a[i] = RB((*d)[i]);
     return true;
   }
   const Matrix4& m = s.matrix();
-  long top = LONG_MIN;
-  for (const Rational& x : m.a)
-    if (x != 0)
-      top = std::max(top, static_cast<long>(mpz_sizeinbase(mpq_numref(x.mpq()), 2)) -
-                              static_cast<long>(mpz_sizeinbase(mpq_denref(x.mpq()), 2)));
+  double lo[16], hi[16];
+  long exponent[16], top = LONG_MIN;
+  for (std::size_t i = 0; i < 16; ++i) {
+    const mpq_srcptr q = m.a[i].mpq();
+    if (mpq_sgn(q) == 0) continue;
+    long en, ed;
+    const double mn = std::fabs(mpz_get_d_2exp(&en, mpq_numref(q))), md = mpz_get_d_2exp(&ed, mpq_denref(q));
+    // |q| 2^-(en - ed) lies in (mn / (md + 2^-53), (mn + 2^-53) / md); each quotient rounded, then widened.
+    lo[i] = mn / (md + 0x1p-53) * (1 - 0x1p-50);
+    hi[i] = (mn + 0x1p-53) / md * (1 + 0x1p-50);
+    exponent[i] = en - ed;
+    top = std::max(top, exponent[i]);
+  }
   if (top == LONG_MIN) return false;
-  mpq_t x;
-  mpq_init(x);
-  bool ok = true;
-  for (std::size_t i = 0; i < 16 && ok; ++i) {
-    if (m.a[i] == 0) {
+  for (std::size_t i = 0; i < 16; ++i) {
+    const int sign = mpq_sgn(m.a[i].mpq());
+    if (sign == 0) {
       out.a[i] = RB(0.0);
       continue;
     }
-    if (top >= 0) {
-      mpq_div_2exp(x, m.a[i].mpq(), static_cast<mp_bitcnt_t>(top));
-    } else {
-      mpq_mul_2exp(x, m.a[i].mpq(), static_cast<mp_bitcnt_t>(-top));
-    }
-    const double v = mpq_get_d(x);
-    if (!(std::fabs(v) >= 0x1p-900)) ok = false;
-    const double away = std::nextafter(v, v > 0 ? HUGE_VAL : -HUGE_VAL);
-    out.a[i] = v > 0 ? RB::enclosing(v, away) : RB::enclosing(away, v);
+    const long shift = exponent[i] - top;  // <= 0: values in (2^-2, 2] times 2^shift
+    if (shift < -900) return false;
+    const double l = std::ldexp(lo[i], static_cast<int>(shift)), h = std::ldexp(hi[i], static_cast<int>(shift));
+    out.a[i] = sign > 0 ? RB::enclosing(l, h) : RB::enclosing(-h, -l);
   }
-  mpq_clear(x);
-  return ok;
+  return true;
 }
 
 // ---- the sign rule on certified coefficients, generic over the number type ----------------------

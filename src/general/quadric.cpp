@@ -2,6 +2,7 @@
 // normalization, refusal of degenerate and imaginary quadrics, and the geometric forms.
 #include <utility>
 
+#include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
 #include "relpos/general_quadric.hpp"
 
@@ -166,9 +167,23 @@ Quadric Quadric::from_matrix(const Matrix4& q) {
 }
 
 Quadric Quadric::from_doubles(const DoubleMatrix4& d) {
-  Matrix4 m;
-  for (std::size_t i = 0; i < 16; ++i) m.a[i] = exact_rational(d[i]);
-  return from_matrix(m);
+  // An ellipsoid or an elliptic paraboloid certified by the filtered shape tests of Ellipsoid and
+  // Paraboloid (src/algebra/shape_filter.hpp) needs no rationals; anything else takes the exact
+  // type (and names what it is when refused).
+  detail::QuadricMatrix m(d);
+  const DoubleMatrix4* normalized = m.filter_doubles();
+  if (const int o = shape_filter::certified_ellipsoid_in_doubles(normalized)) {
+    if (o < 0) m.negate_doubles();
+    return Quadric(std::move(m), QuadricType::Ellipsoid);
+  }
+  if (normalized)
+    if (const int o = shape_filter::certified_paraboloid_in_doubles(d, normalized)) {
+      if (o < 0) m.negate_doubles();
+      return Quadric(std::move(m), QuadricType::EllipticParaboloid);
+    }
+  Matrix4 exact;
+  for (std::size_t i = 0; i < 16; ++i) exact.a[i] = exact_rational(d[i]);
+  return from_matrix(exact);
 }
 
 Quadric Quadric::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
