@@ -7,6 +7,7 @@
 // into (small, bounded) DOMs by the general reader, which words every error.
 #include "io/batch.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <new>
@@ -14,6 +15,7 @@
 #include <string_view>
 
 #include "io/fast_quadric.hpp"
+#include "io/general_io.hpp"
 #include "io/json_read.hpp"
 #include "io/json_write.hpp"
 #include "relpos/classify.hpp"
@@ -272,6 +274,7 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
   if (id) *id = out.id;
   out.ellipsoid.reset();  // the fast reader makes the quadrics here as the line is scanned
   out.paraboloid.reset();
+  out.quadric.reset();
   const std::string_view line = normalize_line(raw, line_number, options.max_line_bytes);
   std::size_t i = skip_ws(line, 0);
   if (i == line.size()) throw InputError("empty line");
@@ -282,7 +285,7 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
     throw InputError(expected);
   }
   // Scan the members; all structural errors are reported by the parser's message on the whole line.
-  Member members[4];
+  Member members[5];
   std::size_t count = 0;
   std::string unknown, duplicate, key_storage;
   i = skip_ws(line, i + 1);
@@ -315,14 +318,14 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
       const std::string_view value = line.substr(i, end - i);
       // nlohmann skips a byte order mark at the start of what it parses; inside a line it is not JSON.
       if (value.substr(0, 3) == "\xEF\xBB\xBF") invalid_json(line);
-      static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment"};
+      static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment", "quadric"};
       bool known = false;
       for (const std::string_view k : kKeys) {
-        if (key != k || (fixed && key == "paraboloid")) continue;
+        if (key != k || (fixed && (key == "paraboloid" || key == "quadric"))) continue;
         known = true;
         for (std::size_t m = 0; m < count; ++m)
           if (members[m].key == k && duplicate.empty()) duplicate = key;
-        if (count < 4) members[count++] = Member{k, value, taken};
+        if (count < 5) members[count++] = Member{k, value, taken};
       }
       if (!known) {
         if (unknown.empty()) unknown = key.substr(0, 40);
@@ -348,7 +351,7 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
 
   // The id and the comment: valid JSON, not stored (the id is kept as its text).
   for (std::size_t m = 0; m < count; ++m) {
-    if (members[m].key == "ellipsoid" || members[m].key == "paraboloid") continue;
+    if (members[m].key == "ellipsoid" || members[m].key == "paraboloid" || members[m].key == "quadric") continue;
     if (plainly_valid(members[m].value)) continue;
     try {
       detail::validate_json(members[m].value, 1);
@@ -373,12 +376,13 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
   read.doubles = options.numbers_as_doubles;
   read.max_elements = kMaxQuadricEntries;
   read.start_depth = 1;
-  Json ellipsoid, paraboloid;
+  Json ellipsoid, paraboloid, quadric;
   for (std::size_t m = 0; m < count; ++m) {
     const Member& x = members[m];
-    if ((x.key != "ellipsoid" && x.key != "paraboloid") || x.fast) continue;
+    if ((x.key != "ellipsoid" && x.key != "paraboloid" && x.key != "quadric") || x.fast) continue;
     try {
-      (x.key == "ellipsoid" ? ellipsoid : paraboloid) = detail::parse_json(x.value, read);
+      (x.key == "ellipsoid" ? ellipsoid : (x.key == "paraboloid" ? paraboloid : quadric)) =
+          detail::parse_json(x.value, read);
     } catch (const detail::JsonSyntaxError&) {
       out.id = std::to_string(line_number);  // as for any line that is not JSON
       if (id) *id = out.id;
@@ -393,6 +397,19 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
                      (fixed ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
                             : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")"));
   if (!out.ellipsoid && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
+  if (!quadric.is_null()) {  // a general quadric in place of the paraboloid (src/io/general_io.hpp)
+    if (out.paraboloid || !paraboloid.is_null())
+      throw InputError("a line takes \"paraboloid\" or \"quadric\", not both");
+    if (!out.ellipsoid) out.ellipsoid = ellipsoid_from_json(ellipsoid, "ellipsoid");
+    out.quadric = quadric_from_json(quadric, "quadric");
+    const std::size_t bits = std::max(normalized_bits(out.ellipsoid->matrix()), normalized_bits(out.quadric->matrix()));
+    if (bits > kMaxNormalizedBits)  // as check_normalized_pair_size words it (doc/cli.md, Limits)
+      throw InputError(
+          "numbers too large: a matrix of the pair, divided by its own content (its primitive integer form), has " +
+          std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxNormalizedBits) +
+          " bits (kMaxNormalizedBits, doc/cli.md, Limits)");
+    return;
+  }
   if (!fixed && !out.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
   if (!out.ellipsoid) out.ellipsoid = ellipsoid_from_json(ellipsoid, "ellipsoid");
   if (!fixed && !out.paraboloid) out.paraboloid = paraboloid_from_json(paraboloid, "paraboloid");
@@ -414,6 +431,16 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
   std::string internal;
   try {
     read_line(line, line_number, options, nullptr, in, &id);
+    if (in.quadric) {  // a general quadric (src/io/general_io.hpp)
+      const QuadricVerdict v = decide_position(*in.ellipsoid, *in.quadric);
+      std::optional<QuadricClassification> c;
+      if (options.evidence == Evidence::Full && !options.contact_only) c = classify(*in.ellipsoid, *in.quadric);
+      const std::string report =
+          dump_json(general_answer_json(c ? c->verdict : v, c ? &*c : nullptr, options.render.digits));
+      reserve_for_id(out, id);
+      out.assign("{\"id\":").append(id).append(",").append(report, 1, std::string::npos);
+      return;
+    }
     if (options.contact_only) {
       const std::string report = dump_json(contact_to_json(contact(*in.ellipsoid, *in.paraboloid)));
       reserve_for_id(out, id);
