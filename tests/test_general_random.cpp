@@ -17,6 +17,14 @@ using namespace relpos::testing;
 
 namespace {
 
+// Under AddressSanitizer (scripts/sanitize.sh) the same mix runs at a quarter of the size: the
+// instrumented exact arithmetic is several times slower.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kShare = 4;
+#else
+constexpr int kShare = 1;
+#endif
+
 const char* family_name(Family f) {
   return f == Family::General ? "general" : (f == Family::AxisAligned ? "axis-aligned" : "concentric");
 }
@@ -27,7 +35,7 @@ TEST_CASE("random general pairs: filter == exact on every pair, the oracle agree
   GeneralPairs gen(announced_seed("random general pairs", 36));
   std::map<std::string, int> positions, filtered, total;
   int checked_by_oracle = 0, certificates = 0;
-  for (int round = 0; round < 40; ++round)
+  for (int round = 0; round < 40 / kShare; ++round)
     for (Family f : {Family::General, Family::AxisAligned, Family::Concentric})
       for (QuadricType t : kAllQuadricTypes) {
         const RandomPair p = gen.pair(f, t);
@@ -54,8 +62,8 @@ TEST_CASE("random general pairs: filter == exact on every pair, the oracle agree
     // The filter settles general and axis-aligned pairs; a concentric pair's f shares the roots of D.
     if (name != "concentric") CHECK(filtered[name] >= n * 9 / 10);
   }
-  CHECK(checked_by_oracle == 20 * 3 * 11);
-  CHECK(certificates == 10 * 3 * 11);
+  CHECK(checked_by_oracle == (40 / kShare + 1) / 2 * 3 * 11);
+  CHECK(certificates == (40 / kShare + 3) / 4 * 3 * 11);
   // Every position of the random families occurs for the ellipsoid (O among concentric pairs).
   for (const char* p : {"E", "C", "I", "O"}) CHECK(positions[std::string("ellipsoid ") + p] > 0);
 }
@@ -64,6 +72,7 @@ TEST_CASE("nudged tangencies: the position their construction gives, down to 1e-
   std::mt19937_64 rng(announced_seed("nudged tangencies", 35));
   int n = 0;
   for (const Nudged& k : nudged_tangencies()) {
+    if (n++ % kShare != 0) continue;
     INFO(k.name);
     const AffineMap m = random_map(rng, false);
     const Quadric qe = Quadric::from_map(Quadric::from_matrix(k.e), m.l, m.t);
@@ -75,7 +84,6 @@ TEST_CASE("nudged tangencies: the position their construction gives, down to 1e-
     CHECK(verify_certificate(e, q, c.verdict.position, c.certificate).value_or("verified") == "verified");
     CHECK(to_string(oracle_position(e.matrix(), q.matrix(), q.type() == QuadricType::Ellipsoid).position) ==
           to_string(k.expected));
-    ++n;
   }
   CHECK(n == 264);
 }

@@ -5,6 +5,7 @@
 #include <gmp.h>
 #include <mpfr.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -328,6 +329,40 @@ Vector3 centre_of(const Matrix4& k) {
   return c;
 }
 
+/// A witness with short coordinates: x rounded to 2^-k units of its scale for k = 2, 4, 8, ..., the
+/// first that still passes the exact checks (a point deep inside the region needs few bits: (3/4, 0, 0)
+/// rather than the 53 bits of a double with its rounding noise), else x itself.
+Vector3 shortened(const Matrix4& km, const Matrix4& gm, const Vector3& x) {
+  long top = 0;
+  for (const Rational& v : x)
+    if (v != 0)
+      top = std::max(top, static_cast<long>(mpz_sizeinbase(mpq_numref(v.mpq()), 2)) -
+                              static_cast<long>(mpz_sizeinbase(mpq_denref(v.mpq()), 2)));
+  for (long k = 2; k <= 64; k *= 2) {
+    const long bits = k - top;  // fractional bits: 2^-k of the largest coordinate
+    Vector3 y;
+    for (std::size_t i = 0; i < 3; ++i) {
+      Rational scaled;  // fresh (written through mpq())
+      if (bits >= 0) {
+        mpq_mul_2exp(scaled.mpq(), x[i].mpq(), static_cast<mp_bitcnt_t>(bits));
+      } else {
+        mpq_div_2exp(scaled.mpq(), x[i].mpq(), static_cast<mp_bitcnt_t>(-bits));
+      }
+      Integer n;
+      mpz_fdiv_q(n.mpz(), (scaled + Rational(1, 2)).numerator().mpz(), (scaled + Rational(1, 2)).denominator().mpz());
+      Rational r(n);
+      if (bits >= 0) {
+        mpq_div_2exp(r.mpq(), r.mpq(), static_cast<mp_bitcnt_t>(bits));
+      } else {
+        mpq_mul_2exp(r.mpq(), r.mpq(), static_cast<mp_bitcnt_t>(-bits));
+      }
+      y[i] = r;
+    }
+    if (form_at(km, y) <= 0 && form_at(gm, y) < 0) return y;
+  }
+  return x;
+}
+
 /// The pull towards the centre: x = c + (1 - 2^-p)(y - c), rounded to the numeric type's rationals,
 /// for p along a geometric ladder up to the working precision; the first that passes exactly.
 template <class T>
@@ -347,7 +382,7 @@ std::optional<Vector3> pulled(const Matrix4& km, const Matrix4& gm, const Vector
       const T xi = from_rational<T>(c[i] + (Rational(1) - delta) * (yr[i] - c[i]));
       x[i] = to_rational(xi);
     }
-    if (form_at(km, x) <= 0 && form_at(gm, x) < 0) return x;
+    if (form_at(km, x) <= 0 && form_at(gm, x) < 0) return shortened(km, gm, x);
   }
   return std::nullopt;
 }
@@ -356,7 +391,7 @@ std::optional<Vector3> pulled(const Matrix4& km, const Matrix4& gm, const Vector
 
 Vector3 negative_point(const Matrix4& k, const Matrix4& g) {
   const Vector3 c = centre_of(k);
-  if (form_at(g, c) < 0) return c;
+  if (form_at(g, c) < 0) return shortened(k, g, c);
   for (const auto& y : minimisers<double>(k, g, 53))
     if (const auto x = pulled<double>(k, g, c, y, 53)) return *x;
   const mpfr_prec_t saved = working_precision;
