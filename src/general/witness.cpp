@@ -66,7 +66,6 @@ class Big {
   }
   friend bool operator<(const Big& a, const Big& b) { return mpfr_less_p(a.v_, b.v_) != 0; }
   friend bool operator>(const Big& a, const Big& b) { return mpfr_greater_p(a.v_, b.v_) != 0; }
-  friend bool operator<=(const Big& a, const Big& b) { return mpfr_lessequal_p(a.v_, b.v_) != 0; }
   friend bool operator!=(const Big& a, const Big& b) { return mpfr_lessgreater_p(a.v_, b.v_) != 0; }
   friend Big sqrt(const Big& a) {
     Big r;
