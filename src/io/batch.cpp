@@ -321,11 +321,13 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
       static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment", "quadric"};
       bool known = false;
       for (const std::string_view k : kKeys) {
-        if (key != k || (fixed && (key == "paraboloid" || key == "quadric"))) continue;
+        if (key != k) continue;
+        if (fixed && (k == "paraboloid" || k == "quadric")) break;  // not a key of a scene line
         known = true;
         for (std::size_t m = 0; m < count; ++m)
           if (members[m].key == k && duplicate.empty()) duplicate = key;
         if (count < 5) members[count++] = Member{k, value, taken};
+        break;
       }
       if (!known) {
         if (unknown.empty()) unknown = key.substr(0, 40);
@@ -376,13 +378,17 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
   read.doubles = options.numbers_as_doubles;
   read.max_elements = kMaxQuadricEntries;
   read.start_depth = 1;
-  Json ellipsoid, paraboloid, quadric;
+  // The second body's tree: the paraboloid's, or a general quadric's. The keys, not the trees, say
+  // which were given (a value may be null, and the fast reader leaves no tree).
+  Json ellipsoid, paraboloid;
+  bool has_paraboloid = false, has_quadric = false;
   for (std::size_t m = 0; m < count; ++m) {
     const Member& x = members[m];
+    has_paraboloid = has_paraboloid || x.key == "paraboloid";
+    has_quadric = has_quadric || x.key == "quadric";
     if ((x.key != "ellipsoid" && x.key != "paraboloid" && x.key != "quadric") || x.fast) continue;
     try {
-      (x.key == "ellipsoid" ? ellipsoid : (x.key == "paraboloid" ? paraboloid : quadric)) =
-          detail::parse_json(x.value, read);
+      (x.key == "ellipsoid" ? ellipsoid : paraboloid) = detail::parse_json(x.value, read);
     } catch (const detail::JsonSyntaxError&) {
       out.id = std::to_string(line_number);  // as for any line that is not JSON
       if (id) *id = out.id;
@@ -397,11 +403,10 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
                      (fixed ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
                             : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")"));
   if (!out.ellipsoid && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
-  if (!quadric.is_null()) {  // a general quadric in place of the paraboloid (src/io/general_io.hpp)
-    if (out.paraboloid || !paraboloid.is_null())
-      throw InputError("a line takes \"paraboloid\" or \"quadric\", not both");
+  if (has_quadric) {  // a general quadric in place of the paraboloid (src/io/general_io.hpp)
+    if (has_paraboloid) throw InputError("a line takes \"paraboloid\" or \"quadric\", not both");
     if (!out.ellipsoid) out.ellipsoid = ellipsoid_from_json(ellipsoid, "ellipsoid");
-    out.quadric = quadric_from_json(quadric, "quadric");
+    out.quadric = quadric_from_json(paraboloid, "quadric");
     const std::size_t bits = std::max(normalized_bits(out.ellipsoid->matrix()), normalized_bits(out.quadric->matrix()));
     if (bits > kMaxNormalizedBits)  // as check_normalized_pair_size words it (doc/cli.md, Limits)
       throw InputError(

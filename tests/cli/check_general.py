@@ -66,6 +66,36 @@ def main() -> int:
                            capture_output=True, text=True).stdout
         if json.loads(c)["position"] != "TI":
             failures.append("classify --quadric: " + c[:200])
+        # "paraboloid" and "quadric" on one line, in either order, whether the paraboloid is read by
+        # the fast reader (a matrix), by the general reader (an object) or is null: refused; a
+        # duplicate key keeps its own error. Under both number modes (the fast reader's two paths).
+        both = "a line takes \"paraboloid\" or \"quadric\", not both"
+        e = json.loads(lines[0])["ellipsoid"]
+        q = json.loads(lines[0])["quadric"]
+        p = [["1", "0", "0", "0"], ["0", "1", "0", "0"], ["0", "0", "0", "-1/2"], ["0", "0", "-1/2", "5"]]
+        mixed = [
+            ([("paraboloid", p), ("quadric", q)], both),
+            ([("quadric", q), ("paraboloid", p)], both),
+            ([("paraboloid", {"matrix": p}), ("quadric", q)], both),
+            ([("quadric", q), ("paraboloid", {"matrix": p})], both),
+            ([("paraboloid", None), ("quadric", q)], both),
+            ([("quadric", q), ("paraboloid", None)], both),
+            ([("quadric", q), ("quadric", q)], "duplicate key \"quadric\""),
+            ([("paraboloid", p), ("quadric", q), ("paraboloid", p)], "duplicate key \"paraboloid\""),
+        ]
+        text = ""
+        for n, (members, _) in enumerate(mixed, 1):
+            body = ",".join(f'"{k}":{json.dumps(v)}' for k, v in members)
+            text += f'{{"id":{n},"ellipsoid":{json.dumps(e)},{body}}}\n'
+        bad = Path(tmp) / "mixed.jsonl"
+        bad.write_text(text)
+        for numbers in ("exact", "double"):
+            out = subprocess.run([relpos, "batch", str(bad), "--numbers", numbers], capture_output=True,
+                                 text=True).stdout.splitlines()
+            got = [json.loads(a).get("error") for a in out]
+            want = [m for _, m in mixed]
+            if got != want:
+                failures.append(f"paraboloid and quadric (--numbers {numbers}): {got}, expected {want}")
     for f in failures[:40]:
         print(f)
     print(f"{len(lines)} general lines, {len(failures)} failures")
