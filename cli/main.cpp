@@ -27,8 +27,10 @@
 
 #include "commands.hpp"
 #include "common.hpp"
+#include "io/answer_json.hpp"
 #include "io/batch.hpp"
 #include "io/general_io.hpp"
+#include "io/json_tree.hpp"
 #include "options.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
@@ -38,7 +40,7 @@
 
 namespace relpos_cli {
 
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 constexpr const char* kExitCodes =
     "Exit codes:\n"
@@ -152,7 +154,7 @@ namespace {
 /// --digits N of classify and batch.
 int parse_digits(const std::string& text) { return static_cast<int>(parse_count(text, "--digits", 1, 1000)); }
 
-void write_json_line(const Json& j) { std::cout << relpos::io::dump_json(j) << '\n'; }
+void write_json_line(const Json& j) { std::cout << relpos::io::detail::dump_json(j) << '\n'; }
 
 /// `relpos classify --quadric Q`: an ellipsoid against a general quadric (doc/quadrics.md).
 int run_classify_general(const ShapeOptions& shapes, const std::string& quadric, int digits, bool json,
@@ -167,9 +169,8 @@ int run_classify_general(const ShapeOptions& shapes, const std::string& quadric,
     const relpos::Quadric q = relpos::io::quadric_from_json(parse_inline(quadric, "quadric"), "quadric");
     if (contact_only) {
       const relpos::QuadricVerdict v = relpos::decide_position(e, q);
-      const Json j = relpos::io::general_answer_json(v, nullptr, digits);
       if (json)
-        write_json_line(j);
+        std::cout << relpos::io::detail::answer_text(256, v) << '\n';
       else
         std::cout << "contact: " << relpos::to_string(relpos::contact_of(v.position)) << " (position "
                   << relpos::to_string(v.position) << "; " << relpos::describe(v.rule) << "; decided by "
@@ -178,7 +179,7 @@ int run_classify_general(const ShapeOptions& shapes, const std::string& quadric,
     }
     const relpos::QuadricClassification c = relpos::classify(e, q);
     if (json)
-      write_json_line(relpos::io::general_answer_json(c.verdict, &c, digits));
+      std::cout << relpos::io::detail::answer_text(2048, c, digits) << '\n';
     else
       std::cout << relpos::io::general_answer_text(c, digits);
     return finish_cout();
@@ -221,13 +222,12 @@ int run_classify(Args& args) {
     const std::optional<relpos::Ellipsoid> e = shapes.make_ellipsoid();
     const std::optional<relpos::Paraboloid> p = shapes.make_paraboloid();
     if (contact_only) {
-      const Json j = relpos::io::contact_to_json(relpos::contact(*e, *p));
+      const relpos::ContactAnswer a = relpos::contact(*e, *p);
       if (json)
-        write_json_line(j);
+        std::cout << relpos::io::contact_json_text(a) << '\n';
       else
-        std::cout << "contact: " << j["contact"].get<std::string>() << " (position " << j["position"].get<std::string>()
-                  << "; " << j["rule"].get<std::string>() << "; decided by " << j["decided_by"].get<std::string>()
-                  << ")\n"
+        std::cout << "contact: " << relpos::to_string(a.contact) << " (position " << relpos::to_string(a.position)
+                  << "; " << relpos::describe(a.rule) << "; decided by " << relpos::decided_by(a.stage) << ")\n"
                   << std::flush;
       return std::cout ? kExitOk : kExitIo;
     }

@@ -1,16 +1,19 @@
 // JSON in and out for the general quadrics (src/io/general_io.hpp; doc/cli.md, "General quadrics").
 #include "io/general_io.hpp"
 
+#include <array>
 #include <initializer_list>
 #include <sstream>
 #include <string>
 
+#include "io/json_values.hpp"
 #include "relpos/error.hpp"
+#include "relpos/io.hpp"
 
 namespace relpos::io {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using detail::Json;
 
 [[noreturn]] void fail(const std::string& path, const std::string& message) { throw InputError(path + ": " + message); }
 
@@ -34,7 +37,7 @@ const Json& required(const Json& v, const char* key, const std::string& path) {
   return v[key];
 }
 
-Rational number(const Json& v, const std::string& path) { return rational_from_json(v, path); }
+Rational number(const Json& v, const std::string& path) { return detail::rational_from_json(v, path); }
 
 template <std::size_t N>
 std::array<Rational, N> numbers(const Json& v, const std::string& path) {
@@ -301,31 +304,6 @@ QuadricCertificate quadric_certificate_from_json(const Json& j) {
   return c;
 }
 
-Json general_answer_json(const QuadricVerdict& v, const QuadricClassification* full, int digits) {
-  Json j{{"position", to_string(v.position)},
-         {"contact", to_string(contact_of(v.position))},
-         {"quadric_type", to_string(v.type)},
-         {"rule", describe(v.rule)},
-         {"stage", to_string(v.stage)}};
-  if (!full) return j;
-  Json f = Json::array(), d = Json::array(), roots = Json::array();
-  for (const Rational& x : full->f) f.push_back(to_string(x));
-  for (const Rational& x : full->d) d.push_back(to_string(x));
-  for (const PencilRoot& r : full->roots) {
-    Json root{{"approx", to_decimal((r.lower + r.upper) / 2, digits)},
-              {"interval", Json::array({to_string(r.lower), to_string(r.upper)})},
-              {"multiplicity_f", r.multiplicity_f},
-              {"multiplicity_d", r.multiplicity_d}};
-    if (r.exact) root["exact"] = to_string(*r.exact);
-    roots.push_back(root);
-  }
-  j["f"] = f;
-  j["d"] = d;
-  j["roots"] = roots;
-  j["certificate"] = quadric_certificate_to_json(full->certificate, digits);
-  return j;
-}
-
 std::string general_answer_text(const QuadricClassification& c, int digits) {
   std::ostringstream os;
   const QuadricVerdict& v = c.verdict;
@@ -340,7 +318,7 @@ std::string general_answer_text(const QuadricClassification& c, int digits) {
   for (const PencilRoot& r : c.roots)
     os << "  " << (r.exact ? to_string(*r.exact) : to_decimal((r.lower + r.upper) / 2, digits))
        << "  (multiplicity in f " << r.multiplicity_f << ", in D " << r.multiplicity_d << ")\n";
-  os << "certificate: " << dump_json(quadric_certificate_to_json(c.certificate, digits)) << "\n";
+  os << "certificate: " << detail::dump_json(quadric_certificate_to_json(c.certificate, digits)) << "\n";
   return os.str();
 }
 
