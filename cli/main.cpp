@@ -29,6 +29,7 @@
 #include "common.hpp"
 #include "io/answer_json.hpp"
 #include "io/batch.hpp"
+#include "io/general_io.hpp"
 #include "io/json_tree.hpp"
 #include "options.hpp"
 #include "relpos/classify.hpp"
@@ -99,6 +100,11 @@ void print_classify_help(std::ostream& os) {
         "                             {\"coefficients\": [A..J]}, {\"vertex\": [..], \"a\": a, \"b\": b,\n"
         "                             \"rotation\": [w,x,y,z]} (x'^2/a^2 + y'^2/b^2 = z'),\n"
         "                             {\"map\": 3x3, \"translation\": [..]} (image of z = x^2 + y^2)\n"
+        "  --quadric Q                any real quadric in place of the paraboloid (doc/quadrics.md): a 4x4\n"
+        "                             matrix, {\"coefficients\": [A..J]} or {\"type\": T, ...}, T one of sphere,\n"
+        "                             ellipsoid, hyperboloid of one sheet, hyperboloid of two sheets, elliptic\n"
+        "                             cone, elliptic paraboloid, hyperbolic paraboloid, elliptic cylinder,\n"
+        "                             hyperbolic cylinder, parabolic cylinder, slab, half-space (doc/cli.md)\n"
         "  --sphere X,Y,Z,R           shorthand: sphere with centre (X,Y,Z) and radius R\n"
         "  --standard-paraboloid A,B  shorthand: x^2/A^2 + y^2/B^2 = z (vertex at the origin, axis z)\n"
         "  --digits N                 significant digits of the approximations (default 12, 1..1000)\n"
@@ -126,7 +132,8 @@ void print_batch_help(std::ostream& os) {
         "\n"
         "Read JSON Lines from FILE (or standard input when FILE is '-' or absent), one pair per line:\n"
         "  {\"id\": ANY, \"ellipsoid\": Q, \"paraboloid\": Q, \"comment\": ANY}\n"
-        "(Q as for `relpos classify --help`; \"id\" and \"comment\" are optional). Write JSON Lines to\n"
+        "(Q as for `relpos classify --help`; \"id\" and \"comment\" are optional; \"quadric\": Q in place of\n"
+        "\"paraboloid\" for any real quadric, doc/quadrics.md). Write JSON Lines to\n"
         "standard output: exactly one line per input line, in input order; the output is flushed whenever\n"
         "the input has nothing more ready (so interactive use is answered line by line):\n"
         "  {\"id\": ..., \"position\": \"I|TI|C|TE|E\", \"small\": ..., \"contact\": ...,\n"
@@ -182,6 +189,40 @@ std::string with_margin(std::string answer, const std::optional<relpos::Margin>&
   return answer;
 }
 
+/// `relpos classify --quadric Q`: an ellipsoid against a general quadric (doc/quadrics.md).
+int run_classify_general(const ShapeOptions& shapes, const std::string& quadric, int digits, bool json,
+                         bool contact_only) {
+  if (shapes.paraboloid || shapes.standard)
+    throw UsageError{"give either --quadric or a paraboloid (--paraboloid, --standard-paraboloid), not both"};
+  if (!shapes.ellipsoid && !shapes.sphere)
+    throw UsageError{"missing the ellipsoid (--ellipsoid Q or --sphere X,Y,Z,R)"};
+  if (shapes.ellipsoid && shapes.sphere) throw UsageError{"give either --ellipsoid or --sphere, not both"};
+  try {
+    const relpos::Ellipsoid e = shapes.make_ellipsoid();
+    const relpos::Quadric q = relpos::io::quadric_from_json(parse_inline(quadric, "quadric"), "quadric");
+    if (contact_only) {
+      const relpos::QuadricVerdict v = relpos::decide_position(e, q);
+      if (json)
+        std::cout << relpos::io::detail::answer_text(256, v) << '\n';
+      else
+        std::cout << "contact: " << relpos::to_string(relpos::contact_of(v.position)) << " (position "
+                  << relpos::to_string(v.position) << "; " << relpos::describe(v.rule) << "; decided by "
+                  << relpos::to_string(v.stage) << ")\n";
+      return finish_cout();
+    }
+    const relpos::QuadricClassification c = relpos::classify(e, q);
+    if (json)
+      std::cout << relpos::io::detail::answer_text(2048, c, digits) << '\n';
+    else
+      std::cout << relpos::io::general_answer_text(c, digits);
+    return finish_cout();
+  } catch (const relpos::InputError& err) {
+    if (json) write_json_line(Json{{"error", err.what()}});
+    std::cerr << "relpos: " << err.what() << "\n";
+    return finish_cout() == kExitOk ? kExitInput : kExitIo;
+  }
+}
+
 // ------------------------------------------------------------------------------------------------
 
 }  // namespace
@@ -190,6 +231,7 @@ int run_classify(Args& args) {
   ShapeOptions shapes;
   int digits = 12, margin_bits = 0;
   bool json = false, contact_only = false;
+  std::optional<std::string> quadric;
   while (!args.done()) {
     if (args.help()) {
       print_classify_help(std::cout);
@@ -198,9 +240,16 @@ int run_classify(Args& args) {
     std::string v;
     if (shapes.take(args) || args.flag("--json", json) || args.flag("--contact-only", contact_only)) continue;
     if (take_margin(args, margin_bits)) continue;
+    if (args.value("--quadric", v)) {
+      quadric = v;
+      continue;
+    }
     if (!args.value("--digits", v)) args.unexpected();
     digits = parse_digits(v);
   }
+  if (quadric && margin_bits > 0)
+    throw UsageError{"--margin: the margin s* is defined for an ellipsoid and an elliptic paraboloid only"};
+  if (quadric) return run_classify_general(shapes, *quadric, digits, json, contact_only);
   shapes.check(/*need_ellipsoid=*/true);
 
   relpos::io::RenderOptions options;

@@ -24,6 +24,7 @@
 #include "common.hpp"
 #include "io/batch.hpp"
 #include "io/certificate_json.hpp"
+#include "io/general_io.hpp"
 #include "io/json_tree.hpp"
 #include "io/margin_json.hpp"
 #include "relpos/classify.hpp"
@@ -74,6 +75,7 @@ bool blank(const std::string& line) { return line.find_first_not_of(" \t\r") == 
 struct InputPair {
   std::optional<relpos::Ellipsoid> e;
   std::optional<relpos::Paraboloid> p;
+  std::optional<relpos::Quadric> q;  // a general quadric in place of the paraboloid (doc/quadrics.md)
   Json id;
   std::string error;  // why the line is not a valid pair (empty if it is)
 };
@@ -89,6 +91,7 @@ InputPair read_input(const std::string& line, long number, bool doubles) {
     relpos::io::read_batch_line(line, number, options, nullptr, read);
     in.e = std::move(read.ellipsoid);
     in.p = std::move(read.paraboloid);
+    in.q = std::move(read.quadric);
   } catch (const std::exception& err) {
     in.error = err.what();
   }
@@ -214,6 +217,25 @@ int run_verify(Args& args) {
       continue;
     }
     const std::string position_text = answer["position"].get<std::string>();
+    if (in.q) {  // a general pair: its positions and certificates (src/io/general_io.hpp)
+      const std::optional<relpos::QuadricPosition> qp = relpos::io::quadric_position_from_text(position_text);
+      if (!qp) {
+        fail(number, "position \"" + clip(position_text) + "\" is not one of I, TI, C, TE, E, O, TO, EQ");
+      } else if (!answer.contains("certificate")) {
+        fail(number, "the answer has no \"certificate\"");
+      } else {
+        try {
+          const relpos::QuadricCertificate c = relpos::io::quadric_certificate_from_json(answer["certificate"]);
+          if (auto reason = relpos::verify_certificate(*in.e, *in.q, *qp, c))
+            fail(number, position_text + ": " + clip(*reason));
+          else
+            ++verified;
+        } catch (const std::exception& err) {
+          fail(number, position_text + ": " + clip(err.what()));
+        }
+      }
+      continue;
+    }
     const std::optional<relpos::Position> position = position_from_text(position_text);
     if (!position) {
       fail(number, "position \"" + clip(position_text) + "\" is not one of I, TI, C, TE, E");

@@ -1,4 +1,4 @@
-// The margin s* (math.md §14; include/relpos/margin.hpp): spheres whose s* = (distance from the
+// The margin s* (math.md §19; include/relpos/margin.hpp): spheres whose s* = (distance from the
 // centre to the paraboloid) / r is known in closed form, rational and irrational, inside and outside
 // the cup, on standard, rotated and translated paraboloids; an independent numerical distance for
 // spheres placed at random; centres on the surface; the hard case; the any-size corpus (s* against 1

@@ -1,4 +1,4 @@
-// The margin of a pair (math.md §14): how far an answer is from changing. s* is the factor by which
+// The margin of a pair (math.md §19): how far an answer is from changing. s* is the factor by which
 // the ellipsoid, scaled about its centre, first touches the paraboloid (the ellipsoidal distance from
 // the centre to the surface): s* > 1 for I and E, s* = 1 for TI and TE, s* < 1 for C, and s* = 0 when
 // the centre lies on the paraboloid. The scaled ellipsoids are nested, so for a centre inside the cup
@@ -57,12 +57,12 @@ Margin margin(const Ellipsoid& e, const Paraboloid& p, int bits = kDefaultMargin
 /// Checks a margin with exact arithmetic: nullopt when it proves s* for the pair, otherwise the
 /// reason. The certificates go to verify_certificate() with the pair scaled by lo, hi or s*; the
 /// polynomial must be irreducible, change sign on (lo, hi) with exactly one root there (Descartes'
-/// rule), and divide the pair's margin polynomial (math.md §14), whose other factors have no root in
+/// rule), and divide the pair's margin polynomial (math.md §19), whose other factors have no root in
 /// (lo, hi); approx must lie within one unit in the last place of [lo, hi].
 std::optional<std::string> verify_margin(const Ellipsoid& e, const Paraboloid& p, const Margin& m);
 
 /// The ellipsoid scaled by `factor` > 0 about its centre (InputError otherwise): the matrix with
-/// the corner entry e0 + k (1 - factor^2), k = -e(centre) (math.md §14).
+/// the corner entry e0 + k (1 - factor^2), k = -e(centre) (math.md §19).
 Ellipsoid scaled_about_centre(const Ellipsoid& e, const Rational& factor);
 
 }  // namespace relpos

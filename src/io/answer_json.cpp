@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "io/certificate_json.hpp"
+#include "io/general_io.hpp"
 #include "io/margin_json.hpp"
 #include "io/root_decimals.hpp"
 
@@ -162,6 +163,61 @@ void append_margin_member(const Margin& m, int digits, std::string& out) {
   JsonWriter w(out);
   w.member("margin");
   append_margin(m, digits, w);
+  w.raw('}');
+}
+
+namespace {
+
+/// The members of a general answer before its closing brace (the minimal answer is these alone).
+void append_general_head(const QuadricVerdict& v, JsonWriter& w) {
+  w.member("position");
+  w.string(to_string(v.position));
+  w.member("contact");
+  w.string(to_string(contact_of(v.position)));
+  w.member("quadric_type");
+  w.string(to_string(v.type));
+  w.member("rule");
+  w.string(describe(v.rule));
+  w.member("stage");
+  w.string(to_string(v.stage));
+}
+
+}  // namespace
+
+void append_members(const QuadricVerdict& v, JsonWriter& w) {
+  append_general_head(v, w);
+  w.raw('}');
+}
+
+void append_members(const QuadricClassification& c, int digits, JsonWriter& w) {
+  append_general_head(c.verdict, w);
+  w.member("f");
+  w.rationals(c.f.data(), c.f.size());
+  w.member("d");
+  w.rationals(c.d.data(), c.d.size());
+  w.member("roots");
+  w.raw('[');
+  for (std::size_t i = 0; i < c.roots.size(); ++i) {
+    const PencilRoot& r = c.roots[i];
+    w.raw(i == 0 ? "{" : ",{");
+    w.key("approx");
+    w.string(to_decimal((r.lower + r.upper) / 2, digits));
+    w.member("interval");
+    const Rational ends[2] = {r.lower, r.upper};
+    w.rationals(ends, 2);
+    w.member("multiplicity_f");
+    w.integer(r.multiplicity_f);
+    w.member("multiplicity_d");
+    w.integer(r.multiplicity_d);
+    if (r.exact) {
+      w.member("exact");
+      w.rational(*r.exact);
+    }
+    w.raw('}');
+  }
+  w.raw(']');
+  w.member("certificate");  // its tree, shared with the text report and read back by relpos verify
+  w.raw(dump_json(quadric_certificate_to_json(c.certificate, digits)));
   w.raw('}');
 }
 

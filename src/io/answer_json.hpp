@@ -14,6 +14,7 @@
 #include "io/json_write.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
+#include "relpos/general_classify.hpp"
 #include "relpos/io.hpp"
 #include "relpos/margin.hpp"
 
@@ -27,6 +28,12 @@ void append_members(const Verdict& v, JsonWriter& w);
 void append_members(const Classification& c, const RenderOptions& options, JsonWriter& w);
 /// The contact-only answer (doc/contact.md): contact, position, rule, decided_by.
 void append_members(const ContactAnswer& a, JsonWriter& w);
+/// A general pair's answer (doc/cli.md, "General quadrics"): position, contact, quadric_type, rule,
+/// stage (the minimal answer, and the one of --contact-only).
+void append_members(const QuadricVerdict& v, JsonWriter& w);
+/// A general pair's full answer: the minimal members, then the exact f and d, the real roots
+/// (decimals with `digits` digits, intervals, multiplicities) and the certificate.
+void append_members(const QuadricClassification& c, int digits, JsonWriter& w);
 
 /// The margin (`--margin`; doc/certificates.md, "Margins") as the answer's last member, ,"margin":{...},
 /// written over the closing brace of the level's members just appended to `out`: any level may end

@@ -9,10 +9,12 @@
 // which words every error.
 #include "io/batch.hpp"
 
+#include <algorithm>
 #include <string>
 #include <string_view>
 
 #include "io/fast_quadric.hpp"
+#include "io/general_io.hpp"
 #include "io/json_lexer.hpp"
 #include "io/json_tree.hpp"
 #include "io/quadric_json.hpp"
@@ -60,6 +62,7 @@ class LineReader {
     validate_members();
     take_text("id", out_.id, id_);
     take_text("meta", out_.meta, meta_);
+    // The second body's tree: the paraboloid's, or a general quadric's (read into the same tree).
     Json ellipsoid, paraboloid;
     general_quadrics(ellipsoid, paraboloid);
     if (!duplicate_.empty()) throw InputError("duplicate key \"" + duplicate_ + "\"");
@@ -68,6 +71,7 @@ class LineReader {
                        (fixed_ ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
                                : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")"));
     if (!out_.ellipsoid && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
+    if (given("quadric")) return read_quadric(ellipsoid, paraboloid);
     if (!fixed_ && !out_.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
     if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
     if (!fixed_ && !out_.paraboloid) out_.paraboloid = detail::paraboloid_from_tree(paraboloid, "paraboloid");
@@ -75,6 +79,29 @@ class LineReader {
   }
 
  private:
+  /// Whether the line has a member with this key. The keys, not the trees, say which bodies were
+  /// given: a value may be null, and the fast reader leaves no tree.
+  bool given(std::string_view key) const {
+    for (std::size_t m = 0; m < count_; ++m)
+      if (members_[m].key == key) return true;
+    return false;
+  }
+
+  /// A general quadric in place of the paraboloid (src/io/general_io.hpp; doc/cli.md, "General
+  /// quadrics"), its tree in `second`; the size limit as check_normalized_pair_size words it.
+  void read_quadric(const Json& ellipsoid, const Json& second) {
+    if (given("paraboloid")) throw InputError("a line takes \"paraboloid\" or \"quadric\", not both");
+    if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
+    out_.quadric = quadric_from_json(second, "quadric");
+    const std::size_t bits =
+        std::max(normalized_bits(out_.ellipsoid->matrix()), normalized_bits(out_.quadric->matrix()));
+    if (bits > kMaxNormalizedBits)  // doc/cli.md, Limits
+      throw InputError(
+          "numbers too large: a matrix of the pair, divided by its own content (its primitive integer form), has " +
+          std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxNormalizedBits) +
+          " bits (kMaxNormalizedBits, doc/cli.md, Limits)");
+  }
+
   void set_id(std::string_view text) {
     if (id_) *id_ = text;
   }
@@ -142,14 +169,16 @@ class LineReader {
 
   /// A known member kept (a second one of a key noted), an unknown one noted and validated.
   void keep(std::string_view key, std::string_view value, bool taken) {
-    static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment", "meta"};
+    static constexpr std::string_view kKeys[] = {"id", "ellipsoid", "paraboloid", "comment", "meta", "quadric"};
     bool known = false;
     for (const std::string_view k : kKeys) {
-      if (key != k || (fixed_ && key == "paraboloid")) continue;
+      if (key != k) continue;
+      if (fixed_ && (k == "paraboloid" || k == "quadric")) break;  // not a key of a scene line
       known = true;
       for (std::size_t m = 0; m < count_; ++m)
         if (members_[m].key == k && duplicate_.empty()) duplicate_ = key;
       if (count_ < kMembers) members_[count_++] = Member{k, value, taken};
+      break;
     }
     if (known) return;
     if (unknown_.empty()) unknown_ = key.substr(0, 40);
@@ -163,7 +192,7 @@ class LineReader {
   /// The id, the comment and the meta: valid JSON, not stored (the id and the meta are kept as their text).
   void validate_members() {
     for (std::size_t m = 0; m < count_; ++m) {
-      if (members_[m].key == "ellipsoid" || members_[m].key == "paraboloid") continue;
+      if (members_[m].key == "ellipsoid" || members_[m].key == "paraboloid" || members_[m].key == "quadric") continue;
       if (detail::plainly_valid(members_[m].value)) continue;
       try {
         detail::validate_json(members_[m].value, 1);
@@ -198,7 +227,7 @@ class LineReader {
     read.start_depth = 1;
     for (std::size_t m = 0; m < count_; ++m) {
       const Member& x = members_[m];
-      if ((x.key != "ellipsoid" && x.key != "paraboloid") || x.fast) continue;
+      if ((x.key != "ellipsoid" && x.key != "paraboloid" && x.key != "quadric") || x.fast) continue;
       try {
         (x.key == "ellipsoid" ? ellipsoid : paraboloid) = detail::parse_json(x.value, read);
       } catch (const detail::JsonSyntaxError&) {
@@ -218,7 +247,7 @@ class LineReader {
   BatchLine& out_;
   std::string_view* id_;
   std::string_view* meta_;
-  static constexpr std::size_t kMembers = 5;  // one of each known key
+  static constexpr std::size_t kMembers = 6;  // one of each known key
   Member members_[kMembers];
   std::size_t count_ = 0;
   std::string unknown_, duplicate_, key_storage_;
@@ -250,6 +279,7 @@ void read_batch_line(std::string_view line, long line_number, const BatchOptions
   if (meta) *meta = std::string_view();
   out.ellipsoid.reset();  // the fast reader makes the quadrics here as the line is scanned
   out.paraboloid.reset();
+  out.quadric.reset();
   const std::string_view normalized = normalize_line(line, line_number, options.max_line_bytes);
   LineReader(normalized, line_number, options, fixed, out, id, meta).read();
 }

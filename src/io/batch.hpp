@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "relpos/general_quadric.hpp"
 #include "relpos/io.hpp"
 #include "relpos/quadric.hpp"
 
@@ -19,6 +20,7 @@ struct BatchLine {
   std::string meta;  ///< the "meta" member's JSON text exactly as in the input, or empty (doc/cli.md)
   std::optional<Ellipsoid> ellipsoid;
   std::optional<Paraboloid> paraboloid;
+  std::optional<Quadric> quadric;  ///< a general quadric in place of the paraboloid (doc/quadrics.md)
 };
 
 /// "line too long: more than N bytes (--max-line-bytes)", the refusal of a line beyond the limit.

@@ -13,6 +13,7 @@
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
+#include "relpos/general_classify.hpp"
 #include "relpos/io.hpp"
 #include "relpos/margin.hpp"
 
@@ -22,6 +23,15 @@ namespace {
 /// The answer of a line read, at the evidence level of the options, ending with its margin when the
 /// options ask for it (computed first, like the answer, before the id is written).
 void answer(const BatchLine& in, std::string_view id, const BatchOptions& options, std::string& out) {
+  if (in.quadric) {  // a general quadric (doc/cli.md, "General quadrics"): --contact-only gets the verdict
+    if (options.margin_bits > 0)
+      throw InputError("--margin: the margin s* is defined for an ellipsoid and an elliptic paraboloid only");
+    if (options.evidence == Evidence::Full && !options.contact_only)
+      detail::write_answer(id, out, classify(*in.ellipsoid, *in.quadric), options.render.digits);
+    else
+      detail::write_answer(id, out, decide_position(*in.ellipsoid, *in.quadric));
+    return;
+  }
   const std::optional<Margin> m =
       options.margin_bits > 0 ? std::optional<Margin>(margin(*in.ellipsoid, *in.paraboloid, options.margin_bits))
                               : std::nullopt;

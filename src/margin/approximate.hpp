@@ -1,5 +1,5 @@
 // Approximate real roots of an integer polynomial in long double (Durand-Kerner, then Newton on the
-// real ones): proposals only (math.md §14). Every use checks what a proposal leads to with exact
+// real ones): proposals only (math.md §19). Every use checks what a proposal leads to with exact
 // signs; a poor proposal costs time, never correctness.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Real roots of an integer polynomial on a rational interval, by Descartes' rule of signs after the
-// Moebius map x -> (a + b x) / (1 + x) that sends (0, oo) onto (a, b) (math.md §14): the number of
+// Moebius map x -> (a + b x) / (1 + x) that sends (0, oo) onto (a, b) (math.md §19): the number of
 // sign variations V of (1 + x)^n p((a + b x) / (1 + x)) bounds the number of roots of p in the open
 // interval (a, b) and has its parity, so V = 0 proves there is none and V = 1 that there is exactly
 // one (Vincent's theorem: for a square-free p, narrow enough intervals always give 0 or 1).

@@ -1,4 +1,4 @@
-// The ellipsoid scaled about its centre (math.md §14). With centre c = -M^-1 m and level
+// The ellipsoid scaled about its centre (math.md §19). With centre c = -M^-1 m and level
 // k = -e(c) > 0 the solid ellipsoid is {x : (x - c)^T M (x - c) <= k}; scaled by q > 0 about c it is
 // {x : (x - c)^T M (x - c) <= q^2 k}. Its matrix differs from E in the corner entry only:
 //   E_q = E0 - q^2 k e4 e4^T,   E0 = E + k e4 e4^T   (the "point ellipsoid" at c: det E0 = 0),

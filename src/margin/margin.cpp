@@ -1,4 +1,4 @@
-// margin(): s* and its proof (math.md §14). The positive roots of the margin polynomial in u = t^2
+// margin(): s* and its proof (math.md §19). The positive roots of the margin polynomial in u = t^2
 // are the candidates for s*^2; the nested family's positions at rational separators pick s*^2 among
 // them (no contact below s*, contact above); s* itself is then isolated by its minimal polynomial,
 // and the enclosure's ends get the certificates of the positions the nested family has there.
@@ -139,7 +139,7 @@ std::size_t find_s_star(const std::vector<Candidate>& c, const detail::ScaledFam
 /// irreducible factor of q(t^2) that vanishes at s*) and an interval of it isolating s*.
 std::pair<std::vector<Integer>, RootInterval> square_root_of(const std::vector<Integer>& q, RootInterval u) {
   // q is irreducible; q(t^2) is then irreducible too unless q(t^2) = +-m(t) m(-t) (Capelli), which
-  // needs |lc q| = lc(m)^2 and |q(0)| = m(0)^2 to be squares (math.md §14): usually they are not.
+  // needs |lc q| = lc(m)^2 and |q(0)| = m(0)^2 to be squares (math.md §19): usually they are not.
   const std::vector<Integer> h = detail::in_square(q);
   const bool squares = mpz_perfect_square_p(q.back().mpz()) && mpz_perfect_square_p(Integer(CGAL::abs(q[0])).mpz());
   const std::vector<std::vector<Integer>> factors = squares ? factors_of(h) : std::vector<std::vector<Integer>>{h};

@@ -1,4 +1,4 @@
-// The multiplier of a margin's lower certificate (math.md §14): a rational lambda with lambda P + E_lo
+// The multiplier of a margin's lower certificate (math.md §19): a rational lambda with lambda P + E_lo
 // positive definite, found where r = f0 / s attains s*^2 k. Below s* the pair scaled by lo is I or E,
 // and f_lo = f0 - lo^2 k s = s (r - lo^2 k) is positive near the critical point of r whose value is
 // s*^2 k > lo^2 k, which is the optimal dual multiplier of the tangency at s*. So rationals converging

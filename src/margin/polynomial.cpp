@@ -204,7 +204,7 @@ std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
     ok = fmpz_mpoly_discriminant(D, H, 0, ctx) != 0;
   }
   if (ok && fmpz_poly_degree(g) >= 1) {
-    // The hard case's values: sigma at the roots of g (math.md §14), from the square-free part of g.
+    // The hard case's values: sigma at the roots of g (math.md §19), from the square-free part of g.
     fmpz_poly_derivative(dg, g);
     fmpz_poly_gcd(gs, g, dg);
     ok = fmpz_poly_divides(gs, g, gs) != 0;
@@ -240,7 +240,7 @@ std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
   fmpz_poly_clear(g);
   fmpz_poly_clear(gs);
   fmpz_poly_clear(dg);
-  // Never zero (math.md §14: F and S are coprime and F / S is not constant).
+  // Never zero (math.md §19: F and S are coprime and F / S is not constant).
   if (out.empty()) throw std::logic_error("internal error: margin_polynomial: no polynomial (a zero discriminant)");
   return out;
 }

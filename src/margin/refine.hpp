@@ -1,5 +1,5 @@
 // Narrowing an isolating interval of a simple real root to a relative width 2^-bits: Newton's method
-// in MPFR proposes, exact signs decide (math.md §14). The numerics never decide anything: a proposal
+// in MPFR proposes, exact signs decide (math.md §19). The numerics never decide anything: a proposal
 // becomes the interval only when the polynomial's exact signs at its two rational ends differ, and
 // a failed proposal falls back to bisection.
 #pragma once

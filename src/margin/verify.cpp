@@ -1,4 +1,4 @@
-// verify_margin(): a margin checked with exact arithmetic (math.md §14, doc/certificates.md,
+// verify_margin(): a margin checked with exact arithmetic (math.md §19, doc/certificates.md,
 // "Margins"). The enclosure is proven by the certificates of the scaled pairs (verify_certificate,
 // which shares no code with the classifier); that s* is the claimed polynomial's root there follows
 // from the margin polynomial, of which s* is a root, having no other root in the enclosure.
@@ -115,7 +115,7 @@ std::optional<std::string> verify_margin(const Ellipsoid& e, const Paraboloid& p
             family, pm, m.hi, m.above, "above", [](Position q) { return q == Position::C; }, "C"))
       return reason;
   }
-  // s* is a root of the margin polynomial (math.md §14) and lies in the enclosure: when the claimed
+  // s* is a root of the margin polynomial (math.md §19) and lies in the enclosure: when the claimed
   // polynomial divides it and the rest of it has no root there, s* is the claimed polynomial's root.
   const std::vector<Integer> pi = detail::in_square(detail::margin_polynomial(detail::point_pencil(family, pm)));
   if (rational) {

@@ -1,0 +1,38 @@
+// JSON in and out for the general quadrics (doc/cli.md, "General quadrics"; math.md §14–§18): the
+// "quadric" of a batch line or of `relpos classify --quadric` (from an exact tree, json_tree.hpp),
+// the text report, and the certificates' JSON form, read back by `relpos verify`. The JSON answers
+// are written by the one answer writer (answer_json.hpp).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "io/json_tree.hpp"
+#include "relpos/general_classify.hpp"
+
+namespace relpos::io {
+
+/// A general quadric from a tree of detail::parse_json: a 4x4 array, {"matrix"}, {"coefficients"},
+/// or a geometric form {"type": NAME, ...} with NAME one of to_string(QuadricType) or "sphere":
+///   sphere {"center", "radius"}; ellipsoid and the hyperboloids {"center", "axes", "rotation"?};
+///   "elliptic cone" {"apex", "a", "b", "rotation"?}; the paraboloids {"vertex", "a", "b", "rotation"?};
+///   the elliptic and hyperbolic cylinders {"center", "a", "b", "rotation"?}; "parabolic cylinder"
+///   {"vertex", "a", "rotation"?}; "half-space" {"normal", "offset"}; "slab" {"normal", "low", "high"}.
+/// InputError "<role>: ..." naming the field, or what the matrix is when it is refused.
+Quadric quadric_from_json(const detail::Json& value, const std::string& role = "quadric");
+
+/// The same pair as a multi-line report (relpos classify --quadric).
+std::string general_answer_text(const QuadricClassification& c, int digits);
+
+/// The JSON form of a general certificate (exact numbers as strings):
+///   Definite {"t"}; Tangent {"t", "contact"}; HardTangent {"t": {"a", "b", "d"}, "contact_set":
+///   {"center", "directions", "radius2", "decimal"}}; Crossing {"inside", "outside", "beyond"?};
+///   Equal {"ratio"}.
+detail::Json quadric_certificate_to_json(const QuadricCertificate& c, int digits);
+/// The inverse (numbers also as JSON numbers, read exactly); InputError naming the field.
+QuadricCertificate quadric_certificate_from_json(const detail::Json& j);
+
+/// "I", "TI", ..., "EQ" back to the position, or nullopt.
+std::optional<QuadricPosition> quadric_position_from_text(const std::string& s);
+
+}  // namespace relpos::io
