@@ -12,6 +12,7 @@ the exact dyadic value they hold. doc/python.md describes the package.
     'I'
 """
 
+import collections.abc as _abc
 import json as _json
 import operator as _operator
 from decimal import Decimal
@@ -90,8 +91,9 @@ INVALID = _relpos._INVALID
 
 def _method(cls, name):
     def attach(function):
-        function.__qualname__ = "%s.%s" % (cls.__name__, name)
-        function.__name__ = name
+        inner = function.__func__ if isinstance(function, staticmethod) else function
+        inner.__qualname__ = "%s.%s" % (cls.__name__, name)  # help() shows the public name
+        inner.__name__ = name
         setattr(cls, name, function)
         return function
 
@@ -189,6 +191,11 @@ class _Answer:
         """From the fields of the CLI's JSON answer (as classify / contact return them)."""
         if _is_set(self, "_data"):
             raise TypeError("relpos.%s: the object is already built; make a new one" % type(self).__name__)
+        if not isinstance(fields, _abc.Mapping) or not all(isinstance(k, str) for k in fields):
+            raise TypeError(
+                "relpos.%s: fields: expected a mapping of str keys (the CLI's JSON answer), got %s"
+                % (type(self).__name__, type(fields).__name__)
+            )
         self._data = dict(fields)
 
     @property
@@ -218,7 +225,22 @@ def _is_set(obj, slot):
 
 
 def _field(name, doc):
-    return property(lambda self: self._fields[name], doc=doc)
+    def get(self):
+        fields = self._fields
+        if name not in fields:
+            raise AttributeError(
+                "relpos.%s has no %r: the answer does not hold it%s"
+                % (type(self).__name__, name, _MINIMAL_NOTE if type(self) is Classification else "")
+            )
+        return fields[name]
+
+    return property(get, doc=doc)
+
+
+# The members of the CLI's minimal answer (`relpos batch --evidence minimal`, doc/cli.md), in its
+# order: classify(evidence="minimal") answers with these and no others.
+_MINIMAL_FIELDS = ("position", "small", "contact", "rule", "stage")
+_MINIMAL_NOTE = " (evidence='minimal' gives position, small, contact, rule and stage; classify with evidence='full')"
 
 
 class Certificate(_Answer):
@@ -326,7 +348,10 @@ def classify(e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] =
     _check_pair(e, p, "classify")
     if evidence not in ("full", "minimal"):
         raise ValueError("evidence: expected 'full' or 'minimal', got %r" % (evidence,))
-    return Classification(_json.loads(_relpos._classify_json(e, p, evidence == "full")))
+    fields = _json.loads(_relpos._classify_json(e, p, evidence == "full"))
+    if evidence == "minimal":
+        fields = {k: fields[k] for k in _MINIMAL_FIELDS}
+    return Classification(fields)
 
 
 def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
@@ -336,12 +361,32 @@ def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
     _check_pair(e, p, "verify")
     if not isinstance(answer, Classification):
         raise TypeError("verify: answer must be a relpos.Classification, got %s" % type(answer).__name__)
-    certificate = answer.certificate
+    fields = answer._fields
+    position = fields.get("position")
+    if position not in POSITION_NAMES:
+        # Not an answer of relpos: nothing to check the certificate against.
+        raise CertificateError("answer.position: expected one of I, TI, C, TE, E, got %s" % _shown(position))
+    certificate = fields.get("certificate")
     if certificate is None:
         raise ValueError("verify: the answer has no certificate (classify with evidence='full')")
-    reason = _relpos._verify(e, p, answer.position, _json.dumps(certificate.to_json()))
+    if not isinstance(certificate, _abc.Mapping):
+        raise CertificateError("%s: answer.certificate: expected a JSON object, got %s" % (position, _shown(certificate)))
+    try:
+        text = _json.dumps(certificate, allow_nan=False)
+    except (TypeError, ValueError) as err:
+        raise CertificateError("%s: answer.certificate: not JSON: %s" % (position, err)) from None
+    try:
+        reason = _relpos._verify(e, p, position, text)
+    except ValueError as err:  # the certificate's JSON does not have the form of doc/certificates.md
+        raise CertificateError("%s: %s" % (position, err)) from None
     if reason is not None:
-        raise CertificateError(answer.position + ": " + reason)
+        raise CertificateError(position + ": " + reason)
+
+
+def _shown(value, limit=60):
+    """A short repr of a value for a message (never a whole array or answer)."""
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer:
@@ -356,12 +401,16 @@ def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer:
 # ------------------------------------------------------------------------------------------------
 
 
+#: The most threads a call takes (`relpos batch --threads`' limit); 0 means every core.
+_MAX_THREADS = 1024
+
+
 def _thread_count(threads):
     if isinstance(threads, bool) or not hasattr(type(threads), "__index__"):
-        raise TypeError("threads: expected a non-negative int, got %s" % type(threads).__name__)
+        raise TypeError("threads: expected an int from 0 to %d, got %s" % (_MAX_THREADS, type(threads).__name__))
     threads = _operator.index(threads)
-    if threads < 0:
-        raise ValueError("threads: expected a non-negative int, got %d" % threads)
+    if not 0 <= threads <= _MAX_THREADS:
+        raise ValueError("threads: expected an int from 0 to %d (0: every core), got %d" % (_MAX_THREADS, threads))
     return threads
 
 
@@ -452,11 +501,28 @@ _MOTION_DOC = """
     c(t) is 3 polynomials in t, rotation q(t) = (w, x, y, z) 4 polynomials (the rotation
     R(q)/|q|^2; q must not vanish on [t0, t1]), each a list of exact coefficients, lowest degree
     first (["-9/4", 0, 1] is t^2 - 9/4), or one number. pivot: "origin", "center" (of e) or a
-    point. The paraboloid is fixed. Instants are exact (relpos.Instant). The CLI's limits apply
-    (degree 12, 512-bit coefficients; doc/cli.md); the GIL is released.
+    point ("centre" is accepted too). The paraboloid is fixed. Instants are exact (relpos.Instant).
+    The CLI's limits apply (degree 12, 512-bit coefficients; doc/cli.md), and its time budget:
+    max_seconds (default 60, as `relpos motion --max-seconds`; None: none) ends the computation with
+    TimeoutError. The GIL is released; Ctrl-C stops the computation (KeyboardInterrupt).
 """
 
-Pivot = Union[Literal["origin", "center"], Vector3]
+Pivot = Union[Literal["origin", "center", "centre"], Vector3]
+
+#: `relpos motion --max-seconds`' default and largest value.
+_DEFAULT_MAX_SECONDS = 60
+_LARGEST_MAX_SECONDS = 86400
+
+
+def _max_seconds(value):
+    if value is None:
+        return 0.0
+    if isinstance(value, bool) or not isinstance(value, (int, float, Fraction, Decimal, numpy.integer, numpy.floating)):
+        raise TypeError("max_seconds: expected a number of seconds or None, got %s" % type(value).__name__)
+    if not 0 < value <= _LARGEST_MAX_SECONDS:
+        raise ValueError("max_seconds: expected more than 0 and at most %d seconds (or None), got %s"
+                         % (_LARGEST_MAX_SECONDS, value))
+    return float(value)
 
 
 def _motion_function(name, compute, result, summary):
@@ -470,9 +536,10 @@ def _motion_function(name, compute, result, summary):
         translation: Optional[Sequence[TimePolynomial]] = None,
         rotation: Optional[Sequence[TimePolynomial]] = None,
         pivot: Pivot = "origin",
+        max_seconds: Optional[float] = _DEFAULT_MAX_SECONDS,
     ) -> result:
         _check_pair(e, p, name)
-        return compute(e, p, t0, t1, translation, rotation, pivot)
+        return compute(e, p, t0, t1, translation, rotation, pivot, _max_seconds(max_seconds))
 
     function.__name__ = function.__qualname__ = name
     function.__doc__ = summary + "\n" + _MOTION_DOC
@@ -501,6 +568,29 @@ for _cls in (Instant, FirstContact, Timeline):
 def _decimal(self, digits: int = 12) -> str:
     """The correctly rounded decimal with `digits` significant digits (1..1000)."""
     return self._decimal(_operator.index(digits))
+
+
+def _instant_order(name, holds):
+    def method(self, other):
+        c = self._compare(other)
+        return NotImplemented if c is None else holds(c)
+
+    method.__name__ = name
+    method.__qualname__ = "Instant." + name
+    method.__doc__ = "Exact comparison with an Instant or a real number (int, float, Fraction, Decimal)."
+    setattr(Instant, name, method)
+
+
+# Exact order (relpos::AlgebraicReal::compare): equal algebraic instants compare equal.
+for _name, _holds in (
+    ("__eq__", lambda c: c == 0),
+    ("__ne__", lambda c: c != 0),
+    ("__lt__", lambda c: c < 0),
+    ("__le__", lambda c: c <= 0),
+    ("__gt__", lambda c: c > 0),
+    ("__ge__", lambda c: c >= 0),
+):
+    _instant_order(_name, _holds)
 
 
 @_method(Timeline, "position_at")

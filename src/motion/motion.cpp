@@ -109,21 +109,27 @@ struct MovingPencil {
   std::vector<std::pair<PolyZ, unsigned>> events;       // every candidate instant, with its cause
   std::optional<motion_detail::InstantPencil> instant;  // the decision at instants where f has a multiple root
 
-  MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p) {
+  /// `interrupt` is checked between the steps (doc/cli.md, Limits: a step of the largest motions
+  /// takes about a second).
+  MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p, const Interrupt* interrupt) {
     const MatZ pz = integer_matrix(p.matrix());
     const MatZ ez = integer_matrix(moving_ellipsoid_matrix(e0, m));
     f = characteristic_polynomial<PolyZ>(pz, ez);
+    check(interrupt);
     s = special_polynomial<PolyZ>(pz, ez);
     // f and s divided by their integer contents: positive constants, so every root in l, every
     // multiplicity and the sign of every decision quantity (homogeneous in f and in s) is kept,
     // and every polynomial derived below is much smaller.
     make_primitive(f);
     make_primitive(s);
+    check(interrupt);
     SturmHabicht<PolyZ> sh(f);
+    check(interrupt);
     for (int i = 0; i < 3; ++i) g2[i] = sh.g2[i];
     for (int i = 0; i < 2; ++i) g1[i] = sh.g1[i];
     disc = sh.discriminant();
     SmallnessQuantities<PolyZ> q(f, s);
+    check(interrupt);
     vertex = q.vertex;
     graeffe = q.graeffe;
     // Integer contents removed (positive factors): separately where only signs and zeros are read,
@@ -137,6 +143,7 @@ struct MovingPencil {
     }
     disc_zero = CGAL::is_zero(disc);
     instant.emplace(pz, ez, f, g2, g1, disc);
+    check(interrupt);
     if (!disc_zero) {
       // Disc f(., t) != 0: f square-free, its roots distinct and continuous, none crosses 0 (f(0) =
       // det E < 0) and f4 = det P is constant: the root pattern, hence the position (f~ = f has no
@@ -147,6 +154,7 @@ struct MovingPencil {
       // (math.md §7 and §8): the real zeros of Res_l(f^, s), f^ = f / gcd(f, s) over Q(t).
       const BiZ bf(f.begin(), f.end()), bs(s.begin(), s.end());
       const BiZ fhat = CGAL::integral_division_up_to_constant_factor(bf, CGAL::gcd_up_to_constant_factor(bf, bs));
+      check(interrupt);
       if (fhat.degree() >= 1) {
         const PolyZ res = CGAL::resultant(fhat, bs);
         if (!CGAL::is_zero(res)) events.emplace_back(res, kCauseSpecialRoot);
@@ -158,10 +166,14 @@ struct MovingPencil {
       const BiZ bf(f.begin(), f.end()), bs(s.begin(), s.end());
       const BiZ r = CGAL::integral_division_up_to_constant_factor(
           bf, CGAL::gcd_up_to_constant_factor(bf, CGAL::differentiate(bf)));
+      check(interrupt);
       merge = r.degree() >= 2 ? PolyZ(CGAL::resultant(r, CGAL::differentiate(r))) : PolyZ(Integer(1));
       events.emplace_back(merge, kCauseDiscriminant);
+      check(interrupt);
       const BiZ rhat = CGAL::integral_division_up_to_constant_factor(r, CGAL::gcd_up_to_constant_factor(r, bs));
+      check(interrupt);
       if (rhat.degree() >= 1) events.emplace_back(PolyZ(CGAL::resultant(rhat, bs)), kCauseSpecialRoot);
+      check(interrupt);
       const PolyZ ds = CGAL::resultant(bs, CGAL::differentiate(bs));
       if (!CGAL::is_zero(ds)) events.emplace_back(ds, kCauseSpecialRoot);
     }
@@ -321,12 +333,14 @@ Rational rational_between(const Alg& a, const Alg& b) {
 /// factors first: a linear factor gives a rational zero at once, and the others are isolated
 /// separately (smaller polynomials make every later sign evaluation at the zero cheaper).
 void add_zeros(const AK& ak, const PolyZ& p, unsigned cause, const Rational& lo, const Rational& hi,
-               std::vector<Candidate>& out) {
+               std::vector<Candidate>& out, const Interrupt* interrupt) {
+  check(interrupt);
   if (CGAL::is_zero(p) || p.degree() < 1) return;
   std::vector<Integer> coeffs;
   for (int i = 0; i <= p.degree(); ++i) coeffs.push_back(p[i]);
   std::vector<Candidate> zeros;
   for (const auto& g : irreducible_factors(coeffs)) {
+    check(interrupt);
     const PolyZ gz(g.begin(), g.end());
     if (g.size() == 2) {
       const Rational x(-g[0], g[1]);
@@ -357,11 +371,18 @@ int total_degree(const std::vector<std::pair<PolyZ, unsigned>>& polys) {
 
 /// The position at an instant t* where f(., t*) has a multiple root, for any size (instant_position.hpp);
 /// nullopt when f(., t*) is square-free there.
-std::optional<motion_detail::InstantDecision> decide_at(const MovingPencil& mp, const AK& ak, const Candidate& a) {
+/// `interrupt` is checked before every sign.
+std::optional<motion_detail::InstantDecision> decide_at(const MovingPencil& mp, const AK& ak, const Candidate& a,
+                                                        const Interrupt* interrupt) {
   // A zero of the discriminant polynomial (its minimal polynomial divides Disc f) needs no test.
   const bool known_multiple = mp.disc_zero || ((a.causes & kCauseDiscriminant) && !a.exact);
   return motion_detail::decide_at_instant(
-      *mp.instant, [&](const PolyZ& q) { return sign_at(ak, q, a); }, known_multiple);
+      *mp.instant,
+      [&](const PolyZ& q) {
+        check(interrupt);
+        return sign_at(ak, q, a);
+      },
+      known_multiple);
 }
 
 /// rho(t*) <= 1 at an instant (the two smallness quantities' signs; reported, never needed).
@@ -433,8 +454,9 @@ std::string to_string(FirstContact::Kind kind) {
 }
 
 FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
-                           const Rational& t1) {
+                           const Rational& t1, const Interrupt* interrupt) {
   validate_motion(motion, t0, t1);
+  check(interrupt);
   FirstContact out;
   const Classification c0 = classify_at(e0, motion, p, t0);
   out.start_position = c0.verdict.position;
@@ -447,14 +469,15 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
   }
   // Separation (two distinct positive roots) is open and is decided for any size; it can only end
   // where two roots of f meet, i.e. at a real zero of `merge` (math.md §7).
-  const MovingPencil mp(e0, motion, p);
+  const MovingPencil mp(e0, motion, p, interrupt);
   AK ak;
   std::vector<Candidate> zeros;
-  add_zeros(ak, mp.merge, kCauseDiscriminant, t0, t1, zeros);
+  add_zeros(ak, mp.merge, kCauseDiscriminant, t0, t1, zeros, interrupt);
   const auto cmp = ak.compare_1_object();
   const Alg a0(t0);
   for (const Candidate& z : zeros) {
     if (cmp(z.t, a0) == CGAL::EQUAL) continue;  // t0 itself: classified above
+    check(interrupt);
     Position pos;
     std::string how;
     if (z.exact) {
@@ -463,7 +486,7 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
       how = classify_how(c);
     } else {
       // The left neighbour is E; E is open, so a square-free f (no root merges) keeps it.
-      const auto d = decide_at(mp, ak, z);
+      const auto d = decide_at(mp, ak, z, interrupt);
       if (!d) continue;
       pos = d->position;
       how = "at the algebraic instant: " + d->how;
@@ -482,12 +505,12 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
 }
 
 Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
-                  const Rational& t1) {
+                  const Rational& t1, const Interrupt* interrupt) {
   validate_motion(motion, t0, t1);
   Timeline out;
   out.t0 = t0;
   out.t1 = t1;
-  const MovingPencil mp(e0, motion, p);
+  const MovingPencil mp(e0, motion, p, interrupt);
   out.discriminant_identically_zero = mp.disc_zero;
   out.event_degree = total_degree(mp.events);
   AK ak;
@@ -498,12 +521,13 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
     cands.push_back(make_candidate(Alg(t1), kCauseEnd, t1, {-t1.numerator(), t1.denominator()}));
   else
     cands.front().causes |= kCauseEnd;
-  for (const auto& [poly, cause] : mp.events) add_zeros(ak, poly, cause, t0, t1, cands);
+  for (const auto& [poly, cause] : mp.events) add_zeros(ak, poly, cause, t0, t1, cands, interrupt);
 
   // Open intervals: classified exactly at a rational sample strictly inside. The classifications
   // are kept: their root counts serve the square-free instants.
   std::vector<Classification> interval_class;
   for (std::size_t i = 0; i + 1 < cands.size(); ++i) {
+    check(interrupt);
     MotionInterval iv;
     iv.sample = rational_between(cands[i].t, cands[i + 1].t);
     interval_class.push_back(classify_at(e0, motion, p, iv.sample));
@@ -513,6 +537,7 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
   }
 
   for (std::size_t i = 0; i < cands.size(); ++i) {
+    check(interrupt);
     const Candidate& z = cands[i];
     MotionInstant inst{instant_of(z), Position::C, false, z.causes, ""};
     if (inst.time.is_rational()) {
@@ -525,7 +550,7 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
       // square-free at t*: no tangency (that needs a multiple root), so the position is open (E, I
       // or C) and equals that of the neighbouring intervals. Otherwise the definiteness test of
       // instant_position.hpp decides, for any size.
-      const auto d = decide_at(mp, ak, z);
+      const auto d = decide_at(mp, ak, z, interrupt);
       if (d) {
         inst.position = d->position;
         inst.how = "at the algebraic instant: " + d->how;
@@ -535,6 +560,7 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
             "at the algebraic instant: f is square-free (no root merges), the position of the neighbouring "
             "intervals";
       }
+      check(interrupt);
       inst.small = small_at(mp, ak, z);
     }
     // Cross-check with the neighbours: E|C forces TE, I|C forces TI, E|I is impossible, ...
@@ -547,9 +573,9 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
 
 std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p,
                                                   const Rational& t) {
-  const MovingPencil mp(e0, motion, p);
+  const MovingPencil mp(e0, motion, p, nullptr);
   AK ak;
-  const auto d = decide_at(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}));
+  const auto d = decide_at(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}), nullptr);
   if (!d) return std::nullopt;
   return d->position;
 }
