@@ -484,7 +484,7 @@ def scene(
     through it, on `threads` threads (0 = every core; the GIL is released).
 
     bodies: a sequence of Ellipsoid, or matrices (n, 4, 4) read exactly as by decide_positions (a
-    bad one raises ValueError "E[i]: ellipsoid: ..."). early_outs=False sends every body through the
+    bad one raises ValueError "bodies[i]: ellipsoid: ..."). early_outs=False sends every body through the
     classifier (the same positions).
     """
     if not isinstance(p, Paraboloid):
