@@ -78,7 +78,7 @@ void print_main_help(std::ostream& os) {
 void print_classify_help(std::ostream& os) {
   os << "Usage: relpos classify (--ellipsoid Q | --sphere X,Y,Z,R)\n"
         "                       (--paraboloid Q | --standard-paraboloid A,B) [--digits N] [--json]\n"
-        "                       [--contact-only]\n"
+        "                       [--contact-only] [--max-bits N]\n"
         "\n"
         "Classify one pair and print a report: the position and its meaning, the deciding rule,\n"
         "smallness (rho against 1), the characteristic polynomial f with exact coefficients, its real\n"
@@ -100,6 +100,8 @@ void print_classify_help(std::ostream& os) {
         "  --json                     print the JSON object of `relpos batch` instead of the report\n"
         "  --contact-only             answer only whether the surfaces meet: none, touching or crossing,\n"
         "                             certified like the position (doc/contact.md)\n"
+        "  --max-bits N               the pair size limit (default 4096, at least 4096): entries of each\n"
+        "                             matrix's primitive integer form (doc/cli.md, Limits)\n"
         "  -h, --help                 this help\n"
         "\n"
         "Example:\n"
@@ -111,7 +113,7 @@ void print_classify_help(std::ostream& os) {
 
 void print_batch_help(std::ostream& os) {
   os << "Usage: relpos batch [FILE|-] [--digits N] [--contact-only] [--evidence full|minimal]\n"
-        "                    [--threads N] [--numbers exact|double] [--max-line-bytes N]\n"
+        "                    [--threads N] [--numbers exact|double] [--max-line-bytes N] [--max-bits N]\n"
         "\n"
         "Read JSON Lines from FILE (or standard input when FILE is '-' or absent), one pair per line:\n"
         "  {\"id\": ANY, \"ellipsoid\": Q, \"paraboloid\": Q, \"comment\": ANY}\n"
@@ -135,6 +137,8 @@ void print_batch_help(std::ostream& os) {
         "                   number is the IEEE double nearest its text (a float program's input)\n"
         "  --max-line-bytes N        longest input line (default 67108864 = 64 MiB); a longer line\n"
         "                   is answered with an error and the run goes on\n"
+        "  --max-bits N     the pair size limit (default 4096, at least 4096): entries of each matrix's\n"
+        "                   primitive integer form; the cost of a pair grows with it (doc/cli.md, Limits)\n"
         "  -h, --help       this help\n"
         "\n"
      << kExitCodes;
@@ -155,6 +159,7 @@ int run_classify(Args& args) {
   ShapeOptions shapes;
   int digits = 12;
   bool json = false, contact_only = false;
+  relpos::SizeLimit limit;
   while (!args.done()) {
     if (args.help()) {
       print_classify_help(std::cout);
@@ -162,6 +167,10 @@ int run_classify(Args& args) {
     }
     std::string v;
     if (shapes.take(args) || args.flag("--json", json) || args.flag("--contact-only", contact_only)) continue;
+    if (args.value("--max-bits", v)) {
+      limit.max_bits = parse_max_bits(v);
+      continue;
+    }
     if (!args.value("--digits", v)) args.unexpected();
     digits = parse_digits(v);
   }
@@ -173,7 +182,8 @@ int run_classify(Args& args) {
     const std::optional<relpos::Ellipsoid> e = shapes.make_ellipsoid();
     const std::optional<relpos::Paraboloid> p = shapes.make_paraboloid();
     if (contact_only) {
-      const Json j = relpos::io::contact_to_json(relpos::contact(*e, *p));
+      relpos::check_normalized_pair_size(*e, *p, limit);  // as `relpos batch --contact-only`
+      const Json j = relpos::io::contact_to_json(relpos::contact(*e, *p, limit));
       if (json)
         write_json_line(j);
       else
@@ -183,7 +193,7 @@ int run_classify(Args& args) {
                   << std::flush;
       return std::cout ? kExitOk : kExitIo;
     }
-    const relpos::Classification c = relpos::classify(*e, *p, relpos::Evidence::Full);
+    const relpos::Classification c = relpos::classify(*e, *p, relpos::Evidence::Full, limit);
     if (json)
       std::cout << relpos::io::classification_json_text(c, options) << '\n';
     else
@@ -395,6 +405,8 @@ int run_batch(Args& args) {
       threads = static_cast<unsigned>(parse_count(v, "--threads", 1, 1024));
     } else if (args.value("--max-line-bytes", v)) {
       options.max_line_bytes = parse_count(v, "--max-line-bytes", 1, std::size_t(1) << 40);
+    } else if (args.value("--max-bits", v)) {
+      options.size_limit.max_bits = parse_max_bits(v);
     } else if (args.peek() != "-" && args.peek().rfind("-", 0) == 0) {
       args.unexpected();
     } else {

@@ -100,6 +100,7 @@ struct BatchOptions {
   bool contact_only = false;           ///< the contact answer of doc/contact.md
   bool numbers_as_doubles = false;     ///< each JSON number is the IEEE double nearest its text
   std::size_t max_line_bytes = kDefaultMaxLineBytes;
+  SizeLimit size_limit;  ///< the pair size limit (--max-bits)
   RenderOptions render;
 };
 

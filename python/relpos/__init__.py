@@ -47,6 +47,7 @@ __all__ = [
     "POSITION_MEANINGS",
     "STAGE_NAMES",
     "INVALID",
+    "MAX_BITS",
     "plot",
     "distributed",
     "__version__",
@@ -338,17 +339,36 @@ def _check_pair(e, p, function):
         raise TypeError("%s: p must be a relpos.Paraboloid, got %s" % (function, type(p).__name__))
 
 
-def classify(e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] = "full") -> Classification:
+#: The pair size limit's default and largest value (`relpos ... --max-bits`, doc/cli.md, Limits).
+MAX_BITS = _relpos._MAX_BITS
+_LARGEST_MAX_BITS = 1 << 32
+
+
+def _max_bits(max_bits):
+    if isinstance(max_bits, bool) or not hasattr(type(max_bits), "__index__"):
+        raise TypeError("max_bits: expected an int from %d to 2**32, got %s" % (MAX_BITS, type(max_bits).__name__))
+    max_bits = _operator.index(max_bits)
+    if not MAX_BITS <= max_bits <= _LARGEST_MAX_BITS:
+        raise ValueError("max_bits: expected an int from %d (the default) to 2**32, got %d" % (MAX_BITS, max_bits))
+    return max_bits
+
+
+def classify(
+    e: Ellipsoid, p: Paraboloid, evidence: Literal["full", "minimal"] = "full", max_bits: int = MAX_BITS
+) -> Classification:
     """Classify ellipsoid `e` against paraboloid `p` exactly.
 
     evidence="full" gives the same fields as `relpos batch` / `relpos classify --json` (exact
-    coefficients of f and s, multiple roots, rho, the certificate); "minimal" only what the decision
-    needs. Raises ValueError on bad input (with the CLI's message). The GIL is released.
+    coefficients of f and s, multiple roots, rho, the certificate); "minimal" the fields of `relpos
+    batch --evidence minimal` (position, small, contact, rule, stage). Raises ValueError on bad input
+    (with the CLI's message), also for a pair beyond the size limit max_bits (`--max-bits`: a safe
+    default that can be raised; doc/cli.md, "Limits", measures the cost). The GIL is released; one
+    pair is not interrupted by Ctrl-C (within the default limit it takes well under a second).
     """
     _check_pair(e, p, "classify")
     if evidence not in ("full", "minimal"):
         raise ValueError("evidence: expected 'full' or 'minimal', got %r" % (evidence,))
-    fields = _json.loads(_relpos._classify_json(e, p, evidence == "full"))
+    fields = _json.loads(_relpos._classify_json(e, p, evidence == "full", _max_bits(max_bits)))
     if evidence == "minimal":
         fields = {k: fields[k] for k in _MINIMAL_FIELDS}
     return Classification(fields)
@@ -389,11 +409,12 @@ def _shown(value, limit=60):
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
-def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer:
+def contact(e: Ellipsoid, p: Paraboloid, max_bits: int = MAX_BITS) -> ContactAnswer:
     """Whether the surfaces meet, certified like the position and also for bodies that are not small
-    (doc/contact.md; `relpos classify --contact-only`). The GIL is released."""
+    (doc/contact.md; `relpos classify --contact-only`). max_bits: the size limit, as for classify.
+    The GIL is released."""
     _check_pair(e, p, "contact")
-    return ContactAnswer(_json.loads(_relpos._contact_json(e, p)))
+    return ContactAnswer(_json.loads(_relpos._contact_json(e, p, _max_bits(max_bits))))
 
 
 # ------------------------------------------------------------------------------------------------
@@ -415,7 +436,11 @@ def _thread_count(threads):
 
 
 def decide_positions(
-    E: numpy.ndarray, P: numpy.ndarray, threads: int = 0, errors: Literal["raise", "code"] = "raise"
+    E: numpy.ndarray,
+    P: numpy.ndarray,
+    threads: int = 0,
+    errors: Literal["raise", "code"] = "raise",
+    max_bits: int = MAX_BITS,
 ) -> numpy.ndarray:
     """Positions of many pairs given as numpy matrices, exactly, on all cores.
 
@@ -425,10 +450,12 @@ def decide_positions(
     of codes into POSITION_NAMES (0 = "I" ... 4 = "E"). threads=0 uses every core; the GIL is
     released while deciding. errors="raise" raises ValueError naming the first invalid matrix
     ("E[17]: ellipsoid: ..."); errors="code" gives such a pair the code INVALID (-1) instead.
+    max_bits: the size limit, as for classify (long doubles and 64-bit integers may exceed it).
+    Ctrl-C stops the call (KeyboardInterrupt) within a fraction of a second.
     """
     if errors not in ("raise", "code"):
         raise ValueError("errors: expected 'raise' or 'code', got %r" % (errors,))
-    return _relpos._decide_positions(E, P, _thread_count(threads), errors == "raise")
+    return _relpos._decide_positions(E, P, _thread_count(threads), errors == "raise", _max_bits(max_bits))
 
 
 class SceneResult:
@@ -478,18 +505,20 @@ def scene(
     bodies: Union[numpy.ndarray, Sequence[Ellipsoid]],
     threads: int = 0,
     early_outs: bool = True,
+    max_bits: int = MAX_BITS,
 ) -> SceneResult:
     """Many bodies against one paraboloid with the library's scene (`relpos scene`): the paraboloid is
     prepared once, certified early-outs settle most bodies without the classifier, the rest go
     through it, on `threads` threads (0 = every core; the GIL is released).
 
     bodies: a sequence of Ellipsoid, or matrices (n, 4, 4) read exactly as by decide_positions (a
-    bad one raises ValueError "bodies[i]: ellipsoid: ..."). early_outs=False sends every body through the
-    classifier (the same positions).
+    bad one raises ValueError "bodies[i]: ellipsoid: ..."). early_outs=False sends every body through
+    the classifier (the same positions). max_bits: the size limit, as for classify ("bodies[i]:
+    numbers too large: ..."). Ctrl-C stops the call (KeyboardInterrupt) within a fraction of a second.
     """
     if not isinstance(p, Paraboloid):
         p = Paraboloid(p)
-    return SceneResult(*_relpos._scene(p, bodies, _thread_count(threads), bool(early_outs)))
+    return SceneResult(*_relpos._scene(p, bodies, _thread_count(threads), bool(early_outs), _max_bits(max_bits)))
 
 
 # ------------------------------------------------------------------------------------------------

@@ -207,7 +207,7 @@ def _check_inputs(paths, out_dir):
     return paths, stats, out_dir, outs
 
 
-def _options(evidence, numbers, contact_only, digits, max_line_bytes, threads, block_bytes):
+def _options(evidence, numbers, contact_only, digits, max_line_bytes, threads, block_bytes, max_bits):
     """The options of `relpos batch`, checked with messages naming the argument, before any work."""
 
     def integer(name, value, allow_none=False):
@@ -223,12 +223,12 @@ def _options(evidence, numbers, contact_only, digits, max_line_bytes, threads, b
     if not isinstance(contact_only, bool):
         raise TypeError("relpos.distributed.batch: contact_only: expected a bool, got %s" % type(contact_only).__name__)
     options = dict(evidence=evidence, numbers=numbers, contact_only=contact_only, digits=integer("digits", digits),
-                   threads=integer("threads", threads))
+                   threads=integer("threads", threads), max_bits=integer("max_bits", max_bits))
     max_line_bytes = integer("max_line_bytes", max_line_bytes, allow_none=True)
     if max_line_bytes is not None:  # else the CLI's default
         options["max_line_bytes"] = max_line_bytes
-    for name in ("digits", "threads"):
-        if not -(1 << 31) <= options[name] < (1 << 31):
+    for name, bits in (("digits", 31), ("threads", 31), ("max_bits", 62)):  # what the binding's integers hold
+        if not -(1 << bits) <= options[name] < (1 << bits):
             raise ValueError("relpos.distributed.batch: %s: %d is out of range" % (name, options[name]))
     if max_line_bytes is not None and not 1 <= max_line_bytes <= (1 << 40):
         raise ValueError("relpos.distributed.batch: max_line_bytes: expected 1 to 2^40, got %d" % max_line_bytes)
@@ -298,7 +298,7 @@ def _local_client():
 
 
 def batch(paths, out_dir, client=None, evidence="full", numbers="exact", contact_only=False, digits=12,
-          max_line_bytes=None, threads=1, block_bytes=None):
+          max_line_bytes=None, threads=1, block_bytes=None, max_bits=4096):
     """Answer JSON Lines files on a Dask cluster as `relpos batch` does; returns the written paths.
 
     paths: one input file (str or os.PathLike) or a list of them. out_dir: out_dir/<file name>
@@ -306,8 +306,8 @@ def batch(paths, out_dir, client=None, evidence="full", numbers="exact", contact
     options (created if missing; it must not hold an input, and two inputs must not share a name).
     Named pipes, files of /proc and other files whose size reads 0 are read to their end first.
     evidence ("full" | "minimal"), numbers ("exact" | "double"), contact_only, digits,
-    max_line_bytes (None: the CLI's default): the options --evidence, --numbers, --contact-only,
-    --digits, --max-line-bytes.
+    max_line_bytes (None: the CLI's default), max_bits (the pair size limit): the options --evidence,
+    --numbers, --contact-only, --digits, --max-line-bytes, --max-bits.
     client: a distributed.Client; None uses the current client (distributed.get_client()) or starts
     a local cluster of threads in this process for the call. threads: library threads per task.
     block_bytes: bytes of a file per task (default: about 8 blocks per worker thread, 256 KiB to
@@ -316,7 +316,8 @@ def batch(paths, out_dir, client=None, evidence="full", numbers="exact", contact
     failing task's error (or KeyboardInterrupt), after cancelling the others and removing every file
     the call created: out_dir then holds what it held before.
     """
-    options, block_bytes = _options(evidence, numbers, contact_only, digits, max_line_bytes, threads, block_bytes)
+    options, block_bytes = _options(evidence, numbers, contact_only, digits, max_line_bytes, threads, block_bytes,
+                                    max_bits)
     paths, stats, out_dir, outs = _check_inputs(paths, out_dir)
     os.makedirs(out_dir, exist_ok=True)
     if not paths:

@@ -126,7 +126,9 @@ std::optional<std::size_t> batch_size(const py::array& a, const char* name, bool
                            ", got " + shape);
 }
 
-py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input, unsigned threads, bool raise_errors) {
+py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input, unsigned threads, bool raise_errors,
+                                          std::size_t max_bits) {
+  const relpos::SizeLimit limit{max_bits};
   const Matrices e_array = read_array(e_input, "E");
   const Matrices p_array = read_array(p_input, "P");
   const std::size_t n = *batch_size(e_array.array, "E", false);
@@ -180,10 +182,10 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
             try {
               const relpos::Ellipsoid e = e_array.ellipsoid(i);
               if (shared) {
-                codes[i] = position_code(relpos::decide_position(e, *shared).position);
+                codes[i] = position_code(relpos::decide_position(e, *shared, limit).position);
               } else {
                 failed = "P";
-                codes[i] = position_code(relpos::decide_position(e, p_array.paraboloid(i)).position);
+                codes[i] = position_code(relpos::decide_position(e, p_array.paraboloid(i), limit).position);
               }
             } catch (const std::exception& err) {
               codes[i] = kInvalid;
@@ -254,10 +256,11 @@ std::int8_t scene_stage_code(relpos::Stage s) {
 /// The pair size limit for every body, naming the first body beyond it ("bodies[3]: numbers too
 /// large: ..."): the scene's own check, on its worker threads, could not say which. Free for bodies
 /// of doubles and of short decimals (check_normalized_pair_size).
-void check_body_sizes(const relpos::Paraboloid& p, const std::vector<relpos::Ellipsoid>& bodies, SignalWatch& watch) {
+void check_body_sizes(const relpos::Paraboloid& p, const std::vector<relpos::Ellipsoid>& bodies,
+                      const relpos::SizeLimit& limit, SignalWatch& watch) {
   for (std::size_t i = 0; i < bodies.size() && !watch.poll(); ++i) {
     try {
-      relpos::check_normalized_pair_size(bodies[i], p);
+      relpos::check_normalized_pair_size(bodies[i], p, limit);
     } catch (const relpos::InputError& err) {
       throw relpos::InputError("bodies[" + std::to_string(i) + "]: " + err.what());
     }
@@ -267,17 +270,19 @@ void check_body_sizes(const relpos::Paraboloid& p, const std::vector<relpos::Ell
 /// relpos::Scene on the bodies, in pieces with Python's signals checked between them (a piece
 /// takes 20 to 100 ms: its size doubles or halves to stay there): (position codes, contact (1, 0),
 /// stage codes, threads used).
-py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads, bool early_outs) {
+py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads, bool early_outs,
+                std::size_t max_bits) {
   SignalWatch watch;
   const std::vector<relpos::Ellipsoid> e = scene_bodies(bodies, watch);
   const std::size_t n = e.size();
   relpos::SceneOptions options;
   options.threads = threads;
   options.early_outs = early_outs;
+  options.size_limit.max_bits = max_bits;
   relpos::SceneResult result;
   {
     py::gil_scoped_release release;
-    check_body_sizes(p, e, watch);
+    check_body_sizes(p, e, options.size_limit, watch);
     const relpos::Scene prepared(p);
     std::size_t piece = 1024;
     for (std::size_t begin = 0; begin < n && !watch.poll();) {
@@ -312,10 +317,10 @@ void bind_decide(py::module_& m) {
   py::list stage_names;
   for (const relpos::Stage s : relpos::kSceneStages) stage_names.append(relpos::to_string(s));
   m.attr("_STAGE_NAMES") = py::tuple(stage_names);
-  m.def("_scene", &scene, "p"_a, "bodies"_a, "threads"_a, "early_outs"_a,
+  m.def("_scene", &scene, "p"_a, "bodies"_a, "threads"_a, "early_outs"_a, "max_bits"_a,
         "relpos::Scene on the bodies: (position codes, contact codes, stage codes, threads used).");
   m.attr("_INVALID") = kInvalid;
-  m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a, "raise_errors"_a,
+  m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a, "raise_errors"_a, "max_bits"_a,
         "Position codes (int8, 0 = I ... 4 = E, -1 = invalid pair) of the matrices E (n, 4, 4) against P "
         "(n, 4, 4) or (4, 4).");
 }

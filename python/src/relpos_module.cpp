@@ -178,17 +178,18 @@ PYBIND11_MODULE(_relpos, m) {
 
   m.def(
       "_classify_json",
-      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, bool full) {
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, bool full, std::size_t max_bits) {
         std::string text;
         {
           py::gil_scoped_release release;
-          const relpos::Classification c =
-              relpos::classify(e, p, full ? relpos::Evidence::Full : relpos::Evidence::Minimal);
+          const relpos::Classification c = relpos::classify(
+              e, p, full ? relpos::Evidence::Full : relpos::Evidence::Minimal, relpos::SizeLimit{max_bits});
           text = relpos::io::classification_json_text(c);
         }
         return text;
       },
-      "e"_a, "p"_a, "full"_a = true, "The JSON object of `relpos batch` for the pair (without \"id\"), as text.");
+      "e"_a, "p"_a, "full"_a = true, "max_bits"_a = relpos::kMaxNormalizedBits,
+      "The JSON object of `relpos batch` for the pair (without \"id\"), as text.");
 
   m.def(
       "_verify",
@@ -207,17 +208,20 @@ PYBIND11_MODULE(_relpos, m) {
 
   m.def(
       "_contact_json",
-      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p) {
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, std::size_t max_bits) {
         std::string text;
         {
           py::gil_scoped_release release;
-          relpos::check_normalized_pair_size(e, p);
-          text = relpos::io::dump_json(relpos::io::contact_to_json(relpos::contact(e, p)));
+          const relpos::SizeLimit limit{max_bits};
+          relpos::check_normalized_pair_size(e, p, limit);
+          text = relpos::io::dump_json(relpos::io::contact_to_json(relpos::contact(e, p, limit)));
         }
         return text;
       },
-      "e"_a, "p"_a, "The JSON object of `relpos classify --contact-only --json` for the pair, as text.");
+      "e"_a, "p"_a, "max_bits"_a = relpos::kMaxNormalizedBits,
+      "The JSON object of `relpos classify --contact-only --json` for the pair, as text.");
 
+  m.attr("_MAX_BITS") = relpos::kMaxNormalizedBits;
   relpos_python::bind_decide(m);
   relpos_python::bind_motion(m);
   relpos_python::bind_batch(m);

@@ -94,7 +94,7 @@ ContactAnswer finish(const Verdict& v) { return {contact_of(v.position), v.posit
 
 }  // namespace
 
-DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p) {
+DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
   if (storage_of(e).filter_doubles() && storage_of(p).filter_doubles() && rounding_to_nearest()) {
     const DecisionSigns d = static_filter_discriminant_signs_normalized(
         *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), &needs_smallness);
@@ -103,10 +103,12 @@ DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid&
     if (discriminant_case_needs_rho(c)) rho = compare_rho_with_one(d.vertex, d.graeffe);
     if (auto v = verdict_from_discriminant_case(c, rho)) return {*v, c != DiscriminantCase::TwoPositive};
   }
-  return {decide_position(e, p), true};
+  return {decide_position(e, p, limit), true};
 }
 
-ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p) { return finish(decide_by_discriminant(e, p).verdict); }
+ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+  return finish(decide_by_discriminant(e, p, limit).verdict);
+}
 
 ContactChecker::ContactChecker(const Paraboloid& p) : scene_(std::make_unique<Scene>(p)) {}
 ContactChecker::~ContactChecker() = default;

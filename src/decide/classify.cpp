@@ -837,10 +837,10 @@ std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs
   return v;
 }
 
-Verdict decide_position(const Ellipsoid& e, const Paraboloid& p) {
+Verdict decide_position(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
   // Doubles and the fast reader's numbers are within the size limit: the check's own two flag
   // tests, without the call.
-  if (!storage_of(e).within_size_limit() || !storage_of(p).within_size_limit()) check_normalized_pair_size(e, p);
+  if (!storage_of(e).within_size_limit() || !storage_of(p).within_size_limit()) check_normalized_pair_size(e, p, limit);
   std::optional<ExactData> exact;
   return run_stages(e, p, true, exact);
 }
@@ -869,13 +869,13 @@ Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
   return decide_position(first, Paraboloid::from_doubles(p));
 }
 
-Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
-  check_normalized_pair_size(e, p);
+Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
+  check_normalized_pair_size(e, p, limit);
   return classify_impl(e, p, evidence, true);
 }
 
-Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
-  check_normalized_pair_size(e, p);
+Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
+  check_normalized_pair_size(e, p, limit);
   return classify_impl(e, p, evidence, false);
 }
 

@@ -396,7 +396,8 @@ void read_line(std::string_view raw, long line_number, const BatchOptions& optio
   if (!fixed && !out.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
   if (!out.ellipsoid) out.ellipsoid = ellipsoid_from_json(ellipsoid, "ellipsoid");
   if (!fixed && !out.paraboloid) out.paraboloid = paraboloid_from_json(paraboloid, "paraboloid");
-  check_normalized_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid);  // doc/cli.md, Limits
+  check_normalized_pair_size(*out.ellipsoid, fixed ? *fixed : *out.paraboloid,
+                             options.size_limit);  // doc/cli.md, Limits
 }
 
 }  // namespace
@@ -415,19 +416,19 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
   try {
     read_line(line, line_number, options, nullptr, in, &id);
     if (options.contact_only) {
-      const std::string report = dump_json(contact_to_json(contact(*in.ellipsoid, *in.paraboloid)));
+      const std::string report = dump_json(contact_to_json(contact(*in.ellipsoid, *in.paraboloid, options.size_limit)));
       reserve_for_id(out, id);
       out.assign("{\"id\":").append(id).append(",").append(report, 1, std::string::npos);
       return;
     }
     if (options.evidence == Evidence::Minimal) {  // the verdict alone: classify's, without its evidence
-      const Verdict v = decide_position(*in.ellipsoid, *in.paraboloid);
+      const Verdict v = decide_position(*in.ellipsoid, *in.paraboloid, options.size_limit);
       reserve_for_id(out, id);
       out.assign("{\"id\":").append(id);  // the id goes first
       append_minimal(v, out);
       return;
     }
-    const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full);
+    const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full, options.size_limit);
     reserve_for_id(out, id);
     out.assign("{\"id\":").append(id);
     detail::JsonWriter w(out);
