@@ -197,7 +197,8 @@ std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p);
 
 /// Throws InputError ("numbers too large: ...", naming the limit) when normalized_pair_bits(e, p) >
 /// limit.max_bits, and InputError when limit.max_bits < kMaxNormalizedBits (the limit is raised,
-/// never lowered).
-void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
+/// never lowered). Returns a bound on normalized_pair_bits(e, p) that is exact when it exceeds
+/// kMaxNormalizedBits (0 for matrices known to be within it without a computation).
+std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
 
 }  // namespace relpos

@@ -706,7 +706,7 @@ std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
   return std::max(normalized_bits(e.matrix()), normalized_bits(p.matrix()));
 }
 
-void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
   if (limit.max_bits < kMaxNormalizedBits)
     throw InputError("the size limit is at least " + std::to_string(kMaxNormalizedBits) + " bits, got " +
                      std::to_string(limit.max_bits) + " (it can be raised, not lowered: doc/cli.md, Limits)");
@@ -718,7 +718,7 @@ void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const S
   // the gcd and the products.
   auto bits_of = [&](const Matrix4& m) {
     const std::size_t bound = normalized_bits_bound(m);
-    return bound <= limit.max_bits ? bound : normalized_bits(m);
+    return bound <= kMaxNormalizedBits ? bound : normalized_bits(m);
   };
   const std::size_t bits = std::max(storage_of(e).within_size_limit() ? 0 : bits_of(e.matrix()),
                                     storage_of(p).within_size_limit() ? 0 : bits_of(p.matrix()));
@@ -729,6 +729,7 @@ void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const S
         std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(limit.max_bits) +
         (limit.max_bits == kMaxNormalizedBits ? " bits (kMaxNormalizedBits, doc/cli.md, Limits)"
                                               : " bits (the limit given, doc/cli.md, Limits)"));
+  return bits;
 }
 
 }  // namespace relpos

@@ -19,6 +19,7 @@
 #include "algebra/sturm.hpp"
 #include "anysize/exact.hpp"
 #include "anysize/gap.hpp"
+#include "base/large_stack.hpp"
 #include "certificate/build.hpp"
 #include "decide/unchecked.hpp"
 #include "filters/fixed_pencil.hpp"
@@ -828,6 +829,17 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   return out;
 }
 
+/// f() directly, or, for a pair beyond the default size limit (a raised SizeLimit: `bits` from
+/// check_normalized_pair_size), on a thread whose stack fits the exact root isolation's recursion,
+/// whose depth grows with the numbers (base/large_stack.hpp).
+template <class F>
+auto with_stack_for(std::size_t bits, F f) -> decltype(f()) {
+  if (bits <= kMaxNormalizedBits) return f();
+  std::optional<decltype(f())> out;
+  detail::run_on_large_stack(detail::stack_for_bits(bits), [&] { out.emplace(f()); });
+  return std::move(*out);
+}
+
 }  // namespace
 
 std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs_one) {
@@ -840,9 +852,13 @@ std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
   // Doubles and the fast reader's numbers are within the size limit: the check's own two flag
   // tests, without the call.
-  if (!storage_of(e).within_size_limit() || !storage_of(p).within_size_limit()) check_normalized_pair_size(e, p, limit);
-  std::optional<ExactData> exact;
-  return run_stages(e, p, true, exact);
+  std::size_t bits = 0;
+  if (!storage_of(e).within_size_limit() || !storage_of(p).within_size_limit())
+    bits = check_normalized_pair_size(e, p, limit);
+  return with_stack_for(bits, [&] {
+    std::optional<ExactData> exact;
+    return run_stages(e, p, true, exact);
+  });
 }
 
 Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
@@ -870,13 +886,11 @@ Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
 }
 
 Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
-  check_normalized_pair_size(e, p, limit);
-  return classify_impl(e, p, evidence, true);
+  return with_stack_for(check_normalized_pair_size(e, p, limit), [&] { return classify_impl(e, p, evidence, true); });
 }
 
 Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
-  check_normalized_pair_size(e, p, limit);
-  return classify_impl(e, p, evidence, false);
+  return with_stack_for(check_normalized_pair_size(e, p, limit), [&] { return classify_impl(e, p, evidence, false); });
 }
 
 Classification detail::classify_unchecked(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
