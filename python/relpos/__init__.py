@@ -366,8 +366,8 @@ def classify(
     pair is not interrupted by Ctrl-C (within the default limit it takes well under a second).
     """
     _check_pair(e, p, "classify")
-    if evidence not in ("full", "minimal"):
-        raise ValueError("evidence: expected 'full' or 'minimal', got %r" % (evidence,))
+    if not isinstance(evidence, str) or evidence not in ("full", "minimal"):
+        raise ValueError("evidence: expected 'full' or 'minimal', got %s" % _shown(evidence))
     fields = _json.loads(_relpos._classify_json(e, p, evidence == "full", _max_bits(max_bits)))
     if evidence == "minimal":
         fields = {k: fields[k] for k in _MINIMAL_FIELDS}
@@ -453,8 +453,8 @@ def decide_positions(
     max_bits: the size limit, as for classify (long doubles and 64-bit integers may exceed it).
     Ctrl-C stops the call (KeyboardInterrupt) within a fraction of a second.
     """
-    if errors not in ("raise", "code"):
-        raise ValueError("errors: expected 'raise' or 'code', got %r" % (errors,))
+    if not isinstance(errors, str) or errors not in ("raise", "code"):
+        raise ValueError("errors: expected 'raise' or 'code', got %s" % _shown(errors))
     return _relpos._decide_positions(E, P, _thread_count(threads), errors == "raise", _max_bits(max_bits))
 
 
@@ -596,7 +596,12 @@ for _cls in (Instant, FirstContact, Timeline):
 @_method(Instant, "decimal")
 def _decimal(self, digits: int = 12) -> str:
     """The correctly rounded decimal with `digits` significant digits (1..1000)."""
-    return self._decimal(_operator.index(digits))
+    if isinstance(digits, bool) or not hasattr(type(digits), "__index__"):
+        raise TypeError("digits: expected an int from 1 to 1000, got %s" % type(digits).__name__)
+    digits = _operator.index(digits)
+    if not 1 <= digits <= 1000:
+        raise ValueError("digits: expected an int from 1 to 1000, got %d" % digits)
+    return self._decimal(digits)
 
 
 def _instant_order(name, holds):
