@@ -592,6 +592,22 @@ for _cls in (Instant, FirstContact, Timeline):
     _cls.__module__ = "relpos"
 
 
+def _made_by_relpos(cls, makers):
+    """cls(...) raises a TypeError saying where its objects come from (pybind11 would say "No
+    constructor defined" with the extension's module name)."""
+
+    @_method(cls, "__init__")
+    def __init__(self) -> None:
+        raise TypeError("relpos.%s objects are made by %s, not directly" % (cls.__name__, makers))
+
+    __init__.__doc__ = "Not callable: relpos.%s objects are made by %s." % (cls.__name__, makers)
+
+
+_made_by_relpos(Instant, "relpos.first_contact and relpos.timeline")
+_made_by_relpos(FirstContact, "relpos.first_contact")
+_made_by_relpos(Timeline, "relpos.timeline")
+
+
 
 @_method(Instant, "decimal")
 def _decimal(self, digits: int = 12) -> str:

@@ -526,6 +526,13 @@ def test_answers_built_from_junk():
     assert "has no 'rho'" in clean(err.value)
 
 
+def test_result_classes_not_made_directly():
+    for cls in (relpos.Instant, relpos.FirstContact, relpos.Timeline):
+        with pytest.raises(TypeError) as err:
+            cls()
+        assert "objects are made by relpos." in clean(err.value)
+
+
 def probe_arguments():
     """Every public call with a wrong value in each argument."""
     e, p = relpos.Ellipsoid.sphere((0, 0, 1), "1/4"), CUP
