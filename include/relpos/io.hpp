@@ -79,6 +79,10 @@ nlohmann::ordered_json classification_to_json(const Classification& c, const Ren
 /// written directly (what `relpos classify --json`, `relpos batch` and the Python module print).
 std::string classification_json_text(const Classification& c, const RenderOptions& options = {});
 
+/// The minimal report of `relpos batch --evidence minimal` (without "id") as one line of JSON
+/// text: position, small, contact, rule, stage (the Python package's classify(evidence="minimal")).
+std::string minimal_json_text(const Verdict& v);
+
 /// The contact-only answer (doc/contact.md): contact, position, rule, decided_by (decided_by(stage)).
 nlohmann::ordered_json contact_to_json(const ContactAnswer& a);
 

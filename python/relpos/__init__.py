@@ -199,6 +199,13 @@ class _Answer:
             )
         self._data = dict(fields)
 
+    @classmethod
+    def _of(cls, fields):
+        """An answer from the fields the library wrote (no check: they are the CLI's)."""
+        answer = cls.__new__(cls)
+        answer._data = fields
+        return answer
+
     @property
     def _fields(self):
         if not _is_set(self, "_data"):
@@ -238,9 +245,6 @@ def _field(name, doc):
     return property(get, doc=doc)
 
 
-# The members of the CLI's minimal answer (`relpos batch --evidence minimal`, doc/cli.md), in its
-# order: classify(evidence="minimal") answers with these and no others.
-_MINIMAL_FIELDS = ("position", "small", "contact", "rule", "stage")
 _MINIMAL_NOTE = " (evidence='minimal' gives position, small, contact, rule and stage; classify with evidence='full')"
 
 
@@ -345,6 +349,8 @@ _LARGEST_MAX_BITS = 1 << 32
 
 
 def _max_bits(max_bits):
+    if max_bits is MAX_BITS:  # the default
+        return max_bits
     if isinstance(max_bits, bool) or not hasattr(type(max_bits), "__index__"):
         raise TypeError("max_bits: expected an int from %d to 2**32, got %s" % (MAX_BITS, type(max_bits).__name__))
     max_bits = _operator.index(max_bits)
@@ -368,10 +374,7 @@ def classify(
     _check_pair(e, p, "classify")
     if not isinstance(evidence, str) or evidence not in ("full", "minimal"):
         raise ValueError("evidence: expected 'full' or 'minimal', got %s" % _shown(evidence))
-    fields = _json.loads(_relpos._classify_json(e, p, evidence == "full", _max_bits(max_bits)))
-    if evidence == "minimal":
-        fields = {k: fields[k] for k in _MINIMAL_FIELDS}
-    return Classification(fields)
+    return Classification._of(_json.loads(_relpos._classify_json(e, p, evidence == "full", _max_bits(max_bits))))
 
 
 def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
@@ -414,7 +417,7 @@ def contact(e: Ellipsoid, p: Paraboloid, max_bits: int = MAX_BITS) -> ContactAns
     (doc/contact.md; `relpos classify --contact-only`). max_bits: the size limit, as for classify.
     The GIL is released."""
     _check_pair(e, p, "contact")
-    return ContactAnswer(_json.loads(_relpos._contact_json(e, p, _max_bits(max_bits))))
+    return ContactAnswer._of(_json.loads(_relpos._contact_json(e, p, _max_bits(max_bits))))
 
 
 # ------------------------------------------------------------------------------------------------

@@ -211,6 +211,9 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
   return out;
 }
 
+/// Bodies read or checked between two polls of Python's signals (a few microseconds each at most).
+constexpr std::size_t kPollEvery = 256;
+
 /// The bodies of a scene: a sequence of relpos.Ellipsoid (empty included), or matrices as for
 /// decide_positions. Errors name the body: "bodies[3]: ...".
 std::vector<relpos::Ellipsoid> scene_bodies(py::handle bodies, SignalWatch& watch) {
@@ -236,7 +239,7 @@ std::vector<relpos::Ellipsoid> scene_bodies(py::handle bodies, SignalWatch& watc
   const std::size_t n = *batch_size(e.array, "bodies", false);
   out.reserve(n);
   py::gil_scoped_release release;
-  for (std::size_t i = 0; i < n && !watch.poll(); ++i) {
+  for (std::size_t i = 0; i < n && !(i % kPollEvery == 0 && watch.poll()); ++i) {
     try {
       out.push_back(e.ellipsoid(i));
     } catch (const relpos::InputError& err) {
@@ -258,7 +261,7 @@ std::int8_t scene_stage_code(relpos::Stage s) {
 /// of doubles and of short decimals (check_normalized_pair_size).
 void check_body_sizes(const relpos::Paraboloid& p, const std::vector<relpos::Ellipsoid>& bodies,
                       const relpos::SizeLimit& limit, SignalWatch& watch) {
-  for (std::size_t i = 0; i < bodies.size() && !watch.poll(); ++i) {
+  for (std::size_t i = 0; i < bodies.size() && !(i % kPollEvery == 0 && watch.poll()); ++i) {
     try {
       relpos::check_normalized_pair_size(bodies[i], p, limit);
     } catch (const relpos::InputError& err) {
@@ -284,7 +287,7 @@ py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads
     py::gil_scoped_release release;
     check_body_sizes(p, e, options.size_limit, watch);
     const relpos::Scene prepared(p);
-    std::size_t piece = 1024;
+    std::size_t piece = 4096;
     for (std::size_t begin = 0; begin < n && !watch.poll();) {
       const std::size_t count = std::min(piece, n - begin);
       const auto start = std::chrono::steady_clock::now();

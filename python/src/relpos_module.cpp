@@ -182,14 +182,16 @@ PYBIND11_MODULE(_relpos, m) {
         std::string text;
         {
           py::gil_scoped_release release;
-          const relpos::Classification c = relpos::classify(
-              e, p, full ? relpos::Evidence::Full : relpos::Evidence::Minimal, relpos::SizeLimit{max_bits});
-          text = relpos::io::classification_json_text(c);
+          const relpos::SizeLimit limit{max_bits};
+          // The minimal answer as `relpos batch --evidence minimal` computes and writes it.
+          text = full ? relpos::io::classification_json_text(relpos::classify(e, p, relpos::Evidence::Full, limit))
+                      : relpos::io::minimal_json_text(relpos::decide_position(e, p, limit));
         }
         return text;
       },
       "e"_a, "p"_a, "full"_a = true, "max_bits"_a = relpos::kMaxNormalizedBits,
-      "The JSON object of `relpos batch` for the pair (without \"id\"), as text.");
+      "The JSON object of `relpos batch` (or of `relpos batch --evidence minimal`) for the pair, without \"id\", "
+      "as text.");
 
   m.def(
       "_verify",

@@ -207,6 +207,17 @@ void append_minimal(const Verdict& v, std::string& out) {
   out += '}';
 }
 
+}  // namespace
+
+std::string minimal_json_text(const Verdict& v) {
+  std::string out;
+  append_minimal(v, out);
+  out[0] = '{';  // the members start with a comma (batch writes the id before them)
+  return out;
+}
+
+namespace {
+
 /// Room in `out` for a long id and what follows it at once: growing past the id would copy it.
 void reserve_for_id(std::string& out, std::string_view id) {
   constexpr std::size_t kLong = std::size_t(1) << 16, kReport = std::size_t(1) << 20;  // a report is smaller
