@@ -13,6 +13,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from provenance import savefig  # noqa: E402
+
 
 def near_tangency(out, colors):
     """(6) the near-tangent regime (edge_bench, edge.csv): time per delta of the exact methods and of
@@ -32,7 +35,7 @@ def near_tangency(out, colors):
     axes[0].set_xticks(ks, ["2^-%d" % k for k in ks])
     axes[0].set_xlabel("distance delta of the sphere from an exact tangency")
     axes[0].set_ylabel("per-pair median [us] (log), timed back to back")
-    axes[0].set_title("Near tangency: time per delta (400 spheres each)")
+    axes[0].set_title(f"Near tangency: time per delta ({ed[0]['n']} spheres each)")
     axes[0].grid(alpha=0.3, which="both")
     axes[0].legend(fontsize=7)
     for m in floats + ["decide"]:
@@ -49,7 +52,7 @@ def near_tangency(out, colors):
     axes[1].grid(alpha=0.3)
     axes[1].legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(f"{out}/near_tangency.png", dpi=110)
+    savefig(fig, f"{out}/near_tangency.png", [f"{out}/edge.csv"])
 
 
 args = [a for a in sys.argv[1:] if a != "--edge"]
@@ -87,7 +90,7 @@ ax.set_title("Time per classification (for (c): median over eps levels)")
 ax.legend(fontsize=8, ncol=4)
 ax.grid(axis="y", which="both", alpha=0.3)
 fig.tight_layout()
-fig.savefig(f"{out}/time_per_family.png", dpi=110)
+savefig(fig, f"{out}/time_per_family.png", [f"{out}/results.csv"])
 
 # (2) error rate vs eps, families c and c-sym.
 fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
@@ -104,7 +107,7 @@ for ax, fam in zip(axes, ["c", "c-sym"]):
 axes[0].set_ylabel("error rate (wrong or undecided)")
 axes[0].legend(fontsize=8)
 fig.tight_layout()
-fig.savefig(f"{out}/error_vs_eps.png", dpi=110)
+savefig(fig, f"{out}/error_vs_eps.png", [f"{out}/results.csv"])
 
 # (3) speed-accuracy: pooled over every pair of every family (time weighted by n).
 fig, ax = plt.subplots(figsize=(7, 5))
@@ -139,7 +142,7 @@ ax.set_ylabel("error rate over all pairs (wrong or undecided)")
 ax.set_title("Speed vs accuracy (all families pooled)")
 ax.grid(alpha=0.3)
 fig.tight_layout()
-fig.savefig(f"{out}/speed_accuracy.png", dpi=110)
+savefig(fig, f"{out}/speed_accuracy.png", [f"{out}/results.csv"])
 
 # (4) the FLINT reference, timed back to back with exact (GMP) and adaptive on each pair (flint.csv).
 fl = list(csv.DictReader(open(f"{out}/flint.csv")))
@@ -166,7 +169,7 @@ axes[0].set_ylabel("per-pair median [ns] (log), timed back to back")
 axes[0].set_title("(a), (b)")
 axes[0].legend(fontsize=8)
 fig.tight_layout()
-fig.savefig(f"{out}/flint_reference.png", dpi=110)
+savefig(fig, f"{out}/flint_reference.png", [f"{out}/flint.csv"])
 
 # (5) which stage of the adaptive method decided: stage columns read by name from stages.csv
 # (every column after "n"), so a new Stage needs no change here.
@@ -185,7 +188,7 @@ ax.set_ylabel("fraction of pairs")
 ax.set_title("Deciding stage of the adaptive method")
 ax.legend(fontsize=8, ncol=len(stage_cols))
 fig.tight_layout()
-fig.savefig(f"{out}/stages.png", dpi=110)
+savefig(fig, f"{out}/stages.png", [f"{out}/stages.csv"])
 
 if os.path.exists(f"{out}/edge.csv"):
     near_tangency(out, colors)

@@ -112,3 +112,4 @@ if ! "$PY" -c 'import matplotlib' 2>/dev/null; then
   fi
 fi
 "$PY" "$ROOT/benchmarks/plot.py" "$OUT"
+/usr/bin/python3 "$ROOT/benchmarks/tables.py" "$OUT"

@@ -6,11 +6,12 @@
 #include <chrono>
 #include <optional>
 #include <relpos/algebraic_real.hpp>
-#include <relpos/io.hpp>
 #include <relpos/motion.hpp>
 #include <sstream>
 #include <string>
 
+#include "io/json_values.hpp"
+#include "io/motion_json.hpp"
 #include "module.hpp"
 #include "signals.hpp"
 
@@ -22,7 +23,7 @@ using namespace pybind11::literals;
 
 /// `count` polynomials in t, read and limited as `relpos motion` reads --translation / --rotation.
 std::vector<relpos::TimePolynomial> polynomials(py::handle x, std::size_t count, const std::string& role) {
-  return relpos::io::motion_polynomials(to_json(x, role), count, role);
+  return relpos::io::detail::motion_polynomials(to_json(x, role), count, role);
 }
 
 relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py::handle pivot) {
@@ -50,7 +51,7 @@ relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py
     const Json point = to_json(pivot, "pivot");
     if (!point.is_array() || point.size() != 3) throw relpos::InputError("pivot: expected origin, center or a point");
     for (std::size_t i = 0; i < 3; ++i)
-      m.pivot_point[i] = relpos::io::rational_from_json(point[i], "pivot[" + std::to_string(i) + "]");
+      m.pivot_point[i] = relpos::io::detail::rational_from_json(point[i], "pivot[" + std::to_string(i) + "]");
   }
   return m;
 }
