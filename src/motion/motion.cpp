@@ -100,8 +100,8 @@ std::string classify_how(const Classification& c) {
 }
 
 /// The candidate instants in [t0, t1], with t0 and t1 themselves, increasing.
-std::vector<Candidate> candidate_instants(const MovingPencil& mp, const AK& ak, const Rational& t0,
-                                          const Rational& t1, const Interrupt* interrupt) {
+std::vector<Candidate> candidate_instants(const MovingPencil& mp, const AK& ak, const Rational& t0, const Rational& t1,
+                                          const Interrupt* interrupt) {
   std::vector<Candidate> cands{make_candidate(Alg(t0), kCauseStart, t0, {-t0.numerator(), t0.denominator()})};
   if (t1 > t0)
     cands.push_back(make_candidate(Alg(t1), kCauseEnd, t1, {-t1.numerator(), t1.denominator()}));

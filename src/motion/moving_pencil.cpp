@@ -78,8 +78,7 @@ void make_primitive(PolyZ* first, PolyZ* last) {
     for (PolyZ* p = first; p != last; ++p) *p = divide_exactly(*p, g);
 }
 
-MovingPencil::MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p,
-                           const Interrupt* interrupt) {
+MovingPencil::MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p, const Interrupt* interrupt) {
   const MatZ pz = integer_matrix(p.matrix());
   const MatZ ez = integer_matrix(moving_ellipsoid_matrix(e0, m));
   f = characteristic_polynomial<PolyZ>(pz, ez);
