@@ -84,7 +84,7 @@ void print_main_help(std::ostream& os) {
 void print_classify_help(std::ostream& os) {
   os << "Usage: relpos classify (--ellipsoid Q | --sphere X,Y,Z,R)\n"
         "                       (--paraboloid Q | --standard-paraboloid A,B) [--digits N] [--json]\n"
-        "                       [--contact-only] [--margin] [--margin-bits B]\n"
+        "                       [--contact-only] [--margin] [--margin-bits B] [--max-bits N]\n"
         "\n"
         "Classify one pair and print a report: the position and its meaning, the deciding rule,\n"
         "smallness (rho against 1), the characteristic polynomial f with exact coefficients, its real\n"
@@ -116,6 +116,8 @@ void print_classify_help(std::ostream& os) {
         "                             \"margin\"; doc/certificates.md, \"Margins\")\n"
         "  --margin-bits B            the margin's enclosure: relative width 2^-B (default 40, 1..1000;\n"
         "                             implies --margin)\n"
+        "  --max-bits N               the pair size limit (default 4096, at least 4096): entries of each\n"
+        "                             matrix's primitive integer form (doc/cli.md, Limits)\n"
         "  -h, --help                 this help\n"
         "\n"
         "Example:\n"
@@ -127,7 +129,7 @@ void print_classify_help(std::ostream& os) {
 
 void print_batch_help(std::ostream& os) {
   os << "Usage: relpos batch [FILE|-] [--digits N] [--contact-only] [--evidence full|minimal]\n"
-        "                    [--threads N] [--numbers exact|double] [--max-line-bytes N]\n"
+        "                    [--threads N] [--numbers exact|double] [--max-line-bytes N] [--max-bits N]\n"
         "                    [--margin] [--margin-bits B]\n"
         "\n"
         "Read JSON Lines from FILE (or standard input when FILE is '-' or absent), one pair per line:\n"
@@ -158,6 +160,8 @@ void print_batch_help(std::ostream& os) {
         "                   proof (doc/certificates.md, \"Margins\")\n"
         "  --margin-bits B  the margin's enclosure: relative width 2^-B (default 40, 1..1000; implies\n"
         "                   --margin)\n"
+        "  --max-bits N     the pair size limit (default 4096, at least 4096): entries of each matrix's\n"
+        "                   primitive integer form; the cost of a pair grows with it (doc/cli.md, Limits)\n"
         "  -h, --help       this help\n"
         "\n"
      << kExitCodes;
@@ -232,6 +236,7 @@ int run_classify(Args& args) {
   int digits = 12, margin_bits = 0;
   bool json = false, contact_only = false;
   std::optional<std::string> quadric;
+  relpos::SizeLimit limit;
   while (!args.done()) {
     if (args.help()) {
       print_classify_help(std::cout);
@@ -242,6 +247,10 @@ int run_classify(Args& args) {
     if (take_margin(args, margin_bits)) continue;
     if (args.value("--quadric", v)) {
       quadric = v;
+      continue;
+    }
+    if (args.value("--max-bits", v)) {
+      limit.max_bits = parse_max_bits(v);
       continue;
     }
     if (!args.value("--digits", v)) args.unexpected();
@@ -260,7 +269,8 @@ int run_classify(Args& args) {
     const std::optional<relpos::Margin> m =
         margin_bits > 0 ? std::optional<relpos::Margin>(relpos::margin(*e, *p, margin_bits)) : std::nullopt;
     if (contact_only) {
-      const relpos::ContactAnswer a = relpos::contact(*e, *p);
+      relpos::check_normalized_pair_size(*e, *p, limit);  // as `relpos batch --contact-only`
+      const relpos::ContactAnswer a = relpos::contact(*e, *p, limit);
       if (json)
         std::cout << with_margin(relpos::io::contact_json_text(a), m, options) << '\n';
       else
@@ -269,7 +279,7 @@ int run_classify(Args& args) {
                   << (m ? relpos::io::margin_to_text(*m, options) : "") << std::flush;
       return std::cout ? kExitOk : kExitIo;
     }
-    const relpos::Classification c = relpos::classify(*e, *p, relpos::Evidence::Full);
+    const relpos::Classification c = relpos::classify(*e, *p, relpos::Evidence::Full, limit);
     if (json)
       std::cout << with_margin(relpos::io::classification_json_text(c, options), m, options) << '\n';
     else
@@ -483,6 +493,8 @@ int run_batch(Args& args) {
     } else if (args.value("--max-line-bytes", v)) {
       options.max_line_bytes = parse_count(v, "--max-line-bytes", 1, std::size_t(1) << 40);
     } else if (take_margin(args, options.margin_bits)) {  // --margin, --margin-bits B
+    } else if (args.value("--max-bits", v)) {
+      options.size_limit.max_bits = parse_max_bits(v);
     } else if (args.peek() != "-" && args.peek().rfind("-", 0) == 0) {
       args.unexpected();
     } else {

@@ -248,10 +248,11 @@ std::string timeline_text(const relpos::Timeline& tl, int digits) {
 }
 
 /// Everything `relpos motion` computes and prints, from the parsed options (runs on a worker
-/// thread). Returns the text to print; throws InputError.
+/// thread). Returns the text to print; throws InputError, and relpos::Interrupted past the budget.
 std::string compute(const ShapeOptions& shapes, const std::optional<std::string>& translation,
                     const std::optional<std::string>& rotation, const std::optional<std::string>& pivot,
-                    const std::string& t0s, const std::string& t1s, int digits, bool json, bool only_first) {
+                    const std::string& t0s, const std::string& t1s, int digits, bool json, bool only_first,
+                    const relpos::Interrupt& budget) {
   const relpos::Ellipsoid e = shapes.make_ellipsoid();
   const relpos::Paraboloid p = shapes.make_paraboloid();
   relpos::RigidMotion m;
@@ -276,9 +277,9 @@ std::string compute(const ShapeOptions& shapes, const std::optional<std::string>
   const Rational t0 = exact_option(t0s, "--t0");
   const Rational t1 = exact_option(t1s, "--t1");
 
-  const relpos::FirstContact fc = relpos::first_contact(e, m, p, t0, t1);
+  const relpos::FirstContact fc = relpos::first_contact(e, m, p, t0, t1, &budget);
   std::optional<relpos::Timeline> tl;
-  if (!only_first) tl = relpos::timeline(e, m, p, t0, t1);
+  if (!only_first) tl = relpos::timeline(e, m, p, t0, t1, &budget);
 
   if (json) {
     Json out;
@@ -358,7 +359,9 @@ int run_motion(Args& args) {
   shapes.check(/*need_ellipsoid=*/true);
   if (!t0s || !t1s) throw UsageError{"missing the time interval (--t0 T0 --t1 T1)"};
 
-  // The work runs on a worker thread; this thread keeps the budget and the progress indication.
+  // The work runs on a worker thread and stops itself at its first check past the budget
+  // (relpos/interrupt.hpp); this thread shows the progress.
+  const auto budget = std::make_shared<relpos::Interrupt>(std::chrono::seconds(max_seconds));
   struct Result {
     std::mutex m;
     std::condition_variable cv;
@@ -371,7 +374,11 @@ int run_motion(Args& args) {
     std::string text, error;
     int code = kExitOk;
     try {
-      text = compute(shapes, translation, rotation, pivot, *t0s, *t1s, digits, json, only_first);
+      text = compute(shapes, translation, rotation, pivot, *t0s, *t1s, digits, json, only_first, *budget);
+    } catch (const relpos::Interrupted&) {
+      error = "motion: the computation exceeded its time budget of " + std::to_string(max_seconds) +
+              " s (--max-seconds) and was stopped; try a shorter interval, lower degrees or a larger budget";
+      code = kExitBudget;
     } catch (const relpos::InputError& err) {
       error = err.what();
       code = kExitInput;
@@ -391,20 +398,10 @@ int run_motion(Args& args) {
   });
   const bool show = !quiet && isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
-  const auto deadline = start + std::chrono::seconds(max_seconds);
   {
     std::unique_lock<std::mutex> lock(result->m);
     while (!result->done) {
-      const auto now = std::chrono::steady_clock::now();
-      if (now >= deadline) {
-        if (show) std::cerr << "\r\033[K";
-        std::cerr << "relpos: motion: the computation exceeded its time budget of " << max_seconds
-                  << " s (--max-seconds) and was stopped; try a shorter interval, lower degrees or a larger budget\n";
-        std::cerr.flush();
-        std::cout.flush();
-        std::_Exit(kExitBudget);  // the worker cannot be interrupted: end the process
-      }
-      result->cv.wait_until(lock, std::min(deadline, now + std::chrono::milliseconds(500)));
+      result->cv.wait_for(lock, std::chrono::milliseconds(500));
       if (show && !result->done) {
         const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "\rrelpos motion: computing... %.0f s of at most %llu s\033[K", secs, max_seconds);

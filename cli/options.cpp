@@ -6,6 +6,7 @@
 #include "io/json_tree.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
+#include "relpos/quadric.hpp"
 
 namespace relpos_cli {
 
@@ -51,6 +52,10 @@ unsigned long long parse_count(const std::string& text, const char* what, unsign
     throw UsageError{std::string(what) + " needs an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
                      ", got " + relpos::io::detail::dump_json(relpos::io::detail::Json(text))};
   return n;
+}
+
+std::size_t parse_max_bits(const std::string& text) {
+  return static_cast<std::size_t>(parse_count(text, "--max-bits", relpos::kMaxNormalizedBits, 1ULL << 32));
 }
 
 std::vector<relpos::Rational> comma_numbers(const std::string& text, std::size_t count, const std::string& what) {

@@ -48,6 +48,10 @@ class Args {
 /// "N" as an integer in [lo, hi] for option `what` (UsageError otherwise).
 unsigned long long parse_count(const std::string& text, const char* what, unsigned long long lo, unsigned long long hi);
 
+/// --max-bits N of classify, batch and scene: the pair size limit, from kMaxNormalizedBits (the
+/// default) to 2^32 (UsageError otherwise; doc/cli.md, Limits).
+std::size_t parse_max_bits(const std::string& text);
+
 /// "a,b,c" -> `count` exact numbers; `what` names the option in InputError messages.
 std::vector<relpos::Rational> comma_numbers(const std::string& text, std::size_t count, const std::string& what);
 

@@ -80,6 +80,8 @@ void print_scene_help(std::ostream& os) {
         "  --summary-only             print only the summary (on standard error)\n"
         "  --no-progress              no progress bar\n"
         "  --max-line-bytes N         longest input line (default 64 MiB); longer lines are errors\n"
+        "  --max-bits N               the pair size limit (default 4096, at least 4096): entries of each\n"
+        "                             matrix's primitive integer form (doc/cli.md, Limits)\n"
         "  --generate N               write a demo scene of N bodies as CSV to standard output instead:\n"
         "                             particles in the container x^2/A^2 + y^2/B^2 <= z (default A,B =\n"
         "                             1,2), see doc/performance.md\n"
@@ -174,7 +176,7 @@ void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, co
   } catch (const relpos::InputError& e) {
     throw relpos::InputError(std::string("ellipsoid: ") + e.what());
   }
-  relpos::check_normalized_pair_size(*out.body, p);  // the limit of `relpos batch`
+  relpos::check_normalized_pair_size(*out.body, p, options.size_limit);  // the limit of `relpos batch`
 }
 
 /// Parse a line; never throws (errors land in out.error). JSON Lines go through the reader of
@@ -358,6 +360,8 @@ int run_scene(Args& args) {
       seed = parse_count(v, "--seed", 0, ~0ULL);
     } else if (args.value("--max-line-bytes", v)) {
       options_line.max_line_bytes = parse_count(v, "--max-line-bytes", 1, std::size_t(1) << 40);
+    } else if (args.value("--max-bits", v)) {
+      options_line.size_limit.max_bits = parse_max_bits(v);
     } else if (args.flag("--summary-only")) {
       summary_only = true;
     } else if (args.flag("--no-progress")) {
@@ -471,6 +475,7 @@ int run_scene(Args& args) {
     }
     relpos::SceneOptions options;
     options.threads = threads;
+    options.size_limit = options_line.size_limit;
     options.progress = &bar.counter();  // ...and one when answered
     const relpos::SceneResult result = scene.classify(bodies, options);
     classify_seconds += result.seconds;

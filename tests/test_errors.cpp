@@ -1,14 +1,19 @@
 // Every input that is not an ellipsoid / elliptic paraboloid pair gets relpos::InputError with a
 // message that names what was found (math.md §1).
+#include <pthread.h>
+
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <relpos/algebraic_real.hpp>
 #include <relpos/classify.hpp>
+#include <relpos/contact.hpp>
 #include <relpos/error.hpp>
 #include <relpos/motion.hpp>
 #include <relpos/numbers.hpp>
+#include <relpos/position.hpp>
 #include <relpos/quadric.hpp>
 #include <stdexcept>
 #include <string>
@@ -227,4 +232,75 @@ TEST_CASE("The size limit reads each matrix divided by its own content", "[error
   CHECK_THROWS_WITH(relpos::decide_position(e2s, ps), Contains("kMaxNormalizedBits"));
   // ... and answer the independently rescaled pair, whose own forms are tiny.
   CHECK(relpos::decide_position(es, ps).position == relpos::classify_exact(es, ps).verdict.position);
+}
+
+TEST_CASE("The size limit can be raised, not lowered, and a raised limit answers as within it", "[errors][size]") {
+  // The sphere of radius 1/2 at (0, 0, 1) in z = x^2 + y^2 (I), its constant lowered by 2^-4200:
+  // a 4200-bit primitive form, beyond the default, and the same position (an open condition).
+  Matrix4 p;
+  p(0, 0) = p(1, 1) = Q(1);
+  p(2, 3) = p(3, 2) = Q(-1, 2);
+  const Paraboloid cup = Paraboloid::from_matrix(p);
+  Rational huge(1);
+  for (int i = 0; i < 4200; ++i) huge *= 2;
+  Matrix4 e = sphere_matrix({Q(0), Q(0), Q(1)}, Q(1, 2));
+  e(3, 3) -= Rational(1) / huge;
+  const Ellipsoid big = Ellipsoid::from_matrix(e);
+  const Ellipsoid plain = Ellipsoid::from_matrix(sphere_matrix({Q(0), Q(0), Q(1)}, Q(1, 2)));
+  const std::size_t bits = relpos::normalized_pair_bits(big, cup);
+  REQUIRE(bits > relpos::kMaxNormalizedBits);
+  CHECK_THROWS_WITH(relpos::classify(big, cup), Contains("beyond the limit of 4096 bits (kMaxNormalizedBits"));
+  const relpos::SizeLimit raised{bits};
+  CHECK(relpos::check_normalized_pair_size(big, cup, raised) == bits);
+  CHECK_THROWS_WITH(relpos::check_normalized_pair_size(big, cup, relpos::SizeLimit{bits - 1}),
+                    Contains("beyond the limit of " + std::to_string(bits - 1) + " bits (the limit given"));
+  const relpos::Classification c = relpos::classify(big, cup, relpos::Evidence::Full, raised);
+  CHECK(c.verdict.position == relpos::classify(plain, cup).verdict.position);
+  CHECK(relpos::verify_certificate(big, cup, c.verdict.position, c.certificate) == std::nullopt);
+  CHECK(relpos::classify_exact(big, cup, relpos::Evidence::Minimal, raised).verdict.position == c.verdict.position);
+  CHECK(relpos::decide_position(big, cup, raised).position == c.verdict.position);
+  CHECK(relpos::contact(big, cup, raised).position == c.verdict.position);
+  CHECK_THROWS_WITH(relpos::contact(big, cup), Contains("kMaxNormalizedBits"));
+  // Lowering is refused, whatever the pair.
+  CHECK_THROWS_WITH(relpos::check_normalized_pair_size(plain, cup, relpos::SizeLimit{100}),
+                    Contains("it can be raised, not lowered"));
+}
+
+TEST_CASE("A pair beyond the default limit is classified on a stack of its own", "[errors][size]") {
+  // Roots of f 10^-1200 apart (the sphere at (0, 0, 1) of radius 1/4 in the circular cup has the
+  // double root -1 of f; a perturbation of 10^-1200 splits it): CGAL's root isolation recurses
+  // about 4000 levels, more than a 256 KiB thread stack holds. The library runs such a pair on a
+  // thread whose stack fits it (base/large_stack.hpp), whatever the caller's stack.
+  Rational tiny(1);
+  for (int i = 0; i < 1200; ++i) tiny /= 10;
+  Matrix4 p;
+  p(0, 0) = p(1, 1) = Q(1);
+  p(2, 3) = p(3, 2) = Q(-1, 2);
+  const Paraboloid cup = Paraboloid::from_matrix(p);
+  const Ellipsoid e =
+      Ellipsoid::from_matrix(sphere_matrix({tiny / Q(3), tiny / Q(7), Q(1) + tiny / Q(11)}, Q(1, 4) + tiny / Q(13)));
+  const relpos::SizeLimit raised{relpos::normalized_pair_bits(e, cup)};
+  REQUIRE(raised.max_bits > relpos::kMaxNormalizedBits);
+  struct Job {
+    const Ellipsoid* e;
+    const Paraboloid* p;
+    relpos::SizeLimit limit;
+    std::optional<relpos::Position> position;
+  } job{&e, &cup, raised, std::nullopt};
+  pthread_attr_t attr;
+  pthread_attr_init(&attr);
+  pthread_attr_setstacksize(&attr, std::size_t(256) << 10);
+  pthread_t thread;
+  REQUIRE(pthread_create(
+              &thread, &attr,
+              [](void* arg) -> void* {
+                Job& j = *static_cast<Job*>(arg);
+                j.position = relpos::classify(*j.e, *j.p, relpos::Evidence::Full, j.limit).verdict.position;
+                return nullptr;
+              },
+              &job) == 0);
+  pthread_join(thread, nullptr);
+  pthread_attr_destroy(&attr);
+  // Inside the cup (the sphere at height 1 of radius about 1/4 is far from the wall): I.
+  CHECK(job.position == relpos::Position::I);
 }

@@ -2,6 +2,7 @@
 // takes has enclosures that contain the exact entries, the same exact matrix and the same position;
 // a text it does not take (not JSON, another form, long numbers) is left to the general reader. The
 // full evidence from its integer forms, and from forms whose scales' rests lie in either matrix.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <random>
 #include <string>
@@ -264,7 +265,6 @@ TEST_CASE("fast reader: texts it leaves to the general reader", "[io][fast]") {
                            R"({"sph\u0065re":{"center":[0,0,0],"radius":1}})",
                            R"({"sphere":{"center":[0,0,0],"radius":1,"radius":2}})",
                            R"({"sphere":{"center":[0,0,0],"centre":[0,0,0],"radius":1}})",
-                           R"({"sphere":{"center":[0,0,0],"radius":"1"}})",
                            R"({"sphere":{"center":[0,0,0],"radius":0}})",
                            R"({"sphere":{"center":[0,0,0],"radius":-1}})",
                            R"({"sphere":{"center":[0,0,0],"radius":12345678901234567891}})",
@@ -463,5 +463,45 @@ TEST_CASE("fast reader: closed forms end to end, with mantissas that share prime
     const std::string p_text = "{\"vertex\":" + vec3("0", "0", trial % 7 == 0 ? z : related(rng() % 2 == 0)) +
                                ",\"a\":" + text(ma, false) + ",\"b\":" + text(mb, false) + "}";
     check_pair_evidence(e_text, p_text, false);
+  }
+}
+
+TEST_CASE("fast reader: a decimal written as a string is the same number, the same stages", "[io][fast]") {
+  // The general reader reads "0.18" as 0.18: the fast reader takes both spellings, so the quadric
+  // gets one storage and the ladder the same stages (two regime pairs whose stage differed:
+  // interval for numbers, semi-static-double for strings).
+  const auto quoted = [](const std::string& line) {
+    std::string out;
+    bool in_number = false;
+    const std::size_t from = line.find("\"ellipsoid\"");  // the id stays as it is
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i];
+      const bool digit = (c >= '0' && c <= '9') || c == '-';
+      const bool part = digit || c == '.' || c == 'e' || c == 'E' || c == '+';
+      const bool starts = !in_number && digit && i > from;
+      if (starts) out += '"', in_number = true;
+      if (in_number && !part) out += '"', in_number = false;
+      out += c;
+    }
+    return out;
+  };
+  for (
+      const std::string line :
+      {R"({"id":2356,"ellipsoid":{"sphere":{"center":[-0.045171798541083441,-0.17801139965519919,0.0093831117817997564],"radius":0.18281975318707119}},"paraboloid":{"vertex":[0,0,0],"a":1.2365757725442075,"b":0.88088035061183523}})",
+       R"({"id":2396,"ellipsoid":{"sphere":{"center":[-0.17480196320404073,-0.031704277866592023,-0.03390694111879778],"radius":0.17990845020637647}},"paraboloid":{"vertex":[0,0,0],"a":1.6504348510329787,"b":1.8065380509967925}})",
+       R"({"id":1,"ellipsoid":[[2,0,0,0.1],[0,3,0,0.2],[0,0,1,-0.3],[0.1,0.2,-0.3,-0.7]],"paraboloid":[[1.5,0,0,0],[0,0.25,0,0],[0,0,0,-0.5],[0,0,-0.5,0]]})"}) {
+    const std::string strings = quoted(line);
+    INFO(strings);
+    REQUIRE(std::count(strings.begin(), strings.end(), '"') >= std::count(line.begin(), line.end(), '"') + 16);
+    for (const relpos::Evidence evidence : {relpos::Evidence::Minimal, relpos::Evidence::Full}) {
+      relpos::io::BatchOptions options;
+      options.evidence = evidence;
+      const std::string a = relpos::io::answer_batch_line(line, 1, options);
+      CHECK(a.find("\"error\"") == std::string::npos);
+      CHECK(a == relpos::io::answer_batch_line(strings, 1, options));
+    }
+    // And the quadrics themselves: the fast reader takes the strings.
+    const std::size_t e = strings.find("\"ellipsoid\":") + 12, p = strings.find(",\"paraboloid\":");
+    CHECK(fast_ellipsoid(std::string_view(strings).substr(e, p - e), false).has_value());
   }
 }

@@ -5,6 +5,7 @@
 #include <gmp.h>
 
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -12,8 +13,10 @@
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
+#include <relpos/interrupt.hpp>
 #include <relpos/motion.hpp>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "motion/polynomial_motion.hpp"
@@ -262,6 +265,82 @@ TEST_CASE("AlgebraicReal: sqrt(2), rationals, exact comparison and correct round
   CHECK_THROWS_AS(AlgebraicReal::root({Integer(-2), Integer(0), Integer(1)}, Rational(2), Rational(3)),
                   std::invalid_argument);
   CHECK(relpos::polynomial_text({Integer(-2), Integer(0), Integer(1)}) == "t^2 - 2");
+}
+
+TEST_CASE("AlgebraicReal: exact comparison of two algebraic reals", "[motion][algebraic]") {
+  const std::vector<Integer> two{Integer(-2), Integer(0), Integer(1)};  // t^2 - 2
+  const auto a = AlgebraicReal::root(two, Rational(1), Rational(2));
+  // The same number from other isolating intervals, overlapping a's or not, and from a multiple of
+  // its polynomial given as irreducible (not primitive): equal, whichever side compares.
+  const auto b = AlgebraicReal::root(two, q("1414/1000"), q("3"));
+  auto c = AlgebraicReal::root({Integer(-6), Integer(0), Integer(3)}, q("7/5"), q("3/2"), /*irreducible=*/true);
+  c.refine(q("1/1000000"));
+  const std::vector<const AlgebraicReal*> same{&a, &b, &c};
+  for (const AlgebraicReal* x : same)
+    for (const AlgebraicReal* y : same) CHECK(x->compare(*y) == 0);
+  // Its conjugate, another root of the same polynomial, and numbers of other polynomials nearby.
+  const auto minus = AlgebraicReal::root(two, Rational(-2), Rational(-1));
+  CHECK(a.compare(minus) == 1);
+  CHECK(minus.compare(a) == -1);
+  const auto r3 = AlgebraicReal::root({Integer(-3), Integer(0), Integer(1)}, Rational(1), Rational(2));  // sqrt 3
+  CHECK(a.compare(r3) == -1);
+  CHECK(r3.compare(b) == 1);
+  // (t^2 - 2)(10^12 t - 1414213562373) has roots 1.414213562373 and sqrt 2, 10^-13 apart: the
+  // irreducible factors differ, the intervals are bisected until they separate the numbers.
+  const auto near = AlgebraicReal::rational(q("1414213562373/1000000000000"));
+  const auto root_near = AlgebraicReal::root({Integer(-1414213562373), Integer(1000000000000)}, q("1"), q("2"));
+  CHECK(a.compare(near) == 1);
+  CHECK(near.compare(a) == -1);
+  CHECK(root_near.compare(near) == 0);
+  // sqrt(2 + 10^-20), 3.5 10^-21 above sqrt 2: another irreducible polynomial of the same degree.
+  const auto close =
+      AlgebraicReal::root({-q("200000000000000000001").numerator(), Integer(0), q("100000000000000000000").numerator()},
+                          Rational(1), Rational(2));
+  CHECK(a.compare(close) == -1);
+  CHECK(close.compare(b) == 1);
+  const auto phi = AlgebraicReal::root({Integer(-1), Integer(-1), Integer(1)}, Rational(1), Rational(2));
+  CHECK(a.compare(phi) == -1);
+  CHECK(phi.compare(a) == 1);
+  CHECK(phi.compare(AlgebraicReal::rational(q("1618/1000"))) == 1);
+}
+
+TEST_CASE("motion: an Interrupt stops first_contact and timeline, cancelled or past its budget",
+          "[motion][interrupt]") {
+  // The sphere rising through the vertex of z = x^2 + y^2 / 4 (first contact at sqrt 2).
+  const Paraboloid p = standard("1", "2");
+  const Ellipsoid e0 = sphere_at_origin("1/4");
+  const RigidMotion m = translation(poly({}), poly({}), poly({"-9/4", "0", "1"}));
+  relpos::Interrupt never;
+  CHECK(relpos::first_contact(e0, m, p, q("0"), q("2"), &never).kind == FirstContact::Kind::Contact);
+  relpos::Interrupt cancelled;
+  cancelled.cancel();
+  try {
+    (void)relpos::timeline(e0, m, p, q("0"), q("2"), &cancelled);
+    FAIL("not stopped");
+  } catch (const relpos::Interrupted& err) {
+    CHECK(!err.budget());
+  }
+  CHECK_THROWS_AS(relpos::first_contact(e0, m, p, q("0"), q("2"), &cancelled), relpos::Interrupted);
+  const relpos::Interrupt spent(std::chrono::steady_clock::duration::zero());
+  try {
+    (void)relpos::timeline(e0, m, p, q("0"), q("2"), &spent);
+    FAIL("not stopped");
+  } catch (const relpos::Interrupted& err) {
+    CHECK(err.budget());
+  }
+  // Cancelled from another thread while it runs: a motion of degree 12 that takes seconds stops.
+  RigidMotion slow = translation(poly({"0", "1/3"}), poly({}), poly({"-1/2", "0", "1"}));
+  slow.rotation = std::array<TimePolynomial, 4>{poly({"1", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0", "1"}),
+                                                poly({"0", "1"}), poly({"0", "0", "1"}), poly({"0", "0", "0", "1"})};
+  const Ellipsoid body = Ellipsoid::from_axes({q("0"), q("0"), q("1")}, {q("1/4"), q("1/5"), q("1/7")},
+                                              relpos::Quaternion{q("1"), q("0"), q("0"), q("0")});
+  relpos::Interrupt later;
+  std::thread canceller([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    later.cancel();
+  });
+  CHECK_THROWS_AS(relpos::timeline(body, slow, p, q("0"), q("1"), &later), relpos::Interrupted);
+  canceller.join();
 }
 
 TEST_CASE("polynomial motion: E(t) is N^2 times the placed ellipsoid; pivots; validation", "[motion][polynomial]") {

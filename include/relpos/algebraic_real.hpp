@@ -49,6 +49,11 @@ class AlgebraicReal {
   double to_double() const;
   /// Exact comparison with a rational: -1, 0, +1 for this <, =, > q.
   int compare(const Rational& q) const;
+  /// Exact comparison with another algebraic real: -1, 0, +1 for this <, =, > other. Equal
+  /// numbers have the same minimal polynomial; two roots of one polynomial are equal when the
+  /// intersection of their isolating intervals holds a root, and different numbers are told apart by
+  /// bisecting both intervals until they are disjoint.
+  int compare(const AlgebraicReal& other) const;
 
  private:
   AlgebraicReal() = default;

@@ -92,7 +92,7 @@ struct Verdict {
 /// Adaptive exact verdict (static double filter, intervals, exact integers, exact roots).
 /// Throws InputError for a pair beyond the size limit (check_normalized_pair_size, quadric.hpp),
 /// as classify() and classify_exact() do.
-Verdict decide_position(const Ellipsoid& e, const Paraboloid& p);
+Verdict decide_position(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
 
 /// decide_position(Ellipsoid::from_doubles(e), Paraboloid::from_doubles(p)) in one call (row-major
 /// 4x4 doubles, each taken exactly): the same verdict, and the same InputError for an invalid
@@ -133,10 +133,13 @@ struct Classification {
   Certificate certificate;
 };
 
-/// Adaptive exact classification (interval filter, then exact integers).
-Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence = Evidence::Full);
+/// Adaptive exact classification (interval filter, then exact integers). `limit`: the pair size
+/// limit (quadric.hpp), a safe default that a caller can raise.
+Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence = Evidence::Full,
+                        const SizeLimit& limit = {});
 
 /// Exact classification without the filter (reference path for tests and benchmarks).
-Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence = Evidence::Full);
+Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence = Evidence::Full,
+                              const SizeLimit& limit = {});
 
 }  // namespace relpos

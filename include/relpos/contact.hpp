@@ -46,7 +46,8 @@ struct DiscriminantVerdict {
 };
 
 /// The discriminant test on exact-double inputs (static filter), falling back to decide_position().
-DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p);
+/// `limit`: the pair size limit of that fallback (quadric.hpp).
+DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
 
 // ------------------------------------------------------------------------------------------------
 // Contact only: do the two surfaces meet?
@@ -62,7 +63,7 @@ struct ContactAnswer {
 
 /// Contact of the two surfaces: the discriminant test, then decide_position(), then (for an answer
 /// that is not decided because the body is not small) the exact inside certificate.
-ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p);
+ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
 
 /// The same with the paraboloid prepared once: Scene::early_out first (the cheapest certificate),
 /// then as contact(). Thread-safe (const).

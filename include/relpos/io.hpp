@@ -52,6 +52,10 @@ struct RenderOptions {
 /// degree_ftilde, f, s, multiple_roots and certificate. Key order is stable.
 std::string classification_json_text(const Classification& c, const RenderOptions& options = {});
 
+/// The minimal report of `relpos batch --evidence minimal` (without "id") as one line of JSON
+/// text: position, small, contact, rule, stage (the Python package's classify(evidence="minimal")).
+std::string minimal_json_text(const Verdict& v);
+
 /// The contact-only answer (doc/contact.md) as one line of JSON text: contact, position, rule,
 /// decided_by (decided_by(stage)).
 std::string contact_json_text(const ContactAnswer& a);
@@ -74,6 +78,7 @@ struct BatchOptions {
   bool contact_only = false;           ///< the contact answer of doc/contact.md
   bool numbers_as_doubles = false;     ///< each JSON number is the IEEE double nearest its text
   std::size_t max_line_bytes = kDefaultMaxLineBytes;
+  SizeLimit size_limit;  ///< the pair size limit (--max-bits)
   RenderOptions render;
   /// > 0: every answer ends with "margin" (margin.hpp, margin_json_text), its enclosure of relative
   /// width 2^-margin_bits; 0: no margin.

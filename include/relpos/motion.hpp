@@ -46,6 +46,7 @@
 
 #include "relpos/algebraic_real.hpp"
 #include "relpos/classify.hpp"
+#include "relpos/interrupt.hpp"
 #include "relpos/polynomials.hpp"
 #include "relpos/quadric.hpp"
 
@@ -171,14 +172,16 @@ std::string to_string(FirstContact::Kind kind);
 
 /// Certified first contact on [t0, t1]. Separation (E) and its end are decided for an ellipsoid of
 /// any size (math.md §6), so this needs no smallness. Throws InputError on invalid input
-/// (t0 > t1, a quaternion that vanishes on [t0, t1]).
+/// (t0 > t1, a quaternion that vanishes on [t0, t1]), and Interrupted when `interrupt` (if given)
+/// asks it to stop (cancelled, or past its time budget; relpos/interrupt.hpp).
 FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
-                           const Rational& t1);
+                           const Rational& t1, const Interrupt* interrupt = nullptr);
 
 /// Every change of position on [t0, t1], with the position on each open interval and at each
-/// instant, for an ellipsoid of any size (math.md §7). Throws InputError on invalid input and
-/// std::logic_error ("internal error") if an instant contradicts its neighbouring intervals.
+/// instant, for an ellipsoid of any size (math.md §7). Throws InputError on invalid input,
+/// Interrupted as first_contact, and std::logic_error ("internal error") if an instant contradicts
+/// its neighbouring intervals.
 Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
-                  const Rational& t1);
+                  const Rational& t1, const Interrupt* interrupt = nullptr);
 
 }  // namespace relpos

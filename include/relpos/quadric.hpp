@@ -177,8 +177,17 @@ class Paraboloid {
 /// Size limit on the *normalized* forms of a pair: each matrix divided by its own content (times the
 /// lcm of its denominators, then divided by the gcd of the resulting integers: its primitive integer
 /// form, unchanged by any rescaling of that matrix alone) must have entries of at most this many
-/// bits. Beyond it, exact evidence becomes slow (doc/cli.md, Limits).
+/// bits. A safe default: beyond it one pair's exact evidence takes from a tenth of a second to
+/// minutes (doc/cli.md, Limits, measured); a caller can raise it with SizeLimit.
 inline constexpr std::size_t kMaxNormalizedBits = 4096;
+
+/// The size limit a call applies (an options argument of classify, decide_position, the batch
+/// lines and the scenes): at least kMaxNormalizedBits, which every matrix of doubles and every
+/// number of the fast reader is known to pass without a check (`relpos ... --max-bits N`, the
+/// Python package's max_bits).
+struct SizeLimit {
+  std::size_t max_bits = kMaxNormalizedBits;
+};
 
 /// Bits of the largest entry of the primitive integer form of m (0 for the zero matrix).
 std::size_t normalized_bits(const Matrix4& m);
@@ -186,8 +195,10 @@ std::size_t normalized_bits(const Matrix4& m);
 /// max(normalized_bits(e), normalized_bits(p)): independent of how either matrix was scaled.
 std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p);
 
-/// Throws InputError ("numbers too large: ...", naming kMaxNormalizedBits) when
-/// normalized_pair_bits(e, p) > kMaxNormalizedBits.
-void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p);
+/// Throws InputError ("numbers too large: ...", naming the limit) when normalized_pair_bits(e, p) >
+/// limit.max_bits, and InputError when limit.max_bits < kMaxNormalizedBits (the limit is raised,
+/// never lowered). Returns a bound on normalized_pair_bits(e, p) that is exact when it exceeds
+/// kMaxNormalizedBits (0 for matrices known to be within it without a computation).
+std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
 
 }  // namespace relpos

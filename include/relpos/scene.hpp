@@ -78,6 +78,7 @@ struct SceneOptions {
   /// When set, the number of settled bodies is added to it as chunks complete (relaxed order), so
   /// another thread can draw a progress bar.
   std::atomic<std::size_t>* progress = nullptr;
+  SizeLimit size_limit;  ///< the pair size limit of the bodies sent to decide_position (quadric.hpp)
 };
 
 struct SceneResult {

@@ -12,6 +12,7 @@ the exact dyadic value they hold. doc/python.md describes the package.
     'I'
 """
 
+import collections.abc as _abc
 import json as _json
 import math as _math
 import operator as _operator
@@ -48,6 +49,7 @@ __all__ = [
     "POSITION_MEANINGS",
     "STAGE_NAMES",
     "INVALID",
+    "MAX_BITS",
     "plot",
     "distributed",
     "testing",
@@ -93,8 +95,9 @@ INVALID = _relpos._INVALID
 
 def _method(cls, name):
     def attach(function):
-        function.__qualname__ = "%s.%s" % (cls.__name__, name)
-        function.__name__ = name
+        inner = function.__func__ if isinstance(function, staticmethod) else function
+        inner.__qualname__ = "%s.%s" % (cls.__name__, name)  # help() shows the public name
+        inner.__name__ = name
         setattr(cls, name, function)
         return function
 
@@ -192,7 +195,19 @@ class _Answer:
         """From the fields of the CLI's JSON answer (as classify / contact return them)."""
         if _is_set(self, "_data"):
             raise TypeError("relpos.%s: the object is already built; make a new one" % type(self).__name__)
+        if not isinstance(fields, _abc.Mapping) or not all(isinstance(k, str) for k in fields):
+            raise TypeError(
+                "relpos.%s: fields: expected a mapping of str keys (the CLI's JSON answer), got %s"
+                % (type(self).__name__, type(fields).__name__)
+            )
         self._data = dict(fields)
+
+    @classmethod
+    def _of(cls, fields):
+        """An answer from the fields the library wrote (no check: they are the CLI's)."""
+        answer = cls.__new__(cls)
+        answer._data = fields
+        return answer
 
     @property
     def _fields(self):
@@ -221,7 +236,19 @@ def _is_set(obj, slot):
 
 
 def _field(name, doc):
-    return property(lambda self: self._fields[name], doc=doc)
+    def get(self):
+        fields = self._fields
+        if name not in fields:
+            raise AttributeError(
+                "relpos.%s has no %r: the answer does not hold it%s"
+                % (type(self).__name__, name, _MINIMAL_NOTE if type(self) is Classification else "")
+            )
+        return fields[name]
+
+    return property(get, doc=doc)
+
+
+_MINIMAL_NOTE = " (evidence='minimal' gives position, small, contact, rule and stage; classify with evidence='full')"
 
 
 class Certificate(_Answer):
@@ -377,6 +404,22 @@ def _check_pair(e, p, function):
         raise TypeError("%s: p must be a relpos.Paraboloid, got %s" % (function, type(p).__name__))
 
 
+#: The pair size limit's default and largest value (`relpos ... --max-bits`, doc/cli.md, Limits).
+MAX_BITS = _relpos._MAX_BITS
+_LARGEST_MAX_BITS = 1 << 32
+
+
+def _max_bits(max_bits):
+    if max_bits is MAX_BITS:  # the default
+        return max_bits
+    if isinstance(max_bits, bool) or not hasattr(type(max_bits), "__index__"):
+        raise TypeError("max_bits: expected an int from %d to 2**32, got %s" % (MAX_BITS, type(max_bits).__name__))
+    max_bits = _operator.index(max_bits)
+    if not MAX_BITS <= max_bits <= _LARGEST_MAX_BITS:
+        raise ValueError("max_bits: expected an int from %d (the default) to 2**32, got %d" % (MAX_BITS, max_bits))
+    return max_bits
+
+
 def classify(
     e: Ellipsoid,
     p: Paraboloid,
@@ -384,25 +427,29 @@ def classify(
     margin: bool = False,
     margin_bits: int = 40,
     meta: Any = None,
+    max_bits: int = MAX_BITS,
 ) -> Classification:
     """Classify ellipsoid `e` against paraboloid `p` exactly.
 
     evidence="full" gives the same fields as `relpos batch` / `relpos classify --json` (exact
-    coefficients of f and s, multiple roots, rho, the certificate); "minimal" only what the decision
-    needs. margin=True adds the field "margin" (`relpos batch --margin`, the Margin s*: how far the
-    answer is from changing), its enclosure of relative width 2**-margin_bits (1 to 1000). meta: any
-    JSON value, carried through untouched as the answer's last member "meta" (as `relpos batch`
-    echoes a line's "meta"). Raises ValueError on bad input (with the CLI's message). The GIL is
-    released.
+    coefficients of f and s, multiple roots, rho, the certificate); "minimal" the fields of `relpos
+    batch --evidence minimal` (position, small, contact, rule, stage). margin=True adds the field
+    "margin" (`relpos batch --margin`, the Margin s*: how far the answer is from changing), its
+    enclosure of relative width 2**-margin_bits (1 to 1000). meta: any JSON value, carried through
+    untouched as the answer's last member "meta" (as `relpos batch` echoes a line's "meta"). Raises
+    ValueError on bad input (with the CLI's message), also for a pair beyond the size limit max_bits
+    (`--max-bits`: a safe default that can be raised; doc/cli.md, "Limits", measures the cost). The
+    GIL is released; one pair is not interrupted by Ctrl-C (within the default limit it takes well
+    under a second).
     """
     _check_pair(e, p, "classify")
-    if evidence not in ("full", "minimal"):
-        raise ValueError("evidence: expected 'full' or 'minimal', got %r" % (evidence,))
+    if not isinstance(evidence, str) or evidence not in ("full", "minimal"):
+        raise ValueError("evidence: expected 'full' or 'minimal', got %s" % _shown(evidence))
     if not isinstance(margin, bool):
         raise TypeError("margin: expected a bool, got %s" % type(margin).__name__)
     if isinstance(margin_bits, bool) or not isinstance(margin_bits, int):
         raise TypeError("margin_bits: expected an int, got %s" % type(margin_bits).__name__)
-    fields = _json.loads(_relpos._classify_json(e, p, evidence == "full"))
+    fields = _json.loads(_relpos._classify_json(e, p, evidence == "full", _max_bits(max_bits)))
     if margin:
         fields["margin"] = _json.loads(_relpos._margin_json(e, p, margin_bits))
     if meta is not None:
@@ -410,7 +457,7 @@ def classify(
             fields["meta"] = _json.loads(_json.dumps(meta))
         except (TypeError, ValueError) as err:
             raise TypeError("meta: expected a JSON value (dict, list, str, number, bool, None): %s" % err)
-    return Classification(fields)
+    return Classification._of(fields)
 
 
 def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
@@ -421,12 +468,26 @@ def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
     _check_pair(e, p, "verify")
     if not isinstance(answer, Classification):
         raise TypeError("verify: answer must be a relpos.Classification, got %s" % type(answer).__name__)
-    certificate = answer.certificate
+    fields = answer._fields
+    position = fields.get("position")
+    if position not in POSITION_NAMES:
+        # Not an answer of relpos: nothing to check the certificate against.
+        raise CertificateError("answer.position: expected one of I, TI, C, TE, E, got %s" % _shown(position))
+    certificate = fields.get("certificate")
     if certificate is None:
         raise ValueError("verify: the answer has no certificate (classify with evidence='full')")
-    reason = _relpos._verify(e, p, answer.position, _json.dumps(certificate.to_json()))
+    if not isinstance(certificate, _abc.Mapping):
+        raise CertificateError("%s: answer.certificate: expected a JSON object, got %s" % (position, _shown(certificate)))
+    try:
+        text = _json.dumps(certificate, allow_nan=False)
+    except (TypeError, ValueError) as err:
+        raise CertificateError("%s: answer.certificate: not JSON: %s" % (position, err)) from None
+    try:
+        reason = _relpos._verify(e, p, position, text)
+    except ValueError as err:  # the certificate's JSON does not have the form of doc/certificates.md
+        raise CertificateError("%s: %s" % (position, err)) from None
     if reason is not None:
-        raise CertificateError(answer.position + ": " + reason)
+        raise CertificateError(position + ": " + reason)
     margin = answer.margin
     if margin is not None:
         reason = _relpos._verify_margin(e, p, _json.dumps(margin.as_dict()))
@@ -434,11 +495,18 @@ def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
             raise CertificateError("margin: " + reason)
 
 
-def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer:
+def _shown(value, limit=60):
+    """A short repr of a value for a message (never a whole array or answer)."""
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def contact(e: Ellipsoid, p: Paraboloid, max_bits: int = MAX_BITS) -> ContactAnswer:
     """Whether the surfaces meet, certified like the position and also for bodies that are not small
-    (doc/contact.md; `relpos classify --contact-only`). The GIL is released."""
+    (doc/contact.md; `relpos classify --contact-only`). max_bits: the size limit, as for classify.
+    The GIL is released."""
     _check_pair(e, p, "contact")
-    return ContactAnswer(_json.loads(_relpos._contact_json(e, p)))
+    return ContactAnswer._of(_json.loads(_relpos._contact_json(e, p, _max_bits(max_bits))))
 
 
 # ------------------------------------------------------------------------------------------------
@@ -446,12 +514,16 @@ def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer:
 # ------------------------------------------------------------------------------------------------
 
 
+#: The most threads a call takes (`relpos batch --threads`' limit); 0 means every core.
+_MAX_THREADS = 1024
+
+
 def _thread_count(threads):
     if isinstance(threads, bool) or not hasattr(type(threads), "__index__"):
-        raise TypeError("threads: expected a non-negative int, got %s" % type(threads).__name__)
+        raise TypeError("threads: expected an int from 0 to %d, got %s" % (_MAX_THREADS, type(threads).__name__))
     threads = _operator.index(threads)
-    if threads < 0:
-        raise ValueError("threads: expected a non-negative int, got %d" % threads)
+    if not 0 <= threads <= _MAX_THREADS:
+        raise ValueError("threads: expected an int from 0 to %d (0: every core), got %d" % (_MAX_THREADS, threads))
     return threads
 
 
@@ -461,6 +533,7 @@ def decide_positions(
     threads: int = 0,
     errors: Literal["raise", "code"] = "raise",
     symmetrize: Optional[Literal["upper"]] = None,
+    max_bits: int = MAX_BITS,
 ) -> numpy.ndarray:
     """Positions of many pairs given as numpy matrices or parameters, exactly, on all cores.
 
@@ -476,15 +549,18 @@ def decide_positions(
     into POSITION_NAMES (0 = "I" ... 4 = "E"). threads=0 uses every core; the GIL is released while
     deciding. errors="raise" raises ValueError naming the first invalid pair ("E[17]: ellipsoid:
     ...", and for a matrix what to pass instead); errors="code" gives such a pair the code INVALID
-    (-1) instead.
+    (-1) instead. max_bits: the size limit, as for classify (long doubles and 64-bit integers may
+    exceed it). Ctrl-C stops the call (KeyboardInterrupt) within a fraction of a second.
     """
-    if errors not in ("raise", "code"):
-        raise ValueError("errors: expected 'raise' or 'code', got %r" % (errors,))
+    if not isinstance(errors, str) or errors not in ("raise", "code"):
+        raise ValueError("errors: expected 'raise' or 'code', got %s" % _shown(errors))
     if symmetrize not in (None, "upper"):
         raise ValueError("symmetrize: expected None or 'upper', got %r" % (symmetrize,))
     E = dict(E) if isinstance(E, Mapping) else E
     P = dict(P) if isinstance(P, Mapping) else P
-    return _relpos._decide_positions(E, P, _thread_count(threads), errors == "raise", symmetrize == "upper")
+    return _relpos._decide_positions(
+        E, P, _thread_count(threads), errors == "raise", symmetrize == "upper", _max_bits(max_bits)
+    )
 
 
 class SceneResult:
@@ -534,18 +610,20 @@ def scene(
     bodies: Union[numpy.ndarray, Sequence[Ellipsoid]],
     threads: int = 0,
     early_outs: bool = True,
+    max_bits: int = MAX_BITS,
 ) -> SceneResult:
     """Many bodies against one paraboloid with the library's scene (`relpos scene`): the paraboloid is
     prepared once, certified early-outs settle most bodies without the classifier, the rest go
     through it, on `threads` threads (0 = every core; the GIL is released).
 
     bodies: a sequence of Ellipsoid, or matrices (n, 4, 4) read exactly as by decide_positions (a
-    bad one raises ValueError "E[i]: ellipsoid: ..."). early_outs=False sends every body through the
-    classifier (the same positions).
+    bad one raises ValueError "bodies[i]: ellipsoid: ..."). early_outs=False sends every body through
+    the classifier (the same positions). max_bits: the size limit, as for classify ("bodies[i]:
+    numbers too large: ..."). Ctrl-C stops the call (KeyboardInterrupt) within a fraction of a second.
     """
     if not isinstance(p, Paraboloid):
         p = Paraboloid(p)
-    return SceneResult(*_relpos._scene(p, bodies, _thread_count(threads), bool(early_outs)))
+    return SceneResult(*_relpos._scene(p, bodies, _thread_count(threads), bool(early_outs), _max_bits(max_bits)))
 
 
 # ------------------------------------------------------------------------------------------------
@@ -557,11 +635,28 @@ _MOTION_DOC = """
     c(t) is 3 polynomials in t, rotation q(t) = (w, x, y, z) 4 polynomials (the rotation
     R(q)/|q|^2; q must not vanish on [t0, t1]), each a list of exact coefficients, lowest degree
     first (["-9/4", 0, 1] is t^2 - 9/4), or one number. pivot: "origin", "center" (of e) or a
-    point. The paraboloid is fixed. Instants are exact (relpos.Instant). The CLI's limits apply
-    (degree 12, 512-bit coefficients; doc/cli.md); the GIL is released.
+    point ("centre" is accepted too). The paraboloid is fixed. Instants are exact (relpos.Instant).
+    The CLI's limits apply (degree 12, 512-bit coefficients; doc/cli.md), and its time budget:
+    max_seconds (default 60, as `relpos motion --max-seconds`; None: none) ends the computation with
+    TimeoutError. The GIL is released; Ctrl-C stops the computation (KeyboardInterrupt).
 """
 
-Pivot = Union[Literal["origin", "center"], Vector3]
+Pivot = Union[Literal["origin", "center", "centre"], Vector3]
+
+#: `relpos motion --max-seconds`' default and largest value.
+_DEFAULT_MAX_SECONDS = 60
+_LARGEST_MAX_SECONDS = 86400
+
+
+def _max_seconds(value):
+    if value is None:
+        return 0.0
+    if isinstance(value, bool) or not isinstance(value, (int, float, Fraction, Decimal, numpy.integer, numpy.floating)):
+        raise TypeError("max_seconds: expected a number of seconds or None, got %s" % type(value).__name__)
+    if not 0 < value <= _LARGEST_MAX_SECONDS:
+        raise ValueError("max_seconds: expected more than 0 and at most %d seconds (or None), got %s"
+                         % (_LARGEST_MAX_SECONDS, value))
+    return float(value)
 
 
 def _motion_function(name, compute, result, summary):
@@ -575,9 +670,10 @@ def _motion_function(name, compute, result, summary):
         translation: Optional[Sequence[TimePolynomial]] = None,
         rotation: Optional[Sequence[TimePolynomial]] = None,
         pivot: Pivot = "origin",
+        max_seconds: Optional[float] = _DEFAULT_MAX_SECONDS,
     ) -> result:
         _check_pair(e, p, name)
-        return compute(e, p, t0, t1, translation, rotation, pivot)
+        return compute(e, p, t0, t1, translation, rotation, pivot, _max_seconds(max_seconds))
 
     function.__name__ = function.__qualname__ = name
     function.__doc__ = summary + "\n" + _MOTION_DOC
@@ -601,11 +697,55 @@ for _cls in (Instant, FirstContact, Timeline):
     _cls.__module__ = "relpos"
 
 
+def _made_by_relpos(cls, makers):
+    """cls(...) raises a TypeError saying where its objects come from (pybind11 would say "No
+    constructor defined" with the extension's module name)."""
+
+    @_method(cls, "__init__")
+    def __init__(self) -> None:
+        raise TypeError("relpos.%s objects are made by %s, not directly" % (cls.__name__, makers))
+
+    __init__.__doc__ = "Not callable: relpos.%s objects are made by %s." % (cls.__name__, makers)
+
+
+_made_by_relpos(Instant, "relpos.first_contact and relpos.timeline")
+_made_by_relpos(FirstContact, "relpos.first_contact")
+_made_by_relpos(Timeline, "relpos.timeline")
+
+
 
 @_method(Instant, "decimal")
 def _decimal(self, digits: int = 12) -> str:
     """The correctly rounded decimal with `digits` significant digits (1..1000)."""
-    return self._decimal(_operator.index(digits))
+    if isinstance(digits, bool) or not hasattr(type(digits), "__index__"):
+        raise TypeError("digits: expected an int from 1 to 1000, got %s" % type(digits).__name__)
+    digits = _operator.index(digits)
+    if not 1 <= digits <= 1000:
+        raise ValueError("digits: expected an int from 1 to 1000, got %d" % digits)
+    return self._decimal(digits)
+
+
+def _instant_order(name, holds):
+    def method(self, other):
+        c = self._compare(other)
+        return NotImplemented if c is None else holds(c)
+
+    method.__name__ = name
+    method.__qualname__ = "Instant." + name
+    method.__doc__ = "Exact comparison with an Instant or a real number (int, float, Fraction, Decimal)."
+    setattr(Instant, name, method)
+
+
+# Exact order (relpos::AlgebraicReal::compare): equal algebraic instants compare equal.
+for _name, _holds in (
+    ("__eq__", lambda c: c == 0),
+    ("__ne__", lambda c: c != 0),
+    ("__lt__", lambda c: c < 0),
+    ("__le__", lambda c: c <= 0),
+    ("__gt__", lambda c: c > 0),
+    ("__ge__", lambda c: c >= 0),
+):
+    _instant_order(_name, _holds)
 
 
 @_method(Timeline, "position_at")

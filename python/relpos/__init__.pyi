@@ -15,12 +15,13 @@ Vector3 = Union[Sequence[Number], numpy.ndarray]
 Matrix = Union[Sequence[Sequence[Number]], numpy.ndarray]
 Description = Union[Matrix, Mapping[str, Any]]
 TimePolynomial = Union[Sequence[Number], Number]
-Pivot = Union[Literal["origin", "center"], Vector3]
+Pivot = Union[Literal["origin", "center", "centre"], Vector3]
 
 POSITION_NAMES: tuple[str, str, str, str, str]
 STAGE_NAMES: tuple[str, ...]
 POSITION_MEANINGS: dict[str, str]
 INVALID: int
+MAX_BITS: int
 
 class _Quadric:
     def matrix(self) -> list[list[Fraction]]: ...
@@ -120,12 +121,18 @@ class Instant:
     def polynomial(self) -> list[int]: ...
     def decimal(self, digits: int = 12) -> str: ...
     def __float__(self) -> float: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __lt__(self, other: Union[Instant, int, float, Fraction, Decimal]) -> bool: ...
+    def __le__(self, other: Union[Instant, int, float, Fraction, Decimal]) -> bool: ...
+    def __gt__(self, other: Union[Instant, int, float, Fraction, Decimal]) -> bool: ...
+    def __ge__(self, other: Union[Instant, int, float, Fraction, Decimal]) -> bool: ...
+    def __hash__(self) -> int: ...
 
 class FirstContact:
     kind: Literal["contact", "none", "not-exterior-at-start"]
     start_position: str
     time: Optional[Instant]
-    position: str
+    position: Optional[str]
     how: str
 
 class Timeline:
@@ -142,28 +149,31 @@ def classify(
     margin: bool = False,
     margin_bits: int = 40,
     meta: Any = None,
+    max_bits: int = 4096,
 ) -> Classification: ...
 def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None: ...
-def contact(e: Ellipsoid, p: Paraboloid) -> ContactAnswer: ...
+def contact(e: Ellipsoid, p: Paraboloid, max_bits: int = 4096) -> ContactAnswer: ...
 def decide_positions(
     E: Union[numpy.ndarray, Mapping[str, Any]],
     P: Union[numpy.ndarray, Mapping[str, Any]],
     threads: int = 0,
     errors: Literal["raise", "code"] = "raise",
     symmetrize: Optional[Literal["upper"]] = None,
+    max_bits: int = 4096,
 ) -> numpy.ndarray: ...
 def scene(
     p: Union[Paraboloid, Description],
     bodies: Union[numpy.ndarray, Sequence[Ellipsoid]],
     threads: int = 0,
     early_outs: bool = True,
+    max_bits: int = 4096,
 ) -> SceneResult: ...
 def first_contact(
     e: Ellipsoid, p: Paraboloid, t0: Number, t1: Number, translation: Optional[Sequence[TimePolynomial]] = None,
-    rotation: Optional[Sequence[TimePolynomial]] = None, pivot: Pivot = "origin",
+    rotation: Optional[Sequence[TimePolynomial]] = None, pivot: Pivot = "origin", max_seconds: Optional[float] = 60,
 ) -> FirstContact: ...
 def timeline(
     e: Ellipsoid, p: Paraboloid, t0: Number, t1: Number, translation: Optional[Sequence[TimePolynomial]] = None,
-    rotation: Optional[Sequence[TimePolynomial]] = None, pivot: Pivot = "origin",
+    rotation: Optional[Sequence[TimePolynomial]] = None, pivot: Pivot = "origin", max_seconds: Optional[float] = 60,
 ) -> Timeline: ...
 def plot(e: Ellipsoid, p: Paraboloid, ax: Any = None, **kwargs: Any) -> Any: ...

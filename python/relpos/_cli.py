@@ -1,4 +1,6 @@
-"""Where the relpos command-line tool is: the one lookup (relpos.distributed runs `relpos batch`)."""
+"""Where the relpos command-line tool is: the one lookup, for the tests and benchmarks that compare the
+package with `relpos batch` (the package itself, relpos.distributed included, answers in-process
+through its extension and never runs the CLI)."""
 
 import os
 import shutil

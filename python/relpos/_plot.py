@@ -1,124 +1,229 @@
-"""relpos.plot: a picture of a pair (matplotlib, 3D axes)."""
+"""relpos.plot: a picture of a pair (matplotlib, 3D axes).
+
+Any pair the library decides can be drawn, whatever its scale (a sphere of radius 1e-160 at the
+vertex, a sphere at height 1e160): the geometry is computed in a frame centred on the ellipsoid and
+measured in units of its size, x = c + s u, from the exact matrices (fractions), and only then
+turned into floating point, so no intermediate overflows or underflows. The axes show x, y, z when
+those floats can be drawn as they are; otherwise they show u, labelled with the centre c and the
+unit s.
+"""
 
 import math
+from decimal import Context, Decimal
+from fractions import Fraction
 
 import numpy
 
-
-def _float_matrix(q):
-    return numpy.array([[float(x) for x in row] for row in q.matrix()], dtype=float)
-
-
-def ellipsoid_frame(e):
-    """(centre, semi-axes, axes as columns) of an Ellipsoid, in floating point (for drawing)."""
-    m = _float_matrix(e)
-    M, v, v0 = m[:3, :3], m[:3, 3], m[3, 3]
-    c = -numpy.linalg.solve(M, v)
-    k = c @ M @ c - v0
-    w, V = numpy.linalg.eigh(M)
-    return c, numpy.sqrt(k / w), V
+#: Half the width of the view around the ellipsoid when the cup is not drawn whole, in its size.
+_WINDOW = 3.0
 
 
-def ellipsoid_surface(e, n=40):
-    """Grid (X, Y, Z) of the ellipsoid surface."""
-    c, semi, V = ellipsoid_frame(e)
-    u, t = numpy.meshgrid(numpy.linspace(0, 2 * math.pi, n), numpy.linspace(0, math.pi, n // 2))
-    unit = numpy.stack([numpy.cos(u) * numpy.sin(t), numpy.sin(u) * numpy.sin(t), numpy.cos(t)])
-    pts = numpy.einsum("ij,jkl->ikl", V @ numpy.diag(semi), unit) + c[:, None, None]
-    return pts[0], pts[1], pts[2]
+class PlotError(ValueError):
+    """The pair cannot be drawn in floating point (the message says why)."""
 
 
-def _paraboloid_frame(p):
-    """Eigen-frame of a paraboloid: (U, a1, a2, b) with U's first column along the axis (A = U diag(0,
-    a1, a2) U^T) and b = U^T (the last column's first three entries)."""
-    m = _float_matrix(p)
-    A, b = m[:3, :3], m[:3, 3]
-    w, U = numpy.linalg.eigh(A)  # ascending: w[0] = 0 along the axis
-    return U, w[1], w[2], U.T @ b, m[3, 3]
+def _log2(q):
+    """About log2 |q| for a non-zero Fraction (an integer, within 1)."""
+    return abs(q.numerator).bit_length() - q.denominator.bit_length()
 
 
-def paraboloid_patch(p, center, half_width, n=40):
-    """Grid (X, Y, Z) of the paraboloid over a disc of radius half_width around `center`,
-    measured across the axis."""
-    U, a1, a2, bu, b0 = _paraboloid_frame(p)
-    cu = U.T @ center
-    r, t = numpy.meshgrid(numpy.linspace(0, half_width, n // 2), numpy.linspace(0, 2 * math.pi, n))
-    y1 = cu[1] + r * numpy.cos(t)
-    y2 = cu[2] + r * numpy.sin(t)
-    # a1 y1^2 + a2 y2^2 + 2 (b0' y0 + b1' y1 + b2' y2) + b0 = 0, solved for y0 along the axis.
-    y0 = -(a1 * y1**2 + a2 * y2**2 + 2 * bu[1] * y1 + 2 * bu[2] * y2 + b0) / (2 * bu[0])
-    pts = numpy.einsum("ij,jkl->ikl", U, numpy.stack([y0, y1, y2]))
-    return pts[0], pts[1], pts[2]
+def _ratio(a, b):
+    """The float a / b of two Fractions, b != 0; 0.0 when it underflows, +-inf when it overflows."""
+    q = a / b
+    if q == 0:
+        return 0.0
+    e = _log2(q)
+    if e > 1023:
+        return math.copysign(math.inf, q)
+    if e < -1080:
+        return 0.0
+    return float(q)
 
 
-def paraboloid_cup(p, depth, n=40):
-    """Grid (X, Y, Z) of the cup of the paraboloid from its vertex to `depth` along its axis."""
-    U, a1, a2, bu, b0 = _paraboloid_frame(p)
-    # With u_i = y_i + b_i'/a_i: y0 = y0v + s^2 / (-2 b0') where s^2 = a1 u1^2 + a2 u2^2.
-    v1, v2 = -bu[1] / a1, -bu[2] / a2
-    y0v = -(b0 - bu[1] ** 2 / a1 - bu[2] ** 2 / a2) / (2 * bu[0])
-    s, t = numpy.meshgrid(numpy.linspace(0, math.sqrt(2 * abs(bu[0]) * depth), n // 2), numpy.linspace(0, 2 * math.pi, n))
-    y1 = v1 + s * numpy.cos(t) / math.sqrt(a1)
-    y2 = v2 + s * numpy.sin(t) / math.sqrt(a2)
-    y0 = y0v - s**2 / (2 * bu[0])
-    pts = numpy.einsum("ij,jkl->ikl", U, numpy.stack([y0, y1, y2]))
-    return pts[0], pts[1], pts[2]
+def _text(q):
+    """A short decimal text of a Fraction of any size ("1.5e+160")."""
+    if q == 0:
+        return "0"
+    d = Context(prec=4).divide(Decimal(q.numerator), Decimal(q.denominator))
+    return "%s" % d.normalize(Context(prec=4))
 
 
-def _cup_depth(p, e):
-    """Depth (along the axis, from the vertex) that the cup needs to reach past the ellipsoid, the
-    cup's rim radius across the axis at that depth, and the ellipsoid centre's distance from the axis."""
-    U, a1, a2, bu, b0 = _paraboloid_frame(p)
-    c, semi, V = ellipsoid_frame(e)
-    size = float(semi.max())
-    axis = U[:, 0]
-    opening = -math.copysign(1.0, bu[0])  # y0 grows with s^2 when b0' < 0
-    y0v = -(b0 - bu[1] ** 2 / a1 - bu[2] ** 2 / a2) / (2 * bu[0])
-    reach = math.sqrt(float(axis @ V @ numpy.diag(semi**2) @ V.T @ axis))  # ellipsoid extent along the axis
-    top = opening * (float(axis @ c) - y0v) + reach
-    depth = max(top + 0.3 * size, 1.5 * size)
-    rim = math.sqrt(2 * abs(bu[0]) * depth / min(a1, a2))
-    across = U[:, 1:].T @ c - numpy.array([-bu[1] / a1, -bu[2] / a2])
-    return depth, rim, float(numpy.linalg.norm(across))
+def _solve3(m, v):
+    """m^-1 v for a 3x3 matrix of Fractions (Cramer's rule)."""
+
+    def det(a):
+        return (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+                + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]))
+
+    d = det(m)
+    out = []
+    for k in range(3):
+        a = [[v[i] if j == k else m[i][j] for j in range(3)] for i in range(3)]
+        out.append(det(a) / d)
+    return out
 
 
-def plot(e, p, ax=None, classification=None, half_width=None, title=None):
+def _normalized(rows):
+    """A matrix of Fractions divided by its largest entry, as floats, and that entry."""
+    top = max(abs(x) for row in rows for x in row)
+    return numpy.array([[_ratio(x, top) for x in row] for row in rows]), top
+
+
+class _Frame:
+    """The pair in the frame x = c + s u of the ellipsoid (c its centre, s a power of two near its
+    largest semi-axis), every number computed exactly before it becomes a float."""
+
+    def __init__(self, e, p):
+        E, P = e.matrix(), p.matrix()
+        M = [row[:3] for row in E[:3]]
+        b = [E[i][3] for i in range(3)]
+        self.c = [-x for x in _solve3(M, b)]  # the centre: M c = -b
+        k = -(sum(b[i] * self.c[i] for i in range(3)) + E[3][3])  # (x - c)^T M (x - c) = k
+        Mn, m = _normalized(M)
+        w, V = numpy.linalg.eigh(Mn)  # M = m V diag(w) V^T
+        if not (numpy.all(numpy.isfinite(w)) and w.min() > 0):
+            raise PlotError("plot: the ellipsoid's axes are too unequal to draw in floating point")
+        # semi-axis_i^2 = (k / m) / w_i; s = 2^j near the largest one.
+        km = k / m
+        j = (_log2(km) - math.floor(math.log2(w.min()))) // 2
+        self.s = Fraction(2) ** j
+        self.semi = numpy.sqrt(_ratio(km, self.s * self.s) / w)  # in units of s
+        self.axes = V
+        if not numpy.all(numpy.isfinite(self.semi)):
+            raise PlotError("plot: the ellipsoid's axes are too unequal to draw in floating point")
+        # The paraboloid in u: s^2 u^T A u + 2 s g^T u + h = 0 with g = A c + b_P, h = P(c); each term
+        # divided by the largest of them (the small ones may become 0: negligible at this scale).
+        A = [row[:3] for row in P[:3]]
+        bp = [P[i][3] for i in range(3)]
+        g = [sum(A[i][j] * self.c[j] for j in range(3)) + bp[i] for i in range(3)]
+        h = sum(self.c[i] * (g[i] + bp[i]) for i in range(3)) + P[3][3]
+        An, a = _normalized(A)
+        quad = self.s * self.s * a
+        scale = max([abs(quad)] + [abs(2 * self.s * x) for x in g] + [abs(h)])
+        wa, U = numpy.linalg.eigh(An)  # ascending: wa[0] = 0 along the axis
+        self.U = U
+        self.a = wa[1:] * _ratio(quad, scale)  # y0 along the axis, y1, y2 across it
+        lin = numpy.array([_ratio(2 * self.s * x, scale) for x in g])
+        self.l = U.T @ lin
+        self.h = _ratio(h, scale)
+        if self.l[0] == 0 or not numpy.all(numpy.isfinite(self.l)):
+            raise PlotError("plot: the paraboloid is too far from the ellipsoid, for its size, to draw in floating point")
+
+    def ellipsoid(self, n=40):
+        """Grid (X, Y, Z) of the ellipsoid surface, in u."""
+        t, v = numpy.meshgrid(numpy.linspace(0, 2 * math.pi, n), numpy.linspace(0, math.pi, n // 2))
+        unit = numpy.stack([numpy.cos(t) * numpy.sin(v), numpy.sin(t) * numpy.sin(v), numpy.cos(v)])
+        pts = numpy.einsum("ij,jkl->ikl", self.axes @ numpy.diag(self.semi), unit)
+        return pts[0], pts[1], pts[2]
+
+    def _on_surface(self, y1, y2):
+        """The paraboloid's points over (y1, y2) across its axis, in u."""
+        y0 = -(self.a[0] * y1**2 + self.a[1] * y2**2 + self.l[1] * y1 + self.l[2] * y2 + self.h) / self.l[0]
+        pts = numpy.einsum("ij,jkl->ikl", self.U, numpy.stack([y0, y1, y2]))
+        return pts[0], pts[1], pts[2]
+
+    def cup(self, n=40):
+        """The cup from its vertex to just past the ellipsoid, in u, or None when the whole cup would
+        dwarf the ellipsoid (or cannot be computed at this scale)."""
+        if min(self.a) <= 0:
+            return None
+        with numpy.errstate(all="ignore"):
+            v1, v2 = -self.l[1] / (2 * self.a[0]), -self.l[2] / (2 * self.a[1])  # the vertex across the axis
+            y0v = -(self.h - self.a[0] * v1**2 - self.a[1] * v2**2) / self.l[0]
+            opening = -math.copysign(1.0, self.l[0])  # y0 grows inside the cup
+            reach = math.sqrt(float(self.U[:, 0] @ self.axes @ numpy.diag(self.semi**2) @ self.axes.T @ self.U[:, 0]))
+            size = float(self.semi.max())
+            depth = max(opening * (0.0 - y0v) + reach + 0.3 * size, 1.5 * size)  # the centre is u = 0
+            rim = math.sqrt(abs(self.l[0]) * depth / min(self.a))
+            off_axis = math.hypot(v1, v2)
+        if not all(map(math.isfinite, (v1, v2, y0v, depth, rim))) or rim > 10 * size + 2 * off_axis:
+            return None
+        r, t = numpy.meshgrid(numpy.linspace(0, math.sqrt(abs(self.l[0]) * depth), n // 2),
+                              numpy.linspace(0, 2 * math.pi, n))
+        return self._on_surface(v1 + r * numpy.cos(t) / numpy.sqrt(self.a[0]),
+                                v2 + r * numpy.sin(t) / numpy.sqrt(self.a[1]))
+
+    def patch(self, half_width, n=40):
+        """The paraboloid over a disc of radius half_width (in u) around the ellipsoid's centre, across
+        the axis; the points farther than the view along the axis are left out (NaN)."""
+        r, t = numpy.meshgrid(numpy.linspace(0, half_width, n // 2), numpy.linspace(0, 2 * math.pi, n))
+        X, Y, Z = self._on_surface(r * numpy.cos(t), r * numpy.sin(t))
+        far = (numpy.abs(X) > half_width) | (numpy.abs(Y) > half_width) | (numpy.abs(Z) > half_width)
+        for a in (X, Y, Z):
+            a[far] = numpy.nan
+        return X, Y, Z
+
+    def world(self):
+        """(offset, unit) floats mapping u to x = offset + unit u, when they draw faithfully; None
+        otherwise: the centre too far for the size, or a unit whose fourth power leaves floating
+        point (matplotlib's shading multiplies four coordinate differences)."""
+        s = float(self.s) if -1000 < _log2(self.s) < 1000 else 0.0
+        if not 1e-50 < s < 1e50:
+            return None
+        if any(x != 0 and _log2(x / self.s) > 40 for x in self.c):  # x = c + s u would lose u's digits
+            return None
+        return numpy.array([float(x) for x in self.c]), s
+
+
+def plot(e, p, ax=None, classification=None, half_width=None, title=None, max_bits=None):
     """Draw paraboloid `p` near ellipsoid `e` and the ellipsoid, titled with the exact position.
 
     ax: a 3D matplotlib axes (default: a new figure). classification: a relpos.Classification to
-    use instead of classifying again. half_width: radius of the paraboloid patch across its axis
-    (default: three times the largest semi-axis). Returns ax.
+    use instead of classifying again (max_bits: the size limit of that classification). half_width:
+    radius of the paraboloid patch across its axis (default: three times the largest semi-axis).
+    Returns ax. Raises relpos._plot.PlotError (a ValueError) saying why when the pair cannot be
+    drawn in floating point (axes of the ellipsoid differing by hundreds of orders of magnitude).
     """
     import matplotlib.pyplot as plt
 
-    from . import POSITION_MEANINGS, classify
+    from . import MAX_BITS, POSITION_MEANINGS, classify
 
-    c = classification if classification is not None else classify(e, p, evidence="minimal")
+    c = classification
+    if c is None:
+        c = classify(e, p, evidence="minimal", max_bits=MAX_BITS if max_bits is None else max_bits)
+    frame = _Frame(e, p)
+    world = frame.world()
+    cup = frame.cup() if half_width is None else None
+    if cup is not None:
+        X, Y, Z = cup  # the whole cup, from the vertex to past the ellipsoid
+    else:
+        h = _WINDOW * float(frame.semi.max())
+        if half_width is not None:
+            h = half_width / world[1] if world else half_width
+        X, Y, Z = frame.patch(h)
+    X2, Y2, Z2 = frame.ellipsoid()
+    if world is not None:  # x = offset + unit u
+        (ox, oy, oz), unit = world
+        X, Y, Z, X2, Y2, Z2 = (ox + unit * X, oy + unit * Y, oz + unit * Z, ox + unit * X2, oy + unit * Y2,
+                               oz + unit * Z2)
     if ax is None:
         fig = plt.figure(figsize=(5, 5))
         ax = fig.add_subplot(projection="3d")
-    centre, semi, _ = ellipsoid_frame(e)
-    depth, rim, off_axis = _cup_depth(p, e)
-    if half_width is None and rim <= 10 * float(semi.max()) + 2 * off_axis:
-        X, Y, Z = paraboloid_cup(p, depth)  # the whole cup, from the vertex to past the ellipsoid
-    else:
-        h = half_width if half_width is not None else 3.0 * float(semi.max())
-        X, Y, Z = paraboloid_patch(p, centre, h)
-    ax.plot_surface(X, Y, Z, color="tab:blue", alpha=0.3, linewidth=0.3, edgecolor="navy", shade=True)
-    X2, Y2, Z2 = ellipsoid_surface(e)
+    shown = numpy.isfinite(Z)
+    if shown.any():
+        ax.plot_surface(X, Y, Z, color="tab:blue", alpha=0.3, linewidth=0.3, edgecolor="navy", shade=True)
     ax.plot_surface(X2, Y2, Z2, color="tab:orange", alpha=0.6, linewidth=0, shade=True)
-    pts = numpy.concatenate([numpy.stack([a.ravel() for a in (X, Y, Z)]), numpy.stack([a.ravel() for a in (X2, Y2, Z2)])], axis=1)
+    pts = numpy.concatenate([numpy.stack([a[shown] for a in (X, Y, Z)]),
+                             numpy.stack([a.ravel() for a in (X2, Y2, Z2)])], axis=1)
     lo, hi = pts.min(axis=1), pts.max(axis=1)
-    span = numpy.maximum(hi - lo, 1e-9 * max(1.0, float(numpy.abs(pts).max())))
-    ax.set_xlim(lo[0], hi[0])
-    ax.set_ylim(lo[1], hi[1])
-    ax.set_zlim(lo[2], hi[2])
-    ax.set_box_aspect(tuple(span))
-    ax.set_xlabel("x")
-    ax.set_ylabel("y")
-    ax.set_zlabel("z")
+    span = hi - lo
+    span = numpy.maximum(span, 1e-9 * max(span.max(), numpy.abs(pts).max()) or 1.0)
+    ax.set_xlim(lo[0], lo[0] + span[0])
+    ax.set_ylim(lo[1], lo[1] + span[1])
+    ax.set_zlim(lo[2], lo[2] + span[2])
+    ax.set_box_aspect(tuple(span / span.max()))
+    if world is not None:
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+        ax.set_zlabel("z")
+    else:
+        unit = _text(frame.s)
+        for axis, name, centre in zip((ax.set_xlabel, ax.set_ylabel, ax.set_zlabel), "xyz", frame.c):
+            axis("(%s - %s) / %s" % (name, _text(centre), unit), fontsize=7)
     if title is None:
         title = "%s: %s" % (c.position, POSITION_MEANINGS.get(c.position, c.rule))
+        if not shown.any():
+            title += "\n(the paraboloid lies outside this view of the ellipsoid)"
     ax.set_title(title)
     ax.tick_params(labelsize=7)
     return ax

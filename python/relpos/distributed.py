@@ -2,7 +2,7 @@
 
     from distributed import Client
     import relpos.distributed
-    client = Client("tcp://scheduler:8786")          # or None: the current client / a LocalCluster
+    client = Client("tcp://scheduler:8786")          # or None: the current client / a local cluster
     written = relpos.distributed.batch(["a.jsonl", "b.jsonl"], "answers/", client=client)
 
 Each input file is cut into blocks of whole lines (byte ranges ending after a '\\n'); the workers
@@ -11,86 +11,105 @@ and out_dir/<file name> receives exactly the bytes `relpos batch FILE` writes. I
 paths must be visible under the same names to the caller and the workers (a shared file system on a
 real cluster).
 
+Inputs: a regular file is read by the workers where it lies. Anything whose size cannot be trusted
+(a named pipe, a character device, a file of /proc or /sys, any file whose size reads 0) is first
+read to its end by the caller into a temporary file in out_dir, and that copy is answered: the same
+bytes as `relpos batch FILE`, which reads such files to their end too.
+
 Files: the caller creates every file the call writes (unique temporary names in out_dir, made by
-tempfile.mkstemp) before any task runs; tasks only open them, so a cancelled or killed task cannot
-leave a file behind. The temporaries become the outputs (os.replace) once every task has succeeded;
-on any failure the other tasks are cancelled and every temporary is removed.
+tempfile.mkstemp, of a fixed short length whatever the input's name) before any task runs; tasks
+only open them, so a cancelled or killed task cannot leave a file behind. The temporaries become
+the outputs (os.replace) once every task has succeeded; on any failure the other tasks are
+cancelled, every temporary is removed and out_dir holds what it held before.
 """
 
 import os
 import shutil
+import stat
 import tempfile
 
 from . import _relpos
 
 __all__ = ["batch"]
 
-_PIECE = 1 << 20  # bytes read, and lines answered, at a time in a block: bounds a task's memory
+_PIECE = 1 << 16  # bytes read, and lines answered, at a time in a block: bounds a task's memory and the
+# time a task takes to notice that the call was stopped (Ctrl-C)
 _BLOCKS_PER_THREAD = 8  # automatic block size: enough blocks to keep every worker thread busy
 _MIN_BLOCK = 1 << 18
 _MAX_BLOCK = 1 << 26
+_TEMPORARY = ".relpos-"  # prefix of every file the call creates in out_dir (then 8 random characters, ".tmp")
 
 
 def _changed(path):
     return RuntimeError("relpos.distributed.batch: %s changed while it was being answered" % path)
 
 
-def _count_newlines(path, begin, end):
-    """The '\\n' bytes in [begin, end) of the file (a task)."""
-    count = 0
+def _stopped(part):
+    """A task's file was removed by the caller: the call failed or was interrupted (Ctrl-C), stop."""
+    return not os.path.exists(part)
+
+
+def _scan_block(path, begin, end):
+    """The '\\n' bytes of [begin, end) of the file: (their number, the offset of the first one or -1,
+    whether the last byte is one) (a task)."""
+    count, first, last = 0, -1, False
     with open(path, "rb") as f:
         f.seek(begin)
-        while begin < end:
-            piece = f.read(min(_PIECE, end - begin))
+        pos = begin
+        while pos < end:
+            piece = f.read(min(_PIECE, end - pos))
             if not piece:
                 raise _changed(path)
+            if first < 0:
+                k = piece.find(b"\n")
+                if k >= 0:
+                    first = pos + k
             count += piece.count(b"\n")
-            begin += len(piece)
-    return count
+            pos += len(piece)
+            last = piece.endswith(b"\n")
+    return count, first, last
 
 
-def _first_line_numbers(counts):
-    """1 + the number of '\\n' before each block: the number of the line that starts at the block's
-    first byte, or that would."""
-    numbers = [1]
-    for c in counts[:-1]:
-        numbers.append(numbers[-1] + c)
-    return numbers
+def _ranges(size, block, scans):
+    """The byte range of whole lines each block answers, and the number of its first line, from the
+    blocks' scans: a block answers the lines that start in it, so a line is read by one task only,
+    and a block that starts inside a line skips to its end without reading it (the scans located
+    every '\\n'). Blocks that start no line are left out. [(start, end, first line number)]."""
+    starts = []
+    next_newline = -1  # the first '\n' at or after the current block, scanning from the end
+    for k in range(len(scans) - 1, -1, -1):
+        if scans[k][1] >= 0:
+            next_newline = scans[k][1]
+        begin = k * block
+        if k == 0 or scans[k - 1][2]:
+            starts.append((begin, 0))  # the file's start, or just after a '\n' ending the previous block
+        elif next_newline >= 0:
+            starts.append((next_newline + 1, 1))  # after the first '\n' at or after begin: one '\n' skipped
+        else:
+            starts.append((size, 0))
+    starts.reverse()
+    out, before = [], 0  # before: the '\n' bytes in the blocks before k
+    for k, (start, skipped) in enumerate(starts):
+        end = starts[k + 1][0] if k + 1 < len(starts) else size
+        if start < end:
+            out.append((start, end, 1 + before + skipped))
+        before += scans[k][0]
+    return out
 
 
-def _line_start(f, offset, size, path):
-    """The first byte at or after offset that starts a line (0, or just after a '\\n'); size if none."""
-    if offset == 0 or offset >= size:
-        return min(offset, size)
-    pos = offset - 1
-    f.seek(pos)
-    while pos < size:
-        piece = f.read(min(_PIECE, size - pos))
-        if not piece:
-            raise _changed(path)
-        nl = piece.find(b"\n")
-        if nl >= 0:
-            return pos + nl + 1
-        pos += len(piece)
-    return size
-
-
-def _answer_block(path, index, block, size, first_number, part, options):
-    """Answer the lines that start in bytes [index * block, (index + 1) * block) of the file into the
-    existing file `part` (a task); first_number: that of the line starting at index * block, or that
-    would. Returns the bytes written."""
-    begin = index * block
+def _answer_range(path, start, end, number, part, options):
+    """Answer the lines of bytes [start, end) of the file (whole lines, the first one numbered
+    `number`) into the existing file `part` (a task). Returns the bytes written."""
     written = 0
     with open(path, "rb") as f:
-        start = _line_start(f, begin, size, path)
-        end = _line_start(f, begin + block, size, path)
-        number = first_number + (start > begin)  # a '\n' in [begin, start) ends a line of the previous block
         # No O_CREAT: after a cancellation the caller removes `part`, and a late task must not re-create it.
         with os.fdopen(os.open(part, os.O_WRONLY | os.O_TRUNC), "wb") as out:
             f.seek(start)
             buf = bytearray()
             pos = start
             while pos < end:
+                if _stopped(part):
+                    return written
                 piece = f.read(min(_PIECE, end - pos))
                 if not piece:
                     raise _changed(path)
@@ -136,20 +155,42 @@ def _run(client, submitted, rounds):
     return [[next(results) for _ in per_file] for per_file in rounds]
 
 
+def _sized(st):
+    """Whether the workers can read a file by byte ranges: a regular file whose size is its length.
+    Files of /proc and /sys read as size 0 or occupy no block; pipes and devices have no size."""
+    return stat.S_ISREG(st.st_mode) and st.st_size > 0 and st.st_blocks > 0
+
+
 def _check_inputs(paths, out_dir):
-    """Absolute input paths and output paths; refuse what would overwrite or mix files."""
+    """Absolute input paths, their stat results, and the output paths; refuse what would overwrite or
+    mix files, before anything is written."""
     if isinstance(paths, (str, bytes, os.PathLike)):
         paths = [paths]
-    paths = [os.path.abspath(os.fsdecode(p)) for p in paths]
-    out_dir = os.path.abspath(os.fsdecode(out_dir))
+    try:
+        paths = [os.path.abspath(os.fsdecode(p)) for p in paths]
+    except TypeError:
+        raise TypeError("relpos.distributed.batch: paths: expected a path (str or os.PathLike) or a list of paths")
+    try:
+        out_dir = os.path.abspath(os.fsdecode(out_dir))
+    except TypeError:
+        raise TypeError("relpos.distributed.batch: out_dir: expected a path (str or os.PathLike), got %s"
+                        % type(out_dir).__name__)
+    stats = []
     for p in paths:
-        if not os.path.exists(p):
-            raise FileNotFoundError("relpos.distributed.batch: no such input file: %s" % p)
-        if os.path.isdir(p):
+        try:
+            st = os.stat(p)
+        except FileNotFoundError:
+            raise FileNotFoundError("relpos.distributed.batch: no such input file: %s" % p) from None
+        if stat.S_ISDIR(st.st_mode):
             raise IsADirectoryError("relpos.distributed.batch: the input %s is a directory, not a file" % p)
+        if stat.S_ISSOCK(st.st_mode):
+            raise ValueError("relpos.distributed.batch: the input %s is a socket, not a file" % p)
+        stats.append(st)
     names = [os.path.basename(p) for p in paths]
     if len(set(names)) != len(names):
         raise ValueError("relpos.distributed.batch: input files must have distinct names (outputs are out_dir/<name>)")
+    if os.path.exists(out_dir) and not os.path.isdir(out_dir):
+        raise NotADirectoryError("relpos.distributed.batch: out_dir %s is not a directory" % out_dir)
     real_out = os.path.realpath(out_dir)
     outs = [os.path.join(out_dir, n) for n in names]
     real_inputs = {os.path.realpath(p) for p in paths}
@@ -160,82 +201,186 @@ def _check_inputs(paths, out_dir):
                 "relpos.distributed.batch: out_dir %s holds the input %s; answers are written to another directory"
                 % (out_dir, p)
             )
-    return paths, out_dir, outs
+        if os.path.isdir(o):
+            raise IsADirectoryError(
+                "relpos.distributed.batch: the output %s is a directory; nothing was written" % o)
+    return paths, stats, out_dir, outs
+
+
+def _options(evidence, numbers, contact_only, digits, max_line_bytes, threads, block_bytes, max_bits):
+    """The options of `relpos batch`, checked with messages naming the argument, before any work."""
+
+    def integer(name, value, allow_none=False):
+        if value is None and allow_none:
+            return None
+        if isinstance(value, bool) or not hasattr(type(value), "__index__"):
+            raise TypeError("relpos.distributed.batch: %s: expected an int, got %s" % (name, type(value).__name__))
+        return value.__index__()
+
+    for name, value in (("evidence", evidence), ("numbers", numbers)):
+        if not isinstance(value, str):
+            raise TypeError("relpos.distributed.batch: %s: expected a str, got %s" % (name, type(value).__name__))
+    if not isinstance(contact_only, bool):
+        raise TypeError("relpos.distributed.batch: contact_only: expected a bool, got %s" % type(contact_only).__name__)
+    options = dict(evidence=evidence, numbers=numbers, contact_only=contact_only, digits=integer("digits", digits),
+                   threads=integer("threads", threads), max_bits=integer("max_bits", max_bits))
+    max_line_bytes = integer("max_line_bytes", max_line_bytes, allow_none=True)
+    if max_line_bytes is not None:  # else the CLI's default
+        options["max_line_bytes"] = max_line_bytes
+    for name, bits in (("digits", 31), ("threads", 31), ("max_bits", 62)):  # what the binding's integers hold
+        if not -(1 << bits) <= options[name] < (1 << bits):
+            raise ValueError("relpos.distributed.batch: %s: %d is out of range" % (name, options[name]))
+    if max_line_bytes is not None and not 1 <= max_line_bytes <= (1 << 40):
+        raise ValueError("relpos.distributed.batch: max_line_bytes: expected 1 to 2^40, got %d" % max_line_bytes)
+    try:
+        _relpos._batch_block(b"", **options)  # the library's checks of the values
+    except ValueError as err:
+        raise ValueError("relpos.distributed.batch: %s" % err) from None
+    block_bytes = integer("block_bytes", block_bytes, allow_none=True)
+    if block_bytes is not None and block_bytes < 1:
+        raise ValueError("relpos.distributed.batch: block_bytes: expected >= 1, got %r" % (block_bytes,))
+    return options, block_bytes
+
+
+def _spool(path, out_dir, temporary):
+    """Read a file whose size cannot be trusted (a pipe, /proc, a device) to its end into a
+    temporary file of out_dir, which the workers then read. Returns its path and size."""
+    copy = temporary()
+    size = 0
+    with open(path, "rb") as src, open(copy, "wb") as dst:
+        while True:
+            piece = src.read(_PIECE)
+            if not piece:
+                break
+            dst.write(piece)
+            size += len(piece)
+    return copy, size
+
+
+def _publish(targets, outs, temporary):
+    """Move every finished output into place, all or none: an output that existed is first kept
+    under a temporary name (a hard link to it, so that it never disappears meanwhile), and a failure
+    half-way puts every output back as it was. The kept copies are temporaries of the call."""
+    done = []
+    try:
+        for tmp, out in zip(targets, outs):
+            old = None
+            if os.path.lexists(out):
+                old = temporary()
+                os.unlink(old)
+                try:
+                    os.link(out, old, follow_symlinks=False)  # a symbolic link is kept as one
+                except OSError:  # a file system without hard links: moved aside instead
+                    os.rename(out, old)
+            done.append((out, old))
+            os.replace(tmp, out)
+    except BaseException:
+        for out, old in reversed(done):
+            try:
+                if old is not None:
+                    os.replace(old, out)
+                elif os.path.lexists(out):
+                    os.unlink(out)
+            except OSError:
+                pass
+        raise
+
+
+def _local_client():
+    """A client of a local cluster for one call: threads of this process (the work is compiled code
+    that releases the GIL), so no process is started and a script without an
+    `if __name__ == "__main__":` guard works."""
+    import distributed
+
+    cluster = distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=os.cpu_count() or 1,
+                                       dashboard_address=None)
+    return distributed.Client(cluster)
 
 
 def batch(paths, out_dir, client=None, evidence="full", numbers="exact", contact_only=False, digits=12,
-          max_line_bytes=None, threads=1, block_bytes=None):
+          max_line_bytes=None, threads=1, block_bytes=None, max_bits=4096):
     """Answer JSON Lines files on a Dask cluster as `relpos batch` does; returns the written paths.
 
     paths: one input file (str or os.PathLike) or a list of them. out_dir: out_dir/<file name>
     receives the answers of each file, byte for byte the output of `relpos batch FILE` with the same
     options (created if missing; it must not hold an input, and two inputs must not share a name).
+    Named pipes, files of /proc and other files whose size reads 0 are read to their end first.
     evidence ("full" | "minimal"), numbers ("exact" | "double"), contact_only, digits,
-    max_line_bytes (None: the CLI's default): the options --evidence, --numbers, --contact-only,
-    --digits, --max-line-bytes.
+    max_line_bytes (None: the CLI's default), max_bits (the pair size limit): the options --evidence,
+    --numbers, --contact-only, --digits, --max-line-bytes, --max-bits.
     client: a distributed.Client; None uses the current client (distributed.get_client()) or starts
-    a LocalCluster for this call. threads: library threads per task. block_bytes: bytes of a file
-    per task (default: about 8 blocks per worker thread, 256 KiB to 64 MiB).
+    a local cluster of threads in this process for the call. threads: library threads per task.
+    block_bytes: bytes of a file per task (default: about 8 blocks per worker thread, 256 KiB to
+    64 MiB).
     Returns the output paths in the order of `paths` (a list, also for one path). Raises the first
-    failing task's error, after cancelling the others and removing every file the call created.
+    failing task's error (or KeyboardInterrupt), after cancelling the others and removing every file
+    the call created: out_dir then holds what it held before.
     """
-    options = dict(evidence=evidence, numbers=numbers, contact_only=contact_only, digits=digits, threads=threads)
-    if max_line_bytes is not None:  # else the CLI's default
-        options["max_line_bytes"] = max_line_bytes
-    _relpos._batch_block(b"", **options)  # the options' errors, before anything is submitted
-    paths, out_dir, outs = _check_inputs(paths, out_dir)
-    if block_bytes is not None and block_bytes < 1:
-        raise ValueError("relpos.distributed.batch: block_bytes: expected >= 1, got %r" % (block_bytes,))
-    sizes = [os.path.getsize(p) for p in paths]
+    options, block_bytes = _options(evidence, numbers, contact_only, digits, max_line_bytes, threads, block_bytes,
+                                    max_bits)
+    paths, stats, out_dir, outs = _check_inputs(paths, out_dir)
     os.makedirs(out_dir, exist_ok=True)
     if not paths:
         return []
 
-    import distributed
-
-    own = None
-    if client is None:
-        try:
-            client = distributed.get_client()
-        except ValueError:
-            own = client = distributed.Client(distributed.LocalCluster())
     temps, futures = [], []
+    own = None
+
+    def temporary():
+        fd, tmp = tempfile.mkstemp(dir=out_dir, prefix=_TEMPORARY, suffix=".tmp")
+        os.close(fd)
+        temps.append(tmp)
+        return tmp
+
     try:
+        # What the workers read: the file itself, or the caller's copy of a stream.
+        sources, sizes = [], []
+        for p, st in zip(paths, stats):
+            if _sized(st):
+                sources.append(p)
+                sizes.append(st.st_size)
+            else:
+                copy, size = _spool(p, out_dir, temporary)
+                sources.append(copy)
+                sizes.append(size)
+
+        import distributed
+
+        if client is None:
+            try:
+                client = distributed.get_client()
+            except ValueError:
+                own = client = _local_client()
         if block_bytes is None:
             worker_threads = max(1, sum(client.nthreads().values()))
             block_bytes = -(-sum(sizes) // (_BLOCKS_PER_THREAD * worker_threads))
             block_bytes = min(max(block_bytes, _MIN_BLOCK), _MAX_BLOCK)
 
-        def temporary(name):
-            fd, tmp = tempfile.mkstemp(dir=out_dir, prefix="." + name + ".", suffix=".tmp")
-            os.close(fd)
-            temps.append(tmp)
-            return tmp
-
         # Three rounds, each waited for here: no task depends on another's result, so a worker lost
         # in the middle only loses its running task, which Dask runs again elsewhere.
-        targets = [temporary(os.path.basename(out)) for out in outs]
+        targets = [temporary() for _ in outs]
         blocks = [-(-size // block_bytes) for size in sizes]
-        parts = [[temporary(os.path.basename(out)) for _ in range(n)] for out, n in zip(outs, blocks)]
-        counts = _run(client, futures, [
-            [client.submit(_count_newlines, path, k * block_bytes, min(size, (k + 1) * block_bytes), pure=False)
-             for k in range(n)] for path, size, n in zip(paths, sizes, blocks)])
+        scans = _run(client, futures, [
+            [client.submit(_scan_block, src, k * block_bytes, min(size, (k + 1) * block_bytes), pure=False)
+             for k in range(n)] for src, size, n in zip(sources, sizes, blocks)])
+        ranges = [_ranges(size, block_bytes, s) for size, s in zip(sizes, scans)]
+        parts = [[temporary() for _ in r] for r in ranges]
         _run(client, futures, [
-            [client.submit(_answer_block, path, k, block_bytes, size, first, part, options, pure=False)
-             for k, (first, part) in enumerate(zip(_first_line_numbers(c), file_parts))]
-            for path, size, c, file_parts in zip(paths, sizes, counts, parts)])
+            [client.submit(_answer_range, src, start, end, number, part, options, pure=False)
+             for (start, end, number), part in zip(r, file_parts)]
+            for src, r, file_parts in zip(sources, ranges, parts)])
         _run(client, futures, [[client.submit(_join, p, t, pure=False)] for p, t in zip(parts, targets)])
         mode = 0o666 & ~_umask()
-        for tmp, out in zip(targets, outs):
+        for tmp in targets:
             os.chmod(tmp, mode)  # as a file the CLI's output is redirected to (mkstemp makes 0600)
-            os.replace(tmp, out)
+        _publish(targets, outs, temporary)
         return outs
     except BaseException:
         if futures:
             client.cancel(futures)
         raise
     finally:
-        for tmp in temps:  # the parts; the targets too on failure
+        for tmp in temps:  # the copies and parts; the targets too on failure
             try:
                 os.unlink(tmp)
             except FileNotFoundError:

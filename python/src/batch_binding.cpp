@@ -27,7 +27,7 @@ namespace {
 
 /// The options of `relpos batch`, spelled as its command-line values; the CLI's ranges.
 relpos::io::BatchOptions batch_options(const std::string& evidence, const std::string& numbers, bool contact_only,
-                                       int digits, long long max_line_bytes) {
+                                       int digits, long long max_line_bytes, long long max_bits) {
   relpos::io::BatchOptions options;
   if (evidence != "full" && evidence != "minimal")
     throw relpos::InputError("evidence: expected 'full' or 'minimal', got '" + evidence + "'");
@@ -42,6 +42,10 @@ relpos::io::BatchOptions batch_options(const std::string& evidence, const std::s
   options.contact_only = contact_only;
   options.render.digits = digits;
   options.max_line_bytes = static_cast<std::size_t>(max_line_bytes);
+  if (max_bits < static_cast<long long>(relpos::kMaxNormalizedBits) || max_bits > (1LL << 32))
+    throw relpos::InputError("max_bits: expected " + std::to_string(relpos::kMaxNormalizedBits) + " to 2^32, got " +
+                             std::to_string(max_bits));
+  options.size_limit.max_bits = static_cast<std::size_t>(max_bits);
   return options;
 }
 
@@ -88,8 +92,9 @@ void bind_batch(py::module_& m) {
   m.def(
       "_batch_block",
       [](const py::bytes& data, long first_line, const std::string& evidence, const std::string& numbers,
-         bool contact_only, int digits, long long max_line_bytes, int threads) {
-        const relpos::io::BatchOptions options = batch_options(evidence, numbers, contact_only, digits, max_line_bytes);
+         bool contact_only, int digits, long long max_line_bytes, int threads, long long max_bits) {
+        const relpos::io::BatchOptions options =
+            batch_options(evidence, numbers, contact_only, digits, max_line_bytes, max_bits);
         if (first_line < 1) throw relpos::InputError("first_line: expected >= 1, got " + std::to_string(first_line));
         if (threads < 1) throw relpos::InputError("threads: expected >= 1, got " + std::to_string(threads));
         const std::string_view block = data;  // `data` is held by the caller while the GIL is released
@@ -102,9 +107,11 @@ void bind_batch(py::module_& m) {
       },
       "data"_a, "first_line"_a = 1, "evidence"_a = "full", "numbers"_a = "exact", "contact_only"_a = false,
       "digits"_a = 12, "max_line_bytes"_a = static_cast<long long>(relpos::io::kDefaultMaxLineBytes), "threads"_a = 1,
+      "max_bits"_a = static_cast<long long>(relpos::kMaxNormalizedBits),
       "The output of `relpos batch` for the lines of `data` (whole lines of a JSON Lines file, the first of them "
       "line number `first_line`), as bytes: one answer and '\\n' per line. The options are those of `relpos batch` "
-      "(--evidence, --numbers, --contact-only, --digits, --max-line-bytes); `threads` std::threads answer the lines.");
+      "(--evidence, --numbers, --contact-only, --digits, --max-line-bytes, --max-bits); `threads` std::threads answer "
+      "the lines.");
 }
 
 }  // namespace relpos_python

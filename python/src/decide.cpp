@@ -2,6 +2,7 @@
 // every core (doc/python.md, "decide_positions").
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "module.hpp"
+#include "signals.hpp"
 
 namespace relpos_python {
 
@@ -103,7 +105,15 @@ struct Matrices {
 /// object, str, ...). float16/32 and integers of up to 32 bits widen to float64 exactly; float64 as
 /// is; longdouble and 64-bit integers as long double.
 Matrices read_array(py::handle x, const char* name) {
-  const py::array a = py::module_::import("numpy").attr("asarray")(x);
+  py::array a;
+  try {
+    a = py::module_::import("numpy").attr("asarray")(x);
+  } catch (const py::error_already_set& err) {  // ragged nesting, objects numpy cannot hold
+    if (!err.matches(PyExc_ValueError) && !err.matches(PyExc_TypeError)) throw;
+    throw py::type_error(std::string(name) + ": expected an array (n, 4, 4) of numbers, got " +
+                         py::str(py::type::handle_of(x).attr("__name__")).cast<std::string>() + " that is not one (" +
+                         err.what() + ")");
+  }
   const char kind = a.dtype().kind();
   const py::ssize_t size = a.dtype().itemsize();
   Matrices out;
@@ -280,7 +290,8 @@ std::string hint(bool ellipsoid, const std::string& message) {
 }
 
 py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input, unsigned threads, bool raise_errors,
-                                          bool upper) {
+                                          bool upper, std::size_t max_bits) {
+  const relpos::SizeLimit limit{max_bits};
   const Side e_side(e_input, "E", true, upper);
   const Side p_side(p_input, "P", false, upper);
   if (!e_side.n) throw relpos::InputError("E: expected n ellipsoids (an array with a leading n), got one");
@@ -294,6 +305,7 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
   std::optional<relpos::Paraboloid> shared;
   std::size_t error_index = std::numeric_limits<std::size_t>::max();
   std::string error_message;
+  SignalWatch watch;  // Ctrl-C: the calling thread polls between its chunks, every thread stops
   {
     py::gil_scoped_release release;
     if (!np) {
@@ -311,8 +323,9 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
       workers = static_cast<unsigned>(std::clamp<std::size_t>(workers, 1, chunks));
       std::atomic<std::size_t> next{0};
       std::mutex error_mutex;
-      auto work = [&] {
+      auto work = [&](bool caller) {
         for (;;) {
+          if (caller ? watch.poll() : watch.stopped()) return;
           const std::size_t begin = next.fetch_add(kChunk);
           if (begin >= n) return;
           const std::size_t end = std::min(n, begin + kChunk);
@@ -331,10 +344,10 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
             try {
               const relpos::Ellipsoid e = e_side.ellipsoid(i);
               if (shared) {
-                codes[i] = position_code(relpos::decide_position(e, *shared).position);
+                codes[i] = position_code(relpos::decide_position(e, *shared, limit).position);
               } else {
                 failed = "P";
-                codes[i] = position_code(relpos::decide_position(e, p_side.paraboloid(i)).position);
+                codes[i] = position_code(relpos::decide_position(e, p_side.paraboloid(i), limit).position);
               }
             } catch (const std::exception& err) {
               codes[i] = kInvalid;
@@ -353,32 +366,49 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
         }
       };
       std::vector<std::thread> pool;
-      for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work);
-      work();
+      for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work, false);
+      work(true);
       for (auto& t : pool) t.join();
     }
   }
+  watch.raise_if_stopped();
   if (raise_errors && !error_message.empty()) throw relpos::InputError(error_message);
   return out;
 }
 
-/// The bodies of a scene: a sequence of relpos.Ellipsoid, or matrices as for decide_positions.
-std::vector<relpos::Ellipsoid> scene_bodies(py::handle bodies) {
+/// Bodies read or checked between two polls of Python's signals (a few microseconds each at most).
+constexpr std::size_t kPollEvery = 256;
+
+/// The bodies of a scene: a sequence of relpos.Ellipsoid (empty included), or matrices as for
+/// decide_positions. Errors name the body: "bodies[3]: ...".
+std::vector<relpos::Ellipsoid> scene_bodies(py::handle bodies, SignalWatch& watch) {
   std::vector<relpos::Ellipsoid> out;
-  if (py::isinstance<py::sequence>(bodies) && !py::isinstance<py::array>(bodies) && py::len(bodies) > 0 &&
-      py::isinstance<relpos::Ellipsoid>(py::reinterpret_borrow<py::sequence>(bodies)[0])) {
-    for (py::handle b : bodies) out.push_back(b.cast<const relpos::Ellipsoid&>());
-    return out;
+  if (PyList_Check(bodies.ptr()) || PyTuple_Check(bodies.ptr())) {
+    const auto seq = py::reinterpret_borrow<py::sequence>(bodies);
+    bool ellipsoids = seq.size() == 0;
+    for (const py::handle b : seq) ellipsoids = ellipsoids || py::isinstance<relpos::Ellipsoid>(b);
+    if (ellipsoids) {  // a sequence of Ellipsoid objects: every entry must be one
+      out.reserve(seq.size());
+      for (std::size_t i = 0; i < seq.size(); ++i) {
+        const py::handle b = seq[i];
+        if (!py::isinstance<relpos::Ellipsoid>(b))
+          throw py::type_error("bodies[" + std::to_string(i) + "]: expected a relpos.Ellipsoid, got " +
+                               py::str(py::type::handle_of(b).attr("__name__")).cast<std::string>() +
+                               " (bodies is a sequence of Ellipsoid objects or an array (n, 4, 4) of matrices)");
+        out.push_back(b.cast<const relpos::Ellipsoid&>());  // an object made by __new__ alone: TypeError
+      }
+      return out;
+    }
   }
-  const Matrices e = read_array(bodies, "E");
-  const std::size_t n = *batch_size(e.array, "E", false);
+  const Matrices e = read_array(bodies, "bodies");
+  const std::size_t n = *batch_size(e.array, "bodies", false);
   out.reserve(n);
   py::gil_scoped_release release;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n && !(i % kPollEvery == 0 && watch.poll()); ++i) {
     try {
       out.push_back(e.ellipsoid(i));
     } catch (const relpos::InputError& err) {
-      throw relpos::InputError("E[" + std::to_string(i) + "]: ellipsoid: " + err.what());
+      throw relpos::InputError("bodies[" + std::to_string(i) + "]: ellipsoid: " + err.what());
     }
   }
   return out;
@@ -391,20 +421,54 @@ std::int8_t scene_stage_code(relpos::Stage s) {
   throw std::logic_error("scene: a stage a scene never ends in");
 }
 
-/// relpos::Scene on the bodies: (position codes, contact (1, 0), stage codes, threads used).
-py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads, bool early_outs) {
-  const std::vector<relpos::Ellipsoid> e = scene_bodies(bodies);
+/// The pair size limit for every body, naming the first body beyond it ("bodies[3]: numbers too
+/// large: ..."): the scene's own check, on its worker threads, could not say which. Free for bodies
+/// of doubles and of short decimals (check_normalized_pair_size).
+void check_body_sizes(const relpos::Paraboloid& p, const std::vector<relpos::Ellipsoid>& bodies,
+                      const relpos::SizeLimit& limit, SignalWatch& watch) {
+  for (std::size_t i = 0; i < bodies.size() && !(i % kPollEvery == 0 && watch.poll()); ++i) {
+    try {
+      relpos::check_normalized_pair_size(bodies[i], p, limit);
+    } catch (const relpos::InputError& err) {
+      throw relpos::InputError("bodies[" + std::to_string(i) + "]: " + err.what());
+    }
+  }
+}
+
+/// relpos::Scene on the bodies, in pieces with Python's signals checked between them (a piece
+/// takes 20 to 100 ms: its size doubles or halves to stay there): (position codes, contact (1, 0),
+/// stage codes, threads used).
+py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads, bool early_outs,
+                std::size_t max_bits) {
+  SignalWatch watch;
+  const std::vector<relpos::Ellipsoid> e = scene_bodies(bodies, watch);
   const std::size_t n = e.size();
-  py::array_t<std::int8_t> positions(static_cast<py::ssize_t>(n)), contact(static_cast<py::ssize_t>(n)),
-      stages(static_cast<py::ssize_t>(n));
   relpos::SceneOptions options;
   options.threads = threads;
   options.early_outs = early_outs;
+  options.size_limit.max_bits = max_bits;
   relpos::SceneResult result;
   {
     py::gil_scoped_release release;
-    result = relpos::Scene(p).classify(e, options);
+    check_body_sizes(p, e, options.size_limit, watch);
+    const relpos::Scene prepared(p);
+    std::size_t piece = 4096;
+    for (std::size_t begin = 0; begin < n && !watch.poll();) {
+      const std::size_t count = std::min(piece, n - begin);
+      const auto start = std::chrono::steady_clock::now();
+      relpos::SceneResult r = prepared.classify(e.data() + begin, count, options);
+      const auto took = std::chrono::steady_clock::now() - start;
+      if (took < std::chrono::milliseconds(20) && piece < (std::size_t(1) << 20)) piece *= 2;
+      if (took > std::chrono::milliseconds(100) && piece > 64) piece /= 2;
+      result.verdicts.insert(result.verdicts.end(), r.verdicts.begin(), r.verdicts.end());
+      result.counts.merge(r.counts);
+      result.threads = std::max(result.threads, r.threads);
+      begin += count;
+    }
   }
+  watch.raise_if_stopped();
+  py::array_t<std::int8_t> positions(static_cast<py::ssize_t>(n)), contact(static_cast<py::ssize_t>(n)),
+      stages(static_cast<py::ssize_t>(n));
   for (std::size_t i = 0; i < n; ++i) {
     const relpos::SceneVerdict& v = result.verdicts[i];
     positions.mutable_at(static_cast<py::ssize_t>(i)) = position_code(v.position);
@@ -421,10 +485,10 @@ void bind_decide(py::module_& m) {
   py::list stage_names;
   for (const relpos::Stage s : relpos::kSceneStages) stage_names.append(relpos::to_string(s));
   m.attr("_STAGE_NAMES") = py::tuple(stage_names);
-  m.def("_scene", &scene, "p"_a, "bodies"_a, "threads"_a, "early_outs"_a,
+  m.def("_scene", &scene, "p"_a, "bodies"_a, "threads"_a, "early_outs"_a, "max_bits"_a,
         "relpos::Scene on the bodies: (position codes, contact codes, stage codes, threads used).");
   m.attr("_INVALID") = kInvalid;
-  m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a, "raise_errors"_a, "upper"_a = false,
+  m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a, "raise_errors"_a, "upper"_a, "max_bits"_a,
         "Position codes (int8, 0 = I ... 4 = E, -1 = invalid pair) of the matrices E (n, 4, 4) against P "
         "(n, 4, 4) or (4, 4), or of parameter dicts; with upper, each matrix read from its upper triangle.");
 }

@@ -85,15 +85,25 @@ Json to_json(py::handle x, const std::string& path) {
     if (!value) throw py::error_already_set();
     return int_json(value);
   }
+  static const py::handle decimal = py::object(py::module_::import("decimal").attr("Decimal")).release();
+  if (py::isinstance(x, decimal) && x.attr("is_finite")().cast<bool>()) {
+    // Its own decimal text ("1E-12000"), read exactly by the parser: the same number and the same
+    // limits as that string (as_integer_ratio would spell 10^12000 out against the length limit).
+    return Json(py::str(x).cast<std::string>());
+  }
   if (py::hasattr(x, "as_integer_ratio")) {
-    // fractions.Fraction, decimal.Decimal, numpy.float16/32/longdouble: p/q exactly.
+    // fractions.Fraction, numpy.float16/32/longdouble: p/q exactly; a Decimal NaN or infinity gets
+    // the library's message for it below.
     py::tuple ratio;
     try {
       ratio = x.attr("as_integer_ratio")();
     } catch (const py::error_already_set&) {  // NaN, infinity: the library's message for them
       PyErr_Clear();
       const double value = PyFloat_AsDouble(x.ptr());
-      if (value == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+      if (value == -1.0 && PyErr_Occurred()) {  // a signalling NaN
+        PyErr_Clear();
+        throw relpos::InputError(path + ": not a finite number: " + py::str(x).cast<std::string>());
+      }
       return Json(value);
     }
     const std::string q = int_text(ratio[1]);

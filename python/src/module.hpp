@@ -21,8 +21,9 @@ namespace py = pybind11;
 using relpos::io::detail::Json;
 
 /// A Python value as the JSON value the CLI would read for it, without rounding: int (any size) as
-/// an integer or its exact digits, float as the double (read exactly by the library), Fraction,
-/// Decimal and numpy floats (float16 to longdouble) as the exact "p/q" of as_integer_ratio(), str
+/// an integer or its exact digits, float as the double (read exactly by the library), a finite
+/// Decimal as its own text ("1E-12000", the same number and limits as that string), Fraction and
+/// numpy floats (float16 to longdouble) as the exact "p/q" of as_integer_ratio(), str
 /// as itself, None/bool/numpy.bool_ as null/true/false (refused by the reader with the CLI's
 /// message), a 0-d numpy array as its scalar, lists, tuples and numpy arrays as arrays, dicts as
 /// objects. `path` names the value in the TypeError

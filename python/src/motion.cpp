@@ -3,13 +3,17 @@
 // with exact instants (relpos::AlgebraicReal).
 #include <pybind11/stl.h>
 
+#include <chrono>
+#include <optional>
 #include <relpos/algebraic_real.hpp>
 #include <relpos/motion.hpp>
+#include <sstream>
 #include <string>
 
 #include "io/json_values.hpp"
 #include "io/motion_json.hpp"
 #include "module.hpp"
+#include "signals.hpp"
 
 namespace relpos_python {
 
@@ -37,10 +41,10 @@ relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py
     const std::string p = pivot.cast<std::string>();
     if (p == "origin") {
       m.pivot = relpos::Pivot::Origin;
-    } else if (p == "center") {
+    } else if (p == "center" || p == "centre") {  // both spellings, as `relpos motion --pivot`
       m.pivot = relpos::Pivot::Centre;
     } else {
-      throw relpos::InputError("pivot: expected origin, center or a point, got " + p);
+      throw relpos::InputError("pivot: expected origin, center (or centre) or a point, got " + p);
     }
   } else {
     m.pivot = relpos::Pivot::Point;
@@ -52,26 +56,61 @@ relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py
   return m;
 }
 
+/// this <, =, > other: -1, 0, +1 exactly, for `other` an Instant or a real number (int, float,
+/// Fraction, Decimal, a numpy integer or float, read exactly); None for any other object (Python
+/// then answers NotImplemented: == is False, < raises TypeError).
+py::object compare_instant(const relpos::AlgebraicReal& t, py::handle other) {
+  if (is_built<relpos::AlgebraicReal>(other)) return py::int_(t.compare(other.cast<const relpos::AlgebraicReal&>()));
+  static const py::handle real = py::object(py::module_::import("numbers").attr("Real")).release();
+  static const py::handle decimal = py::object(py::module_::import("decimal").attr("Decimal")).release();
+  if (PyBool_Check(other.ptr()) || !(py::isinstance(other, real) || py::isinstance(other, decimal))) return py::none();
+  relpos::Rational q;
+  try {
+    q = to_rational(other, "other");
+  } catch (const relpos::InputError&) {  // NaN, infinities: no order with an instant
+    return py::none();
+  }
+  return py::int_(t.compare(q));
+}
+
 py::object position_name(const std::optional<relpos::Position>& p) {
   return p ? py::object(py::str(relpos::to_string(*p))) : py::object(py::none());
 }
 
 /// Binds `name` to a motion computation of the library (first_contact, timeline): the motion read
-/// from Python as `relpos motion` reads it, the GIL released while it runs.
+/// from Python as `relpos motion` reads it, run with the GIL released on a worker thread that stops
+/// on Ctrl-C (signals.hpp) or past `max_seconds` (0: no budget; `relpos motion --max-seconds`):
+/// TimeoutError with the CLI's message.
 template <class Result>
 void def_motion(py::module_& m, const char* name,
                 Result (*run)(const relpos::Ellipsoid&, const relpos::RigidMotion&, const relpos::Paraboloid&,
-                              const relpos::Rational&, const relpos::Rational&)) {
+                              const relpos::Rational&, const relpos::Rational&, const relpos::Interrupt*)) {
   m.def(
       name,
       [run](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, py::handle t0, py::handle t1,
-            py::handle translation, py::handle rotation, py::handle pivot) {
+            py::handle translation, py::handle rotation, py::handle pivot, double max_seconds) {
         const relpos::RigidMotion motion = rigid_motion(translation, rotation, pivot);
         const relpos::Rational a = to_rational(t0, "t0"), b = to_rational(t1, "t1");
-        py::gil_scoped_release release;
-        return run(e, motion, p, a, b);
+        std::optional<relpos::Interrupt> interrupt;
+        if (max_seconds > 0)
+          interrupt.emplace(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+              std::chrono::duration<double>(max_seconds)));
+        else
+          interrupt.emplace();
+        try {
+          return run_watched(*interrupt, [&] { return run(e, motion, p, a, b, &*interrupt); });
+        } catch (const relpos::Interrupted& err) {
+          if (!err.budget()) throw;
+          std::ostringstream seconds;
+          seconds << max_seconds;
+          PyErr_SetString(PyExc_TimeoutError,
+                          ("motion: the computation exceeded its time budget of " + seconds.str() +
+                           " s (max_seconds) and was stopped; try a shorter interval, lower degrees or a larger budget")
+                              .c_str());
+          throw py::error_already_set();
+        }
       },
-      "e"_a, "p"_a, "t0"_a, "t1"_a, "translation"_a, "rotation"_a, "pivot"_a);
+      "e"_a, "p"_a, "t0"_a, "t1"_a, "translation"_a, "rotation"_a, "pivot"_a, "max_seconds"_a);
 }
 
 /// __reduce__ of a result class that does not pickle: a TypeError at every protocol (without it,
@@ -119,6 +158,17 @@ void bind_motion(py::module_& m) {
           },
           "digits"_a = 12, "The correctly rounded decimal with `digits` significant digits.")
       .def("__float__", &relpos::AlgebraicReal::to_double, "The nearest double.")
+      .def("_compare", &compare_instant, "other"_a,
+           "-1, 0, +1 for this <, =, > other (an Instant or an exact number), exactly; None for anything else.")
+      .def("__hash__",
+           [](const relpos::AlgebraicReal& t) -> py::ssize_t {
+             // Equal instants have equal hashes: a rational one hashes as its Fraction (so that it
+             // agrees with == on numbers), an irrational one by its minimal polynomial.
+             if (t.is_rational()) return py::hash(to_python(*t.exact()));
+             py::list c;
+             for (const relpos::Integer& x : t.polynomial()) c.append(to_python(x));
+             return py::hash(py::tuple(c));
+           })
       .def("__repr__", [](const relpos::AlgebraicReal& t) {
         return "relpos.Instant(" + (t.is_rational() ? relpos::to_string(*t.exact()) : "~" + t.decimals(17)) + ")";
       });
@@ -138,8 +188,11 @@ void bind_motion(py::module_& m) {
       .def_property_readonly(
           "time", [](const relpos::FirstContact& f) { return f.time; }, "The instant (an Instant), or None.")
       .def_property_readonly(
-          "position", [](const relpos::FirstContact& f) { return relpos::to_string(f.position); },
-          "The position at `time`.")
+          "position",
+          [](const relpos::FirstContact& f) {
+            return position_name(f.kind == relpos::FirstContact::Kind::None ? std::nullopt : std::optional(f.position));
+          },
+          "The position at `time`; None when there is no contact (kind 'none'), as `relpos motion` writes null.")
       .def_readonly("how", &relpos::FirstContact::how, "How that position was decided, one sentence.");
 
   py::class_<relpos::Timeline> timeline(m, "Timeline", "Every change of position of the moving body on [t0, t1].");

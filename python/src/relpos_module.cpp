@@ -31,15 +31,42 @@ py::list matrix_to_python(const relpos::Matrix4& m) {
   return rows;
 }
 
+/// Whether `t` is an integer or a fraction "p/q" as relpos::to_string writes them: an optional '-',
+/// decimal digits, and optionally '/' and digits with a non-zero denominator.
+bool is_fraction_text(const std::string& t) {
+  std::size_t i = t.size() > 0 && t[0] == '-' ? 1 : 0;
+  const auto digits = [&](bool nonzero) {
+    const std::size_t begin = i;
+    bool any_nonzero = false;
+    for (; i < t.size() && t[i] >= '0' && t[i] <= '9'; ++i) any_nonzero = any_nonzero || t[i] != '0';
+    return i > begin && (!nonzero || any_nonzero);
+  };
+  if (!digits(false)) return false;
+  if (i == t.size()) return true;
+  if (t[i++] != '/') return false;
+  return digits(true) && i == t.size();
+}
+
 /// The matrix __reduce__ stored (16 exact texts, row-major), read by GMP without the parser's limit
 /// on one input number: a validated matrix (a sphere's e0 = |c|^2 - r^2, say) may hold longer ones.
-relpos::Matrix4 matrix_from_texts(const py::tuple& texts) {
-  if (texts.size() != 16) throw py::type_error("relpos: a pickled quadric holds 16 numbers");
+/// Pickled data is input like any other: each text is checked before GMP reads it (a zero
+/// denominator would divide by zero), and the matrix is validated by from_matrix.
+relpos::Matrix4 matrix_from_texts(py::handle texts) {
+  if (!PyTuple_Check(texts.ptr()) || PyTuple_GET_SIZE(texts.ptr()) != 16)
+    throw relpos::InputError("pickled quadric: expected a tuple of 16 exact numbers as text");
   relpos::Matrix4 m;
   for (std::size_t k = 0; k < 16; ++k) {
+    const py::handle x = PyTuple_GET_ITEM(texts.ptr(), static_cast<py::ssize_t>(k));
+    const std::string where = "pickled quadric[" + std::to_string(k / 4) + "][" + std::to_string(k % 4) + "]";
+    if (!PyUnicode_Check(x.ptr()))
+      throw relpos::InputError(where + ": expected an exact number as text, got " +
+                               py::str(py::type::handle_of(x).attr("__name__")).cast<std::string>());
+    const std::string text = x.cast<std::string>();
+    if (!is_fraction_text(text))
+      throw relpos::InputError(where + ": not an exact number \"p/q\" with q > 0: \"" +
+                               (text.size() > 40 ? text.substr(0, 40) + "..." : text) + "\"");
     relpos::Rational q;
-    if (mpq_set_str(q.mpq(), texts[k].cast<std::string>().c_str(), 10) != 0)
-      throw py::type_error("relpos: invalid pickled number");
+    mpq_set_str(q.mpq(), text.c_str(), 10);  // checked above: digits, and a non-zero denominator
     mpq_canonicalize(q.mpq());
     m.a[k] = q;
   }
@@ -126,11 +153,18 @@ PYBIND11_MODULE(_relpos, m) {
 
   m.def(
       "_rebuild",
-      [](py::handle cls, const py::tuple& texts) -> py::object {
+      [](py::handle cls, py::handle texts) -> py::object {
+        const bool is_ellipsoid = cls.is(py::type::of<relpos::Ellipsoid>());
+        if (!is_ellipsoid && !cls.is(py::type::of<relpos::Paraboloid>()))
+          throw py::type_error("relpos._rebuild: not a relpos quadric class");
         const relpos::Matrix4 matrix = matrix_from_texts(texts);
-        if (cls.is(py::type::of<relpos::Ellipsoid>())) return py::cast(relpos::Ellipsoid::from_matrix(matrix));
-        if (cls.is(py::type::of<relpos::Paraboloid>())) return py::cast(relpos::Paraboloid::from_matrix(matrix));
-        throw py::type_error("relpos._rebuild: not a relpos quadric class");
+        try {
+          if (is_ellipsoid) return py::cast(relpos::Ellipsoid::from_matrix(matrix));
+          return py::cast(relpos::Paraboloid::from_matrix(matrix));
+        } catch (const relpos::InputError& err) {
+          throw relpos::InputError(std::string("pickled ") + (is_ellipsoid ? "ellipsoid: " : "paraboloid: ") +
+                                   err.what());
+        }
       },
       "cls"_a, "texts"_a, "The quadric pickled by __reduce__.");
 
@@ -143,17 +177,20 @@ PYBIND11_MODULE(_relpos, m) {
 
   m.def(
       "_classify_json",
-      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, bool full) {
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, bool full, std::size_t max_bits) {
         std::string text;
         {
           py::gil_scoped_release release;
-          const relpos::Classification c =
-              relpos::classify(e, p, full ? relpos::Evidence::Full : relpos::Evidence::Minimal);
-          text = relpos::io::classification_json_text(c);
+          const relpos::SizeLimit limit{max_bits};
+          // The minimal answer as `relpos batch --evidence minimal` computes and writes it.
+          text = full ? relpos::io::classification_json_text(relpos::classify(e, p, relpos::Evidence::Full, limit))
+                      : relpos::io::minimal_json_text(relpos::decide_position(e, p, limit));
         }
         return text;
       },
-      "e"_a, "p"_a, "full"_a = true, "The JSON object of `relpos batch` for the pair (without \"id\"), as text.");
+      "e"_a, "p"_a, "full"_a = true, "max_bits"_a = relpos::kMaxNormalizedBits,
+      "The JSON object of `relpos batch` (or of `relpos batch --evidence minimal`) for the pair, without \"id\", "
+      "as text.");
 
   m.def(
       "_verify",
@@ -197,17 +234,20 @@ PYBIND11_MODULE(_relpos, m) {
 
   m.def(
       "_contact_json",
-      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p) {
+      [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, std::size_t max_bits) {
         std::string text;
         {
           py::gil_scoped_release release;
-          relpos::check_normalized_pair_size(e, p);
-          text = relpos::io::contact_json_text(relpos::contact(e, p));
+          const relpos::SizeLimit limit{max_bits};
+          relpos::check_normalized_pair_size(e, p, limit);
+          text = relpos::io::contact_json_text(relpos::contact(e, p, limit));
         }
         return text;
       },
-      "e"_a, "p"_a, "The JSON object of `relpos classify --contact-only --json` for the pair, as text.");
+      "e"_a, "p"_a, "max_bits"_a = relpos::kMaxNormalizedBits,
+      "The JSON object of `relpos classify --contact-only --json` for the pair, as text.");
 
+  m.attr("_MAX_BITS") = relpos::kMaxNormalizedBits;
   relpos_python::bind_decide(m);
   relpos_python::bind_motion(m);
   relpos_python::bind_batch(m);

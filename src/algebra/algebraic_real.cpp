@@ -203,6 +203,36 @@ int AlgebraicReal::compare(const Rational& q) const {
   return sq == sign_lower_ ? 1 : -1;  // same sign as at lower: the root lies right of q
 }
 
+int AlgebraicReal::compare(const AlgebraicReal& other) const {
+  if (exact_) return -other.compare(*exact_);
+  if (other.exact_) return compare(*other.exact_);
+  // Irreducible polynomials with positive leading coefficients: proportional for equal numbers (a
+  // caller's irreducible polynomial need not be primitive).
+  const auto proportional = [](const std::vector<Integer>& p, const std::vector<Integer>& q) {
+    if (p.size() != q.size()) return false;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p[i] * q.back() != q[i] * p.back()) return false;
+    return true;
+  };
+  if (proportional(poly_, other.poly_)) {
+    // One irreducible polynomial, and each interval holds exactly one of its roots: the two are the same root when
+    // the intersection of the intervals holds a root, i.e. when the polynomial changes sign across
+    // it (it has no rational root, so no sign is zero at the ends).
+    const Rational& lo = std::max(lower_, other.lower_);
+    const Rational& hi = std::min(upper_, other.upper_);
+    if (lo < hi && sign_at(lo) != sign_at(hi)) return 0;
+  }
+  // Different numbers: bisect both until their intervals separate them (this ends, as they differ).
+  AlgebraicReal a = *this, b = other;
+  for (;;) {
+    if (a.exact_ || b.exact_) return a.exact_ ? -b.compare(*a.exact_) : a.compare(*b.exact_);
+    if (a.upper_ <= b.lower_) return -1;
+    if (b.upper_ <= a.lower_) return 1;
+    a.refine((a.upper_ - a.lower_) / 2);
+    b.refine((b.upper_ - b.lower_) / 2);
+  }
+}
+
 std::string polynomial_text(const std::vector<Integer>& c, const std::string& variable) {
   return detail::polynomial_text(c.data(), c.size(), variable);
 }

@@ -49,7 +49,10 @@ std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
   return std::max(normalized_bits(e.matrix()), normalized_bits(p.matrix()));
 }
 
-void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p) {
+std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+  if (limit.max_bits < kMaxNormalizedBits)
+    throw InputError("the size limit is at least " + std::to_string(kMaxNormalizedBits) + " bits, got " +
+                     std::to_string(limit.max_bits) + " (it can be raised, not lowered: doc/cli.md, Limits)");
   // A matrix of doubles is within the limit whatever its entries: its primitive form has at most
   // 2098 bits (every double is a multiple of 2^-1074 below 2^1024), so the check costs nothing then and
   // never builds the exact matrix of a quadric made from doubles.
@@ -62,12 +65,14 @@ void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p) {
   };
   const std::size_t bits = std::max(storage_of(e).within_size_limit() ? 0 : bits_of(e.matrix()),
                                     storage_of(p).within_size_limit() ? 0 : bits_of(p.matrix()));
-  if (bits > kMaxNormalizedBits)
+  if (bits > limit.max_bits)
     throw InputError(
         "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "
         "form), has " +
-        std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxNormalizedBits) +
-        " bits (kMaxNormalizedBits, doc/cli.md, Limits)");
+        std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(limit.max_bits) +
+        (limit.max_bits == kMaxNormalizedBits ? " bits (kMaxNormalizedBits, doc/cli.md, Limits)"
+                                              : " bits (the limit given, doc/cli.md, Limits)"));
+  return bits;
 }
 
 }  // namespace relpos

@@ -80,7 +80,7 @@ ContactAnswer finish(const Verdict& v) { return {contact_of(v.position), v.posit
 
 }  // namespace
 
-DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p) {
+DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
   return detail::filtered<detail::Rounding::Nearest>(
       [&]() -> std::optional<DiscriminantVerdict> {
         if (!storage_of(e).filter_doubles() || !storage_of(p).filter_doubles()) return std::nullopt;
@@ -94,11 +94,13 @@ DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid&
         return std::nullopt;
       },
       [&] {
-        return DiscriminantVerdict{decide_position(e, p), true};
+        return DiscriminantVerdict{decide_position(e, p, limit), true};
       });
 }
 
-ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p) { return finish(decide_by_discriminant(e, p).verdict); }
+ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+  return finish(decide_by_discriminant(e, p, limit).verdict);
+}
 
 ContactChecker::ContactChecker(const Paraboloid& p) : scene_(std::make_unique<Scene>(p)) {}
 ContactChecker::~ContactChecker() = default;

@@ -3,7 +3,10 @@
 // with the full evidence read off the same home (evidence.cpp).
 #include "relpos/classify.hpp"
 
+#include <optional>
+
 #include "algebra/shape_filter.hpp"
+#include "base/large_stack.hpp"
 #include "decide/evidence.hpp"
 #include "decide/ladder.hpp"
 #include "decide/unchecked.hpp"
@@ -24,15 +27,30 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
   return out;
 }
 
+/// f() directly, or, for a pair beyond the default size limit (a raised SizeLimit: `bits` from
+/// check_normalized_pair_size), on a thread whose stack fits the exact root isolation's recursion,
+/// whose depth grows with the numbers (base/large_stack.hpp).
+template <class F>
+auto with_stack_for(std::size_t bits, F f) -> decltype(f()) {
+  if (bits <= kMaxNormalizedBits) return f();
+  std::optional<decltype(f())> out;
+  detail::run_on_large_stack(detail::stack_for_bits(bits), [&] { out.emplace(f()); });
+  return std::move(*out);
+}
+
 }  // namespace
 
-Verdict decide_position(const Ellipsoid& e, const Paraboloid& p) {
+Verdict decide_position(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
   // Doubles and the fast reader's numbers are within the size limit: the check's own two flag
   // tests, without the call.
-  if (!storage_of(e).within_size_limit() || !storage_of(p).within_size_limit()) check_normalized_pair_size(e, p);
-  const detail::PairContext pair(e, p);
-  detail::Climb c(pair, true);
-  return detail::climb(c);
+  std::size_t bits = 0;
+  if (!storage_of(e).within_size_limit() || !storage_of(p).within_size_limit())
+    bits = check_normalized_pair_size(e, p, limit);
+  return with_stack_for(bits, [&] {
+    const detail::PairContext pair(e, p);
+    detail::Climb c(pair, true);
+    return detail::climb(c);
+  });
 }
 
 Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
@@ -60,14 +78,12 @@ Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
   return decide_position(first, Paraboloid::from_doubles(p));
 }
 
-Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
-  check_normalized_pair_size(e, p);
-  return classify_impl(e, p, evidence, true);
+Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
+  return with_stack_for(check_normalized_pair_size(e, p, limit), [&] { return classify_impl(e, p, evidence, true); });
 }
 
-Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {
-  check_normalized_pair_size(e, p);
-  return classify_impl(e, p, evidence, false);
+Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
+  return with_stack_for(check_normalized_pair_size(e, p, limit), [&] { return classify_impl(e, p, evidence, false); });
 }
 
 Classification detail::classify_unchecked(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {

@@ -259,4 +259,6 @@ std::string classification_json_text(const Classification& c, const RenderOption
 
 std::string contact_json_text(const ContactAnswer& a) { return detail::answer_text(128, a); }
 
+std::string minimal_json_text(const Verdict& v) { return detail::answer_text(128, v); }
+
 }  // namespace relpos::io

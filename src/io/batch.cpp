@@ -75,7 +75,8 @@ class LineReader {
     if (!fixed_ && !out_.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
     if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
     if (!fixed_ && !out_.paraboloid) out_.paraboloid = detail::paraboloid_from_tree(paraboloid, "paraboloid");
-    check_normalized_pair_size(*out_.ellipsoid, fixed_ ? *fixed_ : *out_.paraboloid);  // doc/cli.md, Limits
+    check_normalized_pair_size(*out_.ellipsoid, fixed_ ? *fixed_ : *out_.paraboloid,
+                               options_.size_limit);  // doc/cli.md, Limits
   }
 
  private:

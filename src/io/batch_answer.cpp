@@ -36,11 +36,11 @@ void answer(const BatchLine& in, std::string_view id, const BatchOptions& option
       options.margin_bits > 0 ? std::optional<Margin>(margin(*in.ellipsoid, *in.paraboloid, options.margin_bits))
                               : std::nullopt;
   if (options.contact_only) {
-    detail::write_answer(id, out, contact(*in.ellipsoid, *in.paraboloid));
+    detail::write_answer(id, out, contact(*in.ellipsoid, *in.paraboloid, options.size_limit));
   } else if (options.evidence == Evidence::Minimal) {  // the verdict alone: classify's, without its evidence
-    detail::write_answer(id, out, decide_position(*in.ellipsoid, *in.paraboloid));
+    detail::write_answer(id, out, decide_position(*in.ellipsoid, *in.paraboloid, options.size_limit));
   } else {
-    const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full);
+    const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full, options.size_limit);
     detail::write_answer(id, out, c, options.render);
   }
   if (m) detail::append_margin_member(*m, options.render.digits, out);

@@ -41,12 +41,14 @@ Rational rational_between(const Alg& a, const Alg& b) {
 /// others are isolated separately (smaller polynomials make every later sign evaluation at the zero
 /// cheaper).
 void add_zeros(const AK& ak, const PolyZ& p, unsigned cause, const Rational& lo, const Rational& hi,
-               std::vector<Candidate>& out) {
+               std::vector<Candidate>& out, const Interrupt* interrupt) {
+  check(interrupt);
   if (CGAL::is_zero(p) || p.degree() < 1) return;
   std::vector<Integer> coeffs;
   for (int i = 0; i <= p.degree(); ++i) coeffs.push_back(p[i]);
   std::vector<Candidate> zeros;
   for (const auto& g : irreducible_factors(coeffs)) {
+    check(interrupt);
     const PolyZ gz(g.begin(), g.end());
     if (g.size() == 2) {
       const Rational x(-g[0], g[1]);

@@ -11,6 +11,7 @@
 
 #include "motion/instant_position.hpp"
 #include "relpos/algebraic_real.hpp"
+#include "relpos/interrupt.hpp"
 #include "relpos/numbers.hpp"
 
 namespace relpos::detail {
@@ -38,9 +39,10 @@ Candidate make_candidate(const Alg& t, unsigned cause, std::optional<Rational> e
 AlgebraicReal& instant_of(const Candidate& z);
 
 /// Merge the real zeros of p in [lo, hi] into the sorted list `out` (exact comparisons; a zero
-/// shared by several polynomials is kept once with all its causes).
+/// shared by several polynomials is kept once with all its causes). `interrupt` is checked before
+/// each irreducible factor is isolated.
 void add_zeros(const AK& ak, const PolyZ& p, unsigned cause, const Rational& lo, const Rational& hi,
-               std::vector<Candidate>& out);
+               std::vector<Candidate>& out, const Interrupt* interrupt = nullptr);
 
 /// A rational strictly between two algebraic reals a < b: the one of smallest denominator between
 /// their isolating intervals, refined until disjoint (a motion's interval sample).

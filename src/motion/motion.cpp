@@ -41,12 +41,18 @@ int total_degree(const std::vector<std::pair<PolyZ, unsigned>>& polys) {
 }
 
 /// The position at an instant t* where f(., t*) has a multiple root, for any size (instant_position.hpp);
-/// nullopt when f(., t*) is square-free there.
-std::optional<detail::InstantDecision> decide_at(const MovingPencil& mp, const AK& ak, const Candidate& a) {
+/// nullopt when f(., t*) is square-free there. `interrupt` is checked before every sign.
+std::optional<detail::InstantDecision> decide_at(const MovingPencil& mp, const AK& ak, const Candidate& a,
+                                                 const Interrupt* interrupt) {
   // A zero of the discriminant polynomial (its minimal polynomial divides Disc f) needs no test.
   const bool known_multiple = mp.disc_zero || ((a.causes & kCauseDiscriminant) && !a.exact);
   return detail::decide_at_instant(
-      *mp.instant, [&](const PolyZ& q) { return sign_at(ak, q, a); }, known_multiple);
+      *mp.instant,
+      [&](const PolyZ& q) {
+        check(interrupt);
+        return sign_at(ak, q, a);
+      },
+      known_multiple);
 }
 
 /// rho(t*) <= 1 at an instant (the two smallness quantities' signs; reported, never needed).
@@ -94,14 +100,14 @@ std::string classify_how(const Classification& c) {
 }
 
 /// The candidate instants in [t0, t1], with t0 and t1 themselves, increasing.
-std::vector<Candidate> candidate_instants(const MovingPencil& mp, const AK& ak, const Rational& t0,
-                                          const Rational& t1) {
+std::vector<Candidate> candidate_instants(const MovingPencil& mp, const AK& ak, const Rational& t0, const Rational& t1,
+                                          const Interrupt* interrupt) {
   std::vector<Candidate> cands{make_candidate(Alg(t0), kCauseStart, t0, {-t0.numerator(), t0.denominator()})};
   if (t1 > t0)
     cands.push_back(make_candidate(Alg(t1), kCauseEnd, t1, {-t1.numerator(), t1.denominator()}));
   else
     cands.front().causes |= kCauseEnd;
-  for (const auto& [poly, cause] : mp.events) add_zeros(ak, poly, cause, t0, t1, cands);
+  for (const auto& [poly, cause] : mp.events) add_zeros(ak, poly, cause, t0, t1, cands, interrupt);
   return cands;
 }
 
@@ -110,7 +116,8 @@ std::vector<Candidate> candidate_instants(const MovingPencil& mp, const AK& ak, 
 /// of instant_position.hpp for any size, or, f square-free at t* (no tangency: that needs a
 /// multiple root), the open position (E, I or C) of the neighbouring intervals.
 MotionInstant instant_at(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const MovingPencil& mp,
-                         const AK& ak, const Candidate& z, const std::optional<Position>& before) {
+                         const AK& ak, const Candidate& z, const std::optional<Position>& before,
+                         const Interrupt* interrupt) {
   MotionInstant inst{instant_of(z), Position::C, false, z.causes, ""};
   if (inst.time.is_rational()) {
     const Classification c = classify_at(e0, motion, p, *inst.time.exact());
@@ -119,7 +126,7 @@ MotionInstant instant_at(const Ellipsoid& e0, const RigidMotion& motion, const P
     inst.how = classify_how(c);
     return inst;
   }
-  if (const auto d = decide_at(mp, ak, z)) {
+  if (const auto d = decide_at(mp, ak, z, interrupt)) {
     inst.position = d->position;
     inst.how = "at the algebraic instant: " + d->how;
   } else {
@@ -128,6 +135,7 @@ MotionInstant instant_at(const Ellipsoid& e0, const RigidMotion& motion, const P
         "at the algebraic instant: f is square-free (no root merges), the position of the neighbouring "
         "intervals";
   }
+  check(interrupt);
   inst.small = small_at(mp, ak, z);
   return inst;
 }
@@ -157,8 +165,9 @@ std::string to_string(FirstContact::Kind kind) {
 }
 
 FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
-                           const Rational& t1) {
+                           const Rational& t1, const Interrupt* interrupt) {
   validate_motion(motion, t0, t1);
+  check(interrupt);
   FirstContact out;
   const Classification c0 = classify_at(e0, motion, p, t0);
   out.start_position = c0.verdict.position;
@@ -171,14 +180,15 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
   }
   // Separation (two distinct positive roots) is open and is decided for any size; it can only end
   // where two roots of f meet, i.e. at a real zero of `merge` (math.md §7).
-  const MovingPencil mp(e0, motion, p);
+  const MovingPencil mp(e0, motion, p, interrupt);
   AK ak;
   std::vector<Candidate> zeros;
-  add_zeros(ak, mp.merge, kCauseDiscriminant, t0, t1, zeros);
+  add_zeros(ak, mp.merge, kCauseDiscriminant, t0, t1, zeros, interrupt);
   const auto cmp = ak.compare_1_object();
   const Alg a0(t0);
   for (const Candidate& z : zeros) {
     if (cmp(z.t, a0) == CGAL::EQUAL) continue;  // t0 itself: classified above
+    check(interrupt);
     Position pos;
     std::string how;
     if (z.exact) {
@@ -187,7 +197,7 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
       how = classify_how(c);
     } else {
       // The left neighbour is E; E is open, so a square-free f (no root merges) keeps it.
-      const auto d = decide_at(mp, ak, z);
+      const auto d = decide_at(mp, ak, z, interrupt);
       if (!d) continue;
       pos = d->position;
       how = "at the algebraic instant: " + d->how;
@@ -206,18 +216,19 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
 }
 
 Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
-                  const Rational& t1) {
+                  const Rational& t1, const Interrupt* interrupt) {
   validate_motion(motion, t0, t1);
   Timeline out;
   out.t0 = t0;
   out.t1 = t1;
-  const MovingPencil mp(e0, motion, p);
+  const MovingPencil mp(e0, motion, p, interrupt);
   out.discriminant_identically_zero = mp.disc_zero;
   out.event_degree = total_degree(mp.events);
   AK ak;
-  const std::vector<Candidate> cands = candidate_instants(mp, ak, t0, t1);
+  const std::vector<Candidate> cands = candidate_instants(mp, ak, t0, t1, interrupt);
   // Open intervals: classified exactly at a rational sample strictly inside.
   for (std::size_t i = 0; i + 1 < cands.size(); ++i) {
+    check(interrupt);
     MotionInterval iv;
     iv.sample = rational_between(cands[i].t, cands[i + 1].t);
     const Classification c = classify_at(e0, motion, p, iv.sample);
@@ -226,9 +237,10 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
     out.intervals.push_back(std::move(iv));
   }
   for (std::size_t i = 0; i < cands.size(); ++i) {
+    check(interrupt);
     const std::optional<Position> before =
         i > 0 ? std::optional<Position>(out.intervals[i - 1].position) : std::nullopt;
-    MotionInstant inst = instant_at(e0, motion, p, mp, ak, cands[i], before);
+    MotionInstant inst = instant_at(e0, motion, p, mp, ak, cands[i], before, interrupt);
     // Cross-check with the neighbours: E|C forces TE, I|C forces TI, E|I is impossible, ...
     check_closure(inst.position, before,
                   i + 1 < cands.size() ? std::optional<Position>(out.intervals[i].position) : std::nullopt, inst.time);
@@ -239,9 +251,9 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
 
 std::optional<Position> position_by_subresultants(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p,
                                                   const Rational& t) {
-  const MovingPencil mp(e0, motion, p);
+  const MovingPencil mp(e0, motion, p, nullptr);
   AK ak;
-  const auto d = decide_at(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}));
+  const auto d = decide_at(mp, ak, make_candidate(Alg(t), 0, t, {-t.numerator(), t.denominator()}), nullptr);
   if (!d) return std::nullopt;
   return d->position;
 }

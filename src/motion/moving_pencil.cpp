@@ -78,21 +78,25 @@ void make_primitive(PolyZ* first, PolyZ* last) {
     for (PolyZ* p = first; p != last; ++p) *p = divide_exactly(*p, g);
 }
 
-MovingPencil::MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p) {
+MovingPencil::MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p, const Interrupt* interrupt) {
   const MatZ pz = integer_matrix(p.matrix());
   const MatZ ez = integer_matrix(moving_ellipsoid_matrix(e0, m));
   f = characteristic_polynomial<PolyZ>(pz, ez);
+  check(interrupt);
   s = special_polynomial<PolyZ>(pz, ez);
   // f and s divided by their integer contents: positive constants, so every root in l, every
   // multiplicity and the sign of every decision quantity (homogeneous in f and in s) is kept,
   // and every polynomial derived below is much smaller.
   make_primitive(f.data(), f.data() + f.size());
   make_primitive(s.data(), s.data() + s.size());
+  check(interrupt);
   SturmHabicht<PolyZ> sh(f);
+  check(interrupt);
   for (int i = 0; i < 3; ++i) g2[i] = sh.g2[i];
   for (int i = 0; i < 2; ++i) g1[i] = sh.g1[i];
   disc = sh.discriminant();
   SmallnessQuantities<PolyZ> q(f, s);
+  check(interrupt);
   vertex = q.vertex;
   graeffe = q.graeffe;
   // Integer contents removed (positive factors): separately where only signs and zeros are read,
@@ -102,10 +106,11 @@ MovingPencil::MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Para
   for (PolyZ* x : {&disc, &vertex, &graeffe}) make_primitive(x, x + 1);
   disc_zero = CGAL::is_zero(disc);
   instant.emplace(pz, ez, f, g2, g1, disc);
+  check(interrupt);
   if (!disc_zero)
-    add_square_free_events();
+    add_square_free_events(interrupt);
   else
-    add_multiple_factor_events();
+    add_multiple_factor_events(interrupt);
   // For a pure translation s and det E are constant, so both quantities are constants: rho does
   // not change (math.md §7). A rotation can change it.
   events.emplace_back(vertex, kCauseSmallness);
@@ -117,11 +122,12 @@ MovingPencil::MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Para
 /// multiple root), can only change where Disc f = 0. For a body that is not small the position also
 /// changes where a root of f crosses lambda_s (math.md §7 and §8): the real zeros of
 /// Res_l(f^, s), f^ = f / gcd(f, s) over Q(t).
-void MovingPencil::add_square_free_events() {
+void MovingPencil::add_square_free_events(const Interrupt* interrupt) {
   merge = disc;
   events.emplace_back(disc, kCauseDiscriminant);
   const BiZ bf(f.begin(), f.end()), bs(s.begin(), s.end());
   const BiZ fhat = CGAL::integral_division_up_to_constant_factor(bf, CGAL::gcd_up_to_constant_factor(bf, bs));
+  check(interrupt);
   if (fhat.degree() >= 1) {
     const PolyZ res = CGAL::resultant(fhat, bs);
     if (!CGAL::is_zero(res)) events.emplace_back(res, kCauseSpecialRoot);
@@ -131,14 +137,18 @@ void MovingPencil::add_square_free_events() {
 /// Disc f = 0 for every t: f has a multiple factor over Q(t). Work with r = f / gcd(f, df/dl) (the
 /// square-free part, whose lc is constant because f4 is): away from the zeros of Disc r,
 /// Res(r / gcd(r, s), s) and Disc s, the roots of f keep their multiplicities in f and in s.
-void MovingPencil::add_multiple_factor_events() {
+void MovingPencil::add_multiple_factor_events(const Interrupt* interrupt) {
   const BiZ bf(f.begin(), f.end()), bs(s.begin(), s.end());
   const BiZ r =
       CGAL::integral_division_up_to_constant_factor(bf, CGAL::gcd_up_to_constant_factor(bf, CGAL::differentiate(bf)));
+  check(interrupt);
   merge = r.degree() >= 2 ? PolyZ(CGAL::resultant(r, CGAL::differentiate(r))) : PolyZ(Integer(1));
   events.emplace_back(merge, kCauseDiscriminant);
+  check(interrupt);
   const BiZ rhat = CGAL::integral_division_up_to_constant_factor(r, CGAL::gcd_up_to_constant_factor(r, bs));
+  check(interrupt);
   if (rhat.degree() >= 1) events.emplace_back(PolyZ(CGAL::resultant(rhat, bs)), kCauseSpecialRoot);
+  check(interrupt);
   const PolyZ ds = CGAL::resultant(bs, CGAL::differentiate(bs));
   if (!CGAL::is_zero(ds)) events.emplace_back(ds, kCauseSpecialRoot);
 }

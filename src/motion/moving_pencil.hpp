@@ -11,6 +11,7 @@
 
 #include "algebra/pencil.hpp"
 #include "motion/instant_position.hpp"
+#include "relpos/interrupt.hpp"
 #include "relpos/motion.hpp"
 
 namespace relpos::detail {
@@ -33,11 +34,13 @@ struct MovingPencil {
   std::vector<std::pair<PolyZ, unsigned>> events;  // every candidate instant, with its cause
   std::optional<InstantPencil> instant;            // the decision at instants where f has a multiple root
 
-  MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p);
+  /// `interrupt` is checked between the steps (doc/cli.md, Limits: a step of the largest motions
+  /// takes about a second).
+  MovingPencil(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p, const Interrupt* interrupt = nullptr);
 
  private:
-  void add_square_free_events();
-  void add_multiple_factor_events();
+  void add_square_free_events(const Interrupt* interrupt);
+  void add_multiple_factor_events(const Interrupt* interrupt);
 };
 
 }  // namespace relpos::detail

@@ -383,7 +383,7 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
         } else {
           for (std::size_t i = lo; i < hi; ++i) pending.push_back(i);
         }
-        for (std::size_t i : pending) out[i] = scene_verdict(decide_position(bodies[i], p_));
+        for (std::size_t i : pending) out[i] = scene_verdict(decide_position(bodies[i], p_, options.size_limit));
         for (std::size_t i = lo; i < hi; ++i) local.add(out[i]);
         if (options.progress) options.progress->fetch_add(hi - lo, std::memory_order_relaxed);
       }

@@ -187,6 +187,24 @@ def main():
     classify(["classify", "--sphere", "0,0,1,1"], 2, "missing the paraboloid")
     classify(["classify", "--sphere", "0,0,1,1", "--standard-paraboloid", "1,2", "--digits", "0"], 2, "--digits")
     classify(["batch", "/nonexistent/relpos-hostile.jsonl"], 3, "cannot open")
+    # The pair size limit raised with --max-bits (never lowered): a 4661-bit sphere is refused by
+    # default and answered with the limit raised, by classify (contact only too), batch and scene.
+    wide = "0,1/%s,1,1/4" % ("7" * 700 + "1")
+    classify(["classify", "--sphere", wide, "--standard-paraboloid", "1,1"], 1, "beyond the limit of 4096 bits")
+    classify(["classify", "--sphere", wide, "--standard-paraboloid", "1,1", "--contact-only"], 1, "numbers too large")
+    classify(["classify", "--sphere", wide, "--standard-paraboloid", "1,1", "--max-bits", "4095"], 2, "--max-bits")
+    for extra in ([], ["--contact-only"]):
+        p = run([relpos, "classify", "--sphere", wide, "--standard-paraboloid", "1,1", "--max-bits", "5000", "--json"]
+                + extra)
+        if p is None or p.returncode != 0 or json.loads(p.stdout.decode()).get("position") != "I":
+            fail("relpos classify --max-bits 5000 %s: expected position I, got %s" % (extra, p and p.stdout[:200]))
+    line = ('{"id": 1, "ellipsoid": {"sphere": {"center": [0, "1/%s", 1], "radius": "1/4"}}}' % ("7" * 700 + "1"))
+    for cmd, data in ((["batch"], line[:-1] + ', "paraboloid": {"vertex": [0, 0, 0], "a": 1, "b": 1}}'),
+                      (["scene", "--standard-paraboloid", "1,1", "--no-progress"], line)):
+        for limit, want in (([], b"numbers too large"), (["--max-bits", "5000"], b'"position":"I"')):
+            p = run([relpos] + cmd + ["-"] + limit, stdin=(data + "\n").encode())
+            if p is None or p.returncode != 0 or want not in p.stdout:
+                fail("relpos %s %s: expected %r, got %s" % (cmd[0], limit, want, p and p.stdout[:200]))
     p = run([relpos, "classify", "--sphere", "0,0,1,x", "--standard-paraboloid", "1,2", "--json"])
     if p is None or p.returncode != 1 or "error" not in json.loads(p.stdout.decode() or "{}"):
         fail("relpos classify --json with a bad number: expected exit 1 and {\"error\": ...} on stdout")

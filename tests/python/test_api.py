@@ -157,7 +157,7 @@ def test_scene_equals_per_pair_classify():
     E = numpy.array([[[float(x) for x in row] for row in e.matrix()] for e in bodies[:2]])
     assert relpos.scene(p.matrix(), E).positions.tolist() == expected[:2]
     E[1] = numpy.diag([1.0, -1.0, 1.0, -1.0])
-    with pytest.raises(ValueError, match=r"E\[1\]: ellipsoid: not an ellipsoid"):
+    with pytest.raises(ValueError, match=r"bodies\[1\]: ellipsoid: not an ellipsoid"):
         relpos.scene(p, E)
 
 
