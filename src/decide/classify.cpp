@@ -20,6 +20,7 @@
 #include "anysize/exact.hpp"
 #include "anysize/gap.hpp"
 #include "certificate/build.hpp"
+#include "decide/static_route.hpp"
 #include "decide/unchecked.hpp"
 #include "filters/fixed_pencil.hpp"
 #include "filters/multiple_roots.hpp"
@@ -829,6 +830,22 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
 }
 
 }  // namespace
+
+void detail::static_route_table(Verdict (&table)[4][3]) {
+  for (int c = 0; c < 4; ++c)
+    for (int rho = -1; rho <= 1; ++rho) {
+      Verdict& v = table[c][rho + 1];
+      v = Verdict{};  // stage StaticDouble
+      if (!decide_from_discriminant(static_cast<DiscriminantCase>(c), rho, v)) v = Verdict{};
+    }
+}
+
+bool detail::static_route_gap(Verdict& v, bool gap) {
+  if (!needs_gap(v)) return false;
+  v.roots_above_lambda_s = static_cast<signed char>(gap);
+  decide(v);
+  return decided(v);
+}
 
 std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs_one) {
   Verdict v;

@@ -1,0 +1,189 @@
+#include "decide/many_pairs.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "algebra/rounding.hpp"
+#include "decide/static_route.hpp"
+#include "filters/static_filter_lanes.hpp"
+
+namespace relpos {
+namespace {
+
+using detail::kPairLanes;
+
+/// Pairs as 32 raw doubles each.
+struct RawPairs {
+  const double *e, *p;
+  static constexpr detail::PairInput kInput = detail::PairInput::raw;
+  void lane(std::size_t i, const double*& el, const double*& pl) const {
+    el = e + 16 * i;
+    pl = p + 16 * i;
+  }
+  /// decide_position on the doubles; where it throws, the two steps say which matrix it is.
+  PairStatus scalar(std::size_t i, Verdict& v) const {
+    DoubleMatrix4 ed, pd;
+    std::copy(e + 16 * i, e + 16 * i + 16, ed.begin());
+    std::copy(p + 16 * i, p + 16 * i + 16, pd.begin());
+    try {
+      v = decide_position(ed, pd);
+      return PairStatus::Decided;
+    } catch (const InputError&) {
+    }
+    try {
+      static_cast<void>(Ellipsoid::from_doubles(ed));
+    } catch (const InputError&) {
+      return PairStatus::InvalidEllipsoid;
+    }
+    return PairStatus::InvalidParaboloid;
+  }
+};
+
+/// The normalized doubles the static filter reads, or null (no doubles: the scalar ladder).
+template <class Q>
+const double* filter_doubles_of(const Q& q) {
+  const DoubleMatrix4* d = storage_of(q).filter_doubles();
+  return d ? d->data() : nullptr;
+}
+
+/// Pairs of built quadrics, the paraboloid shared when `shared`.
+struct BuiltPairs {
+  const Ellipsoid* e;
+  const Paraboloid* p;
+  bool shared;
+  static constexpr detail::PairInput kInput = detail::PairInput::normalized;
+  void lane(std::size_t i, const double*& el, const double*& pl) const {
+    el = filter_doubles_of(e[i]);
+    pl = filter_doubles_of(p[shared ? 0 : i]);
+  }
+  /// decide_position on the quadrics: InputError only for the size limit.
+  PairStatus scalar(std::size_t i, Verdict& v) const {
+    try {
+      v = decide_position(e[i], p[shared ? 0 : i]);
+      return PairStatus::Decided;
+    } catch (const InputError&) {
+      return PairStatus::TooLarge;
+    }
+  }
+};
+
+/// The bodies index[k] against one paraboloid (InputError passed on, as the scene's callers expect).
+struct IndexedPairs {
+  const Ellipsoid* bodies;
+  const std::size_t* index;
+  const Paraboloid* p;
+  static constexpr detail::PairInput kInput = detail::PairInput::normalized;
+  void lane(std::size_t k, const double*& el, const double*& pl) const {
+    el = filter_doubles_of(bodies[index[k]]);
+    pl = filter_doubles_of(*p);
+  }
+  PairStatus scalar(std::size_t k, Verdict& v) const {
+    v = decide_position(bodies[index[k]], *p);
+    return PairStatus::Decided;
+  }
+};
+
+/// Positions (and stages) out, and the status of every pair.
+struct PositionsOut {
+  Position* positions;
+  PairStatus* status;
+  Stage* stages;
+  void decided(std::size_t i, const Verdict& v) const {
+    positions[i] = v.position;
+    if (stages) stages[i] = v.stage;
+    status[i] = PairStatus::Decided;
+  }
+  void failed(std::size_t i, PairStatus s) const { status[i] = s; }
+};
+
+/// Whole verdicts out (the scene's).
+struct VerdictsOut {
+  Verdict* verdicts;
+  void decided(std::size_t i, const Verdict& v) const { verdicts[i] = v; }
+  void failed(std::size_t, PairStatus) const {}
+};
+
+/// The route's verdicts (static_route_table), built once.
+struct RouteTable {
+  Verdict v[4][3];
+  RouteTable() { detail::static_route_table(v); }
+};
+
+/// Blocks of kPairLanes pairs through the lanes (in round to nearest, which their bounds assume; in
+/// any other mode decide_position runs its interval stage instead), each pair whose signs they do
+/// not settle through decide_position itself.
+template <class Pairs, class Out>
+std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out) {
+  static const RouteTable table;
+  std::size_t failed = 0;
+  const bool lanes = detail::rounding_to_nearest();
+  detail::PairBlock block;
+  detail::PairBlockSigns signs;
+  for (std::size_t start = 0; start < n; start += kPairLanes) {
+    const int count = static_cast<int>(std::min<std::size_t>(kPairLanes, n - start));
+    if (lanes) {
+      for (int l = 0; l < kPairLanes; ++l) {
+        if (l < count) {
+          pairs.lane(start + static_cast<std::size_t>(l), block.e[l], block.p[l]);
+        } else {
+          block.e[l] = block.p[l] = nullptr;
+        }
+      }
+      detail::static_filter_lanes(block, Pairs::kInput, signs);
+    }
+    for (int l = 0; l < count; ++l) {
+      const std::size_t i = start + static_cast<std::size_t>(l);
+      if (lanes) {
+        // What run_stages does with the route's signs: the table's verdict when it decides, else
+        // the gap test's answer when the verdict waits for it and the lanes have it.
+        const DiscriminantSignBits bits = signs.bits(l);
+        const int rho = bits.rho_vs_one();
+        if (rho != 2) {
+          const Verdict& v = table.v[static_cast<int>(bits.discriminant_case())][rho + 1];
+          if (v.rule != Rule::None) {
+            out.decided(i, v);
+            continue;
+          }
+          Verdict with_gap = v;
+          if (signs.gap[l] >= 0 && detail::static_route_gap(with_gap, signs.gap[l] != 0)) {
+            out.decided(i, with_gap);
+            continue;
+          }
+        }
+      }
+      Verdict v;
+      const PairStatus s = pairs.scalar(i, v);
+      if (s == PairStatus::Decided) {
+        out.decided(i, v);
+      } else {
+        out.failed(i, s);
+        ++failed;
+      }
+    }
+  }
+  return failed;
+}
+
+}  // namespace
+
+std::size_t decide_positions(const double* e, const double* p, std::size_t n, Position* positions, PairStatus* status,
+                             Stage* stages) {
+  return decide_blocks(RawPairs{e, p}, n, PositionsOut{positions, status, stages});
+}
+
+std::size_t decide_positions(const Ellipsoid* e, const Paraboloid* p, std::size_t n, Position* positions,
+                             PairStatus* status, Stage* stages) {
+  return decide_blocks(BuiltPairs{e, p, false}, n, PositionsOut{positions, status, stages});
+}
+
+std::size_t decide_positions(const Ellipsoid* e, std::size_t n, const Paraboloid& p, Position* positions,
+                             PairStatus* status, Stage* stages) {
+  return decide_blocks(BuiltPairs{e, &p, true}, n, PositionsOut{positions, status, stages});
+}
+
+void detail::decide_positions_at(const Ellipsoid* bodies, const std::size_t* index, std::size_t n, const Paraboloid& p,
+                                 Verdict* verdicts) {
+  decide_blocks(IndexedPairs{bodies, index, &p}, n, VerdictsOut{verdicts});
+}
+
+}  // namespace relpos
