@@ -1,6 +1,7 @@
 #include "decide/many_pairs.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "algebra/rounding.hpp"
@@ -20,22 +21,26 @@ struct RawPairs {
     el = e + 16 * i;
     pl = p + 16 * i;
   }
-  /// decide_position on the doubles; where it throws, the two steps say which matrix it is.
+  /// decide_position on the doubles as its two steps (the same verdict, and the same InputError, the
+  /// ellipsoid's first; classify.hpp): its one-call form would first repeat the static route, which
+  /// the lanes ran already.
   PairStatus scalar(std::size_t i, Verdict& v) const {
     DoubleMatrix4 ed, pd;
     std::copy(e + 16 * i, e + 16 * i + 16, ed.begin());
     std::copy(p + 16 * i, p + 16 * i + 16, pd.begin());
+    std::optional<Ellipsoid> ellipsoid;
     try {
-      v = decide_position(ed, pd);
-      return PairStatus::Decided;
-    } catch (const InputError&) {
-    }
-    try {
-      static_cast<void>(Ellipsoid::from_doubles(ed));
+      ellipsoid.emplace(Ellipsoid::from_doubles(ed));
     } catch (const InputError&) {
       return PairStatus::InvalidEllipsoid;
     }
-    return PairStatus::InvalidParaboloid;
+    try {
+      const Paraboloid paraboloid = Paraboloid::from_doubles(pd);
+      v = decide_position(*ellipsoid, paraboloid);
+    } catch (const InputError&) {
+      return PairStatus::InvalidParaboloid;  // doubles are within the size limit: the shape
+    }
+    return PairStatus::Decided;
   }
 };
 

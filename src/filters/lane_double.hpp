@@ -65,6 +65,52 @@ struct LaneDouble {
   [[gnu::always_inline]] friend LaneDouble operator-(const LaneDouble& a) { return LaneDouble(-a.v); }
 };
 
+/// A LaneDouble that may be known, for the whole block, to be zero in every lane: the number type
+/// of the pencil when every paraboloid of a block has the same zero entries (an axis-aligned one has
+/// seven, math.md §11). `zero` is known when the code is compiled (it comes from the entries'
+/// positions, constants once the formula is unrolled), so a product with a known zero, and adding
+/// or subtracting one, are left out of the compiled code. Every value that is not zero is then the
+/// double the full formula computes, bit for bit: a product with an exact zero is a zero (the other
+/// factor is finite), and adding a zero to x gives x exactly. Only the sign of a zero result may
+/// differ, and no later operation of the route reads it (a certified sign needs |v| above a positive
+/// bound, and zeros have no exponent).
+template <int W>
+struct MaybeZero {
+  LaneDouble<W> x;
+  bool zero;
+
+  MaybeZero() = default;
+  [[gnu::always_inline]] MaybeZero(double c) : x(c), zero(c == 0) {}  // NOLINT(google-explicit-constructor)
+  [[gnu::always_inline]] MaybeZero(const LaneDouble<W>& v, bool z) : x(v), zero(z) {}
+
+  [[gnu::always_inline]] friend MaybeZero operator*(const MaybeZero& a, const MaybeZero& b) {
+    if (a.zero || b.zero) return MaybeZero(0.0);
+    return {a.x * b.x, false};
+  }
+  [[gnu::always_inline]] friend MaybeZero operator+(const MaybeZero& a, const MaybeZero& b) {
+    if (b.zero) return a;
+    if (a.zero) return b;
+    return {a.x + b.x, false};
+  }
+  [[gnu::always_inline]] friend MaybeZero operator-(const MaybeZero& a, const MaybeZero& b) {
+    if (b.zero) return a;
+    if (a.zero) return -b;
+    return {a.x - b.x, false};
+  }
+  [[gnu::always_inline]] friend MaybeZero operator-(const MaybeZero& a) { return {-a.x, a.zero}; }
+};
+
+/// A LaneMatrix read as MaybeZero entries, the entries whose bit is set in `zero` (bit 4 i + j for
+/// entry (i, j)) known to be zero (a constant where the formulas are inlined).
+template <int W>
+struct KnownZeros {
+  const LaneDouble<W>* a;
+  unsigned zero;
+  [[gnu::always_inline]] MaybeZero<W> operator()(int i, int j) const {
+    return {a[4 * i + j], ((zero >> (4 * i + j)) & 1) != 0};
+  }
+};
+
 /// A matrix of W pairs' entries in structure-of-arrays form: entry (i, j) of every lane in one
 /// LaneDouble, read by the generic formulas through m(i, j) as a row-major matrix.
 template <int W>

@@ -103,7 +103,7 @@ const StaticFilterBounds& static_filter_bounds();
 /// error is below 2^-1074 per operation (a double or lanes, each rounded alike). A sign is certain
 /// when |value| exceeds it.
 template <class T>
-T with_slack(T bound) {
+[[gnu::always_inline]] inline T with_slack(T bound) {
   return bound * (1 + 0x1p-40) + 1e-300;
 }
 
