@@ -108,10 +108,17 @@ struct VerdictsOut {
   void failed(std::size_t, PairStatus) const {}
 };
 
-/// The route's verdicts (static_route_table), built once.
+/// The route's verdicts (static_route_table) and, by DiscriminantCase and rho_vs_one + 1 (3 when
+/// uncertain), the verdict run_stages returns at once (rule not None), else null. Built once.
 struct RouteTable {
   Verdict v[4][3];
-  RouteTable() { detail::static_route_table(v); }
+  const Verdict* decided[4][4] = {};
+  RouteTable() {
+    detail::static_route_table(v);
+    for (int c = 0; c < 4; ++c)
+      for (int rho = 0; rho < 3; ++rho)
+        if (v[c][rho].rule != Rule::None) decided[c][rho] = &v[c][rho];
+  }
 };
 
 /// Blocks of kPairLanes pairs through the lanes (in round to nearest, which their bounds assume; in
@@ -120,6 +127,8 @@ struct RouteTable {
 template <class Pairs, class Out>
 std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out) {
   static const RouteTable table;
+  const auto& cases = detail::discriminant_case_table();
+  const auto& rhos = detail::rho_vs_one_table();
   std::size_t failed = 0;
   const bool lanes = detail::rounding_to_nearest();
   detail::PairBlock block;
@@ -142,15 +151,14 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out) {
         // What run_stages does with the route's signs: the table's verdict when it decides, else
         // the gap test's answer when the verdict waits for it and the lanes have it.
         const DiscriminantSignBits bits = signs.bits(l);
-        const int rho = bits.rho_vs_one();
-        if (rho != 2) {
-          const Verdict& v = table.v[static_cast<int>(bits.discriminant_case())][rho + 1];
-          if (v.rule != Rule::None) {
-            out.decided(i, v);
-            continue;
-          }
-          Verdict with_gap = v;
-          if (signs.gap[l] >= 0 && detail::static_route_gap(with_gap, signs.gap[l] != 0)) {
+        const int c = static_cast<int>(cases[bits.case_index()]), rho = rhos[bits.rho_index()];  // rho 2: uncertain
+        if (const Verdict* v = table.decided[c][rho + 1]) {
+          out.decided(i, *v);
+          continue;
+        }
+        if (signs.gap[l] >= 0 && rho != 2) {
+          Verdict with_gap = table.v[c][rho + 1];
+          if (detail::static_route_gap(with_gap, signs.gap[l] != 0)) {
             out.decided(i, with_gap);
             continue;
           }

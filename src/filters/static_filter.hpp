@@ -58,6 +58,10 @@ struct DiscriminantSignBits {
   /// compare_rho_with_one(signs().vertex, signs().graeffe) as -1, 0, 1, or 2 when uncertain (a plain
   /// int: an optional returned through memory stalls the hot path on store forwarding).
   int rho_vs_one() const;
+  /// The bits discriminant_case() and rho_vs_one() read, as indices into their tables
+  /// (detail::discriminant_case_table(), detail::rho_vs_one_table()).
+  unsigned case_index() const { return (positive & 0x3f) | (negative & 0x3f) << 6; }
+  unsigned rho_index() const { return (positive >> kVertex & 3) | (negative >> kVertex & 3) << 2; }
 };
 
 namespace detail {
@@ -70,11 +74,11 @@ const std::array<signed char, 16>& rho_vs_one_table();
 // Inline: called for every pair, between the filter's arithmetic and the decision.
 inline DiscriminantCase DiscriminantSignBits::discriminant_case() const {
   static const auto& table = detail::discriminant_case_table();
-  return table[(positive & 0x3f) | (negative & 0x3f) << 6];
+  return table[case_index()];
 }
 inline int DiscriminantSignBits::rho_vs_one() const {
   static const auto& table = detail::rho_vs_one_table();
-  return table[(positive >> kVertex & 3) | (negative >> kVertex & 3) << 2];
+  return table[rho_index()];
 }
 
 /// static_filter_discriminant_signs_normalized() with smallness always computed, as bits.
