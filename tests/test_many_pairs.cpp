@@ -9,12 +9,14 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
 #include <string>
 #include <vector>
 
+#include "decide/many_pairs.hpp"
 #include "filters/static_filter.hpp"
 #include "filters/static_filter_lanes.hpp"
 #include "ordinary/regime_matrices.hpp"
@@ -69,14 +71,28 @@ struct Tally {
   std::size_t pairs = 0, invalid = 0, static_double = 0;
 };
 
-/// decide_positions on the doubles equals decide_position on every pair: status, position and stage.
-Tally check_doubles(const Pairs& pairs) {
+using relpos::detail::FilterCopy;
+
+/// The copies of the lanes this build and CPU run (the library's chooses one when it is loaded).
+std::vector<FilterCopy> running_copies() {
+  std::vector<FilterCopy> copies;
+  for (const FilterCopy copy : {FilterCopy::baseline, FilterCopy::avx2, FilterCopy::avx512})
+    if (relpos::detail::static_filter_lanes_copy_runs(copy)) copies.push_back(copy);
+  return copies;
+}
+
+/// decide_positions on the doubles (the loaded copy, or `copy`) equals decide_position on every pair:
+/// status, position and stage.
+Tally check_doubles(const Pairs& pairs, std::optional<FilterCopy> copy = std::nullopt) {
   const std::size_t n = pairs.size();
   std::vector<relpos::Position> positions(n);
   std::vector<relpos::Stage> stages(n);
   std::vector<PairStatus> status(n);
   const std::size_t failed =
-      relpos::decide_positions(pairs.e.data(), pairs.p.data(), n, positions.data(), status.data(), stages.data());
+      copy ? relpos::detail::decide_positions_copy(*copy, pairs.e.data(), pairs.p.data(), n, positions.data(),
+                                                   status.data(), stages.data())
+           : relpos::decide_positions(pairs.e.data(), pairs.p.data(), n, positions.data(), status.data(),
+                                      stages.data());
   Tally t;
   std::size_t mismatches = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -117,6 +133,7 @@ TEST_CASE("decide_positions equals decide_position on regime pairs", "[many]") {
     user.add(e, p);
   }
   for (const Pairs* pairs : {&ordinary, &user}) {
+    for (const FilterCopy copy : running_copies()) check_doubles(*pairs, copy);  // each copy, not only the loaded one
     const Tally t = check_doubles(*pairs);
     std::cout << "[many] " << (pairs == &ordinary ? "ordinary" : "user") << " regime: " << t.pairs << " pairs, "
               << t.static_double << " decided by the static stage\n";
@@ -134,10 +151,7 @@ TEST_CASE("the lanes compute the scalar static route's signs", "[many]") {
   // Lane by lane, on the normalized doubles of valid quadrics: the bits and the gap answer of
   // static_filter_discriminant_bits_normalized, for both copies; on the raw doubles: the same, or
   // nothing where a lane could not take its pair (rarely, on this regime).
-  using relpos::detail::FilterCopy;
-  std::vector<FilterCopy> copies;
-  for (const FilterCopy copy : {FilterCopy::baseline, FilterCopy::avx2, FilterCopy::avx512})
-    if (relpos::detail::static_filter_lanes_copy_runs(copy)) copies.push_back(copy);
+  const std::vector<FilterCopy> copies = running_copies();
   if (copies.size() < 3) WARN("only " << copies.size() << " of the filter's copies run on this build and CPU");
   std::mt19937_64 rng(relpos::testing::seed_from_env(34));
   std::size_t lanes = 0, taken_raw = 0, axis_lanes = 0, axis_taken = 0, gaps = 0, differ = 0;
@@ -272,6 +286,7 @@ TEST_CASE("decide_positions equals decide_position near tangency, on rotated par
     rotated_pair(rng, e, p);
     rotated.add(e, i % 2 ? p : negated(p));
   }
+  for (const FilterCopy copy : running_copies()) check_doubles(near, copy), check_doubles(rotated, copy);
   const Tally n = check_doubles(near), r = check_doubles(rotated);
   std::cout << "[many] near tangency: " << n.pairs << " pairs, " << n.static_double
             << " decided by the static stage; rotated paraboloids: " << r.static_double << " of " << r.pairs << "\n";
@@ -319,6 +334,7 @@ TEST_CASE("decide_positions reports every invalid pair as decide_position refuse
       pairs.add(cup, sphere);  // swapped
       mixed += 5;
     }
+  for (const FilterCopy copy : running_copies()) check_doubles(pairs, copy);
   const Tally t = check_doubles(pairs);
   std::cout << "[many] invalid pairs: " << t.invalid << " of " << t.pairs << " refused\n";
   CHECK(t.invalid > mixed / 2);
@@ -337,6 +353,7 @@ TEST_CASE("decide_positions at extreme exponents, on every count of pairs and in
     if (i % 7 == 0) e[15] = std::ldexp(1.0, -1070);  // a subnormal entry
     pairs.add(e, p);
   }
+  for (const FilterCopy copy : running_copies()) check_doubles(pairs, copy);
   const Tally t = check_doubles(pairs);
   std::cout << "[many] extreme exponents: " << t.invalid << " of " << t.pairs << " refused, " << t.static_double
             << " decided by the static stage\n";

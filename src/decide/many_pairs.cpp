@@ -124,8 +124,21 @@ struct RouteTable {
 /// Blocks of kPairLanes pairs through the lanes (in round to nearest, which their bounds assume; in
 /// any other mode decide_position runs its interval stage instead), each pair whose signs they do
 /// not settle through decide_position itself.
-template <class Pairs, class Out>
-std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out) {
+/// The filter of the blocks: the copy chosen when the library was loaded, or a given one.
+struct LoadedCopy {
+  void operator()(const detail::PairBlock& block, detail::PairInput input, detail::PairBlockSigns& out) const {
+    detail::static_filter_lanes(block, input, out);
+  }
+};
+struct GivenCopy {
+  detail::FilterCopy copy;
+  void operator()(const detail::PairBlock& block, detail::PairInput input, detail::PairBlockSigns& out) const {
+    detail::static_filter_lanes_copy(copy, block, input, out);
+  }
+};
+
+template <class Pairs, class Out, class Filter = LoadedCopy>
+std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Filter filter = {}) {
   static const RouteTable table;
   const auto& cases = detail::discriminant_case_table();
   const auto& rhos = detail::rho_vs_one_table();
@@ -143,7 +156,7 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out) {
           block.e[l] = block.p[l] = nullptr;
         }
       }
-      detail::static_filter_lanes(block, Pairs::kInput, signs);
+      filter(block, Pairs::kInput, signs);
     }
     for (int l = 0; l < count; ++l) {
       const std::size_t i = start + static_cast<std::size_t>(l);
@@ -192,6 +205,11 @@ std::size_t decide_positions(const Ellipsoid* e, const Paraboloid* p, std::size_
 std::size_t decide_positions(const Ellipsoid* e, std::size_t n, const Paraboloid& p, Position* positions,
                              PairStatus* status, Stage* stages) {
   return decide_blocks(BuiltPairs{e, &p, true}, n, PositionsOut{positions, status, stages});
+}
+
+std::size_t detail::decide_positions_copy(FilterCopy copy, const double* e, const double* p, std::size_t n,
+                                          Position* positions, PairStatus* status, Stage* stages) {
+  return decide_blocks(RawPairs{e, p}, n, PositionsOut{positions, status, stages}, GivenCopy{copy});
 }
 
 void detail::decide_positions_at(const Ellipsoid* bodies, const std::size_t* index, std::size_t n, const Paraboloid& p,
