@@ -250,7 +250,7 @@ int main(int argc, char** argv) {
         differ += got.status[i] != relpos::PairStatus::Decided || got.positions[i] != want.positions[i] ||
                   got_stage[i] != want_stage[i];
       if (differ) {
-        std::printf("%s: copy %d of decide_positions differs from decide_position on %ld pairs\size", s.name.c_str(),
+        std::printf("%s: copy %d of decide_positions differs from decide_position on %ld pairs\n", s.name.c_str(),
                     static_cast<int>(copy), differ);
         ok = false;
       }
@@ -261,7 +261,7 @@ int main(int argc, char** argv) {
     run_path(kMinimal, s, 0, size, scalar, lanes);
     run_path(kMinimalLanes, s, 0, size, vec, lanes);
     if (scalar.codes != vec.codes) {
-      std::printf("%s: the float decision in lanes differs from the scalar one\size", s.name.c_str());
+      std::printf("%s: the float decision in lanes differs from the scalar one\n", s.name.c_str());
       ok = false;
     }
     for (std::size_t i = 0; i < size; ++i) {
