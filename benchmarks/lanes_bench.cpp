@@ -215,8 +215,8 @@ int main(int argc, char** argv) {
   const auto [lanes, lanes_name] = minimal_lanes_copy();
   const bool avx2 = relpos::detail::static_filter_lanes_copy_runs(relpos::detail::FilterCopy::avx2);
   const char* many_copy = relpos::detail::static_filter_lanes_copy_runs(relpos::detail::FilterCopy::avx512) ? "AVX-512"
-                          : avx2                                                                           ? "AVX2"
-                                                                                                           : "baseline";
+                          : avx2                                                                            ? "AVX2"
+                                 : "baseline";
   std::vector<Set> sets;
   sets.push_back(make_set("ordinary", n, seed));
   sets.push_back(make_set("user", std::min(n, user_n), seed + 1));
@@ -290,7 +290,8 @@ int main(int argc, char** argv) {
           t.resize(kPaths);
           for (int path = 0; path < kPaths; ++path) {
             if (path == kManyAvx2 && !avx2) continue;
-            t[static_cast<std::size_t>(path)].push_back(time_path(path, s, in_cache, threads, block, repeat, scratch, lanes));
+            t[static_cast<std::size_t>(path)].push_back(
+                time_path(path, s, in_cache, threads, block, repeat, scratch, lanes));
           }
         }
   getloadavg(&load_after, 1);
@@ -307,15 +308,17 @@ int main(int argc, char** argv) {
         break;
       }
   }
-  std::printf("lanes_bench: %zu ordinary and %zu user pairs, blocks of %zu in cache (best of %d), %d rounds; %s; lanes: "
-              "many %s, minimal %s\n",
-              sets[0].size(), sets[1].size(), block, repeat, rounds, cpu.c_str(), many_copy, lanes_name);
-  std::string json = "{\"date\": \"" + std::string(date) + "\", \"cpu\": \"" + cpu + "\", \"pairs\": " +
-                     std::to_string(sets[0].size()) + ", \"user_pairs\": " + std::to_string(sets[1].size()) +
-                     ", \"block\": " + std::to_string(block) + ", \"repeat\": " + std::to_string(repeat) +
-                     ", \"rounds\": " + std::to_string(rounds) + ", \"many_copy\": \"" + many_copy +
-                     "\", \"minimal_lanes_copy\": \"" + lanes_name + "\", \"load_before\": " +
-                     std::to_string(load_before) + ", \"load_after\": " + std::to_string(load_after) + ", \"sets\": {";
+  std::printf(
+      "lanes_bench: %zu ordinary and %zu user pairs, blocks of %zu in cache (best of %d), %d rounds; %s; lanes: "
+      "many %s, minimal %s\n",
+      sets[0].size(), sets[1].size(), block, repeat, rounds, cpu.c_str(), many_copy, lanes_name);
+  std::string json = "{\"date\": \"" + std::string(date) + "\", \"cpu\": \"" + cpu +
+                     "\", \"pairs\": " + std::to_string(sets[0].size()) +
+                     ", \"user_pairs\": " + std::to_string(sets[1].size()) + ", \"block\": " + std::to_string(block) +
+                     ", \"repeat\": " + std::to_string(repeat) + ", \"rounds\": " + std::to_string(rounds) +
+                     ", \"many_copy\": \"" + many_copy + "\", \"minimal_lanes_copy\": \"" + lanes_name +
+                     "\", \"load_before\": " + std::to_string(load_before) +
+                     ", \"load_after\": " + std::to_string(load_after) + ", \"sets\": {";
   for (std::size_t k = 0; k < sets.size(); ++k) {
     const std::string& name = sets[k].name;
     json += (k ? ", " : "") + std::string("\"") + name + "\": {\"static\": " + std::to_string(static_stage[name]) +

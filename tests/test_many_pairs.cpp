@@ -89,10 +89,10 @@ Tally check_doubles(const Pairs& pairs, std::optional<FilterCopy> copy = std::nu
   std::vector<relpos::Stage> stages(n);
   std::vector<PairStatus> status(n);
   const std::size_t failed =
-      copy ? relpos::detail::decide_positions_copy(*copy, pairs.e.data(), pairs.p.data(), n, positions.data(),
-                                                   status.data(), stages.data())
-           : relpos::decide_positions(pairs.e.data(), pairs.p.data(), n, positions.data(), status.data(),
-                                      stages.data());
+      copy
+          ? relpos::detail::decide_positions_copy(*copy, pairs.e.data(), pairs.p.data(), n, positions.data(),
+                                                  status.data(), stages.data())
+          : relpos::decide_positions(pairs.e.data(), pairs.p.data(), n, positions.data(), status.data(), stages.data());
   Tally t;
   std::size_t mismatches = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -226,7 +226,9 @@ TEST_CASE("the lanes compute the scalar static route's signs", "[many]") {
 
 namespace {
 
-double uniform(std::mt19937_64& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+double uniform(std::mt19937_64& rng, double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
 
 /// A sphere of radius r tangent to z = x^2/a^2 + y^2/b^2 at its vertex, inside or outside, moved off
 /// tangency by r 2^-k (10 <= k < 50) along the axis (or not moved at all): signs at the edge of the
@@ -255,7 +257,8 @@ void rotated_pair(std::mt19937_64& rng, DoubleMatrix4& e, DoubleMatrix4& p) {
     for (int i = 0; i < 3; ++i) u[i] = small(), v[i] = small();
     w[0] = u[1] * v[2] - u[2] * v[1], w[1] = u[2] * v[0] - u[0] * v[2], w[2] = u[0] * v[1] - u[1] * v[0];
   } while (w[0] == 0 || w[1] == 0 || w[2] == 0);  // in no coordinate plane: no zero entries
-  const double alpha = std::ldexp(1.0, static_cast<int>(rng() % 5) - 2), beta = std::ldexp(1.0, static_cast<int>(rng() % 5) - 2);
+  const double alpha = std::ldexp(1.0, static_cast<int>(rng() % 5) - 2),
+               beta = std::ldexp(1.0, static_cast<int>(rng() % 5) - 2);
   p.fill(0);
   for (int i = 0; i < 3; ++i) {
     for (int j = i; j < 3; ++j) regime::set(p, i, j, alpha * u[i] * u[j] + beta * v[i] * v[j]);
@@ -401,8 +404,8 @@ TEST_CASE("decide_positions on built quadrics and against one paraboloid", "[man
   std::vector<relpos::Position> positions(n), shared_positions(n);
   std::vector<relpos::Stage> stages(n), shared_stages(n);
   std::vector<PairStatus> status(n), shared_status(n);
-  const std::size_t failed = relpos::decide_positions(es.data(), ps.data(), n, positions.data(), status.data(),
-                                                      stages.data());
+  const std::size_t failed =
+      relpos::decide_positions(es.data(), ps.data(), n, positions.data(), status.data(), stages.data());
   const std::size_t shared_failed = relpos::decide_positions(es.data(), n, ps.front(), shared_positions.data(),
                                                              shared_status.data(), shared_stages.data());
   std::size_t mismatches = 0, too_large = 0;
@@ -412,8 +415,7 @@ TEST_CASE("decide_positions on built quadrics and against one paraboloid", "[man
       const PairStatus got = shared ? shared_status[i] : status[i];
       try {
         const Verdict want = relpos::decide_position(es[i], p);
-        const bool ok = got == PairStatus::Decided &&
-                        (shared ? shared_positions[i] : positions[i]) == want.position &&
+        const bool ok = got == PairStatus::Decided && (shared ? shared_positions[i] : positions[i]) == want.position &&
                         (shared ? shared_stages[i] : stages[i]) == want.stage;
         mismatches += !ok;
       } catch (const InputError&) {

@@ -88,6 +88,20 @@ struct IndexedPairs {
   }
 };
 
+/// The route's verdicts (static_route_table) by DiscriminantCase and rho_vs_one + 1, and the position
+/// of each that run_stages returns at once (rule not None; -1 for the others, and in column 3, rho
+/// uncertain). Built once.
+struct RouteTable {
+  Verdict v[4][3];
+  signed char position[4][4];
+  RouteTable() {
+    detail::static_route_table(v);
+    for (int c = 0; c < 4; ++c)
+      for (int rho = 0; rho < 4; ++rho)
+        position[c][rho] = rho < 3 && v[c][rho].rule != Rule::None ? static_cast<signed char>(v[c][rho].position) : -1;
+  }
+};
+
 /// Positions (and stages) out, and the status of every pair.
 struct PositionsOut {
   Position* positions;
@@ -98,6 +112,12 @@ struct PositionsOut {
     if (stages) stages[i] = v.stage;
     status[i] = PairStatus::Decided;
   }
+  /// A verdict of the route's table that decides (stage StaticDouble, as every verdict of it).
+  void route(std::size_t i, const RouteTable& table, int c, int rho) const {
+    positions[i] = static_cast<Position>(table.position[c][rho]);
+    if (stages) stages[i] = Stage::StaticDouble;
+    status[i] = PairStatus::Decided;
+  }
   void failed(std::size_t i, PairStatus s) const { status[i] = s; }
 };
 
@@ -105,25 +125,10 @@ struct PositionsOut {
 struct VerdictsOut {
   Verdict* verdicts;
   void decided(std::size_t i, const Verdict& v) const { verdicts[i] = v; }
+  void route(std::size_t i, const RouteTable& table, int c, int rho) const { verdicts[i] = table.v[c][rho]; }
   void failed(std::size_t, PairStatus) const {}
 };
 
-/// The route's verdicts (static_route_table) and, by DiscriminantCase and rho_vs_one + 1 (3 when
-/// uncertain), the verdict run_stages returns at once (rule not None), else null. Built once.
-struct RouteTable {
-  Verdict v[4][3];
-  const Verdict* decided[4][4] = {};
-  RouteTable() {
-    detail::static_route_table(v);
-    for (int c = 0; c < 4; ++c)
-      for (int rho = 0; rho < 3; ++rho)
-        if (v[c][rho].rule != Rule::None) decided[c][rho] = &v[c][rho];
-  }
-};
-
-/// Blocks of kPairLanes pairs through the lanes (in round to nearest, which their bounds assume; in
-/// any other mode decide_position runs its interval stage instead), each pair whose signs they do
-/// not settle through decide_position itself.
 /// The filter of the blocks: the copy chosen when the library was loaded, or a given one.
 struct LoadedCopy {
   void operator()(const detail::PairBlock& block, detail::PairInput input, detail::PairBlockSigns& out) const {
@@ -165,8 +170,8 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Fil
         // the gap test's answer when the verdict waits for it and the lanes have it.
         const DiscriminantSignBits bits = signs.bits(l);
         const int c = static_cast<int>(cases[bits.case_index()]), rho = rhos[bits.rho_index()];  // rho 2: uncertain
-        if (const Verdict* v = table.decided[c][rho + 1]) {
-          out.decided(i, *v);
+        if (table.position[c][rho + 1] >= 0) {
+          out.route(i, table, c, rho + 1);
           continue;
         }
         if (signs.gap[l] >= 0 && rho != 2) {
