@@ -115,16 +115,20 @@ struct Outputs {
 enum Path { kMinimal, kMinimalLanes, kMany, kManyAvx2, kOneCall, kPaths };
 const char* const kPathKey[kPaths] = {"minimal", "minimal_lanes", "many", "many_avx2", "onecall"};
 
+/// Matrix i of an array of row-major matrices, read in place (std::array<double, 16> is 16 doubles):
+/// the scalar paths get the pairs as the lanes do, without a copy.
+const DoubleMatrix4& matrix_at(const double* m, std::size_t i) {
+  static_assert(sizeof(DoubleMatrix4) == 16 * sizeof(double), "an array of 16 doubles");
+  return *reinterpret_cast<const DoubleMatrix4*>(m + 16 * i);
+}
+
 /// Path `path` on pairs [begin, end) of set s.
 void run_path(int path, const Set& s, std::size_t begin, std::size_t end, Outputs& out, MinimalLanesRun lanes) {
   const double *e = s.e.data(), *p = s.p.data();
   switch (path) {
     case kMinimal:
       for (std::size_t i = begin; i < end; ++i) {
-        ordinary::Matrix pm, em;
-        std::memcpy(pm.data(), p + 16 * i, sizeof pm);
-        std::memcpy(em.data(), e + 16 * i, sizeof em);
-        const auto x = ordinary::minimal_float_decision(pm, em);
+        const auto x = ordinary::minimal_float_decision(matrix_at(p, i), matrix_at(e, i));
         out.codes[i] = x ? static_cast<signed char>(*x) : -1;
       }
       return;
@@ -141,12 +145,8 @@ void run_path(int path, const Set& s, std::size_t begin, std::size_t end, Output
                                             nullptr);
       return;
     default:
-      for (std::size_t i = begin; i < end; ++i) {
-        DoubleMatrix4 em, pm;
-        std::memcpy(em.data(), e + 16 * i, sizeof em);
-        std::memcpy(pm.data(), p + 16 * i, sizeof pm);
-        out.positions[i] = relpos::decide_position(em, pm).position;
-      }
+      for (std::size_t i = begin; i < end; ++i)
+        out.positions[i] = relpos::decide_position(matrix_at(e, i), matrix_at(p, i)).position;
   }
 }
 
