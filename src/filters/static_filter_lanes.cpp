@@ -1,8 +1,10 @@
 #include "filters/static_filter_lanes.hpp"
 
+#include <array>
 #include <cfloat>
 #include <cstring>
 #include <optional>
+#include <utility>
 
 #include "algebra/pencil.hpp"
 #include "algebra/shape_filter.hpp"
