@@ -142,18 +142,40 @@ struct GivenCopy {
   }
 };
 
+/// The pairs through the lanes (in round to nearest, which their bounds assume; in any other mode
+/// decide_position runs its interval stage instead) in blocks of kPairLanes pairs; the pairs whose
+/// signs they do not settle through decide_position itself, after the blocks of their chunk (so that
+/// neither the lanes' code nor the ladder's evicts the other's from the instruction caches pair by
+/// pair).
 template <class Pairs, class Out, class Filter = LoadedCopy>
 std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Filter filter = {}) {
   static const RouteTable table;
   const auto& cases = detail::discriminant_case_table();
   const auto& rhos = detail::rho_vs_one_table();
   std::size_t failed = 0;
-  const bool lanes = detail::rounding_to_nearest();
+  auto scalar = [&](std::size_t i) {
+    Verdict v;
+    const PairStatus s = pairs.scalar(i, v);
+    if (s == PairStatus::Decided) {
+      out.decided(i, v);
+    } else {
+      out.failed(i, s);
+      ++failed;
+    }
+  };
+  if (!detail::rounding_to_nearest()) {
+    for (std::size_t i = 0; i < n; ++i) scalar(i);
+    return failed;
+  }
+  constexpr std::size_t kChunk = 1024;
+  std::size_t open[kChunk];
   detail::PairBlock block;
   detail::PairBlockSigns signs;
-  for (std::size_t start = 0; start < n; start += kPairLanes) {
-    const int count = static_cast<int>(std::min<std::size_t>(kPairLanes, n - start));
-    if (lanes) {
+  for (std::size_t chunk = 0; chunk < n; chunk += kChunk) {
+    const std::size_t end = std::min(n, chunk + kChunk);
+    std::size_t opened = 0;
+    for (std::size_t start = chunk; start < end; start += kPairLanes) {
+      const int count = static_cast<int>(std::min<std::size_t>(kPairLanes, end - start));
       for (int l = 0; l < kPairLanes; ++l) {
         if (l < count) {
           pairs.lane(start + static_cast<std::size_t>(l), block.e[l], block.p[l]);
@@ -162,12 +184,10 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Fil
         }
       }
       filter(block, Pairs::kInput, signs);
-    }
-    for (int l = 0; l < count; ++l) {
-      const std::size_t i = start + static_cast<std::size_t>(l);
-      if (lanes) {
-        // What run_stages does with the route's signs: the table's verdict when it decides, else
-        // the gap test's answer when the verdict waits for it and the lanes have it.
+      for (int l = 0; l < count; ++l) {
+        const std::size_t i = start + static_cast<std::size_t>(l);
+        // What run_stages does with the route's signs: the table's verdict when it decides, else the
+        // gap test's answer when the verdict waits for it and the lanes have it.
         const DiscriminantSignBits bits = signs.bits(l);
         const int c = static_cast<int>(cases[bits.case_index()]), rho = rhos[bits.rho_index()];  // rho 2: uncertain
         if (table.position[c][rho + 1] >= 0) {
@@ -181,16 +201,10 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Fil
             continue;
           }
         }
-      }
-      Verdict v;
-      const PairStatus s = pairs.scalar(i, v);
-      if (s == PairStatus::Decided) {
-        out.decided(i, v);
-      } else {
-        out.failed(i, s);
-        ++failed;
+        open[opened++] = i;
       }
     }
+    for (std::size_t k = 0; k < opened; ++k) scalar(open[k]);
   }
   return failed;
 }
