@@ -94,11 +94,19 @@ struct IndexedPairs {
 struct RouteTable {
   Verdict v[4][3];
   signed char position[4][4];
+  /// position[c][rho_vs_one + 1] by DiscriminantSignBits::rho_index() instead of rho_vs_one, and
+  /// rho_vs_one of each rho_index() (its table).
+  signed char by_rho_index[4][16], rho_of[16];
   RouteTable() {
     detail::static_route_table(v);
     for (int c = 0; c < 4; ++c)
       for (int rho = 0; rho < 4; ++rho)
         position[c][rho] = rho < 3 && v[c][rho].rule != Rule::None ? static_cast<signed char>(v[c][rho].position) : -1;
+    const auto& rhos = detail::rho_vs_one_table();
+    for (std::size_t r = 0; r < 16; ++r) {
+      rho_of[r] = rhos[r];
+      for (int c = 0; c < 4; ++c) by_rho_index[c][r] = position[c][rhos[r] + 1];
+    }
   }
 };
 
@@ -112,9 +120,10 @@ struct PositionsOut {
     if (stages) stages[i] = v.stage;
     status[i] = PairStatus::Decided;
   }
-  /// A verdict of the route's table that decides (stage StaticDouble, as every verdict of it).
-  void route(std::size_t i, const RouteTable& table, int c, int rho) const {
-    positions[i] = static_cast<Position>(table.position[c][rho]);
+  /// A verdict of the route's table that decides (stage StaticDouble, as every verdict of it), by
+  /// case and rho_index().
+  void route(std::size_t i, const RouteTable& table, int c, unsigned long rho_index) const {
+    positions[i] = static_cast<Position>(table.by_rho_index[c][rho_index]);
     if (stages) stages[i] = Stage::StaticDouble;
     status[i] = PairStatus::Decided;
   }
@@ -125,7 +134,9 @@ struct PositionsOut {
 struct VerdictsOut {
   Verdict* verdicts;
   void decided(std::size_t i, const Verdict& v) const { verdicts[i] = v; }
-  void route(std::size_t i, const RouteTable& table, int c, int rho) const { verdicts[i] = table.v[c][rho]; }
+  void route(std::size_t i, const RouteTable& table, int c, unsigned long rho_index) const {
+    verdicts[i] = table.v[c][table.rho_of[rho_index] + 1];
+  }
   void failed(std::size_t, PairStatus) const {}
 };
 
@@ -151,7 +162,6 @@ template <class Pairs, class Out, class Filter = LoadedCopy>
 std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Filter filter = {}) {
   static const RouteTable table;
   const auto& cases = detail::discriminant_case_table();
-  const auto& rhos = detail::rho_vs_one_table();
   std::size_t failed = 0;
   auto scalar = [&](std::size_t i) {
     Verdict v;
@@ -188,12 +198,12 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Fil
         const std::size_t i = start + static_cast<std::size_t>(l);
         // What run_stages does with the route's signs: the table's verdict when it decides, else the
         // gap test's answer when the verdict waits for it and the lanes have it.
-        const DiscriminantSignBits bits = signs.bits(l);
-        const int c = static_cast<int>(cases[bits.case_index()]), rho = rhos[bits.rho_index()];  // rho 2: uncertain
-        if (table.position[c][rho + 1] >= 0) {
-          out.route(i, table, c, rho + 1);
+        const int c = static_cast<int>(cases[signs.case_index[l]]);
+        if (table.by_rho_index[c][signs.rho_index[l]] >= 0) {
+          out.route(i, table, c, signs.rho_index[l]);
           continue;
         }
+        const int rho = table.rho_of[signs.rho_index[l]];  // 2: uncertain
         if (signs.gap[l] >= 0 && rho != 2) {
           Verdict with_gap = table.v[c][rho + 1];
           if (detail::static_route_gap(with_gap, signs.gap[l] != 0)) {

@@ -59,9 +59,18 @@ struct DiscriminantSignBits {
   /// int: an optional returned through memory stalls the hot path on store forwarding).
   int rho_vs_one() const;
   /// The bits discriminant_case() and rho_vs_one() read, as indices into their tables
-  /// (detail::discriminant_case_table(), detail::rho_vs_one_table()).
-  unsigned case_index() const { return (positive & 0x3f) | (negative & 0x3f) << 6; }
-  unsigned rho_index() const { return (positive >> kVertex & 3) | (negative >> kVertex & 3) << 2; }
+  /// (detail::discriminant_case_table(), detail::rho_vs_one_table()); of masks of any integer type
+  /// (the many-pairs filter forms them lane by lane).
+  template <class B>
+  static B case_index_of(const B& positive, const B& negative) {
+    return (positive & 0x3f) | (negative & 0x3f) << 6;
+  }
+  template <class B>
+  static B rho_index_of(const B& positive, const B& negative) {
+    return (positive >> kVertex & 3) | (negative >> kVertex & 3) << 2;
+  }
+  unsigned case_index() const { return case_index_of(positive, negative); }
+  unsigned rho_index() const { return rho_index_of(positive, negative); }
 };
 
 namespace detail {

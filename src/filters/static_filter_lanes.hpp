@@ -38,6 +38,8 @@ struct PairBlock {
 /// lambda_s), 0 (none), -1 (not needed, or a sign uncertain).
 struct PairBlockSigns {
   unsigned long positive[kPairLanes], negative[kPairLanes];  // DiscriminantSignBits' masks, lane by lane
+  /// DiscriminantSignBits::case_index() and rho_index() of each lane, formed in the lanes.
+  unsigned long case_index[kPairLanes], rho_index[kPairLanes];
   signed char gap[kPairLanes];
   DiscriminantSignBits bits(int lane) const {
     return {static_cast<unsigned>(positive[lane]), static_cast<unsigned>(negative[lane])};
