@@ -17,7 +17,7 @@ void decide_positions_at(const Ellipsoid* bodies, const std::size_t* index, std:
 
 /// decide_positions on doubles with the given copy of the lanes (static_filter_lanes_copy; requires
 /// static_filter_lanes_copy_runs(copy)), for tests and benchmarks of each copy.
-std::size_t decide_positions_copy(FilterCopy copy, const double* e, const double* p, std::size_t n,
-                                  Position* positions, PairStatus* status, Stage* stages);
+std::size_t decide_positions_copy(FilterCopy copy, const double* e, const double* p, std::size_t n, Position* positions,
+                                  PairStatus* status, Stage* stages);
 
 }  // namespace relpos::detail
