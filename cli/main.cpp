@@ -28,6 +28,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "io/batch.hpp"
+#include "io/json_tree.hpp"
 #include "options.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
@@ -37,7 +38,7 @@
 
 namespace relpos_cli {
 
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 constexpr const char* kExitCodes =
     "Exit codes:\n"
@@ -145,7 +146,7 @@ namespace {
 /// --digits N of classify and batch.
 int parse_digits(const std::string& text) { return static_cast<int>(parse_count(text, "--digits", 1, 1000)); }
 
-void write_json_line(const Json& j) { std::cout << relpos::io::dump_json(j) << '\n'; }
+void write_json_line(const Json& j) { std::cout << relpos::io::detail::dump_json(j) << '\n'; }
 
 // ------------------------------------------------------------------------------------------------
 
@@ -173,13 +174,12 @@ int run_classify(Args& args) {
     const std::optional<relpos::Ellipsoid> e = shapes.make_ellipsoid();
     const std::optional<relpos::Paraboloid> p = shapes.make_paraboloid();
     if (contact_only) {
-      const Json j = relpos::io::contact_to_json(relpos::contact(*e, *p));
+      const relpos::ContactAnswer a = relpos::contact(*e, *p);
       if (json)
-        write_json_line(j);
+        std::cout << relpos::io::contact_json_text(a) << '\n';
       else
-        std::cout << "contact: " << j["contact"].get<std::string>() << " (position " << j["position"].get<std::string>()
-                  << "; " << j["rule"].get<std::string>() << "; decided by " << j["decided_by"].get<std::string>()
-                  << ")\n"
+        std::cout << "contact: " << relpos::to_string(a.contact) << " (position " << relpos::to_string(a.position)
+                  << "; " << relpos::describe(a.rule) << "; decided by " << relpos::decided_by(a.stage) << ")\n"
                   << std::flush;
       return std::cout ? kExitOk : kExitIo;
     }

@@ -26,6 +26,8 @@
 #include "algebra/polynomial_text.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "io/json_tree.hpp"
+#include "io/motion_json.hpp"
 #include "options.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
@@ -33,8 +35,8 @@
 namespace relpos_cli {
 namespace {
 
-using Json = nlohmann::ordered_json;
 using relpos::Rational;
+using relpos::io::detail::Json;
 
 /// Above this degree the text report names the defining polynomial by its degree only (the JSON
 /// output always has every coefficient).
@@ -89,14 +91,15 @@ void print_motion_help(std::ostream& os) {
 namespace {
 
 /// Limits of `relpos motion` (doc/cli.md, "Limits"; those on the polynomials are
-/// relpos::io::kMaxMotionDegree and kMaxMotionCoefficientBits).
+/// relpos::io::detail::kMaxMotionDegree and kMaxMotionCoefficientBits).
 constexpr int kMaxMotionDigits = 200;
 constexpr unsigned long long kDefaultMaxSeconds = 60;
 
-/// A JSON array of `N` polynomials (relpos::io::motion_polynomials).
+/// A JSON array of `N` polynomials (relpos::io::detail::motion_polynomials).
 template <std::size_t N>
 std::array<relpos::TimePolynomial, N> polynomials(const std::string& text, const std::string& role) {
-  const std::vector<relpos::TimePolynomial> p = relpos::io::motion_polynomials(parse_inline(text, role), N, role);
+  const std::vector<relpos::TimePolynomial> p =
+      relpos::io::detail::motion_polynomials(parse_inline(text, role), N, role);
   std::array<relpos::TimePolynomial, N> out;
   std::copy(p.begin(), p.end(), out.begin());
   return out;
@@ -298,7 +301,7 @@ std::string compute(const ShapeOptions& shapes, const std::optional<std::string>
     out["motion"] = motion;
     out["first_contact"] = first_contact_json(fc, digits);
     if (tl) out["timeline"] = timeline_json(*tl, digits);
-    return relpos::io::dump_json(out) + "\n";
+    return relpos::io::detail::dump_json(out) + "\n";
   }
   std::ostringstream os;
   os << "motion on [" << relpos::to_string(t0) << ", " << relpos::to_string(t1) << "]: c(t) = ("
@@ -412,7 +415,8 @@ int run_motion(Args& args) {
   worker.join();
   if (show) std::cerr << "\r\033[K";
   if (result->code != kExitOk) {
-    if (json && result->code == kExitInput) std::cout << relpos::io::dump_json(Json{{"error", result->error}}) << "\n";
+    if (json && result->code == kExitInput)
+      std::cout << relpos::io::detail::dump_json(Json{{"error", result->error}}) << "\n";
     std::cerr << "relpos: " << result->error << "\n";
     return finish_cout() == kExitOk ? result->code : kExitIo;
   }

@@ -3,6 +3,7 @@
 #include <exception>
 #include <utility>
 
+#include "io/json_tree.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
@@ -48,7 +49,7 @@ unsigned long long parse_count(const std::string& text, const char* what, unsign
   }
   if (used == 0 || used != text.size() || n < lo || n > hi)
     throw UsageError{std::string(what) + " needs an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                     ", got " + relpos::io::dump_json(nlohmann::ordered_json(text))};
+                     ", got " + relpos::io::detail::dump_json(relpos::io::detail::Json(text))};
   return n;
 }
 
@@ -63,7 +64,7 @@ std::vector<relpos::Rational> comma_numbers(const std::string& text, std::size_t
   if (parts.size() != count)
     throw relpos::InputError(what + ": expected " + std::to_string(count) + " comma-separated numbers, got " +
                              std::to_string(parts.size()) + " in " +
-                             relpos::io::dump_json(nlohmann::ordered_json(text)));
+                             relpos::io::detail::dump_json(relpos::io::detail::Json(text)));
   std::vector<relpos::Rational> out;
   for (std::size_t i = 0; i < parts.size(); ++i)
     out.push_back(exact_option(parts[i], what + "[" + std::to_string(i) + "]"));
@@ -78,9 +79,9 @@ relpos::Rational exact_option(const std::string& text, const std::string& name) 
   }
 }
 
-nlohmann::ordered_json parse_inline(const std::string& text, const std::string& role) {
+relpos::io::detail::Json parse_inline(const std::string& text, const std::string& role) {
   try {
-    return relpos::io::parse_json_exact(text);
+    return relpos::io::detail::parse_json_exact(text);
   } catch (const relpos::InputError& e) {
     throw relpos::InputError(role + ": " + e.what());
   }
@@ -111,7 +112,7 @@ void ShapeOptions::check(bool need_ellipsoid) const {
 }
 
 relpos::Ellipsoid ShapeOptions::make_ellipsoid() const {
-  if (ellipsoid) return relpos::io::ellipsoid_from_json(parse_inline(*ellipsoid, "ellipsoid"), "ellipsoid");
+  if (ellipsoid) return relpos::io::ellipsoid_from_json(*ellipsoid, "ellipsoid");
   const auto x = comma_numbers(*sphere, 4, "--sphere");
   try {
     return relpos::Ellipsoid::sphere({x[0], x[1], x[2]}, x[3]);
@@ -125,7 +126,7 @@ std::vector<relpos::Rational> ShapeOptions::standard_axes() const {
 }
 
 relpos::Paraboloid ShapeOptions::make_paraboloid() const {
-  if (paraboloid) return relpos::io::paraboloid_from_json(parse_inline(*paraboloid, "paraboloid"), "paraboloid");
+  if (paraboloid) return relpos::io::paraboloid_from_json(*paraboloid, "paraboloid");
   const auto x = standard_axes();
   try {
     const relpos::Rational zero(0);

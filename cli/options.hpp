@@ -3,12 +3,12 @@
 #pragma once
 
 #include <cstddef>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "io/json_tree.hpp"
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
 
@@ -55,7 +55,7 @@ std::vector<relpos::Rational> comma_numbers(const std::string& text, std::size_t
 relpos::Rational exact_option(const std::string& text, const std::string& name);
 
 /// Inline JSON of an option, numbers exact; InputError "<role>: invalid JSON ..." otherwise.
-nlohmann::ordered_json parse_inline(const std::string& text, const std::string& role);
+relpos::io::detail::Json parse_inline(const std::string& text, const std::string& role);
 
 /// The ellipsoid and paraboloid options of classify, scene and motion.
 struct ShapeOptions {

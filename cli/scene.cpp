@@ -31,6 +31,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "io/batch.hpp"
+#include "io/json_tree.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 #include "scene/demo.hpp"
@@ -38,7 +39,7 @@
 namespace relpos_cli {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 constexpr std::size_t kBlockLines = std::size_t(1) << 12;
 
@@ -144,7 +145,7 @@ void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, co
       throw relpos::InputError("field " + std::to_string(i + 1) + " of " + std::to_string(f.size()) + " is empty" +
                                (i + 1 == f.size() ? " (a trailing separator?)" : ""));
   if (f.size() == 5 || f.size() == 11) {
-    out.id = relpos::io::dump_json(Json(f.front()));
+    out.id = relpos::io::detail::dump_json(Json(f.front()));
     f.erase(f.begin());
   }
   if (f.size() != 4 && f.size() != 10)
@@ -286,7 +287,7 @@ std::size_t count_lines(const std::string& path) {
 
 // ------------------------------------------------------------------------------------------------
 
-std::string dump(const Json& j) { return relpos::io::dump_json(j); }
+std::string dump(const Json& j) { return relpos::io::detail::dump_json(j); }
 
 /// A measured time or rate to 3 significant digits (more would be noise).
 double significant(double x) {

@@ -20,13 +20,15 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "io/batch.hpp"
+#include "io/certificate_json.hpp"
+#include "io/json_tree.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 constexpr const char* kVerifyHelp =
     "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--quiet]\n"
@@ -140,7 +142,7 @@ int run_verify(Args& args) {
     const InputPair in = read_input(in_line, number);
     Json answer;
     try {
-      answer = relpos::io::parse_json_exact(answer_line);
+      answer = relpos::io::detail::parse_json_exact(answer_line);
     } catch (const std::exception& err) {
       fail(number, std::string("the answer is not JSON: ") + clip(err.what()));
       continue;
@@ -191,7 +193,7 @@ int run_verify(Args& args) {
       continue;
     }
     try {
-      const relpos::Certificate c = relpos::certificate_from_json(answer["certificate"]);
+      const relpos::Certificate c = relpos::io::detail::certificate_from_tree(answer["certificate"]);
       if (auto reason = relpos::verify_certificate(*in.e, *in.p, *position, c))
         fail(number, position_text + ": " + clip(*reason));
       else

@@ -5,7 +5,7 @@
 // sanitizer report or a hang is a defect as well.
 //
 //   check_numbers     parse_rational / to_string / to_decimal / exact_rational / rational_from_json
-//   check_batch_line  one line of `relpos batch`, through the io.hpp functions the CLI uses
+//   check_batch_line  one line of `relpos batch`, through the io.hpp function the CLI uses
 //   check_classify    the classifier on pairs built from the bytes, degenerate ones on purpose
 #pragma once
 
@@ -26,7 +26,9 @@
 #include <vector>
 
 #include "../src/io/fast_quadric.hpp"
-#include "../src/io/json_read.hpp"
+#include "../src/io/json_tree.hpp"
+#include "../src/io/json_values.hpp"
+#include "../src/io/quadric_json.hpp"
 #include "../tests/support/construct.hpp"
 #include "../tests/support/oracles.hpp"
 #include "../tests/support/secular.hpp"
@@ -44,7 +46,7 @@ inline void expect(bool ok, const std::string& what) {
 }
 
 using relpos::Rational;
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 // ------------------------------------------------------------------------------------------------
 // Numbers
@@ -112,9 +114,9 @@ inline void check_numbers(const std::uint8_t* data, std::size_t size) {
   }
   // 2. The JSON route: a number or string gives the same exact value or InputError.
   try {
-    const Json doc = relpos::io::parse_json_exact(text);
+    const Json doc = relpos::io::detail::parse_json_exact(text);
     try {
-      const Rational j = relpos::io::rational_from_json(doc, "x");
+      const Rational j = relpos::io::detail::rational_from_json(doc, "x");
       // A bare JSON number (not a string literal) is the same text for parse_rational.
       if (parsed && text.find('"') == std::string::npos)
         expect(j == q, "JSON number and parse_rational disagree on " + text);
@@ -181,11 +183,11 @@ void check_fast_quadric(std::string_view text, bool doubles, Fast fast, FastAt f
 inline void check_fast_reader(std::string_view text) {
   for (const bool doubles : {false, true}) {
     check_fast_quadric<relpos::Ellipsoid>(text, doubles, relpos::io::detail::fast_ellipsoid,
-                                          relpos::io::detail::fast_ellipsoid_at, relpos::io::ellipsoid_from_json,
-                                          "ellipsoid");
+                                          relpos::io::detail::fast_ellipsoid_at,
+                                          relpos::io::detail::ellipsoid_from_tree, "ellipsoid");
     check_fast_quadric<relpos::Paraboloid>(text, doubles, relpos::io::detail::fast_paraboloid,
-                                           relpos::io::detail::fast_paraboloid_at, relpos::io::paraboloid_from_json,
-                                           "paraboloid");
+                                           relpos::io::detail::fast_paraboloid_at,
+                                           relpos::io::detail::paraboloid_from_tree, "paraboloid");
   }
 }
 
@@ -214,7 +216,7 @@ inline void check_batch_line(const std::uint8_t* data, std::size_t size) {
     }
     Json answer;
     try {
-      answer = relpos::io::parse_json_exact(text);  // ids are echoed as written: 1e400 too
+      answer = relpos::io::detail::parse_json_exact(text);  // ids are echoed as written: 1e400 too
     } catch (const relpos::InputError&) {
       expect(false, "answer is not JSON: " + text.substr(0, 200));
     }

@@ -20,6 +20,8 @@
 #include "anysize/exact.hpp"
 #include "certificate/build.hpp"
 #include "certificate/verify.hpp"
+#include "io/certificate_json.hpp"
+#include "io/json_tree.hpp"
 #include "io/json_write.hpp"
 
 using relpos::Certificate;
@@ -31,7 +33,7 @@ using relpos::QuadraticNumber;
 using relpos::Rational;
 using relpos::Vector3;
 using Kind = relpos::Certificate::Kind;
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 namespace {
 
@@ -149,9 +151,8 @@ void require_same(const Certificate& a, const Certificate& b) {
 }
 
 Certificate round_trip(const Certificate& c) {
-  const Json j = relpos::certificate_to_json(c);
   // Through text and the exact parser, as relpos verify reads it.
-  return relpos::certificate_from_json(relpos::io::parse_json_exact(j.dump()));
+  return relpos::certificate_from_json(relpos::certificate_json_text(c));
 }
 
 }  // namespace
@@ -387,12 +388,12 @@ TEST_CASE("a certificate that cannot be built is an internal error, never a null
 
 TEST_CASE("certificates survive JSON exactly", "[certificate]") {
   require_same(round_trip(Certificate{}), Certificate{});
-  CHECK(relpos::certificate_to_json(Certificate{}).is_null());
+  CHECK(relpos::certificate_json_text(Certificate{}) == "null");
   const Certificate d = definite(q(-7, 3));
-  CHECK(relpos::certificate_to_json(d).dump() == R"({"lambda":"-7/3"})");
+  CHECK(relpos::certificate_json_text(d) == R"({"lambda":"-7/3"})");
   require_same(round_trip(d), d);
   const Certificate t = tangent(q(2), {q(1, 3), q(-2), q(0)});
-  CHECK(relpos::certificate_to_json(t).dump() == R"({"lambda":"2","contact":["1/3","-2","0"]})");
+  CHECK(relpos::certificate_json_text(t) == R"({"lambda":"2","contact":["1/3","-2","0"]})");
   require_same(round_trip(t), t);
   const Certificate c = crossing({q(0), q(0), q(1, 2)}, {q(5), q(-1, 1000000), q(3)});
   require_same(round_trip(c), c);
@@ -403,7 +404,7 @@ TEST_CASE("certificates survive JSON exactly", "[certificate]") {
   h.centre[0] = qn(q(0), q(-1, 2));
   h.radius2 = qn(q(3, 4), q(2));
   require_same(round_trip(h), h);
-  const Json j = relpos::certificate_to_json(h, 6);
+  const Json j = Json::parse(relpos::certificate_json_text(h, 6));
   CHECK(j["lambda"]["d"] == "35");
   CHECK(j["lambda"]["b"] == "1/7");
   const Json& dec = j["contact_set"]["decimal"];
@@ -412,7 +413,7 @@ TEST_CASE("certificates survive JSON exactly", "[certificate]") {
   CHECK(dec["center"][2] == "0.75");
   CHECK(dec["radius2"] == "12.5822");  // 3/4 + 2 sqrt 35 = 12.58215...
   // Numbers may also be JSON numbers (read exactly) and "decimal" is ignored.
-  const Certificate n = relpos::certificate_from_json(relpos::io::parse_json_exact(R"({"lambda": 0.1})"));
+  const Certificate n = relpos::certificate_from_json(R"({"lambda": 0.1})");
   CHECK(n.kind == Kind::Definite);
   CHECK(n.lambda == q(1, 10));
 }
@@ -442,13 +443,13 @@ TEST_CASE("malformed certificate JSON is an InputError", "[certificate]") {
   };
   for (const char* text : bad) {
     INFO(text);
-    CHECK_THROWS_AS(relpos::certificate_from_json(relpos::io::parse_json_exact(text)), relpos::InputError);
+    CHECK_THROWS_AS(relpos::certificate_from_json(text), relpos::InputError);
   }
 }
 
 TEST_CASE("the report's JSON text holds the classification's exact values, for every position", "[certificate][io]") {
-  // The one writer of reports (src/io/json_write.cpp): its text is read back member by member and
-  // compared with the Classification it renders; the tree of classification_to_json is that text.
+  // The one writer of reports (src/io/answer_json.cpp): its text is read back member by member and
+  // compared with the Classification it renders; dumping the tree read from it gives the same text.
   const std::pair<Ellipsoid, Position> cases[] = {
       {sphere(q(-3), q(1)), Position::E},    {sphere(q(1), q(1, 10)), Position::I},
       {sphere(q(-1), q(1)), Position::TE},   {sphere(q(1, 4), q(1, 4)), Position::TI},
@@ -459,7 +460,7 @@ TEST_CASE("the report's JSON text holds the classification's exact values, for e
     const std::string text = relpos::io::classification_json_text(c);
     CAPTURE(text);
     const Json j = Json::parse(text);
-    CHECK(relpos::io::dump_json(relpos::io::classification_to_json(c)) == text);
+    CHECK(relpos::io::detail::dump_json(j) == text);
     CHECK(j["position"] == relpos::to_string(c.verdict.position));
     CHECK(j["small"] == c.verdict.small);
     CHECK(j["stage"] == relpos::to_string(c.verdict.stage));
@@ -474,9 +475,9 @@ TEST_CASE("the report's JSON text holds the classification's exact values, for e
     std::size_t multiple = 0;
     for (const auto& r : c.roots) multiple += r.multiplicity_f >= 2;
     CHECK(j["multiple_roots"].size() == multiple);
-    require_same(relpos::certificate_from_json(j["certificate"]), c.certificate);
-    CHECK_FALSE(
-        relpos::verify_certificate(e, cup(), c.verdict.position, relpos::certificate_from_json(j["certificate"])));
+    require_same(relpos::io::detail::certificate_from_tree(j["certificate"]), c.certificate);
+    CHECK_FALSE(relpos::verify_certificate(e, cup(), c.verdict.position,
+                                           relpos::io::detail::certificate_from_tree(j["certificate"])));
   }
 }
 

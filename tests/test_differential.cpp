@@ -500,8 +500,8 @@ void double_cases(Rng& g, int n) {
       return out + "]]";
     };
     for (bool fractions : {false, true}) {
-      const Ellipsoid e2 = relpos::io::ellipsoid_from_json(relpos::io::parse_json_exact(text(de, me, fractions)));
-      const Paraboloid p2 = relpos::io::paraboloid_from_json(relpos::io::parse_json_exact(text(dp, mp, fractions)));
+      const Ellipsoid e2 = relpos::io::ellipsoid_from_json(text(de, me, fractions));
+      const Paraboloid p2 = relpos::io::paraboloid_from_json(text(dp, mp, fractions));
       CHECK(e2.matrix() == e->matrix());
       CHECK(p2.matrix() == p->matrix());
     }

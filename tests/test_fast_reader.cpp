@@ -10,7 +10,8 @@
 #include "algebra/forms.hpp"
 #include "algebra/pencil.hpp"
 #include "io/fast_quadric.hpp"
-#include "io/json_read.hpp"
+#include "io/json_tree.hpp"
+#include "io/quadric_json.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/io.hpp"
 
@@ -22,7 +23,7 @@ using relpos::Paraboloid;
 using relpos::io::detail::fast_ellipsoid;
 using relpos::io::detail::fast_paraboloid;
 
-nlohmann::ordered_json general_json(const std::string& text, bool doubles) {
+relpos::io::detail::Json general_json(const std::string& text, bool doubles) {
   relpos::io::detail::JsonReadOptions read;
   read.doubles = doubles;
   read.max_elements = 16;
@@ -46,7 +47,7 @@ void check_storage(const Q& q) {
   }
 }
 
-/// The integer form and split scale the quadric's exact source writes from its numbers
+/// The integer form and split scale the quadric's recipe writes from its numbers
 /// (forms::integer_form_of) are those of its exact matrix, factor for factor.
 template <class Q>
 void check_integer_form(const Q& q) {
@@ -71,16 +72,16 @@ void check_integer_form(const Q& q) {
   }
 }
 
-/// The truncated doubles the quadric's exact source writes without its matrix (the certificate's
-/// curve search reads them) are those of the exact matrix, entry by entry; the sources of the
-/// closed forms (a decimal_shape()) write them, the others leave them to the matrix.
+/// The truncated doubles the quadric's recipe writes without its matrix (the certificate's curve
+/// search reads them) are those of the exact matrix, entry by entry; the recipes of the closed forms
+/// (has_closed_form) write them, the others leave them to the matrix.
 template <class Q>
 void check_truncated_doubles(const Q& q) {
-  const relpos::detail::ExactSource* source = storage_of(q).exact_source();
-  if (!source) return;
+  const relpos::detail::DecimalRecipe* recipe = storage_of(q).recipe();
+  if (!recipe) return;
   relpos::DoubleMatrix4 d;
-  const bool written = source->truncated_doubles(d);
-  REQUIRE(written == (source->decimal_shape() != nullptr));
+  const bool written = relpos::detail::truncated_doubles(*recipe, d);
+  REQUIRE(written == relpos::detail::has_closed_form(*recipe));
   if (!written) return;
   for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(q.matrix().a[k]));
 }
@@ -128,8 +129,8 @@ void check_pair(const std::string& e_text, const std::string& p_text, bool doubl
   const auto fp = fast_paraboloid(p_text, doubles);
   REQUIRE(fe);
   REQUIRE(fp);
-  const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid");
-  const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid");
+  const Ellipsoid ge = relpos::io::detail::ellipsoid_from_tree(general_json(e_text, doubles), "ellipsoid");
+  const Paraboloid gp = relpos::io::detail::paraboloid_from_tree(general_json(p_text, doubles), "paraboloid");
   check_integer_form(*fe);
   check_integer_form(*fp);
   check_truncated_doubles(*fe);
@@ -146,8 +147,8 @@ void check_pair_evidence(const std::string& e_text, const std::string& p_text, b
   check_pair(e_text, p_text, doubles);
   INFO(e_text << "  " << p_text << (doubles ? "  (--numbers double)" : ""));
   check_full_evidence(*fast_ellipsoid(e_text, doubles), *fast_paraboloid(p_text, doubles),
-                      relpos::io::ellipsoid_from_json(general_json(e_text, doubles), "ellipsoid"),
-                      relpos::io::paraboloid_from_json(general_json(p_text, doubles), "paraboloid"));
+                      relpos::io::detail::ellipsoid_from_tree(general_json(e_text, doubles), "ellipsoid"),
+                      relpos::io::detail::paraboloid_from_tree(general_json(p_text, doubles), "paraboloid"));
 }
 
 /// The decimal d 10^exponent, d of `digits` random significant digits, in one of the spellings JSON
@@ -282,7 +283,7 @@ TEST_CASE("fast reader: texts it leaves to the general reader", "[io][fast]") {
   // entries: the general reader takes it.
   const char* tilted = "[[2,3,4,-0.5],[3,5,7,1],[4,7,10,-0.5],[-0.5,1,-0.5,0]]";
   REQUIRE_FALSE(fast_paraboloid(tilted, false));
-  REQUIRE_NOTHROW(relpos::io::paraboloid_from_json(general_json(tilted, false), "paraboloid"));
+  REQUIRE_NOTHROW(relpos::io::detail::paraboloid_from_tree(general_json(tilted, false), "paraboloid"));
   // det Q3 = 0 by zeros, although rotated about the axis: taken.
   REQUIRE(fast_paraboloid("[[1,0.5,0,0],[0.5,1,0,0],[0,0,0,-0.5],[0,0,-0.5,0]]", false));
   // Exactly symmetric although spelled differently: taken.
@@ -410,14 +411,30 @@ TEST_CASE("fast reader: spheres and paraboloids on the axis over the whole expon
   REQUIRE(fast_ellipsoid(R"({"sphere":{"center":[0,-0.3,0],"radius":3e-1}})", false)->matrix()(3, 3) == 0);
 }
 
-TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path's f, s, lambda_s and rho",
-          "[io][fast]") {
-  // Mantissas made of a few primes, the radius, the centre and vz often multiples of a's or b's
-  // mantissa and a's of b's: the closed forms' reductions then meet the common factors that
-  // rational arithmetic cancels (beyond the powers of 2 and 5), and zeros and w = vz - z = 0 occur.
-  // Compared in lowest terms with rational arithmetic on the general reader's matrices, and the
-  // whole report with the general path's (check_pair_evidence).
-  std::mt19937_64 rng(41);
+TEST_CASE("fast reader: only a decimal sphere and a paraboloid on the axis get closed forms", "[io][fast]") {
+  // Other forms keep the general path: a vertex off the axis, a matrix, --numbers double.
+  for (const auto& [body, doubles] : {std::make_pair(R"({"vertex":[0.1,0,0],"a":1.3,"b":0.7})", false),
+                                      std::make_pair(R"({"vertex":[0,0,0.1],"a":1.3,"b":0.7})", true)}) {
+    const auto q = fast_paraboloid(body, doubles);
+    REQUIRE(q);
+    const relpos::detail::DecimalRecipe* recipe = storage_of(*q).recipe();
+    CHECK((!recipe || !relpos::detail::has_closed_form(*recipe)));
+  }
+  const auto m = fast_ellipsoid("[[1,0,0,0.1],[0,1,0,0],[0,0,1,0],[0.1,0,0,-0.3]]", false);
+  REQUIRE(m);
+  REQUIRE(storage_of(*m).recipe());
+  CHECK_FALSE(relpos::detail::has_closed_form(*storage_of(*m).recipe()));
+  const auto sphere = fast_ellipsoid(R"({"sphere":{"center":[0.1,0,0],"radius":0.3}})", false);
+  REQUIRE(sphere);
+  REQUIRE(storage_of(*sphere).recipe());
+  CHECK(relpos::detail::has_closed_form(*storage_of(*sphere).recipe()));
+}
+
+TEST_CASE("fast reader: closed forms end to end, with mantissas that share primes", "[io][fast]") {
+  // The radius, the centre and vz multiples of a's or b's mantissa, and a's of b's: the closed forms'
+  // reductions (tests/test_decimal_recipe.cpp) meet common factors beyond 2 and 5; the whole report
+  // is the general path's (check_pair_evidence).
+  std::mt19937_64 rng(43);
   const std::uint64_t primes[] = {2, 3, 5, 7, 11, 13, 9, 343, 1000003};
   auto mantissa = [&] {
     std::uint64_t m = 1 + rng() % 9;
@@ -429,118 +446,22 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     return m;
   };
   auto text = [&](std::uint64_t m, bool negative) {
-    const int e = -static_cast<int>(rng() % 12);
-    return (negative ? "-" : "") + std::to_string(m) + "e" + std::to_string(e);
+    return (negative ? "-" : "") + std::to_string(m) + "e" + std::to_string(-static_cast<int>(rng() % 12));
   };
-  auto same = [](const relpos::Rational& got, const relpos::Rational& want) {  // the same canonical form
-    CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(want.mpq())) == 0);
-    CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(want.mpq())) == 0);
-  };
-  int closed = 0;
-  for (int trial = 0; trial < 500; ++trial) {
+  for (int trial = 0; trial < 100; ++trial) {
     const std::uint64_t ma = mantissa(), mb = trial % 3 == 0 ? ma * (1 + rng() % 12) : mantissa();
-    auto related = [&](bool negative) {  // a multiple of ma or mb, a free mantissa, or zero
-      switch (rng() % 5) {
-        case 0:
-          return text(ma * (1 + rng() % 50), negative);
-        case 1:
-          return text(mb * (1 + rng() % 50), negative);
-        case 2:
-          return std::string("0");
-        default:
-          return text(mantissa(), negative);
-      }
+    auto related = [&](bool negative) {
+      const std::uint64_t pick = rng() % 4;
+      return pick == 0   ? text(ma * (1 + rng() % 50), negative)
+             : pick == 1 ? text(mb * (1 + rng() % 50), negative)
+             : pick == 2 ? "0"
+                         : text(mantissa(), negative);
     };
     const std::string z = related(rng() % 2 == 0);
-    const std::string r = rng() % 3 == 0 ? text(ma, false) : text(mantissa(), false);
-    const std::string vz = trial % 7 == 0 ? z : related(rng() % 2 == 0);
-    const std::string e_text =
-        "{\"sphere\":{\"center\":" + vec3(related(true), related(false), z) + ",\"radius\":" + r + "}}";
-    const std::string p_text =
-        "{\"vertex\":" + vec3("0", "0", vz) + ",\"a\":" + text(ma, false) + ",\"b\":" + text(mb, false) + "}";
-    INFO(e_text << "  " << p_text);
-    const auto fe = fast_ellipsoid(e_text, false);
-    const auto fp = fast_paraboloid(p_text, false);
-    REQUIRE(fe);
-    REQUIRE(fp);
-    const relpos::detail::ExactSource* se = storage_of(*fe).exact_source();
-    const relpos::detail::ExactSource* sp = storage_of(*fp).exact_source();
-    if (!se || !sp) continue;  // every number an exact double: the doubles' path
-    REQUIRE(se->decimal_shape());
-    REQUIRE(sp->decimal_shape());
-    ++closed;
-    relpos::Quartic<relpos::Rational> f;
-    relpos::Quadratic<relpos::Rational> s;
-    relpos::Rational lambda_s, rho;
-    // S = lcm(lp, le) of the integer forms, its exponents of 2 and 5 from their splits.
-    relpos::Integer lp, le, lcm;
-    relpos::forms::SplitScale p_split, e_split;
-    relpos::forms::MatrixOf<relpos::Integer> pm, em;
-    relpos::forms::integer_form_of(storage_of(*fp), {relpos::forms::entries(pm), lp, p_split});
-    relpos::forms::integer_form_of(storage_of(*fe), {relpos::forms::entries(em), le, e_split});
-    // The scales alone: the same scale and exponents, and no entry written; the exponents alone
-    // (what the closed forms read for E and I): the same exponents.
-    auto scales_only = [](const relpos::detail::QuadricMatrix& q, const relpos::Integer& l,
-                          const relpos::forms::SplitScale& split) {
-      relpos::Integer l_only;
-      relpos::forms::SplitScale split_only;
-      relpos::forms::MatrixOf<relpos::Integer> untouched;
-      relpos::forms::integer_form_of(q, {relpos::forms::entries(untouched), l_only, split_only, false, false});
-      CHECK(l_only == l);
-      CHECK(split_only.twos == split.twos);
-      CHECK(split_only.fives == split.fives);
-      CHECK(split_only.rest == split.rest);
-      for (const relpos::Integer& x : untouched.a) CHECK(x == 0);
-      relpos::Integer unused;
-      relpos::forms::SplitScale exponents;
-      relpos::forms::integer_form_of(q, {relpos::forms::entries(untouched), unused, exponents, false, false, false});
-      CHECK(exponents.twos == split.twos);
-      CHECK(exponents.fives == split.fives);
-      for (const relpos::Integer& x : untouched.a) CHECK(x == 0);
-    };
-    scales_only(storage_of(*fp), lp, p_split);
-    scales_only(storage_of(*fe), le, e_split);
-    mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
-    relpos::Quartic<relpos::Integer> f_multiple;
-    relpos::Quadratic<relpos::Integer> s_multiple;
-    relpos::forms::sphere_standard_evidence(*se->decimal_shape(), *sp->decimal_shape(),
-                                            {f, s, lambda_s, rho, std::max(p_split.twos, e_split.twos),
-                                             std::max(p_split.fives, e_split.fives), f_multiple, s_multiple});
-    const Ellipsoid ge = relpos::io::ellipsoid_from_json(general_json(e_text, false), "ellipsoid");
-    const Paraboloid gp = relpos::io::paraboloid_from_json(general_json(p_text, false), "paraboloid");
-    const auto want_f = relpos::characteristic_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
-    const auto want_s = relpos::special_polynomial<relpos::Rational>(gp.matrix(), ge.matrix());
-    for (std::size_t k = 0; k < 5; ++k) same(f[k], want_f[k]);
-    for (std::size_t k = 0; k < 3; ++k) same(s[k], want_s[k]);
-    const relpos::Rational cube = relpos::Rational(lcm * lcm * lcm), fourth = cube * relpos::Rational(lcm);
-    for (std::size_t k = 0; k < 5; ++k) CHECK(relpos::Rational(f_multiple[k]) == fourth * want_f[k]);
-    for (std::size_t k = 0; k < 3; ++k) CHECK(relpos::Rational(s_multiple[k]) == cube * want_s[k]);
-    // lambda_s: the root of s nearest 0 (s = (1 + A l)(1 + B l): its discriminant is a square).
-    const relpos::Rational disc = want_s[1] * want_s[1] - 4 * want_s[2] * want_s[0];
-    relpos::Rational root;
-    mpz_sqrt(mpq_numref(root.mpq()), mpq_numref(disc.mpq()));
-    mpz_sqrt(mpq_denref(root.mpq()), mpq_denref(disc.mpq()));
-    REQUIRE(root * root == disc);
-    const relpos::Rational want_lambda_s = (root - want_s[1]) / (2 * want_s[2]);
-    same(lambda_s, want_lambda_s);
-    same(rho, want_f[0] * want_s[2] / (want_f[4] * want_s[0] * want_lambda_s * want_lambda_s));
-    if (trial % 5 == 0) check_pair_evidence(e_text, p_text, false);
+    const std::string e_text = "{\"sphere\":{\"center\":" + vec3(related(true), related(false), z) +
+                               ",\"radius\":" + (rng() % 3 == 0 ? text(ma, false) : text(mantissa(), false)) + "}}";
+    const std::string p_text = "{\"vertex\":" + vec3("0", "0", trial % 7 == 0 ? z : related(rng() % 2 == 0)) +
+                               ",\"a\":" + text(ma, false) + ",\"b\":" + text(mb, false) + "}";
+    check_pair_evidence(e_text, p_text, false);
   }
-  CHECK(closed > 450);
-  // Other forms keep the general path: a vertex off the axis, a matrix, --numbers double.
-  for (const auto& [body, doubles] : {std::make_pair(R"({"vertex":[0.1,0,0],"a":1.3,"b":0.7})", false),
-                                      std::make_pair(R"({"vertex":[0,0,0.1],"a":1.3,"b":0.7})", true)}) {
-    const auto q = fast_paraboloid(body, doubles);
-    REQUIRE(q);
-    const relpos::detail::ExactSource* source = storage_of(*q).exact_source();
-    CHECK((!source || !source->decimal_shape()));
-  }
-  const auto m = fast_ellipsoid("[[1,0,0,0.1],[0,1,0,0],[0,0,1,0],[0.1,0,0,-0.3]]", false);
-  REQUIRE(m);
-  REQUIRE(storage_of(*m).exact_source());
-  CHECK_FALSE(storage_of(*m).exact_source()->decimal_shape());
-  const auto sphere = fast_ellipsoid(R"({"sphere":{"center":[0.1,0,0],"radius":0.3}})", false);
-  REQUIRE(sphere);
-  REQUIRE(storage_of(*sphere).exact_source());
-  CHECK(storage_of(*sphere).exact_source()->decimal_shape());
 }

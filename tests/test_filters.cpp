@@ -12,6 +12,7 @@
 #include <relpos/scene.hpp>
 #include <tuple>
 
+#include "algebra/filtered.hpp"
 #include "algebra/rounding.hpp"
 #include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
@@ -530,4 +531,46 @@ TEST_CASE("semi-static filter: Disc(f) hopeless near a tangency, the ladder goes
   // Far from any tangency the flag stays down, whether or not every sign is certified.
   const Ellipsoid far = Ellipsoid::sphere({Q(0), Q(0), Q(0)}, Q(1, 3));
   CHECK_FALSE(relpos::semi_static_filter_signs(P, far.matrix()).disc_hopeless);
+}
+
+TEST_CASE("filtered.hpp: each approximation under its rounding mode, the exact one only when all are uncertain",
+          "[filters]") {
+  using relpos::detail::approximate;
+  using relpos::detail::filtered;
+  using relpos::detail::level;
+  using relpos::detail::Rounding;
+  using relpos::detail::rounding_to_nearest;
+  using relpos::detail::settle;
+  // The mode each approximation runs in, read from the control register.
+  auto upward = [] { return CGAL::FPU_get_cw() == CGAL_FE_UPWARD; };
+  REQUIRE(rounding_to_nearest());
+  CHECK(approximate<Rounding::Upward>([&] { return std::optional<bool>(upward()); }) == std::optional<bool>(true));
+  CHECK(rounding_to_nearest());  // restored
+  CHECK(approximate<Rounding::Nearest>([&] { return std::optional<bool>(upward()); }) == std::optional<bool>(false));
+  {
+    CGAL::Protect_FPU_rounding<true> up;  // a caller inside an upward block
+    CHECK_FALSE(approximate<Rounding::Nearest>([&] { return std::optional<bool>(true); }));  // skipped
+    CHECK(approximate<Rounding::ToNearest>([&] { return std::optional<bool>(upward()); }) ==
+          std::optional<bool>(false));
+    CHECK_FALSE(rounding_to_nearest());  // the caller's mode again
+  }
+  // The exact computation runs only when the approximation is uncertain.
+  int exact_calls = 0;
+  auto exact = [&] { return ++exact_calls, 7; };
+  CHECK(filtered<Rounding::Nearest>([] { return std::optional<int>(3); }, exact) == 3);
+  CHECK(exact_calls == 0);
+  CHECK(filtered<Rounding::Nearest>([] { return std::optional<int>(); }, exact) == 7);
+  CHECK(exact_calls == 1);
+  // settle: the first certain level, in order, and which one; the later levels do not run.
+  int later = 0;
+  const auto first = settle(exact, level<Rounding::Nearest>([] { return std::optional<int>(); }),
+                            level<Rounding::Upward>([] { return std::optional<int>(5); }),
+                            level<Rounding::Nearest>([&] { return ++later, std::optional<int>(6); }));
+  CHECK(first.value == 5);
+  CHECK(first.by == 1);
+  CHECK(later == 0);
+  const auto none = settle(exact, level<Rounding::Upward>([] { return std::optional<int>(); }));
+  CHECK(none.value == 7);
+  CHECK(none.by == 1);
+  CHECK(exact_calls == 2);
 }

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "algebra/roots.hpp"
+#include "algebra/root_facts.hpp"
 #include "filters/checked_int.hpp"
 #include "filters/multiple_roots.hpp"
 #include "filters/static_filter.hpp"

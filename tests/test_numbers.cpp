@@ -1,9 +1,12 @@
-// numbers.hpp: exact parsing, exact doubles, printing and decimal rounding.
+// numbers.hpp: exact parsing, exact doubles, printing and decimal rounding; polynomials.hpp's
+// evaluate as a ring homomorphism.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <relpos/error.hpp>
 #include <relpos/numbers.hpp>
+#include <relpos/polynomials.hpp>
 #include <string>
 #include <thread>
 #include <vector>
@@ -231,4 +234,24 @@ TEST_CASE("install_gmp_block_cache: the same values, on every thread, with numbe
     CHECK(made[static_cast<std::size_t>(k)] == Rational(k + 1, 11) * Rational(998244353));
   }
   CHECK(gmp_workout(3) == expected[3]);
+}
+
+TEST_CASE("evaluate: a ring homomorphism, p(x) + q(x) = (p + q)(x) and p(x) q(x) = (pq)(x)", "[numbers][polynomials]") {
+  rt::Rng g(5772);
+  for (int trial = 0; trial < 500; ++trial) {
+    relpos::RationalPolynomial p, q;
+    for (long i = g.uniform(0, 6); i > 0; --i) p.push_back(g.rational(-20, 20, 9));
+    for (long i = g.uniform(0, 6); i > 0; --i) q.push_back(g.rational(-20, 20, 9));
+    relpos::RationalPolynomial sum(std::max(p.size(), q.size()), Rational(0));
+    relpos::RationalPolynomial product(p.empty() || q.empty() ? 0 : p.size() + q.size() - 1, Rational(0));
+    for (std::size_t i = 0; i < p.size(); ++i) sum[i] += p[i];
+    for (std::size_t i = 0; i < q.size(); ++i) sum[i] += q[i];
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t j = 0; j < q.size(); ++j) product[i + j] += p[i] * q[j];
+    const Rational x = g.rational(-30, 30, 7);
+    CHECK(relpos::evaluate(p, x) + relpos::evaluate(q, x) == relpos::evaluate(sum, x));
+    CHECK(relpos::evaluate(p, x) * relpos::evaluate(q, x) == relpos::evaluate(product, x));
+    if (!p.empty()) CHECK(relpos::evaluate(p, Rational(0)) == p[0]);
+  }
+  CHECK(relpos::evaluate({}, Q(3)) == 0);  // the zero polynomial
 }

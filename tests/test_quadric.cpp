@@ -1,10 +1,19 @@
-// quadric.hpp: exact affine types, constructors, sign normalization, affine invariance of the type.
+// quadric.hpp: exact affine types (quadric_kind.cpp), constructors (quadric.cpp), sign
+// normalization, affine invariance of the type; the size limit's primitive form (pair_size.cpp)
+// invariant under rescaling; the centre of an ellipsoid and exact 3x3 systems (centre.hpp,
+// cramer.hpp). The storage and the constructors from doubles: test_from_doubles.
+#include <gmp.h>
+
+#include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <relpos/error.hpp>
 #include <relpos/quadric.hpp>
 #include <string>
 #include <vector>
 
+#include "algebra/centre.hpp"
+#include "algebra/cramer.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 
@@ -287,4 +296,62 @@ TEST_CASE("constructor arguments are validated", "[quadric][errors]") {
   CHECK_THROWS_AS(Paraboloid::standard(c, Q(1), Q(-1)), InputError);
   CHECK_THROWS_AS(Paraboloid::standard(c, Q(1), Q(1), {Q(0), Q(0), Q(0), Q(0)}), InputError);
   CHECK_THROWS_AS(Paraboloid::from_map(diag3(Q(1), Q(1), Q(0)), c), InputError);
+}
+
+TEST_CASE("normalized_bits: the primitive integer form's bits, the same for every rescaling", "[quadric][size]") {
+  // Computed here by another route: the matrix times the product of its denominators (not their
+  // lcm), divided by the gcd of the resulting integers, which is the same primitive form up to sign.
+  Rng g(4096);
+  for (int trial = 0; trial < 400; ++trial) {
+    Matrix4 m;
+    for (auto& x : m.a)
+      if (!g.chance(30)) x = g.rational(-1000, 1000, trial % 2 ? 97 : 1024);
+    if (trial % 7 == 0) m.a[5] = Rational(Integer(1) << 300, Integer(g.uniform(1, 9)));
+    Integer product(1);
+    for (const Rational& x : m.a) product *= x.denominator();
+    Integer content(0);
+    std::array<Integer, 16> z;
+    for (std::size_t i = 0; i < 16; ++i) {
+      z[i] = m.a[i].numerator() * (product / m.a[i].denominator());
+      mpz_gcd(content.mpz(), content.mpz(), z[i].mpz());
+    }
+    std::size_t want = 0;
+    if (content != 0)
+      for (const Integer& x : z)
+        if (x != 0) want = std::max<std::size_t>(want, mpz_sizeinbase(Integer(x / content).mpz(), 2));
+    CAPTURE(trial);
+    CHECK(relpos::normalized_bits(m) == want);
+    Rational c = g.nonzero_rational(-50, 50, 50);
+    if (trial % 3 == 0) c *= Rational(Integer(1) << 2000, Integer(3) << 10);  // far beyond the limit as a common form
+    Matrix4 scaled;
+    for (std::size_t i = 0; i < 16; ++i) scaled.a[i] = c * m.a[i];
+    CHECK(relpos::normalized_bits(scaled) == want);
+  }
+}
+
+TEST_CASE("centre_of and solve_integer_system: exact solutions, nullopt when singular", "[quadric][random]") {
+  // The centre of an ellipsoid built around a known centre is that centre; K x = r holds exactly for
+  // the solution of a random integer system (Cramer's rule of cramer.hpp on integers); a singular K
+  // gives nullopt.
+  Rng g(3003);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vector3 c{g.rational(-9, 9, 7), g.rational(-9, 9, 7), g.rational(-9, 9, 7)};
+    const Ellipsoid e = Ellipsoid::from_axes(
+        c, {g.positive_rational(5, 3), g.positive_rational(5, 3), g.positive_rational(5, 3)}, random_quaternion(g));
+    const auto centre = relpos::detail::centre_of(e.matrix());
+    REQUIRE(centre.has_value());
+    CHECK(*centre == c);
+    Integer k[3][4];
+    for (auto& row : k)
+      for (auto& x : row) x = Integer(g.uniform(-20, 20));
+    if (trial % 5 == 0)
+      for (int j = 0; j < 4; ++j) k[2][j] = k[0][j] * 3 - k[1][j];  // row 2 = 3 row 0 - row 1: singular
+    const Rational det = relpos::detail::det3<Rational>([&](int i, int j) { return Rational(k[i][j]); });
+    const auto x = relpos::detail::solve_integer_system(k);
+    CHECK(x.has_value() == (det != 0));
+    if (!x) continue;
+    for (int i = 0; i < 3; ++i)
+      CHECK(Rational(k[i][0]) * (*x)[0] + Rational(k[i][1]) * (*x)[1] + Rational(k[i][2]) * (*x)[2] ==
+            Rational(k[i][3]));
+  }
 }

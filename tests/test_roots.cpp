@@ -1,22 +1,22 @@
-// roots.hpp's fast paths against what they stand for: the residues read from the limbs against
-// mpz_fdiv_ui, and the isolation of simple_root_structure (roots approximated in doubles, bracket
-// pairs interleaved, intervals certified by exact signs; modular tests on machine words for
-// coprimality and rational roots) against roots known by construction, with exact comparisons, on random
-// quartics: products of two quadratics (far, close, huge and tiny roots, non-real pairs, repeated
-// factors), and a rational root shared with s times an irreducible cubic.
+// roots.hpp: the root structure of f, fast path (simple_root_structure: roots approximated in
+// doubles, certified by exact signs, after modular tests) and general path (exact_root_structure),
+// against roots known by construction with exact comparisons: random quartics (products of two
+// quadratics: far, close, huge and tiny roots, non-real pairs, repeated factors; a rational root
+// shared with s times an irreducible cubic), hand-made factorisations, the rational roots reported
+// exactly, certified decimals, and the sign of the discriminant against the identity
+// Disc(pq) = Disc(p) Disc(q) Res(p, q)^2.
 #include <gmp.h>
 
 #include <catch2/catch.hpp>
-#include <cstdint>
 #include <functional>
-#include <numeric>
 #include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "algebra/roots.hpp"
-#include "algebra/word_arithmetic.hpp"
+#include "support/construct.hpp"
+#include "support/printers.hpp"
 #include "support/seed.hpp"
 
 namespace {
@@ -25,31 +25,6 @@ using relpos::Integer;
 using relpos::Quadratic;
 using relpos::Quartic;
 using relpos::Rational;
-
-template <unsigned long long M>
-void check_residues(std::mt19937_64& rng) {
-  CAPTURE(M);
-  // Limbs that stress the reduction: random, all ones, and the modulus and its neighbours.
-  const unsigned long special[] = {0UL,
-                                   ~0UL,
-                                   static_cast<unsigned long>(M - 1),
-                                   static_cast<unsigned long>(M),
-                                   static_cast<unsigned long>(M + 1),
-                                   1UL << 63};
-  mpz_t z;
-  mpz_init(z);
-  for (int k = 0; k < 3000; ++k) {
-    mpz_set_ui(z, 0);
-    for (int i = 0; i < k % 13; ++i) {
-      mpz_mul_2exp(z, z, 64);
-      mpz_add_ui(z, z, rng() % 3 == 0 ? special[rng() % 6] : static_cast<unsigned long>(rng()));
-    }
-    if (k % 3 == 1) mpz_neg(z, z);
-    CAPTURE(k);
-    REQUIRE(relpos::detail::residue<M>(z) == mpz_fdiv_ui(z, static_cast<unsigned long>(M)));
-  }
-  mpz_clear(z);
-}
 
 /// A real root known by construction: `below(t)` says t < root exactly; `exact` when rational.
 struct KnownRoot {
@@ -142,37 +117,6 @@ void check_against_known(const relpos::RootStructure& rs, const std::vector<Know
 }
 
 }  // namespace
-
-TEST_CASE("residues from the limbs agree with mpz_fdiv_ui", "[roots]") {
-  std::mt19937_64 rng(relpos::testing::announced_seed("residues", 20261126));
-  check_residues<4294967291ULL>(rng);  // the largest prime below 2^32
-  check_residues<111546435ULL>(rng);   // 3 * 5 * ... * 23
-  check_residues<2756205443ULL>(rng);  // 29 * ... * 47
-  check_residues<907383479ULL>(rng);   // 53 * ... * 71
-  check_residues<4132280413ULL>(rng);  // 73 * ... * 97
-  check_residues<4294967295ULL>(rng);  // the largest allowed modulus
-  check_residues<2ULL>(rng);
-  check_residues<3ULL>(rng);
-}
-
-TEST_CASE("word_gcd agrees with std::gcd", "[roots]") {
-  using relpos::detail::word_gcd;
-  std::mt19937_64 rng(relpos::testing::announced_seed("word gcd", 20261126));
-  const std::uint64_t top = ~std::uint64_t{0};
-  for (const auto& [u, v] : std::vector<std::pair<std::uint64_t, std::uint64_t>>{
-           {0, 0}, {0, 7}, {7, 0}, {1, 1}, {12, 18}, {top, top}, {top, 1}, {top - 1, top}, {1ULL << 63, 1ULL << 40}})
-    CHECK(word_gcd(u, v) == std::gcd(u, v));
-  for (int i = 0; i < 20000; ++i) {
-    // Random words with a random common factor (often > 1), shifted by random powers of two.
-    const std::uint64_t g = (rng() >> (rng() % 64)) | 1;
-    const int bits = 64 - (64 - __builtin_clzll(g));  // room for the cofactors
-    const std::uint64_t a = bits > 0 ? rng() >> (64 - bits) : 1, b = bits > 0 ? rng() >> (64 - bits) : 1;
-    const std::uint64_t u = (a * g) << (rng() % 4 == 0 ? rng() % 8 : 0), v = b * g;
-    CHECK(word_gcd(u, v) == std::gcd(u, v));
-    const std::uint64_t x = rng() >> (rng() % 64), y = rng() >> (rng() % 64);
-    CHECK(word_gcd(x, y) == std::gcd(x, y));
-  }
-}
 
 TEST_CASE("simple_root_structure against roots known by construction", "[roots]") {
   std::mt19937_64 rng(relpos::testing::announced_seed("known roots", 20261127));
@@ -267,4 +211,301 @@ TEST_CASE("simple_root_structure against roots known by construction", "[roots]"
     check_against_known(relpos::exact_root_structure(f, s), known, 4 - static_cast<int>(known.size()));
   }
   CHECK(fast >= 1500);  // most cases went the fast way (about 1900 with this seed)
+}
+
+using namespace rt;
+
+namespace {
+
+Quartic<Integer> to_integer(const Quartic<Rational>& f) {
+  // Only for polynomials with integer coefficients.
+  Quartic<Integer> out;
+  for (std::size_t i = 0; i < 5; ++i) {
+    REQUIRE(f[i].denominator() == 1);
+    out[i] = f[i].numerator();
+  }
+  return out;
+}
+
+Quadratic<Integer> to_integer(const Quadratic<Rational>& s) {
+  Quadratic<Integer> out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    REQUIRE(s[i].denominator() == 1);
+    out[i] = s[i].numerator();
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("exact_root_structure on polynomials with known factorizations", "[roots]") {
+  using relpos::exact_root_structure;
+  SECTION("generic: four simple roots, none shared with s") {
+    const auto f = to_integer(quartic_from_roots(Q(-2), {Q(-5), Q(-1), Q(3), Q(7)}));
+    const auto s = to_integer(Quadratic<Rational>{Q(6), Q(5), Q(1)});  // (l + 2)(l + 3)
+    auto rs = exact_root_structure(f, s);
+    REQUIRE(rs.real_roots.size() == 4);
+    CHECK(rs.nonreal == 0);
+    CHECK(rs.degree_ftilde == 4);
+    CHECK(rs.sign_disc_f == 1);
+    CHECK(rs.sign_disc_ftilde == 1);
+    CHECK(rs.negative() == 2);
+    CHECK(rs.positive() == 2);
+    const Rational want[4] = {Q(-5), Q(-1), Q(3), Q(7)};
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& r = rs.real_roots[i];
+      CHECK(r.multiplicity_f == 1);
+      CHECK(r.multiplicity_s == 0);
+      CHECK(r.lower <= want[i]);
+      CHECK(want[i] <= r.upper);
+      CHECK(!r.tangency());
+      CHECK(r.sign == sgn(want[i]));
+    }
+  }
+  SECTION("the Section 3 crossing: (l + 4)^2 (48 l^2 - 13 l + 3), s with root -4") {
+    // a = 1, b = 2: s = (1 + l)(1 + l/4) ~ (l + 1)(l + 4).
+    // expand (l^2 + 8 l + 16)(48 l^2 - 13 l + 3)
+    const Rational p[3] = {Q(16), Q(8), Q(1)}, q[3] = {Q(3), Q(-13), Q(48)};
+    Quartic<Rational> f{};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) f[static_cast<std::size_t>(i + j)] += p[i] * q[j];
+    auto rs = exact_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(4), Q(5), Q(1)}));
+    CHECK(rs.degree_ftilde == 3);
+    CHECK(rs.sign_disc_f == 0);
+    CHECK(rs.sign_disc_ftilde == -1);  // f~ = (l + 4)(48 l^2 - 13 l + 3): a non-real pair
+    CHECK(rs.nonreal == 2);
+    CHECK(rs.nonreal_multiple == 0);
+    REQUIRE(rs.real_roots.size() == 1);
+    CHECK(rs.real_roots[0].multiplicity_f == 2);
+    CHECK(rs.real_roots[0].multiplicity_s == 1);
+    REQUIRE(rs.real_roots[0].exact.has_value());
+    CHECK(*rs.real_roots[0].exact == -4);
+    CHECK_FALSE(rs.real_roots[0].tangency());
+  }
+  SECTION("quadruple root shared with a double root of s: tangency (4 - 2 >= 2)") {
+    const auto f = to_integer(quartic_from_roots(Q(-1), {Q(-1), Q(-1), Q(-1), Q(-1)}));
+    auto rs = exact_root_structure(f, to_integer(Quadratic<Rational>{Q(1), Q(2), Q(1)}));
+    REQUIRE(rs.real_roots.size() == 1);
+    CHECK(rs.real_roots[0].multiplicity_f == 4);
+    CHECK(rs.real_roots[0].multiplicity_s == 2);
+    CHECK(rs.real_roots[0].tangency());
+    CHECK(rs.degree_ftilde == 2);
+    CHECK(rs.sign_disc_ftilde == 0);
+  }
+  SECTION("double pair of non-real roots is reported") {
+    // (l^2 + 1)^2
+    const Quartic<Integer> f{Integer(1), Integer(0), Integer(2), Integer(0), Integer(1)};
+    auto rs = exact_root_structure(f, to_integer(Quadratic<Rational>{Q(2), Q(3), Q(1)}));
+    CHECK(rs.real_roots.empty());
+    CHECK(rs.nonreal == 4);
+    CHECK(rs.nonreal_multiple > 0);
+    CHECK(rs.sign_disc_f == 0);
+  }
+  SECTION("irrational simple roots: isolating intervals are disjoint, increasing and bracket a sign change") {
+    // (l^2 - 2)(l^2 - 6 l + 7): roots -sqrt2, sqrt2, 3 - sqrt2, 3 + sqrt2.
+    Quartic<Rational> f{};
+    const Rational p[3] = {Q(-2), Q(0), Q(1)}, q[3] = {Q(7), Q(-6), Q(1)};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) f[static_cast<std::size_t>(i + j)] += p[i] * q[j];
+    auto rs = exact_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(1), Q(3), Q(1)}));
+    REQUIRE(rs.real_roots.size() == 4);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& r = rs.real_roots[i];
+      CHECK_FALSE(r.exact.has_value());
+      CHECK(r.lower < r.upper);
+      CHECK(eval(f, r.lower) * eval(f, r.upper) < 0);
+      if (i > 0) CHECK(rs.real_roots[i - 1].upper < r.lower);
+    }
+    // 3 - sqrt2 = 1.5857... lies in the third interval.
+    CHECK(rs.real_roots[2].lower < Q(15858, 10000));
+    CHECK(rs.real_roots[2].upper > Q(15857, 10000));
+  }
+}
+
+namespace {
+
+/// The product of two quadratics (coefficients low to high) as a quartic.
+Quartic<Rational> product(const std::array<Rational, 3>& p, const std::array<Rational, 3>& q) {
+  Quartic<Rational> f{};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) f[i + j] += p[i] * q[j];
+  return f;
+}
+
+/// Every interval of rs brackets a sign change of f, the intervals are disjoint and increasing,
+/// and a rational root is reported exactly.
+void check_isolation(const Quartic<Rational>& f, const relpos::RootStructure& rs) {
+  for (std::size_t i = 0; i < rs.real_roots.size(); ++i) {
+    const auto& r = rs.real_roots[i];
+    CAPTURE(i);
+    if (r.exact) {
+      CHECK(eval(f, *r.exact) == 0);
+      CHECK(r.lower <= *r.exact);
+      CHECK(*r.exact <= r.upper);
+    } else {
+      CHECK(eval(f, r.lower) * eval(f, r.upper) < 0);
+    }
+    CHECK(r.sign == CGAL::sign(r.lower));
+    CHECK(r.sign == CGAL::sign(r.upper));
+    if (i > 0) CHECK(rs.real_roots[i - 1].upper < r.lower);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("simple_root_structure: close roots, and common roots with s divided out", "[roots]") {
+  using relpos::simple_root_structure;
+  SECTION("two irrational roots 2^-69 sqrt 2 apart (closer than doubles resolve)") {
+    // 2^139 (l^2 + l + 1/4 - 2^-139) (l^2 + 3 l + 1): roots -1/2 -+ sqrt(2) 2^-70, (-3 -+ sqrt 5) / 2.
+    const Rational t(CGAL::Gmpz(1) << 139);
+    const Quartic<Rational> f = product({t / 4 - 1, t, t}, {Q(1), Q(3), Q(1)});
+    const auto rs = simple_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(6), Q(5), Q(1)}));
+    REQUIRE(rs.has_value());
+    REQUIRE(rs->real_roots.size() == 4);
+    CHECK(rs->nonreal == 0);
+    CHECK(rs->degree_ftilde == 4);
+    CHECK(rs->sign_disc_f == 1);
+    check_isolation(f, *rs);
+    // The cluster straddles -1/2, the minimum of its quadratic factor.
+    CHECK(rs->real_roots[1].upper < Q(-1, 2));
+    CHECK(Q(-1, 2) < rs->real_roots[2].lower);
+  }
+  SECTION("gcd(f, s) quadratic with rational roots: both divided out, reported exactly") {
+    // f = (l + 1)(l + 4)(l^2 + 3 l + 1), s = (l + 1)(l + 4).
+    const Quartic<Rational> f = product({Q(4), Q(5), Q(1)}, {Q(1), Q(3), Q(1)});
+    const auto rs = simple_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(4), Q(5), Q(1)}));
+    REQUIRE(rs.has_value());
+    REQUIRE(rs->real_roots.size() == 4);
+    CHECK(rs->degree_ftilde == 2);
+    CHECK(rs->sign_disc_ftilde == 1);
+    check_isolation(f, *rs);
+    REQUIRE(rs->real_roots[0].exact.has_value());
+    CHECK(*rs->real_roots[0].exact == -4);
+    CHECK(rs->real_roots[0].multiplicity_s == 1);
+    REQUIRE(rs->real_roots[2].exact.has_value());
+    CHECK(*rs->real_roots[2].exact == -1);
+    CHECK_FALSE(rs->real_roots[1].exact.has_value());
+  }
+  SECTION("gcd(f, s) linear, s a square there: multiplicity 2 in s, the cofactor a cubic") {
+    // f = (l + 4)(l^3 - 2), s = (l + 4)^2: one more real root, 2^(1/3), and a non-real pair.
+    const Quartic<Rational> f{Q(-8), Q(-2), Q(0), Q(4), Q(1)};
+    const auto rs = simple_root_structure(to_integer(f), to_integer(Quadratic<Rational>{Q(16), Q(8), Q(1)}));
+    REQUIRE(rs.has_value());
+    REQUIRE(rs->real_roots.size() == 2);
+    CHECK(rs->nonreal == 2);
+    CHECK(rs->degree_ftilde == 3);
+    CHECK(rs->sign_disc_ftilde == -1);
+    check_isolation(f, *rs);
+    REQUIRE(rs->real_roots[0].exact.has_value());
+    CHECK(*rs->real_roots[0].exact == -4);
+    CHECK(rs->real_roots[0].multiplicity_s == 2);
+    CHECK(rs->real_roots[1].lower < Q(126, 100));
+    CHECK(Q(125, 100) < rs->real_roots[1].upper);
+  }
+}
+
+TEST_CASE("RealRoot::exact is set for every rational root, simple ones included", "[roots][bug]") {
+  // roots.hpp documents RealRoot::exact as "the root itself when it is rational". A square-free
+  // quartic that splits over Q has four rational simple roots.
+  const auto f = to_integer(quartic_from_roots(Q(-2), {Q(-5), Q(-1), Q(3), Q(7)}));
+  const auto s = to_integer(Quadratic<Rational>{Q(6), Q(5), Q(1)});
+  auto rs = relpos::exact_root_structure(f, s);
+  REQUIRE(rs.real_roots.size() == 4);
+  const Rational want[4] = {Q(-5), Q(-1), Q(3), Q(7)};
+  for (std::size_t i = 0; i < 4; ++i) {
+    CAPTURE(i);
+    REQUIRE(rs.real_roots[i].exact.has_value());
+    CHECK(*rs.real_roots[i].exact == want[i]);
+  }
+}
+
+TEST_CASE("Classification::roots gives the rational simple roots -a^2, -b^2 exactly", "[roots][bug]") {
+  // Sphere centred (0, 0, 1), r = 1/4, paraboloid x^2 + y^2/4 = z: by eq. (4)
+  // f = -(l + 1)(l + 4)(l^2 + 4 l + 1/4) / 16, so -1 and -4 are rational (simple) roots of f.
+  const auto e = relpos::Ellipsoid::sphere({Q(0), Q(0), Q(1)}, Q(1, 4));
+  const auto p = relpos::Paraboloid::standard({Q(0), Q(0), Q(0)}, Q(1), Q(2));
+  const relpos::Classification c = relpos::classify(e, p);
+  REQUIRE(c.verdict.position == relpos::Position::I);
+  int found = 0;
+  for (const auto& r : c.roots)
+    for (const Rational& x : {Q(-1), Q(-4)})
+      if (r.lower <= x && x <= r.upper) {
+        CAPTURE(relpos::to_string(x));
+        ++found;
+        REQUIRE(r.exact.has_value());
+        CHECK(*r.exact == x);
+      }
+  CHECK(found == 2);
+}
+
+TEST_CASE("sign_of_discriminant for degrees 1 to 4", "[roots]") {
+  using relpos::sign_of_discriminant;
+  CHECK(sign_of_discriminant({Integer(3), Integer(2)}) == 1);
+  CHECK(sign_of_discriminant({Integer(2), Integer(-3), Integer(1)}) == 1);                // (l-1)(l-2)
+  CHECK(sign_of_discriminant({Integer(1), Integer(0), Integer(1)}) == -1);                // l^2 + 1
+  CHECK(sign_of_discriminant({Integer(1), Integer(-2), Integer(1)}) == 0);                // (l-1)^2
+  CHECK(sign_of_discriminant({Integer(-2), Integer(0), Integer(-1)}) == -1);              // -(l^2 + 2)
+  CHECK(sign_of_discriminant({Integer(-6), Integer(11), Integer(-6), Integer(1)}) == 1);  // (l-1)(l-2)(l-3)
+  CHECK(sign_of_discriminant({Integer(-1), Integer(1), Integer(-1), Integer(1)}) == -1);  // (l-1)(l^2+1)
+  CHECK(sign_of_discriminant({Integer(0), Integer(0), Integer(1), Integer(1)}) == 0);     // l^2 (l+1)
+  Rng g(2718);
+  for (int i = 0; i < 100; ++i) {
+    Quartic<Rational> f{Q(g.uniform(-20, 20)), Q(g.uniform(-20, 20)), Q(g.uniform(-20, 20)), Q(g.uniform(-20, 20)),
+                        Q(g.uniform(1, 20) * (g.chance(50) ? 1 : -1))};
+    CHECK(sign_of_discriminant({f[0].numerator(), f[1].numerator(), f[2].numerator(), f[3].numerator(),
+                                f[4].numerator()}) == sgn(quartic_discriminant(f)));
+  }
+}
+
+TEST_CASE("real_root_decimals: certified digits", "[roots]") {
+  // (l^2 - 2)(l + 3)(l - 1/2) * 2: -3, -1.41421356..., 0.5, 1.41421356...
+  Quartic<Rational> f{};
+  const Rational p[3] = {Q(-2), Q(0), Q(1)}, q[3] = {Q(-3), Q(5), Q(2)};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) f[static_cast<std::size_t>(i + j)] += p[i] * q[j];
+  auto d = relpos::real_root_decimals(to_integer(f), 8);
+  REQUIRE(d.size() == 4);
+  // Each decimal is within one unit of its 8th significant digit (10^-7 here) of the true root.
+  const Rational unit(1, 10000000);
+  CHECK(rabs(relpos::parse_rational(d[0]) + 3) <= unit * 10);
+  CHECK(rabs(relpos::parse_rational(d[2]) - Q(1, 2)) <= unit);
+  for (std::size_t i : {std::size_t(1), std::size_t(3)}) {
+    const Rational x = rabs(relpos::parse_rational(d[i]));  // sqrt 2 = 1.41421356...
+    CAPTURE(d[i]);
+    CHECK((x - unit) * (x - unit) < 2);
+    CHECK(2 < (x + unit) * (x + unit));
+  }
+  CHECK(relpos::parse_rational(d[1]) < 0);
+  CHECK(relpos::parse_rational(d[3]) > 0);
+}
+
+TEST_CASE("sign_of_discriminant: Disc(pq) = Disc(p) Disc(q) Res(p, q)^2 on products of quadratics", "[roots][random]") {
+  // The identity FLINT's t-discriminant checks, read on signs: sign Disc(pq) is the product of the
+  // factors' signs when p and q are coprime (Res != 0), and 0 when they share a root. Res(p, q) of two
+  // quadratics is computed here from its 4x4 Sylvester determinant's closed form.
+  Rng g(141421);
+  int shared = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const long a = g.uniform(1, 9) * (g.chance(50) ? 1 : -1);
+    std::array<Integer, 3> p{Integer(g.uniform(-12, 12)), Integer(g.uniform(-12, 12)), Integer(a)};
+    std::array<Integer, 3> q{Integer(g.uniform(-12, 12)), Integer(g.uniform(-12, 12)), Integer(g.uniform(1, 9))};
+    if (trial % 4 == 0) {  // a common root r: p = p2 (x - r)(x - u), q = q2 (x - r)(x - v)
+      const long r = g.uniform(-5, 5), u = g.uniform(-5, 5), v = g.uniform(-5, 5);
+      p = {Integer(a * r * u), Integer(-a * (r + u)), Integer(a)};
+      q = {Integer(r * v), Integer(-(r + v)), Integer(1)};
+    }
+    std::vector<Integer> pq(5, Integer(0));
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) pq[i + j] += p[i] * q[j];
+    // Res(p, q) = (p2 q0 - p0 q2)^2 - (p2 q1 - p1 q2)(p1 q0 - p0 q1).
+    const Integer u = p[2] * q[0] - p[0] * q[2], v = p[2] * q[1] - p[1] * q[2], w = p[1] * q[0] - p[0] * q[1];
+    const Integer res = u * u - v * w;
+    const int disc_p = relpos::sign_of_discriminant({p[0], p[1], p[2]});
+    const int disc_q = relpos::sign_of_discriminant({q[0], q[1], q[2]});
+    CAPTURE(trial);
+    CHECK(disc_p == sgn(Rational(p[1] * p[1] - 4 * p[2] * p[0])));
+    CHECK(relpos::sign_of_discriminant(pq) == (res == 0 ? 0 : disc_p * disc_q));
+    shared += res == 0;
+  }
+  CHECK(shared >= 500);
 }

@@ -1,63 +1,38 @@
-// Input and output of relpos in JSON: exact parsing of quadric descriptions and rendering of a
-// Classification as a JSON object or as a human-readable report (doc/cli.md describes the formats).
+// Input and output of relpos as text: exact reading of quadric descriptions given as JSON text, and
+// the rendering of a Classification as a JSON object or as a human-readable report (doc/cli.md
+// describes the formats). Text in, text out: no JSON library type appears here.
 //
-// Exactness: JSON numbers are never read through a double. parse_json_exact() keeps the decimal
-// text of every non-integer JSON number (0.1 is 1/10, not the nearest double), and every leaf is
-// converted with relpos::parse_rational. Strings are accepted wherever a number is ("p/q", "-3",
-// "1.5e-7"); booleans, null, NaN and infinities are rejected with the path of the field.
+// Exactness: JSON numbers are never read through a double. Every non-integer JSON number is read
+// from its decimal text (0.1 is 1/10, not the nearest double), and every leaf is converted with
+// relpos::parse_rational. Strings are accepted wherever a number is ("p/q", "-3", "1.5e-7");
+// booleans, null, NaN and infinities are rejected with the path of the field.
 #pragma once
 
 #include <cstddef>
-#include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
 #include "relpos/numbers.hpp"
+#include "relpos/position.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos::io {
 
-/// Deepest nesting of arrays and objects that parse_json_exact accepts.
+/// Deepest nesting of arrays and objects that the JSON reader accepts.
 inline constexpr std::size_t kMaxJsonDepth = 256;
 
-/// Parse JSON text, keeping every floating-point JSON number as a string holding its original text
-/// (integers stay integers: they are exact; numbers beyond the range of a double are kept as text
-/// too). Throws relpos::InputError ("invalid JSON: ...") on malformed text or nesting deeper than
-/// kMaxJsonDepth. Object keys keep their order.
-nlohmann::ordered_json parse_json_exact(std::string_view text);
-
-/// An exact number from a JSON value (integer, string as above, or a float kept as text by
-/// parse_json_exact). `path` names the field in error messages, e.g. "ellipsoid.matrix[2][3]".
-/// Throws InputError "<path>: expected a number, got true" and the like.
-Rational rational_from_json(const nlohmann::ordered_json& value, const std::string& path);
-
-/// Limits on the polynomials of a rigid motion (doc/cli.md, Limits): the event polynomials' degree
-/// and coefficient sizes grow with these, and the cost with them.
-inline constexpr std::size_t kMaxMotionDegree = 12;
-inline constexpr std::size_t kMaxMotionCoefficientBits = 512;
-
-/// The `count` polynomials in t of a rigid motion's translation (3) or quaternion (4), as
-/// `relpos motion` and the Python package read them: a JSON array of `count` entries, each an array
-/// of exact coefficients (lowest degree first) or one number (a constant); trailing zeros dropped.
-/// Throws InputError naming the field (`role`[i][k]) on a non-number or beyond the limits above.
-std::vector<std::vector<Rational>> motion_polynomials(const nlohmann::ordered_json& value, std::size_t count,
-                                                      const std::string& role);
-
-/// Quadric descriptions (doc/cli.md, "Quadric formats"). `role` prefixes every message and names
-/// the field paths ("ellipsoid", "paraboloid"). Library errors (not an ellipsoid, singular map,
-/// ...) are rethrown as InputError "<role>: <message>".
+/// Quadric descriptions given as JSON text (doc/cli.md, "Quadric formats"). `role` prefixes every
+/// message and names the field paths ("ellipsoid", "paraboloid"). Text that is not JSON, or nested
+/// deeper than kMaxJsonDepth, throws InputError "<role>: invalid JSON: ..."; library errors (not an
+/// ellipsoid, singular map, ...) are rethrown as InputError "<role>: <message>".
 ///   ellipsoid:  4x4 array | {"matrix"} | {"coefficients"} | {"sphere": {"center", "radius"}}
 ///               | {"center", "axes", "rotation" | "rotation_matrix"} | {"center", "map"}
 ///   paraboloid: 4x4 array | {"matrix"} | {"coefficients"} | {"vertex", "a", "b", "rotation"}
 ///               | {"map", "translation"}
-/// Parse from a value obtained with parse_json_exact (a value from the ordinary parser would have
-/// its floats rounded to doubles; those are then taken as the exact dyadic value of the double).
-Ellipsoid ellipsoid_from_json(const nlohmann::ordered_json& value, const std::string& role = "ellipsoid");
-Paraboloid paraboloid_from_json(const nlohmann::ordered_json& value, const std::string& role = "paraboloid");
+Ellipsoid ellipsoid_from_json(std::string_view json_text, const std::string& role = "ellipsoid");
+Paraboloid paraboloid_from_json(std::string_view json_text, const std::string& role = "paraboloid");
 
 /// One sentence saying what a position means ("the ellipsoid lies inside the paraboloid ...").
 std::string position_meaning(Position p);
@@ -70,17 +45,15 @@ struct RenderOptions {
   int digits = 12;  ///< significant digits of root and rho approximations
 };
 
-/// The JSON report of one classification (without "id"): position, small, contact, rho_vs_one, rho,
-/// rho_approx, rule, stage, disc_sign, disc_ftilde_sign, roots, and with full
-/// evidence degree_ftilde, f, s and multiple_roots. Key order is stable.
-nlohmann::ordered_json classification_to_json(const Classification& c, const RenderOptions& options = {});
-
-/// The same report as one line of JSON text: dump_json(classification_to_json(c, options)),
-/// written directly (what `relpos classify --json`, `relpos batch` and the Python module print).
+/// The JSON report of one classification as one line of text (what `relpos classify --json`,
+/// `relpos batch` and the Python module print, without "id"): position, small, contact, rho_vs_one,
+/// rho, rho_approx, rule, stage, disc_sign, disc_ftilde_sign, roots, and with full evidence
+/// degree_ftilde, f, s, multiple_roots and certificate. Key order is stable.
 std::string classification_json_text(const Classification& c, const RenderOptions& options = {});
 
-/// The contact-only answer (doc/contact.md): contact, position, rule, decided_by (decided_by(stage)).
-nlohmann::ordered_json contact_to_json(const ContactAnswer& a);
+/// The contact-only answer (doc/contact.md) as one line of JSON text: contact, position, rule,
+/// decided_by (decided_by(stage)).
+std::string contact_json_text(const ContactAnswer& a);
 
 /// A multi-line human-readable report (ends with a newline).
 std::string classification_to_text(const Classification& c, const RenderOptions& options = {});
@@ -120,14 +93,11 @@ std::string answer_batch_line(std::string_view line, long line_number, const Bat
 /// that fits (a caller keeping some capacity in `out` never sees it).
 void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out);
 
-/// A JSON value as one line of text, invalid UTF-8 replaced by U+FFFD (the one JSON writer).
-std::string dump_json(const nlohmann::ordered_json& value);
-
 }  // namespace relpos::io
 
 namespace relpos {
 
-/// The JSON form of a certificate (doc/certificates.md): numbers as exact strings ("3/4", "-2").
+/// The JSON form of a certificate (doc/certificates.md) as text: numbers as exact strings ("3/4", "-2").
 ///   None         null
 ///   Definite     {"lambda": q}
 ///   Tangent      {"lambda": q, "contact": [x, y, z]}
@@ -137,10 +107,10 @@ namespace relpos {
 ///                                 "decimal": {"lambda", "center": [3], "radius2"}}}
 ///   Crossing     {"inside": [x, y, z], "outside": [x, y, z]}
 /// "decimal" holds `digits` significant digits for humans and is ignored by certificate_from_json.
-nlohmann::ordered_json certificate_to_json(const Certificate& c, int digits = 12);
-/// The inverse of certificate_to_json (numbers also accepted as JSON numbers, read exactly). Throws
-/// relpos::InputError naming the field on malformed input (unknown or missing keys, wrong types,
-/// non-numbers, d not a non-negative integer).
-Certificate certificate_from_json(const nlohmann::ordered_json& j);
+std::string certificate_json_text(const Certificate& c, int digits = 12);
+/// The inverse of certificate_json_text (numbers also accepted as JSON numbers, read exactly). Throws
+/// relpos::InputError on text that is not JSON, and naming the field on malformed input (unknown or
+/// missing keys, wrong types, non-numbers, d not a non-negative integer).
+Certificate certificate_from_json(std::string_view json_text);
 
 }  // namespace relpos

@@ -1,10 +1,12 @@
 // Python objects read exactly (module.hpp): every description goes through the CLI's JSON reader
-// (relpos/io.hpp), so a value reads and fails exactly as the same text does in `relpos batch`.
+// (src/io/quadric_json.hpp), so a value reads and fails exactly as the same text does in
+// `relpos batch`.
 #include <optional>
-#include <relpos/io.hpp>
 #include <relpos/numbers.hpp>
 #include <string>
 
+#include "io/json_values.hpp"
+#include "io/quadric_json.hpp"
 #include "module.hpp"
 
 namespace relpos_python {
@@ -119,7 +121,7 @@ py::object to_python(const relpos::Rational& q) {
 }
 
 relpos::Rational to_rational(py::handle x, const std::string& path) {
-  return relpos::io::rational_from_json(to_json(x, path), path);
+  return relpos::io::detail::rational_from_json(to_json(x, path), path);
 }
 
 namespace {
@@ -179,11 +181,11 @@ Q quadric_from_python(py::handle description, const char* role, Q (*from_json)(c
 }  // namespace
 
 relpos::Ellipsoid ellipsoid_from_python(py::handle description) {
-  return quadric_from_python<relpos::Ellipsoid>(description, "ellipsoid", relpos::io::ellipsoid_from_json);
+  return quadric_from_python<relpos::Ellipsoid>(description, "ellipsoid", relpos::io::detail::ellipsoid_from_tree);
 }
 
 relpos::Paraboloid paraboloid_from_python(py::handle description) {
-  return quadric_from_python<relpos::Paraboloid>(description, "paraboloid", relpos::io::paraboloid_from_json);
+  return quadric_from_python<relpos::Paraboloid>(description, "paraboloid", relpos::io::detail::paraboloid_from_tree);
 }
 
 void throw_unbuilt(py::handle x) {

@@ -6,7 +6,6 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include <nlohmann/json.hpp>
 #include <relpos/algebraic_real.hpp>
 #include <relpos/error.hpp>
 #include <relpos/motion.hpp>
@@ -14,10 +13,12 @@
 #include <string>
 #include <typeinfo>
 
+#include "io/json_tree.hpp"
+
 namespace relpos_python {
 
 namespace py = pybind11;
-using Json = nlohmann::ordered_json;
+using relpos::io::detail::Json;
 
 /// A Python value as the JSON value the CLI would read for it, without rounding: int (any size) as
 /// an integer or its exact digits, float as the double (read exactly by the library), Fraction,

@@ -4,10 +4,11 @@
 #include <pybind11/stl.h>
 
 #include <relpos/algebraic_real.hpp>
-#include <relpos/io.hpp>
 #include <relpos/motion.hpp>
 #include <string>
 
+#include "io/json_values.hpp"
+#include "io/motion_json.hpp"
 #include "module.hpp"
 
 namespace relpos_python {
@@ -18,7 +19,7 @@ using namespace pybind11::literals;
 
 /// `count` polynomials in t, read and limited as `relpos motion` reads --translation / --rotation.
 std::vector<relpos::TimePolynomial> polynomials(py::handle x, std::size_t count, const std::string& role) {
-  return relpos::io::motion_polynomials(to_json(x, role), count, role);
+  return relpos::io::detail::motion_polynomials(to_json(x, role), count, role);
 }
 
 relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py::handle pivot) {
@@ -46,7 +47,7 @@ relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py
     const Json point = to_json(pivot, "pivot");
     if (!point.is_array() || point.size() != 3) throw relpos::InputError("pivot: expected origin, center or a point");
     for (std::size_t i = 0; i < 3; ++i)
-      m.pivot_point[i] = relpos::io::rational_from_json(point[i], "pivot[" + std::to_string(i) + "]");
+      m.pivot_point[i] = relpos::io::detail::rational_from_json(point[i], "pivot[" + std::to_string(i) + "]");
   }
   return m;
 }

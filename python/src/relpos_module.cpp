@@ -1,8 +1,8 @@
 // relpos._relpos: the compiled part of the Python package relpos (doc/python.md).
 //
-// Only the public headers of the library are used. Every description handed in from Python is
-// turned into the JSON value the CLI would read and read by the CLI's reader (input.cpp), so
-// numbers are exact and messages are the CLI's. relpos::InputError becomes ValueError.
+// Every description handed in from Python is turned into the JSON value the CLI would read and read
+// by the CLI's reader (input.cpp, through src/io's private tree readers), so numbers are exact and
+// messages are the CLI's; answers are the library's JSON text. relpos::InputError becomes ValueError.
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -17,8 +17,6 @@
 
 namespace py = pybind11;
 using namespace pybind11::literals;
-using relpos_python::Json;
-using relpos_python::to_json;
 
 namespace {
 
@@ -164,7 +162,7 @@ PYBIND11_MODULE(_relpos, m) {
                                          [&](relpos::Position q) { return relpos::to_string(q) == position; });
         if (found == relpos::kAllPositions.end())
           throw relpos::InputError("position \"" + position + "\" is not one of I, TI, C, TE, E");
-        const relpos::Certificate c = relpos::certificate_from_json(relpos::io::parse_json_exact(certificate));
+        const relpos::Certificate c = relpos::certificate_from_json(certificate);
         py::gil_scoped_release release;
         return relpos::verify_certificate(e, p, *found, c);
       },
@@ -178,7 +176,7 @@ PYBIND11_MODULE(_relpos, m) {
         {
           py::gil_scoped_release release;
           relpos::check_normalized_pair_size(e, p);
-          text = relpos::io::dump_json(relpos::io::contact_to_json(relpos::contact(e, p)));
+          text = relpos::io::contact_json_text(relpos::contact(e, p));
         }
         return text;
       },

@@ -127,7 +127,7 @@ Integer floor_of(const Rational& q) {
 }
 
 Rational simplest(const Rational& x, const std::optional<Rational>& y) {
-  if (y && x < 0 && *y > 0) return Rational(0);
+  if (x < 0 && (!y || *y > 0)) return Rational(0);
   if (y && *y <= 0) return -simplest(-*y, Rational(-x));
   const Integer n = floor_of(x);  // x >= 0 here
   const Rational next(n + 1);

@@ -14,7 +14,7 @@ enum class Shortest {
   /// midpoint itself past 2048): a certificate's multiplier, whose powers of two keep the integer
   /// forms of lambda P + E short and make its exact signs cheap.
   Bits,
-  /// The simplest rational, smallest denominator then numerator (continued fractions, the
+  /// The simplest rational, smallest denominator then smallest magnitude (continued fractions, the
   /// Stern-Brocot descent): a motion's sample time, printed in its timeline.
   Denominator,
 };

@@ -44,32 +44,38 @@ bool is_non_finite(std::string_view s) {
   throw InputError("not an exact number: \"" + shown + "\" (" + why + ")");
 }
 
-}  // namespace
-
-Rational parse_rational(std::string_view text) {
-  // Every character is part of the number: a blank around it is an error, as in a JSON number.
-  if (text.empty()) bad(text, "empty");
-  if (std::isspace(static_cast<unsigned char>(text.front())) || std::isspace(static_cast<unsigned char>(text.back())))
-    bad(text, "blank before or after the number");
-  if (text.size() > kMaxNumberChars) bad(text, "longer than the 10000-character limit");
-
-  // Fraction p/q: an optionally signed integer over a positive integer written without sign.
-  if (auto slash = text.find('/'); slash != std::string_view::npos) {
-    std::string_view num = text.substr(0, slash), den = text.substr(slash + 1);
-    bool neg = false;
-    if (!num.empty() && (num[0] == '+' || num[0] == '-')) {
-      neg = num[0] == '-';
-      num.remove_prefix(1);
-    }
-    if (!den.empty() && (den[0] == '+' || den[0] == '-')) bad(text, "the denominator takes no sign");
-    if (!all_digits(num) || !all_digits(den)) bad(text, "a fraction needs integers on both sides of '/'");
-    Integer d = parse_integer_digits(den);
-    if (d == 0) bad(text, "zero denominator");
-    Rational q(parse_integer_digits(num), d);  // Gmpq canonicalizes
-    return neg ? -q : q;
+/// A fraction p/q (text[slash] = '/'): an optionally signed integer over a positive integer written
+/// without sign.
+Rational parse_fraction(std::string_view text, std::size_t slash) {
+  std::string_view num = text.substr(0, slash), den = text.substr(slash + 1);
+  bool neg = false;
+  if (!num.empty() && (num[0] == '+' || num[0] == '-')) {
+    neg = num[0] == '-';
+    num.remove_prefix(1);
   }
+  if (!den.empty() && (den[0] == '+' || den[0] == '-')) bad(text, "the denominator takes no sign");
+  if (!all_digits(num) || !all_digits(den)) bad(text, "a fraction needs integers on both sides of '/'");
+  Integer d = parse_integer_digits(den);
+  if (d == 0) bad(text, "zero denominator");
+  Rational q(parse_integer_digits(num), d);  // Gmpq canonicalizes
+  return neg ? -q : q;
+}
 
-  // Decimal: [sign] digits [. digits] [(e|E) [sign] digits], at least one mantissa digit.
+/// The exponent of a decimal's (e|E) part, [sign] digits (at most six).
+long parse_exponent(std::string_view text, std::string_view expo) {
+  bool eneg = false;
+  if (expo[0] == '+' || expo[0] == '-') {
+    eneg = expo[0] == '-';
+    expo.remove_prefix(1);
+  }
+  if (!all_digits(expo)) bad(text, "exponent is not an integer");
+  if (expo.size() > 6) bad(text, "exponent out of range");
+  const long e10 = std::stol(std::string(expo));
+  return eneg ? -e10 : e10;
+}
+
+/// A decimal: [sign] digits [. digits] [(e|E) [sign] digits], at least one mantissa digit.
+Rational parse_decimal(std::string_view text) {
   std::string_view s = text;
   bool neg = false;
   if (s[0] == '+' || s[0] == '-') {
@@ -92,18 +98,7 @@ Rational parse_rational(std::string_view text) {
     if (is_non_finite(s)) bad(text, "not finite");
     bad(text, "unexpected character");
   }
-  long e10 = 0;
-  if (!expo.empty()) {
-    bool eneg = false;
-    if (expo[0] == '+' || expo[0] == '-') {
-      eneg = expo[0] == '-';
-      expo.remove_prefix(1);
-    }
-    if (!all_digits(expo)) bad(text, "exponent is not an integer");
-    if (expo.size() > 6) bad(text, "exponent out of range");
-    e10 = std::stol(std::string(expo));
-    if (eneg) e10 = -e10;
-  }
+  long e10 = expo.empty() ? 0 : parse_exponent(text, expo);
   e10 -= static_cast<long>(fp.size());
   if (e10 > kMaxDecimalExponent || e10 < -kMaxDecimalExponent - static_cast<long>(kMaxNumberChars))
     bad(text, "decimal exponent beyond the supported range: the exponent of the last digit must lie in [-14000, 4000]");
@@ -112,6 +107,18 @@ Rational parse_rational(std::string_view text) {
   if (neg) m = -m;
   if (e10 >= 0) return Rational(m * power_of_ten(static_cast<unsigned long>(e10)));
   return Rational(m, power_of_ten(static_cast<unsigned long>(-e10)));
+}
+
+}  // namespace
+
+Rational parse_rational(std::string_view text) {
+  // Every character is part of the number: a blank around it is an error, as in a JSON number.
+  if (text.empty()) bad(text, "empty");
+  if (std::isspace(static_cast<unsigned char>(text.front())) || std::isspace(static_cast<unsigned char>(text.back())))
+    bad(text, "blank before or after the number");
+  if (text.size() > kMaxNumberChars) bad(text, "longer than the 10000-character limit");
+  if (auto slash = text.find('/'); slash != std::string_view::npos) return parse_fraction(text, slash);
+  return parse_decimal(text);
 }
 
 Rational exact_rational(double value) {

@@ -216,27 +216,13 @@ Reason verify_tangent(const Matrix4& e, const Matrix4& p, int lambda_sign, const
   return std::nullopt;
 }
 
-Reason verify_hard_tangent(const Matrix4& e, const Matrix4& p, const Certificate& c) {
-  if (c.d < 0) return "d = " + to_string(c.d) + " must be >= 0";
-  const Field f{c.d};
-  const Qd lambda = from_quadratic(c.lambda_q);
-  if (f.sign(lambda) >= 0) return "lambda = " + f.text(lambda) + " must be < 0";
-  const QMatrix k = pencil_at(f, e, p, lambda);
-  if (auto r = positive_semidefinite(f, k, "lambda P + E")) return r;
-  const std::array<Qd, 4> centre{from_quadratic(c.centre[0]), from_quadratic(c.centre[1]), from_quadratic(c.centre[2]),
-                                 rat(Rational(1))};
-  // K (centre, 1) = 0.
-  for (std::size_t i = 0; i < 4; ++i) {
-    Qd s = f.zero();
-    for (std::size_t j = 0; j < 4; ++j) s = f.add(s, f.mul(k[4 * i + j], centre[j]));
-    if (f.sign(s) != 0)
-      return "K (centre, 1) != 0 (row " + std::to_string(i + 1) + " is " + f.text(s) + "), K = lambda P + E";
-  }
-  // The directions: at most 3, non-zero, independent, in ker(lambda A + M), M-orthogonal to the
-  // gradient of e at the centre (so that e(centre + w) = e(centre) + w^T M w).
+/// The hard case's directions: at most 3, non-zero, in ker(lambda A + M) (K's first three rows and
+/// columns), M-orthogonal to the gradient of e at the centre (so that e(centre + w) = e(centre) +
+/// w^T M w), and independent; written as rows 0..n-1 of `w_rows`.
+Reason check_directions(const Field& f, const Matrix4& e, const QMatrix& k, const std::array<Qd, 4>& centre,
+                        const Certificate& c, QMatrix& w_rows) {
   const std::size_t n = c.directions.size();
   if (n > 3) return "more than 3 directions (" + std::to_string(n) + ")";
-  QMatrix w_rows;  // rows 0..n-1: the directions, as a matrix for the independence minors
   for (std::size_t i = 0; i < 16; ++i) w_rows[i] = f.zero();
   for (std::size_t t = 0; t < n; ++t) {
     const std::string name = "direction " + std::to_string(t + 1);
@@ -271,7 +257,32 @@ Reason verify_hard_tangent(const Matrix4& e, const Matrix4& p, const Certificate
     }
     if (!independent) return std::string("the directions are linearly dependent");
   }
-  // radius2 = -e(centre) >= 0.
+  return std::nullopt;
+}
+
+/// The rank of lambda A + M (K's first three rows and columns), from its non-zero minors.
+int block_rank(const Field& f, const QMatrix& k) {
+  int rank = 0;
+  for (int size = 3; size >= 1 && rank == 0; --size)
+    for (int rmask = 1; rmask < 8 && rank == 0; ++rmask)
+      for (int cmask = 1; cmask < 8 && rank == 0; ++cmask) {
+        std::vector<int> r, cl;
+        for (int j = 0; j < 3; ++j) {
+          if (rmask & (1 << j)) r.push_back(j);
+          if (cmask & (1 << j)) cl.push_back(j);
+        }
+        if (static_cast<int>(r.size()) == size && static_cast<int>(cl.size()) == size &&
+            f.sign(minor_det(f, k, r, cl)) != 0)
+          rank = size;
+      }
+  return rank;
+}
+
+/// radius2 = -e(centre) >= 0, and when it is positive the directions span the whole kernel of
+/// lambda A + M (the contact set is complete).
+Reason check_radius(const Field& f, const Matrix4& e, const QMatrix& k, const std::array<Qd, 4>& centre,
+                    const Certificate& c) {
+  const std::size_t n = c.directions.size();
   Qd ec = f.zero();
   for (std::size_t i = 0; i < 4; ++i)
     for (std::size_t j = 0; j < 4; ++j)
@@ -282,25 +293,33 @@ Reason verify_hard_tangent(const Matrix4& e, const Matrix4& p, const Certificate
   if (r2_sign < 0) return "radius2 = " + f.text(r2) + " is negative";
   if (r2_sign > 0) {
     if (n == 0) return std::string("radius2 > 0 but no direction: the contact set is empty");
-    // The directions span the whole kernel of lambda A + M (the contact set is complete).
-    int rank = 0;
-    for (int size = 3; size >= 1 && rank == 0; --size)
-      for (int rmask = 1; rmask < 8 && rank == 0; ++rmask)
-        for (int cmask = 1; cmask < 8 && rank == 0; ++cmask) {
-          std::vector<int> r, cl;
-          for (int j = 0; j < 3; ++j) {
-            if (rmask & (1 << j)) r.push_back(j);
-            if (cmask & (1 << j)) cl.push_back(j);
-          }
-          if (static_cast<int>(r.size()) == size && static_cast<int>(cl.size()) == size &&
-              f.sign(minor_det(f, k, r, cl)) != 0)
-            rank = size;
-        }
+    const int rank = block_rank(f, k);
     if (static_cast<std::size_t>(rank) + n != 3)
       return std::to_string(n) + " direction(s) but the kernel of lambda A + M has dimension " +
              std::to_string(3 - rank);
   }
   return std::nullopt;
+}
+
+Reason verify_hard_tangent(const Matrix4& e, const Matrix4& p, const Certificate& c) {
+  if (c.d < 0) return "d = " + to_string(c.d) + " must be >= 0";
+  const Field f{c.d};
+  const Qd lambda = from_quadratic(c.lambda_q);
+  if (f.sign(lambda) >= 0) return "lambda = " + f.text(lambda) + " must be < 0";
+  const QMatrix k = pencil_at(f, e, p, lambda);
+  if (auto r = positive_semidefinite(f, k, "lambda P + E")) return r;
+  const std::array<Qd, 4> centre{from_quadratic(c.centre[0]), from_quadratic(c.centre[1]), from_quadratic(c.centre[2]),
+                                 rat(Rational(1))};
+  // K (centre, 1) = 0.
+  for (std::size_t i = 0; i < 4; ++i) {
+    Qd s = f.zero();
+    for (std::size_t j = 0; j < 4; ++j) s = f.add(s, f.mul(k[4 * i + j], centre[j]));
+    if (f.sign(s) != 0)
+      return "K (centre, 1) != 0 (row " + std::to_string(i + 1) + " is " + f.text(s) + "), K = lambda P + E";
+  }
+  QMatrix w_rows;  // rows 0..n-1: the directions, as a matrix for the independence minors
+  if (auto r = check_directions(f, e, k, centre, c, w_rows)) return r;
+  return check_radius(f, e, k, centre, c);
 }
 
 Reason verify_crossing(const Matrix4& e, const Matrix4& p, const Certificate& c) {

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "algebra/filtered.hpp"
 #include "algebra/rounding.hpp"
 #include "algebra/smallness.hpp"
 #include "contact/discriminant_case.hpp"
+#include "decide/stages.hpp"
 #include "filters/running_bound.hpp"
 #include "filters/semi_static_filter.hpp"
 #include "filters/static_filter.hpp"
@@ -30,23 +32,7 @@ std::string to_string(DiscriminantCase c) {
   return "?";
 }
 
-std::string decided_by(Stage s) {
-  switch (s) {
-    case Stage::InsideCertificate:
-    case Stage::OutsideCertificate:
-      return "scene-certificate";
-    case Stage::DiscriminantFilter:
-      return "discriminant-filter";
-    case Stage::StaticDouble:
-    case Stage::SemiStaticDouble:
-    case Stage::MultipleRootWitness:
-    case Stage::Interval:
-    case Stage::ExactSigns:
-    case Stage::ExactRoots:
-      return "full-classifier";
-  }
-  return "?";
-}
+std::string decided_by(Stage s) { return detail::stage_row(s).decided_by; }
 
 namespace {
 
@@ -95,15 +81,21 @@ ContactAnswer finish(const Verdict& v) { return {contact_of(v.position), v.posit
 }  // namespace
 
 DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p) {
-  if (storage_of(e).filter_doubles() && storage_of(p).filter_doubles() && rounding_to_nearest()) {
-    const DecisionSigns d = static_filter_discriminant_signs_normalized(
-        *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), &needs_smallness);
-    const DiscriminantCase c = discriminant_case(d.quartic);
-    std::optional<int> rho;
-    if (discriminant_case_needs_rho(c)) rho = compare_rho_with_one(d.vertex, d.graeffe);
-    if (auto v = verdict_from_discriminant_case(c, rho)) return {*v, c != DiscriminantCase::TwoPositive};
-  }
-  return {decide_position(e, p), true};
+  return detail::filtered<detail::Rounding::Nearest>(
+      [&]() -> std::optional<DiscriminantVerdict> {
+        if (!storage_of(e).filter_doubles() || !storage_of(p).filter_doubles()) return std::nullopt;
+        const DecisionSigns d = static_filter_discriminant_signs_normalized(
+            *storage_of(p).filter_doubles(), *storage_of(e).filter_doubles(), &needs_smallness);
+        const DiscriminantCase c = discriminant_case(d.quartic);
+        std::optional<int> rho;
+        if (discriminant_case_needs_rho(c)) rho = compare_rho_with_one(d.vertex, d.graeffe);
+        if (auto v = verdict_from_discriminant_case(c, rho))
+          return DiscriminantVerdict{*v, c != DiscriminantCase::TwoPositive};
+        return std::nullopt;
+      },
+      [&] {
+        return DiscriminantVerdict{decide_position(e, p), true};
+      });
 }
 
 ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p) { return finish(decide_by_discriminant(e, p).verdict); }
@@ -235,22 +227,26 @@ ExteriorTracker::FrameVerdict ExteriorTracker::finish(const Verdict& v) {
 ExteriorTracker::FrameVerdict ExteriorTracker::update(const std::array<double, 3>& translation) {
   for (double x : translation)
     if (!std::isfinite(x)) throw InputError("tracker translation: not finite");
-  if (rounding_to_nearest()) {
-    // Every decision sign of the moved body, certified without forming it (exact-double bodies on the
-    // SSE fast path, others on double enclosures); the discriminant case reads f and Disc(f), and rho
-    // is the reference's exactly (same M, same det E).
-    const DecisionSigns d = storage_of(body_).filter_doubles() && storage_of(p_).filter_doubles()
-                                ? semi_static_filter_signs_translated(*storage_of(p_).filter_doubles(),
-                                                                      *storage_of(body_).filter_doubles(), translation)
-                                : semi_static_filter_signs_translated(p_.matrix(), body_.matrix(), translation);
-    const DiscriminantCase c = discriminant_case(d.quartic);
-    if (auto v = verdict_from_discriminant_case(c, rho_vs_one_)) {
-      ++counts_.frames;
-      return finish(*v);
-    }
-  }
-  const Vector3 t{exact_rational(translation[0]), exact_rational(translation[1]), exact_rational(translation[2])};
-  return update(body_.translated(t));
+  return detail::filtered<detail::Rounding::Nearest>(
+      [&]() -> std::optional<FrameVerdict> {
+        // Every decision sign of the moved body, certified without forming it (exact-double bodies on
+        // the SSE fast path, others on double enclosures); the discriminant case reads f and Disc(f),
+        // and rho is the reference's exactly (same M, same det E).
+        const DecisionSigns d =
+            storage_of(body_).filter_doubles() && storage_of(p_).filter_doubles()
+                ? semi_static_filter_signs_translated(*storage_of(p_).filter_doubles(),
+                                                      *storage_of(body_).filter_doubles(), translation)
+                : semi_static_filter_signs_translated(p_.matrix(), body_.matrix(), translation);
+        const DiscriminantCase c = discriminant_case(d.quartic);
+        const std::optional<Verdict> v = verdict_from_discriminant_case(c, rho_vs_one_);
+        if (!v) return std::nullopt;
+        ++counts_.frames;
+        return finish(*v);
+      },
+      [&] {
+        const Vector3 t{exact_rational(translation[0]), exact_rational(translation[1]), exact_rational(translation[2])};
+        return update(body_.translated(t));
+      });
 }
 
 }  // namespace relpos

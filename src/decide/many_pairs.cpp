@@ -1,11 +1,12 @@
 #include "decide/many_pairs.hpp"
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <vector>
 
 #include "algebra/rounding.hpp"
-#include "decide/static_route.hpp"
+#include "decide/decision.hpp"
 #include "filters/static_filter_lanes.hpp"
 
 namespace relpos {
@@ -88,25 +89,30 @@ struct IndexedPairs {
   }
 };
 
-/// The route's verdicts (static_route_table) by DiscriminantCase and rho_vs_one + 1, and the position
-/// of each that run_stages returns at once (rule not None; -1 for the others, and in column 3, rho
-/// uncertain). Built once.
+/// What the static stage (stage_static_double.hpp) does with the route's signs, read from the one
+/// decision table (decision.hpp: decide_from_discriminant, decide): the verdict of a case and
+/// rho_vs_one, and the positions it decides at once indexed for the lanes' bits.
 struct RouteTable {
-  Verdict v[4][3];
-  signed char position[4][4];
-  /// position[c][rho_vs_one + 1] by DiscriminantSignBits::rho_index() instead of rho_vs_one, and
-  /// rho_vs_one of each rho_index() (its table).
-  signed char by_rho_index[4][16], rho_of[16];
+  /// The position the table decides for case c and DiscriminantSignBits::rho_index() r (its rule not
+  /// None), -1 where it does not decide at once (an uncertain case or rho, or the gap test to come).
+  signed char position[4][16];
+  /// The route's own tables (static_filter.hpp): the case of a case_index(), rho_vs_one of a
+  /// rho_index() (2: uncertain).
+  const std::array<DiscriminantCase, 1 << 12>& cases = detail::discriminant_case_table();
+  const std::array<signed char, 16>& rhos = detail::rho_vs_one_table();
   RouteTable() {
-    detail::static_route_table(v);
     for (int c = 0; c < 4; ++c)
-      for (int rho = 0; rho < 4; ++rho)
-        position[c][rho] = rho < 3 && v[c][rho].rule != Rule::None ? static_cast<signed char>(v[c][rho].position) : -1;
-    const auto& rhos = detail::rho_vs_one_table();
-    for (std::size_t r = 0; r < 16; ++r) {
-      rho_of[r] = rhos[r];
-      for (int c = 0; c < 4; ++c) by_rho_index[c][r] = position[c][rhos[r] + 1];
-    }
+      for (std::size_t r = 0; r < 16; ++r) {
+        Verdict v;
+        const bool decides = verdict(c, rhos[r], v) && detail::decided(v);
+        position[c][r] = decides ? static_cast<signed char>(v.position) : -1;
+      }
+  }
+  /// The route's verdict for case c and rho_vs_one (stage StaticDouble); false when the case or rho is
+  /// uncertain.
+  static bool verdict(int c, int rho, Verdict& v) {
+    v = Verdict{};
+    return detail::decide_from_discriminant(static_cast<DiscriminantCase>(c), rho, v);
   }
 };
 
@@ -123,7 +129,7 @@ struct PositionsOut {
   /// A verdict of the route's table that decides (stage StaticDouble, as every verdict of it), by
   /// case and rho_index().
   void route(std::size_t i, const RouteTable& table, int c, unsigned long rho_index) const {
-    positions[i] = static_cast<Position>(table.by_rho_index[c][rho_index]);
+    positions[i] = static_cast<Position>(table.position[c][rho_index]);
     if (stages) stages[i] = Stage::StaticDouble;
     status[i] = PairStatus::Decided;
   }
@@ -135,7 +141,7 @@ struct VerdictsOut {
   Verdict* verdicts;
   void decided(std::size_t i, const Verdict& v) const { verdicts[i] = v; }
   void route(std::size_t i, const RouteTable& table, int c, unsigned long rho_index) const {
-    verdicts[i] = table.v[c][table.rho_of[rho_index] + 1];
+    RouteTable::verdict(c, table.rhos[rho_index], verdicts[i]);
   }
   void failed(std::size_t, PairStatus) const {}
 };
@@ -153,6 +159,28 @@ struct GivenCopy {
   }
 };
 
+/// Lane l of a block (pair i) from the route's signs, as the static stage takes them
+/// (stage_static_double.hpp): the table's verdict when it decides; else, when the verdict waits for
+/// the gap test only and the lanes have its answer, the verdict with it (math.md §8). False: the pair
+/// stays open, for the ladder.
+template <class Out>
+[[gnu::always_inline]] inline bool decide_lane(const detail::PairBlockSigns& signs, int l, const RouteTable& table,
+                                               const Out& out, std::size_t i) {
+  const int c = static_cast<int>(table.cases[signs.case_index[l]]);
+  if (table.position[c][signs.rho_index[l]] >= 0) {
+    out.route(i, table, c, signs.rho_index[l]);
+    return true;
+  }
+  Verdict v;
+  if (signs.gap[l] < 0 || !RouteTable::verdict(c, table.rhos[signs.rho_index[l]], v) || !detail::needs_gap(v))
+    return false;
+  v.roots_above_lambda_s = static_cast<signed char>(signs.gap[l] != 0);
+  detail::decide(v);
+  if (!detail::decided(v)) return false;
+  out.decided(i, v);
+  return true;
+}
+
 /// The pairs through the lanes (in round to nearest, which their bounds assume; in any other mode
 /// decide_position runs its interval stage instead) in blocks of kPairLanes pairs; the pairs whose
 /// signs they do not settle through decide_position itself, after the blocks of their chunk (so that
@@ -161,7 +189,6 @@ struct GivenCopy {
 template <class Pairs, class Out, class Filter = LoadedCopy>
 std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Filter filter = {}) {
   static const RouteTable table;
-  const auto& cases = detail::discriminant_case_table();
   std::size_t failed = 0;
   auto scalar = [&](std::size_t i) {
     Verdict v;
@@ -196,22 +223,7 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Fil
       filter(block, Pairs::kInput, signs);
       for (int l = 0; l < count; ++l) {
         const std::size_t i = start + static_cast<std::size_t>(l);
-        // What run_stages does with the route's signs: the table's verdict when it decides, else the
-        // gap test's answer when the verdict waits for it and the lanes have it.
-        const int c = static_cast<int>(cases[signs.case_index[l]]);
-        if (table.by_rho_index[c][signs.rho_index[l]] >= 0) {
-          out.route(i, table, c, signs.rho_index[l]);
-          continue;
-        }
-        const int rho = table.rho_of[signs.rho_index[l]];  // 2: uncertain
-        if (signs.gap[l] >= 0 && rho != 2) {
-          Verdict with_gap = table.v[c][rho + 1];
-          if (detail::static_route_gap(with_gap, signs.gap[l] != 0)) {
-            out.decided(i, with_gap);
-            continue;
-          }
-        }
-        open[opened++] = i;
+        if (!decide_lane(signs, l, table, out, i)) open[opened++] = i;
       }
     }
     for (std::size_t k = 0; k < opened; ++k) scalar(open[k]);

@@ -275,6 +275,66 @@ int common_roots(const Poly& h, const Poly& r) {
   return (v.value() == 0 && u.value() == 0) ? 2 : 1;
 }
 
+/// A root of multiplicity m is a simple root of f^(m-1): propose the roots of f' (double roots),
+/// then of f'' (triple), then the root -f3 / (4 f4) of f''' (quadruple; exact, no numerics), each
+/// verified by exact division. False when they do not account for every multiple root.
+bool find_multiple_roots(const Quartic<CheckedInt>& f, Search& search) {
+  double fd[5];
+  for (int i = 0; i < 5; ++i) fd[i] = static_cast<double>(f[static_cast<std::size_t>(i)].value());
+  const double d1[4] = {fd[1], 2 * fd[2], 3 * fd[3], 4 * fd[4]};
+  double xs[3];
+  const int n1 = cubic_roots(d1, xs);
+  for (int i = 0; i < n1 && !search.complete(); ++i) search.try_double(xs[i]);
+  if (!search.complete()) {
+    const int n2 = quadratic_roots(12 * fd[4], 6 * fd[3], 2 * fd[2], xs);
+    for (int i = 0; i < n2 && !search.complete(); ++i) search.try_double(xs[i]);
+  }
+  if (!search.complete()) {
+    CheckedInt p = -f[3], q = CheckedInt(4) * f[4];
+    if (p.valid() && q.valid()) {
+      Int a = p.value(), b = q.value();
+      if (b < 0) a = -a, b = -b;
+      const Int g = gcd(a, b);  // b != 0, so g != 0
+      search.try_rational(a / g, b / g);
+    }
+  }
+  return search.complete();
+}
+
+/// The found multiple roots counted into r (by sign; tangent ones apart: math.md §3, tangency <=>
+/// mult_f - mult_s >= 2) and divided out of s_rest; returns their part of deg gcd(f, s), or -1 on
+/// overflow.
+int count_found_roots(const Search& search, const Quadratic<CheckedInt>& s, RootFacts& r, Poly& s_rest) {
+  int gcd_degree = 0;
+  for (int i = 0; i < search.count; ++i) {
+    const Found& x = search.found[i];
+    const int ms = multiplicity_in_s(s, x.p, x.q);
+    if (ms < 0) return -1;
+    (x.p.value() < 0 ? r.negative : r.positive) += 1;
+    if (x.mult_f - ms >= 2) (x.p.value() < 0 ? r.tangent_negative : r.tangent_positive) += 1;
+    gcd_degree += std::min(x.mult_f, ms);
+    for (int k = 0; k < ms; ++k) {
+      Poly next;
+      if (!divide_linear(s_rest, x.p, x.q, next)) return -1;  // cannot happen: s(p/q) = 0
+      s_rest = next;
+    }
+  }
+  return gcd_degree;
+}
+
+/// The square-free cofactor h's roots added to r: its real roots by sign, its non-real pair.
+void count_cofactor(const Poly& h, RootFacts& r) {
+  int sign_disc_h = 1;
+  if (h.degree == 2) sign_disc_h = (h.c[1] * h.c[1] - CheckedInt(4) * h.c[2] * h.c[0]).sign();
+  const detail::SmallCount c =
+      h.degree >= 1
+          ? detail::count_small(h.degree, sign_disc_h, h.degree == 2 ? h.c[2].sign() : 0, h.c[1].sign(), h.c[0].sign())
+          : detail::SmallCount{};
+  r.negative += c.negative;
+  r.positive += c.positive;
+  r.nonreal = (h.degree == 2 && sign_disc_h < 0) ? 2 : 0;
+}
+
 }  // namespace
 
 std::optional<MachinePencil> machine_pencil(const DoubleMatrix4& p, const DoubleMatrix4& e) {
@@ -295,60 +355,16 @@ std::optional<RootFacts> rational_multiple_root_facts(const Quartic<CheckedInt>&
   search.h.degree = 4;
   for (int i = 0; i < 5; ++i) search.h.c[i] = f[static_cast<std::size_t>(i)];
   if (search.h.c[4].value() == 0 || search.h.c[0].value() == 0) return std::nullopt;
-
-  // A root of multiplicity m is a simple root of f^(m-1): propose the roots of f' (double roots),
-  // then of f'' (triple), then the root -f3 / (4 f4) of f''' (quadruple; exact, no numerics).
-  double fd[5];
-  for (int i = 0; i < 5; ++i) fd[i] = static_cast<double>(f[static_cast<std::size_t>(i)].value());
-  const double d1[4] = {fd[1], 2 * fd[2], 3 * fd[3], 4 * fd[4]};
-  double xs[3];
-  const int n1 = cubic_roots(d1, xs);
-  for (int i = 0; i < n1 && !search.complete(); ++i) search.try_double(xs[i]);
-  if (!search.complete()) {
-    const int n2 = quadratic_roots(12 * fd[4], 6 * fd[3], 2 * fd[2], xs);
-    for (int i = 0; i < n2 && !search.complete(); ++i) search.try_double(xs[i]);
-  }
-  if (!search.complete()) {
-    CheckedInt p = -f[3], q = CheckedInt(4) * f[4];
-    if (p.valid() && q.valid()) {
-      Int a = p.value(), b = q.value();
-      if (b < 0) a = -a, b = -b;
-      const Int g = gcd(a, b);  // b != 0, so g != 0
-      search.try_rational(a / g, b / g);
-    }
-  }
-  if (!search.complete()) return std::nullopt;
-
+  if (!find_multiple_roots(f, search)) return std::nullopt;
   RootFacts r;
   Poly s_rest;  // s with its roots among the multiple roots of f divided out
   s_rest.degree = 2;
   for (int i = 0; i < 3; ++i) s_rest.c[i] = s[static_cast<std::size_t>(i)];
-  int gcd_degree = 0;
-  for (int i = 0; i < search.count; ++i) {
-    const Found& x = search.found[i];
-    const int ms = multiplicity_in_s(s, x.p, x.q);
-    if (ms < 0) return std::nullopt;
-    (x.p.value() < 0 ? r.negative : r.positive) += 1;
-    // math.md §3: tangency <=> mult_f - mult_s >= 2.
-    if (x.mult_f - ms >= 2) (x.p.value() < 0 ? r.tangent_negative : r.tangent_positive) += 1;
-    gcd_degree += std::min(x.mult_f, ms);
-    for (int k = 0; k < ms; ++k) {
-      Poly next;
-      if (!divide_linear(s_rest, x.p, x.q, next)) return std::nullopt;  // cannot happen: s(p/q) = 0
-      s_rest = next;
-    }
-  }
+  const int gcd_degree = count_found_roots(search, s, r, s_rest);
+  if (gcd_degree < 0) return std::nullopt;
   const Poly& h = search.h;  // square-free, none of its roots is a found root
-  int sign_disc_h = 1;
-  if (h.degree == 2) sign_disc_h = (h.c[1] * h.c[1] - CheckedInt(4) * h.c[2] * h.c[0]).sign();
-  const detail::SmallCount c =
-      h.degree >= 1
-          ? detail::count_small(h.degree, sign_disc_h, h.degree == 2 ? h.c[2].sign() : 0, h.c[1].sign(), h.c[0].sign())
-          : detail::SmallCount{};
-  r.negative += c.negative;
-  r.positive += c.positive;
+  count_cofactor(h, r);
   r.real = r.negative + r.positive;
-  r.nonreal = (h.degree == 2 && sign_disc_h < 0) ? 2 : 0;
   r.nonreal_multiple = 0;  // every multiple root found is rational
   r.sign_disc_f = 0;
   // Square-free real polynomial: sign Disc = (-1)^(non-real pairs); f~ keeps f's non-real roots.

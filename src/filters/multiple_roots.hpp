@@ -17,13 +17,13 @@
 // The numerics only *propose*; every fact is an exact integer identity, so a wrong proposal costs
 // time, never correctness. Everything runs on CheckedInt (checked_int.hpp): no allocation. When a
 // number overflows, no candidate verifies, or a multiple root is irrational, the functions return
-// nullopt and the caller uses the general GMP path (roots.hpp).
+// nullopt and the caller uses the general GMP path (root_facts.hpp).
 #pragma once
 
 #include <optional>
 
 #include "algebra/pencil.hpp"
-#include "algebra/roots.hpp"
+#include "algebra/root_facts.hpp"
 #include "filters/checked_int.hpp"
 #include "relpos/quadric.hpp"
 
@@ -39,7 +39,7 @@ struct MachinePencil {
 };
 std::optional<MachinePencil> machine_pencil(const DoubleMatrix4& p, const DoubleMatrix4& e);
 
-/// The facts of roots.hpp when f has a rational multiple root, certified as above; nullopt when no
+/// The facts of root_facts.hpp when f has a rational multiple root, certified as above; nullopt when no
 /// certificate was found (f square-free, an irrational multiple root, or overflow). sign_disc_f is
 /// 0 by construction. degree_ftilde is -1 when computing it would overflow (decisions never use it).
 std::optional<RootFacts> rational_multiple_root_facts(const Quartic<CheckedInt>& f, const Quadratic<CheckedInt>& s);

@@ -140,13 +140,6 @@ DecisionSigns uncertain() { return DecisionSigns{}; }
 
 const detail::StaticFilterBounds& detail::static_filter_bounds() { return bounds(); }
 
-std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m) {
-  if (!m) return std::nullopt;
-  Mat<double> out;
-  if (!normalize(*m, out)) return std::nullopt;
-  return out.a;
-}
-
 DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4& ein) {
   Mat<double> p, e;
   if (!normalize(pin, p) || !normalize(ein, e)) return uncertain();
@@ -226,29 +219,27 @@ inline void certify_bit_pair(DiscriminantSignBits& bits, int bit, Lanes2 v, Lane
   bits.negative |= static_cast<unsigned>((neg[0] & 1) | (neg[1] & 2)) << bit;
 }
 
-/// The discriminant route (static_filter_discriminant_signs_normalized): the same pipeline as
-/// static_filter_signs_normalized() (f, balancing, scaling into [-1, 1], the second-stage bound
-/// a + r * eps), restricted to f and Disc(f), the latter from the invariants (27 Disc(f), about a
-/// dozen products); s and the smallness quantities when need(bits) says so. Index kDisc27 of the
-/// a/r arrays is 27 Disc(f), 6 and 7 are vertex and graeffe. Its balancing and scaling are written
-/// out here rather than shared with the full pipeline: a shared helper measured 5-12 % slower on
-/// decide_position (benchmarks/regime_bench).
-template <class Need>
-inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const DoubleMatrix4& en, Need need,
-                                              std::optional<bool>* gap) {
-  const Bounds& b = bounds();
-  auto f = characteristic_polynomial_lanes(pn, en);  // bit for bit the generic template
-  DiscriminantSignBits out;
-  // The numbers of static_filter_signs_normalized()'s balancing and scaling, each the same double,
-  // with shorter dependency chains and in lanes (the filter waits on them, not on throughput):
-  // - the powers w_i = step^i: step and step^2 are normal (|t| <= 511) and exact from their bits;
-  //   step^3 = step^2 step and step^4 = step^2 step^2 are each the exact power rounded once, as the
-  //   loop's products are (when 2^(3t) is out of range, 2^(4t) is beyond it on the same side);
-  // - the largest y_i = |f_i w_i| + err_i w_i in any order: every y_i >= 0, and a NaN (f_i = 0,
-  //   w_i = inf) implies w_4 = inf, so y_4 = inf, taken last, makes the result inf or NaN, which
-  //   unit_scale() rejects as scale_into_unit() rejects the loop's inf;
-  // - eps, the largest scaled error, as the largest error scaled (rounding is monotone).
-  if (!normal_range(std::fabs(f[0])) || !normal_range(std::fabs(f[4]))) return out;  // balancing_step() 0
+/// The powers of the balancing step and the largest scaled error: what the smallness half reads.
+struct Balance {
+  Lanes2 w01;
+  double w2, eps;
+};
+
+/// discriminant_bits' first half: f balanced (lambda = 2^t mu) and scaled into [-1, 1] in place,
+/// its five sign bits and Disc(f)'s certified. False when that is all (the scaling failed or eps
+/// is beyond kEps0). The numbers of static_filter_signs_normalized()'s balancing and scaling, each
+/// the same double, with shorter dependency chains and in lanes (the filter waits on them, not on
+/// throughput):
+/// - the powers w_i = step^i: step and step^2 are normal (|t| <= 511) and exact from their bits;
+///   step^3 = step^2 step and step^4 = step^2 step^2 are each the exact power rounded once, as the
+///   loop's products are (when 2^(3t) is out of range, 2^(4t) is beyond it on the same side);
+/// - the largest y_i = |f_i w_i| + err_i w_i in any order: every y_i >= 0, and a NaN (f_i = 0,
+///   w_i = inf) implies w_4 = inf, so y_4 = inf, taken last, makes the result inf or NaN, which
+///   unit_scale() rejects as scale_into_unit() rejects the loop's inf;
+/// - eps, the largest scaled error, as the largest error scaled (rounding is monotone).
+template <class F>
+[[gnu::always_inline]] inline bool balanced_f_bits(const Bounds& b, F& f, DiscriminantSignBits& out, Balance& bal) {
+  if (!normal_range(std::fabs(f[0])) || !normal_range(std::fabs(f[4]))) return false;  // balancing_step() 0
   const int t = (exponent_of(f[0]) - exponent_of(f[4])) / 4;
   const double w1 = power_of_two(t), w2 = power_of_two(2 * t), w4 = w2 * w2;
   const Lanes2 w01 = {1.0, w1}, w23 = Lanes2{w2, w2} * w01;
@@ -259,9 +250,9 @@ inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const Dou
   const Lanes2 y = lanes_max(lanes_abs(f01) + e01, lanes_abs(f23) + e23);
   const Lanes2 scale2 = unit_scale(std::max(std::max(y[0], y[1]), std::fabs(f4) + e4));
   const double scale = scale2[0];
-  if (scale == 0) return out;
+  if (scale == 0) return false;
   const Lanes2 e = lanes_max(e01, e23);
-  double eps = std::max(std::max(e[0], e[1]), e4) * scale;
+  const double eps = std::max(std::max(e[0], e[1]), e4) * scale;
   f01 *= scale2;
   f23 *= scale2;
   f4 *= scale;
@@ -271,29 +262,37 @@ inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const Dou
   certify_bit_pair(out, 0, f01, e01);
   certify_bit_pair(out, 2, f23, e23);
   certify_bit(out, 4, f4, e4);
-  if (!(eps <= kEps0)) return out;
+  if (!(eps <= kEps0)) return false;
   f = {f01[0], f01[1], f23[0], f23[1], f4};
   // The same template as the bound was derived from: the same operations in the same order.
   certify_bit(out, DiscriminantSignBits::kDisc, discriminant_times_27(f), b.a[kDisc27] + b.r[kDisc27] * eps);
-  if (!need(out)) return out;
+  bal = {w01, w2, eps};
+  return true;
+}
+
+/// discriminant_bits' second half: s balanced and scaled as f was, the smallness bits, and the gap
+/// test when the signs leave only it open (four distinct negative roots and rho > 1).
+template <class F>
+[[gnu::always_inline]] inline void smallness_bits(const Bounds& b, const DoubleMatrix4& pn, const DoubleMatrix4& en,
+                                                  const F& f, const Balance& bal, DiscriminantSignBits& out,
+                                                  std::optional<bool>* gap) {
   auto s = special_polynomial_lanes(pn, en);  // bit for bit the generic template
-  Lanes2 s01 = Lanes2{s[0], s[1]} * w01;
-  double s2 = s[2] * w2;
-  const Lanes2 es01 = Lanes2{b.s[0], b.s[1]} * w01;
-  const double es2 = b.s[2] * w2;
+  Lanes2 s01 = Lanes2{s[0], s[1]} * bal.w01;
+  double s2 = s[2] * bal.w2;
+  const Lanes2 es01 = Lanes2{b.s[0], b.s[1]} * bal.w01;
+  const double es2 = b.s[2] * bal.w2;
   const Lanes2 ys = lanes_abs(s01) + es01;
   const Lanes2 s_scale2 = unit_scale(std::max(std::max(ys[0], ys[1]), std::fabs(s2) + es2));
   const double s_scale = s_scale2[0];
-  if (s_scale == 0) return out;
+  if (s_scale == 0) return;
   s01 *= s_scale2;
   s2 *= s_scale;
   s = {s01[0], s01[1], s2};
-  eps = std::max(eps, std::max(std::max(es01[0], es01[1]), es2) * s_scale);
-  if (!(eps <= kEps0)) return out;
+  const double eps = std::max(bal.eps, std::max(std::max(es01[0], es01[1]), es2) * s_scale);
+  if (!(eps <= kEps0)) return;
   SmallnessQuantities<double> sq(f, s);
   certify_bit(out, DiscriminantSignBits::kVertex, sq.vertex, b.a[6] + b.r[6] * eps);
   certify_bit(out, DiscriminantSignBits::kGraeffe, sq.graeffe, b.a[7] + b.r[7] * eps);
-  // The gap test, when the signs leave only it open: four distinct negative roots and rho > 1.
   // One branch, rarely taken: `&` rather than `&&`, whose first test (the case) is unpredictable.
   if (gap && (static_cast<int>(out.discriminant_case() == DiscriminantCase::AllNegative) &
               static_cast<int>(out.rho_vs_one() == 1))) {
@@ -304,6 +303,24 @@ inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const Dou
       signs[i] = detail::certain(certified(q[i], b.a[kGap + i] + b.r[kGap + i] * eps));
     *gap = anysize::roots_above_lambda_s(signs);
   }
+}
+
+/// The discriminant route (static_filter_discriminant_signs_normalized): the same pipeline as
+/// static_filter_signs_normalized() (f, balancing, scaling into [-1, 1], the second-stage bound
+/// a + r * eps), restricted to f and Disc(f), the latter from the invariants (27 Disc(f), about a
+/// dozen products); s and the smallness quantities when need(bits) says so. Index kDisc27 of the
+/// a/r arrays is 27 Disc(f), 6 and 7 are vertex and graeffe. Its balancing and scaling are written
+/// out here rather than shared with the full pipeline: a shared helper measured 5-12 % slower on
+/// decide_position (benchmarks/regime_bench); its two halves are always inlined into it.
+template <class Need>
+inline DiscriminantSignBits discriminant_bits(const DoubleMatrix4& pn, const DoubleMatrix4& en, Need need,
+                                              std::optional<bool>* gap) {
+  const Bounds& b = bounds();
+  auto f = characteristic_polynomial_lanes(pn, en);  // bit for bit the generic template
+  DiscriminantSignBits out;
+  Balance bal;
+  if (!balanced_f_bits(b, f, out, bal) || !need(out)) return out;
+  smallness_bits(b, pn, en, f, bal, out, gap);
   return out;
 }
 

@@ -1,5 +1,6 @@
 // The pieces of a batch line (internal): the reader shared by `relpos batch`, the JSON Lines input of
-// `relpos scene`, `relpos verify` and the fuzzer, and the error line they write.
+// `relpos scene`, `relpos verify` and the fuzzer (batch.cpp); the answer to a line is io.hpp's
+// answer_batch_line (batch_answer.cpp).
 #pragma once
 
 #include <cstddef>
@@ -32,11 +33,9 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 /// object is scanned once: the id's text is kept, "comment" is validated without being stored,
 /// duplicate keys are refused. out.id is set (to the line number at first, to the id once it is
 /// read) before any InputError is thrown, so that errors echo the id; out's quadrics are the line's
-/// only when nothing is thrown.
+/// only when nothing is thrown. With `id`, the id is not copied into out.id: *id is set to its text
+/// instead (a view into `line`, or of out.id), before anything is thrown.
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
-                     BatchLine& out);
-
-/// {"id": <id_text>, "error": message}, with invalid UTF-8 replaced (std::bad_alloc when out of memory).
-std::string error_line(const std::string& id_text, const std::string& message);
+                     BatchLine& out, std::string_view* id = nullptr);
 
 }  // namespace relpos::io

@@ -1,4 +1,6 @@
 // Certificates as JSON (include/relpos/position.hpp): exact strings out, exact numbers in.
+#include "io/certificate_json.hpp"
+
 #include <gmp.h>
 
 #include <cstddef>
@@ -7,14 +9,12 @@
 #include <utility>
 
 #include "certificate/verify.hpp"
-#include "io/json_write.hpp"
+#include "io/json_values.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
-namespace relpos {
+namespace relpos::io::detail {
 namespace {
-
-using Json = nlohmann::ordered_json;
 
 /// floor(sqrt(d) * 10^k) / 10^k: below sqrt d by less than 10^-k.
 Rational sqrt_below(const Integer& d, unsigned long k) {
@@ -42,7 +42,7 @@ std::string quad_decimal(const QuadraticNumber& x, const Integer& d, int digits)
   }
 }
 
-void check_keys(const Json& j, const std::string& path, const std::set<std::string>& allowed) {
+void only_keys(const Json& j, const std::string& path, const std::set<std::string>& allowed) {
   if (!j.is_object()) throw InputError(path + ": expected an object");
   for (const auto& item : j.items())
     if (!allowed.count(item.key())) throw InputError(path + ": unknown key \"" + item.key().substr(0, 40) + "\"");
@@ -56,7 +56,7 @@ const Json& field(const Json& j, const std::string& key, const std::string& path
 Rational number(const Json& j, const std::string& path) {
   if (j.is_null() || j.is_boolean() || j.is_array() || j.is_object())
     throw InputError(path + ": expected a number, got " + j.dump().substr(0, 40));
-  return io::rational_from_json(j, path);
+  return rational_from_json(j, path);
 }
 
 Vector3 vec(const Json& j, const std::string& path) {
@@ -65,7 +65,7 @@ Vector3 vec(const Json& j, const std::string& path) {
 }
 
 QuadraticNumber quad(const Json& j, const std::string& path) {
-  check_keys(j, path, {"a", "b"});
+  only_keys(j, path, {"a", "b"});
   return {number(field(j, "a", path), path + ".a"), number(field(j, "b", path), path + ".b")};
 }
 
@@ -73,13 +73,6 @@ QuadraticVector3 quad_vec(const Json& j, const std::string& path) {
   if (!j.is_array() || j.size() != 3) throw InputError(path + ": expected an array of 3 {\"a\", \"b\"} objects");
   return {quad(j[0], path + "[0]"), quad(j[1], path + "[1]"), quad(j[2], path + "[2]")};
 }
-
-}  // namespace
-
-}  // namespace relpos
-
-namespace relpos::io::detail {
-namespace {
 
 void vec_json(const Vector3& v, JsonWriter& w) { w.rationals(v.data(), v.size()); }
 
@@ -97,6 +90,35 @@ void quad_vec_json(const QuadraticVector3& v, JsonWriter& w) {
     quad_json(v[i], w);
   }
   w.raw("]");
+}
+
+/// The hard case's certificate: lambda_s in Q(sqrt d), the contact set, and its decimals.
+void append_hard_tangent(const Certificate& c, int digits, JsonWriter& w) {
+  w.raw("{\"lambda\":{\"a\":");
+  w.rational(c.lambda_q.a);
+  w.raw(",\"b\":");
+  w.rational(c.lambda_q.b);
+  w.raw(",\"d\":");
+  w.rational(Rational(c.d));
+  w.raw("},\"contact_set\":{\"center\":");
+  quad_vec_json(c.centre, w);
+  w.raw(",\"directions\":[");
+  for (std::size_t i = 0; i < c.directions.size(); ++i) {
+    if (i) w.raw(",");
+    quad_vec_json(c.directions[i], w);
+  }
+  w.raw("],\"radius2\":");
+  quad_json(c.radius2, w);
+  w.raw(",\"decimal\":{\"lambda\":");
+  w.string(quad_decimal(c.lambda_q, c.d, digits));
+  w.raw(",\"center\":[");
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (i) w.raw(",");
+    w.string(quad_decimal(c.centre[i], c.d, digits));
+  }
+  w.raw("],\"radius2\":");
+  w.string(quad_decimal(c.radius2, c.d, digits));
+  w.raw("}}}");
 }
 
 }  // namespace
@@ -126,67 +148,31 @@ void append_certificate(const Certificate& c, int digits, JsonWriter& w) {
       vec_json(c.outside, w);
       w.raw("}");
       return;
-    case K::HardTangent: {
-      w.raw("{\"lambda\":{\"a\":");
-      w.rational(c.lambda_q.a);
-      w.raw(",\"b\":");
-      w.rational(c.lambda_q.b);
-      w.raw(",\"d\":");
-      w.rational(Rational(c.d));
-      w.raw("},\"contact_set\":{\"center\":");
-      quad_vec_json(c.centre, w);
-      w.raw(",\"directions\":[");
-      for (std::size_t i = 0; i < c.directions.size(); ++i) {
-        if (i) w.raw(",");
-        quad_vec_json(c.directions[i], w);
-      }
-      w.raw("],\"radius2\":");
-      quad_json(c.radius2, w);
-      w.raw(",\"decimal\":{\"lambda\":");
-      w.string(quad_decimal(c.lambda_q, c.d, digits));
-      w.raw(",\"center\":[");
-      for (std::size_t i = 0; i < 3; ++i) {
-        if (i) w.raw(",");
-        w.string(quad_decimal(c.centre[i], c.d, digits));
-      }
-      w.raw("],\"radius2\":");
-      w.string(quad_decimal(c.radius2, c.d, digits));
-      w.raw("}}}");
+    case K::HardTangent:
+      append_hard_tangent(c, digits, w);
       return;
-    }
   }
   w.null();
 }
 
-}  // namespace relpos::io::detail
-
-namespace relpos {
-
-Json certificate_to_json(const Certificate& c, int digits) {
-  std::string text;
-  io::detail::JsonWriter w(text);
-  io::detail::append_certificate(c, digits, w);
-  return Json::parse(text);
-}
-
-Certificate certificate_from_json(const Json& j) {
+Certificate certificate_from_tree(const Json& j) {
   const std::string path = "certificate";
   Certificate c;
   if (j.is_null()) return c;
   if (!j.is_object()) throw InputError(path + ": expected an object or null, got " + j.dump().substr(0, 40));
   if (j.contains("inside") || j.contains("outside")) {
-    check_keys(j, path, {"inside", "outside"});
+    only_keys(j, path, {"inside", "outside"});
     c.kind = Certificate::Kind::Crossing;
     c.inside = vec(field(j, "inside", path), path + ".inside");
     c.outside = vec(field(j, "outside", path), path + ".outside");
     return c;
   }
   if (j.contains("contact_set")) {
-    check_keys(j, path, {"lambda", "contact_set"});
+    only_keys(j, path, {"lambda", "contact_set"});
     c.kind = Certificate::Kind::HardTangent;
     const Json& l = field(j, "lambda", path);
     const std::string lp = path + ".lambda";
-    check_keys(l, lp, {"a", "b", "d"});
+    only_keys(l, lp, {"a", "b", "d"});
     c.lambda_q = {number(field(l, "a", lp), lp + ".a"), number(field(l, "b", lp), lp + ".b")};
     const Rational d = number(field(l, "d", lp), lp + ".d");
     if (d.denominator() != 1 || d < 0)
@@ -194,7 +180,7 @@ Certificate certificate_from_json(const Json& j) {
     c.d = d.numerator();
     const Json& s = j["contact_set"];
     const std::string sp = path + ".contact_set";
-    check_keys(s, sp, {"center", "directions", "radius2", "decimal"});
+    only_keys(s, sp, {"center", "directions", "radius2", "decimal"});
     c.centre = quad_vec(field(s, "center", sp), sp + ".center");
     const Json& dirs = field(s, "directions", sp);
     if (!dirs.is_array()) throw InputError(sp + ".directions: expected an array");
@@ -204,16 +190,31 @@ Certificate certificate_from_json(const Json& j) {
     return c;
   }
   if (j.contains("contact")) {
-    check_keys(j, path, {"lambda", "contact"});
+    only_keys(j, path, {"lambda", "contact"});
     c.kind = Certificate::Kind::Tangent;
     c.lambda = number(field(j, "lambda", path), path + ".lambda");
     c.contact = vec(j["contact"], path + ".contact");
     return c;
   }
-  check_keys(j, path, {"lambda"});
+  only_keys(j, path, {"lambda"});
   c.kind = Certificate::Kind::Definite;
   c.lambda = number(field(j, "lambda", path), path + ".lambda");
   return c;
+}
+
+}  // namespace relpos::io::detail
+
+namespace relpos {
+
+std::string certificate_json_text(const Certificate& c, int digits) {
+  std::string text;
+  io::detail::JsonWriter w(text);
+  io::detail::append_certificate(c, digits, w);
+  return text;
+}
+
+Certificate certificate_from_json(std::string_view text) {
+  return io::detail::certificate_from_tree(io::detail::parse_json_exact(text));
 }
 
 }  // namespace relpos

@@ -1,20 +1,19 @@
 // The common quadric forms read straight from JSON text into double enclosures: no DOM,
-// no rationals, no heap traffic per number. Used by the batch reader (batch.cpp) before the general
-// reader of io.cpp.
+// no rationals, no heap traffic per number. Used by the batch line's reader (batch.cpp) before the
+// general reader (quadric_json.hpp).
 //
 // A value is read here only when it is one of the forms below, its JSON is plainly valid (keys
 // without escapes, no duplicate keys, no other keys) and each number is short (at most 19
 // significant digits and a decimal exponent within +-30 after trailing zeros are removed; with
 // --numbers double, a double within 2^+-100). Anything else returns nullopt and the caller takes the
 // general reader, which decides every case and words every error: this reader never answers
-// differently and never refuses. The exact matrix is built only when an exact stage or the evidence
-// asks for it (QuadricMatrix's ExactSource), from the exact values of the numbers read, by the
-// constructor the general reader calls for the form (or, for a matrix, with the sign normalization
-// from_matrix applies): the rationals and the evidence are those of the general path
-// (tests/test_fast_reader.cpp compares them). For decimal numbers the same source also writes the
-// evidence's integer form and its scale's split (forms::integer_form_of) from the exponents and
-// mantissas, without the rationals, and gives the numbers of a sphere or a standard paraboloid
-// with its vertex on the axis to the evidence's closed forms (ExactSource::decimal_shape).
+// differently and never refuses. The numbers read and the form are kept as the quadric's recipe
+// (algebra/decimal_recipe.hpp), from which the exact matrix is built only when an exact stage or the
+// evidence asks for it, by the constructor the general reader calls for the form (or, for a matrix,
+// with the sign normalization from_matrix applies): the rationals and the evidence are those of the
+// general path (tests/test_fast_reader.cpp compares them). For decimal numbers the evidence's
+// integer form, its scale's split and the closed forms of a sphere and a standard paraboloid with
+// its vertex on the axis are written from the same recipe, without the rationals.
 //
 // Forms: a 4x4 array or {"matrix": 4x4} (ellipsoid or paraboloid; an exactly symmetric matrix whose
 // shape the interval filter certifies, and for a paraboloid det Q3 = 0 by exactly-zero entries),
@@ -25,7 +24,7 @@
 // kMaxNormalizedBits. A number is m 10^e with m < 10^19 and |e| <= 30, so its numerator and
 // denominator have at most 64 + 100 bits; the entries of these forms are polynomials of degree at
 // most 4 in at most 5 such numbers over powers of ten and the squares of a and b, whose primitive
-// integer forms stay below 1500 bits (tests/test_io.cpp builds the extreme case and checks it).
+// integer forms stay below 1500 bits (tests/test_fast_reader.cpp builds the extreme case and checks it).
 #pragma once
 
 #include <optional>

@@ -8,8 +8,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <nlohmann/json.hpp>
 #include <string>
+
+#include "io/json_tree.hpp"
 
 namespace relpos::io::detail {
 
@@ -29,7 +30,7 @@ void JsonWriter::string(std::string_view s) {
   for (const char ch : s) {
     const auto c = static_cast<unsigned char>(ch);
     if (c < 0x20 || c >= 0x80 || c == '"' || c == '\\') {  // escapes or UTF-8: the general writer
-      out_ += dump_json(nlohmann::ordered_json(std::string(s)));
+      out_ += dump_json(Json(std::string(s)));
       return;
     }
   }

@@ -1,16 +1,13 @@
-// Private JSON writing of the reports (io.cpp, batch.cpp, certificate_json.cpp): the one writer of
-// a classification's and a certificate's JSON text. The text is appended directly instead of
-// building an nlohmann tree and dumping it: the full report of a batch line holds a few dozen
-// exact numbers, and the tree cost more than computing them (doc/performance.md). The trees of
-// the public API are parsed back from this text, so there is one rendering.
+// Private JSON writing of the answers (answer_json.cpp, certificate_json.cpp): JSON values appended
+// to a string, the punctuation of objects and arrays left to the caller. The text is appended
+// directly instead of building an nlohmann tree and dumping it: the full report of a batch line
+// holds a few dozen exact numbers, and the tree cost more than computing them (doc/performance.md).
 #pragma once
 
 #include <optional>
 #include <string>
 #include <string_view>
 
-#include "relpos/classify.hpp"
-#include "relpos/io.hpp"
 #include "relpos/numbers.hpp"
 
 namespace relpos::io::detail {
@@ -21,12 +18,13 @@ class JsonWriter {
   explicit JsonWriter(std::string& out) : out_(out) {}
 
   void raw(std::string_view text) { out_.append(text); }
+  void raw(char c) { out_ += c; }
   void key(std::string_view name);      ///< "name": (name is plain ASCII)
   void member(std::string_view name) {  ///< ,"name": (a member after the first)
     out_ += ',';
     key(name);
   }
-  void string(std::string_view s);  ///< escaped as dump_json escapes it
+  void string(std::string_view s);  ///< escaped as dump_json (json_tree.hpp) escapes it
   void integer(long n);
   void boolean(bool b) { out_ += b ? "true" : "false"; }
   void null() { out_ += "null"; }
@@ -44,21 +42,5 @@ class JsonWriter {
  private:
   std::string& out_;
 };
-
-/// "position", "small" and "contact": the first members of the full and the minimal report, each
-/// preceded by a comma.
-void append_verdict_head(const Verdict& v, JsonWriter& w);
-
-/// ,"rule":"<describe(r)>" and ,"stage":"<to_string(st)>", the reports' members for a verdict's rule
-/// and stage (each text made once).
-const std::string& rule_member(Rule r);
-const std::string& stage_member(Stage st);
-
-/// The members of the classification report, each preceded by a comma (the caller has written the
-/// opening brace and the id), and the closing brace (classification_to_json describes them).
-void append_classification(const Classification& c, const RenderOptions& options, JsonWriter& w);
-
-/// The certificate's JSON value (certificate_to_json describes it).
-void append_certificate(const Certificate& c, int digits, JsonWriter& w);
 
 }  // namespace relpos::io::detail

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace relpos::motion_detail {
+namespace relpos::detail {
 namespace {
 
 [[noreturn]] void impossible(const std::string& what) {
@@ -102,6 +102,121 @@ struct Root {
 
 int size_of_minor(std::size_t index) { return index < 4 ? 1 : (index < 10 ? 2 : 3); }
 
+/// j = 1: one double root l* = u/v = -S1_0/S1_1; f = (l - l*)^2 g, g = f4 l^2 + g1 l + g0 with
+/// g1 = f3 + 2 f4 l* = w/v and g0 = f0 / l*^2: the roots of g are (-w u +- sqrt(dg)) / (2 f4 u v),
+/// dg = w^2 u^2 - 4 f4 f0 v^4 = Disc(g) u^2 v^2. Returns the structure's name.
+std::string one_double_root(const InstantPencil& ip, Signs& sg, std::vector<Root>& roots) {
+  const SignAt& at = sg.at;
+  const PolyZ &f0 = ip.f[0], &f3 = ip.f[3], &f4 = ip.f[4];
+  const PolyZ u = -ip.g1[1], v = ip.g1[0];
+  if (at(u) == 0) impossible("double root at l = 0");
+  roots.push_back({sg.make(u, zero(), v), 2});
+  const PolyZ w = v * f3 + constant(2) * f4 * u;
+  const PolyZ dg = w * w * u * u - constant(4) * f4 * f0 * v * v * v * v;
+  const int sdg = at(dg);
+  if (sdg == 0) impossible("j = 1 but the cofactor has a double root");
+  if (sdg < 0) return "one double root and a non-real pair";
+  sg.D = dg;
+  const PolyZ a = -w * u, c = constant(2) * f4 * u * v;
+  roots.push_back({sg.make(a, constant(1), c), 1});
+  roots.push_back({sg.make(a, constant(-1), c), 1});
+  return "one double root and two simple real roots";
+}
+
+/// j = 2: gcd(f, f') = A l^2 + B l + C at t*: a triple root and a simple one, or two double roots.
+std::string quadratic_gcd(const InstantPencil& ip, Signs& sg, std::vector<Root>& roots) {
+  const PolyZ &f3 = ip.f[3], &f4 = ip.f[4];
+  const PolyZ &A = ip.g2[0], &B = ip.g2[1], &C = ip.g2[2];
+  const PolyZ d = B * B - constant(4) * A * C;
+  const int sd = sg.at(d);
+  if (sd < 0) impossible("f is the square of a quadratic without real roots");  // f has real roots
+  if (sd == 0) {
+    // Triple root l* = -B / (2A); f = f4 (l - l*)^3 (l - mu), mu = -f3/f4 - 3 l*.
+    const PolyZ u = -B, v = constant(2) * A;
+    roots.push_back({sg.make(u, zero(), v), 3});
+    roots.push_back({sg.make(-f3 * v - constant(3) * f4 * u, zero(), f4 * v), 1});
+    return "a triple root and a simple root";
+  }
+  sg.D = d;  // two real double roots (-B +- sqrt d) / (2A)
+  roots.push_back({sg.make(-B, constant(1), constant(2) * A), 2});
+  roots.push_back({sg.make(-B, constant(-1), constant(2) * A), 2});
+  return "two double roots";
+}
+
+/// The distinct real roots of f at t* with their multiplicities, from j = deg gcd(f, f') at t*: the
+/// first non-vanishing principal subresultant coefficient (they specialise because f4 = det P is a
+/// non-zero constant). Returns j; `structure` names what f has.
+int roots_at_instant(const InstantPencil& ip, Signs& sg, std::vector<Root>& roots, std::string& structure) {
+  if (sg.at(ip.g1[0]) != 0) {
+    structure = one_double_root(ip, sg, roots);
+    return 1;
+  }
+  if (sg.at(ip.g2[0]) != 0) {
+    structure = quadratic_gcd(ip, sg, roots);
+    return 2;
+  }
+  // gcd(f, f') = f': f = f4 (l - l*)^4, l* = -f3 / (4 f4)
+  roots.push_back({sg.make(-ip.f[3], zero(), constant(4) * ip.f[4]), 4});
+  structure = "a quadruple root";
+  return 3;
+}
+
+/// The roots in increasing order (at most four, all distinct and non-zero: f(0) = det E < 0).
+void sort_roots(const Signs& sg, std::vector<Root>& roots) {
+  for (const Root& r : roots)
+    if (sg.of(r.x) == 0) impossible("a root at l = 0 (f(0) = det E < 0)");
+  for (std::size_t i = 1; i < roots.size(); ++i)
+    for (std::size_t k = i; k > 0; --k) {
+      const int c = sg.compare(roots[k - 1].x, roots[k].x);
+      if (c == 0) impossible("two equal roots listed as distinct");
+      if (c < 0) break;
+      std::swap(roots[k - 1], roots[k]);
+    }
+}
+
+/// E or I: l P + E(t*) positive definite at the midpoint of two consecutive roots, tried only where
+/// f = det M > 0 (f has the sign of f4 above the largest root and changes sign at each root of odd
+/// multiplicity). False when no such midpoint is definite.
+bool definite_between(const InstantPencil& ip, const Signs& sg, const std::vector<Root>& roots, const std::string& head,
+                      InstantDecision& out) {
+  std::vector<int> sign_above(roots.size());
+  int s = sg.at(ip.f[4]);
+  for (std::size_t i = roots.size(); i-- > 0;) {
+    sign_above[i] = s;
+    if (roots[i].multiplicity % 2 == 1) s = -s;
+  }
+  for (std::size_t i = 0; i + 1 < roots.size(); ++i) {
+    if (sign_above[i] <= 0) continue;
+    const Number mid = sg.midpoint(roots[i].x, roots[i + 1].x);
+    bool pd = true;
+    for (std::size_t k = 0; k < 3 && pd; ++k) pd = sg.of_at(ip.minors[ip.leading[k]], static_cast<int>(k + 1), mid) > 0;
+    if (!pd) continue;
+    const int side = sg.of(mid);
+    out.position = side > 0 ? Position::E : Position::I;
+    out.how = head + "l P + E(t*) is positive definite between two consecutive " +
+              (side > 0 ? "positive" : "negative") + " roots";
+    return true;
+  }
+  return false;
+}
+
+/// TE or TI: with no definite l, the semidefinite set is at most one point, a root of f. False when
+/// l P + E(t*) is semidefinite at none.
+bool semidefinite_at(const InstantPencil& ip, const Signs& sg, const std::vector<Root>& roots, const std::string& head,
+                     InstantDecision& out) {
+  for (const Root& r : roots) {
+    bool psd = true;
+    for (std::size_t k = 0; k < ip.minors.size() && psd; ++k) psd = sg.of_at(ip.minors[k], size_of_minor(k), r.x) >= 0;
+    if (!psd) continue;
+    const int side = sg.of(r.x);
+    out.position = side > 0 ? Position::TE : Position::TI;
+    out.how = head + "l P + E(t*) is nowhere definite and positive semidefinite at a " +
+              (side > 0 ? "positive" : "negative") + " root of multiplicity " + std::to_string(r.multiplicity);
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 InstantPencil::InstantPencil(const forms::MatrixOf<PolyZ>& p, const forms::MatrixOf<PolyZ>& e,
@@ -121,103 +236,15 @@ std::optional<InstantDecision> decide_at_instant(const InstantPencil& ip, const 
   if (!known_multiple && !CGAL::is_zero(ip.disc) && at(ip.disc) != 0) return std::nullopt;
   InstantDecision out;
   Signs sg{at, zero()};
-  const PolyZ &f0 = ip.f[0], &f3 = ip.f[3], &f4 = ip.f[4];
   std::vector<Root> roots;
   std::string structure;
-  // j = deg gcd(f, f') at t*: the first non-vanishing principal subresultant coefficient (they
-  // specialise because f4 = det P is a non-zero constant).
-  if (at(ip.g1[0]) != 0) {
-    // One double root l* = u/v = -S1_0/S1_1; f = (l - l*)^2 g, g = f4 l^2 + g1 l + g0 with
-    // g1 = f3 + 2 f4 l* = w/v and g0 = f0 / l*^2: the roots of g are (-w u +- sqrt(dg)) / (2 f4 u v),
-    // dg = w^2 u^2 - 4 f4 f0 v^4 = Disc(g) u^2 v^2.
-    out.j = 1;
-    const PolyZ u = -ip.g1[1], v = ip.g1[0];
-    if (at(u) == 0) impossible("double root at l = 0");
-    roots.push_back({sg.make(u, zero(), v), 2});
-    const PolyZ w = v * f3 + constant(2) * f4 * u;
-    const PolyZ dg = w * w * u * u - constant(4) * f4 * f0 * v * v * v * v;
-    const int sdg = at(dg);
-    if (sdg == 0) impossible("j = 1 but the cofactor has a double root");
-    if (sdg > 0) {
-      sg.D = dg;
-      const PolyZ a = -w * u, c = constant(2) * f4 * u * v;
-      roots.push_back({sg.make(a, constant(1), c), 1});
-      roots.push_back({sg.make(a, constant(-1), c), 1});
-      structure = "one double root and two simple real roots";
-    } else {
-      structure = "one double root and a non-real pair";
-    }
-  } else if (at(ip.g2[0]) != 0) {
-    out.j = 2;
-    const PolyZ &A = ip.g2[0], &B = ip.g2[1], &C = ip.g2[2];  // gcd(f, f') = A l^2 + B l + C at t*
-    const PolyZ d = B * B - constant(4) * A * C;
-    const int sd = at(d);
-    if (sd < 0) impossible("f is the square of a quadratic without real roots");  // f has real roots
-    if (sd == 0) {
-      // Triple root l* = -B / (2A); f = f4 (l - l*)^3 (l - mu), mu = -f3/f4 - 3 l*.
-      const PolyZ u = -B, v = constant(2) * A;
-      roots.push_back({sg.make(u, zero(), v), 3});
-      roots.push_back({sg.make(-f3 * v - constant(3) * f4 * u, zero(), f4 * v), 1});
-      structure = "a triple root and a simple root";
-    } else {
-      sg.D = d;  // two real double roots (-B +- sqrt d) / (2A)
-      roots.push_back({sg.make(-B, constant(1), constant(2) * A), 2});
-      roots.push_back({sg.make(-B, constant(-1), constant(2) * A), 2});
-      structure = "two double roots";
-    }
-  } else {
-    out.j = 3;  // gcd(f, f') = f': f = f4 (l - l*)^4, l* = -f3 / (4 f4)
-    roots.push_back({sg.make(-f3, zero(), constant(4) * f4), 4});
-    structure = "a quadruple root";
-  }
-  for (const Root& r : roots)
-    if (sg.of(r.x) == 0) impossible("a root at l = 0 (f(0) = det E < 0)");
-  // Increasing order (at most four roots, all distinct).
-  for (std::size_t i = 1; i < roots.size(); ++i)
-    for (std::size_t k = i; k > 0; --k) {
-      const int c = sg.compare(roots[k - 1].x, roots[k].x);
-      if (c == 0) impossible("two equal roots listed as distinct");
-      if (c < 0) break;
-      std::swap(roots[k - 1], roots[k]);
-    }
+  out.j = roots_at_instant(ip, sg, roots, structure);
+  sort_roots(sg, roots);
   const std::string head = "Disc f = 0 at t* (" + structure + " of f, j = " + std::to_string(out.j) + "): ";
-  // Positive definiteness at the midpoint of consecutive roots, only where f = det M > 0: f has the
-  // sign of f4 above the largest root and changes sign at each root of odd multiplicity.
-  const int s4 = at(f4);
-  std::vector<int> sign_above(roots.size());
-  {
-    int s = s4;
-    for (std::size_t i = roots.size(); i-- > 0;) {
-      sign_above[i] = s;
-      if (roots[i].multiplicity % 2 == 1) s = -s;
-    }
-  }
-  for (std::size_t i = 0; i + 1 < roots.size(); ++i) {
-    if (sign_above[i] <= 0) continue;
-    const Number mid = sg.midpoint(roots[i].x, roots[i + 1].x);
-    bool pd = true;
-    for (std::size_t k = 0; k < 3 && pd; ++k) pd = sg.of_at(ip.minors[ip.leading[k]], static_cast<int>(k + 1), mid) > 0;
-    if (!pd) continue;
-    const int side = sg.of(mid);
-    out.position = side > 0 ? Position::E : Position::I;
-    out.how = head + "l P + E(t*) is positive definite between two consecutive " +
-              (side > 0 ? "positive" : "negative") + " roots";
-    return out;
-  }
-  // No definite l: the semidefinite set is at most one point, a root of f.
-  for (const Root& r : roots) {
-    bool psd = true;
-    for (std::size_t k = 0; k < ip.minors.size() && psd; ++k) psd = sg.of_at(ip.minors[k], size_of_minor(k), r.x) >= 0;
-    if (!psd) continue;
-    const int side = sg.of(r.x);
-    out.position = side > 0 ? Position::TE : Position::TI;
-    out.how = head + "l P + E(t*) is nowhere definite and positive semidefinite at a " +
-              (side > 0 ? "positive" : "negative") + " root of multiplicity " + std::to_string(r.multiplicity);
-    return out;
-  }
+  if (definite_between(ip, sg, roots, head, out) || semidefinite_at(ip, sg, roots, head, out)) return out;
   out.position = Position::C;
   out.how = head + "l P + E(t*) is positive semidefinite for no l";
   return out;
 }
 
-}  // namespace relpos::motion_detail
+}  // namespace relpos::detail

@@ -27,7 +27,7 @@
 #include "relpos/classify.hpp"
 #include "relpos/numbers.hpp"
 
-namespace relpos::motion_detail {
+namespace relpos::detail {
 
 using PolyZ = CGAL::Polynomial<Integer>;          // polynomials in t
 using PencilZ = CGAL::Polynomial<PolyZ>;          // polynomials in l over Z[t]
@@ -60,4 +60,4 @@ struct InstantDecision {
 /// std::logic_error on a root configuration the theory excludes.
 std::optional<InstantDecision> decide_at_instant(const InstantPencil& pencil, const SignAt& sign, bool known_multiple);
 
-}  // namespace relpos::motion_detail
+}  // namespace relpos::detail

@@ -9,6 +9,7 @@
 #include <limits>
 #include <thread>
 
+#include "algebra/filtered.hpp"
 #include "algebra/pencil.hpp"
 #include "algebra/smallness.hpp"
 #include "base/worker_pool.hpp"
@@ -327,15 +328,15 @@ Scene::Scene(const Paraboloid& p) : p_(p), prepared_(std::make_shared<const Prep
 // The filter's error bounds, like the core's static filter, assume rounding to nearest. A caller may
 // be inside a CGAL interval block (rounding upward): then switch to nearest for the call.
 std::optional<SceneVerdict> Scene::early_out(const Ellipsoid& e) const {
-  if (CGAL::FPU_get_cw() == CGAL_FE_TONEAREST) return verdict_of(early_out_filter(*prepared_, e));
-  CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-  return verdict_of(early_out_filter(*prepared_, e));
+  return detail::approximate<detail::Rounding::ToNearest>([&] { return verdict_of(early_out_filter(*prepared_, e)); });
 }
 
+// The early-out, else decide_position; both in round to nearest (decide_position's double stages
+// too), whatever the caller's mode.
 SceneVerdict Scene::classify(const Ellipsoid& e) const {
   CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-  if (auto v = verdict_of(early_out_filter(*prepared_, e))) return *v;
-  return scene_verdict(decide_position(e, p_));
+  return detail::filtered<detail::Rounding::ToNearest>([&] { return verdict_of(early_out_filter(*prepared_, e)); },
+                                                       [&] { return scene_verdict(decide_position(e, p_)); });
 }
 
 SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const SceneOptions& options) const {

@@ -91,6 +91,50 @@ Vector3 centre(Random& g, const Container& k, bool inside, double zlo) {
 /// Small radius l k / 512, k in [8, 64]: r in [l/64, l/8], so 2r <= a^2 (small).
 Rational small_radius(Random& g, const Container& k) { return k.rl * frac(g.integer(8, 64), 512); }
 
+/// A sphere resting against the wall (inside or outside) at a gap r 2^-j, j in [1, 12] (w < 0.45), or
+/// crossing it (centre within r of the wall): the centre is rounded to the grid, so the gap is only
+/// approximate -- the exact answer comes from the classifier.
+DemoBody at_the_wall(Random& g, const Container& k, double w) {
+  const double x0 = g.uniform(-1, 1) * std::sqrt(k.a2 * k.h) * 0.9;
+  const double y0 = g.uniform(-1, 1) * std::sqrt(k.b2 * k.h) * 0.9;
+  const double z0 = x0 * x0 / k.a2 + y0 * y0 / k.b2;
+  double nx = 2 * x0 / k.a2, ny = 2 * y0 / k.b2, nz = -1;  // outward normal (grad F)
+  const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+  nx /= len, ny /= len, nz /= len;
+  const Rational r = small_radius(g, k);
+  const double rd = CGAL::to_double(r);
+  double dist;
+  if (w < 0.45)
+    dist = (g.integer(0, 1) ? 1 : -1) * rd * (1 + std::ldexp(1.0, -static_cast<int>(g.integer(1, 12))));
+  else
+    dist = g.uniform(-rd, rd);
+  return sphere({on_grid(x0 + dist * nx, k.grid), on_grid(y0 + dist * ny, k.grid), on_grid(z0 + dist * nz, k.grid)}, r);
+}
+
+/// An exact tangency (`exact`), or a near-tangency at relative gap +-2^-j, j in [10, 40], at a point
+/// of the surface whose normal has rational length (construct.hpp, tangent_point): s, t rational,
+/// D = 1 - s^2 - t^2, (u, v) = (2s, 2t)/D, x0 = (u a^2/2, v b^2/2, ...), n = (u, v, -1),
+/// |n| = |1 + s^2 + t^2| / |D|. Exact rationals, not doubles in general.
+DemoBody near_tangent(Random& g, const Container& k, const Rational& a, const Rational& b, bool exact) {
+  Rational s, t;
+  do {
+    s = frac(g.integer(-12, 12), 8);
+    t = frac(g.integer(-12, 12), 8);
+  } while (s * s + t * t == 1);
+  const Rational dd = 1 - s * s - t * t, uu = 2 * s / dd, vv = 2 * t / dd;
+  const Rational mm = CGAL::abs((1 + s * s + t * t) / dd);
+  const Vector3 x0{uu * a * a / 2, vv * b * b / 2, uu * uu * a * a / 4 + vv * vv * b * b / 4};
+  const Vector3 nn{uu, vv, Rational(-1)};
+  const Rational r = small_radius(g, k);
+  Rational dist = g.integer(0, 1) ? r : -r;  // > 0: outside (TE), < 0: inside (TI)
+  if (!exact) {
+    Rational rel = exact_rational(std::ldexp(1.0, -static_cast<int>(g.integer(10, 40))));
+    if (g.integer(0, 1)) rel = -rel;
+    dist = dist * (1 + rel);
+  }
+  return sphere({x0[0] + dist * nn[0] / mm, x0[1] + dist * nn[1] / mm, x0[2] + dist * nn[2] / mm}, r);
+}
+
 }  // namespace
 
 struct DemoSceneGenerator::State {
@@ -117,7 +161,6 @@ DemoSceneGenerator::~DemoSceneGenerator() = default;
 DemoBody DemoSceneGenerator::next() {
   Random& g = s_->g;
   const Container& k = s_->k;
-  const Rational &a = s_->a, &b = s_->b;
   // The mix (fractions of all bodies): exact tangencies 10^-4, not small 0.5 %, at the wall
   // `wall` (45 % resting against it, 45 % crossing it, 10 % rational near-tangencies), spilled
   // outside 8 %, and the rest bulk in the cup (80 % spheres, 20 % ellipsoids).
@@ -131,46 +174,9 @@ DemoBody DemoSceneGenerator::next() {
     const Vector3 c = centre(g, k, false, -k.l);
     return g.integer(0, 9) < 7 ? sphere(c, small_radius(g, k)) : ellipsoid(g, c, k);
   } else if (u >= t1 && w < 0.9) {
-    // Resting against the wall (inside or outside) at a gap r 2^-j, j in [1, 12], or crossing
-    // it (centre within r of the wall): the centre is rounded to the grid, so the gap is only
-    // approximate -- the exact answer comes from the classifier.
-    const double x0 = g.uniform(-1, 1) * std::sqrt(k.a2 * k.h) * 0.9;
-    const double y0 = g.uniform(-1, 1) * std::sqrt(k.b2 * k.h) * 0.9;
-    const double z0 = x0 * x0 / k.a2 + y0 * y0 / k.b2;
-    double nx = 2 * x0 / k.a2, ny = 2 * y0 / k.b2, nz = -1;  // outward normal (grad F)
-    const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-    nx /= len, ny /= len, nz /= len;
-    const Rational r = small_radius(g, k);
-    const double rd = CGAL::to_double(r);
-    double dist;
-    if (w < 0.45)
-      dist = (g.integer(0, 1) ? 1 : -1) * rd * (1 + std::ldexp(1.0, -static_cast<int>(g.integer(1, 12))));
-    else
-      dist = g.uniform(-rd, rd);
-    return sphere({on_grid(x0 + dist * nx, k.grid), on_grid(y0 + dist * ny, k.grid), on_grid(z0 + dist * nz, k.grid)},
-                  r);
+    return at_the_wall(g, k, w);
   } else if (u < t0 || u >= t1) {
-    // Exact tangency (u < t0), or near-tangency at relative gap +-2^-j, j in [10, 40], at a
-    // point of the surface whose normal has rational length (construct.hpp, tangent_point):
-    // s, t rational, D = 1 - s^2 - t^2, (u, v) = (2s, 2t)/D, x0 = (u a^2/2, v b^2/2, ...),
-    // n = (u, v, -1), |n| = |1 + s^2 + t^2| / |D|. Exact rationals, not doubles in general.
-    Rational s, t;
-    do {
-      s = frac(g.integer(-12, 12), 8);
-      t = frac(g.integer(-12, 12), 8);
-    } while (s * s + t * t == 1);
-    const Rational dd = 1 - s * s - t * t, uu = 2 * s / dd, vv = 2 * t / dd;
-    const Rational mm = CGAL::abs((1 + s * s + t * t) / dd);
-    const Vector3 x0{uu * a * a / 2, vv * b * b / 2, uu * uu * a * a / 4 + vv * vv * b * b / 4};
-    const Vector3 nn{uu, vv, Rational(-1)};
-    const Rational r = small_radius(g, k);
-    Rational dist = g.integer(0, 1) ? r : -r;  // > 0: outside (TE), < 0: inside (TI)
-    if (u >= t0) {
-      Rational rel = exact_rational(std::ldexp(1.0, -static_cast<int>(g.integer(10, 40))));
-      if (g.integer(0, 1)) rel = -rel;
-      dist = dist * (1 + rel);
-    }
-    return sphere({x0[0] + dist * nn[0] / mm, x0[1] + dist * nn[1] / mm, x0[2] + dist * nn[2] / mm}, r);
+    return near_tangent(g, k, s_->a, s_->b, u < t0);
   } else {  // t0 <= u < t1
     // Not small: radius in [l, 2l] (rho >= 4), anywhere around the container.
     const Rational r = k.rl * frac(g.integer(64, 128), 64);

@@ -4,7 +4,8 @@
 # with librelpos.a and with librelpos.so, configured without a build type and without a warning, and
 # built with `g++ $(pkg-config --cflags --libs relpos)`; each must print what
 # examples/cpp/classify_text.cpp documents. Every installed header must compile on its own with the
-# pkg-config flags.
+# pkg-config flags, and none may reach a header of nlohmann_json (a build-only dependency: the package
+# names it nowhere, and a consumer needs it neither to compile nor to link).
 #   check_package.sh BUILD_DIR CONSUMER_SOURCE_DIR [CMAKE [SHARED]]   (SHARED: ON unless RELPOS_BUILD_SHARED=OFF)
 set -euo pipefail
 build=$1
@@ -63,10 +64,19 @@ g++ -std=c++17 -O1 "$example" -o "$tmp/app-pc" $flags -Wl,-rpath,"$libdir" 2>"$t
 bash "$check_output" "$tmp/app-pc" "$example" >/dev/null
 echo "pkg-config consumer: output as documented ($flags)"
 
-# 3. Every installed public header compiles on its own, with only the pkg-config flags.
-for h in "$prefix"/include/relpos/*.hpp; do
-  echo "#include <relpos/$(basename "$h")>" >"$tmp/one.cpp"
+# 3. Every installed public header compiles on its own, with only the pkg-config flags, and includes
+# no header of nlohmann_json, directly or through another (g++ -M lists every header it reads).
+for h in "$prefix"/include/relpos/*.hpp "$prefix"/include/relpos/internal/*.hpp; do
+  name=${h#"$prefix"/include/}
+  echo "#include <$name>" >"$tmp/one.cpp"
   g++ -std=c++17 -fsyntax-only -Wall -Wextra -Werror $(pkg-config --cflags relpos) "$tmp/one.cpp" 2>"$tmp/one.log" ||
-    { cat "$tmp/one.log"; echo "relpos/$(basename "$h") does not compile on its own"; exit 1; }
+    { cat "$tmp/one.log"; echo "$name does not compile on its own"; exit 1; }
+  if g++ -std=c++17 -M $(pkg-config --cflags relpos) "$tmp/one.cpp" | grep -q nlohmann; then
+    echo "$name reaches a header of nlohmann_json"; exit 1
+  fi
 done
-echo "installed headers compile alone: $(ls "$prefix"/include/relpos/*.hpp | wc -l)"
+echo "installed headers compile alone, none reaches nlohmann_json: $(ls "$prefix"/include/relpos/*.hpp \
+  "$prefix"/include/relpos/internal/*.hpp | wc -l)"
+if grep -rqi nlohmann "$(dirname "$(find "$prefix" -name relposConfig.cmake)")" "$libdir/pkgconfig/relpos.pc"; then
+  echo "the installed package names nlohmann_json"; exit 1
+fi

@@ -15,11 +15,6 @@ using DoubleMatrix4 = std::array<double, 16>;
 class Ellipsoid;
 class Paraboloid;
 
-namespace forms {
-struct IntegerFormOut;
-struct DecimalShape;
-}  // namespace forms
-
 namespace detail {
 
 /// Certified double enclosures lo[i] <= entry i <= hi[i] of a matrix (row-major) whose entries are
@@ -35,41 +30,25 @@ struct EnclosureMatrix4 {
 /// or d is zero or not finite.
 bool normalize_doubles(const DoubleMatrix4& d, DoubleMatrix4& out, int& exponent, bool& plain);
 
-/// Builds the exact matrix of a quadric on first use (for a quadric read from text: the exact
-/// parse of that text, run only when an exact stage or the evidence asks for the rationals).
-class ExactSource {
- public:
-  virtual ~ExactSource() = default;
-  virtual Matrix4 build() const = 0;
-  /// The integer form of build()'s matrix and its scale's split (forms::integer_form_of), written
-  /// without building the matrix when the source can; false (nothing written) when it cannot.
-  virtual bool integer_form(const forms::IntegerFormOut& out) const = 0;
-  /// build()'s entries truncated towards zero (forms::truncated_double of each), written without
-  /// building the matrix when the source can; false (out unspecified) when it cannot.
-  virtual bool truncated_doubles(DoubleMatrix4& out) const {
-    static_cast<void>(out);
-    return false;
-  }
-  /// The numbers of a sphere, or of a standard paraboloid with its vertex on the axis, read from
-  /// decimal text (forms::sphere_standard_evidence); nullptr for any other source.
-  virtual const forms::DecimalShape* decimal_shape() const { return nullptr; }
-};
+/// What a quadric read from text was made of (its form and numbers): defined in src/algebra, opaque
+/// here. The exact matrix is built from it on first use.
+struct DecimalRecipe;
 
 /// The matrix of a validated quadric: exact rationals, and the doubles when every entry is one.
 /// A quadric made from doubles (from_doubles) builds its rationals only on first use by an exact
 /// stage (thread-safe: a quadric shared by several threads materializes once; copies share it);
-/// so does one made from enclosures and an ExactSource.
+/// so does one made from enclosures and a recipe.
 ///
 /// Compact on purpose (168 bytes): the hot loop of decide_position reads only the 16 normalized
 /// doubles at the start of the object, so the doubles are stored once, normalized, with the power
-/// of two that gives them back exactly; enclosures and the exact source of a quadric read from text
-/// live out of line.
+/// of two that gives them back exactly; enclosures and the recipe of a quadric read from text live
+/// out of line.
 class QuadricMatrix {
  public:
   explicit QuadricMatrix(Matrix4 m);
-  /// Entries known by enclosures (not all lo == hi) and built exactly by `source` on first use.
+  /// Entries known by enclosures (not all lo == hi) and built exactly from `recipe` on first use.
   /// The caller proves the shape, the sign normalization and the size limit (within_size_limit()).
-  QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const ExactSource> source);
+  QuadricMatrix(const EnclosureMatrix4& enclosure, std::shared_ptr<const DecimalRecipe> recipe);
   /// From doubles; no heap allocation. Normalized (filter_doubles()) only when they are symmetric and
   /// finite: the shape tests of the callers read them.
   explicit QuadricMatrix(const DoubleMatrix4& d);
@@ -114,10 +93,10 @@ class QuadricMatrix {
   const DoubleMatrix4* filter_doubles() const { return (flags_ & kNormalized) ? &v_ : nullptr; }
   /// Enclosures of the entries when the quadric was made from them (null otherwise).
   const EnclosureMatrix4* enclosure() const { return cold_ ? &cold_->enclosure : nullptr; }
-  /// The exact source of a quadric made from enclosures (null otherwise).
-  const ExactSource* exact_source() const { return cold_ ? cold_->source.get() : nullptr; }
+  /// The recipe of a quadric made from enclosures (null otherwise).
+  const DecimalRecipe* recipe() const { return cold_ ? cold_->recipe.get() : nullptr; }
   /// True when the primitive integer form is known to be within kMaxNormalizedBits without
-  /// building it: doubles, or a source whose reader bounds its numbers.
+  /// building it: doubles, or a recipe whose reader bounds its numbers.
   bool within_size_limit() const { return has_doubles() || cold_ != nullptr; }
 
  private:
@@ -125,7 +104,7 @@ class QuadricMatrix {
   /// What a quadric read from text keeps besides its enclosures' use in the filters.
   struct Cold {
     EnclosureMatrix4 enclosure;
-    std::shared_ptr<const ExactSource> source;
+    std::shared_ptr<const DecimalRecipe> recipe;
   };
   const Matrix4& materialize() const;
   /// kNormalized: the normalized doubles, and the doubles are v_ * 2^exponent_; kDoubles alone: the

@@ -1,0 +1,73 @@
+// The pair's size limit (kMaxNormalizedBits, doc/cli.md, Limits): the bits of a matrix's primitive
+// integer form, bounded first from the lcm of its denominators alone.
+#include <gmp.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "algebra/forms.hpp"
+#include "relpos/error.hpp"
+#include "relpos/quadric.hpp"
+
+namespace relpos {
+namespace {
+
+/// An upper bound on normalized_bits(m) from the lcm of the denominators alone: each entry of the
+/// integer form, num * (l / den), has at most bits(num) + bits(l) - bits(den) + 1 bits.
+std::size_t normalized_bits_bound(const Matrix4& m) {
+  Integer l(1);
+  forms::lcm_of_denominators(m.a.begin(), m.a.end(), l);
+  const std::size_t lb = mpz_sizeinbase(l.mpz(), 2);
+  std::size_t bound = 0;
+  for (const Rational& q : m.a)
+    bound = std::max(bound, mpz_sizeinbase(mpq_numref(q.mpq()), 2) + lb + 1 - mpz_sizeinbase(mpq_denref(q.mpq()), 2));
+  return bound;
+}
+
+}  // namespace
+
+std::size_t normalized_bits(const Matrix4& m) {
+  Integer l(1), g(0);
+  forms::lcm_of_denominators(m.a.begin(), m.a.end(), l);
+  std::array<Integer, 16> z;
+  for (std::size_t i = 0; i < 16; ++i) {
+    forms::scaled_numerator(m.a[i], l, z[i].mpz());
+    mpz_gcd(g.mpz(), g.mpz(), z[i].mpz());
+  }
+  if (g == 0) return 0;
+  std::size_t bits = 0;
+  for (auto& x : z) {
+    if (x == 0) continue;
+    mpz_divexact(x.mpz(), x.mpz(), g.mpz());
+    bits = std::max<std::size_t>(bits, mpz_sizeinbase(x.mpz(), 2));
+  }
+  return bits;
+}
+
+std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
+  return std::max(normalized_bits(e.matrix()), normalized_bits(p.matrix()));
+}
+
+void check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p) {
+  // A matrix of doubles is within the limit whatever its entries: its primitive form has at most
+  // 2098 bits (every double is a multiple of 2^-1074 below 2^1024), so the check costs nothing then and
+  // never builds the exact matrix of a quadric made from doubles.
+  static_assert(kMaxNormalizedBits >= 2098, "every matrix of doubles must pass");
+  // The bound from the lcm alone settles ordinary inputs (decimals with their powers of ten) without
+  // the gcd and the products.
+  auto bits_of = [](const Matrix4& m) {
+    const std::size_t bound = normalized_bits_bound(m);
+    return bound <= kMaxNormalizedBits ? bound : normalized_bits(m);
+  };
+  const std::size_t bits = std::max(storage_of(e).within_size_limit() ? 0 : bits_of(e.matrix()),
+                                    storage_of(p).within_size_limit() ? 0 : bits_of(p.matrix()));
+  if (bits > kMaxNormalizedBits)
+    throw InputError(
+        "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "
+        "form), has " +
+        std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxNormalizedBits) +
+        " bits (kMaxNormalizedBits, doc/cli.md, Limits)");
+}
+
+}  // namespace relpos
