@@ -2,6 +2,7 @@
 // multiple roots are read off the subresultants stage 3 computed; otherwise exact gcd and square-free
 // factorisation, or, for a square-free f, its isolated roots. Multiple roots of a pair that is not
 // small get the exact facts of math.md §8: every pair is settled here.
+#include "algebra/root_facts.hpp"
 #include "algebra/roots.hpp"
 #include "algebra/smallness.hpp"
 #include "decide/climb.hpp"
