@@ -11,6 +11,9 @@
 #                                # decisions (doc/performance.md, "The paper's regime")
 #   benchmarks/run.sh --python [python_bench options]       # the Python package against float code in
 #                                # numpy and in pure Python (doc/python.md, "Measured")
+#   benchmarks/run.sh --lanes [lanes_bench options]         # many pairs at once: decide_positions on 10^6
+#                                # pairs from doubles against the minimal float decision, scalar and in
+#                                # lanes (doc/performance.md, "Many pairs at once")
 #
 # Outputs: benchmarks/results/{results.csv,stages.csv,summary.json,*.png}.
 # Plotting needs matplotlib for /usr/bin/python3 (Debian python3-matplotlib, benchmark-only
@@ -86,6 +89,19 @@ if [ "${1:-}" = "--regime" ]; then
     tee "$OUT/regime_log.txt"
   [ "${PIPESTATUS[0]}" = 0 ] || exit 1
   /usr/bin/python3 "$ROOT/benchmarks/tables.py" --regime "$OUT"
+  exit 0
+fi
+# benchmarks/run.sh --lanes: lanes_bench (10^6 pairs of the ordinary regime, 2 x 10^5 of the user
+# regime, 5 rounds) -> benchmarks/results/lanes.json and lanes_log.txt, and its tables in
+# doc/performance.md rewritten (tables.py --lanes). A few minutes; about 1 GB of memory.
+if [ "${1:-}" = "--lanes" ]; then
+  shift
+  cmake --build "$BUILD" -j2 --target lanes_bench
+  mkdir -p "$OUT"
+  "$BUILD/benchmarks/lanes_bench" --n 1000000 --user-n 200000 --rounds 5 --out "$OUT/lanes.json" "$@" 2>&1 |
+    tee "$OUT/lanes_log.txt"
+  [ "${PIPESTATUS[0]}" = 0 ] || exit 1
+  /usr/bin/python3 "$ROOT/benchmarks/tables.py" --lanes "$OUT"
   exit 0
 fi
 # benchmarks/run.sh --edge: spheres at 2^-k from exact tangencies (a few minutes) ->

@@ -7,6 +7,7 @@
 
     /usr/bin/python3 benchmarks/tables.py --python [RESULTS_DIR]     # doc/python.md "Measured", see below
     /usr/bin/python3 benchmarks/tables.py --regime [RESULTS_DIR]     # "The paper's regime", from regime.json
+    /usr/bin/python3 benchmarks/tables.py --lanes [RESULTS_DIR]      # "Many pairs at once", from lanes.json
 
 --ordinary renders ordinary.json (ordinary_bench) and batch.json (batch_bench.py) and writes them into
 doc/performance.md between the markers ORDINARY_BEGIN and ORDINARY_END (benchmarks/run.sh --ordinary).
@@ -28,7 +29,8 @@ edge = "--edge" in args
 ordinary = "--ordinary" in args
 python = "--python" in args
 regime = "--regime" in args
-args = [a for a in args if a not in ("--edge", "--ordinary", "--python", "--regime")]
+lanes = "--lanes" in args
+args = [a for a in args if a not in ("--edge", "--ordinary", "--python", "--regime", "--lanes")]
 out = args[0] if args else os.path.join(os.path.dirname(__file__), "results")
 
 # The bars of the ordinary-pairs section: time ratio to the minimal float decision at most this, and
@@ -317,6 +319,71 @@ def edge_tables(ed):
     lines += ["", f"{ed[0]['n']} spheres per δ."]
     return "\n".join(lines)
 
+
+# The bar of the many-pairs section: decide_positions on the ordinary regime from doubles, one thread,
+# at most this ratio to the scalar minimal float decision.
+LANES_BAR = 0.6
+LANES_PATHS = {
+    "minimal": "minimal float decision, one pair at a time (no certification)",
+    "minimal_lanes": "the same float decision in lanes ({minimal_copy}; no certification)",
+    "many": "`decide_positions` on the doubles ({many_copy} lanes)",
+    "many_avx2": "`decide_positions` on the doubles, AVX2 copy of the lanes",
+    "onecall": "`decide_position` on the doubles, one pair at a time",
+}
+LANES_SETS = {"ordinary": "ordinary regime", "user": "spheres and standard paraboloids placed as a user's are"}
+
+
+def lanes_section(r):
+    rows = {}
+    for x in r["results"]:
+        rows.setdefault((x["set"], x["path"]), {})[(x["threads"], x["in_cache"])] = x
+    columns = [(1, True), (1, False), (2, True), (2, False)]
+    head = ("| path | 1 thread, in cache | 1 thread, out of cache | 2 threads, in cache | 2 threads, out of cache |\n"
+            "|---|---|---|---|---|")
+    out = [f"Measured {r['date']} on {r['cpu']} (load average {r['load_before']:.1f} before, {r['load_after']:.1f} "
+           f"after), `lanes_bench --n {r['pairs']} --user-n {r['user_pairs']} --block {r['block']} --repeat "
+           f"{r['repeat']} --rounds {r['rounds']}`. Time per pair (for two threads, of both together), and its "
+           "ratio to the scalar minimal float decision of the same set, mode and round (median over rounds "
+           "[range]):"]
+    for name, title in LANES_SETS.items():
+        sset = r["sets"][name]
+        n = r["pairs"] if name == "ordinary" else r["user_pairs"]
+        mix = ", ".join(f"{k} {100 * v / n:.1f} %" for k, v in sorted(sset["mix"].items()))
+        out += ["", f"**{title.capitalize()}** ({grouped(n)} pairs: {mix}; the static stage decides "
+                f"{100 * sset['static'] / n:.1f} % of them, the other pairs are the scalar ladder's; the minimal "
+                f"float decision is wrong on {grouped(sset['minimal_wrong'])} and undecided on "
+                f"{grouped(sset['minimal_undecided'])}):", "", head]
+        for key, label in LANES_PATHS.items():
+            cells = rows.get((name, key))
+            if not cells:
+                continue
+            text = [label.format(many_copy=r["many_copy"], minimal_copy=r["minimal_lanes_copy"])]
+            for col in columns:
+                x = cells[col]
+                m, lo, hi = x["ratio"]
+                t_ = ns(x["ns"])
+                if key == "minimal":
+                    text.append(t_)
+                else:
+                    ratio = times(m)
+                    if key == "many":
+                        ratio = f"**{ratio}**"
+                    text.append(f"{t_}, {ratio} [{lo:.2f}–{hi:.2f}]")
+            out.append("| " + " | ".join(text) + " |")
+    bar = rows[("ordinary", "many")]
+    met = [(cache, bar[(1, cache)]["ratio"][0]) for cache in (True, False)]
+    out += ["", f"The bar: `decide_positions` on the ordinary regime from doubles, one thread, at most "
+            f"{LANES_BAR}× the scalar minimal float decision: " +
+            "; ".join(f"{'in' if cache else 'out of'} cache {m:.2f}× ({'met' if m <= LANES_BAR else 'not met'})"
+                      for cache, m in met) + "."]
+    return "\n".join(out)
+
+
+if lanes:
+    lanes_json = os.path.join(out, "lanes.json")
+    write_generated([("many pairs", "benchmarks/run.sh --lanes", [lanes_json],
+                      lanes_section(json.load(open(lanes_json))))])
+    sys.exit(0)
 
 if edge:
     edge_csv = os.path.join(out, "edge.csv")

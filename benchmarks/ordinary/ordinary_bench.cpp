@@ -63,34 +63,10 @@ struct Raw {
   DoubleMatrix4 p{}, e{};
 };
 
-/// The paper's regime in doubles: the paraboloid z = x^2/a^2 + y^2/b^2 (a, b in [0.5, 2]) and a
-/// sphere (half the pairs) or a randomly rotated ellipsoid with semi-axes in [0.1, 0.45] min(a, b)^2,
-/// centred within 0.5 a, 0.5 b of the axis at height h in [-0.25, 0.45] above the surface. Every entry
-/// is the double the formulas round to.
+/// The paper's regime in doubles (regime::ordinary_pair).
 std::vector<Raw> make_regime(std::mt19937_64& rng, std::size_t n) {
-  std::uniform_real_distribution<double> uab(0.5, 2), usize(0.1, 0.45), uxy(-0.5, 0.5), uh(-2.7, 5.3), u11(-1, 1),
-      u01(0, 1);
   std::vector<Raw> out(n);
-  for (Raw& r : out) {
-    const double a = uab(rng), b = uab(rng), scale = std::min(a, b) * std::min(a, b);
-    regime::set(r.p, 0, 0, 1 / (a * a));
-    regime::set(r.p, 1, 1, 1 / (b * b));
-    regime::set(r.p, 2, 3, -0.5);
-    const double x = uxy(rng) * a, y = uxy(rng) * b;
-    const double size = usize(rng) * scale;  // the largest semi-axis
-    const double c[3] = {x, y, x * x / (a * a) + y * y / (b * b) + uh(rng) * size};
-    double m[3][3] = {};
-    if (rng() % 2) {
-      const double rad = size;
-      for (int i = 0; i < 3; ++i) m[i][i] = 1 / (rad * rad);
-    } else {
-      double q[4];
-      for (double& v : q) v = u11(rng);
-      const double ax[3] = {size, size * (0.3 + 0.7 * u01(rng)), size * (0.3 + 0.7 * u01(rng))};
-      regime::rotated_block(q, ax, m);
-    }
-    regime::ellipsoid_matrix(m, c, r.e);
-  }
+  for (Raw& r : out) regime::ordinary_pair(rng, r.e, r.p);
   return out;
 }
 

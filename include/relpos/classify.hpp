@@ -101,6 +101,40 @@ Verdict decide_position(const Ellipsoid& e, const Paraboloid& p, const SizeLimit
 /// when they or any other sign stay uncertain, it runs the two steps.
 Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
 
+/// What decide_positions() did with one pair.
+enum class PairStatus : unsigned char {
+  Decided,            ///< its position (and stage) are decide_position()'s for the pair
+  InvalidEllipsoid,   ///< decide_position() throws InputError for the pair's ellipsoid
+  InvalidParaboloid,  ///< decide_position() throws InputError for the pair's paraboloid (its ellipsoid is valid)
+  TooLarge,           ///< decide_position() throws InputError: the pair is beyond the size limit
+};
+
+/// decide_position() on many pairs at once (math.md §11, "Many pairs at once"): `e` and `p` hold n
+/// row-major 4x4 matrices of doubles each (16 n doubles apiece, pair i at e + 16 i and p + 16 i: a
+/// C-ordered array of shape (n, 4, 4)), every entry taken exactly. For every pair, status[i] is
+/// Decided and positions[i] (and stages[i], when `stages` is not null) are those of
+/// decide_position(e_i, p_i); or, where decide_position would throw InputError, status[i] says which
+/// matrix is invalid (the ellipsoid's error first, as decide_position; its message is the one
+/// decide_position throws for that pair) and positions[i], stages[i] are not written. Returns the
+/// number of pairs not decided. One thread; pairs are independent, so callers may split the arrays
+/// between threads.
+///
+/// The static filter's discriminant route runs on blocks of pairs, one pair per lane of a vector
+/// (AVX-512 or AVX2 where the CPU has it: the copy is chosen when the library is loaded), together
+/// with the input checks of decide_position on doubles; a pair whose signs it cannot all certify goes
+/// to decide_position itself.
+std::size_t decide_positions(const double* e, const double* p, std::size_t n, Position* positions, PairStatus* status,
+                             Stage* stages = nullptr);
+
+/// The same for quadrics already built: positions[i] = decide_position(e[i], p[i]).position, status[i]
+/// TooLarge where that throws (the size limit, check_normalized_pair_size).
+std::size_t decide_positions(const Ellipsoid* e, const Paraboloid* p, std::size_t n, Position* positions,
+                             PairStatus* status, Stage* stages = nullptr);
+
+/// The same for n ellipsoids against one paraboloid: decide_position(e[i], p).
+std::size_t decide_positions(const Ellipsoid* e, std::size_t n, const Paraboloid& p, Position* positions,
+                             PairStatus* status, Stage* stages = nullptr);
+
 /// The classification table itself (math.md §3 and §6), applied to exact root facts and the
 /// comparison of rho with 1: the one written decision, for callers that obtain the facts another
 /// way (the contact-only discriminant test). Stage is left at its default. nullopt when the facts do

@@ -1,6 +1,7 @@
 // relpos._relpos._decide_positions: the positions of many pairs given as numpy matrices, exactly, on
 // every core (doc/python.md, "decide_positions").
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -323,13 +324,32 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
       workers = static_cast<unsigned>(std::clamp<std::size_t>(workers, 1, chunks));
       std::atomic<std::size_t> next{0};
       std::mutex error_mutex;
+      // float64 matrices read whole (not symmetrize='upper'): decided in lanes across pairs.
+      const bool lanes = !upper && e_side.doubles() && p_side.doubles();
       auto work = [&](bool caller) {
+        std::vector<double> shared_p;  // the one paraboloid's doubles, once for each pair of a chunk
+        if (lanes && shared)
+          for (std::size_t k = 0; k < kChunk; ++k)
+            shared_p.insert(shared_p.end(), p_side.doubles(), p_side.doubles() + 16);
         for (;;) {
           if (caller ? watch.poll() : watch.stopped()) return;
           const std::size_t begin = next.fetch_add(kChunk);
           if (begin >= n) return;
           const std::size_t end = std::min(n, begin + kChunk);
+          // float64 matrices: decided in lanes (decide_positions: decide_position's positions); a pair
+          // it refuses is asked again below, which words its error.
+          std::array<relpos::PairStatus, kChunk> status;
+          status.fill(relpos::PairStatus::InvalidEllipsoid);
+          if (lanes) {
+            std::array<relpos::Position, kChunk> positions;
+            relpos::decide_positions(e_side.doubles() + 16 * begin,
+                                     shared ? shared_p.data() : p_side.doubles() + 16 * begin, end - begin,
+                                     positions.data(), status.data());
+            for (std::size_t i = begin; i < end; ++i)
+              if (status[i - begin] == relpos::PairStatus::Decided) codes[i] = position_code(positions[i - begin]);
+          }
           for (std::size_t i = begin; i < end; ++i) {
+            if (status[i - begin] == relpos::PairStatus::Decided) continue;
             const char* failed = "E";
             if (!shared && e_side.doubles() && p_side.doubles()) {
               // Both float64: the one-call decision (the shapes' last signs read off the pencil). An

@@ -12,6 +12,7 @@
 #include "algebra/forms.hpp"
 #include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
+#include "filters/load_time_copies.hpp"
 
 namespace relpos {
 namespace {
@@ -24,21 +25,12 @@ struct Mat {
   const NT& operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
 };
 
-/// Largest coefficient error the second-stage bounds are derived for (relative to coefficients
-/// scaled into [-1, 1]).
-constexpr double kEps0 = 0x1p-20;
+constexpr double kEps0 = detail::kStaticFilterEps0;
 
-/// Error-bound constants, derived once from the generic formulas themselves.
-struct Bounds {
-  double f[5], s[3];  // absolute errors of f_i, s_i for entries in [-1, 1]
-  // quantity q: error <= a[q] + r[q] * eps   (q: g2[0..2], g1[0..1], g0, vertex, graeffe, 27 Disc(f),
-  // then the gap test's quantities in GapQuantities::flatten order)
-  double a[19], r[19];
-};
+using Bounds = detail::StaticFilterBounds;
 
-/// Index of 27 Disc(f) from the invariants (discriminant_times_27) in Bounds::a and Bounds::r, and of
-/// the first gap quantity.
-constexpr int kDisc27 = 8, kGap = 9, kSecondStage = kGap + anysize::kGapSigns;
+constexpr int kDisc27 = Bounds::kDisc27, kGap = Bounds::kGap, kSecondStage = kGap + anysize::kGapSigns;
+static_assert(kSecondStage == sizeof Bounds::a / sizeof(double), "one bound per second-stage quantity");
 
 void second_stage(const Sfe& in, double out[kSecondStage]) {
   Quartic<Sfe> f;
@@ -77,11 +69,7 @@ void second_stage(const Sfe& in, double out[kSecondStage]) {
   return b;
 }
 
-/// `bound` with the slack of certified() (a double or two lanes, each rounded alike).
-template <class T>
-T with_slack(T bound) {
-  return bound * (1 + 0x1p-40) + 1e-300;
-}
+using detail::with_slack;
 
 /// Sign of v certified by |v| > bound (with slack for the rounding of the bound itself and for
 /// underflow, whose absolute error is below 2^-1074 per operation).
@@ -149,6 +137,8 @@ bool normalize(const DoubleMatrix4& in, Mat<double>& out) {
 DecisionSigns uncertain() { return DecisionSigns{}; }
 
 }  // namespace
+
+const detail::StaticFilterBounds& detail::static_filter_bounds() { return bounds(); }
 
 DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4& ein) {
   Mat<double> p, e;
@@ -401,29 +391,18 @@ struct AlwaysNeeded {
 }  // namespace
 
 // On x86-64 (ELF, GCC) static_filter_discriminant_bits_normalized() is the same template compiled
-// twice, for AVX2 and for the baseline, one of the two chosen once when the library is loaded (an
-// ifunc: the call costs what any call into the library costs). Only the encoding changes -- three
-// operands and unaligned memory operands, about a sixth fewer instructions on decide_position's
-// path -- not the arithmetic: the same IEEE double operations in the same order (AVX2 brings no FMA,
-// and contraction is off), so every value, error bound and sign is the same double on either path;
-// tests run both copies (detail::static_filter_discriminant_bits_copy). Elsewhere (Clang, other
-// platforms) only the baseline copy is built.
-#if defined(__x86_64__) && defined(__ELF__) && defined(__GNUC__) && !defined(__clang__)
-#define RELPOS_AVX2_COPY 1
+// twice, for AVX2 and for the baseline, one of the two chosen once when the library is loaded
+// (load_time_copies.hpp). Only the encoding changes -- three operands and unaligned memory operands,
+// about a sixth fewer instructions on decide_position's path -- so every value, error bound and
+// sign is the same double on either path; tests run both copies
+// (detail::static_filter_discriminant_bits_copy).
+#if RELPOS_AVX2_COPY
 
 namespace {
 
 [[gnu::flatten, gnu::target("avx2")]] DiscriminantSignBits bits_avx2(const DoubleMatrix4& pn, const DoubleMatrix4& en,
                                                                      std::optional<bool>* gap) {
   return discriminant_bits(pn, en, AlwaysNeeded{}, gap);
-}
-
-// Called by the ifunc resolver below, which runs while the loader relocates, before any constructor
-// (hence the explicit init) and before a sanitizer's runtime has mapped its shadow memory: it must not
-// be instrumented (an instrumented load of the CPU model faults there).
-[[gnu::no_sanitize_address, gnu::no_sanitize_undefined, gnu::no_instrument_function]] bool cpu_has_avx2() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2");
 }
 
 }  // namespace
@@ -435,7 +414,7 @@ using BitsFunction = DiscriminantSignBits(const DoubleMatrix4&, const DoubleMatr
 extern "C" {
 [[gnu::no_sanitize_address, gnu::no_sanitize_undefined, gnu::no_instrument_function]] static BitsFunction*
 relpos_resolve_static_filter_bits() {
-  return cpu_has_avx2() ? bits_avx2 : bits_baseline;
+  return detail::cpu_has_avx2() ? bits_avx2 : bits_baseline;
 }
 }
 
@@ -443,7 +422,6 @@ DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatr
                                                                 std::optional<bool>* gap)
     __attribute__((ifunc("relpos_resolve_static_filter_bits")));
 #else
-#define RELPOS_AVX2_COPY 0
 
 [[gnu::flatten]] DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatrix4& pn,
                                                                                  const DoubleMatrix4& en,
@@ -454,7 +432,7 @@ DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatr
 
 bool detail::static_filter_copy_runs(FilterCopy copy) {
 #if RELPOS_AVX2_COPY
-  if (copy == FilterCopy::avx2) return cpu_has_avx2();
+  if (copy == FilterCopy::avx2) return detail::cpu_has_avx2();
 #endif
   return copy == FilterCopy::baseline;
 }

@@ -58,6 +58,19 @@ struct DiscriminantSignBits {
   /// compare_rho_with_one(signs().vertex, signs().graeffe) as -1, 0, 1, or 2 when uncertain (a plain
   /// int: an optional returned through memory stalls the hot path on store forwarding).
   int rho_vs_one() const;
+  /// The bits discriminant_case() and rho_vs_one() read, as indices into their tables
+  /// (detail::discriminant_case_table(), detail::rho_vs_one_table()); of masks of any integer type
+  /// (the many-pairs filter forms them lane by lane).
+  template <class B>
+  static B case_index_of(const B& positive, const B& negative) {
+    return (positive & 0x3f) | (negative & 0x3f) << 6;
+  }
+  template <class B>
+  static B rho_index_of(const B& positive, const B& negative) {
+    return (positive >> kVertex & 3) | (negative >> kVertex & 3) << 2;
+  }
+  unsigned case_index() const { return case_index_of(positive, negative); }
+  unsigned rho_index() const { return rho_index_of(positive, negative); }
 };
 
 namespace detail {
@@ -70,11 +83,11 @@ const std::array<signed char, 16>& rho_vs_one_table();
 // Inline: called for every pair, between the filter's arithmetic and the decision.
 inline DiscriminantCase DiscriminantSignBits::discriminant_case() const {
   static const auto& table = detail::discriminant_case_table();
-  return table[(positive & 0x3f) | (negative & 0x3f) << 6];
+  return table[case_index()];
 }
 inline int DiscriminantSignBits::rho_vs_one() const {
   static const auto& table = detail::rho_vs_one_table();
-  return table[(positive >> kVertex & 3) | (negative >> kVertex & 3) << 2];
+  return table[rho_index()];
 }
 
 /// static_filter_discriminant_signs_normalized() with smallness always computed, as bits.
@@ -82,10 +95,36 @@ DiscriminantSignBits static_filter_discriminant_bits_normalized(const DoubleMatr
                                                                 std::optional<bool>* gap);
 
 namespace detail {
+/// The largest coefficient error (for coefficients scaled into [-1, 1]) the second-stage bounds
+/// below are derived for.
+inline constexpr double kStaticFilterEps0 = 0x1p-20;
+
+/// The static filter's error-bound constants, derived once at start-up from the generic formulas on
+/// Static_filter_error (static_filter.cpp): f[i], s[i] bound the absolute errors of f_i, s_i for
+/// entries in [-1, 1]; quantity q, evaluated on coefficients with error at most eps <=
+/// kStaticFilterEps0, has error at most a[q] + r[q] eps (q: g2[0..2], g1[0..1], g0, vertex, graeffe,
+/// 27 Disc(f), then the gap test's quantities in GapQuantities::flatten order). Shared with the
+/// many-pairs filter (static_filter_lanes.hpp), which evaluates the same formulas in lanes.
+struct StaticFilterBounds {
+  static constexpr int kVertex = 6, kGraeffe = 7, kDisc27 = 8, kGap = 9;
+  double f[5], s[3];
+  double a[19], r[19];
+};
+const StaticFilterBounds& static_filter_bounds();
+
+/// `bound` with the slack of a certified sign: the bound's own rounding and underflow, whose absolute
+/// error is below 2^-1074 per operation (a double or lanes, each rounded alike). A sign is certain
+/// when |value| exceeds it.
+template <class T>
+[[gnu::always_inline]] inline T with_slack(T bound) {
+  return bound * (1 + 0x1p-40) + 1e-300;
+}
+
 /// The copies of static_filter_discriminant_bits_normalized() the build holds: the baseline one
 /// everywhere, an AVX2 one on x86-64 with GCC (the same source and IEEE operations; one of them is
-/// chosen when the library is loaded). For tests, which must run both to see they agree.
-enum class FilterCopy { baseline, avx2 };
+/// chosen when the library is loaded). For tests, which must run both to see they agree. The
+/// many-pairs filter (static_filter_lanes.hpp) has an AVX-512 copy too.
+enum class FilterCopy { baseline, avx2, avx512 };
 /// True when `copy` is built and this CPU can run it.
 bool static_filter_copy_runs(FilterCopy copy);
 /// static_filter_discriminant_bits_normalized() computed by `copy`; requires

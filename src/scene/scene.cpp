@@ -13,6 +13,7 @@
 #include "algebra/pencil.hpp"
 #include "algebra/smallness.hpp"
 #include "base/worker_pool.hpp"
+#include "decide/many_pairs.hpp"
 #include "filters/running_bound.hpp"
 #include "scene/certificates.hpp"
 
@@ -358,6 +359,7 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
     try {
       std::vector<std::size_t> pending;
       pending.reserve(chunk);
+      std::vector<Verdict> decided;
       for (;;) {
         const std::size_t c = next.fetch_add(1, std::memory_order_relaxed);
         if (c >= chunks) break;
@@ -383,7 +385,15 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
         } else {
           for (std::size_t i = lo; i < hi; ++i) pending.push_back(i);
         }
-        for (std::size_t i : pending) out[i] = scene_verdict(decide_position(bodies[i], p_, options.size_limit));
+        if (options.size_limit.max_bits != SizeLimit{}.max_bits) {  // a raised limit: one at a time, with it
+          for (std::size_t i : pending) out[i] = scene_verdict(decide_position(bodies[i], p_, options.size_limit));
+        } else {
+          // The bodies the early-outs leave open, decided in lanes (decide_positions: decide_position's
+          // verdicts).
+          decided.resize(pending.size());
+          detail::decide_positions_at(bodies, pending.data(), pending.size(), p_, decided.data());
+          for (std::size_t k = 0; k < pending.size(); ++k) out[pending[k]] = scene_verdict(decided[k]);
+        }
         for (std::size_t i = lo; i < hi; ++i) local.add(out[i]);
         if (options.progress) options.progress->fetch_add(hi - lo, std::memory_order_relaxed);
       }
