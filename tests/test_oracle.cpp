@@ -10,6 +10,8 @@
 #include <random>
 #include <relpos/classify.hpp>
 #include <relpos/error.hpp>
+#include <relpos/io.hpp>
+#include <relpos/margin.hpp>
 #include <relpos/numbers.hpp>
 #include <string>
 #include <vector>
@@ -115,6 +117,39 @@ TEST_CASE("cases: a seed gives the same lines; a case does not depend on --n or 
   CHECK_THROWS_AS(make_cases(a), InputError);
 }
 
+TEST_CASE("cases carry the certified margins: each verifies and holds the s* the construction knows", "[oracle]") {
+  CaseOptions o;
+  o.families = {"all"};
+  o.n = 2;
+  o.eps = {"1e-4", "0"};
+  o.seed = 5;
+  std::size_t known = 0;
+  for (const Case& c : make_cases(o)) {
+    INFO(c.id);
+    REQUIRE(c.margin);
+    REQUIRE(c.double_margin);
+    const Ellipsoid e = ellipsoid_of(c.construction.exact);
+    const Paraboloid p = paraboloid_of(c.construction.exact);
+    CHECK_FALSE(verify_margin(e, p, *c.margin));
+    const Parameters d = exact_parameters(c.doubles);
+    CHECK_FALSE(verify_margin(ellipsoid_of(d), paraboloid_of(d), *c.double_margin));
+    // s* against the position: > 1 for I and E, = 1 for TI and TE, < 1 for C (math.md §19).
+    const Position pos = c.exact_position;
+    if (pos == Position::C) CHECK(c.margin->hi < 1);
+    if (pos == Position::TI || pos == Position::TE) CHECK((c.margin->lo == 1 && c.margin->hi == 1));
+    if (pos == Position::I || pos == Position::E) CHECK(c.margin->lo > 1);
+    if (c.construction.s_star) {
+      ++known;
+      CHECK(c.margin->lo <= *c.construction.s_star);
+      CHECK(*c.construction.s_star <= c.margin->hi);
+    }
+    // The line carries them as `relpos batch --margin` writes them.
+    const nlohmann::ordered_json line = nlohmann::ordered_json::parse(case_line(c, Form::Exact));
+    CHECK(line["meta"]["margin"].dump() == nlohmann::ordered_json::parse(io::margin_json_text(*c.margin)).dump());
+  }
+  CHECK(known > 0);
+}
+
 TEST_CASE("the float code's matrices of exact dyadic parameters are the exact matrices", "[oracle]") {
   DoubleParameters d{{0.5, -0.25, 1.0}, {0.5, 0.25, 2.0}, {1, 0, 0, 0}, {0.0, 0.0, -1.0}, 2.0, 0.5, {1, 0, 0, 0}};
   const Parameters p = exact_parameters(d);
@@ -137,11 +172,11 @@ TEST_CASE("tolerance: sphere margins with s* in closed form", "[oracle]") {
   // A sphere of radius r centred (0, 0, c) in the cup z = x^2 + y^2 (a = b = 1): with c <= 1/2 the
   // vertex is the nearest point, s* = c / r (rational); above, the nearest points form a circle at
   // distance sqrt(c - 1/4), s*^2 = (c - 1/4) / r^2 (math of doc/oracle.md, "Families").
-  const Margin rational = margin_from_json(margin_json(q(2, 5), q(2, 5), {-2, 5}));  // c = 1/5, r = 1/2
+  const oracle::Margin rational = margin_from_json(margin_json(q(2, 5), q(2, 5), {-2, 5}));  // c = 1/5, r = 1/2
   CHECK(compare_with(q(2, 5), rational) == 0);
   CHECK(compare_with(q(1, 2), rational) == 1);
   // c = 3/4, r = 1: s*^2 = 1/2, s* = 1/sqrt(2) ~ 0.7071 in [7/10, 71/100], root of 2 x^2 - 1.
-  const Margin root = margin_from_json(margin_json(q(7, 10), q(71, 100), {-1, 0, 2}));
+  const oracle::Margin root = margin_from_json(margin_json(q(7, 10), q(71, 100), {-1, 0, 2}));
   for (const auto& [t, sign] : std::vector<std::pair<Rational, int>>{
            {q(7, 10), -1}, {q(707, 1000), -1}, {q(7072, 10000), 1}, {q(71, 100), 1}, {q(1), 1}, {q(1, 2), -1}})
     CHECK(compare_with(t, root) == sign);
@@ -154,14 +189,14 @@ TEST_CASE("tolerance: sphere margins with s* in closed form", "[oracle]") {
   CHECK(!within_tolerance(Position::E, CentreSide::Inside, root, q(1, 2)));
   CHECK(!within_tolerance(Position::TE, CentreSide::Inside, root, q(1, 2)));
   // Outside, s* = 1 + 1/1000: E within any tau, TE from tau = 1/1000 on, C beyond it.
-  const Margin out = margin_from_json(margin_json(q(1001, 1000), q(1001, 1000), {-1001, 1000}));
+  const oracle::Margin out = margin_from_json(margin_json(q(1001, 1000), q(1001, 1000), {-1001, 1000}));
   CHECK(within_tolerance(Position::E, CentreSide::Outside, out, q(0)));
   CHECK(!within_tolerance(Position::TE, CentreSide::Outside, out, q(999, 1000000)));
   CHECK(within_tolerance(Position::TE, CentreSide::Outside, out, q(1, 1000)));
   CHECK(!within_tolerance(Position::C, CentreSide::Outside, out, q(1, 1000)));
   CHECK(within_tolerance(Position::C, CentreSide::Outside, out, q(1001, 1000000)));
   // The centre on the surface: only C.
-  const Margin zero = margin_from_json(margin_json(q(0), q(0), {0, 1}));
+  const oracle::Margin zero = margin_from_json(margin_json(q(0), q(0), {0, 1}));
   CHECK(within_tolerance(Position::C, CentreSide::On, zero, q(0)));
   CHECK(!within_tolerance(Position::TI, CentreSide::On, zero, q(2)));
   // Refused margins.

@@ -38,7 +38,8 @@ class Case:
     (relpos's for the random family); double_position: relpos on the doubles of the parameters;
     matrix_position: relpos on E and P (upper triangles), None when they are no longer a pair
     (matrix_error says why); exact_ellipsoid, exact_paraboloid: the exact forms (dicts of "p/q"
-    strings, for relpos.Ellipsoid / relpos.Paraboloid); margin: s* when the construction knows it;
+    strings, for relpos.Ellipsoid / relpos.Paraboloid); margin: s* of the exact pair with its proof
+    (a dict, as `relpos batch --margin` writes it);
     line: the JSON line of `relpos cases`.
     """
 

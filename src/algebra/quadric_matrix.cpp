@@ -11,9 +11,8 @@
 #include <memory>
 #include <utility>
 
-#include "relpos/quadric.hpp"
-
 #include "algebra/decimal_recipe.hpp"
+#include "relpos/quadric.hpp"
 
 namespace relpos {
 

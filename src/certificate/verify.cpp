@@ -1,7 +1,7 @@
 // The independent certificate verifier (include/relpos/position.hpp; math.md §8).
 //
 // Only exact rational arithmetic (relpos::Rational / Integer) on the two 4x4 matrices and a few lines
-// of Q(sqrt d) arithmetic of its own: no code of the classifier (pencil, Sturm sequences, roots,
+// of Q(sqrt d) arithmetic of the verifiers (quadratic_field.hpp): no code of the classifier (pencil, Sturm sequences, roots,
 // filters) is used, so that a certificate checked here is evidence independent of the code that
 // produced it.
 #include "certificate/verify.hpp"
@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "certificate/quadratic_field.hpp"
 #include "relpos/position.hpp"
 
 namespace relpos {
@@ -20,60 +21,11 @@ namespace {
 
 using Reason = std::optional<std::string>;
 
-// ---- Q(sqrt d): u + v sqrt d, all numbers of one certificate share d ----------------------------
-
-struct Qd {
-  Rational u, v;
-};
-
-class Field {
- public:
-  explicit Field(Integer d) : d_(std::move(d)), dq_(d_) {}
-  Qd add(const Qd& x, const Qd& y) const { return {x.u + y.u, x.v + y.v}; }
-  Qd sub(const Qd& x, const Qd& y) const { return {x.u - y.u, x.v - y.v}; }
-  Qd mul(const Qd& x, const Qd& y) const { return {x.u * y.u + x.v * y.v * dq_, x.u * y.v + x.v * y.u}; }
-  Qd zero() const { return {Rational(0), Rational(0)}; }
-  int sign(const Qd& x) const {
-    const int su = CGAL::sign(x.u), sv = d_ == 0 ? 0 : static_cast<int>(CGAL::sign(x.v));
-    if (sv == 0) return su;
-    if (su == 0) return sv;
-    if (su == sv) return su;
-    // Opposite signs: |u| against |v| sqrt d.
-    return su * static_cast<int>(CGAL::sign(x.u * x.u - x.v * x.v * dq_));
-  }
-  std::string text(const Qd& x) const {
-    if (x.v == 0 || d_ == 0) return to_string(x.u);
-    return to_string(x.u) + (x.v < 0 ? " - " : " + ") + to_string(x.v < 0 ? Rational(-x.v) : x.v) + " sqrt " +
-           to_string(d_);
-  }
-
- private:
-  Integer d_;
-  Rational dq_;
-};
-
-/// Rational arithmetic as a degenerate "field" (d = 0) so that the determinant code is shared.
-Qd rat(const Rational& q) { return {q, Rational(0)}; }
-
-using QMatrix = std::array<Qd, 16>;
-
-/// Determinant of the principal (or general) submatrix of m with rows `rows`, columns `cols`, by
-/// Laplace expansion along the first row (at most 4 x 4: 24 products; ring operations only).
-Qd minor_det(const Field& f, const QMatrix& m, const std::vector<int>& rows, const std::vector<int>& cols) {
-  const std::size_t n = rows.size();
-  if (n == 0) return rat(Rational(1));
-  if (n == 1) return m[static_cast<std::size_t>(4 * rows[0] + cols[0])];
-  Qd total = f.zero();
-  const std::vector<int> sub_rows(rows.begin() + 1, rows.end());
-  for (std::size_t k = 0; k < n; ++k) {
-    std::vector<int> sub_cols;
-    for (std::size_t j = 0; j < n; ++j)
-      if (j != k) sub_cols.push_back(cols[j]);
-    const Qd term = f.mul(m[static_cast<std::size_t>(4 * rows[0] + cols[k])], minor_det(f, m, sub_rows, sub_cols));
-    total = k % 2 == 0 ? f.add(total, term) : f.sub(total, term);
-  }
-  return total;
-}
+using detail::Field;
+using detail::minor_det;
+using detail::QMatrix;
+using detail::Qd;
+using detail::rat;
 
 Qd principal_minor(const Field& f, const QMatrix& m, const std::vector<int>& idx) { return minor_det(f, m, idx, idx); }
 

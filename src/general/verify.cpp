@@ -1,8 +1,8 @@
 // The independent verifier of general certificates (include/relpos/general_position.hpp; math.md §18).
 //
-// Exact rational arithmetic on the two 4x4 matrices and its own few lines of Q(sqrt d) arithmetic,
-// determinants and inertia: no code of the classifier (pencils, root isolation, filters) and no
-// code of the other verifier, so that a certificate checked here is evidence independent of the
+// Exact rational arithmetic on the two 4x4 matrices, the verifiers' Q(sqrt d) arithmetic and
+// determinants (src/certificate/quadratic_field.hpp) and inertia of its own: no code of the
+// classifier (pencils, root isolation, filters), so that a certificate checked here is evidence independent of the
 // code that produced it.
 #include <array>
 #include <cstddef>
@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "certificate/quadratic_field.hpp"
 #include "relpos/general_position.hpp"
 
 namespace relpos {
@@ -17,57 +18,13 @@ namespace {
 
 using Reason = std::optional<std::string>;
 
-struct Qd {
-  Rational u, v;
-};
+using detail::Field;
+using detail::minor_det;
+using detail::QMatrix;
+using detail::Qd;
+using detail::rat;
 
-/// Q(sqrt d), d >= 0 (d = 0: the rationals).
-class Field {
- public:
-  explicit Field(Integer d) : d_(std::move(d)), dq_(d_) {}
-  Qd add(const Qd& x, const Qd& y) const { return {x.u + y.u, x.v + y.v}; }
-  Qd sub(const Qd& x, const Qd& y) const { return {x.u - y.u, x.v - y.v}; }
-  Qd mul(const Qd& x, const Qd& y) const { return {x.u * y.u + x.v * y.v * dq_, x.u * y.v + x.v * y.u}; }
-  Qd neg(const Qd& x) const { return {-x.u, -x.v}; }
-  int sign(const Qd& x) const {
-    const int su = CGAL::sign(x.u), sv = d_ == 0 ? 0 : static_cast<int>(CGAL::sign(x.v));
-    if (sv == 0) return su;
-    if (su == 0) return sv;
-    if (su == sv) return su;
-    return su * static_cast<int>(CGAL::sign(x.u * x.u - x.v * x.v * dq_));
-  }
-  std::string text(const Qd& x) const {
-    if (x.v == 0 || d_ == 0) return to_string(x.u);
-    return to_string(x.u) + (x.v < 0 ? " - " : " + ") + to_string(x.v < 0 ? Rational(-x.v) : x.v) + " sqrt " +
-           to_string(d_);
-  }
-
- private:
-  Integer d_;
-  Rational dq_;
-};
-
-Qd rat(const Rational& q) { return {q, Rational(0)}; }
 Qd of(const QuadraticNumber& x) { return {x.a, x.b}; }
-
-using QMatrix = std::array<Qd, 16>;
-
-/// Determinant of the submatrix on rows x cols (Laplace along the first row, at most 4 x 4).
-Qd minor_det(const Field& f, const QMatrix& m, const std::vector<int>& rows, const std::vector<int>& cols) {
-  const std::size_t n = rows.size();
-  if (n == 0) return rat(Rational(1));
-  if (n == 1) return m[static_cast<std::size_t>(4 * rows[0] + cols[0])];
-  Qd total = rat(Rational(0));
-  const std::vector<int> sub_rows(rows.begin() + 1, rows.end());
-  for (std::size_t k = 0; k < n; ++k) {
-    std::vector<int> sub_cols;
-    for (std::size_t j = 0; j < n; ++j)
-      if (j != k) sub_cols.push_back(cols[j]);
-    const Qd term = f.mul(m[static_cast<std::size_t>(4 * rows[0] + cols[k])], minor_det(f, m, sub_rows, sub_cols));
-    total = k % 2 == 0 ? f.add(total, term) : f.sub(total, term);
-  }
-  return total;
-}
 
 std::vector<int> leading(int n) {
   std::vector<int> idx;

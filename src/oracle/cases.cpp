@@ -11,6 +11,7 @@
 #include "oracle/nearest.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
+#include "relpos/io.hpp"
 
 namespace relpos::oracle {
 
@@ -32,11 +33,15 @@ Paraboloid paraboloid_of(const Parameters& p) { return Paraboloid::standard(p.ve
 /// standard forms) and the matrices' upper triangles (refused when rounding broke the shape).
 void label(Case& c) {
   const Parameters d = exact_parameters(c.doubles);
-  c.double_position = decide_position(ellipsoid_of(d), paraboloid_of(d)).position;
-  c.exact_position =
-      c.construction.position
-          ? *c.construction.position
-          : decide_position(ellipsoid_of(c.construction.exact), paraboloid_of(c.construction.exact)).position;
+  const Ellipsoid de = ellipsoid_of(d), ee = ellipsoid_of(c.construction.exact);
+  const Paraboloid dp = paraboloid_of(d), ep = paraboloid_of(c.construction.exact);
+  c.double_position = decide_position(de, dp).position;
+  c.exact_position = c.construction.position ? *c.construction.position : decide_position(ee, ep).position;
+  try {  // every pair of the families has one; a pair beyond the size limit would have none
+    c.margin = margin(ee, ep);
+    c.double_margin = margin(de, dp);
+  } catch (const InputError&) {
+  }
   const char* role = "ellipsoid";
   try {
     const Ellipsoid e = Ellipsoid::from_doubles(upper_triangle(c.e_matrix));
@@ -84,15 +89,8 @@ Json double_paraboloid(const DoubleParameters& d) {
   return Json{{"vertex", double_json(d.vertex)}, {"a", d.a}, {"b", d.b}, {"rotation", double_json(d.p_rotation)}};
 }
 
-/// The margin of doc/oracle.md ("Tolerance") for a rational s* known by construction: lo = hi = s*,
-/// its minimal polynomial q x - p. (The certified margin of the library replaces it here.)
-Json construction_margin(const Rational& s) {
-  return Json{{"approx", nearest_double(s)},
-              {"lo", to_string(s)},
-              {"hi", to_string(s)},
-              {"polynomial", Json::array({to_string(Rational(-s.numerator())), to_string(Rational(s.denominator()))})},
-              {"by", "construction"}};
-}
+/// A margin's JSON value (doc/certificates.md, "Margins"), as `relpos batch --margin` writes it.
+Json margin_json(const Margin& m) { return Json::parse(io::margin_json_text(m)); }
 
 }  // namespace
 
@@ -199,7 +197,8 @@ std::string case_line(const Case& c, Form form) {
   meta["double_position"] = to_string(c.double_position);
   meta["matrix_position"] = c.matrix_position ? Json(to_string(*c.matrix_position)) : Json(nullptr);
   if (!c.matrix_position) meta["matrix_error"] = c.matrix_error;
-  if (c.construction.s_star) meta["margin"] = construction_margin(*c.construction.s_star);
+  if (c.margin) meta["margin"] = margin_json(*c.margin);
+  if (c.double_margin) meta["double_margin"] = margin_json(*c.double_margin);
   meta["double"] = Json{{"ellipsoid", double_ellipsoid(c.doubles)},
                         {"paraboloid", double_paraboloid(c.doubles)},
                         {"E", matrix_json(c.e_matrix)},

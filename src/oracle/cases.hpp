@@ -10,6 +10,7 @@
 
 #include "oracle/families.hpp"
 #include "oracle/float_matrices.hpp"
+#include "relpos/margin.hpp"
 #include "relpos/position.hpp"
 
 namespace relpos::oracle {
@@ -38,6 +39,9 @@ struct Case {
   Position double_position = Position::I;   ///< relpos on the doubles of the parameters
   std::optional<Position> matrix_position;  ///< relpos on the matrices' upper triangles, if they are a pair
   std::string matrix_error;                 ///< why not, otherwise
+  /// s* with its proof (margin.hpp) of the exact pair and of the doubles of the parameters: the
+  /// judge's tolerance reads them (doc/oracle.md, "Tolerance").
+  std::optional<Margin> margin, double_margin;
 };
 
 /// Every case of the options, family by family, eps by eps, index by index. Throws InputError for an
