@@ -1,9 +1,8 @@
 // The independent certificate verifier (include/relpos/position.hpp; math.md §8).
 //
 // Only exact rational arithmetic (relpos::Rational / Integer) on the two 4x4 matrices and a few lines
-// of Q(sqrt d) arithmetic of the verifiers (quadratic_field.hpp): no code of the classifier (pencil, Sturm sequences, roots,
-// filters) is used, so that a certificate checked here is evidence independent of the code that
-// produced it.
+// of Q(sqrt d) arithmetic of the verifiers (quadratic_field.hpp): no code of the classifier (pencil, Sturm sequences,
+// roots, filters) is used, so that a certificate checked here is evidence independent of the code that produced it.
 #include "certificate/verify.hpp"
 
 #include <algorithm>
@@ -23,8 +22,8 @@ using Reason = std::optional<std::string>;
 
 using detail::Field;
 using detail::minor_det;
-using detail::QMatrix;
 using detail::Qd;
+using detail::QMatrix;
 using detail::rat;
 
 Qd principal_minor(const Field& f, const QMatrix& m, const std::vector<int>& idx) { return minor_det(f, m, idx, idx); }

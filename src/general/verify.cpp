@@ -20,8 +20,8 @@ using Reason = std::optional<std::string>;
 
 using detail::Field;
 using detail::minor_det;
-using detail::QMatrix;
 using detail::Qd;
+using detail::QMatrix;
 using detail::rat;
 
 Qd of(const QuadraticNumber& x) { return {x.a, x.b}; }
