@@ -124,9 +124,11 @@ int FastValue::number() {
   // A decimal written as a JSON string ("0.1") is the number 0.1 to the general reader: read here
   // too, so that both spellings give the quadric the same storage and the same stages run (with
   // --numbers doubles only JSON numbers are rounded: a string stays with the general reader).
-  const bool quoted = !doubles_ && s_[i_] == '"';
-  const char* const first = s_.data() + i_ + (quoted ? 1 : 0);
+  const char* first = s_.data() + i_;
   const char* const last = s_.data() + s_.size();
+  const bool quoted = *first == '"';
+  if (quoted && doubles_) return -1;
+  first += quoted;
   const int self = new_node(FastKind::Number);
   if (self < 0) return -1;
   FastNumber& n = nodes_[self].node.number;  // read in place (a copy of a number stalls on its parts)
@@ -134,10 +136,13 @@ int FastValue::number() {
   DecimalDigits digits{x};
   const char* const p = scan_number(first, last, digits);
   if (!p) return -1;
-  const char* const after = quoted ? (p < last && *p == '"' ? p + 1 : nullptr) : p;
-  if (!after) return -1;
+  const char* after = p;
+  if (quoted) {
+    if (after == last || *after != '"') return -1;
+    ++after;
+  }
   if (after < last && *after != ',' && *after != ']' && *after != '}' && !is_json_space(*after)) return -1;
-  i_ += static_cast<std::size_t>(after - (s_.data() + i_));
+  i_ = static_cast<std::size_t>(after - s_.data());
   int zeros = digits.zeros;
   while (x.m != 0 && x.m % 10 == 0) x.m /= 10, ++zeros;  // m without trailing zeros: one identity a value
   if (doubles_) {  // round to nearest here: the caller's guard starts after parse()
