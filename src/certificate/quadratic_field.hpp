@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "relpos/numbers.hpp"
+#include "relpos/quadric.hpp"
 
 namespace relpos::detail {
 
@@ -70,6 +71,37 @@ inline Qd minor_det(const Field& f, const QMatrix& m, const std::vector<int>& ro
     total = k % 2 == 0 ? f.add(total, term) : f.sub(total, term);
   }
   return total;
+}
+
+/// The rank of the leading 3 x 3 block of k (lambda A + M, or B + t M), from its non-zero minors.
+inline int block_rank(const Field& f, const QMatrix& k) {
+  for (int size = 3; size >= 1; --size)
+    for (int rmask = 1; rmask < 8; ++rmask)
+      for (int cmask = 1; cmask < 8; ++cmask) {
+        std::vector<int> r, c;
+        for (int j = 0; j < 3; ++j) {
+          if (rmask & (1 << j)) r.push_back(j);
+          if (cmask & (1 << j)) c.push_back(j);
+        }
+        if (static_cast<int>(r.size()) == size && static_cast<int>(c.size()) == size &&
+            f.sign(minor_det(f, k, r, c)) != 0)
+          return size;
+      }
+  return 0;
+}
+
+/// X^T Q X for X = (x, y, z, 1), rational.
+inline Rational form_at(const Matrix4& q, const Vector3& x) {
+  const std::array<Rational, 4> v{x[0], x[1], x[2], Rational(1)};
+  Rational s(0);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) s += v[static_cast<std::size_t>(i)] * q(i, j) * v[static_cast<std::size_t>(j)];
+  return s;
+}
+
+/// A point as "(x, y, z)" in exact rationals, for a verifier's message.
+inline std::string point_text(const Vector3& x) {
+  return "(" + to_string(x[0]) + ", " + to_string(x[1]) + ", " + to_string(x[2]) + ")";
 }
 
 }  // namespace relpos::detail

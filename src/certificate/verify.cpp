@@ -20,8 +20,11 @@ namespace {
 
 using Reason = std::optional<std::string>;
 
+using detail::block_rank;
 using detail::Field;
+using detail::form_at;
 using detail::minor_det;
+using detail::point_text;
 using detail::Qd;
 using detail::QMatrix;
 using detail::rat;
@@ -70,19 +73,6 @@ QMatrix pencil_at(const Field& f, const Matrix4& e, const Matrix4& p, const Qd& 
   QMatrix k;
   for (std::size_t i = 0; i < 16; ++i) k[i] = f.add(f.mul(l, rat(p.a[i])), rat(e.a[i]));
   return k;
-}
-
-/// X^T Q X for X = (x, y, z, 1), rational.
-Rational form_at(const Matrix4& q, const Vector3& x) {
-  const std::array<Rational, 4> v{x[0], x[1], x[2], Rational(1)};
-  Rational s(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) s += v[static_cast<std::size_t>(i)] * q(i, j) * v[static_cast<std::size_t>(j)];
-  return s;
-}
-
-std::string point_text(const Vector3& x) {
-  return "(" + to_string(x[0]) + ", " + to_string(x[1]) + ", " + to_string(x[2]) + ")";
 }
 
 Qd from_quadratic(const QuadraticNumber& x) { return {x.a, x.b}; }
@@ -209,24 +199,6 @@ Reason check_directions(const Field& f, const Matrix4& e, const QMatrix& k, cons
     if (!independent) return std::string("the directions are linearly dependent");
   }
   return std::nullopt;
-}
-
-/// The rank of lambda A + M (K's first three rows and columns), from its non-zero minors.
-int block_rank(const Field& f, const QMatrix& k) {
-  int rank = 0;
-  for (int size = 3; size >= 1 && rank == 0; --size)
-    for (int rmask = 1; rmask < 8 && rank == 0; ++rmask)
-      for (int cmask = 1; cmask < 8 && rank == 0; ++cmask) {
-        std::vector<int> r, cl;
-        for (int j = 0; j < 3; ++j) {
-          if (rmask & (1 << j)) r.push_back(j);
-          if (cmask & (1 << j)) cl.push_back(j);
-        }
-        if (static_cast<int>(r.size()) == size && static_cast<int>(cl.size()) == size &&
-            f.sign(minor_det(f, k, r, cl)) != 0)
-          rank = size;
-      }
-  return rank;
 }
 
 /// radius2 = -e(centre) >= 0, and when it is positive the directions span the whole kernel of

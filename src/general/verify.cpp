@@ -18,8 +18,11 @@ namespace {
 
 using Reason = std::optional<std::string>;
 
+using detail::block_rank;
 using detail::Field;
+using detail::form_at;
 using detail::minor_det;
+using detail::point_text;
 using detail::Qd;
 using detail::QMatrix;
 using detail::rat;
@@ -63,18 +66,6 @@ QMatrix pencil_at(const Field& f, const Matrix4& e, const Matrix4& q, const Qd& 
   QMatrix k;
   for (std::size_t i = 0; i < 16; ++i) k[i] = f.add(rat(q.a[i]), f.mul(t, rat(e.a[i])));
   return k;
-}
-
-Rational form_at(const Matrix4& m, const Vector3& x) {
-  const std::array<Rational, 4> v{x[0], x[1], x[2], Rational(1)};
-  Rational s(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) s += v[static_cast<std::size_t>(i)] * m(i, j) * v[static_cast<std::size_t>(j)];
-  return s;
-}
-
-std::string point_text(const Vector3& x) {
-  return "(" + to_string(x[0]) + ", " + to_string(x[1]) + ", " + to_string(x[2]) + ")";
 }
 
 Matrix4 negated(const Matrix4& m) {
@@ -227,19 +218,7 @@ Reason verify_hard_tangent(const Matrix4& e, const Matrix4& q, int t_sign, int d
   if (r2_sign < 0) return "radius2 = " + f.text(r2) + " is negative: the contact set is empty";
   if (r2_sign > 0) {
     if (n == 0) return std::string("radius2 > 0 but no direction: the contact set is empty");
-    int rank = 0;  // of B + t M: the directions must span its kernel
-    for (int size = 3; size >= 1 && rank == 0; --size)
-      for (int rmask = 1; rmask < 8 && rank == 0; ++rmask)
-        for (int cmask = 1; cmask < 8 && rank == 0; ++cmask) {
-          std::vector<int> r, cl;
-          for (int j = 0; j < 3; ++j) {
-            if (rmask & (1 << j)) r.push_back(j);
-            if (cmask & (1 << j)) cl.push_back(j);
-          }
-          if (static_cast<int>(r.size()) == size && static_cast<int>(cl.size()) == size &&
-              f.sign(minor_det(f, k, r, cl)) != 0)
-            rank = size;
-        }
+    const int rank = block_rank(f, k);  // of B + t M: the directions must span its kernel
     if (static_cast<std::size_t>(rank) + n != 3)
       return std::to_string(n) + " direction(s) but the kernel of B + t M has dimension " + std::to_string(3 - rank);
   }
