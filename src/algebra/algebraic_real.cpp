@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "algebra/flint_poly.hpp"
 #include "algebra/flint_thread.hpp"
 #include "algebra/polynomial_sign.hpp"
 #include "algebra/polynomial_text.hpp"
@@ -16,7 +17,9 @@
 namespace relpos {
 namespace {
 
+using detail::from_flint;
 using detail::sign_of_value;
+using detail::to_flint;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
@@ -25,32 +28,6 @@ Rational inverse_power_of_two(unsigned long n) {
   Integer d;
   mpz_setbit(d.mpz(), n);
   return Rational(Integer(1), d);
-}
-
-void to_flint(fmpz_poly_t f, const std::vector<Integer>& p) {
-  detail::flint_thread_cleanup_at_exit();
-  fmpz_t c;
-  fmpz_init(c);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    fmpz_set_mpz(c, p[i].mpz());
-    fmpz_poly_set_coeff_fmpz(f, static_cast<slong>(i), c);
-  }
-  fmpz_clear(c);
-}
-
-std::vector<Integer> from_flint(const fmpz_poly_t f) {
-  detail::flint_thread_cleanup_at_exit();
-  std::vector<Integer> out;
-  fmpz_t c;
-  fmpz_init(c);
-  for (slong i = 0; i <= fmpz_poly_degree(f); ++i) {
-    fmpz_poly_get_coeff_fmpz(c, f, i);
-    Integer z;  // fresh object: written through its mpz_t
-    fmpz_get_mpz(z.mpz(), c);
-    out.push_back(z);
-  }
-  fmpz_clear(c);
-  return out;
 }
 
 std::vector<std::vector<Integer>> flint_factors(const std::vector<Integer>& p) {

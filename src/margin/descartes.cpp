@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "algebra/flint_poly.hpp"
 #include "algebra/flint_thread.hpp"
 #include "algebra/polynomial_sign.hpp"
 
@@ -14,50 +15,25 @@ namespace relpos::detail {
 namespace {
 
 /// An owned FLINT polynomial (movable, not copyable).
-class FlintPoly {
+class ScratchPoly {
  public:
-  FlintPoly() { fmpz_poly_init(p_); }
-  FlintPoly(FlintPoly&& o) noexcept {
+  ScratchPoly() { fmpz_poly_init(p_); }
+  ScratchPoly(ScratchPoly&& o) noexcept {
     fmpz_poly_init(p_);
     fmpz_poly_swap(p_, o.p_);
   }
-  FlintPoly& operator=(FlintPoly&& o) noexcept {
+  ScratchPoly& operator=(ScratchPoly&& o) noexcept {
     fmpz_poly_swap(p_, o.p_);
     return *this;
   }
-  FlintPoly(const FlintPoly&) = delete;
-  FlintPoly& operator=(const FlintPoly&) = delete;
-  ~FlintPoly() { fmpz_poly_clear(p_); }
+  ScratchPoly(const ScratchPoly&) = delete;
+  ScratchPoly& operator=(const ScratchPoly&) = delete;
+  ~ScratchPoly() { fmpz_poly_clear(p_); }
   fmpz_poly_struct* get() { return p_; }
 
  private:
   fmpz_poly_t p_;
 };
-
-/// The polynomial as FLINT's (written to a fresh or zero `out`).
-void to_flint(fmpz_poly_struct* out, const std::vector<Integer>& p) {
-  fmpz_t c;
-  fmpz_init(c);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    fmpz_set_mpz(c, p[i].mpz());
-    fmpz_poly_set_coeff_fmpz(out, static_cast<slong>(i), c);
-  }
-  fmpz_clear(c);
-}
-
-std::vector<Integer> from_flint(const fmpz_poly_t p) {
-  std::vector<Integer> out;
-  fmpz_t c;
-  fmpz_init(c);
-  for (slong i = 0; i <= fmpz_poly_degree(p); ++i) {
-    fmpz_poly_get_coeff_fmpz(c, p, i);
-    Integer z;  // fresh object: written through its mpz_t
-    fmpz_get_mpz(z.mpz(), c);
-    out.push_back(z);
-  }
-  fmpz_clear(c);
-  return out;
-}
 
 /// x + y t.
 void linear(fmpz_poly_t out, const Integer& x, const Integer& y) {
@@ -169,7 +145,7 @@ std::vector<RootInterval> positive_roots(const std::vector<Integer>& p) {
   struct Node {
     Integer c;
     unsigned long k;
-    FlintPoly q;
+    ScratchPoly q;
   };
   std::vector<Node> pending(1);
   pending[0].c = Integer(0);
@@ -178,7 +154,7 @@ std::vector<RootInterval> positive_roots(const std::vector<Integer>& p) {
   for (slong i = 1; i < static_cast<slong>(n); ++i)
     fmpz_mul_2exp(pending[0].q.get()->coeffs + i, pending[0].q.get()->coeffs + i, e * static_cast<ulong>(i));
   std::vector<RootInterval> out;
-  FlintPoly scratch;
+  ScratchPoly scratch;
   fmpz_t one;
   fmpz_init_set_ui(one, 1);
   for (int nodes = 0; !pending.empty(); ++nodes) {
@@ -193,7 +169,7 @@ std::vector<RootInterval> positive_roots(const std::vector<Integer>& p) {
     if (v <= 1) continue;
     const Integer c2 = 2 * node.c;
     halve(node.q.get());  // the left child: 2^deg q(x / 2)
-    Node right{c2 + 1, node.k + 1, FlintPoly()};
+    Node right{c2 + 1, node.k + 1, ScratchPoly()};
     fmpz_poly_taylor_shift(right.q.get(), node.q.get(), one);  // the right child: the left one at x + 1
     if (fmpz_is_zero(right.q.get()->coeffs)) {  // the midpoint is a root: kept, and divided out on the right
       out.push_back({at(c2 + 1, node.k + 1), at(c2 + 1, node.k + 1)});
