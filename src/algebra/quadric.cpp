@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "algebra/forms.hpp"
+#include "algebra/matrix4.hpp"
 #include "algebra/quadric_kind.hpp"
 #include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
@@ -17,11 +18,7 @@
 namespace relpos {
 namespace {
 
-Matrix4 negated(const Matrix4& q) {
-  Matrix4 r;
-  for (std::size_t i = 0; i < 16; ++i) r.a[i] = -q.a[i];
-  return r;
-}
+using detail::negated;
 
 Matrix3 inverse3(const Matrix3& m, const char* what) {
   Matrix3 c;  // cofactor transpose

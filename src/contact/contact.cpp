@@ -70,11 +70,6 @@ using detail::rounding_to_nearest;
 /// Plugged into the static filter: compute the smallness signs only when the case needs them.
 bool needs_smallness(const QuarticSigns& q) { return discriminant_case_needs_rho(discriminant_case(q)); }
 
-template <class NT, class Get>
-SymmetricEntries<NT> entries(Get get) {
-  return {get(0, 0), get(1, 1), get(2, 2), get(0, 1), get(0, 2), get(1, 2), get(0, 3), get(1, 3), get(2, 3), get(3, 3)};
-}
-
 /// The contact-only answer of a verdict.
 ContactAnswer finish(const Verdict& v) { return {contact_of(v.position), v.position, v.rule, v.stage}; }
 

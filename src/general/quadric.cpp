@@ -2,12 +2,15 @@
 // normalization, refusal of degenerate and imaginary quadrics, and the geometric forms.
 #include <utility>
 
+#include "algebra/matrix4.hpp"
 #include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
 #include "relpos/general_quadric.hpp"
 
 namespace relpos {
 namespace {
+
+using detail::negated;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
@@ -33,12 +36,6 @@ std::pair<int, int> inertia3(const Matrix4& q) {
   const int positive = variations({1, -sgn(e1), sgn(e2), -sgn(e3)});
   const int negative = variations({-1, -sgn(e1), -sgn(e2), -sgn(e3)});
   return {positive, negative};
-}
-
-Matrix4 negated(const Matrix4& q) {
-  Matrix4 r;
-  for (std::size_t i = 0; i < 16; ++i) r.a[i] = -q.a[i];
-  return r;
 }
 
 std::string found(QuadricKind k) {

@@ -22,6 +22,7 @@ using detail::block_rank;
 using detail::Field;
 using detail::form_at;
 using detail::minor_det;
+using detail::negated;
 using detail::point_text;
 using detail::Qd;
 using detail::QMatrix;
@@ -66,12 +67,6 @@ QMatrix pencil_at(const Field& f, const Matrix4& e, const Matrix4& q, const Qd& 
   QMatrix k;
   for (std::size_t i = 0; i < 16; ++i) k[i] = f.add(rat(q.a[i]), f.mul(t, rat(e.a[i])));
   return k;
-}
-
-Matrix4 negated(const Matrix4& m) {
-  Matrix4 out;
-  for (std::size_t i = 0; i < 16; ++i) out.a[i] = -m.a[i];
-  return out;
 }
 
 Reason check_symmetric(const Matrix4& m, const std::string& name) {

@@ -14,10 +14,13 @@
 #include <utility>
 #include <vector>
 
+#include "algebra/matrix4.hpp"
 #include "general/pencil.hpp"
 
 namespace relpos::general {
 namespace {
+
+using detail::form_at;
 
 // ---- an MPFR number at the thread's working precision --------------------------------------------
 
@@ -298,14 +301,6 @@ std::vector<std::array<T, 3>> minimisers(const Matrix4& km, const Matrix4& gm, i
     out.push_back(y);
   }
   return out;
-}
-
-Rational form_at(const Matrix4& m, const Vector3& x) {
-  const std::array<Rational, 4> v{x[0], x[1], x[2], Rational(1)};
-  Rational s(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) s += v[static_cast<std::size_t>(i)] * m(i, j) * v[static_cast<std::size_t>(j)];
-  return s;
 }
 
 /// The centre -M^-1 m of the ellipsoid K, exactly (Cramer).

@@ -6,6 +6,7 @@
 // solid inside the other).
 #pragma once
 
+#include "algebra/matrix4.hpp"
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
 
@@ -24,8 +25,5 @@ struct ScaledFamily {
 
 /// The family of the matrix of a real ellipsoid (M positive definite, det E < 0).
 ScaledFamily scaled_family(const Matrix4& e);
-
-/// X^T Q X at X = (x, 1): the value of the quadric's form at a point.
-Rational form_at(const Matrix4& q, const Vector3& x);
 
 }  // namespace relpos::detail

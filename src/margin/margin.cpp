@@ -18,6 +18,7 @@
 #include "algebra/between.hpp"
 #include "algebra/irreducible.hpp"
 #include "algebra/polynomial_sign.hpp"
+#include "algebra/power_of_two.hpp"
 #include "certificate/build.hpp"
 #include "decide/unchecked.hpp"
 #include "margin/approximate.hpp"
@@ -42,13 +43,6 @@ double nearest_double(const Rational& q) {
   const double d = mpfr_get_d(x, MPFR_RNDN);
   if (d == 0 || std::fabs(d) < DBL_MIN || !std::isfinite(d)) return std::strtod(to_decimal(q, 40).c_str(), nullptr);
   return d;
-}
-
-/// 2^-n.
-Rational power_of_two_inverse(unsigned long n) {
-  Integer d;
-  mpz_setbit(d.mpz(), n);
-  return Rational(Integer(1), d);
 }
 
 /// A rational below (above == false) or above sqrt(x), x >= 0, within 2^-64 sqrt(x) of it:
@@ -174,7 +168,7 @@ Margin irrational_margin(const std::vector<Integer>& f, RootInterval r, const st
   for (long extra = 2;; extra += 4) {
     // w = 2^-(bits + extra) r.lo: the ends lie within w of r, so hi - lo < 3w <= 2^-bits lo.
     if (bits + extra > fine) detail::refine_root(f, r, fine = bits + extra);
-    const Rational w = r.lo * power_of_two_inverse(static_cast<unsigned long>(bits + extra));
+    const Rational w = r.lo * detail::power_of_two(-static_cast<long>(bits + extra));
     out.lo = detail::rational_inside(r.lo - w, r.lo, detail::Shortest::Bits);
     out.hi = detail::rational_inside(r.hi, r.hi + w, detail::Shortest::Bits);
     if (detail::isolates(pi_t, f, out.lo, out.hi)) break;
@@ -231,8 +225,8 @@ Margin margin(const Ellipsoid& e, const Paraboloid& p, int bits) {
   }
   RootInterval u = star.root;
   if (u.lo == u.hi) {  // s*^2 rational, not a square: s* is a root of den t^2 - num, irreducible
-    u.lo = v * (1 - power_of_two_inverse(8));
-    u.hi = v * (1 + power_of_two_inverse(8));
+    u.lo = v * (1 - detail::power_of_two(-8));
+    u.hi = v * (1 + detail::power_of_two(-8));
   }
   auto [f, r] = square_root_of(*star.factor, u);
   // A start for Newton's method: the square root of s*^2's approximation in long double.

@@ -1,13 +1,12 @@
 // tolerance.hpp.
 #include "oracle/tolerance.hpp"
 
+#include "oracle/json_text.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos::oracle {
 
 namespace {
-
-using Json = nlohmann::ordered_json;
 
 Rational number(const Json& j, const std::string& name) {
   if (!j.contains(name)) throw InputError("margin: \"" + name + "\" is missing");

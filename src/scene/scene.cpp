@@ -56,11 +56,6 @@ struct RationalView {
   const Rational& operator()(int i, int j) const { return (*m)(i, j); }
 };
 
-template <class NT, class Get>
-SymmetricEntries<NT> entries(Get get) {
-  return {get(0, 0), get(1, 1), get(2, 2), get(0, 1), get(0, 2), get(1, 2), get(0, 3), get(1, 3), get(2, 3), get(3, 3)};
-}
-
 RB bounded(const Rational& q) {
   const auto i = CGAL::to_interval(q);
   return RB::enclosing(i.first, i.second);
