@@ -22,6 +22,7 @@
 #include "motion/polynomial_motion.hpp"
 #include "motion/subresultant_position.hpp"
 #include "support/printers.hpp"
+#include "support/scale.hpp"
 
 using relpos::AlgebraicReal;
 using relpos::Ellipsoid;
@@ -927,7 +928,7 @@ TEST_CASE("random motions of bodies that are not small: every instant decided an
   CAPTURE(seed);
   RandomPaths gen{std::mt19937_64(seed), 1, 3, 2, Rational(0), 4, -5, 0, 2, 2, 8, 2, 2, 5};
   int irrational_instants = 0, decided_by_definiteness = 0, not_small = 0;
-  for (int k = 0; k < 40; ++k) {
+  for (int k = 0; k < relpos::testing::scaled(40); ++k) {
     CAPTURE(k);
     const auto [p, e0, m] = gen.next(k);
     Timeline tl;
