@@ -15,10 +15,9 @@ holds, and the floors it may include. The check fails when
     include check cannot see: the friend needs no include),
   - a file declares, at namespace scope, a function defined only in files of a higher floor (a call
     upward through a hand-written declaration instead of an include),
-    each unless CLIMBS_ALLOWED lists it (temporary),
-  - a file of SIZE_RULE has more than MAX_FILE_LINES lines or a function of more than
-    MAX_FUNCTION_LINES lines (one job per file; the scan is described in doc/architecture.md,
-    "Sizes"); violations elsewhere in src/ are listed as not yet enforced.
+  - a file of SIZE_RULE (all of src/) has more than MAX_FILE_LINES lines or a function of more
+    than MAX_FUNCTION_LINES lines (one job per file; the scan is described in doc/architecture.md,
+    "Sizes").
 
 Usage: check_architecture.py REPO_ROOT
 """
@@ -30,37 +29,14 @@ SCANNED = ("src", "include", "cli", "python/src")
 EXTENSIONS = {".hpp", ".cpp", ".h", ".cc"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 
+# The public API only the API (doc/architecture.md, "The public API").
+PUBLIC_HEADERS = "include/relpos/"
+MAX_PUBLIC_DECLARATIONS = 100
 # One job per file (doc/architecture.md, "Sizes").
 MAX_FILE_LINES = 500
 MAX_FUNCTION_LINES = 60
-# The files and folders (a trailing /) the size rule holds for. It starts with the parts already
-# split (issue 34); once src/io, src/decide, src/certificate, src/algebra/forms.* and the scene's
-# two long functions are split too, the list becomes all of src/: SIZE_RULE = ["src/"].
-SIZE_RULE = [
-    "src/algebra/algebraic_real.cpp", "src/algebra/approximate_roots.cpp", "src/algebra/approximate_roots.hpp",
-    "src/algebra/between.cpp", "src/algebra/between.hpp", "src/algebra/centre.cpp", "src/algebra/centre.hpp",
-    "src/algebra/cramer.hpp", "src/algebra/double_bits.hpp", "src/algebra/double_sign.cpp",
-    "src/algebra/double_sign.hpp", "src/algebra/exact_pencil.hpp", "src/algebra/flint_poly.hpp",
-    "src/algebra/flint_thread.hpp", "src/algebra/gmp_blocks.cpp", "src/algebra/modular.cpp",
-    "src/algebra/modular.hpp", "src/algebra/numbers.cpp", "src/algebra/pair_size.cpp", "src/algebra/pencil.hpp",
-    "src/algebra/polynomial_text.hpp", "src/algebra/polynomials.cpp", "src/algebra/quadric.cpp",
-    "src/algebra/quadric_doubles.cpp", "src/algebra/quadric_kind.cpp", "src/algebra/quadric_matrix.cpp",
-    "src/algebra/root_facts.cpp", "src/algebra/root_facts.hpp", "src/algebra/roots.cpp", "src/algebra/roots.hpp",
-    "src/algebra/rounding.hpp", "src/algebra/shape_filter.hpp", "src/algebra/simple_roots.cpp",
-    "src/algebra/small_factor.hpp", "src/algebra/smallness.hpp", "src/algebra/sturm.hpp",
-    "src/algebra/sturm_habicht_quartic.hpp", "src/algebra/word_arithmetic.hpp",
-    "src/base/", "src/contact/", "src/filters/", "src/motion/",
-    "src/scene/certificates.hpp", "src/scene/demo.hpp", "src/scene/scene_demo.cpp",
-    # The oracle's floor, and the filtered type test with the refusals it shares with the exact path.
-    "src/oracle/", "src/algebra/kind_filter.cpp", "src/algebra/kind_filter.hpp", "src/algebra/quadric_kind.hpp",
-]
-# Climbs allowed for now, as (file, function): include/relpos/quadric.hpp (floor 1) declares and
-# befriends decide_position (floor 5) so that its 32-double overload can build quadrics in place.
-# Temporary: the public-API pass (issue 34, "The API only") removes it; then this set is empty and
-# stays so.
-CLIMBS_ALLOWED = {
-    ("include/relpos/quadric.hpp", "decide_position"),
-}
+# The files and folders (a trailing /) the size rule holds for: all of src/, new files included.
+SIZE_RULE = ["src/"]
 
 
 # ---- The C++ scan behind the size and declaration rules (doc/architecture.md, "Sizes") ----------
@@ -202,6 +178,63 @@ def scan_code(code: str):
             start = i + 1
         i += 1
     return functions, declarations
+
+
+FORWARD = re.compile(r"(?:class|struct|union|enum(?:\s+class|\s+struct)?)\s+\w+(?:\s*:\s*[\w:\s]+)?")
+
+
+def public_declarations(code: str):
+    """The namespace-scope declarations of stripped code outside any namespace named detail, as
+    (text, line): every class, struct, union, enum, alias, variable and function (each overload),
+    its text with white space collapsed and default arguments dropped; forward declarations,
+    friends and static_asserts are not declarations of the API."""
+    out, stack = [], []  # stack: the names of each open namespace
+    i, n, start, paren = 0, len(code), 0, 0
+
+    def record(head: str, at: int, definition: bool):
+        text = " ".join(drop_template_heads(head).split())
+        if not text or any("detail" in names for names in stack) or re.match(r"(friend|static_assert)\b", text):
+            return
+        if not definition and FORWARD.fullmatch(text):
+            return
+        eq, paren_at = text.find("="), text.find("(")
+        if eq >= 0 and (paren_at < 0 or eq < paren_at) and not re.search(r"\boperator\s*=", text):
+            text = text[:eq].rstrip()  # a variable or an alias: its name, not its value
+        else:
+            text = re.sub(r"\s*=[^,)]*", "", text)  # a function: its default arguments dropped
+        out.append((text, code.count("\n", 0, at) + 1))
+
+    while i < n:
+        c = code[i]
+        if c in "([":
+            paren += 1
+        elif c in ")]":
+            paren -= 1
+        elif c == ";" and paren == 0:
+            record(code[start:i], i, False)
+            start = i + 1
+        elif c == "}":
+            if stack:
+                stack.pop()
+            start = i + 1
+        elif c == "{" and paren > 0:  # a braced initializer in a declaration (a default argument)
+            i = matching_brace(code, i)
+            continue
+        elif c == "{":
+            head = code[start:i]
+            if block_kind(head) == "namespace":
+                stack.append(re.findall(r"\w+", re.sub(r"\b(inline|namespace)\b", " ", head)))
+                start = i + 1
+            else:
+                record(head, i, True)
+                i = matching_brace(code, i)
+                if block_kind(head) != "function":  # a class, enum or initializer ends at its ';'
+                    i = code.find(";", i)
+                    i = n if i < 0 else i
+                start = i + 1
+                continue
+        i += 1
+    return out
 
 
 FRIEND = re.compile(r"\bfriend\b([^;{]*?)\b(?:[A-Za-z_]\w*::)*([A-Za-z_]\w*)\s*\(([^;{]*)\)\s*[^;{]*;")
@@ -385,7 +418,7 @@ def check_declarations_and_sizes(root: Path, files, row_of, floor_of, errors):
         here = floor[rel]
         for m in FRIEND.finditer(code):
             name = m.group(2)
-            if name.startswith("operator") or (rel, name) in CLIMBS_ALLOWED:
+            if name.startswith("operator"):
                 continue
             # Where the function lives: the floors defining it, else those of the other headers
             # declaring it (a declaration beside the friend, as quadric.hpp has, does not count).
@@ -397,32 +430,33 @@ def check_declarations_and_sizes(root: Path, files, row_of, floor_of, errors):
                               "a climb the include check cannot see")
         for name, line in declarations:
             homes = defined.get(name, set())
-            if homes and min(homes) > here and (rel, name) not in CLIMBS_ALLOWED:
+            if homes and min(homes) > here:
                 errors.append(f"{rel}:{line} (floor {here}) declares {name}, defined only on floor {min(homes)}: "
                               "a call upward without an include")
 
     def enforced(rel: str) -> bool:
         return any(rel == p or (p.endswith("/") and rel.startswith(p)) for p in SIZE_RULE)
 
-    waiting = []
     for rel, (code, functions, _) in sorted(scans.items()):
-        if not rel.startswith("src/"):
+        if not enforced(rel):
             continue
-        problems = []
         lines = code.count("\n")
         if lines > MAX_FILE_LINES:
-            problems.append(f"{rel}: {lines} lines, beyond the limit of {MAX_FILE_LINES}")
+            errors.append(f"{rel}: {lines} lines, beyond the limit of {MAX_FILE_LINES}")
         for name, first, last in functions:
             if last - first + 1 > MAX_FUNCTION_LINES:
-                problems.append(f"{rel}:{first}: {name} has {last - first + 1} lines, beyond the limit of "
-                                f"{MAX_FUNCTION_LINES}")
-        if enforced(rel):
-            errors.extend(problems)
-        elif problems:
-            waiting.append(rel)
-    if waiting:
-        return [f"size rule not yet enforced on {len(waiting)} files over a limit: " + ", ".join(waiting)]
-    return []
+                errors.append(f"{rel}:{first}: {name} has {last - first + 1} lines, beyond the limit of "
+                              f"{MAX_FUNCTION_LINES}")
+
+    public = {}  # a public declaration's text -> where it is first declared
+    for rel, (code, _, _) in sorted(scans.items()):
+        if rel.startswith(PUBLIC_HEADERS):
+            for text, line in public_declarations(code):
+                public.setdefault(text, f"{rel}:{line}")
+    if len(public) > MAX_PUBLIC_DECLARATIONS:
+        errors.append(f"{PUBLIC_HEADERS}: {len(public)} namespace-scope public declarations, beyond the limit of "
+                      f"{MAX_PUBLIC_DECLARATIONS} (doc/architecture.md, \"The public API\")")
+    return [f"{len(public)} namespace-scope public declarations in {PUBLIC_HEADERS} (at most {MAX_PUBLIC_DECLARATIONS})"]
 
 
 if __name__ == "__main__":

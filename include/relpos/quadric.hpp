@@ -86,12 +86,6 @@ Matrix4 matrix_from_coefficients(const Coefficients10& c);
 /// Exact rotation matrix R(q)/|q|^2 of a non-zero quaternion.
 Matrix3 rotation_from_quaternion(const Quaternion& q);
 
-class Ellipsoid;
-class Paraboloid;
-struct Verdict;
-/// The decision on 32 doubles (classify.hpp): builds its quadrics as from_doubles does.
-Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
-
 /// A validated ellipsoid, sign-normalized: M = Q3 positive definite, det E < 0.
 class Ellipsoid {
  public:
@@ -133,7 +127,7 @@ class Ellipsoid {
   /// The storage of the matrix (internal/quadric_matrix.hpp), found by argument-dependent lookup.
   friend const detail::QuadricMatrix& storage_of(const Ellipsoid& q) { return q.m_; }
   friend Ellipsoid detail::make_ellipsoid(detail::QuadricMatrix m);
-  friend Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
+  friend struct detail::QuadricAccess;
   explicit Ellipsoid(Matrix4 m) : m_(std::move(m)) {}
   explicit Ellipsoid(const DoubleMatrix4& d) : m_(d) {}
   explicit Ellipsoid(detail::QuadricMatrix m) : m_(std::move(m)) {}
@@ -167,12 +161,29 @@ class Paraboloid {
   /// The storage of the matrix (internal/quadric_matrix.hpp), found by argument-dependent lookup.
   friend const detail::QuadricMatrix& storage_of(const Paraboloid& q) { return q.m_; }
   friend Paraboloid detail::make_paraboloid(detail::QuadricMatrix m);
-  friend Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
+  friend struct detail::QuadricAccess;
   explicit Paraboloid(Matrix4 m) : m_(std::move(m)) {}
   explicit Paraboloid(const DoubleMatrix4& d) : m_(d) {}
   explicit Paraboloid(detail::QuadricMatrix m) : m_(std::move(m)) {}
   detail::QuadricMatrix m_;
 };
+
+namespace detail {
+
+/// What the library's own code may do with a quadric that its users may not, on this floor: build
+/// one from doubles before its shape is certified and negate their orientation in place
+/// (decide_position on 32 doubles certifies the shape from the pair's pencil, classify.hpp).
+struct QuadricAccess {
+  /// The quadric from_doubles builds, without its shape test: the caller certifies the shape.
+  template <class Q>
+  static Q from_doubles_unchecked(const DoubleMatrix4& d) {
+    return Q(d);
+  }
+  static QuadricMatrix& storage(Ellipsoid& e) { return e.m_; }
+  static QuadricMatrix& storage(Paraboloid& p) { return p.m_; }
+};
+
+}  // namespace detail
 
 /// Size limit on the *normalized* forms of a pair: each matrix divided by its own content (times the
 /// lcm of its denominators, then divided by the gcd of the resulting integers: its primitive integer

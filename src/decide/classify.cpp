@@ -59,13 +59,16 @@ Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
   // Matrices of doubles are within the size limit (check_normalized_pair_size): no check. The
   // ellipsoid's signs assume round to nearest: the ladder certifies the determinants (clears
   // `pending`) only in that mode; in any other the two steps below decide.
-  Ellipsoid ell(e);
-  Paraboloid par(p);
-  const int oe = shape_filter::ellipsoid_before_det_if_nearest(ell.m_.filter_doubles());
-  const int op = oe != 0 ? shape_filter::paraboloid_before_det(p, par.m_.filter_doubles()) : 0;
+  using detail::QuadricAccess;
+  Ellipsoid ell = QuadricAccess::from_doubles_unchecked<Ellipsoid>(e);
+  Paraboloid par = QuadricAccess::from_doubles_unchecked<Paraboloid>(p);
+  detail::QuadricMatrix& em = QuadricAccess::storage(ell);
+  detail::QuadricMatrix& pm = QuadricAccess::storage(par);
+  const int oe = shape_filter::ellipsoid_before_det_if_nearest(em.filter_doubles());
+  const int op = oe != 0 ? shape_filter::paraboloid_before_det(p, pm.filter_doubles()) : 0;
   if (op != 0) {
-    if (oe < 0) ell.m_.negate_doubles();
-    if (op < 0) par.m_.negate_doubles();
+    if (oe < 0) em.negate_doubles();
+    if (op < 0) pm.negate_doubles();
     bool pending = true;
     const detail::PairContext pair(ell, par);
     detail::Climb c(pair, true, &pending);
