@@ -43,14 +43,6 @@ using Coefficients10 = std::array<Rational, 10>;
 /// Row-major 4x4 matrix of doubles.
 using DoubleMatrix4 = std::array<double, 16>;
 
-/// The entries as doubles if each one is exactly representable, else nullopt.
-std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m);
-
-/// m times the power of two that brings its largest entry into [1/2, 1) (exact), or nullopt if a
-/// non-zero entry would become subnormal or m is zero or not finite: the input range of the static
-/// filter (static_filter.hpp). A positive scaling changes no decision (math.md §1).
-std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m);
-
 /// Exact affine type of a real quadric surface.
 enum class QuadricKind {
   Ellipsoid,
@@ -79,9 +71,6 @@ std::string to_string(QuadricKind kind);
 /// The affine type of X^T Q X = 0, decided exactly from the inertia of Q3 and of Q and rank Q.
 /// Q must be symmetric (throws InputError otherwise).
 QuadricKind classify_quadric(const Matrix4& q);
-
-/// Matrix from the 10 coefficients of the implicit equation (cross terms halved).
-Matrix4 matrix_from_coefficients(const Coefficients10& c);
 
 /// Exact rotation matrix R(q)/|q|^2 of a non-zero quaternion.
 Matrix3 rotation_from_quaternion(const Quaternion& q);
@@ -199,17 +188,5 @@ inline constexpr std::size_t kMaxNormalizedBits = 4096;
 struct SizeLimit {
   std::size_t max_bits = kMaxNormalizedBits;
 };
-
-/// Bits of the largest entry of the primitive integer form of m (0 for the zero matrix).
-std::size_t normalized_bits(const Matrix4& m);
-
-/// max(normalized_bits(e), normalized_bits(p)): independent of how either matrix was scaled.
-std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p);
-
-/// Throws InputError ("numbers too large: ...", naming the limit) when normalized_pair_bits(e, p) >
-/// limit.max_bits, and InputError when limit.max_bits < kMaxNormalizedBits (the limit is raised,
-/// never lowered). Returns a bound on normalized_pair_bits(e, p) that is exact when it exceeds
-/// kMaxNormalizedBits (0 for matrices known to be within it without a computation).
-std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
 
 }  // namespace relpos

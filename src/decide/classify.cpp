@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "algebra/pair_size.hpp"
 #include "algebra/shape_filter.hpp"
 #include "base/large_stack.hpp"
 #include "decide/evidence.hpp"
@@ -45,7 +46,7 @@ Verdict decide_position(const Ellipsoid& e, const Paraboloid& p, const SizeLimit
   // tests, without the call.
   std::size_t bits = 0;
   if (!storage_of(e).within_size_limit() || !storage_of(p).within_size_limit())
-    bits = check_normalized_pair_size(e, p, limit);
+    bits = detail::check_normalized_pair_size(e, p, limit);
   return with_stack_for(bits, [&] {
     const detail::PairContext pair(e, p);
     detail::Climb c(pair, true);
@@ -82,11 +83,13 @@ Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
 }
 
 Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
-  return with_stack_for(check_normalized_pair_size(e, p, limit), [&] { return classify_impl(e, p, evidence, true); });
+  return with_stack_for(detail::check_normalized_pair_size(e, p, limit),
+                        [&] { return classify_impl(e, p, evidence, true); });
 }
 
 Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
-  return with_stack_for(check_normalized_pair_size(e, p, limit), [&] { return classify_impl(e, p, evidence, false); });
+  return with_stack_for(detail::check_normalized_pair_size(e, p, limit),
+                        [&] { return classify_impl(e, p, evidence, false); });
 }
 
 Classification detail::classify_unchecked(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {

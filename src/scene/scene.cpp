@@ -18,7 +18,9 @@
 #include "scene/certificates.hpp"
 
 namespace relpos {
+namespace {
 
+/// The scene view of a core verdict.
 SceneVerdict scene_verdict(const Verdict& v) {
   SceneVerdict out;
   out.position = v.position;
@@ -26,8 +28,6 @@ SceneVerdict scene_verdict(const Verdict& v) {
   out.stage = v.stage;
   return out;
 }
-
-namespace {
 
 using Interval = CGAL::Interval_nt<false>;  // paraboloid constants only (needs Protect_FPU_rounding)
 using RB = RunningBound;                    // the per-body filter (running_bound.hpp)
