@@ -38,6 +38,7 @@
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 #include "scene/demo.hpp"
+#include "scene/scene_pool.hpp"
 
 namespace relpos_cli {
 namespace {
@@ -476,10 +477,11 @@ int run_scene(Args& args) {
       }
     }
     relpos::SceneOptions options;
-    options.threads = threads;
     options.size_limit = options_line.size_limit;
     options.progress = &bar.counter();  // ...and one when answered
-    const relpos::SceneResult result = scene.classify(bodies, options);
+    // On the pool that parsed the block: one pool for the whole run, not one per block.
+    const relpos::SceneResult result =
+        relpos::detail::SceneAccess::classify(scene, bodies.data(), bodies.size(), options, parse_pool);
     classify_seconds += result.seconds;
     used_threads = std::max(used_threads, result.threads);
     counts.merge(result.counts);

@@ -36,6 +36,10 @@
 
 namespace relpos {
 
+namespace detail {
+struct SceneAccess;  // the library's access to a scene (src/scene/scene_pool.hpp)
+}  // namespace detail
+
 // ------------------------------------------------------------------------------------------------
 // Scene classification
 // ------------------------------------------------------------------------------------------------
@@ -110,6 +114,7 @@ class Scene {
   struct PreparedParaboloid;  // the precomputed paraboloid data (scene.cpp)
 
  private:
+  friend struct detail::SceneAccess;
   Paraboloid p_;
   std::shared_ptr<const PreparedParaboloid> prepared_;
 };

@@ -16,6 +16,7 @@
 #include "decide/many_pairs.hpp"
 #include "filters/running_bound.hpp"
 #include "scene/certificates.hpp"
+#include "scene/scene_pool.hpp"
 
 namespace relpos {
 namespace {
@@ -391,18 +392,31 @@ SceneVerdict Scene::classify(const Ellipsoid& e) const {
 
 SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const SceneOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
+  const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
+  unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
+  threads =
+      static_cast<unsigned>(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, (count + chunk - 1) / chunk)));
+  detail::WorkerPool pool(threads);  // fewer threads when one cannot start: the others do its work
+  SceneResult result = detail::SceneAccess::classify(*this, bodies, count, options, pool);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+SceneResult detail::SceneAccess::classify(const Scene& scene, const Ellipsoid* bodies, std::size_t count,
+                                          const SceneOptions& options, WorkerPool& pool) {
+  const auto start = std::chrono::steady_clock::now();
   SceneResult result;
   result.verdicts.resize(count);
   const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
   const std::size_t chunks = (count + chunk - 1) / chunk;
-  unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
-  threads = static_cast<unsigned>(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, chunks)));
+  const unsigned threads = pool.threads();
 
   std::atomic<std::size_t> next{0};
   std::vector<SceneCounts> counts(threads);
   std::vector<std::exception_ptr> errors(threads);
   SceneVerdict* out = result.verdicts.data();
-  const PreparedParaboloid& prepared = *prepared_;
+  const Scene::PreparedParaboloid& prepared = *scene.prepared_;
+  const Paraboloid& p = scene.p_;
 
   auto work = [&](unsigned w) {
     SceneCounts local;  // per thread, merged once at the end (no shared cache lines while counting)
@@ -414,7 +428,7 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
         const std::size_t c = next.fetch_add(1, std::memory_order_relaxed);
         if (c >= chunks) break;
         const std::size_t lo = c * chunk, hi = std::min(count, lo + chunk);
-        classify_chunk(prepared, p_, bodies, lo, hi, options, out, pending, decided);
+        classify_chunk(prepared, p, bodies, lo, hi, options, out, pending, decided);
         for (std::size_t i = lo; i < hi; ++i) local.add(out[i]);
         if (options.progress) options.progress->fetch_add(hi - lo, std::memory_order_relaxed);
       }
@@ -425,8 +439,8 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
     counts[w] = local;
   };
 
-  detail::WorkerPool pool(threads);
-  result.threads = pool.threads();  // fewer when a thread cannot start: the others do its work
+  // The pool's threads that have bodies to take: at most one per chunk (the others find none).
+  result.threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, chunks)));
   pool.run_on_each(work);
   for (const auto& err : errors)
     if (err) std::rethrow_exception(err);
