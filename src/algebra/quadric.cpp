@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "algebra/coefficients.hpp"
 #include "algebra/forms.hpp"
 #include "algebra/matrix4.hpp"
 #include "algebra/quadric_kind.hpp"
@@ -98,7 +99,7 @@ Rational squared_norm_minus(const Vector3& c, const Rational& r) {
 
 }  // namespace
 
-Matrix4 matrix_from_coefficients(const Coefficients10& c) {
+Matrix4 detail::matrix_from_coefficients(const Coefficients10& c) {
   const Rational half(1, 2);
   Matrix4 m;
   m(0, 0) = c[0];
@@ -181,7 +182,9 @@ Ellipsoid Ellipsoid::from_matrix(const Matrix4& e) {
   return Ellipsoid(e(0, 0) > 0 ? e : negated(e));
 }
 
-Ellipsoid Ellipsoid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
+Ellipsoid Ellipsoid::from_coefficients(const Coefficients10& c) {
+  return from_matrix(detail::matrix_from_coefficients(c));
+}
 
 Ellipsoid Ellipsoid::translated(const Vector3& d) const {
   const Matrix4& q = matrix();
@@ -249,7 +252,9 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
   return Paraboloid(p(0, 0) + p(1, 1) + p(2, 2) > 0 ? p : negated(p));
 }
 
-Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
+Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) {
+  return from_matrix(detail::matrix_from_coefficients(c));
+}
 
 Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Rational& b, const Quaternion& q) {
   if (a <= 0 || b <= 0)

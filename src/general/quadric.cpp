@@ -2,6 +2,7 @@
 // normalization, refusal of degenerate and imaginary quadrics, and the geometric forms.
 #include <utility>
 
+#include "algebra/coefficients.hpp"
 #include "algebra/matrix4.hpp"
 #include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
@@ -183,7 +184,7 @@ Quadric Quadric::from_doubles(const DoubleMatrix4& d) {
   return from_matrix(exact);
 }
 
-Quadric Quadric::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
+Quadric Quadric::from_coefficients(const Coefficients10& c) { return from_matrix(detail::matrix_from_coefficients(c)); }
 
 Quadric Quadric::of(const Ellipsoid& e) { return Quadric(storage_of(e), QuadricType::Ellipsoid); }
 Quadric Quadric::of(const Paraboloid& p) { return Quadric(storage_of(p), QuadricType::EllipticParaboloid); }

@@ -33,7 +33,7 @@ Matrix4 ScaledFamily::at_square(const Rational& v) const {
 
 }  // namespace detail
 
-Ellipsoid scaled_about_centre(const Ellipsoid& e, const Rational& factor) {
+Ellipsoid detail::scaled_about_centre(const Ellipsoid& e, const Rational& factor) {
   if (!(factor > 0)) throw InputError("the scale factor must be positive, got " + to_string(factor));
   // M is unchanged and det E_q = -q^2 k det M < 0: a real ellipsoid, sign-normalized as E is.
   return detail::make_ellipsoid(detail::QuadricMatrix(detail::scaled_family(e.matrix()).at(factor)));

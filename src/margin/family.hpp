@@ -26,4 +26,11 @@ struct ScaledFamily {
 /// The family of the matrix of a real ellipsoid (M positive definite, det E < 0).
 ScaledFamily scaled_family(const Matrix4& e);
 
+/// The largest `bits` margin() accepts (each bit costs the certificates about one bit of length).
+inline constexpr int kMaxMarginBits = 1000;
+
+/// The ellipsoid scaled by `factor` > 0 about its centre (InputError otherwise): the matrix with
+/// the corner entry e0 + k (1 - factor^2), k = -e(centre) (math.md §19).
+Ellipsoid scaled_about_centre(const Ellipsoid& e, const Rational& factor);
+
 }  // namespace relpos::detail

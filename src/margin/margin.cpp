@@ -17,6 +17,7 @@
 
 #include "algebra/between.hpp"
 #include "algebra/irreducible.hpp"
+#include "algebra/pair_size.hpp"
 #include "algebra/polynomial_sign.hpp"
 #include "algebra/power_of_two.hpp"
 #include "certificate/build.hpp"
@@ -61,7 +62,7 @@ Rational sqrt_bound(const Rational& x, bool above) {
 /// FLINT's factorisation.
 std::vector<std::vector<Integer>> factors_of(const std::vector<Integer>& p) {
   if (detail::proven_irreducible(p)) return {p};
-  return irreducible_factors(p);
+  return detail::irreducible_factors(p);
 }
 
 /// A positive real root of one irreducible factor of the margin polynomial in u.
@@ -193,10 +194,10 @@ AlgebraicReal Margin::value() const {
 }
 
 Margin margin(const Ellipsoid& e, const Paraboloid& p, int bits) {
-  if (bits < 1 || bits > kMaxMarginBits)
-    throw InputError("margin: bits must be from 1 to " + std::to_string(kMaxMarginBits) + ", got " +
+  if (bits < 1 || bits > detail::kMaxMarginBits)
+    throw InputError("margin: bits must be from 1 to " + std::to_string(detail::kMaxMarginBits) + ", got " +
                      std::to_string(bits));
-  check_normalized_pair_size(e, p);
+  detail::check_normalized_pair_size(e, p);
   const detail::ScaledFamily family = detail::scaled_family(e.matrix());
   const Rational centre_value = detail::form_at(p.matrix(), family.centre);  // < 0: inside the cup
   Margin out;

@@ -316,7 +316,7 @@ bool excused(Judged& c, const Answer& a, Position truth, const Rational& tau, Ju
   if (!m) m = member(c.line.meta, margin_key(c.truth_kind));
   if (!m) return false;
   try {
-    const Margin margin = margin_from_json(*m);
+    const MarginValue margin = margin_from_json(*m);
     CentreSide side = truth == Position::I || truth == Position::TI ? CentreSide::Inside : CentreSide::Outside;
     if (truth == Position::C) side = side_of(*c.pair().e, *c.pair().p);
     return within_tolerance(*a.position, side, margin, tau);
