@@ -41,5 +41,9 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 /// out.meta (set once the members are scanned: empty before, and when the line has none).
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
                      BatchLine& out, std::string_view* id = nullptr, std::string_view* meta = nullptr);
+/// The same for a scene line against a general quadric (doc/cli.md, "relpos scene"): out.ellipsoid
+/// only, the size limit checked against `fixed` by check_general_pair_size (general_io.hpp).
+void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Quadric& fixed,
+                     BatchLine& out, std::string_view* id = nullptr, std::string_view* meta = nullptr);
 
 }  // namespace relpos::io

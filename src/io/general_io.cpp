@@ -1,6 +1,7 @@
 // JSON in and out for the general quadrics (src/io/general_io.hpp; doc/cli.md, "General quadrics").
 #include "io/general_io.hpp"
 
+#include <algorithm>
 #include <array>
 #include <initializer_list>
 #include <sstream>
@@ -202,6 +203,16 @@ Quadric quadric_from_json(const Json& v, const std::string& role) {
   fail(role,
        "no recognized quadric form (expected a 4x4 array or an object with \"matrix\", \"coefficients\" or "
        "\"type\")");
+}
+
+void check_general_pair_size(const Ellipsoid& e, const Quadric& q) {
+  const std::size_t bits = std::max(storage_of(e).within_size_limit() ? 0 : normalized_bits(e.matrix()),
+                                    storage_of(q).within_size_limit() ? 0 : normalized_bits(q.matrix()));
+  if (bits > kMaxNormalizedBits)
+    throw InputError(
+        "numbers too large: a matrix of the pair, divided by its own content (its primitive integer form), has " +
+        std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxNormalizedBits) +
+        " bits (kMaxNormalizedBits, doc/cli.md, Limits)");
 }
 
 std::optional<QuadricPosition> quadric_position_from_text(const std::string& s) {

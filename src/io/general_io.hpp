@@ -21,6 +21,11 @@ namespace relpos::io {
 /// InputError "<role>: ..." naming the field, or what the matrix is when it is refused.
 Quadric quadric_from_json(const detail::Json& value, const std::string& role = "quadric");
 
+/// The pair's size limit (doc/cli.md, Limits): InputError "numbers too large: ..." when a matrix's
+/// primitive integer form has entries beyond kMaxNormalizedBits bits, the message of
+/// check_normalized_pair_size. Free for matrices of doubles (always within the limit).
+void check_general_pair_size(const Ellipsoid& e, const Quadric& q);
+
 /// The same pair as a multi-line report (relpos classify --quadric).
 std::string general_answer_text(const QuadricClassification& c, int digits);
 
