@@ -566,16 +566,17 @@ int run_scene(Args& args) {
     for (const relpos::Position pos : relpos::kAllPositions) positions[relpos::to_string(pos)] = counts.count(pos);
     for (const relpos::Stage s : relpos::kSceneStages) stages[relpos::to_string(s)] = counts.count(s);
   }
-  const std::size_t bodies = fixed.quadric ? general_counts.bodies : counts.bodies;
+  const std::size_t classified = fixed.quadric ? general_counts.bodies : counts.bodies;
   Json summary;
-  summary["bodies"] = bodies;
+  summary["bodies"] = classified;
   summary["errors"] = errors;
   summary["positions"] = positions;
   summary["stages"] = stages;
   summary["threads"] = used_threads;
   summary["seconds"] = Json{{"classify", significant(classify_seconds)}, {"total", significant(total_seconds)}};
-  summary["bodies_per_second"] = Json{{"classify", significant(classify_seconds > 0 ? bodies / classify_seconds : 0.0)},
-                                      {"total", significant(total_seconds > 0 ? bodies / total_seconds : 0.0)}};
+  summary["bodies_per_second"] =
+      Json{{"classify", significant(classify_seconds > 0 ? classified / classify_seconds : 0.0)},
+           {"total", significant(total_seconds > 0 ? classified / total_seconds : 0.0)}};
   relpos_cli::Output err(STDERR_FILENO);  // the summary may be the only output: its loss is an error
   err.write(dump(Json{{"summary", summary}}) + "\n");
   return err.flush() ? kExitOk : err.report_failure();

@@ -831,6 +831,9 @@ def scene(
     the classifier (the same positions). max_bits: the size limit, as for classify ("bodies[i]:
     numbers too large: ..."). Ctrl-C stops the call (KeyboardInterrupt) within a fraction of a second.
     """
+    if isinstance(p, Quadric):
+        raise TypeError("scene: p must be a relpos.Paraboloid or a paraboloid's description, got Quadric (many "
+                        "ellipsoids against a relpos.Quadric: decide_positions(E, q), or `relpos scene --quadric`)")
     if not isinstance(p, Paraboloid):
         p = Paraboloid(p)
     return SceneResult(*_relpos._scene(p, bodies, _thread_count(threads), bool(early_outs), _max_bits(max_bits)))

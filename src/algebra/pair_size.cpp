@@ -1,5 +1,7 @@
 // The pair's size limit (kMaxNormalizedBits, doc/cli.md, Limits): the bits of a matrix's primitive
 // integer form, bounded first from the lcm of its denominators alone.
+#include "algebra/pair_size.hpp"
+
 #include <gmp.h>
 
 #include <algorithm>
@@ -49,7 +51,9 @@ std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
   return std::max(normalized_bits(e.matrix()), normalized_bits(p.matrix()));
 }
 
-std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+namespace detail {
+
+std::size_t check_normalized_size(const QuadricMatrix& a, const QuadricMatrix& b, const SizeLimit& limit) {
   if (limit.max_bits < kMaxNormalizedBits)
     throw InputError("the size limit is at least " + std::to_string(kMaxNormalizedBits) + " bits, got " +
                      std::to_string(limit.max_bits) + " (it can be raised, not lowered: doc/cli.md, Limits)");
@@ -63,8 +67,8 @@ std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, 
     const std::size_t bound = normalized_bits_bound(m);
     return bound <= kMaxNormalizedBits ? bound : normalized_bits(m);
   };
-  const std::size_t bits = std::max(storage_of(e).within_size_limit() ? 0 : bits_of(e.matrix()),
-                                    storage_of(p).within_size_limit() ? 0 : bits_of(p.matrix()));
+  const std::size_t bits =
+      std::max(a.within_size_limit() ? 0 : bits_of(a.matrix()), b.within_size_limit() ? 0 : bits_of(b.matrix()));
   if (bits > limit.max_bits)
     throw InputError(
         "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "
@@ -73,6 +77,12 @@ std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, 
         (limit.max_bits == kMaxNormalizedBits ? " bits (kMaxNormalizedBits, doc/cli.md, Limits)"
                                               : " bits (the limit given, doc/cli.md, Limits)"));
   return bits;
+}
+
+}  // namespace detail
+
+std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+  return detail::check_normalized_size(storage_of(e), storage_of(p), limit);
 }
 
 }  // namespace relpos

@@ -82,7 +82,8 @@ class LineReader {
     if (given("quadric")) return read_quadric(ellipsoid, paraboloid);
     if (fixed_quadric_) {  // a scene line against a general quadric (doc/cli.md, "relpos scene")
       if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
-      return check_general_pair_size(*out_.ellipsoid, *fixed_quadric_);
+      check_general_pair_size(*out_.ellipsoid, *fixed_quadric_);
+      return;
     }
     if (!fixed_ && !out_.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
     if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");

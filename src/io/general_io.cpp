@@ -1,12 +1,12 @@
 // JSON in and out for the general quadrics (src/io/general_io.hpp; doc/cli.md, "General quadrics").
 #include "io/general_io.hpp"
 
-#include <algorithm>
 #include <array>
 #include <initializer_list>
 #include <sstream>
 #include <string>
 
+#include "algebra/pair_size.hpp"
 #include "io/json_values.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
@@ -206,13 +206,7 @@ Quadric quadric_from_json(const Json& v, const std::string& role) {
 }
 
 void check_general_pair_size(const Ellipsoid& e, const Quadric& q) {
-  const std::size_t bits = std::max(storage_of(e).within_size_limit() ? 0 : normalized_bits(e.matrix()),
-                                    storage_of(q).within_size_limit() ? 0 : normalized_bits(q.matrix()));
-  if (bits > kMaxNormalizedBits)
-    throw InputError(
-        "numbers too large: a matrix of the pair, divided by its own content (its primitive integer form), has " +
-        std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxNormalizedBits) +
-        " bits (kMaxNormalizedBits, doc/cli.md, Limits)");
+  relpos::detail::check_normalized_size(storage_of(e), storage_of(q), SizeLimit{});  // doc/cli.md, Limits
 }
 
 std::optional<QuadricPosition> quadric_position_from_text(const std::string& s) {

@@ -231,6 +231,21 @@ def test_errors_are_the_clis():
         with pytest.raises(ValueError) as err:
             relpos.Quadric(q)
         assert str(err.value) == a["error"]
+    # The pair size limit (doc/cli.md, Limits): a ball of radius 10^-2000 has a primitive integer form of
+    # about 13 000 bits; classify, decide_positions and `relpos scene --quadric` refuse it as the batch
+    # line does.
+    tiny = {"type": "sphere", "center": [0, 0, 0], "radius": "1e-2000"}
+    line = cli_batch([{"id": 0, "ellipsoid": e, "quadric": tiny}])[0]
+    assert line["error"].startswith("numbers too large: ")
+    with pytest.raises(ValueError) as err:
+        relpos.classify(relpos.Ellipsoid(e), relpos.Quadric(tiny))
+    assert str(err.value) == line["error"]
+    with pytest.raises(ValueError) as err:
+        relpos.decide_positions(numpy.array([numpy.diag([1.0, 1.0, 1.0, -1.0])]), relpos.Quadric(tiny))
+    assert str(err.value) == "E[0]: ellipsoid: " + line["error"]
+    run = subprocess.run([cli(), "scene", "--quadric", json.dumps(tiny), "--no-progress"],
+                         input=json.dumps({"ellipsoid": e}) + "\n", capture_output=True, text=True, check=True)
+    assert json.loads(run.stdout)["error"] == line["error"]
     ellipsoid, q = relpos.Ellipsoid(e), relpos.Quadric(H)
     with pytest.raises(ValueError, match="margin"):
         relpos.classify(ellipsoid, q, margin=True)
@@ -240,6 +255,8 @@ def test_errors_are_the_clis():
         relpos.verify(ellipsoid, q, relpos.classify(ellipsoid, relpos.Paraboloid.standard((0, 0, 0), 1, 1)))
     with pytest.raises(TypeError):
         relpos.contact(ellipsoid, q)  # the contact-only predicate is the paraboloid's
+    with pytest.raises(TypeError, match="decide_positions"):
+        relpos.scene(q, [ellipsoid])
     with pytest.raises(TypeError, match="not built"):
         relpos.classify(ellipsoid, relpos.Quadric.__new__(relpos.Quadric))
     with pytest.raises(TypeError, match="already built"):
