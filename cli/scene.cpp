@@ -138,10 +138,11 @@ enum class Format { Jsonl, Csv };
 struct FixedBody {
   std::optional<relpos::Paraboloid> paraboloid;
   std::optional<relpos::Quadric> quadric;
+  std::optional<relpos::io::GeneralPairSize> quadric_size;  ///< the quadric's size, computed once
   /// The pair size limit of `relpos batch` for a body against it.
   void check_size(const relpos::Ellipsoid& e, const relpos::SizeLimit& limit) const {
     if (quadric)
-      relpos::io::check_general_pair_size(e, *quadric);
+      quadric_size->check(e);
     else
       relpos::check_normalized_pair_size(e, *paraboloid, limit);
   }
@@ -209,7 +210,7 @@ void parse_line(const std::string& line, Format format, const relpos::io::BatchO
       relpos::io::BatchLine in;
       try {
         if (fixed.quadric)
-          relpos::io::read_batch_line(line, out.line, options, *fixed.quadric, in);
+          relpos::io::read_batch_line(line, out.line, options, *fixed.quadric_size, in);
         else
           relpos::io::read_batch_line(line, out.line, options, &*fixed.paraboloid, in);
       } catch (...) {
@@ -417,10 +418,12 @@ int run_scene(Args& args) {
     shapes.check(/*need_ellipsoid=*/false);
   }
   try {
-    if (quadric_text)
+    if (quadric_text) {
       fixed.quadric = relpos::io::quadric_from_json(parse_inline(*quadric_text, "quadric"), "quadric");
-    else
+      fixed.quadric_size.emplace(*fixed.quadric);
+    } else {
       fixed.paraboloid = shapes.make_paraboloid();
+    }
   } catch (const relpos::InputError& e) {
     std::cerr << "relpos: " << e.what() << "\n";
     return kExitInput;

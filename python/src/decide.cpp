@@ -411,6 +411,7 @@ py::array_t<std::int8_t> decide_positions_quadric(py::handle e_input, const relp
   const std::size_t n = *e_side.n;
   py::array_t<std::int8_t> out(static_cast<py::ssize_t>(n));
   std::int8_t* codes = out.mutable_data();
+  const relpos::io::GeneralPairSize size(q);  // the quadric's size once
   std::size_t error_index = std::numeric_limits<std::size_t>::max();
   std::string error_message;
   SignalWatch watch;  // Ctrl-C: the calling thread polls between its chunks, every thread stops
@@ -430,7 +431,7 @@ py::array_t<std::int8_t> decide_positions_quadric(py::handle e_input, const relp
         for (std::size_t i = begin; i < std::min(n, begin + kChunk); ++i) {
           try {
             const relpos::Ellipsoid e = e_side.ellipsoid(i);
-            relpos::io::check_general_pair_size(e, q);
+            size.check(e);
             codes[i] = static_cast<std::int8_t>(relpos::decide_position(e, q).position);
           } catch (const std::exception& err) {
             codes[i] = kInvalid;

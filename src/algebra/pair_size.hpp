@@ -15,5 +15,7 @@ namespace relpos::detail {
 /// (0 for matrices known to be within the limit without a computation: doubles, the fast reader's
 /// numbers).
 std::size_t check_normalized_size(const QuadricMatrix& a, const QuadricMatrix& b, const SizeLimit& limit);
+/// The same for one matrix (the other known to be within the limit: the same message for the pair).
+std::size_t check_normalized_size(const QuadricMatrix& a, const SizeLimit& limit);
 
 }  // namespace relpos::detail

@@ -54,7 +54,7 @@ std::string_view key_name(std::string_view key_text, std::string& storage) {
 class LineReader {
  public:
   LineReader(std::string_view line, long number, const BatchOptions& options, const Paraboloid* fixed,
-             const Quadric* fixed_quadric, BatchLine& out, std::string_view* id, std::string_view* meta)
+             const GeneralPairSize* fixed_quadric, BatchLine& out, std::string_view* id, std::string_view* meta)
       : line_(line),
         number_(number),
         options_(options),
@@ -82,7 +82,7 @@ class LineReader {
     if (given("quadric")) return read_quadric(ellipsoid, paraboloid);
     if (fixed_quadric_) {  // a scene line against a general quadric (doc/cli.md, "relpos scene")
       if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
-      check_general_pair_size(*out_.ellipsoid, *fixed_quadric_);
+      fixed_quadric_->check(*out_.ellipsoid);
       return;
     }
     if (!fixed_ && !out_.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
@@ -252,8 +252,8 @@ class LineReader {
   long number_;
   const BatchOptions& options_;
   const Paraboloid* fixed_;
-  const Quadric* fixed_quadric_;  ///< a scene's general quadric (then fixed_ is null)
-  bool scene_;                    ///< a scene line: the second body is fixed
+  const GeneralPairSize* fixed_quadric_;  ///< a scene's general quadric (then fixed_ is null)
+  bool scene_;                            ///< a scene line: the second body is fixed
   BatchLine& out_;
   std::string_view* id_;
   std::string_view* meta_;
@@ -284,7 +284,7 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 namespace {
 
 void read_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
-               const Quadric* fixed_quadric, BatchLine& out, std::string_view* id, std::string_view* meta) {
+               const GeneralPairSize* fixed_quadric, BatchLine& out, std::string_view* id, std::string_view* meta) {
   out.id = std::to_string(line_number);
   if (id) *id = out.id;
   out.meta.clear();
@@ -303,7 +303,7 @@ void read_batch_line(std::string_view line, long line_number, const BatchOptions
   read_line(line, line_number, options, fixed, nullptr, out, id, meta);
 }
 
-void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Quadric& fixed,
+void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const GeneralPairSize& fixed,
                      BatchLine& out, std::string_view* id, std::string_view* meta) {
   read_line(line, line_number, options, nullptr, &fixed, out, id, meta);
 }

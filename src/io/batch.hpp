@@ -14,6 +14,8 @@
 
 namespace relpos::io {
 
+class GeneralPairSize;  // general_io.hpp
+
 /// One input line, read: the id as the JSON text to echo, and the quadrics.
 struct BatchLine {
   std::string id;    ///< the id's JSON text exactly as in the input, or the line number
@@ -42,8 +44,8 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
                      BatchLine& out, std::string_view* id = nullptr, std::string_view* meta = nullptr);
 /// The same for a scene line against a general quadric (doc/cli.md, "relpos scene"): out.ellipsoid
-/// only, the size limit checked against `fixed` by check_general_pair_size (general_io.hpp).
-void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Quadric& fixed,
+/// only, the size limit checked against the quadric by `fixed` (general_io.hpp).
+void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const GeneralPairSize& fixed,
                      BatchLine& out, std::string_view* id = nullptr, std::string_view* meta = nullptr);
 
 }  // namespace relpos::io

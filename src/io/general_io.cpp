@@ -209,6 +209,21 @@ void check_general_pair_size(const Ellipsoid& e, const Quadric& q) {
   relpos::detail::check_normalized_size(storage_of(e), storage_of(q), SizeLimit{});  // doc/cli.md, Limits
 }
 
+GeneralPairSize::GeneralPairSize(const Quadric& q) : q_(q) {
+  try {
+    relpos::detail::check_normalized_size(storage_of(q), SizeLimit{});
+  } catch (const InputError&) {
+    within_ = false;  // each pair's error then names the larger of its two matrices
+  }
+}
+
+void GeneralPairSize::check(const Ellipsoid& e) const {
+  if (within_)
+    relpos::detail::check_normalized_size(storage_of(e), SizeLimit{});
+  else
+    check_general_pair_size(e, q_);
+}
+
 std::optional<QuadricPosition> quadric_position_from_text(const std::string& s) {
   for (QuadricPosition p : kAllQuadricPositions)
     if (to_string(p) == s) return p;

@@ -26,6 +26,19 @@ Quadric quadric_from_json(const detail::Json& value, const std::string& role = "
 /// check_normalized_pair_size. Free for matrices of doubles (always within the limit).
 void check_general_pair_size(const Ellipsoid& e, const Quadric& q);
 
+/// check_general_pair_size for many ellipsoids against one quadric (a scene, Python's
+/// decide_positions): the quadric's own size computed once, each ellipsoid's as it comes; the same
+/// errors with the same messages.
+class GeneralPairSize {
+ public:
+  explicit GeneralPairSize(const Quadric& q);
+  void check(const Ellipsoid& e) const;
+
+ private:
+  const Quadric& q_;
+  bool within_ = true;  ///< q alone is within the limit
+};
+
 /// The same pair as a multi-line report (relpos classify --quadric).
 std::string general_answer_text(const QuadricClassification& c, int digits);
 

@@ -243,6 +243,14 @@ def test_errors_are_the_clis():
     with pytest.raises(ValueError) as err:
         relpos.decide_positions(numpy.array([numpy.diag([1.0, 1.0, 1.0, -1.0])]), relpos.Quadric(tiny))
     assert str(err.value) == "E[0]: ellipsoid: " + line["error"]
+    # ... and a tiny ellipsoid (long doubles, read exactly) against an ordinary quadric.
+    small = numpy.diag(numpy.array([1, 1, 1, "-1e-4000"], dtype=numpy.longdouble))
+    with pytest.raises(ValueError) as err:
+        relpos.classify(relpos.Ellipsoid(small), relpos.Quadric(H))
+    assert str(err.value).startswith("numbers too large: ")
+    with pytest.raises(ValueError) as by_array:
+        relpos.decide_positions(small[None], relpos.Quadric(H))
+    assert str(by_array.value) == "E[0]: ellipsoid: " + str(err.value)
     run = subprocess.run([cli(), "scene", "--quadric", json.dumps(tiny), "--no-progress"],
                          input=json.dumps({"ellipsoid": e}) + "\n", capture_output=True, text=True, check=True)
     assert json.loads(run.stdout)["error"] == line["error"]
