@@ -219,46 +219,54 @@ def _quadric_sphere(center: Vector3, radius: Number) -> Quadric:
 @_method(Quadric, "ellipsoid")
 @staticmethod
 def _quadric_ellipsoid(center: Vector3, axes: Vector3, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
-    """x'^2/a^2 + y'^2/b^2 + z'^2/c^2 <= 1, axes = (a, b, c). The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
-    the quaternion rotation = (w, x, y, z)."""
+    """x'^2/a^2 + y'^2/b^2 + z'^2/c^2 <= 1, axes = (a, b, c). The frame: origin at the first point, axes
+    the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
     return Quadric({"type": "ellipsoid", "center": center, "axes": axes, "rotation": rotation})
 
 
 @_method(Quadric, "hyperboloid_one_sheet")
 @staticmethod
-def _quadric_hyperboloid_one_sheet(center: Vector3, axes: Vector3, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
-    """x'^2/a^2 + y'^2/b^2 - z'^2/c^2 <= 1, axes = (a, b, c): the region around the axis. The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
-    the quaternion rotation = (w, x, y, z)."""
+def _quadric_hyperboloid_one_sheet(
+    center: Vector3, axes: Vector3, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 - z'^2/c^2 <= 1, axes = (a, b, c): the region around the axis. The frame: origin
+    at the first point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
     return Quadric({"type": "hyperboloid of one sheet", "center": center, "axes": axes, "rotation": rotation})
 
 
 @_method(Quadric, "hyperboloid_two_sheets")
 @staticmethod
-def _quadric_hyperboloid_two_sheets(center: Vector3, axes: Vector3, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
-    """x'^2/a^2 + y'^2/b^2 - z'^2/c^2 <= -1, axes = (a, b, c): the two caps. The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
-    the quaternion rotation = (w, x, y, z)."""
+def _quadric_hyperboloid_two_sheets(
+    center: Vector3, axes: Vector3, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 - z'^2/c^2 <= -1, axes = (a, b, c): the two caps. The frame: origin at the first
+    point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
     return Quadric({"type": "hyperboloid of two sheets", "center": center, "axes": axes, "rotation": rotation})
 
 
 @_method(Quadric, "cone")
 @staticmethod
 def _quadric_cone(apex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
-    """x'^2/a^2 + y'^2/b^2 <= z'^2: the double cone around the axis, apex at `apex`. The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
-    the quaternion rotation = (w, x, y, z)."""
+    """x'^2/a^2 + y'^2/b^2 <= z'^2: the double cone around the axis, apex at `apex`. The frame: origin at
+    the first point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
     return Quadric({"type": "elliptic cone", "apex": apex, "a": a, "b": b, "rotation": rotation})
 
 
 @_method(Quadric, "elliptic_paraboloid")
 @staticmethod
-def _quadric_elliptic_paraboloid(vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
-    """x'^2/a^2 + y'^2/b^2 <= z': inside the cup (as Paraboloid.standard). The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
-    the quaternion rotation = (w, x, y, z)."""
+def _quadric_elliptic_paraboloid(
+    vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 <= z': inside the cup (as Paraboloid.standard). The frame: origin at the first
+    point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
     return Quadric({"type": "elliptic paraboloid", "vertex": vertex, "a": a, "b": b, "rotation": rotation})
 
 
 @_method(Quadric, "hyperbolic_paraboloid")
 @staticmethod
-def _quadric_hyperbolic_paraboloid(vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
+def _quadric_hyperbolic_paraboloid(
+    vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
     """x'^2/a^2 - y'^2/b^2 <= z'. The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
     the quaternion rotation = (w, x, y, z)."""
     return Quadric({"type": "hyperbolic paraboloid", "vertex": vertex, "a": a, "b": b, "rotation": rotation})
@@ -266,25 +274,29 @@ def _quadric_hyperbolic_paraboloid(vertex: Vector3, a: Number, b: Number, rotati
 
 @_method(Quadric, "elliptic_cylinder")
 @staticmethod
-def _quadric_elliptic_cylinder(center: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
-    """x'^2/a^2 + y'^2/b^2 <= 1: the tube along the frame's z axis. The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
-    the quaternion rotation = (w, x, y, z)."""
+def _quadric_elliptic_cylinder(
+    center: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 <= 1: the tube along the frame's z axis. The frame: origin at the first point,
+    axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
     return Quadric({"type": "elliptic cylinder", "center": center, "a": a, "b": b, "rotation": rotation})
 
 
 @_method(Quadric, "hyperbolic_cylinder")
 @staticmethod
-def _quadric_hyperbolic_cylinder(center: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
-    """x'^2/a^2 - y'^2/b^2 <= 1: the connected middle, along the frame's z axis. The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
-    the quaternion rotation = (w, x, y, z)."""
+def _quadric_hyperbolic_cylinder(
+    center: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 - y'^2/b^2 <= 1: the connected middle, along the frame's z axis. The frame: origin at the
+    first point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
     return Quadric({"type": "hyperbolic cylinder", "center": center, "a": a, "b": b, "rotation": rotation})
 
 
 @_method(Quadric, "parabolic_cylinder")
 @staticmethod
 def _quadric_parabolic_cylinder(vertex: Vector3, a: Number, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
-    """x'^2/a^2 <= z': the convex side, ruled along the frame's y axis. The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
-    the quaternion rotation = (w, x, y, z)."""
+    """x'^2/a^2 <= z': the convex side, ruled along the frame's y axis. The frame: origin at the first
+    point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
     return Quadric({"type": "parabolic cylinder", "vertex": vertex, "a": a, "rotation": rotation})
 
 
@@ -307,7 +319,8 @@ def _quadric_slab(normal: Vector3, low: Number, high: Number) -> Quadric:
 def _quadric_of(body: Union[Ellipsoid, Paraboloid]) -> Quadric:
     """The same solid as a relpos.Ellipsoid or relpos.Paraboloid, as a Quadric (its exact matrix)."""
     if not isinstance(body, (Ellipsoid, Paraboloid)):
-        raise TypeError("Quadric.of: body must be a relpos.Ellipsoid or relpos.Paraboloid, got %s" % type(body).__name__)
+        raise TypeError("Quadric.of: body must be a relpos.Ellipsoid or relpos.Paraboloid, got %s"
+                        % type(body).__name__)
     return Quadric(body.matrix())
 
 

@@ -71,8 +71,8 @@ def quadric_file(tmp_path_factory):
     lines = [
         {"id": "h", "ellipsoid": ball, "quadric": {"type": "hyperboloid of one sheet", "center": [0, 0, 0],
                                                   "axes": [1, 1, 1]}},
-        {"id": "o", "ellipsoid": ball, "quadric": {"type": "ellipsoid", "center": [0.25, 0, 0], "axes": [0.5, 0.25, 0.125],
-                                                  "rotation": [1, 2, 3, 4]}},
+        {"id": "o", "ellipsoid": ball, "quadric": {"type": "ellipsoid", "center": [0.25, 0, 0],
+                                                  "axes": [0.5, 0.25, 0.125], "rotation": [1, 2, 3, 4]}},
         {"id": "c", "ellipsoid": ball, "quadric": {"type": "elliptic cylinder", "center": [1, 0, 0], "a": 0.5, "b": 2}},
         {"id": "e", "ellipsoid": ball, "quadric": {"type": "half-space", "normal": [1, 1, 1], "offset": -2}},
         {"id": "bad", "ellipsoid": ball, "quadric": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]},
