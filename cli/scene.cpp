@@ -1,11 +1,13 @@
-// relpos scene: one paraboloid against many ellipsoids, on all cores (doc/cli.md, "relpos scene").
+// relpos scene: one paraboloid, or any real quadric, against many ellipsoids, on all cores (doc/cli.md,
+// "relpos scene").
 //
-//   relpos scene (--paraboloid Q | --standard-paraboloid A,B) [FILE|-] [--format jsonl|csv]
+//   relpos scene (--paraboloid Q | --standard-paraboloid A,B | --quadric Q) [FILE|-] [--format jsonl|csv]
 //                [--threads N] [--summary-only] [--no-progress]
 //   relpos scene --generate N [--seed S] [--standard-paraboloid A,B]
 //
 // The input is read in blocks; each block is parsed and classified on all threads
-// (relpos::Scene), and its answers are written in input order. Exit codes as in main.cpp.
+// (relpos::Scene, or relpos::classify_scene for a general quadric), and its answers are written in
+// input order. Exit codes as in main.cpp.
 #include "relpos/scene.hpp"
 
 #include <unistd.h>
@@ -26,16 +28,20 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "algebra/pair_size.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "decide/stages.hpp"
+#include "general/decision.hpp"
 #include "io/answer_json.hpp"
 #include "io/batch.hpp"
+#include "io/general_io.hpp"
 #include "io/json_tree.hpp"
 #include "relpos/error.hpp"
+#include "relpos/general_scene.hpp"
 #include "relpos/io.hpp"
 #include "scene/demo.hpp"
 #include "scene/scene_pool.hpp"
@@ -50,8 +56,8 @@ constexpr std::size_t kBlockLines = std::size_t(1) << 12;
 }  // namespace
 
 void print_scene_help(std::ostream& os) {
-  os << "Usage: relpos scene (--paraboloid Q | --standard-paraboloid A,B) [FILE|-] [--format jsonl|csv]\n"
-        "                    [--threads N] [--summary-only] [--no-progress]\n"
+  os << "Usage: relpos scene (--paraboloid Q | --standard-paraboloid A,B | --quadric Q) [FILE|-]\n"
+        "                    [--format jsonl|csv] [--threads N] [--summary-only] [--no-progress]\n"
         "       relpos scene --generate N [--seed S] [--standard-paraboloid A,B]\n"
         "\n"
         "Classify many ellipsoids against one paraboloid, on all cores. Every body gets exactly the\n"
@@ -78,6 +84,9 @@ void print_scene_help(std::ostream& os) {
         "Options:\n"
         "  --paraboloid Q             the paraboloid as inline JSON (see `relpos classify --help`)\n"
         "  --standard-paraboloid A,B  x^2/A^2 + y^2/B^2 = z\n"
+        "  --quadric Q                any real quadric in place of the paraboloid (doc/quadrics.md; Q as\n"
+        "                             for `relpos classify --quadric`): positions I, TI, C, TE, E, and O,\n"
+        "                             TO, EQ when Q is an ellipsoid; stages filter and exact\n"
         "  --format jsonl|csv         input format\n"
         "  --threads N                worker threads (default: all cores)\n"
         "  --summary-only             print only the summary (on standard error)\n"
@@ -96,8 +105,8 @@ void print_scene_help(std::ostream& os) {
         "  relpos scene --standard-paraboloid 1,2 scene.csv > answers.jsonl\n"
         "\n"
         "Lines are read as by `relpos batch` (the same errors, limits and id echo).\n"
-        "Exit codes: 0 success (every body answered, error lines included), 1 the paraboloid cannot be\n"
-        "read, 2 usage error, 3 I/O error, 4 internal error.\n";
+        "Exit codes: 0 success (every body answered, error lines included), 1 the paraboloid (or the\n"
+        "quadric) cannot be read, 2 usage error, 3 I/O error, 4 internal error.\n";
 }
 
 namespace {
@@ -129,6 +138,20 @@ std::vector<std::string> split_commas(const std::string& text) {
 
 enum class Format { Jsonl, Csv };
 
+/// The scene's fixed body: the paraboloid, or a general quadric (--quadric).
+struct FixedBody {
+  std::optional<relpos::Paraboloid> paraboloid;
+  std::optional<relpos::Quadric> quadric;
+  std::optional<relpos::io::GeneralPairSize> quadric_size;  ///< the quadric's size, computed once
+  /// The pair size limit of `relpos batch` for a body against it.
+  void check_size(const relpos::Ellipsoid& e, const relpos::SizeLimit& limit) const {
+    if (quadric)
+      quadric_size->check(e);
+    else
+      relpos::detail::check_normalized_pair_size(e, *paraboloid, limit);
+  }
+};
+
 /// One input line, parsed.
 struct Parsed {
   bool skip = false;  ///< CSV comment or blank line: no output
@@ -139,8 +162,7 @@ struct Parsed {
   std::string error;
 };
 
-void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, const relpos::Paraboloid& p,
-               Parsed& out) {
+void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, const FixedBody& fixed, Parsed& out) {
   const std::string line = trim(std::string(relpos::io::normalize_line(raw, out.line, options.max_line_bytes)));
   if (line.empty() || line[0] == '#') {
     out.skip = true;
@@ -179,19 +201,22 @@ void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, co
   } catch (const relpos::InputError& e) {
     throw relpos::InputError(std::string("ellipsoid: ") + e.what());
   }
-  relpos::detail::check_normalized_pair_size(*out.body, p, options.size_limit);  // the limit of `relpos batch`
+  fixed.check_size(*out.body, options.size_limit);  // the limit of `relpos batch`
 }
 
 /// Parse a line; never throws (errors land in out.error). JSON Lines go through the reader of
 /// `relpos batch` (relpos::io::read_batch_line), so both commands answer a line alike.
-void parse_line(const std::string& line, Format format, const relpos::io::BatchOptions& options,
-                const relpos::Paraboloid& p, Parsed& out) {
+void parse_line(const std::string& line, Format format, const relpos::io::BatchOptions& options, const FixedBody& fixed,
+                Parsed& out) {
   out.id = std::to_string(out.line);
   try {
     if (format == Format::Jsonl) {
       relpos::io::BatchLine in;
       try {
-        relpos::io::read_batch_line(line, out.line, options, &p, in);
+        if (fixed.quadric)
+          relpos::io::read_batch_line(line, out.line, options, *fixed.quadric_size, in);
+        else
+          relpos::io::read_batch_line(line, out.line, options, &*fixed.paraboloid, in);
       } catch (...) {
         out.id = std::move(in.id);
         out.meta = std::move(in.meta);
@@ -201,7 +226,7 @@ void parse_line(const std::string& line, Format format, const relpos::io::BatchO
       out.meta = std::move(in.meta);
       out.body = std::move(in.ellipsoid);
     } else {
-      parse_csv(line, options, p, out);
+      parse_csv(line, options, fixed, out);
     }
   } catch (const relpos::InputError& e) {
     out.error = e.what();
@@ -340,7 +365,7 @@ int run_generate(unsigned long long n, unsigned long long seed, const ShapeOptio
 
 int run_scene(Args& args) {
   ShapeOptions shapes;
-  std::optional<std::string> file, format_text;
+  std::optional<std::string> file, format_text, quadric_text;
   std::optional<unsigned long long> generate;
   unsigned long long seed = 1;
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
@@ -352,6 +377,8 @@ int run_scene(Args& args) {
       print_scene_help(std::cout);
       return relpos_cli::finish_cout();
     } else if (shapes.take(args)) {
+    } else if (args.value("--quadric", v)) {
+      quadric_text = v;
     } else if (args.value("--format", v)) {
       if (v != "jsonl" && v != "csv") throw UsageError{"--format must be jsonl or csv, got '" + v + "'"};
       format_text = v;
@@ -377,7 +404,7 @@ int run_scene(Args& args) {
     }
   }
   if (generate) {
-    if (shapes.paraboloid || shapes.ellipsoid || shapes.sphere || file || format_text || summary_only)
+    if (shapes.paraboloid || shapes.ellipsoid || shapes.sphere || quadric_text || file || format_text || summary_only)
       throw UsageError{"--generate takes only --seed and --standard-paraboloid"};
     try {
       return run_generate(*generate, seed, shapes);
@@ -386,11 +413,21 @@ int run_scene(Args& args) {
       return kExitInput;
     }
   }
-  shapes.check(/*need_ellipsoid=*/false);
-
-  std::optional<relpos::Paraboloid> p;
+  FixedBody fixed;
+  if (quadric_text) {
+    if (shapes.paraboloid || shapes.standard)
+      throw UsageError{"give either --quadric or a paraboloid (--paraboloid, --standard-paraboloid), not both"};
+    if (shapes.ellipsoid || shapes.sphere) throw UsageError{"this command takes no ellipsoid option"};
+  } else {
+    shapes.check(/*need_ellipsoid=*/false);
+  }
   try {
-    p = shapes.make_paraboloid();
+    if (quadric_text) {
+      fixed.quadric = relpos::io::quadric_from_json(parse_inline(*quadric_text, "quadric"), "quadric");
+      fixed.quadric_size.emplace(*fixed.quadric);
+    } else {
+      fixed.paraboloid = shapes.make_paraboloid();
+    }
   } catch (const relpos::InputError& e) {
     std::cerr << "relpos: " << e.what() << "\n";
     return kExitInput;
@@ -408,13 +445,15 @@ int run_scene(Args& args) {
   relpos_cli::LineReader reader(fd, options_line.max_line_bytes);
   relpos_cli::Output output;
 
-  const relpos::Scene scene(*p);
+  std::optional<relpos::Scene> scene;  // the paraboloid prepared once
+  if (fixed.paraboloid) scene.emplace(*fixed.paraboloid);
   const bool show = progress && isatty(STDERR_FILENO);
   Progress bar(show, show && from_file ? count_lines(*file) : 0);
 
   const auto start = std::chrono::steady_clock::now();
   double classify_seconds = 0;
   relpos::SceneCounts counts;
+  relpos::QuadricSceneResult::Counts general_counts;  // --quadric
   std::size_t errors = 0;
   unsigned used_threads = 1;
   long line_number = 0;
@@ -455,7 +494,7 @@ int run_scene(Args& args) {
     }
     if (lines.empty()) break;
     parse_pool.run(lines.size(), [&](std::size_t i) {
-      if (parsed[i].error.empty()) parse_line(lines[i], format, options_line, *p, parsed[i]);
+      if (parsed[i].error.empty()) parse_line(lines[i], format, options_line, fixed, parsed[i]);
       if (lines[i].capacity() > (std::size_t(1) << 20)) std::string().swap(lines[i]);  // read: not kept
       bar.counter().fetch_add(1, std::memory_order_relaxed);  // progress: one unit when read...
     });
@@ -479,15 +518,15 @@ int run_scene(Args& args) {
     relpos::SceneOptions options;
     options.size_limit = options_line.size_limit;
     options.progress = &bar.counter();  // ...and one when answered
-    // On the pool that parsed the block: one pool for the whole run, not one per block.
-    const relpos::SceneResult result =
-        relpos::detail::SceneAccess::classify(scene, bodies.data(), bodies.size(), options, parse_pool);
-    classify_seconds += result.seconds;
-    used_threads = std::max(used_threads, result.threads);
-    counts.merge(result.counts);
-
-    if (!summary_only) {
-      std::vector<const relpos::SceneVerdict*> verdict_of(parsed.size(), nullptr);
+    // The answers of the block (relpos::SceneResult, or relpos::QuadricSceneResult for --quadric: the
+    // same members), written in input order; false when the output failed.
+    const auto answer = [&](const auto& result, auto& total) {
+      classify_seconds += result.seconds;
+      used_threads = std::max(used_threads, result.threads);
+      total.merge(result.counts);
+      if (summary_only) return true;
+      using Verdict = typename std::decay_t<decltype(result.verdicts)>::value_type;
+      std::vector<const Verdict*> verdict_of(parsed.size(), nullptr);
       for (std::size_t k = 0; k < where.size(); ++k) verdict_of[where[k]] = &result.verdicts[k];
       for (std::size_t i = 0; i < parsed.size(); ++i) {  // in pieces: a long id is not copied
         const Parsed& x = parsed[i];
@@ -495,7 +534,7 @@ int run_scene(Args& args) {
         output.write("{\"id\":");
         output.write(x.id);
         out.clear();
-        if (const relpos::SceneVerdict* v = verdict_of[i]) {
+        if (const Verdict* v = verdict_of[i]) {
           out += ",\"position\":\"";
           out += relpos::to_string(v->position);
           out += "\",\"contact\":";
@@ -509,28 +548,44 @@ int run_scene(Args& args) {
         output.write(out);
       }
       if (!more || !reader.ready()) output.flush();
-      if (output.failed()) {
-        bar.finish();
-        return output.report_failure();
-      }
+      return !output.failed();
+    };
+    // A scene runs on the pool that parsed the block: one pool for the whole run, not one per block.
+    const bool written =
+        scene ? answer(relpos::detail::SceneAccess::classify(*scene, bodies.data(), bodies.size(), options, parse_pool),
+                       counts)
+              : answer(relpos::classify_scene(*fixed.quadric, bodies, options), general_counts);
+    if (!written) {
+      bar.finish();
+      return output.report_failure();
     }
   }
   bar.finish();
   if (!output.flush()) return output.report_failure();
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Json positions, stages;
-  for (const relpos::Position pos : relpos::kAllPositions) positions[relpos::to_string(pos)] = counts.count(pos);
-  for (const relpos::Stage s : relpos::detail::kSceneStages) stages[relpos::to_string(s)] = counts.count(s);
+  if (fixed.quadric) {  // O, TO and EQ only when the quadric is an ellipsoid
+    for (const relpos::QuadricPosition pos : relpos::general::kAllQuadricPositions)
+      if (static_cast<int>(pos) < static_cast<int>(relpos::QuadricPosition::O) ||
+          fixed.quadric->type() == relpos::QuadricType::Ellipsoid)
+        positions[relpos::to_string(pos)] = general_counts.count(pos);
+    for (const relpos::QuadricStage s : {relpos::QuadricStage::Filter, relpos::QuadricStage::Exact})
+      stages[relpos::to_string(s)] = general_counts.count(s);
+  } else {
+    for (const relpos::Position pos : relpos::kAllPositions) positions[relpos::to_string(pos)] = counts.count(pos);
+    for (const relpos::Stage s : relpos::detail::kSceneStages) stages[relpos::to_string(s)] = counts.count(s);
+  }
+  const std::size_t classified = fixed.quadric ? general_counts.bodies : counts.bodies;
   Json summary;
-  summary["bodies"] = counts.bodies;
+  summary["bodies"] = classified;
   summary["errors"] = errors;
   summary["positions"] = positions;
   summary["stages"] = stages;
   summary["threads"] = used_threads;
   summary["seconds"] = Json{{"classify", significant(classify_seconds)}, {"total", significant(total_seconds)}};
   summary["bodies_per_second"] =
-      Json{{"classify", significant(classify_seconds > 0 ? counts.bodies / classify_seconds : 0.0)},
-           {"total", significant(total_seconds > 0 ? counts.bodies / total_seconds : 0.0)}};
+      Json{{"classify", significant(classify_seconds > 0 ? classified / classify_seconds : 0.0)},
+           {"total", significant(total_seconds > 0 ? classified / total_seconds : 0.0)}};
   relpos_cli::Output err(STDERR_FILENO);  // the summary may be the only output: its loss is an error
   err.write(dump(Json{{"summary", summary}}) + "\n");
   return err.flush() ? kExitOk : err.report_failure();

@@ -88,7 +88,7 @@ TEST_CASE("general verifier: genuine certificates pass, tampered ones are refuse
     CHECK(verify_certificate(e, k.q, k.expected, c.certificate).value_or("verified") == "verified");
     // The verifier normalizes raw matrices itself: E negated, Q negated where its type is normalized.
     const Matrix4 qm = sign_as_given(k.q.type()) ? k.q.matrix() : scaled_matrix(k.q.matrix(), Rational(-1));
-    CHECK(verify_quadric_certificate(scaled_matrix(e.matrix(), Rational(-1)), qm, k.expected, c.certificate)
+    CHECK(verify_certificate(scaled_matrix(e.matrix(), Rational(-1)), qm, k.expected, c.certificate)
               .value_or("verified") == "verified");
     for (const auto& [what, t] : tampered(c.certificate)) {
       INFO(what);

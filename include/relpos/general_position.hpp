@@ -101,7 +101,7 @@ std::optional<std::string> verify_certificate(const Ellipsoid& e, const Quadric&
                                               const QuadricCertificate& c);
 /// The same on raw matrices. E is normalized here by negation (M positive definite); Q by negation
 /// when its 3x3 block has more negative than positive eigenvalues, as Quadric::from_matrix does.
-std::optional<std::string> verify_quadric_certificate(const Matrix4& e, const Matrix4& q, QuadricPosition position,
+std::optional<std::string> verify_certificate(const Matrix4& e, const Matrix4& q, QuadricPosition position,
                                                       const QuadricCertificate& c);
 
 }  // namespace relpos

@@ -24,12 +24,14 @@ import numpy
 
 from . import _cli, _relpos
 from ._build import version as __version__
-from ._relpos import Ellipsoid, FirstContact, Instant, Paraboloid, Timeline
+from ._relpos import Ellipsoid, FirstContact, Instant, Paraboloid, Quadric, Timeline
 
 __all__ = [
     "Ellipsoid",
     "Paraboloid",
+    "Quadric",
     "Classification",
+    "QuadricClassification",
     "Certificate",
     "CertificateError",
     "Margin",
@@ -47,6 +49,8 @@ __all__ = [
     "timeline",
     "POSITION_NAMES",
     "POSITION_MEANINGS",
+    "QUADRIC_POSITION_NAMES",
+    "QUADRIC_TYPES",
     "STAGE_NAMES",
     "INVALID",
     "MAX_BITS",
@@ -70,6 +74,26 @@ TimePolynomial = Union[Sequence[Number], Number]
 
 #: Position names, indexed by the codes decide_positions and scene return.
 POSITION_NAMES = ("I", "TI", "C", "TE", "E")
+
+#: Position names of a general pair (relpos.Quadric), indexed by the codes decide_positions returns for
+#: one: the five of POSITION_NAMES, then O, TO and EQ (the quadric an ellipsoid inside the ellipsoid,
+#: inside and touching, the same ellipsoid).
+QUADRIC_POSITION_NAMES = ("I", "TI", "C", "TE", "E", "O", "TO", "EQ")
+
+#: The eleven types of relpos.Quadric, as Quadric.type names them.
+QUADRIC_TYPES = (
+    "ellipsoid",
+    "hyperboloid of one sheet",
+    "hyperboloid of two sheets",
+    "elliptic cone",
+    "elliptic paraboloid",
+    "hyperbolic paraboloid",
+    "elliptic cylinder",
+    "hyperbolic cylinder",
+    "parabolic cylinder",
+    "slab",
+    "half-space",
+)
 
 #: Stage names (what settled a scene body), indexed by the stage codes scene returns.
 STAGE_NAMES = _relpos._STAGE_NAMES
@@ -136,6 +160,7 @@ def _define_quadric_methods(cls, role):
 
 _define_quadric_methods(Ellipsoid, "ellipsoid")
 _define_quadric_methods(Paraboloid, "paraboloid")
+_define_quadric_methods(Quadric, "quadric")
 
 
 @_method(Ellipsoid, "sphere")
@@ -176,8 +201,131 @@ def _paraboloid_from_map(linear: Matrix, translation: Vector3) -> Paraboloid:
     return Paraboloid({"map": linear, "translation": translation})
 
 
+# Quadric: any real quadric (doc/quadrics.md); the geometric forms are the dicts of a batch line's
+# "quadric" (doc/cli.md, "General quadrics"), read by the CLI's reader.
+
+Quadric.type = property(lambda self: self._type(), doc="The type's name, one of QUADRIC_TYPES.")
+
+_IDENTITY = (1, 0, 0, 0)
+
+
+@_method(Quadric, "sphere")
+@staticmethod
+def _quadric_sphere(center: Vector3, radius: Number) -> Quadric:
+    """The ball |x - center| <= radius."""
+    return Quadric({"type": "sphere", "center": center, "radius": radius})
+
+
+@_method(Quadric, "ellipsoid")
+@staticmethod
+def _quadric_ellipsoid(center: Vector3, axes: Vector3, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 + z'^2/c^2 <= 1, axes = (a, b, c). The frame: origin at the first point, axes
+    the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
+    return Quadric({"type": "ellipsoid", "center": center, "axes": axes, "rotation": rotation})
+
+
+@_method(Quadric, "hyperboloid_one_sheet")
+@staticmethod
+def _quadric_hyperboloid_one_sheet(
+    center: Vector3, axes: Vector3, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 - z'^2/c^2 <= 1, axes = (a, b, c): the region around the axis. The frame: origin
+    at the first point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
+    return Quadric({"type": "hyperboloid of one sheet", "center": center, "axes": axes, "rotation": rotation})
+
+
+@_method(Quadric, "hyperboloid_two_sheets")
+@staticmethod
+def _quadric_hyperboloid_two_sheets(
+    center: Vector3, axes: Vector3, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 - z'^2/c^2 <= -1, axes = (a, b, c): the two caps. The frame: origin at the first
+    point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
+    return Quadric({"type": "hyperboloid of two sheets", "center": center, "axes": axes, "rotation": rotation})
+
+
+@_method(Quadric, "cone")
+@staticmethod
+def _quadric_cone(apex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 <= z'^2: the double cone around the axis, apex at `apex`. The frame: origin at
+    the first point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
+    return Quadric({"type": "elliptic cone", "apex": apex, "a": a, "b": b, "rotation": rotation})
+
+
+@_method(Quadric, "elliptic_paraboloid")
+@staticmethod
+def _quadric_elliptic_paraboloid(
+    vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 <= z': inside the cup (as Paraboloid.standard). The frame: origin at the first
+    point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
+    return Quadric({"type": "elliptic paraboloid", "vertex": vertex, "a": a, "b": b, "rotation": rotation})
+
+
+@_method(Quadric, "hyperbolic_paraboloid")
+@staticmethod
+def _quadric_hyperbolic_paraboloid(
+    vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 - y'^2/b^2 <= z'. The frame: origin at the first point, axes the columns of R(q)/|q|^2 of
+    the quaternion rotation = (w, x, y, z)."""
+    return Quadric({"type": "hyperbolic paraboloid", "vertex": vertex, "a": a, "b": b, "rotation": rotation})
+
+
+@_method(Quadric, "elliptic_cylinder")
+@staticmethod
+def _quadric_elliptic_cylinder(
+    center: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 + y'^2/b^2 <= 1: the tube along the frame's z axis. The frame: origin at the first point,
+    axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
+    return Quadric({"type": "elliptic cylinder", "center": center, "a": a, "b": b, "rotation": rotation})
+
+
+@_method(Quadric, "hyperbolic_cylinder")
+@staticmethod
+def _quadric_hyperbolic_cylinder(
+    center: Vector3, a: Number, b: Number, rotation: Sequence[Number] = _IDENTITY,
+) -> Quadric:
+    """x'^2/a^2 - y'^2/b^2 <= 1: the connected middle, along the frame's z axis. The frame: origin at the
+    first point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
+    return Quadric({"type": "hyperbolic cylinder", "center": center, "a": a, "b": b, "rotation": rotation})
+
+
+@_method(Quadric, "parabolic_cylinder")
+@staticmethod
+def _quadric_parabolic_cylinder(vertex: Vector3, a: Number, rotation: Sequence[Number] = _IDENTITY) -> Quadric:
+    """x'^2/a^2 <= z': the convex side, ruled along the frame's y axis. The frame: origin at the first
+    point, axes the columns of R(q)/|q|^2 of the quaternion rotation = (w, x, y, z)."""
+    return Quadric({"type": "parabolic cylinder", "vertex": vertex, "a": a, "rotation": rotation})
+
+
+@_method(Quadric, "half_space")
+@staticmethod
+def _quadric_half_space(normal: Vector3, offset: Number) -> Quadric:
+    """{x : normal . x <= offset} (normal != 0)."""
+    return Quadric({"type": "half-space", "normal": normal, "offset": offset})
+
+
+@_method(Quadric, "slab")
+@staticmethod
+def _quadric_slab(normal: Vector3, low: Number, high: Number) -> Quadric:
+    """{x : low <= normal . x <= high} (normal != 0, low < high)."""
+    return Quadric({"type": "slab", "normal": normal, "low": low, "high": high})
+
+
+@_method(Quadric, "of")
+@staticmethod
+def _quadric_of(body: Union[Ellipsoid, Paraboloid]) -> Quadric:
+    """The same solid as a relpos.Ellipsoid or relpos.Paraboloid, as a Quadric (its exact matrix)."""
+    if not isinstance(body, (Ellipsoid, Paraboloid)):
+        raise TypeError("Quadric.of: body must be a relpos.Ellipsoid or relpos.Paraboloid, got %s"
+                        % type(body).__name__)
+    return Quadric(body.matrix())
+
+
 def _rebuild(cls, texts):
-    """Unpickles an Ellipsoid or Paraboloid (its __reduce__ names this function)."""
+    """Unpickles an Ellipsoid, Paraboloid or Quadric (its __reduce__ names this function)."""
     return _relpos._rebuild(cls, texts)
 
 
@@ -256,15 +404,17 @@ class Certificate(_Answer):
 
     kind: "definite" (a lambda with lambda P + E definite: I or E), "tangent" (lambda and the contact
     point), "hard-tangent" (lambda in Q(sqrt d) and the contact set), "crossing" (a point inside and
-    a point outside the paraboloid on the ellipsoid) or "none". to_json() gives the CLI's JSON form;
-    relpos.verify checks it.
+    a point outside the paraboloid on the ellipsoid) or "none". A general pair's certificate
+    (relpos.Quadric, doc/quadrics.md) has the multiplier "t" in place of "lambda", and the kind
+    "equal" (EQ: the ratio of the two matrices). to_json() gives the CLI's JSON form; relpos.verify
+    checks it.
     """
 
     __slots__ = ()
 
     @property
     def kind(self) -> str:
-        """"definite", "tangent", "hard-tangent", "crossing" or "none"."""
+        """"definite", "tangent", "hard-tangent", "crossing", "equal" or "none"."""
         f = self._fields
         if "inside" in f:
             return "crossing"
@@ -272,7 +422,9 @@ class Certificate(_Answer):
             return "hard-tangent"
         if "contact" in f:
             return "tangent"
-        return "definite" if "lambda" in f else "none"
+        if "ratio" in f:
+            return "equal"
+        return "definite" if "lambda" in f or "t" in f else "none"
 
     def to_json(self) -> dict:
         """The certificate's JSON object, as in `relpos batch` (numbers as exact strings)."""
@@ -379,6 +531,48 @@ class Classification(_Answer):
         )
 
 
+class QuadricClassification(_Answer):
+    """The answer for an ellipsoid and a relpos.Quadric (doc/quadrics.md): the fields of the JSON object
+    `relpos batch` writes for a line with "quadric".
+
+    position ("I", "TI", "C", "TE", "E", and "O", "TO", "EQ" when the quadric is an ellipsoid),
+    contact ("none", "touching" or "crossing"), quadric_type (one of QUADRIC_TYPES), rule, stage
+    ("filter" or "exact"); with evidence="full" also f and d (the exact coefficients of det(Q + tE)
+    and det(B + tM), lowest degree first), roots (their real roots) and certificate. as_dict()
+    returns every field.
+    """
+
+    __slots__ = ()
+
+    position = _field("position", "The position: one of QUADRIC_POSITION_NAMES.")
+    contact = _field("contact", "'none', 'touching' or 'crossing'.")
+    quadric_type = _field("quadric_type", "The quadric's type, one of QUADRIC_TYPES.")
+    rule = _field("rule", "The deciding rule, one sentence.")
+    stage = _field("stage", "'filter' (certified doubles) or 'exact'.")
+    f = _field("f", "det(Q + t E): exact coefficients ('p/q'), lowest degree first (evidence='full').")
+    d = _field("d", "det(B + t M): exact coefficients ('p/q'), lowest degree first (evidence='full').")
+    roots = _field("roots", "The distinct real roots of f and d with intervals and multiplicities (evidence='full').")
+
+    @property
+    def meta(self) -> Any:
+        """The meta value given to classify (None when none was)."""
+        return self._fields.get("meta")
+
+    @property
+    def certificate(self) -> Optional[Certificate]:
+        """The certificate (evidence="full"), else None."""
+        c = self._fields.get("certificate")
+        return None if c is None else Certificate(c)
+
+    def __repr__(self):
+        f = self._fields
+        return "relpos.QuadricClassification(position=%r, quadric_type=%r, stage=%r)" % (
+            f["position"],
+            f["quadric_type"],
+            f["stage"],
+        )
+
+
 class ContactAnswer(_Answer):
     """Whether the surfaces meet (doc/contact.md): the fields of `relpos classify --contact-only --json`.
 
@@ -397,11 +591,14 @@ class ContactAnswer(_Answer):
         return "relpos.ContactAnswer(contact=%r, position=%r)" % (self.contact, self.position)
 
 
-def _check_pair(e, p, function):
+def _check_pair(e, p, function, general=False):
     if not isinstance(e, Ellipsoid):
         raise TypeError("%s: e must be a relpos.Ellipsoid, got %s" % (function, type(e).__name__))
+    if general and isinstance(p, Quadric):
+        return
     if not isinstance(p, Paraboloid):
-        raise TypeError("%s: p must be a relpos.Paraboloid, got %s" % (function, type(p).__name__))
+        raise TypeError("%s: p must be a relpos.Paraboloid%s, got %s"
+                        % (function, " or relpos.Quadric" if general else "", type(p).__name__))
 
 
 #: The pair size limit's default and largest value (`relpos ... --max-bits`, doc/cli.md, Limits).
@@ -422,13 +619,13 @@ def _max_bits(max_bits):
 
 def classify(
     e: Ellipsoid,
-    p: Paraboloid,
+    p: Union[Paraboloid, Quadric],
     evidence: Literal["full", "minimal"] = "full",
     margin: bool = False,
     margin_bits: int = 40,
     meta: Any = None,
     max_bits: int = MAX_BITS,
-) -> Classification:
+) -> Union[Classification, QuadricClassification]:
     """Classify ellipsoid `e` against paraboloid `p` exactly.
 
     evidence="full" gives the same fields as `relpos batch` / `relpos classify --json` (exact
@@ -441,15 +638,27 @@ def classify(
     (`--max-bits`: a safe default that can be raised; doc/cli.md, "Limits", measures the cost). The
     GIL is released; one pair is not interrupted by Ctrl-C (within the default limit it takes well
     under a second).
+
+    With a relpos.Quadric as p (any real quadric, doc/quadrics.md) the answer is a
+    QuadricClassification, the fields `relpos batch` writes for a line with "quadric"; margin=True
+    is refused (s* is defined for a paraboloid only) and the size limit is the batch line's
+    (max_bits applies to paraboloids).
     """
-    _check_pair(e, p, "classify")
+    _check_pair(e, p, "classify", general=True)
     if not isinstance(evidence, str) or evidence not in ("full", "minimal"):
         raise ValueError("evidence: expected 'full' or 'minimal', got %s" % _shown(evidence))
     if not isinstance(margin, bool):
         raise TypeError("margin: expected a bool, got %s" % type(margin).__name__)
     if isinstance(margin_bits, bool) or not isinstance(margin_bits, int):
         raise TypeError("margin_bits: expected an int, got %s" % type(margin_bits).__name__)
-    fields = _json.loads(_relpos._classify_json(e, p, evidence == "full", _max_bits(max_bits)))
+    general = isinstance(p, Quadric)
+    if general:
+        if margin:
+            raise ValueError("margin: the margin s* is defined for an ellipsoid and an elliptic paraboloid only")
+        _max_bits(max_bits)
+        fields = _json.loads(_relpos._classify_quadric_json(e, p, evidence == "full"))
+    else:
+        fields = _json.loads(_relpos._classify_json(e, p, evidence == "full", _max_bits(max_bits)))
     if margin:
         fields["margin"] = _json.loads(_relpos._margin_json(e, p, margin_bits))
     if meta is not None:
@@ -457,22 +666,26 @@ def classify(
             fields["meta"] = _json.loads(_json.dumps(meta))
         except (TypeError, ValueError) as err:
             raise TypeError("meta: expected a JSON value (dict, list, str, number, bool, None): %s" % err)
-    return Classification._of(fields)
+    return (QuadricClassification if general else Classification)._of(fields)
 
 
-def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
+def verify(e: Ellipsoid, p: Union[Paraboloid, Quadric], answer: Union[Classification, QuadricClassification]) -> None:
     """Check answer.certificate for answer.position with the library's independent verifier (exact
     rational arithmetic, no code of the classifier; `relpos verify`), and answer.margin when it has
     one. Returns None when they prove the position (and s*); raises CertificateError saying why not,
-    ValueError when there is no certificate."""
-    _check_pair(e, p, "verify")
-    if not isinstance(answer, Classification):
-        raise TypeError("verify: answer must be a relpos.Classification, got %s" % type(answer).__name__)
+    ValueError when there is no certificate. With a relpos.Quadric as p, answer is the
+    QuadricClassification of classify(e, p) and the general verifier checks it (doc/quadrics.md)."""
+    _check_pair(e, p, "verify", general=True)
+    general = isinstance(p, Quadric)
+    expected = QuadricClassification if general else Classification
+    if not isinstance(answer, expected):
+        raise TypeError("verify: answer must be a relpos.%s, got %s" % (expected.__name__, type(answer).__name__))
     fields = answer._fields
     position = fields.get("position")
-    if position not in POSITION_NAMES:
+    names = QUADRIC_POSITION_NAMES if general else POSITION_NAMES
+    if position not in names:
         # Not an answer of relpos: nothing to check the certificate against.
-        raise CertificateError("answer.position: expected one of I, TI, C, TE, E, got %s" % _shown(position))
+        raise CertificateError("answer.position: expected one of %s, got %s" % (", ".join(names), _shown(position)))
     certificate = fields.get("certificate")
     if certificate is None:
         raise ValueError("verify: the answer has no certificate (classify with evidence='full')")
@@ -483,11 +696,13 @@ def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None:
     except (TypeError, ValueError) as err:
         raise CertificateError("%s: answer.certificate: not JSON: %s" % (position, err)) from None
     try:
-        reason = _relpos._verify(e, p, position, text)
+        reason = (_relpos._verify_quadric if general else _relpos._verify)(e, p, position, text)
     except ValueError as err:  # the certificate's JSON does not have the form of doc/certificates.md
         raise CertificateError("%s: %s" % (position, err)) from None
     if reason is not None:
         raise CertificateError(position + ": " + reason)
+    if general:
+        return
     margin = answer.margin
     if margin is not None:
         reason = _relpos._verify_margin(e, p, _json.dumps(margin.as_dict()))
@@ -529,7 +744,7 @@ def _thread_count(threads):
 
 def decide_positions(
     E: Union[numpy.ndarray, Mapping[str, Any]],
-    P: Union[numpy.ndarray, Mapping[str, Any]],
+    P: Union[numpy.ndarray, Mapping[str, Any], Quadric],
     threads: int = 0,
     errors: Literal["raise", "code"] = "raise",
     symmetrize: Optional[Literal["upper"]] = None,
@@ -551,11 +766,19 @@ def decide_positions(
     ...", and for a matrix what to pass instead); errors="code" gives such a pair the code INVALID
     (-1) instead. max_bits: the size limit, as for classify (long doubles and 64-bit integers may
     exceed it). Ctrl-C stops the call (KeyboardInterrupt) within a fraction of a second.
+
+    P may also be one relpos.Quadric (any real quadric, doc/quadrics.md) shared by every pair: the
+    codes are then indices into QUADRIC_POSITION_NAMES (5 = "O", 6 = "TO", 7 = "EQ" besides the
+    five), each pair decided as classify(e, q) decides it, the size limit a batch line's.
     """
     if not isinstance(errors, str) or errors not in ("raise", "code"):
         raise ValueError("errors: expected 'raise' or 'code', got %s" % _shown(errors))
     if symmetrize not in (None, "upper"):
         raise ValueError("symmetrize: expected None or 'upper', got %r" % (symmetrize,))
+    if isinstance(P, Quadric):
+        _max_bits(max_bits)
+        E = dict(E) if isinstance(E, Mapping) else E
+        return _relpos._decide_positions_quadric(E, P, _thread_count(threads), errors == "raise", symmetrize == "upper")
     E = dict(E) if isinstance(E, Mapping) else E
     P = dict(P) if isinstance(P, Mapping) else P
     return _relpos._decide_positions(
@@ -621,6 +844,9 @@ def scene(
     the classifier (the same positions). max_bits: the size limit, as for classify ("bodies[i]:
     numbers too large: ..."). Ctrl-C stops the call (KeyboardInterrupt) within a fraction of a second.
     """
+    if isinstance(p, Quadric):
+        raise TypeError("scene: p must be a relpos.Paraboloid or a paraboloid's description, got Quadric (many "
+                        "ellipsoids against a relpos.Quadric: decide_positions(E, q), or `relpos scene --quadric`)")
     if not isinstance(p, Paraboloid):
         p = Paraboloid(p)
     return SceneResult(*_relpos._scene(p, bodies, _thread_count(threads), bool(early_outs), _max_bits(max_bits)))

@@ -1,7 +1,7 @@
 # Type stub of the package relpos (doc/python.md): the compiled classes and the Python layer.
 from decimal import Decimal
 from fractions import Fraction
-from typing import Any, Literal, Mapping, Optional, Sequence, Union
+from typing import Any, Literal, Mapping, Optional, Sequence, Union, overload
 
 import numpy
 
@@ -20,6 +20,8 @@ Pivot = Union[Literal["origin", "center", "centre"], Vector3]
 POSITION_NAMES: tuple[str, str, str, str, str]
 STAGE_NAMES: tuple[str, ...]
 POSITION_MEANINGS: dict[str, str]
+QUADRIC_POSITION_NAMES: tuple[str, str, str, str, str, str, str, str]
+QUADRIC_TYPES: tuple[str, ...]
 INVALID: int
 MAX_BITS: int
 
@@ -54,10 +56,55 @@ class Paraboloid(_Quadric):
     @staticmethod
     def from_coefficients(coefficients: Sequence[Number]) -> Paraboloid: ...
 
+class Quadric(_Quadric):
+    """A validated real quadric of one of eleven types; its solid is {X^T Q X <= 0} (doc/quadrics.md)."""
+
+    def __init__(self, description: Description) -> None: ...
+    @property
+    def type(self) -> str: ...
+    @staticmethod
+    def from_coefficients(coefficients: Sequence[Number]) -> Quadric: ...
+    @staticmethod
+    def of(body: Union[Ellipsoid, Paraboloid]) -> Quadric: ...
+    @staticmethod
+    def sphere(center: Vector3, radius: Number) -> Quadric: ...
+    @staticmethod
+    def ellipsoid(center: Vector3, axes: Vector3, rotation: Sequence[Number] = (1, 0, 0, 0)) -> Quadric: ...
+    @staticmethod
+    def hyperboloid_one_sheet(center: Vector3, axes: Vector3, rotation: Sequence[Number] = (1, 0, 0, 0)) -> Quadric: ...
+    @staticmethod
+    def hyperboloid_two_sheets(
+        center: Vector3, axes: Vector3, rotation: Sequence[Number] = (1, 0, 0, 0)
+    ) -> Quadric: ...
+    @staticmethod
+    def cone(apex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = (1, 0, 0, 0)) -> Quadric: ...
+    @staticmethod
+    def elliptic_paraboloid(
+        vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = (1, 0, 0, 0)
+    ) -> Quadric: ...
+    @staticmethod
+    def hyperbolic_paraboloid(
+        vertex: Vector3, a: Number, b: Number, rotation: Sequence[Number] = (1, 0, 0, 0)
+    ) -> Quadric: ...
+    @staticmethod
+    def elliptic_cylinder(
+        center: Vector3, a: Number, b: Number, rotation: Sequence[Number] = (1, 0, 0, 0)
+    ) -> Quadric: ...
+    @staticmethod
+    def hyperbolic_cylinder(
+        center: Vector3, a: Number, b: Number, rotation: Sequence[Number] = (1, 0, 0, 0)
+    ) -> Quadric: ...
+    @staticmethod
+    def parabolic_cylinder(vertex: Vector3, a: Number, rotation: Sequence[Number] = (1, 0, 0, 0)) -> Quadric: ...
+    @staticmethod
+    def half_space(normal: Vector3, offset: Number) -> Quadric: ...
+    @staticmethod
+    def slab(normal: Vector3, low: Number, high: Number) -> Quadric: ...
+
 class Certificate:
     def __init__(self, fields: Mapping[str, Any]) -> None: ...
     @property
-    def kind(self) -> Literal["definite", "tangent", "hard-tangent", "crossing", "none"]: ...
+    def kind(self) -> Literal["definite", "tangent", "hard-tangent", "crossing", "equal", "none"]: ...
     def to_json(self) -> dict[str, Any]: ...
     def as_dict(self) -> dict[str, Any]: ...
 
@@ -92,6 +139,22 @@ class Classification:
     def certificate(self) -> Optional[Certificate]: ...
     @property
     def margin(self) -> Optional[Margin]: ...
+    def as_dict(self) -> dict[str, Any]: ...
+
+class QuadricClassification:
+    def __init__(self, fields: Mapping[str, Any]) -> None: ...
+    position: str
+    contact: str
+    quadric_type: str
+    rule: str
+    stage: str
+    f: list[str]
+    d: list[str]
+    roots: list[dict[str, Any]]
+    @property
+    def meta(self) -> Any: ...
+    @property
+    def certificate(self) -> Optional[Certificate]: ...
     def as_dict(self) -> dict[str, Any]: ...
 
 class ContactAnswer:
@@ -142,6 +205,7 @@ class Timeline:
     changes: list[dict[str, Any]]
     def position_at(self, t: Number) -> str: ...
 
+@overload
 def classify(
     e: Ellipsoid,
     p: Paraboloid,
@@ -151,11 +215,23 @@ def classify(
     meta: Any = None,
     max_bits: int = 4096,
 ) -> Classification: ...
-def verify(e: Ellipsoid, p: Paraboloid, answer: Classification) -> None: ...
+@overload
+def classify(
+    e: Ellipsoid,
+    p: Quadric,
+    evidence: Literal["full", "minimal"] = "full",
+    margin: bool = False,
+    margin_bits: int = 40,
+    meta: Any = None,
+    max_bits: int = 4096,
+) -> QuadricClassification: ...
+def verify(
+    e: Ellipsoid, p: Union[Paraboloid, Quadric], answer: Union[Classification, QuadricClassification]
+) -> None: ...
 def contact(e: Ellipsoid, p: Paraboloid, max_bits: int = 4096) -> ContactAnswer: ...
 def decide_positions(
     E: Union[numpy.ndarray, Mapping[str, Any]],
-    P: Union[numpy.ndarray, Mapping[str, Any]],
+    P: Union[numpy.ndarray, Mapping[str, Any], Quadric],
     threads: int = 0,
     errors: Literal["raise", "code"] = "raise",
     symmetrize: Optional[Literal["upper"]] = None,

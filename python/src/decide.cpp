@@ -10,6 +10,7 @@
 #include <mutex>
 #include <optional>
 #include <relpos/classify.hpp>
+#include <relpos/general_classify.hpp>
 #include <relpos/numbers.hpp>
 #include <relpos/scene.hpp>
 #include <stdexcept>
@@ -19,6 +20,7 @@
 
 #include "algebra/pair_size.hpp"
 #include "decide/stages.hpp"
+#include "io/general_io.hpp"
 #include "module.hpp"
 #include "signals.hpp"
 
@@ -398,6 +400,64 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
   return out;
 }
 
+/// decide_positions against one general quadric (doc/python.md, "Any real quadric"): the codes of
+/// relpos.QUADRIC_POSITION_NAMES (0 = I ... 4 = E, 5 = O, 6 = TO, 7 = EQ), each pair by
+/// decide_position(e, q) (the general part has no lanes across pairs), the size limit as a batch
+/// line's ("E[i]: numbers too large: ..."). Errors and threads as for the paraboloid.
+py::array_t<std::int8_t> decide_positions_quadric(py::handle e_input, const relpos::Quadric& q, unsigned threads,
+                                                  bool raise_errors, bool upper) {
+  static_assert(static_cast<int>(relpos::QuadricPosition::E) == 4 && static_cast<int>(relpos::QuadricPosition::EQ) == 7,
+                "codes are the order of relpos.QUADRIC_POSITION_NAMES");
+  const Side e_side(e_input, "E", true, upper);
+  if (!e_side.n) throw relpos::InputError("E: expected n ellipsoids (an array with a leading n), got one");
+  const std::size_t n = *e_side.n;
+  py::array_t<std::int8_t> out(static_cast<py::ssize_t>(n));
+  std::int8_t* codes = out.mutable_data();
+  const relpos::io::GeneralPairSize size(q);  // the quadric's size once
+  std::size_t error_index = std::numeric_limits<std::size_t>::max();
+  std::string error_message;
+  SignalWatch watch;  // Ctrl-C: the calling thread polls between its chunks, every thread stops
+  {
+    py::gil_scoped_release release;
+    constexpr std::size_t kChunk = 64;
+    const std::size_t chunks = (n + kChunk - 1) / kChunk;
+    unsigned workers = threads > 0 ? threads : std::thread::hardware_concurrency();
+    workers = static_cast<unsigned>(std::clamp<std::size_t>(workers, 1, std::max<std::size_t>(1, chunks)));
+    std::atomic<std::size_t> next{0};
+    std::mutex error_mutex;
+    auto work = [&](bool caller) {
+      for (;;) {
+        if (caller ? watch.poll() : watch.stopped()) return;
+        const std::size_t begin = next.fetch_add(kChunk);
+        if (begin >= n) return;
+        for (std::size_t i = begin; i < std::min(n, begin + kChunk); ++i) {
+          try {
+            const relpos::Ellipsoid e = e_side.ellipsoid(i);
+            size.check(e);
+            codes[i] = static_cast<std::int8_t>(relpos::decide_position(e, q).position);
+          } catch (const std::exception& err) {
+            codes[i] = kInvalid;
+            if (!raise_errors) continue;
+            const std::lock_guard<std::mutex> lock(error_mutex);
+            if (i < error_index) {
+              error_index = i;
+              error_message = "E[" + std::to_string(i) + "]: ellipsoid: " + err.what() +
+                              (e_side.matrices ? hint(true, err.what()) : "");
+            }
+          }
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work, false);
+    work(true);
+    for (auto& t : pool) t.join();
+  }
+  watch.raise_if_stopped();
+  if (raise_errors && !error_message.empty()) throw relpos::InputError(error_message);
+  return out;
+}
+
 /// Bodies read or checked between two polls of Python's signals (a few microseconds each at most).
 constexpr std::size_t kPollEvery = 256;
 
@@ -510,6 +570,9 @@ void bind_decide(py::module_& m) {
   m.def("_scene", &scene, "p"_a, "bodies"_a, "threads"_a, "early_outs"_a, "max_bits"_a,
         "relpos::Scene on the bodies: (position codes, contact codes, stage codes, threads used).");
   m.attr("_INVALID") = kInvalid;
+  m.def("_decide_positions_quadric", &decide_positions_quadric, "E"_a, "q"_a, "threads"_a, "raise_errors"_a, "upper"_a,
+        "Position codes (int8, 0 = I ... 7 = EQ, -1 = invalid pair) of the ellipsoids E (n, 4, 4) or parameters "
+        "against one relpos.Quadric.");
   m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a, "raise_errors"_a, "upper"_a, "max_bits"_a,
         "Position codes (int8, 0 = I ... 4 = E, -1 = invalid pair) of the matrices E (n, 4, 4) against P "
         "(n, 4, 4) or (4, 4), or of parameter dicts; with upper, each matrix read from its upper triangle.");

@@ -5,6 +5,7 @@
 #include <relpos/numbers.hpp>
 #include <string>
 
+#include "io/general_io.hpp"
 #include "io/json_values.hpp"
 #include "io/quadric_json.hpp"
 #include "module.hpp"
@@ -176,7 +177,7 @@ std::optional<relpos::DoubleMatrix4> exact_doubles(py::handle x) {
 }
 
 template <class Q>
-Q quadric_from_python(py::handle description, const char* role, Q (*from_json)(const Json&, const std::string&)) {
+Q described_quadric(py::handle description, const char* role, Q (*from_json)(const Json&, const std::string&)) {
   if (const auto d = exact_doubles(description)) {
     try {
       return Q::from_doubles(*d);
@@ -191,11 +192,15 @@ Q quadric_from_python(py::handle description, const char* role, Q (*from_json)(c
 }  // namespace
 
 relpos::Ellipsoid ellipsoid_from_python(py::handle description) {
-  return quadric_from_python<relpos::Ellipsoid>(description, "ellipsoid", relpos::io::detail::ellipsoid_from_tree);
+  return described_quadric<relpos::Ellipsoid>(description, "ellipsoid", relpos::io::detail::ellipsoid_from_tree);
 }
 
 relpos::Paraboloid paraboloid_from_python(py::handle description) {
-  return quadric_from_python<relpos::Paraboloid>(description, "paraboloid", relpos::io::detail::paraboloid_from_tree);
+  return described_quadric<relpos::Paraboloid>(description, "paraboloid", relpos::io::detail::paraboloid_from_tree);
+}
+
+relpos::Quadric quadric_from_python(py::handle description) {
+  return described_quadric<relpos::Quadric>(description, "quadric", relpos::io::quadric_from_json);
 }
 
 void throw_unbuilt(py::handle x) {

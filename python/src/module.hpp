@@ -8,6 +8,7 @@
 
 #include <relpos/algebraic_real.hpp>
 #include <relpos/error.hpp>
+#include <relpos/general_quadric.hpp>
 #include <relpos/motion.hpp>
 #include <relpos/quadric.hpp>
 #include <string>
@@ -45,6 +46,9 @@ py::object to_python(const relpos::Rational& q);
 /// Called with the GIL held; the exact validation runs without it.
 relpos::Ellipsoid ellipsoid_from_python(py::handle description);
 relpos::Paraboloid paraboloid_from_python(py::handle description);
+/// Any real quadric (relpos.Quadric): a 4x4 matrix or a dict in any form of a batch line's
+/// "quadric" (doc/cli.md, "General quadrics"), read by the CLI's reader (src/io/general_io.hpp).
+relpos::Quadric quadric_from_python(py::handle description);
 
 /// True when `x` is an instance of the bound class T whose C++ object was constructed (false for an
 /// object made by T.__new__(T) alone).
@@ -73,10 +77,11 @@ struct built_caster : py::detail::type_caster_base<T> {
 };
 
 // Binding functions of the module's files (called from PYBIND11_MODULE in relpos_module.cpp).
-void bind_decide(py::module_& m);  // decide_positions, scene (decide.cpp)
-void bind_motion(py::module_& m);  // first contact, timeline (motion.cpp)
-void bind_batch(py::module_& m);   // _batch_block, the lines of `relpos batch` (batch_binding.cpp)
-void bind_oracle(py::module_& m);  // _cases, _judge: relpos cases and relpos judge (oracle_binding.cpp)
+void bind_decide(py::module_& m);   // decide_positions, scene (decide.cpp)
+void bind_motion(py::module_& m);   // first contact, timeline (motion.cpp)
+void bind_batch(py::module_& m);    // _batch_block, the lines of `relpos batch` (batch_binding.cpp)
+void bind_oracle(py::module_& m);   // _cases, _judge: relpos cases and relpos judge (oracle_binding.cpp)
+void bind_general(py::module_& m);  // _classify_quadric_json, _verify_quadric (general_binding.cpp)
 
 }  // namespace relpos_python
 
@@ -85,6 +90,8 @@ template <>
 class type_caster<relpos::Ellipsoid> : public relpos_python::built_caster<relpos::Ellipsoid> {};
 template <>
 class type_caster<relpos::Paraboloid> : public relpos_python::built_caster<relpos::Paraboloid> {};
+template <>
+class type_caster<relpos::Quadric> : public relpos_python::built_caster<relpos::Quadric> {};
 template <>
 class type_caster<relpos::AlgebraicReal> : public relpos_python::built_caster<relpos::AlgebraicReal> {};
 template <>

@@ -9,6 +9,7 @@
 #include <optional>
 #include <relpos/classify.hpp>
 #include <relpos/contact.hpp>
+#include <relpos/general_quadric.hpp>
 #include <relpos/io.hpp>
 #include <relpos/margin.hpp>
 #include <relpos/numbers.hpp>
@@ -154,18 +155,35 @@ PYBIND11_MODULE(_relpos, m) {
                  "From a 4x4 matrix or a dict in any JSON form of the CLI (relpos.Paraboloid.__init__).");
   bind_quadric_common(paraboloid, "relpos.Paraboloid");
 
+  py::class_<relpos::Quadric> quadric(
+      m, "Quadric",
+      "A validated real quadric of one of eleven types (doc/quadrics.md): a symmetric 4x4 matrix Q whose solid is "
+      "{X^T Q X <= 0} (sign-normalized as the library stores it).");
+  quadric.def(py::init([](py::handle description) { return relpos_python::quadric_from_python(description); }),
+              "description"_a,
+              "From a 4x4 matrix or a dict in any form of a batch line's \"quadric\" (relpos.Quadric.__init__).");
+  quadric.def(
+      "_type", [](const relpos::Quadric& q) { return relpos::to_string(q.type()); },
+      "The type's name: \"ellipsoid\", \"hyperboloid of one sheet\", ..., \"half-space\".");
+  bind_quadric_common(quadric, "relpos.Quadric");
+
   m.def(
       "_rebuild",
       [](py::handle cls, py::handle texts) -> py::object {
         const bool is_ellipsoid = cls.is(py::type::of<relpos::Ellipsoid>());
-        if (!is_ellipsoid && !cls.is(py::type::of<relpos::Paraboloid>()))
+        const bool is_quadric = cls.is(py::type::of<relpos::Quadric>());
+        if (!is_ellipsoid && !is_quadric && !cls.is(py::type::of<relpos::Paraboloid>()))
           throw py::type_error("relpos._rebuild: not a relpos quadric class");
         const relpos::Matrix4 matrix = matrix_from_texts(texts);
         try {
           if (is_ellipsoid) return py::cast(relpos::Ellipsoid::from_matrix(matrix));
+          if (is_quadric) return py::cast(relpos::Quadric::from_matrix(matrix));
           return py::cast(relpos::Paraboloid::from_matrix(matrix));
         } catch (const relpos::InputError& err) {
-          throw relpos::InputError(std::string("pickled ") + (is_ellipsoid ? "ellipsoid: " : "paraboloid: ") +
+          throw relpos::InputError(std::string("pickled ") +
+                                   (is_ellipsoid ? "ellipsoid: "
+                                    : is_quadric ? "quadric: "
+                                                 : "paraboloid: ") +
                                    err.what());
         }
       },
@@ -174,9 +192,10 @@ PYBIND11_MODULE(_relpos, m) {
   m.def(
       "_is_built",
       [](py::handle x) {
-        return relpos_python::is_built<relpos::Ellipsoid>(x) || relpos_python::is_built<relpos::Paraboloid>(x);
+        return relpos_python::is_built<relpos::Ellipsoid>(x) || relpos_python::is_built<relpos::Paraboloid>(x) ||
+               relpos_python::is_built<relpos::Quadric>(x);
       },
-      "x"_a, "Whether x is an Ellipsoid or Paraboloid whose __init__ has run.");
+      "x"_a, "Whether x is an Ellipsoid, Paraboloid or Quadric whose __init__ has run.");
 
   m.def(
       "_classify_json",
@@ -255,4 +274,5 @@ PYBIND11_MODULE(_relpos, m) {
   relpos_python::bind_motion(m);
   relpos_python::bind_batch(m);
   relpos_python::bind_oracle(m);
+  relpos_python::bind_general(m);
 }

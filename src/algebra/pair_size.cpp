@@ -51,22 +51,29 @@ std::size_t detail::normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p
   return std::max(normalized_bits(e.matrix()), normalized_bits(p.matrix()));
 }
 
-std::size_t detail::check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+namespace detail {
+namespace {
+
+/// The limit itself: raised, never lowered.
+void check_limit(const SizeLimit& limit) {
   if (limit.max_bits < kMaxNormalizedBits)
     throw InputError("the size limit is at least " + std::to_string(kMaxNormalizedBits) + " bits, got " +
                      std::to_string(limit.max_bits) + " (it can be raised, not lowered: doc/cli.md, Limits)");
-  // A matrix of doubles is within the limit whatever its entries: its primitive form has at most
-  // 2098 bits (every double is a multiple of 2^-1074 below 2^1024), so the check costs nothing then and
-  // never builds the exact matrix of a quadric made from doubles.
+}
+
+/// A bound on normalized_bits of m's matrix, exact when it exceeds kMaxNormalizedBits. A matrix of
+/// doubles is within the limit whatever its entries: its primitive form has at most 2098 bits (every
+/// double is a multiple of 2^-1074 below 2^1024), so it costs nothing then and never builds the
+/// exact matrix of a quadric made from doubles. The bound from the lcm alone settles ordinary inputs
+/// (decimals with their powers of ten) without the gcd and the products.
+std::size_t bits_of(const QuadricMatrix& m) {
   static_assert(kMaxNormalizedBits >= 2098, "every matrix of doubles must pass");
-  // The bound from the lcm alone settles ordinary inputs (decimals with their powers of ten) without
-  // the gcd and the products.
-  auto bits_of = [](const Matrix4& m) {
-    const std::size_t bound = normalized_bits_bound(m);
-    return bound <= kMaxNormalizedBits ? bound : normalized_bits(m);
-  };
-  const std::size_t bits = std::max(storage_of(e).within_size_limit() ? 0 : bits_of(e.matrix()),
-                                    storage_of(p).within_size_limit() ? 0 : bits_of(p.matrix()));
+  if (m.within_size_limit()) return 0;
+  const std::size_t bound = normalized_bits_bound(m.matrix());
+  return bound <= kMaxNormalizedBits ? bound : normalized_bits(m.matrix());
+}
+
+std::size_t checked(std::size_t bits, const SizeLimit& limit) {
   if (bits > limit.max_bits)
     throw InputError(
         "numbers too large: a matrix of the pair, divided by its own content (its primitive integer "
@@ -77,4 +84,21 @@ std::size_t detail::check_normalized_pair_size(const Ellipsoid& e, const Parabol
   return bits;
 }
 
+}  // namespace
+
+std::size_t check_normalized_size(const QuadricMatrix& a, const QuadricMatrix& b, const SizeLimit& limit) {
+  check_limit(limit);
+  return checked(std::max(bits_of(a), bits_of(b)), limit);
+}
+
+std::size_t check_normalized_size(const QuadricMatrix& a, const SizeLimit& limit) {
+  check_limit(limit);
+  return checked(bits_of(a), limit);
+}
+
+std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+  return check_normalized_size(storage_of(e), storage_of(p), limit);
+}
+
+}  // namespace detail
 }  // namespace relpos

@@ -285,7 +285,7 @@ const char* kind_name(QuadricCertificate::Kind k) {
 
 }  // namespace
 
-std::optional<std::string> verify_quadric_certificate(const Matrix4& e_in, const Matrix4& q_in,
+std::optional<std::string> verify_certificate(const Matrix4& e_in, const Matrix4& q_in,
                                                       QuadricPosition position, const QuadricCertificate& c) {
   Matrix4 e = e_in, q = q_in;
   if (auto r = normalize_ellipsoid(e)) return r;
@@ -343,7 +343,7 @@ std::optional<std::string> verify_quadric_certificate(const Matrix4& e_in, const
 
 std::optional<std::string> verify_certificate(const Ellipsoid& e, const Quadric& q, QuadricPosition position,
                                               const QuadricCertificate& c) {
-  return verify_quadric_certificate(e.matrix(), q.matrix(), position, c);
+  return verify_certificate(e.matrix(), q.matrix(), position, c);
 }
 
 }  // namespace relpos

@@ -54,9 +54,17 @@ std::string_view key_name(std::string_view key_text, std::string& storage) {
 /// before anything is thrown. The same for `meta` and out.meta (empty until the members are scanned).
 class LineReader {
  public:
-  LineReader(std::string_view line, long number, const BatchOptions& options, const Paraboloid* fixed, BatchLine& out,
-             std::string_view* id, std::string_view* meta)
-      : line_(line), number_(number), options_(options), fixed_(fixed), out_(out), id_(id), meta_(meta) {}
+  LineReader(std::string_view line, long number, const BatchOptions& options, const Paraboloid* fixed,
+             const GeneralPairSize* fixed_quadric, BatchLine& out, std::string_view* id, std::string_view* meta)
+      : line_(line),
+        number_(number),
+        options_(options),
+        fixed_(fixed),
+        fixed_quadric_(fixed_quadric),
+        scene_(fixed || fixed_quadric),
+        out_(out),
+        id_(id),
+        meta_(meta) {}
 
   void read() {
     scan();
@@ -69,10 +77,15 @@ class LineReader {
     if (!duplicate_.empty()) throw InputError("duplicate key \"" + duplicate_ + "\"");
     if (!unknown_.empty())
       throw InputError("unknown key \"" + unknown_ + "\"" +
-                       (fixed_ ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
+                       (scene_ ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
                                : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")"));
     if (!out_.ellipsoid && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
     if (given("quadric")) return read_quadric(ellipsoid, paraboloid);
+    if (fixed_quadric_) {  // a scene line against a general quadric (doc/cli.md, "relpos scene")
+      if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
+      fixed_quadric_->check(*out_.ellipsoid);
+      return;
+    }
     if (!fixed_ && !out_.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
     if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
     if (!fixed_ && !out_.paraboloid) out_.paraboloid = detail::paraboloid_from_tree(paraboloid, "paraboloid");
@@ -95,13 +108,7 @@ class LineReader {
     if (given("paraboloid")) throw InputError("a line takes \"paraboloid\" or \"quadric\", not both");
     if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
     out_.quadric = quadric_from_json(second, "quadric");
-    const std::size_t bits = std::max(relpos::detail::normalized_bits(out_.ellipsoid->matrix()),
-                                      relpos::detail::normalized_bits(out_.quadric->matrix()));
-    if (bits > kMaxNormalizedBits)  // doc/cli.md, Limits
-      throw InputError(
-          "numbers too large: a matrix of the pair, divided by its own content (its primitive integer form), has " +
-          std::to_string(bits) + "-bit entries, beyond the limit of " + std::to_string(kMaxNormalizedBits) +
-          " bits (kMaxNormalizedBits, doc/cli.md, Limits)");
+    check_general_pair_size(*out_.ellipsoid, *out_.quadric);  // doc/cli.md, Limits
   }
 
   void set_id(std::string_view text) {
@@ -115,7 +122,7 @@ class LineReader {
     if (i == line_.size()) throw InputError("empty line");
     if (line_[i] != '{') {
       detail::validate_json(line_);  // not JSON, or JSON that is not an object
-      throw InputError(fixed_ ? "expected a JSON object {\"id\": ..., \"ellipsoid\": ...}"
+      throw InputError(scene_ ? "expected a JSON object {\"id\": ..., \"ellipsoid\": ...}"
                               : "expected a JSON object {\"id\": ..., \"ellipsoid\": ..., \"paraboloid\": ...}");
     }
     i = detail::skip_space(line_, i + 1);
@@ -158,7 +165,7 @@ class LineReader {
     bool taken = false;
     if (key == "ellipsoid")
       taken = detail::fast_ellipsoid_at(line_.substr(i), options_.numbers_as_doubles, end, out_.ellipsoid);
-    else if (key == "paraboloid" && !fixed_)
+    else if (key == "paraboloid" && !scene_)
       taken = detail::fast_paraboloid_at(line_.substr(i), options_.numbers_as_doubles, end, out_.paraboloid);
     end = end == std::string_view::npos ? detail::value_end(line_, i) : i + end;
     if (end == std::string_view::npos) invalid_json(line_);
@@ -175,7 +182,7 @@ class LineReader {
     bool known = false;
     for (const std::string_view k : kKeys) {
       if (key != k) continue;
-      if (fixed_ && (k == "paraboloid" || k == "quadric")) break;  // not a key of a scene line
+      if (scene_ && (k == "paraboloid" || k == "quadric")) break;  // not a key of a scene line
       known = true;
       for (std::size_t m = 0; m < count_; ++m)
         if (members_[m].key == k && duplicate_.empty()) duplicate_ = key;
@@ -246,6 +253,8 @@ class LineReader {
   long number_;
   const BatchOptions& options_;
   const Paraboloid* fixed_;
+  const GeneralPairSize* fixed_quadric_;  ///< a scene's general quadric (then fixed_ is null)
+  bool scene_;                            ///< a scene line: the second body is fixed
   BatchLine& out_;
   std::string_view* id_;
   std::string_view* meta_;
@@ -273,8 +282,10 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
   return line;
 }
 
-void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
-                     BatchLine& out, std::string_view* id, std::string_view* meta) {
+namespace {
+
+void read_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
+               const GeneralPairSize* fixed_quadric, BatchLine& out, std::string_view* id, std::string_view* meta) {
   out.id = std::to_string(line_number);
   if (id) *id = out.id;
   out.meta.clear();
@@ -283,7 +294,19 @@ void read_batch_line(std::string_view line, long line_number, const BatchOptions
   out.paraboloid.reset();
   out.quadric.reset();
   const std::string_view normalized = normalize_line(line, line_number, options.max_line_bytes);
-  LineReader(normalized, line_number, options, fixed, out, id, meta).read();
+  LineReader(normalized, line_number, options, fixed, fixed_quadric, out, id, meta).read();
+}
+
+}  // namespace
+
+void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
+                     BatchLine& out, std::string_view* id, std::string_view* meta) {
+  read_line(line, line_number, options, fixed, nullptr, out, id, meta);
+}
+
+void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const GeneralPairSize& fixed,
+                     BatchLine& out, std::string_view* id, std::string_view* meta) {
+  read_line(line, line_number, options, nullptr, &fixed, out, id, meta);
 }
 
 }  // namespace relpos::io

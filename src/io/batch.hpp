@@ -48,6 +48,7 @@ std::string answer_batch_line(std::string_view line, long line_number, const Bat
 /// else with the line number (kOutOfMemoryNoIdMessage), and `out` is left empty only when not even
 /// that fits (a caller keeping some capacity in `out` never sees it).
 void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out);
+class GeneralPairSize;  // general_io.hpp
 
 /// One input line, read: the id as the JSON text to echo, and the quadrics.
 struct BatchLine {
@@ -75,6 +76,10 @@ std::string_view normalize_line(std::string_view line, long line_number, std::si
 /// instead (a view into `line`, or of out.id), before anything is thrown; the same for `meta` and
 /// out.meta (set once the members are scanned: empty before, and when the line has none).
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const Paraboloid* fixed,
+                     BatchLine& out, std::string_view* id = nullptr, std::string_view* meta = nullptr);
+/// The same for a scene line against a general quadric (doc/cli.md, "relpos scene"): out.ellipsoid
+/// only, the size limit checked against the quadric by `fixed` (general_io.hpp).
+void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const GeneralPairSize& fixed,
                      BatchLine& out, std::string_view* id = nullptr, std::string_view* meta = nullptr);
 
 }  // namespace relpos::io

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "algebra/pair_size.hpp"
 #include "general/decision.hpp"
 #include "io/json_values.hpp"
 #include "io/report_text.hpp"
@@ -204,6 +205,25 @@ Quadric quadric_from_json(const Json& v, const std::string& role) {
   fail(role,
        "no recognized quadric form (expected a 4x4 array or an object with \"matrix\", \"coefficients\" or "
        "\"type\")");
+}
+
+void check_general_pair_size(const Ellipsoid& e, const Quadric& q) {
+  relpos::detail::check_normalized_size(storage_of(e), storage_of(q), SizeLimit{});  // doc/cli.md, Limits
+}
+
+GeneralPairSize::GeneralPairSize(const Quadric& q) : q_(q) {
+  try {
+    relpos::detail::check_normalized_size(storage_of(q), SizeLimit{});
+  } catch (const InputError&) {
+    within_ = false;  // each pair's error then names the larger of its two matrices
+  }
+}
+
+void GeneralPairSize::check(const Ellipsoid& e) const {
+  if (within_)
+    relpos::detail::check_normalized_size(storage_of(e), SizeLimit{});
+  else
+    check_general_pair_size(e, q_);
 }
 
 std::optional<QuadricPosition> quadric_position_from_text(const std::string& s) {

@@ -21,6 +21,24 @@ namespace relpos::io {
 /// InputError "<role>: ..." naming the field, or what the matrix is when it is refused.
 Quadric quadric_from_json(const detail::Json& value, const std::string& role = "quadric");
 
+/// The pair's size limit (doc/cli.md, Limits): InputError "numbers too large: ..." when a matrix's
+/// primitive integer form has entries beyond kMaxNormalizedBits bits, the message of
+/// check_normalized_pair_size. Free for matrices of doubles (always within the limit).
+void check_general_pair_size(const Ellipsoid& e, const Quadric& q);
+
+/// check_general_pair_size for many ellipsoids against one quadric (a scene, Python's
+/// decide_positions): the quadric's own size computed once, each ellipsoid's as it comes; the same
+/// errors with the same messages.
+class GeneralPairSize {
+ public:
+  explicit GeneralPairSize(const Quadric& q);
+  void check(const Ellipsoid& e) const;
+
+ private:
+  const Quadric& q_;
+  bool within_ = true;  ///< q alone is within the limit
+};
+
 /// The same pair as a multi-line report (relpos classify --quadric).
 std::string general_answer_text(const QuadricClassification& c, int digits);
 

@@ -2,7 +2,8 @@
 """General pairs through the CLI (doc/testing.md, `cli_general`): `relpos batch` (full and minimal
 evidence) on the lines of tests/general_cases_jsonl.cpp gives every pair the position of its
 construction or of the independent oracle, `relpos verify` checks every certificate (and refuses
-tampered ones), and `relpos classify --quadric` answers a geometric form as the batch does.
+tampered ones), `relpos classify --quadric` answers a geometric form as the batch does, and `relpos
+scene --quadric` gives the constructed pairs that share a quadric their positions.
 
 Usage: check_general.py RELPOS GENERATOR [RANDOM]
 """
@@ -96,6 +97,39 @@ def main() -> int:
             want = [m for _, m in mixed]
             if got != want:
                 failures.append(f"paraboloid and quadric (--numbers {numbers}): {got}, expected {want}")
+        # relpos scene --quadric: the lines that share a quadric (constructed ones, nudged tangencies)
+        # form a scene; every body gets the position of its construction (on 2 threads: one run per
+        # scene keeps the sanitizer build's time down; test_general_scene varies the threads), and the
+        # summary counts them.
+        groups = {}
+        for given in lines:
+            j = json.loads(given)
+            groups.setdefault(json.dumps(j["quadric"]), []).append(j)
+        scenes = 0
+        for quadric, members in groups.items():
+            if len(members) < 2:
+                continue
+            scenes += 1
+            body = "".join(json.dumps({"id": m["id"], "ellipsoid": m["ellipsoid"]}) + "\n" for m in members)
+            for threads in ("2",):
+                run = subprocess.run([relpos, "scene", "--quadric", quadric, "--threads", threads, "--no-progress"],
+                                     input=body, capture_output=True, text=True)
+                got = [json.loads(a) for a in run.stdout.splitlines()]
+                want = [m["comment"]["expect"] for m in members]
+                if run.returncode != 0 or [g.get("position") for g in got] != want:
+                    failures.append(f"scene --quadric {quadric[:60]}: {[g.get('position', g.get('error')) for g in got]}, "
+                                    f"expected {want}")
+                    continue
+                summary = json.loads(run.stderr.splitlines()[-1])["summary"]
+                if summary["bodies"] != len(members) or sum(summary["positions"].values()) != len(members):
+                    failures.append(f"scene --quadric summary: {summary}")
+        if scenes < 5:
+            failures.append(f"only {scenes} scenes of constructed pairs")
+        # A scene's quadric that cannot be read: exit 1 and the batch line's message.
+        run = subprocess.run([relpos, "scene", "--quadric", "[[1,0,0,0],[0,1,0,0],[0,0,0,0],[0,0,0,0]]"],
+                             input="", capture_output=True, text=True)
+        if run.returncode != 1 or not run.stderr.startswith("relpos: quadric: not a quadric solid"):
+            failures.append(f"scene --quadric with a degenerate quadric: {run.returncode} {run.stderr[:200]}")
     for f in failures[:40]:
         print(f)
     print(f"{len(lines)} general lines, {len(failures)} failures")

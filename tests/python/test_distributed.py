@@ -3,6 +3,7 @@ worker processes. The reference for every output is the `relpos batch` CLI (RELP
 file with the same options.
 """
 
+import json
 import os
 import re
 import subprocess
@@ -61,6 +62,28 @@ def edge_file(tmp_path_factory):
     return path
 
 
+@pytest.fixture(scope="module")
+def quadric_file(tmp_path_factory):
+    """Lines with "quadric" in place of "paraboloid" (doc/quadrics.md): a ball against a hyperboloid
+    (TI along its waist: the hard case), two ellipsoids (O), a cylinder (C), a half-space (E), a
+    degenerate quadric (an error line) and a line with both "paraboloid" and "quadric" (an error)."""
+    ball = {"sphere": {"center": [0, 0, 0], "radius": 1}}
+    lines = [
+        {"id": "h", "ellipsoid": ball, "quadric": {"type": "hyperboloid of one sheet", "center": [0, 0, 0],
+                                                  "axes": [1, 1, 1]}},
+        {"id": "o", "ellipsoid": ball, "quadric": {"type": "ellipsoid", "center": [0.25, 0, 0],
+                                                  "axes": [0.5, 0.25, 0.125], "rotation": [1, 2, 3, 4]}},
+        {"id": "c", "ellipsoid": ball, "quadric": {"type": "elliptic cylinder", "center": [1, 0, 0], "a": 0.5, "b": 2}},
+        {"id": "e", "ellipsoid": ball, "quadric": {"type": "half-space", "normal": [1, 1, 1], "offset": -2}},
+        {"id": "bad", "ellipsoid": ball, "quadric": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]},
+        {"id": "both", "ellipsoid": ball, "quadric": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -1]],
+         "paraboloid": {"vertex": [0, 0, 0], "a": 1, "b": 1}},
+    ]
+    path = tmp_path_factory.mktemp("quadric") / "quadric.jsonl"
+    path.write_text("".join(json.dumps(x) + "\n" for x in lines * 20))
+    return path
+
+
 # Each evidence level, and the other options of `relpos batch`.
 OPTIONS = [
     ({"evidence": "full"}, ["--evidence", "full"]),
@@ -72,8 +95,8 @@ OPTIONS = [
 
 
 @pytest.mark.parametrize("kwargs,flags", OPTIONS, ids=lambda x: str(x) if isinstance(x, dict) else None)
-def test_byte_identity_with_cli(client, tmp_path, edge_file, kwargs, flags):
-    inputs = CORPUS + [edge_file]
+def test_byte_identity_with_cli(client, tmp_path, edge_file, quadric_file, kwargs, flags):
+    inputs = CORPUS + [edge_file, quadric_file]
     # Blocks of 1 KiB: every file is cut into several blocks, lines straddle block edges.
     written = relpos.distributed.batch(inputs, tmp_path / "out", client=client, block_bytes=1024, **kwargs)
     assert written == [str(tmp_path / "out" / os.path.basename(p)) for p in inputs]
