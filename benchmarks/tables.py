@@ -394,7 +394,7 @@ def evidence_section(r):
                  " | ".join(f"**{us(f):.1f} µs**" for f in forms) + " |")
     for tag, label in r["components"]:
         depth = len(label) - len(label.lstrip(" "))
-        name = "&nbsp;&nbsp;" * depth + label.strip()
+        name = "&nbsp;&nbsp;" * (depth // 2) + label.strip()  # two spaces of the label a level
         lines.append(f"| {name} | " + " | ".join(
             f"{us(f) * r['forms'][f]['shares'][tag]:.1f} µs ({100 * r['forms'][f]['shares'][tag]:.0f} %)"
             for f in forms) + " |")
