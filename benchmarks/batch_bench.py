@@ -29,7 +29,10 @@ import time
 
 def write_regime(path, lines, seed=12, form="sphere"):
     """form "sphere": sphere and standard paraboloid (6 numbers a line); "matrix": the same bodies
-    as two 4x4 matrices of doubles (32 numbers a line, what a float pipeline holds)."""
+    as two 4x4 matrices of doubles (32 numbers a line, what a float pipeline holds); "user": a sphere
+    and a standard paraboloid placed as a user's are (write_user_regime)."""
+    if form == "user":
+        return write_user_regime(path, lines, seed)
     rng = random.Random(seed)
     f = lambda v: "%.17g" % v
     with open(path, "w") as out:
@@ -48,6 +51,25 @@ def write_regime(path, lines, seed=12, form="sphere"):
             p = [[1 / a / a, 0, 0, 0], [0, 1 / b / b, 0, 0], [0, 0, 0, -0.5], [0, 0, -0.5, 0]]
             m = lambda q: "[" + ",".join("[" + ",".join(f(v) for v in row) + "]" for row in q) + "]"
             out.write('{"id":%d,"ellipsoid":{"matrix":%s},"paraboloid":{"matrix":%s}}\n' % (i, m(e), m(p)))
+
+
+def write_user_regime(path, lines, seed=12):
+    """Spheres and standard paraboloids as a user's float code places them (regime::user_pair of
+    benchmarks/ordinary/regime_matrices.hpp, written as text): the vertex anywhere in [-2, 2]^3, a, b
+    in [0.5, 2], the radius 0.02 to 0.3 min(a, b)^2, the centre within 0.5 a, 0.5 b of the axis at
+    -2.4 to 5 radii above the surface, every number printed with %.17g."""
+    rng = random.Random(seed)
+    f = lambda v: "%.17g" % v
+    with open(path, "w") as out:
+        for i in range(lines):
+            v = [rng.uniform(-2, 2) for _ in range(3)]
+            a, b = rng.uniform(0.5, 2), rng.uniform(0.5, 2)
+            r = rng.uniform(0.02, 0.3) * min(a, b) ** 2
+            x, y = rng.uniform(-0.5, 0.5) * a, rng.uniform(-0.5, 0.5) * b
+            c = [v[0] + x, v[1] + y, v[2] + x * x / (a * a) + y * y / (b * b) + rng.uniform(-2.4, 5) * r]
+            out.write('{"id":%d,"ellipsoid":{"sphere":{"center":[%s,%s,%s],"radius":%s}},'
+                      '"paraboloid":{"vertex":[%s,%s,%s],"a":%s,"b":%s}}\n'
+                      % (i, f(c[0]), f(c[1]), f(c[2]), f(r), f(v[0]), f(v[1]), f(v[2]), f(a), f(b)))
 
 
 def run_time(cmd, out_path):
@@ -108,8 +130,9 @@ def main():
     ap.add_argument("--repeat", type=int, default=3, help="rounds; each runs every command once")
     ap.add_argument("--threads", type=int, default=2, help="threads of the multi-threaded runs")
     ap.add_argument("--file", help="use this JSON Lines file instead of writing the regime files")
-    ap.add_argument("--form", choices=("sphere", "matrix", "both"), default="both",
-                    help="how the regime file writes the bodies (both: one file of each, in one run)")
+    ap.add_argument("--form", choices=("sphere", "matrix", "both", "user", "all"), default="both",
+                    help="how the regime file writes the bodies (both: sphere and matrix, in one run; user: "
+                    "spheres and paraboloids placed as a user's are; all: the three)")
     ap.add_argument("--out", help="write the figures as JSON to this file")
     args = ap.parse_args()
 
@@ -117,7 +140,8 @@ def main():
     result = {"threads": args.threads, "cores": os.cpu_count(), "rounds": args.repeat, "load_before": load(),
               "forms": {}}
     with tempfile.TemporaryDirectory() as tmp:
-        forms = ["file"] if args.file else (["sphere", "matrix"] if args.form == "both" else [args.form])
+        forms = ["file"] if args.file else {"both": ["sphere", "matrix"], "all": ["sphere", "matrix", "user"]}.get(
+            args.form, [args.form])
         for form in forms:
             data = args.file or os.path.join(tmp, form + ".jsonl")
             if not args.file:

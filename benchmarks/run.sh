@@ -11,6 +11,8 @@
 #                                # decisions (doc/performance.md, "The paper's regime")
 #   benchmarks/run.sh --python [python_bench options]       # the Python package against float code in
 #                                # numpy and in pure Python (doc/python.md, "Measured")
+#   benchmarks/run.sh --evidence # where a full-evidence line of relpos batch spends its time, component by
+#                                # component (perf; doc/performance.md, "Where a full-evidence line's time goes")
 #   benchmarks/run.sh --lanes [lanes_bench options]         # many pairs at once: decide_positions on 10^6
 #                                # pairs from doubles against the minimal float decision, scalar and in
 #                                # lanes (doc/performance.md, "Many pairs at once")
@@ -51,6 +53,23 @@ if [ "${1:-}" = "--ordinary" ]; then
     --threads 2 --form both --out "$OUT/batch.json" 2>&1 | tee "$OUT/batch_log.txt"
   [ "${PIPESTATUS[0]}" = 0 ] || exit 1
   /usr/bin/python3 "$ROOT/benchmarks/tables.py" --ordinary "$OUT"
+  exit 0
+fi
+# benchmarks/run.sh --evidence: the CLI built in build-evidence (Release), then evidence_profile.py
+# (perf record on `relpos batch --evidence full` over the sphere, matrix and user regime files) ->
+# benchmarks/results/evidence.json and evidence_log.txt, and its table in doc/performance.md rewritten
+# (tables.py --evidence). About a minute; needs perf (Debian linux-perf).
+if [ "${1:-}" = "--evidence" ]; then
+  shift
+  BUILD="$ROOT/build-evidence"
+  cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DRELPOS_BUILD_TESTS=OFF -DRELPOS_BUILD_BENCHMARKS=OFF \
+    -DRELPOS_BUILD_PYTHON=OFF >/dev/null
+  cmake --build "$BUILD" -j2 --target relpos_cli >/dev/null
+  mkdir -p "$OUT"
+  /usr/bin/python3 "$ROOT/benchmarks/evidence_profile.py" --cli "$BUILD/cli/relpos" --out "$OUT/evidence.json" "$@" 2>&1 |
+    tee "$OUT/evidence_log.txt"
+  [ "${PIPESTATUS[0]}" = 0 ] || exit 1
+  /usr/bin/python3 "$ROOT/benchmarks/tables.py" --evidence "$OUT"
   exit 0
 fi
 # benchmarks/run.sh --python: the extension and the CLI built in build-python (Release), then

@@ -8,6 +8,7 @@
     /usr/bin/python3 benchmarks/tables.py --python [RESULTS_DIR]     # doc/python.md "Measured", see below
     /usr/bin/python3 benchmarks/tables.py --regime [RESULTS_DIR]     # "The paper's regime", from regime.json
     /usr/bin/python3 benchmarks/tables.py --lanes [RESULTS_DIR]      # "Many pairs at once", from lanes.json
+    /usr/bin/python3 benchmarks/tables.py --evidence [RESULTS_DIR]   # full evidence by component, evidence.json
 
 --ordinary renders ordinary.json (ordinary_bench) and batch.json (batch_bench.py) and writes them into
 doc/performance.md between the markers ORDINARY_BEGIN and ORDINARY_END (benchmarks/run.sh --ordinary).
@@ -30,7 +31,8 @@ ordinary = "--ordinary" in args
 python = "--python" in args
 regime = "--regime" in args
 lanes = "--lanes" in args
-args = [a for a in args if a not in ("--edge", "--ordinary", "--python", "--regime", "--lanes")]
+evidence = "--evidence" in args
+args = [a for a in args if a not in ("--edge", "--ordinary", "--python", "--regime", "--lanes", "--evidence")]
 out = args[0] if args else os.path.join(os.path.dirname(__file__), "results")
 
 # The bars of the ordinary-pairs section: time ratio to the minimal float decision at most this, and
@@ -378,6 +380,37 @@ def lanes_section(r):
                       for cache, m in met) + "."]
     return "\n".join(out)
 
+
+EVIDENCE_FORMS = {"sphere": "sphere file", "matrix": "matrix file", "user": "user sphere file"}
+
+
+def evidence_section(r):
+    """A full-evidence line's CPU time by component (evidence_profile.py)."""
+    forms = [f for f in EVIDENCE_FORMS if f in r["forms"]]
+    lines = ["| component | " + " | ".join(EVIDENCE_FORMS[f] for f in forms) + " |",
+             "|---" * (len(forms) + 1) + "|"]
+    us = lambda f: r["forms"][f]["full_us"]  # noqa: E731
+    lines.append("| **a full-evidence line (CPU, one thread)** | " +
+                 " | ".join(f"**{us(f):.1f} µs**" for f in forms) + " |")
+    for tag, label in r["components"]:
+        depth = len(label) - len(label.lstrip(" "))
+        name = "&nbsp;&nbsp;" * (depth // 2) + label.strip()  # two spaces of the label a level
+        lines.append(f"| {name} | " + " | ".join(
+            f"{us(f) * r['forms'][f]['shares'][tag]:.1f} µs ({100 * r['forms'][f]['shares'][tag]:.0f} %)"
+            for f in forms) + " |")
+    lines.append("| minimal evidence, for comparison | " +
+                 " | ".join(f"{r['forms'][f]['minimal_us']:.1f} µs" for f in forms) + " |")
+    unwound = ", ".join(f"{EVIDENCE_FORMS[f]} {100 * r['forms'][f]['shares']['unwound']:.0f} %" for f in forms)
+    lines += ["", f"Measured {r['date']} (load average {r['load_before']} before, {r['load_after']} after), "
+              f"{r['lines']} lines a file; samples unwound to `main`: {unwound}."]
+    return "\n".join(lines)
+
+
+if evidence:
+    evidence_json = os.path.join(out, "evidence.json")
+    write_generated([("evidence components", "benchmarks/run.sh --evidence", [evidence_json],
+                      evidence_section(json.load(open(evidence_json))))])
+    sys.exit(0)
 
 if lanes:
     lanes_json = os.path.join(out, "lanes.json")

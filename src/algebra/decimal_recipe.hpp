@@ -52,8 +52,10 @@ bool has_closed_form(const DecimalRecipe& r);
 bool truncated_doubles(const DecimalRecipe& r, DoubleMatrix4& out);
 
 /// For decimal numbers: integer_form(exact_matrix(r), l) and split_scale(l, exact_matrix(r)) written
-/// from the exponents and mantissas (forms::integer_form_of; recipe_integer_form.cpp); false
-/// (nothing written) for a recipe of doubles or a standard paraboloid off the axis.
+/// from the exponents and mantissas (forms::integer_form_of; recipe_integer_form.cpp), a standard
+/// paraboloid off the axis included (its vertex's sum over lcm(R_a^2, R_b^2); the split's factors
+/// then a coprime base of the same rest, perhaps coarser than split_scale's); false (nothing
+/// written) for a recipe of doubles.
 bool write_integer_form(const DecimalRecipe& r, const forms::IntegerFormOut& out);
 
 /// c0^2 + c1^2 + c2^2 - r^2 of a sphere's decimal numbers as an integer sum over the smallest power
