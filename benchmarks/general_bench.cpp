@@ -81,7 +81,6 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-
 DoubleMatrix4 doubles_of(const Matrix4& m) {
   DoubleMatrix4 d{};
   for (std::size_t i = 0; i < 16; ++i) d[i] = oracle::nearest_double(m.a[i]);
@@ -292,10 +291,11 @@ int main(int argc, char** argv) {
     wwk_wrong += wwk_separated(em[i], qm[i]) != (x.position == QuadricPosition::E);
     ++counts[static_cast<int>(x.position)];
   }
-  std::printf("pairs %zu: I %zu, C %zu, E %zu, O %zu (others %zu); filter decided %zu; float decision wrong on %zu, "
-              "WWK wrong on %zu\n",
-              n, counts[0], counts[2], counts[4], counts[5], counts[1] + counts[3] + counts[6] + counts[7], filtered,
-              float_wrong, wwk_wrong);
+  std::printf(
+      "pairs %zu: I %zu, C %zu, E %zu, O %zu (others %zu); filter decided %zu; float decision wrong on %zu, "
+      "WWK wrong on %zu\n",
+      n, counts[0], counts[2], counts[4], counts[5], counts[1] + counts[3] + counts[6] + counts[7], filtered,
+      float_wrong, wwk_wrong);
   std::vector<double> t_float, t_wwk, t_decide, t_from;
   volatile int sink = 0;
   for (int r = 0; r < rounds; ++r) {
@@ -345,8 +345,7 @@ int main(int argc, char** argv) {
         sink = sink + s;
       }));
     }
-    const double k = 1e9 / static_cast<double>(idx.size()), a = median(tf) * k, w = median(tw) * k,
-                 b = median(td) * k;
+    const double k = 1e9 / static_cast<double>(idx.size()), a = median(tf) * k, w = median(tw) * k, b = median(td) * k;
     std::printf("  %s pairs (%zu): float %.1f ns, WWK %.1f ns, decide_position %.1f ns (%.2fx float, %.2fx WWK)\n",
                 to_string(p).c_str(), idx.size(), a, w, b, b / a, b / w);
   }

@@ -120,8 +120,8 @@ int zero_multiplicity(QuadricType t) {
 /// Whether the min side's interval starts at r3 > 0 rather than at 0 (B has an eigenvalue <= 0 and a
 /// negative one after the normalization: §17's table, t_lo).
 bool min_end_positive(QuadricType t) {
-  return t == QuadricType::HyperboloidOneSheet || t == QuadricType::HyperboloidTwoSheets ||
-         t == QuadricType::Cone || t == QuadricType::HyperbolicParaboloid || t == QuadricType::HyperbolicCylinder;
+  return t == QuadricType::HyperboloidOneSheet || t == QuadricType::HyperboloidTwoSheets || t == QuadricType::Cone ||
+         t == QuadricType::HyperbolicParaboloid || t == QuadricType::HyperbolicCylinder;
 }
 
 }  // namespace
