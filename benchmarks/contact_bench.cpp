@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/discriminant_case.hpp"
 #include "support/random_pairs.hpp"
 
 using namespace relpos;
@@ -81,7 +82,7 @@ int main(int argc, char** argv) {
     const Ellipsoid& e = pairs[i].e;
     const Verdict v = decide_position(e, p);
     ++positions[static_cast<std::size_t>(v.position)];
-    const auto d = decide_by_discriminant(e, p);
+    const auto d = detail::decide_by_discriminant(e, p);
     ++by_disc[static_cast<std::size_t>(d.verdict.stage)];
     const ContactAnswer c = contact(e, p), s = checkers[pairs[i].para].contact(e);
     ++by_contact[static_cast<std::size_t>(c.stage)];
@@ -99,7 +100,9 @@ int main(int argc, char** argv) {
       {"decide_position",
        [&](std::size_t i) { return int(decide_position(pairs[i].e, paras[pairs[i].para]).position); }},
       {"decide_by_discriminant",
-       [&](std::size_t i) { return int(decide_by_discriminant(pairs[i].e, paras[pairs[i].para]).verdict.position); }},
+       [&](std::size_t i) {
+         return int(detail::decide_by_discriminant(pairs[i].e, paras[pairs[i].para]).verdict.position);
+       }},
       {"ExteriorTracker::update", [&](std::size_t i) { return int(trackers[i].update(pairs[i].e).position); }},
       {"contact()", [&](std::size_t i) { return int(contact(pairs[i].e, paras[pairs[i].para]).contact); }},
       {"ContactChecker::contact",

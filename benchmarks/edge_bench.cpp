@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "certificate/build.hpp"
+#include "decide/stages.hpp"
 #include "flint_reference.hpp"
 #include "float_baseline.hpp"
 #include "pair/pair.hpp"
@@ -250,7 +251,7 @@ int main(int argc, char** argv) {
   for (const auto& m : ms)
     if (!m.exact) header.push_back(m.name + "_error_rate");
   header.push_back("n");
-  for (const Stage st : kClassifierStages) header.push_back("stage_" + to_string(st));
+  for (const Stage st : detail::kClassifierStages) header.push_back("stage_" + to_string(st));
   std::ofstream csv(out_dir + "/edge.csv");
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << header[i];
   csv << "\n";
@@ -320,10 +321,10 @@ int main(int argc, char** argv) {
     for (std::size_t j = 0; j < ms.size(); ++j)
       if (!ms[j].exact) csv << "," << errors[j] / n;
     csv << "," << pairs.size();
-    for (const Stage st : kClassifierStages) csv << "," << stages[static_cast<std::size_t>(st)];
+    for (const Stage st : detail::kClassifierStages) csv << "," << stages[static_cast<std::size_t>(st)];
     csv << "\n";
     std::printf("       decided by:");
-    for (const Stage st : kClassifierStages)
+    for (const Stage st : detail::kClassifierStages)
       if (stages[static_cast<std::size_t>(st)])
         std::printf(" %s %d", to_string(st).c_str(), stages[static_cast<std::size_t>(st)]);
     std::printf("\n");

@@ -9,6 +9,8 @@
 #include <flint/ulong_extras.h>
 #include <gmp.h>
 
+#include "decide/decision.hpp"
+
 namespace bench {
 
 using relpos::Matrix4;
@@ -215,7 +217,7 @@ FlintAnswer flint_classify(const Matrix4& e, const Matrix4& p) {
   }
   out.rho_vs_one = rho_vs_one(w);
   if (out.rho_vs_one == 2) return out;
-  const auto v = relpos::decide_from_root_facts(x, out.rho_vs_one);
+  const auto v = relpos::detail::decide_from_root_facts(x, out.rho_vs_one);
   if (!v) return out;  // not small, four negative roots: the gap test of math.md §8 (not in this reference)
   out.position = v->position;
   out.ok = true;

@@ -18,7 +18,7 @@
 //     u1 <= u2 the roots of s(-u), rho = K / u1^2, so rho <= 1 iff sqrt(K) <= u1, decided by the
 //     sign of s(-sqrt(K)) (times the positive conjugate: (s2 K + s0)^2 - s1^2 K) and the side of
 //     the vertex (s1^2 - 4 s2^2 K), in fmpz after clearing K's denominator.
-// The facts go to relpos's classification table, decide_from_root_facts (classify.hpp): the
+// The facts go to relpos's classification table, decide_from_root_facts (decide/decision.hpp): the
 // table is shared, the arithmetic and the root facts are not.
 #pragma once
 

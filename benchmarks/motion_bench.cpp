@@ -32,6 +32,7 @@
 
 #include "algebra/pencil.hpp"
 #include "algebra/sturm.hpp"
+#include "motion/polynomial_motion.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/motion.hpp"
 
@@ -161,7 +162,8 @@ Case crossing_case(std::mt19937_64& rng) {
     RigidMotion m;
     for (std::size_t i = 0; i < 3; ++i) m.translation[i] = {start[i], target[i] - start[i]};
     Case k{e0, p, m, Rational(0), Rational(1), std::nullopt};
-    if (classify(placed_ellipsoid(e0, m, Rational(0)), p, Evidence::Minimal).verdict.position == Position::E) return k;
+    if (classify(detail::placed_ellipsoid(e0, m, Rational(0)), p, Evidence::Minimal).verdict.position == Position::E)
+      return k;
   }
 }
 

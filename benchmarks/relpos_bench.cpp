@@ -29,6 +29,7 @@
 #include "algebra/pencil.hpp"
 #include "algebra/smallness.hpp"
 #include "algebra/sturm.hpp"
+#include "decide/stages.hpp"
 #include "flint_reference.hpp"
 #include "float_baseline.hpp"
 #include "relpos/classify.hpp"
@@ -444,12 +445,12 @@ int main(int argc, char** argv) {
   {
     std::ofstream csv(out_dir + "/stages.csv");
     csv << "family,eps,n";
-    for (const Stage s : kClassifierStages) csv << "," << stage_key(s);
+    for (const Stage s : detail::kClassifierStages) csv << "," << stage_key(s);
     csv << "\n";
     for (const auto& r : rows)
       if (r.method == "adaptive") {
         csv << r.family << "," << r.eps << "," << r.r.n;
-        for (const Stage st : kClassifierStages) csv << "," << r.r.stages[static_cast<std::size_t>(st)];
+        for (const Stage st : detail::kClassifierStages) csv << "," << r.r.stages[static_cast<std::size_t>(st)];
         csv << "\n";
       }
   }
@@ -547,8 +548,8 @@ int main(int argc, char** argv) {
              << ", \"decided_fraction\": " << fmt(r.r.decided_fraction) << ", \"n\": " << r.r.n;
           if (r.method == "adaptive") {
             js << ", \"stage_fractions\": {";
-            for (const Stage s : kClassifierStages)
-              js << (s != kClassifierStages.front() ? ", " : "") << "\"" << stage_key(s)
+            for (const Stage s : detail::kClassifierStages)
+              js << (s != detail::kClassifierStages.front() ? ", " : "") << "\"" << stage_key(s)
                  << "\": " << fmt(double(r.r.stages[static_cast<std::size_t>(s)]) / r.r.n);
             js << "}";
           }

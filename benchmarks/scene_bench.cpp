@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "decide/stages.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/scene.hpp"
 #include "scene/demo.hpp"
@@ -196,7 +197,7 @@ int main(int argc, char** argv) {
   {
     std::vector<std::vector<double>> by(kAllStages.size());
     for (std::size_t i = 0; i < n; ++i) by[static_cast<std::size_t>(pair_verdict[i].stage)].push_back(pair_ns[i]);
-    for (const Stage stage : kClassifierStages) {
+    for (const Stage stage : detail::kClassifierStages) {
       const std::size_t s = static_cast<std::size_t>(stage);
       const std::string name = to_string(stage);
       const double sum = std::accumulate(by[s].begin(), by[s].end(), 0.0);
@@ -204,7 +205,7 @@ int main(int argc, char** argv) {
       std::printf("  decided by %-21s %8zu pairs (%6.3f %%): median %8.0f ns, mean %8.0f ns, %5.1f %% of the time\n",
                   name.c_str(), by[s].size(), 100.0 * static_cast<double>(by[s].size()) / static_cast<double>(n),
                   median(by[s]), mean, 100.0 * sum / (pair_mean * static_cast<double>(n)));
-      by_stage_json << (stage != kClassifierStages.front() ? ", " : "") << "\"" << name
+      by_stage_json << (stage != detail::kClassifierStages.front() ? ", " : "") << "\"" << name
                     << "\": {\"pairs\": " << by[s].size() << ", \"median_ns\": " << median(by[s])
                     << ", \"mean_ns\": " << mean << "}";
     }
@@ -266,9 +267,9 @@ int main(int argc, char** argv) {
   std::printf("positions: I %zu, TI %zu, C %zu, TE %zu, E %zu\n", c.count(Position::I), c.count(Position::TI),
               c.count(Position::C), c.count(Position::TE), c.count(Position::E));
   std::printf("settled by:");
-  for (const Stage s : kSceneStages)
+  for (const Stage s : detail::kSceneStages)
     std::printf(" %s %.3f %%%s", to_string(s).c_str(), 100.0 * static_cast<double>(c.count(s)) / static_cast<double>(n),
-                s != kSceneStages.back() ? "," : "\n");
+                s != detail::kSceneStages.back() ? "," : "\n");
 
   // Determinism: every run gives the same verdicts.
   bool runs_agree = true;
@@ -371,8 +372,8 @@ int main(int argc, char** argv) {
     js << "\n  ],\n  \"positions\": {\"I\": " << c.count(Position::I) << ", \"TI\": " << c.count(Position::TI)
        << ", \"C\": " << c.count(Position::C) << ", \"TE\": " << c.count(Position::TE)
        << ", \"E\": " << c.count(Position::E) << "},\n  \"stages\": {";
-    for (const Stage s : kSceneStages)
-      js << (s != kSceneStages.front() ? ", " : "") << "\"" << to_string(s) << "\": " << c.count(s);
+    for (const Stage s : detail::kSceneStages)
+      js << (s != detail::kSceneStages.front() ? ", " : "") << "\"" << to_string(s) << "\": " << c.count(s);
     js << "},\n  \"runs_agree\": " << (runs_agree ? "true" : "false") << ", \"differences_vs_pairs\": " << vs_pairs
        << ",\n  \"verified\": " << (verify ? "true" : "false") << ", \"verify_seconds\": " << verify_s
        << ", \"mismatches_vs_classify_exact\": " << mismatches

@@ -25,12 +25,15 @@
 #include <utility>
 #include <vector>
 
+#include "algebra/pair_size.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "io/answer_json.hpp"
 #include "io/batch.hpp"
 #include "io/general_io.hpp"
 #include "io/json_tree.hpp"
+#include "io/report_text.hpp"
+#include "margin/family.hpp"
 #include "options.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
@@ -182,7 +185,7 @@ bool take_margin(Args& args, int& bits) {
     return true;
   }
   if (!args.value("--margin-bits", v)) return false;
-  bits = static_cast<int>(parse_count(v, "--margin-bits", 1, relpos::kMaxMarginBits));
+  bits = static_cast<int>(parse_count(v, "--margin-bits", 1, relpos::detail::kMaxMarginBits));
   return true;
 }
 
@@ -269,7 +272,7 @@ int run_classify(Args& args) {
     const std::optional<relpos::Margin> m =
         margin_bits > 0 ? std::optional<relpos::Margin>(relpos::margin(*e, *p, margin_bits)) : std::nullopt;
     if (contact_only) {
-      relpos::check_normalized_pair_size(*e, *p, limit);  // as `relpos batch --contact-only`
+      relpos::detail::check_normalized_pair_size(*e, *p, limit);  // as `relpos batch --contact-only`
       const relpos::ContactAnswer a = relpos::contact(*e, *p, limit);
       if (json)
         std::cout << with_margin(relpos::io::contact_json_text(a), m, options) << '\n';

@@ -28,6 +28,8 @@
 #include "common.hpp"
 #include "io/json_tree.hpp"
 #include "io/motion_json.hpp"
+#include "io/report_text.hpp"
+#include "motion/polynomial_motion.hpp"
 #include "options.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
@@ -162,7 +164,7 @@ Json timeline_json(const relpos::Timeline& tl, int digits) {
   Json inst = Json::array();
   for (const auto& i : tl.instants) {
     Json causes = Json::array();
-    for (const auto& c : relpos::cause_names(i.causes)) causes.push_back(c);
+    for (const auto& c : relpos::detail::cause_names(i.causes)) causes.push_back(c);
     inst.push_back(Json{{"time", time_json(i.time, digits)},
                         {"position", relpos::to_string(i.position)},
                         {"small", i.small},
@@ -240,7 +242,7 @@ std::string timeline_text(const relpos::Timeline& tl, int digits) {
   os << "instants:\n";
   for (const auto& i : tl.instants) {
     std::string causes;
-    for (const auto& c : relpos::cause_names(i.causes)) causes += (causes.empty() ? "" : ",") + c;
+    for (const auto& c : relpos::detail::cause_names(i.causes)) causes += (causes.empty() ? "" : ",") + c;
     os << "  t = " << time_text(i.time, digits) << "  " << relpos::to_string(i.position)
        << (i.small ? "" : " (not small)") << "  [" << causes << "]  " << i.how << "\n";
   }
@@ -297,7 +299,7 @@ std::string compute(const ShapeOptions& shapes, const std::optional<std::string>
       motion["rotation"] = nullptr;
     }
     Json pv = Json::array();
-    for (const auto& c : relpos::pivot_of(e, m)) pv.push_back(relpos::to_string(c));
+    for (const auto& c : relpos::detail::pivot_of(e, m)) pv.push_back(relpos::to_string(c));
     motion["pivot"] = pv;
     out["motion"] = motion;
     out["first_contact"] = first_contact_json(fc, digits);
@@ -309,7 +311,7 @@ std::string compute(const ShapeOptions& shapes, const std::optional<std::string>
      << poly_text(m.translation[0]) << ", " << poly_text(m.translation[1]) << ", " << poly_text(m.translation[2])
      << ")";
   if (m.rotation) {
-    const auto pv = relpos::pivot_of(e, m);
+    const auto pv = relpos::detail::pivot_of(e, m);
     os << ", q(t) = (" << poly_text((*m.rotation)[0]) << ", " << poly_text((*m.rotation)[1]) << ", "
        << poly_text((*m.rotation)[2]) << ", " << poly_text((*m.rotation)[3]) << ") about (" << relpos::to_string(pv[0])
        << ", " << relpos::to_string(pv[1]) << ", " << relpos::to_string(pv[2]) << ")";

@@ -28,14 +28,17 @@
 #include <thread>
 #include <vector>
 
+#include "algebra/pair_size.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "decide/stages.hpp"
 #include "io/answer_json.hpp"
 #include "io/batch.hpp"
 #include "io/json_tree.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 #include "scene/demo.hpp"
+#include "scene/scene_pool.hpp"
 
 namespace relpos_cli {
 namespace {
@@ -176,7 +179,7 @@ void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, co
   } catch (const relpos::InputError& e) {
     throw relpos::InputError(std::string("ellipsoid: ") + e.what());
   }
-  relpos::check_normalized_pair_size(*out.body, p, options.size_limit);  // the limit of `relpos batch`
+  relpos::detail::check_normalized_pair_size(*out.body, p, options.size_limit);  // the limit of `relpos batch`
 }
 
 /// Parse a line; never throws (errors land in out.error). JSON Lines go through the reader of
@@ -474,10 +477,11 @@ int run_scene(Args& args) {
       }
     }
     relpos::SceneOptions options;
-    options.threads = threads;
     options.size_limit = options_line.size_limit;
     options.progress = &bar.counter();  // ...and one when answered
-    const relpos::SceneResult result = scene.classify(bodies, options);
+    // On the pool that parsed the block: one pool for the whole run, not one per block.
+    const relpos::SceneResult result =
+        relpos::detail::SceneAccess::classify(scene, bodies.data(), bodies.size(), options, parse_pool);
     classify_seconds += result.seconds;
     used_threads = std::max(used_threads, result.threads);
     counts.merge(result.counts);
@@ -516,7 +520,7 @@ int run_scene(Args& args) {
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Json positions, stages;
   for (const relpos::Position pos : relpos::kAllPositions) positions[relpos::to_string(pos)] = counts.count(pos);
-  for (const relpos::Stage s : relpos::kSceneStages) stages[relpos::to_string(s)] = counts.count(s);
+  for (const relpos::Stage s : relpos::detail::kSceneStages) stages[relpos::to_string(s)] = counts.count(s);
   Json summary;
   summary["bodies"] = counts.bodies;
   summary["errors"] = errors;

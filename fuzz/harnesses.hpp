@@ -32,6 +32,8 @@
 #include "../tests/support/construct.hpp"
 #include "../tests/support/oracles.hpp"
 #include "../tests/support/secular.hpp"
+#include "algebra/number_limits.hpp"
+#include "io/batch.hpp"
 
 namespace relpos_fuzz {
 
@@ -88,7 +90,7 @@ inline void check_numbers(const std::uint8_t* data, std::size_t size) {
     // The limits are on text, so another notation of an accepted value can exceed them:
     // 2.2e-10883 is 18 characters, its fraction over 10000 (fuzz/regressions/numbers/README.md).
     const std::string exact = relpos::to_string(q);
-    if (exact.size() <= relpos::kMaxNumberChars)
+    if (exact.size() <= relpos::detail::kMaxNumberChars)
       expect(relpos::parse_rational(exact) == q, "to_string does not round-trip: " + text);
     for (int digits : {1, 12, 40}) {
       const std::string d = relpos::to_decimal(q, digits);
@@ -99,7 +101,7 @@ inline void check_numbers(const std::uint8_t* data, std::size_t size) {
         // The exponent limit of numbers.hpp applies to the printed text too: 10000 digits written in
         // full are about 1e9999, and "7e4001" is beyond it (fuzz/regressions/numbers/README.md).
         const std::size_t epos = d.find('e');
-        expect(epos != std::string::npos && std::stol(d.substr(epos + 1)) > relpos::kMaxDecimalExponent &&
+        expect(epos != std::string::npos && std::stol(d.substr(epos + 1)) > relpos::detail::kMaxDecimalExponent &&
                    std::string(e.what()).find("exponent") != std::string::npos,
                "to_decimal(" + std::to_string(digits) + ") = " + d + " does not parse back: " + e.what());
         continue;

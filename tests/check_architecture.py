@@ -15,10 +15,9 @@ holds, and the floors it may include. The check fails when
     include check cannot see: the friend needs no include),
   - a file declares, at namespace scope, a function defined only in files of a higher floor (a call
     upward through a hand-written declaration instead of an include),
-    each unless CLIMBS_ALLOWED lists it (temporary),
-  - a file of SIZE_RULE has more than MAX_FILE_LINES lines or a function of more than
-    MAX_FUNCTION_LINES lines (one job per file; the scan is described in doc/architecture.md,
-    "Sizes"); violations elsewhere in src/ are listed as not yet enforced.
+  - a file of SIZE_RULE (all of src/) has more than MAX_FILE_LINES lines or a function of more
+    than MAX_FUNCTION_LINES lines (one job per file; the scan is described in doc/architecture.md,
+    "Sizes").
 
 Usage: check_architecture.py REPO_ROOT
 """
@@ -30,37 +29,14 @@ SCANNED = ("src", "include", "cli", "python/src")
 EXTENSIONS = {".hpp", ".cpp", ".h", ".cc"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 
+# The public API only the API (doc/architecture.md, "The public API").
+PUBLIC_HEADERS = "include/relpos/"
+MAX_PUBLIC_DECLARATIONS = 100
 # One job per file (doc/architecture.md, "Sizes").
 MAX_FILE_LINES = 500
 MAX_FUNCTION_LINES = 60
-# The files and folders (a trailing /) the size rule holds for. It starts with the parts already
-# split (issue 34); once src/io, src/decide, src/certificate, src/algebra/forms.* and the scene's
-# two long functions are split too, the list becomes all of src/: SIZE_RULE = ["src/"].
-SIZE_RULE = [
-    "src/algebra/algebraic_real.cpp", "src/algebra/approximate_roots.cpp", "src/algebra/approximate_roots.hpp",
-    "src/algebra/between.cpp", "src/algebra/between.hpp", "src/algebra/centre.cpp", "src/algebra/centre.hpp",
-    "src/algebra/cramer.hpp", "src/algebra/double_bits.hpp", "src/algebra/double_sign.cpp",
-    "src/algebra/double_sign.hpp", "src/algebra/exact_pencil.hpp", "src/algebra/flint_poly.hpp",
-    "src/algebra/flint_thread.hpp", "src/algebra/gmp_blocks.cpp", "src/algebra/modular.cpp",
-    "src/algebra/modular.hpp", "src/algebra/numbers.cpp", "src/algebra/pair_size.cpp", "src/algebra/pencil.hpp",
-    "src/algebra/polynomial_text.hpp", "src/algebra/polynomials.cpp", "src/algebra/quadric.cpp",
-    "src/algebra/quadric_doubles.cpp", "src/algebra/quadric_kind.cpp", "src/algebra/quadric_matrix.cpp",
-    "src/algebra/root_facts.cpp", "src/algebra/root_facts.hpp", "src/algebra/roots.cpp", "src/algebra/roots.hpp",
-    "src/algebra/rounding.hpp", "src/algebra/shape_filter.hpp", "src/algebra/simple_roots.cpp",
-    "src/algebra/small_factor.hpp", "src/algebra/smallness.hpp", "src/algebra/sturm.hpp",
-    "src/algebra/sturm_habicht_quartic.hpp", "src/algebra/word_arithmetic.hpp",
-    "src/base/", "src/contact/", "src/filters/", "src/motion/",
-    "src/scene/certificates.hpp", "src/scene/demo.hpp", "src/scene/scene_demo.cpp",
-    # The oracle's floor, and the filtered type test with the refusals it shares with the exact path.
-    "src/oracle/", "src/algebra/kind_filter.cpp", "src/algebra/kind_filter.hpp", "src/algebra/quadric_kind.hpp",
-]
-# Climbs allowed for now, as (file, function): include/relpos/quadric.hpp (floor 1) declares and
-# befriends decide_position (floor 5) so that its 32-double overload can build quadrics in place.
-# Temporary: the public-API pass (issue 34, "The API only") removes it; then this set is empty and
-# stays so.
-CLIMBS_ALLOWED = {
-    ("include/relpos/quadric.hpp", "decide_position"),
-}
+# The files and folders (a trailing /) the size rule holds for: all of src/, new files included.
+SIZE_RULE = ["src/"]
 
 
 # ---- The C++ scan behind the size and declaration rules (doc/architecture.md, "Sizes") ----------
@@ -204,6 +180,64 @@ def scan_code(code: str):
     return functions, declarations
 
 
+FORWARD = re.compile(r"(?:class|struct|union|enum(?:\s+class|\s+struct)?)\s+\w+(?:\s*:\s*[\w:\s]+)?")
+
+
+def public_declarations(code: str):
+    """The names declared at namespace scope in stripped code outside any namespace named detail, as
+    (qualified name, line): every class, struct, union, enum, alias, variable and function (a
+    function's overloads share its name, so a caller counts each name once); forward declarations,
+    friends and static_asserts declare nothing new."""
+    out, stack = [], []  # stack: the names of each open namespace
+    i, n, start, paren = 0, len(code), 0, 0
+
+    def record(head: str, at: int, definition: bool):
+        text = " ".join(drop_template_heads(head).split())
+        if not text or any("detail" in names for names in stack) or re.match(r"(friend|static_assert)\b", text):
+            return
+        if not definition and FORWARD.fullmatch(text):
+            return
+        eq, paren_at = text.find("="), text.find("(")
+        if paren_at >= 0 and (eq < 0 or paren_at < eq):  # a function: the name before its parameters
+            name = re.findall(r"(operator\s*\S+?|[A-Za-z_]\w*)\s*$", text[:paren_at])
+        else:  # a type, an alias, a variable: the last name before any value or base
+            name = re.findall(r"[A-Za-z_]\w*", re.split(r"\s[=:]\s|\s[=:]$|=", text)[0])
+        text = ".".join([*(n for names in stack for n in names), name[-1] if name else text])
+        out.append((text, code.count("\n", 0, at) + 1))
+
+    while i < n:
+        c = code[i]
+        if c in "([":
+            paren += 1
+        elif c in ")]":
+            paren -= 1
+        elif c == ";" and paren == 0:
+            record(code[start:i], i, False)
+            start = i + 1
+        elif c == "}":
+            if stack:
+                stack.pop()
+            start = i + 1
+        elif c == "{" and paren > 0:  # a braced initializer in a declaration (a default argument)
+            i = matching_brace(code, i)
+            continue
+        elif c == "{":
+            head = code[start:i]
+            if block_kind(head) == "namespace":
+                stack.append(re.findall(r"\w+", re.sub(r"\b(inline|namespace)\b", " ", head)))
+                start = i + 1
+            else:
+                record(head, i, True)
+                i = matching_brace(code, i)
+                if block_kind(head) != "function":  # a class, enum or initializer ends at its ';'
+                    i = code.find(";", i)
+                    i = n if i < 0 else i
+                start = i + 1
+                continue
+        i += 1
+    return out
+
+
 FRIEND = re.compile(r"\bfriend\b([^;{]*?)\b(?:[A-Za-z_]\w*::)*([A-Za-z_]\w*)\s*\(([^;{]*)\)\s*[^;{]*;")
 
 
@@ -238,11 +272,40 @@ int declared(double d);
 """
 
 
+# The public count on a fixture: overloads share a name, a namespace qualifies it, a forward
+# declaration, a friend and everything in a detail namespace are not counted, members and default
+# arguments with braces are not names of their own.
+PUBLIC_TEST = r"""namespace relpos {
+class Ellipsoid;
+struct Verdict { int a; void f(); };
+enum class Stage : unsigned char { A, B };
+inline constexpr int kLimit = 4;
+using Number = double;
+Verdict decide(const Ellipsoid& e, const Limit& l = {});
+Verdict decide(const double* e);
+std::string to_string(Stage s);
+inline std::string to_string(int s) { return "}"; }
+namespace detail {
+struct Access { static int f(); };
+int helper(int x);
+}  // namespace detail
+}  // namespace relpos
+namespace relpos::io {
+std::string to_string(Verdict v);
+}  // namespace relpos::io
+"""
+
+
 def self_test() -> None:
     functions, declarations = scan_code(strip_code(SELF_TEST))
     want = [("f", 3, 8), ("S", 10, 12), ("operator==", 14, 14), ("k", 20, 20)]
     if functions != want or [d[0] for d in declarations] != ["declared"]:
         sys.exit(f"check_architecture.py: the C++ scan miscounts its fixture: {functions}, {declarations}")
+    names = sorted({name for name, _ in public_declarations(strip_code(PUBLIC_TEST))})
+    want_names = ["relpos.Number", "relpos.Stage", "relpos.Verdict", "relpos.decide", "relpos.io.to_string",
+                  "relpos.kLimit", "relpos.to_string"]
+    if names != want_names:
+        sys.exit(f"check_architecture.py: the public count miscounts its fixture: {names}")
 
 
 def read_floors(doc: Path):
@@ -385,7 +448,7 @@ def check_declarations_and_sizes(root: Path, files, row_of, floor_of, errors):
         here = floor[rel]
         for m in FRIEND.finditer(code):
             name = m.group(2)
-            if name.startswith("operator") or (rel, name) in CLIMBS_ALLOWED:
+            if name.startswith("operator"):
                 continue
             # Where the function lives: the floors defining it, else those of the other headers
             # declaring it (a declaration beside the friend, as quadric.hpp has, does not count).
@@ -397,32 +460,33 @@ def check_declarations_and_sizes(root: Path, files, row_of, floor_of, errors):
                               "a climb the include check cannot see")
         for name, line in declarations:
             homes = defined.get(name, set())
-            if homes and min(homes) > here and (rel, name) not in CLIMBS_ALLOWED:
+            if homes and min(homes) > here:
                 errors.append(f"{rel}:{line} (floor {here}) declares {name}, defined only on floor {min(homes)}: "
                               "a call upward without an include")
 
     def enforced(rel: str) -> bool:
         return any(rel == p or (p.endswith("/") and rel.startswith(p)) for p in SIZE_RULE)
 
-    waiting = []
     for rel, (code, functions, _) in sorted(scans.items()):
-        if not rel.startswith("src/"):
+        if not enforced(rel):
             continue
-        problems = []
         lines = code.count("\n")
         if lines > MAX_FILE_LINES:
-            problems.append(f"{rel}: {lines} lines, beyond the limit of {MAX_FILE_LINES}")
+            errors.append(f"{rel}: {lines} lines, beyond the limit of {MAX_FILE_LINES}")
         for name, first, last in functions:
             if last - first + 1 > MAX_FUNCTION_LINES:
-                problems.append(f"{rel}:{first}: {name} has {last - first + 1} lines, beyond the limit of "
-                                f"{MAX_FUNCTION_LINES}")
-        if enforced(rel):
-            errors.extend(problems)
-        elif problems:
-            waiting.append(rel)
-    if waiting:
-        return [f"size rule not yet enforced on {len(waiting)} files over a limit: " + ", ".join(waiting)]
-    return []
+                errors.append(f"{rel}:{first}: {name} has {last - first + 1} lines, beyond the limit of "
+                              f"{MAX_FUNCTION_LINES}")
+
+    public = {}  # a public name -> where it is first declared
+    for rel, (code, _, _) in sorted(scans.items()):
+        if rel.startswith(PUBLIC_HEADERS):
+            for text, line in public_declarations(code):
+                public.setdefault(text, f"{rel}:{line}")
+    if len(public) > MAX_PUBLIC_DECLARATIONS:
+        errors.append(f"{PUBLIC_HEADERS}: {len(public)} public names at namespace scope, beyond the limit of "
+                      f"{MAX_PUBLIC_DECLARATIONS} (doc/architecture.md, \"The public API\")")
+    return [f"{len(public)} public names at namespace scope in {PUBLIC_HEADERS} (at most {MAX_PUBLIC_DECLARATIONS})"]
 
 
 if __name__ == "__main__":

@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 
+#include "general/decision.hpp"
 #include "support/general_random.hpp"
 #include "support/trs_oracle.hpp"
 
@@ -80,7 +81,8 @@ int main(int argc, char** argv) {
   const Family families[] = {Family::General, Family::AxisAligned, Family::Concentric};
   for (long i = 0; i < random; ++i) {
     const Family f = families[i % 3];
-    const QuadricType t = kAllQuadricTypes[static_cast<std::size_t>((i / 3) % kAllQuadricTypes.size())];
+    const QuadricType t =
+        general::kAllQuadricTypes[static_cast<std::size_t>((i / 3) % general::kAllQuadricTypes.size())];
     const RandomPair p = gen.pair(f, t);
     const OracleAnswer o = oracle_position(p.e.matrix(), p.q.matrix(), t == QuadricType::Ellipsoid);
     // A tangency or EQ from random numbers is a coincidence the oracle reads within its tolerance:

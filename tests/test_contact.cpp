@@ -13,6 +13,7 @@
 
 #include "algebra/smallness.hpp"
 #include "contact/discriminant_case.hpp"
+#include "decide/stages.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 #include "support/random_pairs.hpp"
@@ -196,7 +197,7 @@ TEST_CASE("the paper's discriminant tracker is wrong twice; relpos is not", "[co
       CHECK(paper == Position::TE);
       CHECK(exact_case(x.f) == DiscriminantCase::Undecided);  // the discriminant cannot decide
     }
-    const auto d = relpos::decide_by_discriminant(e, p);
+    const auto d = relpos::detail::decide_by_discriminant(e, p);
     CHECK(d.verdict.position == k.expected);
     const ContactAnswer c = relpos::contact(e, p);
     CHECK(c.contact == k.contact);
@@ -402,8 +403,9 @@ TEST_CASE("decided_by: the part of the contact-only path each stage belongs to",
   for (const Stage s : relpos::kAllStages) {
     INFO(relpos::to_string(s));
     const bool early_out = s == Stage::InsideCertificate || s == Stage::OutsideCertificate;
-    const bool classifier = std::find(relpos::kClassifierStages.begin(), relpos::kClassifierStages.end(), s) !=
-                            relpos::kClassifierStages.end();
+    const bool classifier =
+        std::find(relpos::detail::kClassifierStages.begin(), relpos::detail::kClassifierStages.end(), s) !=
+        relpos::detail::kClassifierStages.end();
     CHECK(relpos::decided_by(s) == (early_out                        ? "scene-certificate"
                                     : s == Stage::DiscriminantFilter ? "discriminant-filter"
                                                                      : "full-classifier"));
@@ -430,7 +432,7 @@ TEST_CASE("random agreement with classify; the discriminant path decides most pa
     ++n;
     INFO("pair " << i);
     const Verdict v = relpos::decide_position(*e, *p);
-    const auto d = relpos::decide_by_discriminant(*e, *p);
+    const auto d = relpos::detail::decide_by_discriminant(*e, *p);
     check_same(d.verdict, v);
     if (d.verdict.stage == Stage::DiscriminantFilter) {
       ++by_disc;
@@ -487,7 +489,7 @@ TEST_CASE("random near-tangent and exactly tangent dyadic spheres", "[contact][r
     const Ellipsoid e = Ellipsoid::sphere(V(dx, Q(0), side * r + dz), r);
     const Verdict v = relpos::decide_position(e, p);
     if (v.position == Position::TI || v.position == Position::TE) ++tangent;
-    const auto d = relpos::decide_by_discriminant(e, p);
+    const auto d = relpos::detail::decide_by_discriminant(e, p);
     check_same(d.verdict, v);
     check_contact_consistent(relpos::contact(e, p), v);
     relpos::ExteriorTracker tr(p, e);

@@ -31,6 +31,7 @@
 #include "support/construct.hpp"
 #include "support/oracles.hpp"
 #include "support/printers.hpp"
+#include "support/scale.hpp"
 #include "support/secular.hpp"
 #include "support/seed.hpp"
 
@@ -524,13 +525,8 @@ TEST_CASE("differential: adaptive vs exact vs certified MPFR roots vs constructi
           "[differential][random]") {
   Rng g(run_seed());
   CAPTURE(g.seed);
-  // Under AddressSanitizer (scripts/sanitize.sh) the same mix runs at a quarter of the size: the
-  // instrumented exact arithmetic is about 8 times slower.
-#if defined(__SANITIZE_ADDRESS__)
-  const int n = 4;
-#else
-  const int n = 1;
-#endif
+  // A quarter of the mix under AddressSanitizer (support/scale.hpp).
+  const int n = relpos::testing::kSanitizerShare;
   generic_cases(g, 600 / n);
   frame_cases(g, 700 / n, false);
   frame_cases(g, 300 / n, true);

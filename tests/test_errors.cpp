@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "algebra/pair_size.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 
@@ -216,16 +217,16 @@ TEST_CASE("The size limit reads each matrix divided by its own content", "[error
   for (auto& x : p.a) x *= small;
   const Ellipsoid es = Ellipsoid::from_matrix(e);
   const Paraboloid ps = Paraboloid::from_matrix(p);
-  CHECK(relpos::normalized_pair_bits(es, ps) <= 8);
-  CHECK_NOTHROW(relpos::check_normalized_pair_size(es, ps));
+  CHECK(relpos::detail::normalized_pair_bits(es, ps) <= 8);
+  CHECK_NOTHROW(relpos::detail::check_normalized_pair_size(es, ps));
   // A genuinely large entry is refused with a message naming the limit.
   Rational huge(1);
   for (int i = 0; i < 4200; ++i) huge *= 2;
   Matrix4 e2 = sphere_matrix({Q(0), Q(0), Q(1)}, Q(1, 2));
   e2(3, 3) += Rational(1) / huge;
   const Ellipsoid e2s = Ellipsoid::from_matrix(e2);
-  CHECK(relpos::normalized_pair_bits(e2s, ps) > relpos::kMaxNormalizedBits);
-  CHECK_THROWS_WITH(relpos::check_normalized_pair_size(e2s, ps), Contains("kMaxNormalizedBits"));
+  CHECK(relpos::detail::normalized_pair_bits(e2s, ps) > relpos::kMaxNormalizedBits);
+  CHECK_THROWS_WITH(relpos::detail::check_normalized_pair_size(e2s, ps), Contains("kMaxNormalizedBits"));
   // The library's entry points enforce it themselves (a C++ caller gets the CLI's limit) ...
   CHECK_THROWS_WITH(relpos::classify(e2s, ps), Contains("kMaxNormalizedBits"));
   CHECK_THROWS_WITH(relpos::classify_exact(e2s, ps, relpos::Evidence::Minimal), Contains("kMaxNormalizedBits"));
@@ -247,12 +248,12 @@ TEST_CASE("The size limit can be raised, not lowered, and a raised limit answers
   e(3, 3) -= Rational(1) / huge;
   const Ellipsoid big = Ellipsoid::from_matrix(e);
   const Ellipsoid plain = Ellipsoid::from_matrix(sphere_matrix({Q(0), Q(0), Q(1)}, Q(1, 2)));
-  const std::size_t bits = relpos::normalized_pair_bits(big, cup);
+  const std::size_t bits = relpos::detail::normalized_pair_bits(big, cup);
   REQUIRE(bits > relpos::kMaxNormalizedBits);
   CHECK_THROWS_WITH(relpos::classify(big, cup), Contains("beyond the limit of 4096 bits (kMaxNormalizedBits"));
   const relpos::SizeLimit raised{bits};
-  CHECK(relpos::check_normalized_pair_size(big, cup, raised) == bits);
-  CHECK_THROWS_WITH(relpos::check_normalized_pair_size(big, cup, relpos::SizeLimit{bits - 1}),
+  CHECK(relpos::detail::check_normalized_pair_size(big, cup, raised) == bits);
+  CHECK_THROWS_WITH(relpos::detail::check_normalized_pair_size(big, cup, relpos::SizeLimit{bits - 1}),
                     Contains("beyond the limit of " + std::to_string(bits - 1) + " bits (the limit given"));
   const relpos::Classification c = relpos::classify(big, cup, relpos::Evidence::Full, raised);
   CHECK(c.verdict.position == relpos::classify(plain, cup).verdict.position);
@@ -262,7 +263,7 @@ TEST_CASE("The size limit can be raised, not lowered, and a raised limit answers
   CHECK(relpos::contact(big, cup, raised).position == c.verdict.position);
   CHECK_THROWS_WITH(relpos::contact(big, cup), Contains("kMaxNormalizedBits"));
   // Lowering is refused, whatever the pair.
-  CHECK_THROWS_WITH(relpos::check_normalized_pair_size(plain, cup, relpos::SizeLimit{100}),
+  CHECK_THROWS_WITH(relpos::detail::check_normalized_pair_size(plain, cup, relpos::SizeLimit{100}),
                     Contains("it can be raised, not lowered"));
 }
 
@@ -279,7 +280,7 @@ TEST_CASE("A pair beyond the default limit is classified on a stack of its own",
   const Paraboloid cup = Paraboloid::from_matrix(p);
   const Ellipsoid e =
       Ellipsoid::from_matrix(sphere_matrix({tiny / Q(3), tiny / Q(7), Q(1) + tiny / Q(11)}, Q(1, 4) + tiny / Q(13)));
-  const relpos::SizeLimit raised{relpos::normalized_pair_bits(e, cup)};
+  const relpos::SizeLimit raised{relpos::detail::normalized_pair_bits(e, cup)};
   REQUIRE(raised.max_bits > relpos::kMaxNormalizedBits);
   struct Job {
     const Ellipsoid* e;

@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "algebra/forms.hpp"
+#include "algebra/pair_size.hpp"
 #include "algebra/pencil.hpp"
+#include "io/batch.hpp"
 #include "io/fast_quadric.hpp"
 #include "io/json_tree.hpp"
 #include "io/quadric_json.hpp"
@@ -300,9 +302,9 @@ TEST_CASE("fast reader: its numbers keep the normalized size far below the limit
       fast_paraboloid("{\"vertex\":" + vec3(tiny, big, odd) + ",\"a\":" + odd + ",\"b\":" + big + "}", false);
   REQUIRE(e);
   REQUIRE(p);
-  REQUIRE(relpos::normalized_bits(e->matrix()) <= 1500);
-  REQUIRE(relpos::normalized_bits(p->matrix()) <= 1500);
-  relpos::check_normalized_pair_size(*e, *p);  // does not build the matrices, does not throw
+  REQUIRE(relpos::detail::normalized_bits(e->matrix()) <= 1500);
+  REQUIRE(relpos::detail::normalized_bits(p->matrix()) <= 1500);
+  relpos::detail::check_normalized_pair_size(*e, *p);  // does not build the matrices, does not throw
 }
 
 TEST_CASE("full evidence with scales whose rests lie in either matrix or in both", "[io][fast]") {

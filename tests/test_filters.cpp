@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "algebra/filtered.hpp"
+#include "algebra/quadric_doubles.hpp"
 #include "algebra/rounding.hpp"
 #include "algebra/smallness.hpp"
 #include "anysize/gap.hpp"
@@ -148,7 +149,7 @@ void check_pair(const DoubleMatrix4& pn, const DoubleMatrix4& en, Tally& t) {
 }
 
 DoubleMatrix4 normalized(const std::optional<DoubleMatrix4>& m) {
-  auto n = relpos::power_of_two_normalized(m);
+  auto n = relpos::detail::power_of_two_normalized(m);
   REQUIRE(n);
   return *n;
 }
@@ -168,7 +169,7 @@ bool random_normalized_pair(Rng& g, DoubleMatrix4& pn, DoubleMatrix4& en) {
         x[static_cast<std::size_t>(4 * i + j)] = x[static_cast<std::size_t>(4 * j + i)] = v;
       }
   if (g.chance(30)) m[0][15] = 0;  // det P-like degeneracy patterns
-  const auto p = relpos::power_of_two_normalized(m[0]), e = relpos::power_of_two_normalized(m[1]);
+  const auto p = relpos::detail::power_of_two_normalized(m[0]), e = relpos::detail::power_of_two_normalized(m[1]);
   if (!p || !e) return false;
   pn = *p;
   en = *e;
@@ -483,7 +484,7 @@ TEST_CASE("semi-static gap test (math.md §8): every certified answer is the exa
     }
     em[15] = e0;
     if (n % 3 == 0) set(em, 0, 1, u(-0.05, 0.05));
-    const auto pn = relpos::power_of_two_normalized(pm), en = relpos::power_of_two_normalized(em);
+    const auto pn = relpos::detail::power_of_two_normalized(pm), en = relpos::detail::power_of_two_normalized(em);
     if (!pn || !en) continue;
     ++pairs;
     const auto fast = relpos::semi_static_roots_above_lambda_s(*pn, *en);

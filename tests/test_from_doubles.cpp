@@ -17,6 +17,8 @@
 #include <tuple>
 #include <vector>
 
+#include "support/scale.hpp"
+
 using relpos::DoubleMatrix4;
 using relpos::Ellipsoid;
 using relpos::InputError;
@@ -170,15 +172,15 @@ struct Gen {
 TEST_CASE("from_doubles accepts and rejects exactly as from_matrix", "[from_doubles]") {
   Gen g;
   int accepted_e = 0, accepted_p = 0;
-  for (int k = 0; k < 3000; ++k) {
+  for (int k = 0; k < relpos::testing::scaled(3000); ++k) {
     const DoubleMatrix4 a = g.ellipsoid_like(), b = g.paraboloid_like(), c = g.symmetric();
     for (const DoubleMatrix4* m : {&a, &b, &c}) {
       if (agree<Ellipsoid>(*m)) ++accepted_e;
       if (agree<Paraboloid>(*m)) ++accepted_p;
     }
   }
-  CHECK(accepted_e > 1000);
-  CHECK(accepted_p > 1000);
+  CHECK(accepted_e > relpos::testing::scaled(1000));
+  CHECK(accepted_p > relpos::testing::scaled(1000));
 }
 
 TEST_CASE("from_doubles on degenerate and malformed matrices", "[from_doubles]") {

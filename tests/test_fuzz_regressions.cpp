@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../fuzz/harnesses.hpp"
+#include "io/batch.hpp"
 
 namespace {
 

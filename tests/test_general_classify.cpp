@@ -7,6 +7,7 @@
 #include <set>
 #include <vector>
 
+#include "general/decision.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/general_classify.hpp"
 #include "support/general_cases.hpp"
@@ -192,7 +193,7 @@ TEST_CASE("general pairs: every type and every position its geometry allows is c
     seen.insert({k.q.type(), k.expected});
     if (k.hard) hard_seen.insert(k.q.type());
   }
-  for (QuadricType t : kAllQuadricTypes)
+  for (QuadricType t : general::kAllQuadricTypes)
     for (QuadricPosition p :
          {QuadricPosition::I, QuadricPosition::TI, QuadricPosition::C, QuadricPosition::TE, QuadricPosition::E}) {
       INFO(to_string(t) << " " << to_string(p));

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "general/decision.hpp"
 #include "relpos/error.hpp"
 #include "relpos/general_quadric.hpp"
 #include "support/general_cases.hpp"
@@ -246,5 +247,5 @@ TEST_CASE("general quadric: an Ellipsoid and a Paraboloid as quadrics", "[genera
   CHECK(Quadric::of(p).type() == QuadricType::EllipticParaboloid);
   CHECK(Quadric::of(p).matrix() == p.matrix());
   CHECK(Quadric::from_matrix(p.matrix()).matrix() == p.matrix());
-  for (QuadricType t : kAllQuadricTypes) CHECK(!to_string(t).empty());
+  for (QuadricType t : general::kAllQuadricTypes) CHECK(!to_string(t).empty());
 }

@@ -7,8 +7,10 @@
 #include <random>
 #include <string>
 
+#include "general/decision.hpp"
 #include "relpos/general_classify.hpp"
 #include "support/general_random.hpp"
+#include "support/scale.hpp"
 #include "support/seed.hpp"
 #include "support/trs_oracle.hpp"
 
@@ -16,14 +18,6 @@ using namespace relpos;
 using namespace relpos::testing;
 
 namespace {
-
-// Under AddressSanitizer (scripts/sanitize.sh) the same mix runs at a quarter of the size: the
-// instrumented exact arithmetic is several times slower.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kShare = 4;
-#else
-constexpr int kShare = 1;
-#endif
 
 const char* family_name(Family f) {
   return f == Family::General ? "general" : (f == Family::AxisAligned ? "axis-aligned" : "concentric");
@@ -35,9 +29,9 @@ TEST_CASE("random general pairs: filter == exact on every pair, the oracle agree
   GeneralPairs gen(announced_seed("random general pairs", 36));
   std::map<std::string, int> positions, filtered, total;
   int checked_by_oracle = 0, certificates = 0;
-  for (int round = 0; round < 40 / kShare; ++round)
+  for (int round = 0; round < 40 / kSanitizerShare; ++round)
     for (Family f : {Family::General, Family::AxisAligned, Family::Concentric})
-      for (QuadricType t : kAllQuadricTypes) {
+      for (QuadricType t : general::kAllQuadricTypes) {
         const RandomPair p = gen.pair(f, t);
         const QuadricVerdict v = decide_position(p.e, p.q), x = decide_position_exact(p.e, p.q);
         INFO(family_name(f) << " " << to_string(t) << " round " << round);
@@ -62,8 +56,8 @@ TEST_CASE("random general pairs: filter == exact on every pair, the oracle agree
     // The filter settles general and axis-aligned pairs; a concentric pair's f shares the roots of D.
     if (name != "concentric") CHECK(filtered[name] >= n * 9 / 10);
   }
-  CHECK(checked_by_oracle == (40 / kShare + 1) / 2 * 3 * 11);
-  CHECK(certificates == (40 / kShare + 3) / 4 * 3 * 11);
+  CHECK(checked_by_oracle == (40 / kSanitizerShare + 1) / 2 * 3 * 11);
+  CHECK(certificates == (40 / kSanitizerShare + 3) / 4 * 3 * 11);
   // Every position of the random families occurs for the ellipsoid (O among concentric pairs).
   for (const char* p : {"E", "C", "I", "O"}) CHECK(positions[std::string("ellipsoid ") + p] > 0);
 }
@@ -72,7 +66,7 @@ TEST_CASE("nudged tangencies: the position their construction gives, down to 1e-
   std::mt19937_64 rng(announced_seed("nudged tangencies", 35));
   int n = 0;
   for (const Nudged& k : nudged_tangencies()) {
-    if (n++ % kShare != 0) continue;
+    if (n++ % kSanitizerShare != 0) continue;
     INFO(k.name);
     const AffineMap m = random_map(rng, false);
     const Quadric qe = Quadric::from_map(Quadric::from_matrix(k.e), m.l, m.t);
@@ -92,7 +86,7 @@ TEST_CASE("matrices scaled by 10^300 and 10^-300 get the unscaled pair's answer 
   GeneralPairs gen(announced_seed("scaled pairs", 300));
   Rational big(1);
   for (int i = 0; i < 300; ++i) big *= 10;
-  for (QuadricType t : kAllQuadricTypes)
+  for (QuadricType t : general::kAllQuadricTypes)
     for (int i = 0; i < 5; ++i) {
       const RandomPair p = gen.pair(Family::General, t);
       const Ellipsoid e = Ellipsoid::from_matrix(scaled_matrix(p.e.matrix(), big));

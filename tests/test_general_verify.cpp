@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "general/decision.hpp"
 #include "relpos/general_classify.hpp"
 #include "support/general_cases.hpp"
 
@@ -97,7 +98,7 @@ TEST_CASE("general verifier: genuine certificates pass, tampered ones are refuse
       ++refused;
     }
     // The same evidence does not prove another position.
-    for (QuadricPosition other : kAllQuadricPositions)
+    for (QuadricPosition other : general::kAllQuadricPositions)
       if (other != k.expected) CHECK(verify_certificate(e, k.q, other, c.certificate).has_value());
   }
   CHECK(refused > 200);

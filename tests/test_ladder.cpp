@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "decide/ladder.hpp"
+#include "decide/stages.hpp"
 #include "io/fast_quadric.hpp"
 #include "support/construct.hpp"
 #include "support/random_pairs.hpp"
@@ -98,8 +99,9 @@ TEST_CASE("stage table: one row per stage, every name, meaning and part distinct
     names.insert(row.name);
     meanings.insert(row.meaning);
     // The classifier's stages report the full classifier, the others themselves or the scene.
-    const bool classifier = std::find(relpos::kClassifierStages.begin(), relpos::kClassifierStages.end(), s) !=
-                            relpos::kClassifierStages.end();
+    const bool classifier =
+        std::find(relpos::detail::kClassifierStages.begin(), relpos::detail::kClassifierStages.end(), s) !=
+        relpos::detail::kClassifierStages.end();
     CHECK((std::string(row.decided_by) == "full-classifier") == classifier);
   }
   CHECK(names.size() == relpos::kAllStages.size());
@@ -143,7 +145,7 @@ TEST_CASE("ladder: the counters count what ran and where each climb ended", "[la
     CHECK(v.stage >= end);
     if (v.roots_above_lambda_s < 0) CHECK(v.stage == end);
     // No stage after the one that ended ran; the static stage ran exactly for pairs of doubles.
-    for (const Stage s : relpos::kClassifierStages)
+    for (const Stage s : relpos::detail::kClassifierStages)
       if (s > end) CHECK(one.ran[static_cast<std::size_t>(s)].load() == 0);
     const bool doubles = k.e.doubles() && k.p.doubles();
     CHECK(one.ran[static_cast<std::size_t>(Stage::StaticDouble)].load() == (doubles ? 1u : 0u));

@@ -24,6 +24,7 @@
 
 #include "algebra/irreducible.hpp"
 #include "algebra/polynomial_sign.hpp"
+#include "io/batch.hpp"
 #include "margin/descartes.hpp"
 #include "margin/family.hpp"
 #include "margin/polynomial.hpp"
@@ -404,7 +405,7 @@ TEST_CASE("margin: affine congruences and rescalings leave the margin unchanged"
     CHECK(m.approx == m0.approx);
     CHECK_FALSE(relpos::verify_margin(e2, p2, m));
     // An ellipsoid under its own scaling: the factor's reciprocal.
-    const Margin half = relpos::margin(relpos::scaled_about_centre(e, Q(1, 2)), p);
+    const Margin half = relpos::margin(relpos::detail::scaled_about_centre(e, Q(1, 2)), p);
     CHECK(half.value().compare(m0.lo * 2) >= 0);
     CHECK(half.value().compare(m0.hi * 2) <= 0);
   }
@@ -504,8 +505,8 @@ TEST_CASE("margin: bits, the JSON form and the batch member", "[margin]") {
     CHECK_FALSE(relpos::verify_margin(e, p, back));
   }
   CHECK_THROWS_AS(relpos::margin(e, p, 0), relpos::InputError);
-  CHECK_THROWS_AS(relpos::margin(e, p, relpos::kMaxMarginBits + 1), relpos::InputError);
-  CHECK_THROWS_AS(relpos::scaled_about_centre(e, Q(0)), relpos::InputError);
+  CHECK_THROWS_AS(relpos::margin(e, p, relpos::detail::kMaxMarginBits + 1), relpos::InputError);
+  CHECK_THROWS_AS(relpos::detail::scaled_about_centre(e, Q(0)), relpos::InputError);
   // The batch line's last member, after the certificate; the other members as without --margin.
   const std::string line =
       R"({"id":"x","ellipsoid":{"sphere":{"center":[1,0,0.5],"radius":"1/3"}},"paraboloid":{"vertex":[0,0,0],"a":1,"b":1}})";
@@ -585,7 +586,7 @@ TEST_CASE("margin pieces: the scaled family", "[margin]") {
     CHECK(f.k == r * r);
     CHECK(f.at(Q(1)) == e.matrix());
     CHECK(f.at(q) == Ellipsoid::sphere(c, q * r).matrix());
-    CHECK(relpos::scaled_about_centre(e, q).matrix() == Ellipsoid::sphere(c, q * r).matrix());
+    CHECK(relpos::detail::scaled_about_centre(e, q).matrix() == Ellipsoid::sphere(c, q * r).matrix());
     CHECK(relpos::detail::form_at(e.matrix(), c) == -r * r);
   }
 }
@@ -688,7 +689,7 @@ TEST_CASE("margin pieces: irreducibility by degrees modulo primes is never claim
     // When claimed for f itself, FLINT's factorisation agrees.
     if (relpos::detail::proven_irreducible(f)) {
       ++proven;
-      CHECK(relpos::irreducible_factors(f).size() == 1);
+      CHECK(relpos::detail::irreducible_factors(f).size() == 1);
     }
   }
   CHECK(proven > 20);

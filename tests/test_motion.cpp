@@ -22,6 +22,7 @@
 #include "motion/polynomial_motion.hpp"
 #include "motion/subresultant_position.hpp"
 #include "support/printers.hpp"
+#include "support/scale.hpp"
 
 using relpos::AlgebraicReal;
 using relpos::Ellipsoid;
@@ -158,7 +159,7 @@ void check_against_sampling(const Timeline& tl, const Ellipsoid& e0, const Rigid
   for (int k = 0; k < n; ++k) ts.push_back(tl.t0 + span * Rational(num(rng), 1000000));
   for (const auto& t : ts) {
     const Position want =
-        relpos::classify(relpos::placed_ellipsoid(e0, m, t), p, relpos::Evidence::Minimal).verdict.position;
+        relpos::classify(relpos::detail::placed_ellipsoid(e0, m, t), p, relpos::Evidence::Minimal).verdict.position;
     INFO("t = " << relpos::to_string(t));
     CHECK(tl.position_at(t) == want);
   }
@@ -169,7 +170,7 @@ void check_against_sampling(const Timeline& tl, const Ellipsoid& e0, const Rigid
   for (const auto& inst : tl.instants) {
     CHECK(inst.how.find("inconsistent") == std::string::npos);
     if (!inst.time.is_rational()) continue;
-    const auto c = relpos::classify(relpos::placed_ellipsoid(e0, m, *inst.time.exact()), p);
+    const auto c = relpos::classify(relpos::detail::placed_ellipsoid(e0, m, *inst.time.exact()), p);
     CHECK(inst.position == c.verdict.position);
   }
 }
@@ -354,7 +355,7 @@ TEST_CASE("polynomial motion: E(t) is N^2 times the placed ellipsoid; pivots; va
     const auto em = relpos::moving_ellipsoid_matrix(e0, m);
     for (const char* tt : {"0", "1/2", "-3", "7/5"}) {
       const Rational t = q(tt);
-      const Ellipsoid placed = relpos::placed_ellipsoid(e0, m, t);
+      const Ellipsoid placed = relpos::detail::placed_ellipsoid(e0, m, t);
       Rational n(0);
       for (const auto& c : *m.rotation) n += relpos::evaluate(c, t) * relpos::evaluate(c, t);
       for (std::size_t i = 0; i < 16; ++i) CHECK(relpos::evaluate(em[i], t) == placed.matrix().a[i] * n * n);
@@ -362,7 +363,7 @@ TEST_CASE("polynomial motion: E(t) is N^2 times the placed ellipsoid; pivots; va
       const auto r = relpos::rotation_from_quaternion(
           {relpos::evaluate((*m.rotation)[0], t), relpos::evaluate((*m.rotation)[1], t),
            relpos::evaluate((*m.rotation)[2], t), relpos::evaluate((*m.rotation)[3], t)});
-      const auto c0 = relpos::centre_of(e0), pv = relpos::pivot_of(e0, m), c1 = relpos::centre_of(placed);
+      const auto c0 = relpos::centre_of(e0), pv = relpos::detail::pivot_of(e0, m), c1 = relpos::centre_of(placed);
       for (int i = 0; i < 3; ++i) {
         Rational x = pv[static_cast<std::size_t>(i)] + relpos::evaluate(m.translation[static_cast<std::size_t>(i)], t);
         for (int j = 0; j < 3; ++j) x += r(i, j) * (c0[static_cast<std::size_t>(j)] - pv[static_cast<std::size_t>(j)]);
@@ -377,12 +378,12 @@ TEST_CASE("polynomial motion: E(t) is N^2 times the placed ellipsoid; pivots; va
 
   RigidMotion bad;
   bad.rotation = std::array<TimePolynomial, 4>{poly({"-1", "1"}), poly({"1", "-1"}), poly({}), poly({"2", "-2"})};
-  CHECK_THROWS_AS(relpos::validate_motion(bad, q("0"), q("2")), relpos::InputError);  // q(1) = 0
-  CHECK_NOTHROW(relpos::validate_motion(bad, q("3/2"), q("2")));
-  CHECK_THROWS_AS(relpos::validate_motion(bad, q("2"), q("1")), relpos::InputError);
+  CHECK_THROWS_AS(relpos::detail::validate_motion(bad, q("0"), q("2")), relpos::InputError);  // q(1) = 0
+  CHECK_NOTHROW(relpos::detail::validate_motion(bad, q("3/2"), q("2")));
+  CHECK_THROWS_AS(relpos::detail::validate_motion(bad, q("2"), q("1")), relpos::InputError);
   RigidMotion zero;
   zero.rotation = std::array<TimePolynomial, 4>{};
-  CHECK_THROWS_AS(relpos::validate_motion(zero, q("0"), q("1")), relpos::InputError);
+  CHECK_THROWS_AS(relpos::detail::validate_motion(zero, q("0"), q("1")), relpos::InputError);
   CHECK_THROWS_AS(relpos::timeline(e0, bad, standard("1", "2"), q("0"), q("2")), relpos::InputError);
 }
 
@@ -427,7 +428,7 @@ TEST_CASE("rational first contact: a sphere moving horizontally through the wall
   // (here 4 r^2 / a^4 = 1/4) wherever classify() looks.
   for (const auto& inst : tl.instants) CHECK(!(inst.causes & relpos::kCauseSmallness));
   for (const char* t : {"0", "1", "17/15", "2", "7/2"}) {
-    const auto c = relpos::classify(relpos::placed_ellipsoid(e0, m, q(t)), p);
+    const auto c = relpos::classify(relpos::detail::placed_ellipsoid(e0, m, q(t)), p);
     REQUIRE(c.rho.has_value());
     CHECK(*c.rho == q("1/4"));
   }
@@ -441,7 +442,7 @@ TEST_CASE("rational first contact: a sphere moving horizontally through the wall
   // The subresultant method agrees with classify at the rational instants where f is not square-free.
   for (const char* t : {"17/15", "2", "43/15"})
     CHECK(relpos::position_by_subresultants(e0, m, p, q(t)) ==
-          relpos::classify(relpos::placed_ellipsoid(e0, m, q(t)), p).verdict.position);
+          relpos::classify(relpos::detail::placed_ellipsoid(e0, m, q(t)), p).verdict.position);
 }
 
 TEST_CASE("first contact at sqrt(2): a sphere rising along the axis of z = x^2 + y^2/4", "[motion][irrational]") {
@@ -539,7 +540,7 @@ TEST_CASE("C -> TI at one instant -> C: a sphere sliding through the inner tange
     // The same configuration at a rational instant (centre on the axis at t = 1 of x = t - 1).
     const RigidMotion lin = translation(poly({"-1", "1"}), poly({}), poly({"1/4"}));
     CHECK(relpos::position_by_subresultants(e0, lin, p, q("1")) == Position::TI);
-    CHECK(relpos::classify(relpos::placed_ellipsoid(e0, lin, q("1")), p).verdict.position == Position::TI);
+    CHECK(relpos::classify(relpos::detail::placed_ellipsoid(e0, lin, q("1")), p).verdict.position == Position::TI);
   }
 }
 
@@ -567,7 +568,7 @@ TEST_CASE("axis of a circular paraboloid: Disc f = 0 for every t, contact still 
       const Rational t = Rational(k, 10);
       INFO("t = " << relpos::to_string(t));
       CHECK(relpos::position_by_subresultants(e0, m, p, t) ==
-            relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).verdict.position);
+            relpos::classify(relpos::detail::placed_ellipsoid(e0, m, t), p).verdict.position);
     }
   }
   SECTION("irrational instants") {
@@ -598,7 +599,7 @@ TEST_CASE("axis of a circular paraboloid: Disc f = 0 for every t, contact still 
     check_against_sampling(tl, e0, m, p, 40, 18);
     const RigidMotion lin = translation(poly({}), poly({}), poly({"-1", "1"}));  // z = 1/2 at t = 3/2
     CHECK(relpos::position_by_subresultants(e0, lin, p, q("3/2")) == Position::TI);
-    CHECK(relpos::classify(relpos::placed_ellipsoid(e0, lin, q("3/2")), p).verdict.position == Position::TI);
+    CHECK(relpos::classify(relpos::detail::placed_ellipsoid(e0, lin, q("3/2")), p).verdict.position == Position::TI);
   }
 }
 
@@ -695,7 +696,7 @@ TEST_CASE("a rotation can change smallness; spans without it are classified too"
   // Every interval, small or not, carries classify's position at its sample (math.md §8).
   for (const auto& iv : tl.intervals) {
     INFO("interval sample t = " << relpos::to_string(iv.sample) << (iv.small ? " (small)" : " (not small)"));
-    const Position want = relpos::classify(relpos::placed_ellipsoid(e0, m, iv.sample), p).verdict.position;
+    const Position want = relpos::classify(relpos::detail::placed_ellipsoid(e0, m, iv.sample), p).verdict.position;
     CHECK(iv.position == want);
   }
   // Irrational instants, small or not, are decided too (and checked against both neighbours);
@@ -759,7 +760,7 @@ int check_rational_instants(const Timeline& tl, const Ellipsoid& e0, const Rigid
     }
     const Rational t = *inst.time.exact();
     const auto sub = relpos::position_by_subresultants(e0, m, p, t);
-    if (sub) CHECK(*sub == relpos::classify(relpos::placed_ellipsoid(e0, m, t), p).verdict.position);
+    if (sub) CHECK(*sub == relpos::classify(relpos::detail::placed_ellipsoid(e0, m, t), p).verdict.position);
   }
   return irrational;
 }
@@ -830,7 +831,7 @@ TEST_CASE("a big sphere on the axis: TE at sqrt(2), inner tangency along a circl
     // The same configurations at rational instants (h = t - 3): the instant method agrees with classify.
     const RigidMotion lin = translation(poly({}), poly({}), poly({"-3", "1"}));
     for (const char* t : {"2", "17/4"}) {
-      const Position want = relpos::classify(relpos::placed_ellipsoid(e0, lin, q(t)), p).verdict.position;
+      const Position want = relpos::classify(relpos::detail::placed_ellipsoid(e0, lin, q(t)), p).verdict.position;
       CHECK(want == (std::string(t) == "2" ? Position::TE : Position::TI));
       CHECK(relpos::position_by_subresultants(e0, lin, p, q(t)) == want);
     }
@@ -927,7 +928,7 @@ TEST_CASE("random motions of bodies that are not small: every instant decided an
   CAPTURE(seed);
   RandomPaths gen{std::mt19937_64(seed), 1, 3, 2, Rational(0), 4, -5, 0, 2, 2, 8, 2, 2, 5};
   int irrational_instants = 0, decided_by_definiteness = 0, not_small = 0;
-  for (int k = 0; k < 40; ++k) {
+  for (int k = 0; k < relpos::testing::scaled(40); ++k) {
     CAPTURE(k);
     const auto [p, e0, m] = gen.next(k);
     Timeline tl;

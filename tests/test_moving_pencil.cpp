@@ -17,6 +17,7 @@
 #include "algebra/sturm.hpp"
 #include "motion/candidates.hpp"
 #include "motion/moving_pencil.hpp"
+#include "motion/polynomial_motion.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 
@@ -78,7 +79,7 @@ TEST_CASE("the moving pencil at a rational time is the placed pair's pencil up t
     const relpos::detail::MovingPencil mp(e0, m, p);
     for (int k = 0; k < 6; ++k) {
       const Rational t = g.rational(-3, 3, 4);
-      const relpos::Ellipsoid placed = relpos::placed_ellipsoid(e0, m, t);
+      const relpos::Ellipsoid placed = relpos::detail::placed_ellipsoid(e0, m, t);
       const Quartic<Rational> f = relpos::characteristic_polynomial<Rational>(p.matrix(), placed.matrix());
       const Quadratic<Rational> s = relpos::special_polynomial<Rational>(p.matrix(), placed.matrix());
       Quartic<Rational> ft;

@@ -9,6 +9,7 @@
 #include "support/checks.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
+#include "support/scale.hpp"
 
 using namespace rt;
 using relpos::Classification;
@@ -98,7 +99,7 @@ TEST_CASE("random small configurations: exact algebra, classify == classify_exac
   const int kernel_before = g_kernel_checks, table2_before = g_table2_checks;
   int known = 0, total = 0;
   int seen[5] = {0, 0, 0, 0, 0};
-  for (int i = 0; i < 2500; ++i) {
+  for (int i = 0; i < relpos::testing::scaled(2500); ++i) {
     Config k = random_small_config(g);
     const Oracle o = oracle(k);
     k.expected = o.truth;
@@ -124,9 +125,9 @@ TEST_CASE("random small configurations: exact algebra, classify == classify_exac
   // five, math.md §8).
   CHECK(known * 2 > total);
   for (const Position q : {Position::I, Position::TI, Position::C, Position::TE, Position::E})
-    CHECK(seen[static_cast<int>(q)] > 20);
-  CHECK(g_kernel_checks - kernel_before > 100);
-  CHECK(g_table2_checks - table2_before > 500);
+    CHECK(seen[static_cast<int>(q)] > relpos::testing::scaled(20));
+  CHECK(g_kernel_checks - kernel_before > relpos::testing::scaled(100));
+  CHECK(g_table2_checks - table2_before > relpos::testing::scaled(500));
 }
 
 TEST_CASE("random general ellipsoids: the answer is invariant under congruences and rescalings",
@@ -218,7 +219,7 @@ TEST_CASE("-b^2 double root in the plane y = 0, random: C, E or I without tangen
   Rng g(seed);
   CAPTURE(seed);
   int certified = 0, crossing_with_zero_disc = 0;
-  for (int i = 0; i < 150; ++i) {
+  for (int i = 0; i < relpos::testing::scaled(150); ++i) {
     Config k;
     k.name = "-b^2 family";
     k.a = Q(g.uniform(2, 8), 4);
@@ -245,6 +246,6 @@ TEST_CASE("-b^2 double root in the plane y = 0, random: C, E or I without tangen
     const Classification ct = check_all(Ellipsoid::from_matrix(t.e), Paraboloid::from_matrix(t.p), xt);
     CHECK(ct.verdict.position == c.verdict.position);
   }
-  CHECK(certified > 30);
-  CHECK(crossing_with_zero_disc > 5);
+  CHECK(certified > relpos::testing::scaled(30));
+  CHECK(crossing_with_zero_disc > relpos::testing::scaled(5));
 }

@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "algebra/centre.hpp"
+#include "algebra/coefficients.hpp"
 #include "algebra/cramer.hpp"
+#include "algebra/pair_size.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 
@@ -147,7 +149,7 @@ TEST_CASE("to_string(QuadricKind): the names the error messages use", "[quadric]
 TEST_CASE("matrix_from_coefficients halves the cross and linear terms", "[quadric]") {
   // 2x^2 + 3y^2 + 5z^2 + 4xy - 6xz + 8yz + 10x - 12y + 14z - 7
   relpos::Coefficients10 c{Q(2), Q(3), Q(5), Q(4), Q(-6), Q(8), Q(10), Q(-12), Q(14), Q(-7)};
-  Matrix4 m = relpos::matrix_from_coefficients(c);
+  Matrix4 m = relpos::detail::matrix_from_coefficients(c);
   Matrix4 want = diag4(Q(2), Q(3), Q(5), Q(-7));
   set_sym(want, 0, 1, Q(2));
   set_sym(want, 0, 2, Q(-3));
@@ -332,12 +334,12 @@ TEST_CASE("normalized_bits: the primitive integer form's bits, the same for ever
       for (const Integer& x : z)
         if (x != 0) want = std::max<std::size_t>(want, mpz_sizeinbase(Integer(x / content).mpz(), 2));
     CAPTURE(trial);
-    CHECK(relpos::normalized_bits(m) == want);
+    CHECK(relpos::detail::normalized_bits(m) == want);
     Rational c = g.nonzero_rational(-50, 50, 50);
     if (trial % 3 == 0) c *= Rational(Integer(1) << 2000, Integer(3) << 10);  // far beyond the limit as a common form
     Matrix4 scaled;
     for (std::size_t i = 0; i < 16; ++i) scaled.a[i] = c * m.a[i];
-    CHECK(relpos::normalized_bits(scaled) == want);
+    CHECK(relpos::detail::normalized_bits(scaled) == want);
   }
 }
 

@@ -4,6 +4,7 @@
 // the pencil code), and 1, 2, 3 threads give identical answers and consistent counts.
 #include <CGAL/FPU.h>
 
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -13,6 +14,7 @@
 #include "filters/running_bound.hpp"
 #include "scene/certificates.hpp"
 #include "scene/demo.hpp"
+#include "scene/scene_pool.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
 #include "support/secular.hpp"
@@ -531,4 +533,36 @@ TEST_CASE("scene: empty scenes, more threads than chunks, progress counter") {
     CHECK(CGAL::FPU_get_cw() == CGAL_FE_UPWARD);
   }
   CHECK(CGAL::FPU_get_cw() == CGAL_FE_TONEAREST);
+}
+
+TEST_CASE("scene: classified on a pool the caller keeps, the same verdicts and counts as Scene::classify") {
+  const std::uint64_t seed = 0x5CE7E0F1;
+  CAPTURE(seed);
+  const Scene scene(Paraboloid::standard({Q(0), Q(0), Q(0)}, Q(1), Q(2)));
+  std::vector<Ellipsoid> es;
+  for (const auto& d : relpos::demo_container_scene(700, seed, Q(1), Q(2))) es.push_back(d.ellipsoid());
+  relpos::SceneOptions o;
+  o.threads = 1;
+  o.chunk = 64;
+  const relpos::SceneResult alone = scene.classify(es, o);  // its own pool, one thread
+  // One pool kept across calls, as `relpos scene` keeps its pool from block to block.
+  relpos::detail::WorkerPool pool(3);
+  for (int round = 0; round < 2; ++round) {
+    std::atomic<std::size_t> progress{0};
+    o.progress = &progress;
+    const relpos::SceneResult r = relpos::detail::SceneAccess::classify(scene, es.data(), es.size(), o, pool);
+    REQUIRE(r.verdicts.size() == es.size());
+    for (std::size_t i = 0; i < es.size(); ++i) {
+      CHECK(r.verdicts[i].position == alone.verdicts[i].position);
+      CHECK(r.verdicts[i].stage == alone.verdicts[i].stage);
+    }
+    CHECK(r.counts.positions == alone.counts.positions);
+    CHECK(r.counts.stages == alone.counts.stages);
+    CHECK(r.threads == pool.threads());  // 11 chunks: every thread of the pool has bodies to take
+    CHECK(progress.load() == es.size());
+  }
+  // Fewer chunks than threads: the threads that had bodies to take.
+  o.chunk = 1024;
+  o.progress = nullptr;
+  CHECK(relpos::detail::SceneAccess::classify(scene, es.data(), es.size(), o, pool).threads == 1);
 }

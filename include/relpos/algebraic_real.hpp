@@ -64,14 +64,6 @@ class AlgebraicReal {
   int sign_lower_ = 0;  ///< sign of the polynomial at lower_ (irrational case)
 };
 
-/// The distinct irreducible factors over Z of a non-zero integer polynomial (FLINT), each primitive
-/// with a positive leading coefficient; constant factors are dropped.
-std::vector<std::vector<Integer>> irreducible_factors(const std::vector<Integer>& coefficients);
-
-/// The pseudo-remainder r of p by m (FLINT): lc(m)^k p = q m + r with deg r < deg m. When lc(m) > 0,
-/// r(a) has the sign of p(a) at every root a of m (empty vector: r = 0). m must be non-constant.
-std::vector<Integer> pseudo_remainder(const std::vector<Integer>& p, const std::vector<Integer>& m);
-
 /// Text of an integer polynomial in t, e.g. "t^2 - 2".
 std::string polynomial_text(const std::vector<Integer>& coefficients, const std::string& variable = "t");
 

@@ -41,13 +41,6 @@ enum class Stage : unsigned char {
 inline constexpr std::array kAllStages{Stage::InsideCertificate, Stage::OutsideCertificate, Stage::DiscriminantFilter,
                                        Stage::StaticDouble,      Stage::SemiStaticDouble,   Stage::MultipleRootWitness,
                                        Stage::Interval,          Stage::ExactSigns,         Stage::ExactRoots};
-/// The stages of decide_position / classify, in order (a pair classified alone never ends in an early-out).
-inline constexpr std::array kClassifierStages{Stage::StaticDouble, Stage::SemiStaticDouble, Stage::MultipleRootWitness,
-                                              Stage::Interval,     Stage::ExactSigns,       Stage::ExactRoots};
-/// The stages a scene body can end in (scene.hpp), in order: the early-outs, then the classifier's.
-inline constexpr std::array kSceneStages{Stage::InsideCertificate, Stage::OutsideCertificate,  Stage::StaticDouble,
-                                         Stage::SemiStaticDouble,  Stage::MultipleRootWitness, Stage::Interval,
-                                         Stage::ExactSigns,        Stage::ExactRoots};
 /// "inside-certificate", "outside-certificate", "discriminant-filter", "static-double", "semi-static-double",
 /// "multiple-root-witness", "interval", "exact-signs", "exact-roots".
 std::string to_string(Stage s);
@@ -69,8 +62,6 @@ enum class Rule : unsigned char {
   HardCase,              ///< TI: f~ vanishes at lambda_s, the hard case (math.md §8 rule 4)
   NoRootInGap,           ///< C: no positive root and f~ has no root in [lambda_s, 0) (math.md §8 rule 5)
 };
-/// Number of rules, None included (tables indexed by Rule take their size from here).
-inline constexpr std::size_t kRuleCount = static_cast<std::size_t>(Rule::NoRootInGap) + 1;
 std::string describe(Rule r);
 
 /// The answer without the evidence strings and exact coefficients: what the hot path computes.
@@ -90,7 +81,7 @@ struct Verdict {
 };
 
 /// Adaptive exact verdict (static double filter, intervals, exact integers, exact roots).
-/// Throws InputError for a pair beyond the size limit (check_normalized_pair_size, quadric.hpp),
+/// Throws InputError for a pair beyond the size limit (SizeLimit, quadric.hpp),
 /// as classify() and classify_exact() do.
 Verdict decide_position(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
 
@@ -127,20 +118,13 @@ std::size_t decide_positions(const double* e, const double* p, std::size_t n, Po
                              Stage* stages = nullptr);
 
 /// The same for quadrics already built: positions[i] = decide_position(e[i], p[i]).position, status[i]
-/// TooLarge where that throws (the size limit, check_normalized_pair_size).
+/// TooLarge where that throws (the size limit, SizeLimit).
 std::size_t decide_positions(const Ellipsoid* e, const Paraboloid* p, std::size_t n, Position* positions,
                              PairStatus* status, Stage* stages = nullptr);
 
 /// The same for n ellipsoids against one paraboloid: decide_position(e[i], p).
 std::size_t decide_positions(const Ellipsoid* e, std::size_t n, const Paraboloid& p, Position* positions,
                              PairStatus* status, Stage* stages = nullptr);
-
-/// The classification table itself (math.md §3 and §6), applied to exact root facts and the
-/// comparison of rho with 1: the one written decision, for callers that obtain the facts another
-/// way (the contact-only discriminant test). Stage is left at its default. nullopt when the facts do
-/// not decide (a pair that is not small needs the exact facts of math.md §8 -- the gap test
-/// against lambda_s or the five rules -- which decide_position computes).
-std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs_one);
 
 /// How much evidence to assemble. Minimal is what the fast path needs; Full adds the exact
 /// coefficients of f and s, deg f~, the multiple roots and rho itself.

@@ -13,7 +13,7 @@
 //   Disc > 0, V = 2  -> two distinct positive roots: E for any size;
 //   Disc > 0, V = 0  -> four distinct negative roots: I when small (not small: the gap test of math.md §8);
 //   Disc = 0         -> undecided here; the full classifier decide_position() answers.
-// The table applied is classify's own (decide_from_root_facts), so every answer is decide_position's.
+// The table applied is classify's own, so every answer is decide_position's.
 #pragma once
 
 #include <cstddef>
@@ -37,17 +37,6 @@ class Scene;
 /// belongs to: "scene-certificate" (an early-out of ContactChecker), "discriminant-filter"
 /// (Stage::DiscriminantFilter) or "full-classifier" (a stage of decide_position()).
 std::string decided_by(Stage s);
-
-struct DiscriminantVerdict {
-  /// Position, rule, contact identical to decide_position(); stage: Stage::DiscriminantFilter, or the
-  /// stage of decide_position() when the test declined.
-  Verdict verdict;
-  bool rho_known = true;  ///< false when verdict.small / rho_vs_one were not computed (answer E)
-};
-
-/// The discriminant test on exact-double inputs (static filter), falling back to decide_position().
-/// `limit`: the pair size limit of that fallback (quadric.hpp).
-DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
 
 // ------------------------------------------------------------------------------------------------
 // Contact only: do the two surfaces meet?

@@ -25,9 +25,6 @@ enum class QuadricPosition : unsigned char {
   TO,  ///< Q's solid inside E, touching (Q an ellipsoid)
   EQ,  ///< the same ellipsoid (TI and TO together)
 };
-inline constexpr std::array kAllQuadricPositions{QuadricPosition::I,  QuadricPosition::TI, QuadricPosition::C,
-                                                 QuadricPosition::TE, QuadricPosition::E,  QuadricPosition::O,
-                                                 QuadricPosition::TO, QuadricPosition::EQ};
 /// "I", "TI", "C", "TE", "E", "O", "TO", "EQ".
 inline std::string to_string(QuadricPosition p) {
   switch (p) {

@@ -31,18 +31,6 @@ enum class QuadricType : unsigned char {
   Slab,                  ///< lo <= n.x <= hi: between two parallel planes
   HalfSpace,             ///< n.x <= d: one side of a plane (a linear form, B = 0)
 };
-/// Every type, in enum order.
-inline constexpr std::array kAllQuadricTypes{QuadricType::Ellipsoid,
-                                             QuadricType::HyperboloidOneSheet,
-                                             QuadricType::HyperboloidTwoSheets,
-                                             QuadricType::Cone,
-                                             QuadricType::EllipticParaboloid,
-                                             QuadricType::HyperbolicParaboloid,
-                                             QuadricType::EllipticCylinder,
-                                             QuadricType::HyperbolicCylinder,
-                                             QuadricType::ParabolicCylinder,
-                                             QuadricType::Slab,
-                                             QuadricType::HalfSpace};
 /// "ellipsoid", "hyperboloid of one sheet", ..., "slab", "half-space".
 std::string to_string(QuadricType type);
 
@@ -53,7 +41,7 @@ class Quadric {
   static Quadric from_matrix(const Matrix4& q);
   /// Row-major 4x4 doubles, each taken exactly (InputError on NaN or infinity).
   static Quadric from_doubles(const DoubleMatrix4& q);
-  /// The 10 coefficients of the implicit equation (matrix_from_coefficients).
+  /// The 10 coefficients of the implicit equation (cross terms halved).
   static Quadric from_coefficients(const Coefficients10& c);
   /// The same solid as a validated ellipsoid or elliptic paraboloid.
   static Quadric of(const Ellipsoid& e);

@@ -44,9 +44,4 @@ class Interrupt {
   std::optional<std::chrono::steady_clock::time_point> deadline_;
 };
 
-/// interrupt->check() for an optional interrupt (computations take `const Interrupt*`, null: never stop).
-inline void check(const Interrupt* interrupt) {
-  if (interrupt) interrupt->check();
-}
-
 }  // namespace relpos

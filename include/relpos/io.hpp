@@ -21,12 +21,9 @@
 
 namespace relpos::io {
 
-/// Deepest nesting of arrays and objects that the JSON reader accepts.
-inline constexpr std::size_t kMaxJsonDepth = 256;
-
 /// Quadric descriptions given as JSON text (doc/cli.md, "Quadric formats"). `role` prefixes every
 /// message and names the field paths ("ellipsoid", "paraboloid"). Text that is not JSON, or nested
-/// deeper than kMaxJsonDepth, throws InputError "<role>: invalid JSON: ..."; library errors (not an
+/// deeper than 256 levels, throws InputError "<role>: invalid JSON: ..."; library errors (not an
 /// ellipsoid, singular map, ...) are rethrown as InputError "<role>: <message>".
 ///   ellipsoid:  4x4 array | {"matrix"} | {"coefficients"} | {"sphere": {"center", "radius"}}
 ///               | {"center", "axes", "rotation" | "rotation_matrix"} | {"center", "map"}
@@ -34,12 +31,6 @@ inline constexpr std::size_t kMaxJsonDepth = 256;
 ///               | {"map", "translation"}
 Ellipsoid ellipsoid_from_json(std::string_view json_text, const std::string& role = "ellipsoid");
 Paraboloid paraboloid_from_json(std::string_view json_text, const std::string& role = "paraboloid");
-
-/// One sentence saying what a position means ("the ellipsoid lies inside the paraboloid ...").
-std::string position_meaning(Position p);
-
-/// "<1", "=1", ">1".
-std::string rho_vs_one_text(int sign);
 
 /// Options for rendering.
 struct RenderOptions {
@@ -52,55 +43,12 @@ struct RenderOptions {
 /// degree_ftilde, f, s, multiple_roots and certificate. Key order is stable.
 std::string classification_json_text(const Classification& c, const RenderOptions& options = {});
 
-/// The minimal report of `relpos batch --evidence minimal` (without "id") as one line of JSON
-/// text: position, small, contact, rule, stage (the Python package's classify(evidence="minimal")).
-std::string minimal_json_text(const Verdict& v);
-
 /// The contact-only answer (doc/contact.md) as one line of JSON text: contact, position, rule,
 /// decided_by (decided_by(stage)).
 std::string contact_json_text(const ContactAnswer& a);
 
 /// A multi-line human-readable report (ends with a newline).
 std::string classification_to_text(const Classification& c, const RenderOptions& options = {});
-
-/// A polynomial with exact coefficients (index = power) as text: "3*l^4 - 1/2*l^2 + 7".
-std::string polynomial_to_text(const Rational* coefficients, int size, const std::string& variable = "l");
-
-// ------------------------------------------------------------------------------------------------
-// Batch lines: the answer to one JSON Lines input line, as `relpos batch` writes it (doc/cli.md,
-// "relpos batch"); its reader is internal (src/io/batch.hpp).
-
-/// Default longest input line (--max-line-bytes): 64 MiB.
-inline constexpr std::size_t kDefaultMaxLineBytes = std::size_t(64) << 20;
-
-struct BatchOptions {
-  Evidence evidence = Evidence::Full;  ///< Minimal: id, position, small, contact, rule, stage only
-  bool contact_only = false;           ///< the contact answer of doc/contact.md
-  bool numbers_as_doubles = false;     ///< each JSON number is the IEEE double nearest its text
-  std::size_t max_line_bytes = kDefaultMaxLineBytes;
-  SizeLimit size_limit;  ///< the pair size limit (--max-bits)
-  RenderOptions render;
-  /// > 0: every answer ends with "margin" (margin.hpp, margin_json_text), its enclosure of relative
-  /// width 2^-margin_bits; 0: no margin.
-  int margin_bits = 0;
-};
-
-/// The error of a line that ran out of memory, and the error of one whose id could not even be
-/// echoed: its id is then the line number (doc/cli.md, "Out of memory").
-inline constexpr const char* kOutOfMemoryMessage = "out of memory while answering this line";
-inline constexpr const char* kOutOfMemoryNoIdMessage =
-    "out of memory while answering this line (its id is replaced by the line number)";
-
-/// The one JSON output line (no newline) answering an input line of `relpos batch`: the
-/// classification or {"id": ..., "error": "..."}. Out of memory on the line is that line's error.
-/// Memory: the answer and small bounded parts; the id is not copied (doc/cli.md, "Memory").
-std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options);
-
-/// The same line written into `out` (replacing its text, keeping its capacity: a caller answering
-/// many lines reuses its buffers). Never throws: out of memory gives the line's error with the id,
-/// else with the line number (kOutOfMemoryNoIdMessage), and `out` is left empty only when not even
-/// that fits (a caller keeping some capacity in `out` never sees it).
-void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out);
 
 /// The JSON text of a margin (doc/certificates.md, "Margins"): {"approx": <double>, "lo": "p/q",
 /// "hi": "p/q", "polynomial": ["c0", "c1", ...], and "below" and "above" (lo < hi) or "at" (lo == hi >
@@ -109,8 +57,6 @@ std::string margin_json_text(const Margin& m, int digits = 12);
 /// The inverse (numbers read exactly, approx as the double nearest its text). Throws InputError
 /// naming the field on malformed text.
 Margin margin_from_json_text(std::string_view text);
-/// Three or four lines of text for `relpos classify --margin` (ends with a newline).
-std::string margin_to_text(const Margin& m, const RenderOptions& options = {});
 
 }  // namespace relpos::io
 

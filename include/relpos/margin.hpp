@@ -23,8 +23,6 @@ namespace relpos {
 
 /// The default relative width of a margin's enclosure: hi - lo <= 2^-40 lo.
 inline constexpr int kDefaultMarginBits = 40;
-/// The largest `bits` margin() accepts (each bit costs the certificates about one bit of length).
-inline constexpr int kMaxMarginBits = 1000;
 
 /// s* exactly, with its proof (doc/certificates.md, "Margins").
 struct Margin {
@@ -50,8 +48,8 @@ struct Margin {
   AlgebraicReal value() const;
 };
 
-/// s* for the pair, exactly, with an enclosure of relative width 2^-bits at most, 1 <= bits <=
-/// kMaxMarginBits (InputError otherwise, and for a pair beyond the size limit, as classify()).
+/// s* for the pair, exactly, with an enclosure of relative width 2^-bits at most, 1 <= bits <= 1000
+/// (InputError otherwise, and for a pair beyond the size limit, as classify()).
 Margin margin(const Ellipsoid& e, const Paraboloid& p, int bits = kDefaultMarginBits);
 
 /// Checks a margin with exact arithmetic: nullopt when it proves s* for the pair, otherwise the
@@ -60,9 +58,5 @@ Margin margin(const Ellipsoid& e, const Paraboloid& p, int bits = kDefaultMargin
 /// rule), and divide the pair's margin polynomial (math.md §19), whose other factors have no root in
 /// (lo, hi); approx must lie within one unit in the last place of [lo, hi].
 std::optional<std::string> verify_margin(const Ellipsoid& e, const Paraboloid& p, const Margin& m);
-
-/// The ellipsoid scaled by `factor` > 0 about its centre (InputError otherwise): the matrix with
-/// the corner entry e0 + k (1 - factor^2), k = -e(centre) (math.md §19).
-Ellipsoid scaled_about_centre(const Ellipsoid& e, const Rational& factor);
 
 }  // namespace relpos

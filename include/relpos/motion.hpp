@@ -78,16 +78,6 @@ struct RigidMotion {
 /// The centre -M^-1 e of an ellipsoid, exactly.
 Vector3 centre_of(const Ellipsoid& e);
 
-/// The pivot point of the motion for this ellipsoid.
-Vector3 pivot_of(const Ellipsoid& e0, const RigidMotion& m);
-
-/// The placed ellipsoid at a rational time t (the matrix T^-T E0 T^-1 itself, exactly).
-Ellipsoid placed_ellipsoid(const Ellipsoid& e0, const RigidMotion& m, const Rational& t);
-
-/// Checks t0 <= t1 and that q(t) does not vanish on [t0, t1] (the rotation would be undefined
-/// there); throws InputError naming the problem.
-void validate_motion(const RigidMotion& m, const Rational& t0, const Rational& t1);
-
 // ---- Positions along the motion
 
 /// Why an instant of the timeline is there (bit flags).
@@ -99,8 +89,6 @@ enum EventCause : unsigned {
       8,  ///< a root of f meets a root of s, or the roots of s merge (only when Disc_l f = 0 identically)
   kCauseSmallness = 16,  ///< rho(t) - 1 may change sign (a zero of a smallness quantity)
 };
-/// "start", "discriminant", ... for the set bits, in that order.
-std::vector<std::string> cause_names(unsigned causes);
 
 /// The position at one instant.
 struct MotionInstant {

@@ -17,10 +17,6 @@ namespace relpos {
 using Integer = CGAL::Gmpz;
 using Rational = CGAL::Gmpq;
 
-/// Limits enforced by the parser (a clear error instead of a hang on hostile input).
-inline constexpr std::size_t kMaxNumberChars = 10000;  ///< characters in one number
-inline constexpr long kMaxDecimalExponent = 4000;      ///< |e| in "1.5e-7"-style exponents
-
 /// Parse an exact rational from text: integers ("-3"), fractions ("p/q"), decimals ("0.712045",
 /// "-.5", "1.5e-7", "2E+10"). The denominator of a fraction is written without sign, and no blank
 /// surrounds the number. Throws relpos::InputError naming the text on anything else.

@@ -43,14 +43,6 @@ using Coefficients10 = std::array<Rational, 10>;
 /// Row-major 4x4 matrix of doubles.
 using DoubleMatrix4 = std::array<double, 16>;
 
-/// The entries as doubles if each one is exactly representable, else nullopt.
-std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m);
-
-/// m times the power of two that brings its largest entry into [1/2, 1) (exact), or nullopt if a
-/// non-zero entry would become subnormal or m is zero or not finite: the input range of the static
-/// filter (static_filter.hpp). A positive scaling changes no decision (math.md §1).
-std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m);
-
 /// Exact affine type of a real quadric surface.
 enum class QuadricKind {
   Ellipsoid,
@@ -80,17 +72,8 @@ std::string to_string(QuadricKind kind);
 /// Q must be symmetric (throws InputError otherwise).
 QuadricKind classify_quadric(const Matrix4& q);
 
-/// Matrix from the 10 coefficients of the implicit equation (cross terms halved).
-Matrix4 matrix_from_coefficients(const Coefficients10& c);
-
 /// Exact rotation matrix R(q)/|q|^2 of a non-zero quaternion.
 Matrix3 rotation_from_quaternion(const Quaternion& q);
-
-class Ellipsoid;
-class Paraboloid;
-struct Verdict;
-/// The decision on 32 doubles (classify.hpp): builds its quadrics as from_doubles does.
-Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
 
 /// A validated ellipsoid, sign-normalized: M = Q3 positive definite, det E < 0.
 class Ellipsoid {
@@ -133,7 +116,7 @@ class Ellipsoid {
   /// The storage of the matrix (internal/quadric_matrix.hpp), found by argument-dependent lookup.
   friend const detail::QuadricMatrix& storage_of(const Ellipsoid& q) { return q.m_; }
   friend Ellipsoid detail::make_ellipsoid(detail::QuadricMatrix m);
-  friend Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
+  friend struct detail::QuadricAccess;
   explicit Ellipsoid(Matrix4 m) : m_(std::move(m)) {}
   explicit Ellipsoid(const DoubleMatrix4& d) : m_(d) {}
   explicit Ellipsoid(detail::QuadricMatrix m) : m_(std::move(m)) {}
@@ -167,12 +150,29 @@ class Paraboloid {
   /// The storage of the matrix (internal/quadric_matrix.hpp), found by argument-dependent lookup.
   friend const detail::QuadricMatrix& storage_of(const Paraboloid& q) { return q.m_; }
   friend Paraboloid detail::make_paraboloid(detail::QuadricMatrix m);
-  friend Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p);
+  friend struct detail::QuadricAccess;
   explicit Paraboloid(Matrix4 m) : m_(std::move(m)) {}
   explicit Paraboloid(const DoubleMatrix4& d) : m_(d) {}
   explicit Paraboloid(detail::QuadricMatrix m) : m_(std::move(m)) {}
   detail::QuadricMatrix m_;
 };
+
+namespace detail {
+
+/// What the library's own code may do with a quadric that its users may not, on this floor: build
+/// one from doubles before its shape is certified and negate their orientation in place
+/// (decide_position on 32 doubles certifies the shape from the pair's pencil, classify.hpp).
+struct QuadricAccess {
+  /// The quadric from_doubles builds, without its shape test: the caller certifies the shape.
+  template <class Q>
+  static Q from_doubles_unchecked(const DoubleMatrix4& d) {
+    return Q(d);
+  }
+  static QuadricMatrix& storage(Ellipsoid& e) { return e.m_; }
+  static QuadricMatrix& storage(Paraboloid& p) { return p.m_; }
+};
+
+}  // namespace detail
 
 /// Size limit on the *normalized* forms of a pair: each matrix divided by its own content (times the
 /// lcm of its denominators, then divided by the gcd of the resulting integers: its primitive integer
@@ -188,17 +188,5 @@ inline constexpr std::size_t kMaxNormalizedBits = 4096;
 struct SizeLimit {
   std::size_t max_bits = kMaxNormalizedBits;
 };
-
-/// Bits of the largest entry of the primitive integer form of m (0 for the zero matrix).
-std::size_t normalized_bits(const Matrix4& m);
-
-/// max(normalized_bits(e), normalized_bits(p)): independent of how either matrix was scaled.
-std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p);
-
-/// Throws InputError ("numbers too large: ...", naming the limit) when normalized_pair_bits(e, p) >
-/// limit.max_bits, and InputError when limit.max_bits < kMaxNormalizedBits (the limit is raised,
-/// never lowered). Returns a bound on normalized_pair_bits(e, p) that is exact when it exceeds
-/// kMaxNormalizedBits (0 for matrices known to be within it without a computation).
-std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
 
 }  // namespace relpos

@@ -36,26 +36,25 @@
 
 namespace relpos {
 
+namespace detail {
+struct SceneAccess;  // the library's access to a scene (src/scene/scene_pool.hpp)
+}  // namespace detail
+
 // ------------------------------------------------------------------------------------------------
 // Scene classification
 // ------------------------------------------------------------------------------------------------
-
-inline constexpr std::size_t kPositionCount = kAllPositions.size();  ///< I, TI, C, TE, E
 
 /// The answer for one body: position and rule are exactly decide_position()'s (contact_of(position)).
 struct SceneVerdict {
   Position position = Position::C;
   Rule rule = Rule::None;
-  Stage stage = Stage::StaticDouble;  ///< an early-out or the classifier stage that decided (kSceneStages)
+  Stage stage = Stage::StaticDouble;  ///< an early-out or the classifier stage that decided
 };
-
-/// The scene view of a core verdict.
-SceneVerdict scene_verdict(const Verdict& v);
 
 /// Counts per position (index = static_cast<int>(Position)) and per stage (index = Stage).
 struct SceneCounts {
   std::size_t bodies = 0;
-  std::array<std::size_t, kPositionCount> positions{};
+  std::array<std::size_t, kAllPositions.size()> positions{};  ///< I, TI, C, TE, E
   std::array<std::size_t, kAllStages.size()> stages{};
   void add(const SceneVerdict& v) {
     ++bodies;
@@ -64,7 +63,7 @@ struct SceneCounts {
   }
   void merge(const SceneCounts& o) {
     bodies += o.bodies;
-    for (std::size_t i = 0; i < kPositionCount; ++i) positions[i] += o.positions[i];
+    for (std::size_t i = 0; i < positions.size(); ++i) positions[i] += o.positions[i];
     for (std::size_t i = 0; i < stages.size(); ++i) stages[i] += o.stages[i];
   }
   std::size_t count(Position p) const { return positions[static_cast<std::size_t>(p)]; }
@@ -115,6 +114,7 @@ class Scene {
   struct PreparedParaboloid;  // the precomputed paraboloid data (scene.cpp)
 
  private:
+  friend struct detail::SceneAccess;
   Paraboloid p_;
   std::shared_ptr<const PreparedParaboloid> prepared_;
 };

@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "io/batch.hpp"
 #include "module.hpp"
 
 namespace relpos_python {

@@ -17,6 +17,8 @@
 #include <thread>
 #include <vector>
 
+#include "algebra/pair_size.hpp"
+#include "decide/stages.hpp"
 #include "module.hpp"
 #include "signals.hpp"
 
@@ -436,8 +438,8 @@ std::vector<relpos::Ellipsoid> scene_bodies(py::handle bodies, SignalWatch& watc
 
 /// The stage code of a scene body: its index in kSceneStages (and in relpos.STAGE_NAMES).
 std::int8_t scene_stage_code(relpos::Stage s) {
-  for (std::size_t k = 0; k < relpos::kSceneStages.size(); ++k)
-    if (relpos::kSceneStages[k] == s) return static_cast<std::int8_t>(k);
+  for (std::size_t k = 0; k < relpos::detail::kSceneStages.size(); ++k)
+    if (relpos::detail::kSceneStages[k] == s) return static_cast<std::int8_t>(k);
   throw std::logic_error("scene: a stage a scene never ends in");
 }
 
@@ -448,7 +450,7 @@ void check_body_sizes(const relpos::Paraboloid& p, const std::vector<relpos::Ell
                       const relpos::SizeLimit& limit, SignalWatch& watch) {
   for (std::size_t i = 0; i < bodies.size() && !(i % kPollEvery == 0 && watch.poll()); ++i) {
     try {
-      relpos::check_normalized_pair_size(bodies[i], p, limit);
+      relpos::detail::check_normalized_pair_size(bodies[i], p, limit);
     } catch (const relpos::InputError& err) {
       throw relpos::InputError("bodies[" + std::to_string(i) + "]: " + err.what());
     }
@@ -503,7 +505,7 @@ py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads
 
 void bind_decide(py::module_& m) {
   py::list stage_names;
-  for (const relpos::Stage s : relpos::kSceneStages) stage_names.append(relpos::to_string(s));
+  for (const relpos::Stage s : relpos::detail::kSceneStages) stage_names.append(relpos::to_string(s));
   m.attr("_STAGE_NAMES") = py::tuple(stage_names);
   m.def("_scene", &scene, "p"_a, "bodies"_a, "threads"_a, "early_outs"_a, "max_bits"_a,
         "relpos::Scene on the bodies: (position codes, contact codes, stage codes, threads used).");

@@ -13,6 +13,7 @@
 #include "io/json_values.hpp"
 #include "io/motion_json.hpp"
 #include "module.hpp"
+#include "motion/polynomial_motion.hpp"
 #include "signals.hpp"
 
 namespace relpos_python {
@@ -204,7 +205,7 @@ void bind_motion(py::module_& m) {
             py::list out;
             for (const relpos::MotionInstant& i : tl.instants)
               out.append(py::dict("time"_a = i.time, "position"_a = relpos::to_string(i.position), "small"_a = i.small,
-                                  "causes"_a = relpos::cause_names(i.causes), "how"_a = i.how));
+                                  "causes"_a = relpos::detail::cause_names(i.causes), "how"_a = i.how));
             return out;
           },
           "The candidate instants in increasing order (t0 first, t1 last): dicts time, position, small, causes, how.")

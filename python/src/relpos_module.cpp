@@ -14,6 +14,9 @@
 #include <relpos/numbers.hpp>
 #include <string>
 
+#include "algebra/pair_size.hpp"
+#include "io/answer_json.hpp"
+#include "margin/family.hpp"
 #include "module.hpp"
 
 namespace py = pybind11;
@@ -210,9 +213,9 @@ PYBIND11_MODULE(_relpos, m) {
   m.def(
       "_margin_json",
       [](const relpos::Ellipsoid& e, const relpos::Paraboloid& p, int bits) {
-        if (bits < 1 || bits > relpos::kMaxMarginBits)
-          throw relpos::InputError("margin_bits: expected an int from 1 to " + std::to_string(relpos::kMaxMarginBits) +
-                                   ", got " + std::to_string(bits));
+        if (bits < 1 || bits > relpos::detail::kMaxMarginBits)
+          throw relpos::InputError("margin_bits: expected an int from 1 to " +
+                                   std::to_string(relpos::detail::kMaxMarginBits) + ", got " + std::to_string(bits));
         std::string text;
         {
           py::gil_scoped_release release;
@@ -239,7 +242,7 @@ PYBIND11_MODULE(_relpos, m) {
         {
           py::gil_scoped_release release;
           const relpos::SizeLimit limit{max_bits};
-          relpos::check_normalized_pair_size(e, p, limit);
+          relpos::detail::check_normalized_pair_size(e, p, limit);
           text = relpos::io::contact_json_text(relpos::contact(e, p, limit));
         }
         return text;

@@ -11,6 +11,7 @@
 
 #include "algebra/flint_poly.hpp"
 #include "algebra/flint_thread.hpp"
+#include "algebra/irreducible.hpp"
 #include "algebra/polynomial_sign.hpp"
 #include "algebra/polynomial_text.hpp"
 
@@ -53,13 +54,13 @@ std::vector<std::vector<Integer>> flint_factors(const std::vector<Integer>& p) {
 
 }  // namespace
 
-std::vector<std::vector<Integer>> irreducible_factors(const std::vector<Integer>& coefficients) {
+std::vector<std::vector<Integer>> detail::irreducible_factors(const std::vector<Integer>& coefficients) {
   for (const auto& c : coefficients)
     if (c != 0) return flint_factors(coefficients);
   throw std::invalid_argument("irreducible_factors: the zero polynomial");
 }
 
-std::vector<Integer> pseudo_remainder(const std::vector<Integer>& p, const std::vector<Integer>& m) {
+std::vector<Integer> detail::pseudo_remainder(const std::vector<Integer>& p, const std::vector<Integer>& m) {
   detail::flint_thread_cleanup_at_exit();
   if (m.size() < 2) throw std::invalid_argument("pseudo_remainder: constant divisor");
   fmpz_poly_t a, b, r;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "algebra/number_limits.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos {
@@ -100,7 +101,8 @@ Rational parse_decimal(std::string_view text) {
   }
   long e10 = expo.empty() ? 0 : parse_exponent(text, expo);
   e10 -= static_cast<long>(fp.size());
-  if (e10 > kMaxDecimalExponent || e10 < -kMaxDecimalExponent - static_cast<long>(kMaxNumberChars))
+  if (e10 > detail::kMaxDecimalExponent ||
+      e10 < -detail::kMaxDecimalExponent - static_cast<long>(detail::kMaxNumberChars))
     bad(text, "decimal exponent beyond the supported range: the exponent of the last digit must lie in [-14000, 4000]");
   std::string digits = std::string(ip) + std::string(fp);
   Integer m = parse_integer_digits(digits.empty() ? "0" : digits);
@@ -116,7 +118,7 @@ Rational parse_rational(std::string_view text) {
   if (text.empty()) bad(text, "empty");
   if (std::isspace(static_cast<unsigned char>(text.front())) || std::isspace(static_cast<unsigned char>(text.back())))
     bad(text, "blank before or after the number");
-  if (text.size() > kMaxNumberChars) bad(text, "longer than the 10000-character limit");
+  if (text.size() > detail::kMaxNumberChars) bad(text, "longer than the 10000-character limit");
   if (auto slash = text.find('/'); slash != std::string_view::npos) return parse_fraction(text, slash);
   return parse_decimal(text);
 }

@@ -1,5 +1,7 @@
 // The pair's size limit (kMaxNormalizedBits, doc/cli.md, Limits): the bits of a matrix's primitive
 // integer form, bounded first from the lcm of its denominators alone.
+#include "algebra/pair_size.hpp"
+
 #include <gmp.h>
 
 #include <algorithm>
@@ -27,7 +29,7 @@ std::size_t normalized_bits_bound(const Matrix4& m) {
 
 }  // namespace
 
-std::size_t normalized_bits(const Matrix4& m) {
+std::size_t detail::normalized_bits(const Matrix4& m) {
   Integer l(1), g(0);
   forms::lcm_of_denominators(m.a.begin(), m.a.end(), l);
   std::array<Integer, 16> z;
@@ -45,11 +47,11 @@ std::size_t normalized_bits(const Matrix4& m) {
   return bits;
 }
 
-std::size_t normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
+std::size_t detail::normalized_pair_bits(const Ellipsoid& e, const Paraboloid& p) {
   return std::max(normalized_bits(e.matrix()), normalized_bits(p.matrix()));
 }
 
-std::size_t check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+std::size_t detail::check_normalized_pair_size(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
   if (limit.max_bits < kMaxNormalizedBits)
     throw InputError("the size limit is at least " + std::to_string(kMaxNormalizedBits) + " bits, got " +
                      std::to_string(limit.max_bits) + " (it can be raised, not lowered: doc/cli.md, Limits)");

@@ -9,7 +9,9 @@
 #include <string>
 #include <utility>
 
+#include "algebra/coefficients.hpp"
 #include "algebra/forms.hpp"
+#include "algebra/matrix4.hpp"
 #include "algebra/quadric_kind.hpp"
 #include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
@@ -17,11 +19,7 @@
 namespace relpos {
 namespace {
 
-Matrix4 negated(const Matrix4& q) {
-  Matrix4 r;
-  for (std::size_t i = 0; i < 16; ++i) r.a[i] = -q.a[i];
-  return r;
-}
+using detail::negated;
 
 Matrix3 inverse3(const Matrix3& m, const char* what) {
   Matrix3 c;  // cofactor transpose
@@ -101,7 +99,7 @@ Rational squared_norm_minus(const Vector3& c, const Rational& r) {
 
 }  // namespace
 
-Matrix4 matrix_from_coefficients(const Coefficients10& c) {
+Matrix4 detail::matrix_from_coefficients(const Coefficients10& c) {
   const Rational half(1, 2);
   Matrix4 m;
   m(0, 0) = c[0];
@@ -184,7 +182,9 @@ Ellipsoid Ellipsoid::from_matrix(const Matrix4& e) {
   return Ellipsoid(e(0, 0) > 0 ? e : negated(e));
 }
 
-Ellipsoid Ellipsoid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
+Ellipsoid Ellipsoid::from_coefficients(const Coefficients10& c) {
+  return from_matrix(detail::matrix_from_coefficients(c));
+}
 
 Ellipsoid Ellipsoid::translated(const Vector3& d) const {
   const Matrix4& q = matrix();
@@ -252,7 +252,9 @@ Paraboloid Paraboloid::from_matrix(const Matrix4& p) {
   return Paraboloid(p(0, 0) + p(1, 1) + p(2, 2) > 0 ? p : negated(p));
 }
 
-Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
+Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) {
+  return from_matrix(detail::matrix_from_coefficients(c));
+}
 
 Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Rational& b, const Quaternion& q) {
   if (a <= 0 || b <= 0)

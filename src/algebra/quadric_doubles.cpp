@@ -4,6 +4,8 @@
 // intervals and the exact path out of line. The constructor lives here, not with the rest of the
 // storage (quadric_matrix.cpp), so that the flattened constructors can inline it. Also the same
 // normalization on its own (power_of_two_normalized, the static filter's input range).
+#include "algebra/quadric_doubles.hpp"
+
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -118,7 +120,7 @@ void QuadricMatrix::negate_doubles() {
 
 }  // namespace detail
 
-std::optional<DoubleMatrix4> power_of_two_normalized(const std::optional<DoubleMatrix4>& m) {
+std::optional<DoubleMatrix4> detail::power_of_two_normalized(const std::optional<DoubleMatrix4>& m) {
   if (!m) return std::nullopt;
   DoubleMatrix4 out;
   int exponent;

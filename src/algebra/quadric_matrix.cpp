@@ -12,11 +12,12 @@
 #include <utility>
 
 #include "algebra/decimal_recipe.hpp"
+#include "algebra/quadric_doubles.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos {
 
-std::optional<DoubleMatrix4> exact_doubles(const Matrix4& m) {
+std::optional<DoubleMatrix4> detail::exact_doubles(const Matrix4& m) {
   DoubleMatrix4 d;
   for (std::size_t i = 0; i < 16; ++i) {
     // A double is n 2^j / 2^k in lowest terms with odd |n| < 2^53 (and in range): tested on the integers,

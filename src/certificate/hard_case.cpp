@@ -60,7 +60,7 @@ LinearSolution solve3(const LambdaS& ls, std::array<std::array<QuadraticReal, 4>
 QuadraticReal q_of(const Rational& x) { return {x, Rational(0)}; }
 
 /// e(x) = x^T M x + 2 m^T x + e0 over Q(sqrt d).
-QuadraticReal e_at(const LambdaS& ls, const Matrix4& E, const Q3& x) {
+QuadraticReal e_in_field(const LambdaS& ls, const Matrix4& E, const Q3& x) {
   QuadraticReal acc = q_of(E(3, 3));
   for (int i = 0; i < 3; ++i) {
     acc = ls.add(acc, ls.mul(q_of(2 * E(i, 3)), x[i]));
@@ -120,7 +120,7 @@ bool hard_case(const detail::PairContext& pr, Certificate& c) {
   Q3 x = sol.particular;
   const auto& w = sol.kernel;
   if (!w.empty()) minimise_along(ls, E, w, x);
-  const QuadraticReal ex = e_at(ls, E, x);
+  const QuadraticReal ex = e_in_field(ls, E, x);
   c.kind = Certificate::Kind::HardTangent;
   c.d = ls.d;
   c.lambda_q = {ls.value().a, ls.value().b};

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "algebra/matrix4.hpp"
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
 
@@ -88,15 +89,6 @@ inline int block_rank(const Field& f, const QMatrix& k) {
           return size;
       }
   return 0;
-}
-
-/// X^T Q X for X = (x, y, z, 1), rational.
-inline Rational form_at(const Matrix4& q, const Vector3& x) {
-  const std::array<Rational, 4> v{x[0], x[1], x[2], Rational(1)};
-  Rational s(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) s += v[static_cast<std::size_t>(i)] * q(i, j) * v[static_cast<std::size_t>(j)];
-  return s;
 }
 
 /// A point as "(x, y, z)" in exact rationals, for a verifier's message.

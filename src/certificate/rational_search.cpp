@@ -9,15 +9,6 @@ int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
 }  // namespace
 
-Rational power_of_two(long k) {
-  Rational r(1);
-  if (k >= 0)
-    mpq_mul_2exp(r.mpq(), r.mpq(), static_cast<mp_bitcnt_t>(k));
-  else
-    mpq_div_2exp(r.mpq(), r.mpq(), static_cast<mp_bitcnt_t>(-k));
-  return r;
-}
-
 long log2_of(const Rational& x) {
   return static_cast<long>(mpz_sizeinbase(mpq_numref(x.mpq()), 2)) -
          static_cast<long>(mpz_sizeinbase(mpq_denref(x.mpq()), 2));

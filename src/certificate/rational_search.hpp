@@ -10,14 +10,14 @@
 #include <utility>
 #include <vector>
 
+#include "algebra/power_of_two.hpp"
 #include "anysize/exact.hpp"
 #include "pair/integer_poly.hpp"
 #include "relpos/numbers.hpp"
 
 namespace relpos::certificate {
 
-/// 2^k.
-Rational power_of_two(long k);
+using detail::power_of_two;
 /// floor(log2 |x|) up to one, for x != 0.
 long log2_of(const Rational& x);
 /// x rounded down to a multiple of 2^e.

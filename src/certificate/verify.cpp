@@ -24,6 +24,7 @@ using detail::block_rank;
 using detail::Field;
 using detail::form_at;
 using detail::minor_det;
+using detail::negated;
 using detail::point_text;
 using detail::Qd;
 using detail::QMatrix;
@@ -85,12 +86,6 @@ Reason check_symmetric(const Matrix4& m, const std::string& name) {
       if (m(i, j) != m(j, i))
         return name + " matrix is not symmetric (entry " + std::to_string(i + 1) + "," + std::to_string(j + 1) + ")";
   return std::nullopt;
-}
-
-Matrix4 negated(const Matrix4& m) {
-  Matrix4 out;
-  for (std::size_t i = 0; i < 16; ++i) out.a[i] = -m.a[i];
-  return out;
 }
 
 /// E made to have a positive definite 3x3 block (negation only), checked to be a real ellipsoid.

@@ -8,6 +8,7 @@
 #include "algebra/rounding.hpp"
 #include "algebra/smallness.hpp"
 #include "contact/discriminant_case.hpp"
+#include "decide/decision.hpp"
 #include "decide/stages.hpp"
 #include "filters/running_bound.hpp"
 #include "filters/semi_static_filter.hpp"
@@ -38,7 +39,7 @@ namespace {
 
 std::optional<Verdict> verdict_of_case(DiscriminantCase c, int rho_vs_one) {
   // The case's root facts through classify's own table.
-  std::optional<Verdict> v = decide_from_root_facts(root_facts_of(c), rho_vs_one);
+  std::optional<Verdict> v = detail::decide_from_root_facts(root_facts_of(c), rho_vs_one);
   if (v) v->stage = Stage::DiscriminantFilter;
   return v;
 }
@@ -70,17 +71,13 @@ using detail::rounding_to_nearest;
 /// Plugged into the static filter: compute the smallness signs only when the case needs them.
 bool needs_smallness(const QuarticSigns& q) { return discriminant_case_needs_rho(discriminant_case(q)); }
 
-template <class NT, class Get>
-SymmetricEntries<NT> entries(Get get) {
-  return {get(0, 0), get(1, 1), get(2, 2), get(0, 1), get(0, 2), get(1, 2), get(0, 3), get(1, 3), get(2, 3), get(3, 3)};
-}
-
 /// The contact-only answer of a verdict.
 ContactAnswer finish(const Verdict& v) { return {contact_of(v.position), v.position, v.rule, v.stage}; }
 
 }  // namespace
 
-DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
+detail::DiscriminantVerdict detail::decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p,
+                                                           const SizeLimit& limit) {
   return detail::filtered<detail::Rounding::Nearest>(
       [&]() -> std::optional<DiscriminantVerdict> {
         if (!storage_of(e).filter_doubles() || !storage_of(p).filter_doubles()) return std::nullopt;
@@ -99,7 +96,7 @@ DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid&
 }
 
 ContactAnswer contact(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit) {
-  return finish(decide_by_discriminant(e, p, limit).verdict);
+  return finish(detail::decide_by_discriminant(e, p, limit).verdict);
 }
 
 ContactChecker::ContactChecker(const Paraboloid& p) : scene_(std::make_unique<Scene>(p)) {}
@@ -113,7 +110,7 @@ ContactAnswer ContactChecker::contact(const Ellipsoid& e) const {
     // Inside (I) or outside (E): no common point in either case.
     return ContactAnswer{Contact::None, s->position, s->rule, s->stage};
   }
-  return finish(decide_by_discriminant(e, scene_->paraboloid()).verdict);
+  return finish(detail::decide_by_discriminant(e, scene_->paraboloid()).verdict);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -210,7 +207,7 @@ ExteriorTracker::FrameVerdict ExteriorTracker::update(const Ellipsoid& placed) {
   }
   if (!v) {
     // The case was decided but rho was not: the one-shot path computes smallness in the filter.
-    v = filter_tried ? decide_by_discriminant(placed, p_).verdict : decide_position(placed, p_);
+    v = filter_tried ? detail::decide_by_discriminant(placed, p_).verdict : decide_position(placed, p_);
   }
   return finish(*v);
 }

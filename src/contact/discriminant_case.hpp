@@ -24,4 +24,19 @@ std::string to_string(DiscriminantCase c);
 /// the fields small / rho_vs_one are not meaningful (rho was not looked at).
 std::optional<Verdict> verdict_from_discriminant_case(DiscriminantCase c, std::optional<int> rho_vs_one);
 
+namespace detail {
+
+struct DiscriminantVerdict {
+  /// Position, rule, contact identical to decide_position(); stage: Stage::DiscriminantFilter, or the
+  /// stage of decide_position() when the test declined.
+  Verdict verdict;
+  bool rho_known = true;  ///< false when verdict.small / rho_vs_one were not computed (answer E)
+};
+
+/// The discriminant test on exact-double inputs (static filter), falling back to decide_position().
+/// `limit`: the pair size limit of that fallback (quadric.hpp).
+DiscriminantVerdict decide_by_discriminant(const Ellipsoid& e, const Paraboloid& p, const SizeLimit& limit = {});
+
+}  // namespace detail
+
 }  // namespace relpos

@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "algebra/pair_size.hpp"
 #include "algebra/shape_filter.hpp"
 #include "base/large_stack.hpp"
 #include "decide/evidence.hpp"
@@ -45,7 +46,7 @@ Verdict decide_position(const Ellipsoid& e, const Paraboloid& p, const SizeLimit
   // tests, without the call.
   std::size_t bits = 0;
   if (!storage_of(e).within_size_limit() || !storage_of(p).within_size_limit())
-    bits = check_normalized_pair_size(e, p, limit);
+    bits = detail::check_normalized_pair_size(e, p, limit);
   return with_stack_for(bits, [&] {
     const detail::PairContext pair(e, p);
     detail::Climb c(pair, true);
@@ -59,13 +60,16 @@ Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
   // Matrices of doubles are within the size limit (check_normalized_pair_size): no check. The
   // ellipsoid's signs assume round to nearest: the ladder certifies the determinants (clears
   // `pending`) only in that mode; in any other the two steps below decide.
-  Ellipsoid ell(e);
-  Paraboloid par(p);
-  const int oe = shape_filter::ellipsoid_before_det_if_nearest(ell.m_.filter_doubles());
-  const int op = oe != 0 ? shape_filter::paraboloid_before_det(p, par.m_.filter_doubles()) : 0;
+  using detail::QuadricAccess;
+  Ellipsoid ell = QuadricAccess::from_doubles_unchecked<Ellipsoid>(e);
+  Paraboloid par = QuadricAccess::from_doubles_unchecked<Paraboloid>(p);
+  detail::QuadricMatrix& em = QuadricAccess::storage(ell);
+  detail::QuadricMatrix& pm = QuadricAccess::storage(par);
+  const int oe = shape_filter::ellipsoid_before_det_if_nearest(em.filter_doubles());
+  const int op = oe != 0 ? shape_filter::paraboloid_before_det(p, pm.filter_doubles()) : 0;
   if (op != 0) {
-    if (oe < 0) ell.m_.negate_doubles();
-    if (op < 0) par.m_.negate_doubles();
+    if (oe < 0) em.negate_doubles();
+    if (op < 0) pm.negate_doubles();
     bool pending = true;
     const detail::PairContext pair(ell, par);
     detail::Climb c(pair, true, &pending);
@@ -79,11 +83,13 @@ Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
 }
 
 Classification classify(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
-  return with_stack_for(check_normalized_pair_size(e, p, limit), [&] { return classify_impl(e, p, evidence, true); });
+  return with_stack_for(detail::check_normalized_pair_size(e, p, limit),
+                        [&] { return classify_impl(e, p, evidence, true); });
 }
 
 Classification classify_exact(const Ellipsoid& e, const Paraboloid& p, Evidence evidence, const SizeLimit& limit) {
-  return with_stack_for(check_normalized_pair_size(e, p, limit), [&] { return classify_impl(e, p, evidence, false); });
+  return with_stack_for(detail::check_normalized_pair_size(e, p, limit),
+                        [&] { return classify_impl(e, p, evidence, false); });
 }
 
 Classification detail::classify_unchecked(const Ellipsoid& e, const Paraboloid& p, Evidence evidence) {

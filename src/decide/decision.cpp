@@ -42,7 +42,7 @@ std::string describe(Rule r) {
   return "";
 }
 
-std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs_one) {
+std::optional<Verdict> detail::decide_from_root_facts(const RootFacts& facts, int rho_vs_one) {
   Verdict v;
   detail::decide_from_facts(facts, rho_vs_one, v);
   if (!detail::decided(v)) return std::nullopt;

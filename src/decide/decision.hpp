@@ -69,4 +69,14 @@ inline bool decide_from_discriminant(const DecisionSigns& d, Verdict& v) {
   return decide_from_discriminant(d.discriminant_case(), d.rho_vs_one(), v);
 }
 
+/// Number of rules, None included (tables indexed by Rule take their size from here).
+inline constexpr std::size_t kRuleCount = static_cast<std::size_t>(Rule::NoRootInGap) + 1;
+
+/// The classification table itself (math.md §3 and §6), applied to exact root facts and the
+/// comparison of rho with 1: the one written decision, for callers that obtain the facts another
+/// way (the contact-only discriminant test). Stage is left at its default. nullopt when the facts do
+/// not decide (a pair that is not small needs the exact facts of math.md §8 -- the gap test
+/// against lambda_s or the five rules -- which decide_position computes).
+std::optional<Verdict> decide_from_root_facts(const RootFacts& facts, int rho_vs_one);
+
 }  // namespace relpos::detail

@@ -6,6 +6,7 @@
 // here, and its file.
 #pragma once
 
+#include <array>
 #include <cstddef>
 
 #include "relpos/classify.hpp"
@@ -88,5 +89,13 @@ struct StageList {};
 /// The classifier's ladder, in the order the stages run (each only while a needed sign is uncertain).
 using ClassifierLadder = StageList<StaticDoubleStage, SemiStaticDoubleStage, MultipleRootWitnessStage, IntervalStage,
                                    ExactSignsStage, ExactRootsStage>;
+
+/// The stages of decide_position / classify, in order (a pair classified alone never ends in an early-out).
+inline constexpr std::array kClassifierStages{Stage::StaticDouble, Stage::SemiStaticDouble, Stage::MultipleRootWitness,
+                                              Stage::Interval,     Stage::ExactSigns,       Stage::ExactRoots};
+/// The stages a scene body can end in (scene.hpp), in order: the early-outs, then the classifier's.
+inline constexpr std::array kSceneStages{Stage::InsideCertificate, Stage::OutsideCertificate,  Stage::StaticDouble,
+                                         Stage::SemiStaticDouble,  Stage::MultipleRootWitness, Stage::Interval,
+                                         Stage::ExactSigns,        Stage::ExactRoots};
 
 }  // namespace relpos::detail

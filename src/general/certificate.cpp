@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "algebra/matrix4.hpp"
 #include "general/quadratic_field.hpp"
 #include "general/witness.hpp"
 
@@ -14,19 +15,8 @@ namespace {
 
 std::logic_error internal_error(const std::string& what) { return std::logic_error("relpos internal error: " + what); }
 
-Rational form_at(const Matrix4& m, const Vector3& x) {
-  const std::array<Rational, 4> v{x[0], x[1], x[2], Rational(1)};
-  Rational s(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) s += v[static_cast<std::size_t>(i)] * m(i, j) * v[static_cast<std::size_t>(j)];
-  return s;
-}
-
-Matrix4 negated(const Matrix4& m) {
-  Matrix4 out;
-  for (std::size_t i = 0; i < 16; ++i) out.a[i] = -m.a[i];
-  return out;
-}
+using detail::form_at;
+using detail::negated;
 
 QuadraticNumber to_number(const Qn& x) { return {x.u, x.v}; }
 

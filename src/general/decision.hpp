@@ -3,6 +3,8 @@
 // (filter.hpp) and the exact stage (exact.hpp) fill the same facts and call decide().
 #pragma once
 
+#include <array>
+
 #include "relpos/general_classify.hpp"
 
 namespace relpos::general {
@@ -47,5 +49,22 @@ inline QuadricVerdict decide(const PencilFacts& f) {
   }
   return set(QuadricPosition::C, QuadricRule::NoRoot);
 }
+
+/// Every position of a general pair, in enum order (the JSON reader names them from here).
+inline constexpr std::array kAllQuadricPositions{QuadricPosition::I,  QuadricPosition::TI, QuadricPosition::C,
+                                                 QuadricPosition::TE, QuadricPosition::E,  QuadricPosition::O,
+                                                 QuadricPosition::TO, QuadricPosition::EQ};
+/// Every type of the second body, in enum order.
+inline constexpr std::array kAllQuadricTypes{QuadricType::Ellipsoid,
+                                             QuadricType::HyperboloidOneSheet,
+                                             QuadricType::HyperboloidTwoSheets,
+                                             QuadricType::Cone,
+                                             QuadricType::EllipticParaboloid,
+                                             QuadricType::HyperbolicParaboloid,
+                                             QuadricType::EllipticCylinder,
+                                             QuadricType::HyperbolicCylinder,
+                                             QuadricType::ParabolicCylinder,
+                                             QuadricType::Slab,
+                                             QuadricType::HalfSpace};
 
 }  // namespace relpos::general

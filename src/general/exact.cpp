@@ -196,18 +196,9 @@ struct Analysis {
   }
 };
 
-}  // namespace
-
-PencilFacts exact_facts(const IntegerPencil& p, bool ellipsoid) { return Analysis(p, ellipsoid).facts(); }
-
-ExactEvidence exact_evidence(const IntegerPencil& p, bool ellipsoid) {
-  const Analysis a(p, ellipsoid);
-  ExactEvidence ev;
-  ev.facts = a.facts();
-  ev.verdict = decide(ev.facts);
-  ev.verdict.stage = QuadricStage::Exact;
-
-  // The distinct real roots of f and D, merged.
+/// The distinct real roots of f and D, merged in increasing order, each with its multiplicities and
+/// an isolating interval, the intervals refined until they are disjoint.
+std::vector<PencilRoot> merged_roots(const Analysis& a) {
   std::vector<std::pair<Root, PencilRoot>> merged;
   for (const auto& [root, mult] : a.dr) {
     PencilRoot r;
@@ -242,9 +233,13 @@ ExactEvidence exact_evidence(const IntegerPencil& p, bool ellipsoid) {
     if (disjoint) break;
     if (bits > (1 << 20)) throw internal_error("roots of f and D not separated");
   }
-  for (auto& m : merged) ev.roots.push_back(m.second);
+  std::vector<PencilRoot> out;
+  for (auto& m : merged) out.push_back(m.second);
+  return out;
+}
 
-  // The certificate's numbers (math.md §18).
+/// The certificate's numbers for the rule that decided (math.md §18).
+void certificate_numbers(const Analysis& a, ExactEvidence& ev) {
   switch (ev.verdict.rule) {
     case QuadricRule::OddRootAboveLo:
       ev.definite = a.definite_above(a.lo());
@@ -277,6 +272,20 @@ ExactEvidence exact_evidence(const IntegerPencil& p, bool ellipsoid) {
     case QuadricRule::NoRoot:
       break;
   }
+}
+
+}  // namespace
+
+PencilFacts exact_facts(const IntegerPencil& p, bool ellipsoid) { return Analysis(p, ellipsoid).facts(); }
+
+ExactEvidence exact_evidence(const IntegerPencil& p, bool ellipsoid) {
+  const Analysis a(p, ellipsoid);
+  ExactEvidence ev;
+  ev.facts = a.facts();
+  ev.verdict = decide(ev.facts);
+  ev.verdict.stage = QuadricStage::Exact;
+  ev.roots = merged_roots(a);
+  certificate_numbers(a, ev);
   return ev;
 }
 

@@ -300,26 +300,34 @@ int count_at_root(const SturmSequence<NT>& s, const Fourier<NT>& d, double r, do
 }
 
 /// f^ = f / t^k and D^ = D / t^j as certified polynomials (math.md §17), their coefficients known
-/// to within the given errors; the facts of math.md §16 from them, or nullopt when a sign is
-/// uncertain. The sides are settled in the order of the decision, each only when the previous one
-/// has no root.
+/// to within the given errors (`mid`: D^'s midpoints); false when a coefficient is not usable. The
+/// facts of math.md §16 follow from them (facts_of), the sides settled in the order of the
+/// decision, each only when the previous one has no root.
+template <class NT>
+bool reduced_polynomials(const Structure& st, const double* f, const double* fe, const double* d, const double* de,
+                         Poly<NT, 4>& fh, Poly<NT, 3>& dh, double* mid) {
+  fh.degree = 4 - st.k;
+  for (int i = 0; i <= fh.degree; ++i) {
+    if (!usable<NT>(f[i + st.k], fe[i + st.k])) return false;
+    fh.c[static_cast<std::size_t>(i)] = input<NT>(f[i + st.k], fe[i + st.k]);
+  }
+  dh.degree = 3 - st.j;
+  for (int i = 0; i <= dh.degree; ++i) {
+    if (!usable<NT>(d[i + st.j], de[i + st.j])) return false;
+    dh.c[static_cast<std::size_t>(i)] = input<NT>(d[i + st.j], de[i + st.j]);
+    mid[i] = d[i + st.j];
+  }
+  return true;
+}
+
+/// The facts from f^ and D^ (above), or nullopt when a sign is uncertain.
 template <class NT>
 std::optional<PencilFacts> facts_of(const Structure& st, const double* f, const double* fe, const double* d,
                                     const double* de) {
   Poly<NT, 4> fh;
-  fh.degree = 4 - st.k;
-  for (int i = 0; i <= fh.degree; ++i) {
-    if (!usable<NT>(f[i + st.k], fe[i + st.k])) return std::nullopt;
-    fh.c[static_cast<std::size_t>(i)] = input<NT>(f[i + st.k], fe[i + st.k]);
-  }
   Poly<NT, 3> dh;
-  dh.degree = 3 - st.j;
   double mid[4];
-  for (int i = 0; i <= dh.degree; ++i) {
-    if (!usable<NT>(d[i + st.j], de[i + st.j])) return std::nullopt;
-    dh.c[static_cast<std::size_t>(i)] = input<NT>(d[i + st.j], de[i + st.j]);
-    mid[i] = d[i + st.j];
-  }
+  if (!reduced_polynomials(st, f, fe, d, de, fh, dh, mid)) return std::nullopt;
   SturmSequence<NT> s;
   if (!sturm_sequence(fh, s)) return std::nullopt;
   const int v_plus = s.at_infinity(true), v_minus = s.at_infinity(false);

@@ -2,12 +2,16 @@
 // normalization, refusal of degenerate and imaginary quadrics, and the geometric forms.
 #include <utility>
 
+#include "algebra/coefficients.hpp"
+#include "algebra/matrix4.hpp"
 #include "algebra/shape_filter.hpp"
 #include "relpos/error.hpp"
 #include "relpos/general_quadric.hpp"
 
 namespace relpos {
 namespace {
+
+using detail::negated;
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
@@ -33,12 +37,6 @@ std::pair<int, int> inertia3(const Matrix4& q) {
   const int positive = variations({1, -sgn(e1), sgn(e2), -sgn(e3)});
   const int negative = variations({-1, -sgn(e1), -sgn(e2), -sgn(e3)});
   return {positive, negative};
-}
-
-Matrix4 negated(const Matrix4& q) {
-  Matrix4 r;
-  for (std::size_t i = 0; i < 16; ++i) r.a[i] = -q.a[i];
-  return r;
 }
 
 std::string found(QuadricKind k) {
@@ -186,7 +184,7 @@ Quadric Quadric::from_doubles(const DoubleMatrix4& d) {
   return from_matrix(exact);
 }
 
-Quadric Quadric::from_coefficients(const Coefficients10& c) { return from_matrix(matrix_from_coefficients(c)); }
+Quadric Quadric::from_coefficients(const Coefficients10& c) { return from_matrix(detail::matrix_from_coefficients(c)); }
 
 Quadric Quadric::of(const Ellipsoid& e) { return Quadric(storage_of(e), QuadricType::Ellipsoid); }
 Quadric Quadric::of(const Paraboloid& p) { return Quadric(storage_of(p), QuadricType::EllipticParaboloid); }

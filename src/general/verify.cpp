@@ -22,6 +22,7 @@ using detail::block_rank;
 using detail::Field;
 using detail::form_at;
 using detail::minor_det;
+using detail::negated;
 using detail::point_text;
 using detail::Qd;
 using detail::QMatrix;
@@ -66,12 +67,6 @@ QMatrix pencil_at(const Field& f, const Matrix4& e, const Matrix4& q, const Qd& 
   QMatrix k;
   for (std::size_t i = 0; i < 16; ++i) k[i] = f.add(rat(q.a[i]), f.mul(t, rat(e.a[i])));
   return k;
-}
-
-Matrix4 negated(const Matrix4& m) {
-  Matrix4 out;
-  for (std::size_t i = 0; i < 16; ++i) out.a[i] = -m.a[i];
-  return out;
 }
 
 Reason check_symmetric(const Matrix4& m, const std::string& name) {
@@ -161,20 +156,10 @@ Reason verify_tangent(const Matrix4& e, const Matrix4& q, int t_sign, int defini
   return std::nullopt;
 }
 
-Reason verify_hard_tangent(const Matrix4& e, const Matrix4& q, int t_sign, int definiteness,
-                           const QuadricCertificate& c) {
-  if (c.d < 0) return "d = " + to_string(c.d) + " must be >= 0";
-  const Field f{c.d};
-  const Qd t = of(c.t_q);
-  if (f.sign(t) != t_sign) return "t = " + f.text(t) + " must be " + sign_text(t_sign);
-  const QMatrix k = pencil_at(f, e, q, t);
-  if (auto r = semidefinite(f, k, definiteness, "Q + t E")) return r;
-  const std::array<Qd, 4> centre{of(c.centre[0]), of(c.centre[1]), of(c.centre[2]), rat(Rational(1))};
-  for (std::size_t i = 0; i < 4; ++i) {  // K (centre, 1) = 0
-    Qd s = rat(Rational(0));
-    for (std::size_t j = 0; j < 4; ++j) s = f.add(s, f.mul(k[4 * i + j], centre[j]));
-    if (f.sign(s) != 0) return "(Q + t E) (centre, 1) != 0 (row " + std::to_string(i + 1) + " is " + f.text(s) + ")";
-  }
+/// The directions of a hard tangency's contact set: at most three, each non-zero, in the kernel of
+/// B + t M and M-orthogonal to M centre + m, and linearly independent.
+Reason check_directions(const Field& f, const Matrix4& e, const QMatrix& k, const std::array<Qd, 4>& centre,
+                        const QuadricCertificate& c) {
   const std::size_t n = c.directions.size();
   if (n > 3) return "more than 3 directions (" + std::to_string(n) + ")";
   QMatrix rows;
@@ -208,6 +193,25 @@ Reason verify_hard_tangent(const Matrix4& e, const Matrix4& q, int t_sign, int d
     }
     if (!independent) return std::string("the directions are linearly dependent");
   }
+  return std::nullopt;
+}
+
+Reason verify_hard_tangent(const Matrix4& e, const Matrix4& q, int t_sign, int definiteness,
+                           const QuadricCertificate& c) {
+  if (c.d < 0) return "d = " + to_string(c.d) + " must be >= 0";
+  const Field f{c.d};
+  const Qd t = of(c.t_q);
+  if (f.sign(t) != t_sign) return "t = " + f.text(t) + " must be " + sign_text(t_sign);
+  const QMatrix k = pencil_at(f, e, q, t);
+  if (auto r = semidefinite(f, k, definiteness, "Q + t E")) return r;
+  const std::array<Qd, 4> centre{of(c.centre[0]), of(c.centre[1]), of(c.centre[2]), rat(Rational(1))};
+  for (std::size_t i = 0; i < 4; ++i) {  // K (centre, 1) = 0
+    Qd s = rat(Rational(0));
+    for (std::size_t j = 0; j < 4; ++j) s = f.add(s, f.mul(k[4 * i + j], centre[j]));
+    if (f.sign(s) != 0) return "(Q + t E) (centre, 1) != 0 (row " + std::to_string(i + 1) + " is " + f.text(s) + ")";
+  }
+  const std::size_t n = c.directions.size();
+  if (auto r = check_directions(f, e, k, centre, c)) return r;
   Qd ec = rat(Rational(0));  // e(centre)
   for (std::size_t i = 0; i < 4; ++i)
     for (std::size_t j = 0; j < 4; ++j)

@@ -14,10 +14,13 @@
 #include <utility>
 #include <vector>
 
+#include "algebra/matrix4.hpp"
 #include "general/pencil.hpp"
 
 namespace relpos::general {
 namespace {
+
+using detail::form_at;
 
 // ---- an MPFR number at the thread's working precision --------------------------------------------
 
@@ -203,19 +206,9 @@ T quadratic_form(const View<T>& m, const std::array<T, 3>& x) {
   return s;
 }
 
-/// Approximations of the minimiser of g over K's solid (math.md §18), as candidates: x(0) when the
-/// pencil's 3x3 block is definite at 0 (the optimal multiplier may be 0), x(s*) at the root s* of the
-/// secular polynomial S = F'D - F D' beyond the end s_lo of the interval, and the hard case's point:
-/// lim x(s) (s -> s_lo) moved along the kernel of the block at s_lo onto K's surface. Near s_lo the
-/// sign of S is lost in rounding whenever S vanishes there (S = c D^2 for a concentric pair), so no
-/// candidate is trusted: the caller checks each exactly.
+/// The secular polynomial S = f' d - f d' of the pencil (degree 6).
 template <class T>
-std::vector<std::array<T, 3>> minimisers(const Matrix4& km, const Matrix4& gm, int bits) {
-  std::vector<std::array<T, 3>> out;
-  const View<T> k = scaled<T>(km), g = scaled<T>(gm);
-  const Quartic<T> f = pencil_quartic<T>(k, g);
-  const Cubic<T> d = pencil_cubic<T>(k, g);
-  // S = f' d - f d' (degree 6).
+std::array<T, 7> secular(const Quartic<T>& f, const Cubic<T>& d) {
   std::array<T, 7> s;
   for (T& c : s) c = T(0.0);
   const Cubic<T> fp = derivative(f);
@@ -224,46 +217,44 @@ std::vector<std::array<T, 3>> minimisers(const Matrix4& km, const Matrix4& gm, i
     for (std::size_t j = 0; j < 4; ++j) s[i + j] = s[i + j] + fp[i] * d[j];
   for (std::size_t i = 0; i < 5; ++i)
     for (std::size_t j = 0; j < 3; ++j) s[i + j] = s[i + j] - f[i] * dp[j];
-  const std::array<T, 6> sp = derivative(s);
+  return s;
+}
+
+/// The root of S beyond the end lo, where S goes from + to - (safeguarded Newton from lo + probe);
+/// nullopt when S is not positive there.
+template <class T>
+std::optional<T> secular_root(const std::array<T, 7>& s, const T& lo, const T& probe, const T& unit, const T& tol,
+                              int bits) {
   const T zero(0.0);
-  const T r3 = largest_root(d);
-  const bool end_at_zero = !(r3 > zero);
-  const T lo = end_at_zero ? zero : r3;
-  if (end_at_zero)
-    if (const auto x0 = stationary(k, g, zero)) out.push_back(*x0);
-  const T unit = fabs(lo) + T(1.0);
-  T eps = unit, probe = unit, tol = unit;
-  for (int i = 0; i < bits / 2; ++i) eps = eps * T(0.5);
-  for (int i = 0; i < bits / 4; ++i) probe = probe * T(0.5);
-  for (int i = 0; i < bits - 2; ++i) tol = tol * T(0.5);
-  // The root of S beyond the end, where S goes from + to - (safeguarded Newton).
+  const std::array<T, 6> sp = derivative(s);
   T a = lo + probe, b = lo + unit;
-  if (horner(s, a) > zero) {
-    for (int i = 0; i < 4000 && !(horner(s, b) < zero); ++i) b = b + (b - lo);
-    T x = (a + b) * T(0.5);
-    for (int i = 0; i < 4 * bits + 200 && b - a > tol * (fabs(x) + T(1.0)); ++i) {
-      const T v = horner(s, x);
-      if (!(v != zero)) break;
-      if (v > zero) a = x;
-      if (v < zero) b = x;
-      T next = x - v / horner(sp, x);
-      if (!(next > a && next < b)) next = (a + b) * T(0.5);
-      if (!(fabs(next - x) > zero)) break;
-      x = next;
-    }
-    if (const auto xs = stationary(k, g, x)) out.push_back(*xs);
+  if (!(horner(s, a) > zero)) return std::nullopt;
+  for (int i = 0; i < 4000 && !(horner(s, b) < zero); ++i) b = b + (b - lo);
+  T x = (a + b) * T(0.5);
+  for (int i = 0; i < 4 * bits + 200 && b - a > tol * (fabs(x) + T(1.0)); ++i) {
+    const T v = horner(s, x);
+    if (!(v != zero)) break;
+    if (v > zero) a = x;
+    if (v < zero) b = x;
+    T next = x - v / horner(sp, x);
+    if (!(next > a && next < b)) next = (a + b) * T(0.5);
+    if (!(fabs(next - x) > zero)) break;
+    x = next;
   }
-  // The hard case: x_hat = lim x(s), s -> s_lo; w spans the kernel of B + s_lo M (inverse iteration).
-  const auto x_hat = stationary(k, g, lo + eps);
-  if (!x_hat) return out;
-  out.push_back(*x_hat);  // at the end 0, a root of D, g equals its optimum on the kernel set
+  return x;
+}
+
+/// A unit vector spanning (nearly) the kernel of B + at M, by inverse iteration.
+template <class T>
+std::array<T, 3> kernel_direction(const View<T>& k, const View<T>& g, const T& at) {
+  const T zero(0.0);
   std::array<T, 3> w{T(1.0), T(0.7), T(0.3)};
   View<T> none = k;  // the zero pencil: stationary(none, p, 0) solves P3 x = -p
   for (T& x : none.a) x = zero;
   for (int it = 0; it < 6; ++it) {
     // (B + a M) w' = M w: the stationary system of the matrix G + a K with its last column -M w.
     View<T> pencil = g;
-    for (std::size_t i = 0; i < 16; ++i) pencil.a[i] = g.a[i] + (lo + eps) * k.a[i];
+    for (std::size_t i = 0; i < 16; ++i) pencil.a[i] = g.a[i] + at * k.a[i];
     for (int i = 0; i < 3; ++i) {
       T mw(0.0);
       for (int j = 0; j < 3; ++j) mw = mw + k(i, j) * w[static_cast<std::size_t>(j)];
@@ -277,35 +268,67 @@ std::vector<std::array<T, 3>> minimisers(const Matrix4& km, const Matrix4& gm, i
     if (!(norm > zero)) break;
     for (std::size_t i = 0; i < 3; ++i) w[i] = (*w2)[i] / norm;
   }
-  // k(x_hat + sigma w) = k0 + 2 sigma k1 + sigma^2 k2: a root sigma puts the point on K's surface,
-  // where g = optimum - s_lo k is least.
+  return w;
+}
+
+/// k(x_hat + sigma w) = k0 + 2 sigma k1 + sigma^2 k2: the points x_hat + sigma w at its roots sigma,
+/// on K's surface, where g = optimum - s_lo k is least; appended to `out`.
+template <class T>
+void surface_points(const View<T>& k, const std::array<T, 3>& x_hat, const std::array<T, 3>& w,
+                    std::vector<std::array<T, 3>>& out) {
+  const T zero(0.0);
   T k1(0.0), k2(0.0);
   for (int i = 0; i < 3; ++i) {
     T row = k(i, 3), mw(0.0);
     for (int j = 0; j < 3; ++j) {
-      row = row + k(i, j) * (*x_hat)[static_cast<std::size_t>(j)];
+      row = row + k(i, j) * x_hat[static_cast<std::size_t>(j)];
       mw = mw + k(i, j) * w[static_cast<std::size_t>(j)];
     }
     k1 = k1 + w[static_cast<std::size_t>(i)] * row;
     k2 = k2 + w[static_cast<std::size_t>(i)] * mw;
   }
-  const T k0 = quadratic_form(k, *x_hat);
+  const T k0 = quadratic_form(k, x_hat);
   const T disc = k1 * k1 - k0 * k2;
-  if (!(disc > zero) || !(k2 > zero)) return out;
+  if (!(disc > zero) || !(k2 > zero)) return;
   for (const T& sigma : {(-k1 + sqrt(disc)) / k2, (-k1 - sqrt(disc)) / k2}) {
     std::array<T, 3> y;
-    for (std::size_t i = 0; i < 3; ++i) y[i] = (*x_hat)[i] + sigma * w[i];
+    for (std::size_t i = 0; i < 3; ++i) y[i] = x_hat[i] + sigma * w[i];
     out.push_back(y);
   }
-  return out;
 }
 
-Rational form_at(const Matrix4& m, const Vector3& x) {
-  const std::array<Rational, 4> v{x[0], x[1], x[2], Rational(1)};
-  Rational s(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) s += v[static_cast<std::size_t>(i)] * m(i, j) * v[static_cast<std::size_t>(j)];
-  return s;
+/// Approximations of the minimiser of g over K's solid (math.md §18), as candidates: x(0) when the
+/// pencil's 3x3 block is definite at 0 (the optimal multiplier may be 0), x(s*) at the root s* of the
+/// secular polynomial S = F'D - F D' beyond the end s_lo of the interval, and the hard case's point:
+/// lim x(s) (s -> s_lo) moved along the kernel of the block at s_lo onto K's surface. Near s_lo the
+/// sign of S is lost in rounding whenever S vanishes there (S = c D^2 for a concentric pair), so no
+/// candidate is trusted: the caller checks each exactly.
+template <class T>
+std::vector<std::array<T, 3>> minimisers(const Matrix4& km, const Matrix4& gm, int bits) {
+  std::vector<std::array<T, 3>> out;
+  const View<T> k = scaled<T>(km), g = scaled<T>(gm);
+  const Quartic<T> f = pencil_quartic<T>(k, g);
+  const Cubic<T> d = pencil_cubic<T>(k, g);
+  const std::array<T, 7> s = secular(f, d);
+  const T zero(0.0);
+  const T r3 = largest_root(d);
+  const bool end_at_zero = !(r3 > zero);
+  const T lo = end_at_zero ? zero : r3;
+  if (end_at_zero)
+    if (const auto x0 = stationary(k, g, zero)) out.push_back(*x0);
+  const T unit = fabs(lo) + T(1.0);
+  T eps = unit, probe = unit, tol = unit;
+  for (int i = 0; i < bits / 2; ++i) eps = eps * T(0.5);
+  for (int i = 0; i < bits / 4; ++i) probe = probe * T(0.5);
+  for (int i = 0; i < bits - 2; ++i) tol = tol * T(0.5);
+  if (const auto root = secular_root(s, lo, probe, unit, tol, bits))
+    if (const auto xs = stationary(k, g, *root)) out.push_back(*xs);
+  // The hard case: x_hat = lim x(s), s -> s_lo; w spans the kernel of B + s_lo M.
+  const auto x_hat = stationary(k, g, lo + eps);
+  if (!x_hat) return out;
+  out.push_back(*x_hat);  // at the end 0, a root of D, g equals its optimum on the kernel set
+  surface_points(k, *x_hat, kernel_direction(k, g, lo + eps), out);
+  return out;
 }
 
 /// The centre -M^-1 m of the ellipsoid K, exactly (Cramer).

@@ -5,9 +5,11 @@
 #include <optional>
 #include <utility>
 
+#include "decide/decision.hpp"
 #include "io/certificate_json.hpp"
 #include "io/general_io.hpp"
 #include "io/margin_json.hpp"
+#include "io/report_text.hpp"
 #include "io/root_decimals.hpp"
 
 namespace relpos::io {
@@ -17,7 +19,7 @@ namespace {
 /// The members of a report that depend on the verdict alone, written once: a batch line copies them.
 struct VerdictTexts {
   std::array<std::array<std::string, 2>, kAllPositions.size()> head;  // by position and smallness
-  std::array<std::string, kRuleCount> rule;
+  std::array<std::string, relpos::detail::kRuleCount> rule;
   std::array<std::string, kAllStages.size()> stage;
 };
 
@@ -34,7 +36,7 @@ const VerdictTexts& verdict_texts() {
         w.member("contact");
         w.boolean(contact_of(p) != Contact::None);
       }
-    for (std::size_t k = 0; k < kRuleCount; ++k) {
+    for (std::size_t k = 0; k < relpos::detail::kRuleCount; ++k) {
       JsonWriter w(t.rule[k]);
       w.member("rule");
       w.string(describe(static_cast<Rule>(k)));

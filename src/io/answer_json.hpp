@@ -75,3 +75,11 @@ bool write_error(std::string_view id, std::string_view message, std::string& out
 void append_trailer(std::string_view meta, bool numbers_as_doubles, std::string& out);
 
 }  // namespace relpos::io::detail
+
+namespace relpos::io {
+
+/// The minimal report of `relpos batch --evidence minimal` (without "id") as one line of JSON
+/// text: position, small, contact, rule, stage (the Python package's classify(evidence="minimal")).
+std::string minimal_json_text(const Verdict& v);
+
+}  // namespace relpos::io

@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 
+#include "algebra/pair_size.hpp"
 #include "io/fast_quadric.hpp"
 #include "io/general_io.hpp"
 #include "io/json_lexer.hpp"
@@ -75,8 +76,8 @@ class LineReader {
     if (!fixed_ && !out_.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
     if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
     if (!fixed_ && !out_.paraboloid) out_.paraboloid = detail::paraboloid_from_tree(paraboloid, "paraboloid");
-    check_normalized_pair_size(*out_.ellipsoid, fixed_ ? *fixed_ : *out_.paraboloid,
-                               options_.size_limit);  // doc/cli.md, Limits
+    relpos::detail::check_normalized_pair_size(*out_.ellipsoid, fixed_ ? *fixed_ : *out_.paraboloid,
+                                               options_.size_limit);  // doc/cli.md, Limits
   }
 
  private:
@@ -94,8 +95,8 @@ class LineReader {
     if (given("paraboloid")) throw InputError("a line takes \"paraboloid\" or \"quadric\", not both");
     if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
     out_.quadric = quadric_from_json(second, "quadric");
-    const std::size_t bits =
-        std::max(normalized_bits(out_.ellipsoid->matrix()), normalized_bits(out_.quadric->matrix()));
+    const std::size_t bits = std::max(relpos::detail::normalized_bits(out_.ellipsoid->matrix()),
+                                      relpos::detail::normalized_bits(out_.quadric->matrix()));
     if (bits > kMaxNormalizedBits)  // doc/cli.md, Limits
       throw InputError(
           "numbers too large: a matrix of the pair, divided by its own content (its primitive integer form), has " +

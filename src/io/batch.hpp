@@ -14,6 +14,41 @@
 
 namespace relpos::io {
 
+// The answer to one JSON Lines input line, as `relpos batch` writes it (doc/cli.md, "relpos batch"):
+// the one batch-line function of the CLI, the Python package and the fuzzers (batch_answer.cpp).
+
+/// Default longest input line (--max-line-bytes): 64 MiB.
+inline constexpr std::size_t kDefaultMaxLineBytes = std::size_t(64) << 20;
+
+struct BatchOptions {
+  Evidence evidence = Evidence::Full;  ///< Minimal: id, position, small, contact, rule, stage only
+  bool contact_only = false;           ///< the contact answer of doc/contact.md
+  bool numbers_as_doubles = false;     ///< each JSON number is the IEEE double nearest its text
+  std::size_t max_line_bytes = kDefaultMaxLineBytes;
+  SizeLimit size_limit;  ///< the pair size limit (--max-bits)
+  RenderOptions render;
+  /// > 0: every answer ends with "margin" (margin.hpp, margin_json_text), its enclosure of relative
+  /// width 2^-margin_bits; 0: no margin.
+  int margin_bits = 0;
+};
+
+/// The error of a line that ran out of memory, and the error of one whose id could not even be
+/// echoed: its id is then the line number (doc/cli.md, "Out of memory").
+inline constexpr const char* kOutOfMemoryMessage = "out of memory while answering this line";
+inline constexpr const char* kOutOfMemoryNoIdMessage =
+    "out of memory while answering this line (its id is replaced by the line number)";
+
+/// The one JSON output line (no newline) answering an input line of `relpos batch`: the
+/// classification or {"id": ..., "error": "..."}. Out of memory on the line is that line's error.
+/// Memory: the answer and small bounded parts; the id is not copied (doc/cli.md, "Memory").
+std::string answer_batch_line(std::string_view line, long line_number, const BatchOptions& options);
+
+/// The same line written into `out` (replacing its text, keeping its capacity: a caller answering
+/// many lines reuses its buffers). Never throws: out of memory gives the line's error with the id,
+/// else with the line number (kOutOfMemoryNoIdMessage), and `out` is left empty only when not even
+/// that fits (a caller keeping some capacity in `out` never sees it).
+void answer_batch_line(std::string_view line, long line_number, const BatchOptions& options, std::string& out);
+
 /// One input line, read: the id as the JSON text to echo, and the quadrics.
 struct BatchLine {
   std::string id;    ///< the id's JSON text exactly as in the input, or the line number

@@ -6,7 +6,9 @@
 #include <sstream>
 #include <string>
 
+#include "general/decision.hpp"
 #include "io/json_values.hpp"
+#include "io/report_text.hpp"
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
@@ -205,7 +207,7 @@ Quadric quadric_from_json(const Json& v, const std::string& role) {
 }
 
 std::optional<QuadricPosition> quadric_position_from_text(const std::string& s) {
-  for (QuadricPosition p : kAllQuadricPositions)
+  for (QuadricPosition p : general::kAllQuadricPositions)
     if (to_string(p) == s) return p;
   return std::nullopt;
 }

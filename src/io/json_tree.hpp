@@ -41,4 +41,7 @@ void validate_json(std::string_view text, std::size_t start_depth = 0);
 /// A JSON value as one line of text, invalid UTF-8 replaced by U+FFFD.
 std::string dump_json(const Json& value);
 
+/// Deepest nesting of arrays and objects that the JSON reader accepts.
+inline constexpr std::size_t kMaxJsonDepth = 256;
+
 }  // namespace relpos::io::detail

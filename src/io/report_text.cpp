@@ -1,6 +1,8 @@
 // The human-readable report of a classification (relpos classify without --json) and of a margin
 // (--margin), and the texts they share with other reports: what a position and a stage mean, a
 // polynomial with exact coefficients.
+#include "io/report_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -117,14 +117,13 @@ int descartes_bound(const std::vector<Integer>& p, const Rational& a, const Rati
   return count;
 }
 
-std::vector<RootInterval> positive_roots(const std::vector<Integer>& p) {
-  flint_thread_cleanup_at_exit();
-  std::size_t n = p.size();
-  while (n > 0 && p[n - 1] == 0) --n;
-  if (n < 2) throw std::logic_error("internal error: positive_roots: a constant polynomial");
-  // Fujiwara's bound: every root has |x| <= 2 max_i |p_(n-i) / p_n|^(1/i) (deg n, the last term
-  // halved), below 2^e with e = 1 + max_i ceil((B_i - b + 1) / i) for B_i the bits of p_(n-i) and b
-  // those of p_n (|p_(n-i)| < 2^B_i, |p_n| >= 2^(b - 1)).
+namespace {
+
+/// An exponent e with every root of p (its first n coefficients, p_(n-1) != 0) below 2^e in
+/// absolute value. Fujiwara's bound: every root has |x| <= 2 max_i |p_(n-i) / p_n|^(1/i) (deg n, the
+/// last term halved), below 2^e with e = 1 + max_i ceil((B_i - b + 1) / i) for B_i the bits of
+/// p_(n-i) and b those of p_n (|p_(n-i)| < 2^B_i, |p_n| >= 2^(b - 1)).
+unsigned long fujiwara_exponent(const std::vector<Integer>& p, std::size_t n) {
   const long lead = static_cast<long>(mpz_sizeinbase(p[n - 1].mpz(), 2));
   long top = 0;
   for (std::size_t i = 1; i < n; ++i) {
@@ -133,13 +132,26 @@ std::vector<RootInterval> positive_roots(const std::vector<Integer>& p) {
     const long over = static_cast<long>(mpz_sizeinbase(c.mpz(), 2)) - lead + 1, k = static_cast<long>(i);
     top = std::max(top, over > 0 ? (over + k - 1) / k : 0);
   }
-  const unsigned long e = static_cast<unsigned long>(top + 1);
-  auto at = [&](const Integer& c, unsigned long k) {  // 2^e c / 2^k
-    Integer num, den(1);  // fresh objects: written through their mpz_t (a copy of c would share c's)
-    mpz_mul_2exp(num.mpz(), c.mpz(), e);
-    mpz_mul_2exp(den.mpz(), den.mpz(), k);
-    return Rational(num, den);
-  };
+  return static_cast<unsigned long>(top + 1);
+}
+
+/// 2^e c / 2^k.
+Rational dyadic(const Integer& c, unsigned long e, unsigned long k) {
+  Integer num, den(1);  // fresh objects: written through their mpz_t (a copy of c would share c's)
+  mpz_mul_2exp(num.mpz(), c.mpz(), e);
+  mpz_mul_2exp(den.mpz(), den.mpz(), k);
+  return Rational(num, den);
+}
+
+}  // namespace
+
+std::vector<RootInterval> positive_roots(const std::vector<Integer>& p) {
+  flint_thread_cleanup_at_exit();
+  std::size_t n = p.size();
+  while (n > 0 && p[n - 1] == 0) --n;
+  if (n < 2) throw std::logic_error("internal error: positive_roots: a constant polynomial");
+  const unsigned long e = fujiwara_exponent(p, n);
+  auto at = [e](const Integer& c, unsigned long k) { return dyadic(c, e, k); };
   // The Collins-Akritas bisection on (0, 1) for q(x) = p(2^e x): a node (c, k) stands for the interval
   // (c / 2^k, (c + 1) / 2^k) and holds 2^(k deg) q((c + x) / 2^k), whose roots in (0, 1) are those.
   struct Node {

@@ -10,17 +10,6 @@
 namespace relpos {
 namespace detail {
 
-Rational form_at(const Matrix4& q, const Vector3& x) {
-  Rational v = q(3, 3);
-  for (int i = 0; i < 3; ++i) {
-    const Rational& xi = x[static_cast<std::size_t>(i)];
-    Rational row = 2 * q(i, 3);  // the linear term, twice, plus the quadratic row
-    for (int j = 0; j < 3; ++j) row += q(i, j) * x[static_cast<std::size_t>(j)];
-    v += xi * row;
-  }
-  return v;
-}
-
 ScaledFamily scaled_family(const Matrix4& e) {
   const std::optional<Vector3> c = centre_of(e);
   if (!c) throw std::logic_error("internal error: scaled_family: the ellipsoid's M is singular");
@@ -44,7 +33,7 @@ Matrix4 ScaledFamily::at_square(const Rational& v) const {
 
 }  // namespace detail
 
-Ellipsoid scaled_about_centre(const Ellipsoid& e, const Rational& factor) {
+Ellipsoid detail::scaled_about_centre(const Ellipsoid& e, const Rational& factor) {
   if (!(factor > 0)) throw InputError("the scale factor must be positive, got " + to_string(factor));
   // M is unchanged and det E_q = -q^2 k det M < 0: a real ellipsoid, sign-normalized as E is.
   return detail::make_ellipsoid(detail::QuadricMatrix(detail::scaled_family(e.matrix()).at(factor)));

@@ -6,6 +6,7 @@
 // solid inside the other).
 #pragma once
 
+#include "algebra/matrix4.hpp"
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
 
@@ -25,7 +26,11 @@ struct ScaledFamily {
 /// The family of the matrix of a real ellipsoid (M positive definite, det E < 0).
 ScaledFamily scaled_family(const Matrix4& e);
 
-/// X^T Q X at X = (x, 1): the value of the quadric's form at a point.
-Rational form_at(const Matrix4& q, const Vector3& x);
+/// The largest `bits` margin() accepts (each bit costs the certificates about one bit of length).
+inline constexpr int kMaxMarginBits = 1000;
+
+/// The ellipsoid scaled by `factor` > 0 about its centre (InputError otherwise): the matrix with
+/// the corner entry e0 + k (1 - factor^2), k = -e(centre) (math.md §19).
+Ellipsoid scaled_about_centre(const Ellipsoid& e, const Rational& factor);
 
 }  // namespace relpos::detail

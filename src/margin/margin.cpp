@@ -17,7 +17,9 @@
 
 #include "algebra/between.hpp"
 #include "algebra/irreducible.hpp"
+#include "algebra/pair_size.hpp"
 #include "algebra/polynomial_sign.hpp"
+#include "algebra/power_of_two.hpp"
 #include "certificate/build.hpp"
 #include "decide/unchecked.hpp"
 #include "margin/approximate.hpp"
@@ -44,13 +46,6 @@ double nearest_double(const Rational& q) {
   return d;
 }
 
-/// 2^-n.
-Rational power_of_two_inverse(unsigned long n) {
-  Integer d;
-  mpz_setbit(d.mpz(), n);
-  return Rational(Integer(1), d);
-}
-
 /// A rational below (above == false) or above sqrt(x), x >= 0, within 2^-64 sqrt(x) of it:
 /// sqrt(n / d) = sqrt(n d 2^128) / (d 2^64), the integer square root rounded down or up.
 Rational sqrt_bound(const Rational& x, bool above) {
@@ -67,7 +62,7 @@ Rational sqrt_bound(const Rational& x, bool above) {
 /// FLINT's factorisation.
 std::vector<std::vector<Integer>> factors_of(const std::vector<Integer>& p) {
   if (detail::proven_irreducible(p)) return {p};
-  return irreducible_factors(p);
+  return detail::irreducible_factors(p);
 }
 
 /// A positive real root of one irreducible factor of the margin polynomial in u.
@@ -174,7 +169,7 @@ Margin irrational_margin(const std::vector<Integer>& f, RootInterval r, const st
   for (long extra = 2;; extra += 4) {
     // w = 2^-(bits + extra) r.lo: the ends lie within w of r, so hi - lo < 3w <= 2^-bits lo.
     if (bits + extra > fine) detail::refine_root(f, r, fine = bits + extra);
-    const Rational w = r.lo * power_of_two_inverse(static_cast<unsigned long>(bits + extra));
+    const Rational w = r.lo * detail::power_of_two(-static_cast<long>(bits + extra));
     out.lo = detail::rational_inside(r.lo - w, r.lo, detail::Shortest::Bits);
     out.hi = detail::rational_inside(r.hi, r.hi + w, detail::Shortest::Bits);
     if (detail::isolates(pi_t, f, out.lo, out.hi)) break;
@@ -199,10 +194,10 @@ AlgebraicReal Margin::value() const {
 }
 
 Margin margin(const Ellipsoid& e, const Paraboloid& p, int bits) {
-  if (bits < 1 || bits > kMaxMarginBits)
-    throw InputError("margin: bits must be from 1 to " + std::to_string(kMaxMarginBits) + ", got " +
+  if (bits < 1 || bits > detail::kMaxMarginBits)
+    throw InputError("margin: bits must be from 1 to " + std::to_string(detail::kMaxMarginBits) + ", got " +
                      std::to_string(bits));
-  check_normalized_pair_size(e, p);
+  detail::check_normalized_pair_size(e, p);
   const detail::ScaledFamily family = detail::scaled_family(e.matrix());
   const Rational centre_value = detail::form_at(p.matrix(), family.centre);  // < 0: inside the cup
   Margin out;
@@ -231,8 +226,8 @@ Margin margin(const Ellipsoid& e, const Paraboloid& p, int bits) {
   }
   RootInterval u = star.root;
   if (u.lo == u.hi) {  // s*^2 rational, not a square: s* is a root of den t^2 - num, irreducible
-    u.lo = v * (1 - power_of_two_inverse(8));
-    u.hi = v * (1 + power_of_two_inverse(8));
+    u.lo = v * (1 - detail::power_of_two(-8));
+    u.hi = v * (1 + detail::power_of_two(-8));
   }
   auto [f, r] = square_root_of(*star.factor, u);
   // A start for Newton's method: the square root of s*^2's approximation in long double.

@@ -9,6 +9,7 @@
 
 #include "algebra/between.hpp"
 #include "algebra/flint_thread.hpp"
+#include "algebra/power_of_two.hpp"
 #include "margin/approximate.hpp"
 #include "margin/descartes.hpp"
 #include "margin/refine.hpp"
@@ -24,16 +25,6 @@ Rational value(const std::array<Rational, N>& p, const Rational& x) {
   return v;
 }
 
-/// 2^n.
-Integer power_of_two(unsigned long n) {
-  Integer d;  // fresh object: written through its mpz_t
-  mpz_setbit(d.mpz(), n);
-  return d;
-}
-
-/// 2^-n.
-Rational power_of_two_inverse(unsigned long n) { return Rational(Integer(1), power_of_two(n)); }
-
 /// x > 0 rounded to `digits` significant bits, as a dyadic rational.
 std::optional<Rational> rounded(long double x, int digits) {
   int e = 0;
@@ -41,8 +32,7 @@ std::optional<Rational> rounded(long double x, int digits) {
   const long double scaled = std::round(std::ldexp(m, digits));
   const std::optional<Rational> whole = rational_near(scaled);  // an integer below 2^digits
   if (!whole) return std::nullopt;
-  return e >= digits ? *whole * Rational(power_of_two(static_cast<unsigned long>(e - digits)))
-                     : *whole / Rational(power_of_two(static_cast<unsigned long>(digits - e)));
+  return *whole * detail::power_of_two(static_cast<long>(e) - digits);
 }
 
 /// p(sign * t) for integer coefficients, trailing zeros dropped.
@@ -151,7 +141,7 @@ std::optional<Rational> below_multiplier(const PointPencil& pencil, const Ration
   }
   if (!ts) return std::nullopt;
   for (long precision = 8; precision <= 2 * bits + 64; precision += 8) {
-    const Rational below = 1 - power_of_two_inverse(static_cast<unsigned long>(precision));
+    const Rational below = 1 - detail::power_of_two(-static_cast<long>(precision));
     if (ts->lo != ts->hi) refine_root(sm, *ts, precision);
     const Rational t = ts->lo == ts->hi ? ts->lo * below : ts->lo;
     if (works(t)) return lambda(t);

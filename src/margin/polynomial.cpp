@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <stdexcept>
 
+#include "algebra/flint_poly.hpp"
 #include "algebra/flint_thread.hpp"
 #include "algebra/pencil.hpp"
 
@@ -161,14 +162,42 @@ Quartic<Rational> PointPencil::scaled(const Rational& v) const {
   return out;
 }
 
+namespace {
+
+/// D times the hard case's factor: the resultant in l of the square-free part of g and H (sigma at
+/// the roots of g, math.md §19). False when FLINT cannot form it.
+bool times_hard_case(fmpz_mpoly_t D, const fmpz_mpoly_t H, const fmpz_poly_t g, const fmpz_mpoly_ctx_t ctx) {
+  fmpz_poly_t gs, dg;
+  fmpz_poly_init(gs);
+  fmpz_poly_init(dg);
+  fmpz_mpoly_t G, R;
+  fmpz_mpoly_init(G, ctx);
+  fmpz_mpoly_init(R, ctx);
+  fmpz_t one;
+  fmpz_init(one);
+  fmpz_poly_derivative(dg, g);
+  fmpz_poly_gcd(gs, g, dg);
+  bool ok = fmpz_poly_divides(gs, g, gs) != 0;
+  fmpz_one(one);
+  add_terms(G, gs, one, 0, ctx);
+  ok = ok && fmpz_mpoly_resultant(R, G, H, 0, ctx) != 0;
+  if (ok) fmpz_mpoly_mul(D, D, R, ctx);
+  fmpz_clear(one);
+  fmpz_mpoly_clear(G, ctx);
+  fmpz_mpoly_clear(R, ctx);
+  fmpz_poly_clear(gs);
+  fmpz_poly_clear(dg);
+  return ok;
+}
+
+}  // namespace
+
 std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
   flint_thread_cleanup_at_exit();
-  fmpz_poly_t F, S, g, gs, dg;
+  fmpz_poly_t F, S, g;
   fmpz_poly_init(F);
   fmpz_poly_init(S);
   fmpz_poly_init(g);
-  fmpz_poly_init(gs);
-  fmpz_poly_init(dg);
   // f = a F, s = b S with F, S primitive; g = gcd(F, S); f - u c s = a g (F/g - u (c b / a) S/g)
   // for c = alpha k.
   const Integer a = primitive_part(pencil.f.data(), 5, F);
@@ -183,11 +212,9 @@ std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
 
   fmpz_mpoly_ctx_t ctx;
   fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
-  fmpz_mpoly_t H, D, G, R;
+  fmpz_mpoly_t H, D;
   fmpz_mpoly_init(H, ctx);
   fmpz_mpoly_init(D, ctx);
-  fmpz_mpoly_init(G, ctx);
-  fmpz_mpoly_init(R, ctx);
   fmpz_t num, den;
   fmpz_init(num);
   fmpz_init(den);
@@ -203,43 +230,22 @@ std::vector<Integer> margin_polynomial(const PointPencil& pencil) {
     add_terms(H, S, num, 1, ctx);
     ok = fmpz_mpoly_discriminant(D, H, 0, ctx) != 0;
   }
-  if (ok && fmpz_poly_degree(g) >= 1) {
-    // The hard case's values: sigma at the roots of g (math.md §19), from the square-free part of g.
-    fmpz_poly_derivative(dg, g);
-    fmpz_poly_gcd(gs, g, dg);
-    ok = fmpz_poly_divides(gs, g, gs) != 0;
-    fmpz_one(den);
-    add_terms(G, gs, den, 0, ctx);
-    ok = ok && fmpz_mpoly_resultant(R, G, H, 0, ctx) != 0;
-    if (ok) fmpz_mpoly_mul(D, D, R, ctx);
-  }
+  if (ok && fmpz_poly_degree(g) >= 1) ok = times_hard_case(D, H, g, ctx);
   if (ok && fmpz_poly_degree(F) != 4) ok = fmpz_mpoly_get_fmpz_poly(pu, D, 1, ctx) != 0;
   std::vector<Integer> out;
   if (ok && !fmpz_poly_is_zero(pu)) {
     fmpz_poly_primitive_part(pu, pu);  // positive leading coefficient
-    fmpz_t x;
-    fmpz_init(x);
-    for (slong i = 0; i <= fmpz_poly_degree(pu); ++i) {
-      fmpz_poly_get_coeff_fmpz(x, pu, i);
-      Integer c;  // fresh object: written through its mpz_t
-      fmpz_get_mpz(c.mpz(), x);
-      out.push_back(c);
-    }
-    fmpz_clear(x);
+    out = from_flint(pu);
   }
   fmpz_poly_clear(pu);
   fmpz_clear(num);
   fmpz_clear(den);
   fmpz_mpoly_clear(H, ctx);
   fmpz_mpoly_clear(D, ctx);
-  fmpz_mpoly_clear(G, ctx);
-  fmpz_mpoly_clear(R, ctx);
   fmpz_mpoly_ctx_clear(ctx);
   fmpz_poly_clear(F);
   fmpz_poly_clear(S);
   fmpz_poly_clear(g);
-  fmpz_poly_clear(gs);
-  fmpz_poly_clear(dg);
   // Never zero (math.md §19: F and S are coprime and F / S is not constant).
   if (out.empty()) throw std::logic_error("internal error: margin_polynomial: no polynomial (a zero discriminant)");
   return out;

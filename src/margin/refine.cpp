@@ -5,16 +5,10 @@
 #include <utility>
 
 #include "algebra/polynomial_sign.hpp"
+#include "algebra/power_of_two.hpp"
 
 namespace relpos::detail {
 namespace {
-
-/// 2^-n.
-Rational power_of_two_inverse(unsigned long n) {
-  Integer d;
-  mpz_setbit(d.mpz(), n);
-  return Rational(Integer(1), d);
-}
 
 /// Whether r is narrow enough.
 bool narrow(const RootInterval& r, const Rational& scale) { return r.hi - r.lo <= r.lo * scale; }
@@ -67,7 +61,7 @@ bool newton(const std::vector<Integer>& f, const RootInterval& r, mpfr_prec_t pr
 }  // namespace
 
 void refine_root(const std::vector<Integer>& f, RootInterval& r, long bits, const long double* start) {
-  const Rational scale = power_of_two_inverse(static_cast<unsigned long>(bits));
+  const Rational scale = power_of_two(-static_cast<long>(bits));
   if (r.lo == r.hi || narrow(r, scale)) return;
   mpfr_t x, y;
   const mpfr_prec_t prec = static_cast<mpfr_prec_t>(bits) + 64;

@@ -69,7 +69,7 @@ bool minimal_form(const std::vector<Integer>& m) {
     for (const Integer& c : m) mpz_gcd(content.mpz(), content.mpz(), c.mpz());
     return content == 1;
   }
-  const std::vector<std::vector<Integer>> factors = irreducible_factors(m);
+  const std::vector<std::vector<Integer>> factors = detail::irreducible_factors(m);
   return factors.size() == 1 && factors[0] == m;
 }
 
@@ -119,7 +119,7 @@ std::optional<std::string> verify_margin(const Ellipsoid& e, const Paraboloid& p
   // polynomial divides it and the rest of it has no root there, s* is the claimed polynomial's root.
   const std::vector<Integer> pi = detail::in_square(detail::margin_polynomial(detail::point_pencil(family, pm)));
   if (rational) {
-    if (!pseudo_remainder(pi, m.polynomial).empty())
+    if (!detail::pseudo_remainder(pi, m.polynomial).empty())
       return std::string("the polynomial does not divide the pair's margin polynomial");
   } else if (!detail::isolates(pi, m.polynomial, m.lo, m.hi)) {
     return std::string(

@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "algebra/between.hpp"
+#include "algebra/irreducible.hpp"
+#include "base/interrupt.hpp"
 
 namespace relpos::detail {
 

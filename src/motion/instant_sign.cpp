@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 
+#include "algebra/irreducible.hpp"
 #include "motion/candidates.hpp"
 #include "motion/moving_pencil.hpp"
 

@@ -11,6 +11,7 @@
 
 #include "algebra/smallness.hpp"
 #include "algebra/sturm.hpp"
+#include "base/interrupt.hpp"
 #include "decide/unchecked.hpp"
 #include "motion/candidates.hpp"
 #include "motion/instant_position.hpp"
@@ -49,7 +50,7 @@ std::optional<detail::InstantDecision> decide_at(const MovingPencil& mp, const A
   return detail::decide_at_instant(
       *mp.instant,
       [&](const PolyZ& q) {
-        check(interrupt);
+        detail::check(interrupt);
         return sign_at(ak, q, a);
       },
       known_multiple);
@@ -92,7 +93,7 @@ void check_closure(Position at, const std::optional<Position>& before, const std
 }
 
 Classification classify_at(const Ellipsoid& e0, const RigidMotion& m, const Paraboloid& p, const Rational& t) {
-  return detail::classify_unchecked(placed_ellipsoid(e0, m, t), p, Evidence::Minimal);
+  return detail::classify_unchecked(detail::placed_ellipsoid(e0, m, t), p, Evidence::Minimal);
 }
 
 std::string classify_how(const Classification& c) {
@@ -135,14 +136,14 @@ MotionInstant instant_at(const Ellipsoid& e0, const RigidMotion& motion, const P
         "at the algebraic instant: f is square-free (no root merges), the position of the neighbouring "
         "intervals";
   }
-  check(interrupt);
+  detail::check(interrupt);
   inst.small = small_at(mp, ak, z);
   return inst;
 }
 
 }  // namespace
 
-std::vector<std::string> cause_names(unsigned causes) {
+std::vector<std::string> detail::cause_names(unsigned causes) {
   std::vector<std::string> out;
   if (causes & kCauseStart) out.emplace_back("start");
   if (causes & kCauseEnd) out.emplace_back("end");
@@ -166,8 +167,8 @@ std::string to_string(FirstContact::Kind kind) {
 
 FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
                            const Rational& t1, const Interrupt* interrupt) {
-  validate_motion(motion, t0, t1);
-  check(interrupt);
+  detail::validate_motion(motion, t0, t1);
+  detail::check(interrupt);
   FirstContact out;
   const Classification c0 = classify_at(e0, motion, p, t0);
   out.start_position = c0.verdict.position;
@@ -188,7 +189,7 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
   const Alg a0(t0);
   for (const Candidate& z : zeros) {
     if (cmp(z.t, a0) == CGAL::EQUAL) continue;  // t0 itself: classified above
-    check(interrupt);
+    detail::check(interrupt);
     Position pos;
     std::string how;
     if (z.exact) {
@@ -217,7 +218,7 @@ FirstContact first_contact(const Ellipsoid& e0, const RigidMotion& motion, const
 
 Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Paraboloid& p, const Rational& t0,
                   const Rational& t1, const Interrupt* interrupt) {
-  validate_motion(motion, t0, t1);
+  detail::validate_motion(motion, t0, t1);
   Timeline out;
   out.t0 = t0;
   out.t1 = t1;
@@ -228,7 +229,7 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
   const std::vector<Candidate> cands = candidate_instants(mp, ak, t0, t1, interrupt);
   // Open intervals: classified exactly at a rational sample strictly inside.
   for (std::size_t i = 0; i + 1 < cands.size(); ++i) {
-    check(interrupt);
+    detail::check(interrupt);
     MotionInterval iv;
     iv.sample = rational_between(cands[i].t, cands[i + 1].t);
     const Classification c = classify_at(e0, motion, p, iv.sample);
@@ -237,7 +238,7 @@ Timeline timeline(const Ellipsoid& e0, const RigidMotion& motion, const Parabolo
     out.intervals.push_back(std::move(iv));
   }
   for (std::size_t i = 0; i < cands.size(); ++i) {
-    check(interrupt);
+    detail::check(interrupt);
     const std::optional<Position> before =
         i > 0 ? std::optional<Position>(out.intervals[i - 1].position) : std::nullopt;
     MotionInstant inst = instant_at(e0, motion, p, mp, ak, cands[i], before, interrupt);

@@ -10,6 +10,7 @@
 #include "algebra/forms.hpp"
 #include "algebra/smallness.hpp"
 #include "algebra/sturm.hpp"
+#include "base/interrupt.hpp"
 #include "motion/polynomial_motion.hpp"
 
 namespace relpos::detail {

@@ -91,7 +91,7 @@ Vector3 centre_of(const Ellipsoid& e) {
   return *detail::centre_of(e.matrix());  // M is positive definite: never singular
 }
 
-Vector3 pivot_of(const Ellipsoid& e0, const RigidMotion& m) {
+Vector3 detail::pivot_of(const Ellipsoid& e0, const RigidMotion& m) {
   switch (m.pivot) {
     case Pivot::Origin:
       return {Rational(0), Rational(0), Rational(0)};
@@ -104,7 +104,7 @@ Vector3 pivot_of(const Ellipsoid& e0, const RigidMotion& m) {
 }
 
 TimeMatrix4 moving_ellipsoid_matrix(const Ellipsoid& e0, const RigidMotion& m) {
-  const Vector3 p = pivot_of(e0, m);
+  const Vector3 p = detail::pivot_of(e0, m);
   std::array<PolyQ, 3> c, pp;
   for (std::size_t i = 0; i < 3; ++i) {
     c[i] = to_poly(m.translation[i]);
@@ -120,8 +120,8 @@ TimeMatrix4 moving_ellipsoid_matrix(const Ellipsoid& e0, const RigidMotion& m) {
   return out;
 }
 
-Ellipsoid placed_ellipsoid(const Ellipsoid& e0, const RigidMotion& m, const Rational& t) {
-  const Vector3 p = pivot_of(e0, m);
+Ellipsoid detail::placed_ellipsoid(const Ellipsoid& e0, const RigidMotion& m, const Rational& t) {
+  const Vector3 p = detail::pivot_of(e0, m);
   std::array<Rational, 3> c;
   for (std::size_t i = 0; i < 3; ++i) c[i] = evaluate(m.translation[i], t);
   std::array<Rational, 4> q;
@@ -139,7 +139,7 @@ Ellipsoid placed_ellipsoid(const Ellipsoid& e0, const RigidMotion& m, const Rati
   return Ellipsoid::from_matrix(out);
 }
 
-void validate_motion(const RigidMotion& m, const Rational& t0, const Rational& t1) {
+void detail::validate_motion(const RigidMotion& m, const Rational& t0, const Rational& t1) {
   if (t1 < t0) throw InputError("the time interval is empty: t0 = " + to_string(t0) + " > t1 = " + to_string(t1));
   if (!m.rotation) return;
   // q(t) = 0 exactly at the common real roots of its four components, i.e. the real roots of

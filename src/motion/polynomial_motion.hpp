@@ -2,6 +2,8 @@
 #pragma once
 
 #include <array>
+#include <string>
+#include <vector>
 
 #include "relpos/motion.hpp"
 
@@ -21,5 +23,22 @@ std::array<NT, 9> quaternion_matrix(const NT& w, const NT& x, const NT& y, const
 
 /// E(t) = (N T^-1)^T E0 (N T^-1) as polynomials in t (the placed ellipsoid times N(t)^2 > 0).
 TimeMatrix4 moving_ellipsoid_matrix(const Ellipsoid& e0, const RigidMotion& m);
+
+namespace detail {
+
+/// The pivot point of the motion for this ellipsoid.
+Vector3 pivot_of(const Ellipsoid& e0, const RigidMotion& m);
+
+/// The placed ellipsoid at a rational time t (the matrix T^-T E0 T^-1 itself, exactly).
+Ellipsoid placed_ellipsoid(const Ellipsoid& e0, const RigidMotion& m, const Rational& t);
+
+/// Checks t0 <= t1 and that q(t) does not vanish on [t0, t1] (the rotation would be undefined
+/// there); throws InputError naming the problem.
+void validate_motion(const RigidMotion& m, const Rational& t0, const Rational& t1);
+
+/// "start", "discriminant", ... for the set bits, in that order.
+std::vector<std::string> cause_names(unsigned causes);
+
+}  // namespace detail
 
 }  // namespace relpos

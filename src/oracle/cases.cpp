@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "base/worker_pool.hpp"
+#include "oracle/json_text.hpp"
 #include "oracle/nearest.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/error.hpp"
@@ -16,8 +17,6 @@
 namespace relpos::oracle {
 
 namespace {
-
-using Json = nlohmann::ordered_json;
 
 std::vector<std::string> split(const std::string& text) {
   std::vector<std::string> out;
@@ -66,7 +65,7 @@ Json double_json(const std::array<double, N>& x) {
   for (const double v : x) out.push_back(v);
   return out;
 }
-Json matrix_json(const DoubleMatrix4& m) {
+Json double_matrix_json(const DoubleMatrix4& m) {
   Json out = Json::array();
   for (std::size_t i = 0; i < 4; ++i) out.push_back(Json::array({m[4 * i], m[4 * i + 1], m[4 * i + 2], m[4 * i + 3]}));
   return out;
@@ -184,8 +183,8 @@ std::string case_line(const Case& c, Form form) {
     line["ellipsoid"] = double_ellipsoid(c.doubles);
     line["paraboloid"] = double_paraboloid(c.doubles);
   } else {
-    line["ellipsoid"] = matrix_json(upper_triangle(c.e_matrix));
-    line["paraboloid"] = matrix_json(upper_triangle(c.p_matrix));
+    line["ellipsoid"] = double_matrix_json(upper_triangle(c.e_matrix));
+    line["paraboloid"] = double_matrix_json(upper_triangle(c.p_matrix));
   }
   Json meta;
   meta["family"] = c.family->name;
@@ -201,8 +200,8 @@ std::string case_line(const Case& c, Form form) {
   if (c.double_margin) meta["double_margin"] = margin_json(*c.double_margin);
   meta["double"] = Json{{"ellipsoid", double_ellipsoid(c.doubles)},
                         {"paraboloid", double_paraboloid(c.doubles)},
-                        {"E", matrix_json(c.e_matrix)},
-                        {"P", matrix_json(c.p_matrix)}};
+                        {"E", double_matrix_json(c.e_matrix)},
+                        {"P", double_matrix_json(c.p_matrix)}};
   line["meta"] = std::move(meta);
   return line.dump(-1, ' ', false, Json::error_handler_t::replace);
 }

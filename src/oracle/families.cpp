@@ -109,7 +109,7 @@ Vector3 small_vector(Random& rng, const Rational& bound, long den) {
 // ------------------------------------------------------------------------------------------------
 // The families
 
-struct Case {
+struct Drawn {
   Standard base;
   Placement placement;
   bool inside = true;
@@ -123,29 +123,29 @@ void cup(Random& rng, Rational& a, Rational& b, Rational& r) {
   r = rng.fraction(q(1, 5), q(1), 10) * rmin(a * a, b * b) / 4;
 }
 
-Case axis(Random& rng, const Rational& s_star, bool inside) {
+Drawn axis(Random& rng, const Rational& s_star, bool inside) {
   Rational a, b, r;
   cup(rng, a, b, r);
   const SurfacePoint vertex{{q(0), q(0), q(0)}, {q(0), q(0), q(-1)}};
   return {sphere_at(vertex, a, b, r * s_star, s_star, inside), {}, inside};
 }
 
-Case offaxis(Random& rng, const Rational& s_star, bool inside) {
+Drawn offaxis(Random& rng, const Rational& s_star, bool inside) {
   Rational a, b, r;
   cup(rng, a, b, r);
   const SurfacePoint x = surface_point(a, b, rng.fraction(q(-3, 5), q(3, 5), 9), rng.fraction(q(-3, 5), q(3, 5), 9));
   return {sphere_at(x, a, b, r * s_star, s_star, inside), {}, inside};
 }
 
-Case rotated(Random& rng, const Rational& s_star, bool inside) {
-  Case c = offaxis(rng, s_star, inside);
+Drawn rotated(Random& rng, const Rational& s_star, bool inside) {
+  Drawn c = offaxis(rng, s_star, inside);
   c.placement.rotation = small_quaternion(rng, 4);
   c.placement.translation = small_vector(rng, q(2), 8);
   return c;
 }
 
-Case ellipsoid(Random& rng, const Rational& s_star, bool inside) {
-  Case c = rotated(rng, s_star, inside);
+Drawn ellipsoid(Random& rng, const Rational& s_star, bool inside) {
+  Drawn c = rotated(rng, s_star, inside);
   c.placement.sx = rng.fraction(q(1, 2), q(2), 6);
   c.placement.sy = rng.fraction(q(1, 2), q(2), 6);
   c.placement.k = rng.fraction(q(2, 3), q(3, 2), 6);
@@ -157,7 +157,7 @@ Case ellipsoid(Random& rng, const Rational& s_star, bool inside) {
 /// (doc/oracle.md): I with Disc(f) = 0 at s* > 1, TI at s* = 1. With a < b, p = (m^2 - 1)/(4m) and
 /// a^2 (m^2 + 1)/(2m) <= b^2: centre (0, p (b^2 - a^2), a^2/2 + p^2 b^2), nearest point
 /// (0, p b^2, p^2 b^2), distance d = (a^2/2)(m^2 + 1)/(2m). Half the cases swap x and y (-b^2).
-Case special(Random& rng, const Rational& s_star) {
+Drawn special(Random& rng, const Rational& s_star) {
   static const Rational kM[] = {q(2), q(3), q(3, 2), q(5, 2), q(4, 3), q(5, 3), q(5, 4)};
   const Rational m = kM[rng.integer(0, 6)];
   Rational p = (m * m - 1) / (4 * m);
@@ -182,24 +182,24 @@ Case special(Random& rng, const Rational& s_star) {
 
 /// A circular cup (a = b) and a sphere on its axis above the focal height a^2/2: the nearest points
 /// form a circle, d^2 = a^2 c - a^4/4 for the centre (0, 0, c); the hard case at s* = 1.
-Case circular(Random& rng, const Rational& s_star) {
+Drawn circular(Random& rng, const Rational& s_star) {
   const Rational a = rng.fraction(q(1, 2), q(3, 2), 10);
   const Rational d = a * a / 2 * rng.fraction(q(11, 10), q(3), 10);
   Standard s;
   s.centre = {q(0), q(0), (d * d + a * a * a * a / 4) / (a * a)};
   s.radius = d / s_star;
   s.a = s.b = a;
-  Case c{s, {}, true};
+  Drawn c{s, {}, true};
   c.placement.translation = small_vector(rng, q(1), 4);
   return c;
 }
 
-Case tiny(Random& rng, const Rational& s_star, bool inside) {
+Drawn tiny(Random& rng, const Rational& s_star, bool inside) {
   Rational a, b, r;
   cup(rng, a, b, r);
   r *= power(q(10), -rng.integer(3, 8));
   const SurfacePoint x = surface_point(a, b, rng.fraction(q(-3, 5), q(3, 5), 9), rng.fraction(q(-3, 5), q(3, 5), 9));
-  Case c{sphere_at(x, a, b, r * s_star, s_star, inside), {}, inside};
+  Drawn c{sphere_at(x, a, b, r * s_star, s_star, inside), {}, inside};
   c.placement.rotation = small_quaternion(rng, 4);
   c.placement.translation = small_vector(rng, q(2), 8);
   c.placement.sx = rng.fraction(q(1, 2), q(2), 6);
@@ -207,14 +207,14 @@ Case tiny(Random& rng, const Rational& s_star, bool inside) {
   return c;
 }
 
-Case huge(Random& rng, const Rational& s_star, bool inside) {
-  Case c = ellipsoid(rng, s_star, inside);
+Drawn huge(Random& rng, const Rational& s_star, bool inside) {
+  Drawn c = ellipsoid(rng, s_star, inside);
   c.placement.m = power(q(10), rng.integer(2, 5));
   return c;
 }
 
-Case far(Random& rng, const Rational& s_star, bool inside) {
-  Case c = rotated(rng, s_star, inside);
+Drawn far(Random& rng, const Rational& s_star, bool inside) {
+  Drawn c = rotated(rng, s_star, inside);
   const long e = rng.integer(6, 8);
   const long bound = e == 6 ? 1000000 : (e == 7 ? 10000000 : 100000000);
   c.placement.translation = {q(rng.integer(-bound, bound)), q(rng.integer(-bound, bound)),
@@ -225,7 +225,7 @@ Case far(Random& rng, const Rational& s_star, bool inside) {
 /// Exact tangencies whose parameters are all doubles: dyadic a, b, normals with dyadic slopes (3-4-5,
 /// 1-2-2, 1-4-8 over 5, 3 and 9), a radius that is a multiple of the normal's denominator by a power
 /// of two, rotations of the cube (|q|^2 in {1, 2, 4}: R(q) has entries 0, +-1) and dyadic maps.
-Case exact(Random& rng, bool inside) {
+Drawn exact(Random& rng, bool inside) {
   static const long kNormals[][4] = {{0, 0, 1, 1}, {3, 0, 4, 5}, {0, 3, 4, 5}, {2, 2, 1, 3}, {2, 1, 2, 3},
                                      {1, 2, 2, 3}, {8, 4, 1, 9}, {4, 8, 1, 9}, {4, 1, 8, 9}, {1, 4, 8, 9}};
   static const long kRotations[][4] = {{1, 0, 0, 0},  {1, 1, 0, 0},  {1, 0, 1, 0},  {1, 0, 0, 1},  {1, -1, 0, 0},
@@ -244,7 +244,7 @@ Case exact(Random& rng, bool inside) {
   while (r * 2 <= target) r *= 2;
   static const Rational kShrink[] = {q(1), q(3, 4), q(5, 8)};
   r *= kShrink[rng.integer(0, 2)];
-  Case c{sphere_at(point, a, b, r, q(1), inside), {}, inside};
+  Drawn c{sphere_at(point, a, b, r, q(1), inside), {}, inside};
   static const Rational kPowers[] = {q(1, 2), q(1), q(2)};
   c.placement.sx = kPowers[rng.integer(0, 2)];
   c.placement.sy = kPowers[rng.integer(0, 2)];
@@ -315,7 +315,7 @@ Construction construct(const Family& family, const Rational& eps, std::uint64_t 
   const bool inside = inside_only || index % 2 == 0;
   const bool closer = ((inside_only ? index : index / 2) % 2) == 1;
   const Rational s_star = family.uses_eps ? (closer ? 1 - eps : 1 + eps) : Rational(1);
-  Case c;
+  Drawn c;
   if (name == "axis")
     c = axis(rng, s_star, inside);
   else if (name == "offaxis")

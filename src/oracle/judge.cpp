@@ -14,6 +14,7 @@
 #include "io/quadric_json.hpp"
 #include "oracle/float_matrices.hpp"
 #include "oracle/float_rules.hpp"
+#include "oracle/json_text.hpp"
 #include "oracle/nearest.hpp"
 #include "oracle/tolerance.hpp"
 #include "relpos/classify.hpp"
@@ -23,8 +24,6 @@
 namespace relpos::oracle {
 
 namespace {
-
-using Json = nlohmann::ordered_json;
 
 std::optional<Position> position_from_text(const Json& j) {
   if (!j.is_string()) return std::nullopt;
@@ -81,7 +80,7 @@ Json exactified(const Json& j) {
   return j;
 }
 
-Json matrix_json(const DoubleMatrix4& m) {
+Json exact_matrix_json(const DoubleMatrix4& m) {
   Json out = Json::array();
   for (std::size_t i = 0; i < 4; ++i) {
     Json row = Json::array();
@@ -96,8 +95,6 @@ std::string shell_quoted(const std::string& s) {
   for (const char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
 }
-
-std::string dump(const Json& j) { return j.dump(-1, ' ', false, Json::error_handler_t::replace); }
 
 struct CaseLine {
   std::string_view text;
@@ -124,8 +121,8 @@ TruthPair pair_of(const CaseLine& c, Truth truth) {
   if (truth == Truth::Matrix) {
     const auto e = matrix_of(member(dbl, "E")), p = matrix_of(member(dbl, "P"));
     if (!e || !p) return out;
-    out.ellipsoid = matrix_json(upper_triangle(*e));
-    out.paraboloid = matrix_json(upper_triangle(*p));
+    out.ellipsoid = exact_matrix_json(upper_triangle(*e));
+    out.paraboloid = exact_matrix_json(upper_triangle(*p));
     out.e = Ellipsoid::from_doubles(upper_triangle(*e));
     out.p = Paraboloid::from_doubles(upper_triangle(*p));
     return out;
@@ -319,7 +316,7 @@ bool excused(Judged& c, const Answer& a, Position truth, const Rational& tau, Ju
   if (!m) m = member(c.line.meta, margin_key(c.truth_kind));
   if (!m) return false;
   try {
-    const Margin margin = margin_from_json(*m);
+    const MarginValue margin = margin_from_json(*m);
     CentreSide side = truth == Position::I || truth == Position::TI ? CentreSide::Inside : CentreSide::Outside;
     if (truth == Position::C) side = side_of(*c.pair().e, *c.pair().p);
     return within_tolerance(*a.position, side, margin, tau);

@@ -4,15 +4,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "oracle/json_text.hpp"
 #include "oracle/judge.hpp"
 
 namespace relpos::oracle {
 
 namespace {
-
-using Json = nlohmann::ordered_json;
-
-std::string dump(const Json& j) { return j.dump(-1, ' ', false, Json::error_handler_t::replace); }
 
 std::string percent(double x) {
   char text[32];

@@ -1,13 +1,12 @@
 // tolerance.hpp.
 #include "oracle/tolerance.hpp"
 
+#include "oracle/json_text.hpp"
 #include "relpos/error.hpp"
 
 namespace relpos::oracle {
 
 namespace {
-
-using Json = nlohmann::ordered_json;
 
 Rational number(const Json& j, const std::string& name) {
   if (!j.contains(name)) throw InputError("margin: \"" + name + "\" is missing");
@@ -26,9 +25,9 @@ int sign_at(const std::vector<Integer>& p, const Rational& x) {
 
 }  // namespace
 
-Margin margin_from_json(const Json& j) {
+MarginValue margin_from_json(const Json& j) {
   if (!j.is_object()) throw InputError("margin: expected an object");
-  Margin m;
+  MarginValue m;
   m.lo = number(j, "lo");
   m.hi = number(j, "hi");
   if (m.lo > m.hi) throw InputError("margin: lo > hi");
@@ -47,7 +46,7 @@ Margin margin_from_json(const Json& j) {
   return m;
 }
 
-int compare_with(const Rational& t, const Margin& m) {
+int compare_with(const Rational& t, const MarginValue& m) {
   if (m.lo == m.hi) return CGAL::sign(t - m.lo);
   if (t <= m.lo) return -1;  // s* lies strictly inside (lo, hi): the polynomial is not 0 at its ends
   if (t >= m.hi) return 1;
@@ -56,7 +55,7 @@ int compare_with(const Rational& t, const Margin& m) {
   return at == sign_at(m.polynomial, m.lo) ? -1 : 1;  // no sign change on [lo, t]: s* beyond t
 }
 
-bool within_tolerance(Position answer, CentreSide side, const Margin& m, const Rational& tau) {
+bool within_tolerance(Position answer, CentreSide side, const MarginValue& m, const Rational& tau) {
   const bool on_surface = side == CentreSide::On || (m.lo == 0 && m.hi == 0);
   if (on_surface) return answer == Position::C;
   const int low = compare_with(1 - tau, m), high = compare_with(1 + tau, m);  // signs of (1 -+ tau) - s*

@@ -13,9 +13,12 @@
 
 namespace relpos::oracle {
 
-/// s*, as a margin member gives it: the only root of `polynomial` (integer coefficients, lowest
-/// degree first) in [lo, hi], or lo itself when lo = hi.
-struct Margin {
+/// s*, the number alone, as a margin member of an answer line gives it: the only root of
+/// `polynomial` (integer coefficients, lowest degree first) in [lo, hi], or lo itself when lo = hi.
+/// Not relpos::Margin (margin.hpp), which is margin()'s result with the proof of s* (the
+/// certificates at lo and hi, the nearest double): the judge reads the number from a line another
+/// run wrote and decides with it, so it keeps neither the proof nor the double.
+struct MarginValue {
   Rational lo, hi;
   std::vector<Integer> polynomial;
 };
@@ -24,16 +27,16 @@ struct Margin {
 /// members, "approx" included, are not read: nothing is decided on them). Throws InputError naming
 /// what is wrong: a missing or malformed member, lo > hi, lo < 0, or lo < hi without a change of sign
 /// of the polynomial between them (no root to speak of).
-Margin margin_from_json(const nlohmann::ordered_json& j);
+MarginValue margin_from_json(const nlohmann::ordered_json& j);
 
 /// The sign of t - s*, exactly: by the enclosure when t lies outside it, else by the sign of the
 /// polynomial at t against its sign at lo.
-int compare_with(const Rational& t, const Margin& m);
+int compare_with(const Rational& t, const MarginValue& m);
 
 /// Where the ellipsoid's centre lies.
 enum class CentreSide { Inside, On, Outside };
 
 /// Whether `answer` is the position of the pair scaled by some factor s in [1 - tau, 1 + tau], s > 0.
-bool within_tolerance(Position answer, CentreSide side, const Margin& m, const Rational& tau);
+bool within_tolerance(Position answer, CentreSide side, const MarginValue& m, const Rational& tau);
 
 }  // namespace relpos::oracle

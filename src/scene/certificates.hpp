@@ -21,6 +21,12 @@ struct SymmetricEntries {
   NT q33;                           ///< q0
 };
 
+/// The ten entries of a symmetric 4x4 matrix given entry by entry (get(i, j), i <= j).
+template <class NT, class Get>
+SymmetricEntries<NT> entries(Get get) {
+  return {get(0, 0), get(1, 1), get(2, 2), get(0, 1), get(0, 2), get(1, 2), get(0, 3), get(1, 3), get(2, 3), get(3, 3)};
+}
+
 /// adj(Q3) of the 3x3 block (the other fields are left default): adj(A) of a paraboloid, the
 /// constant the containment certificates need.
 template <class NT>

@@ -16,9 +16,12 @@
 #include "decide/many_pairs.hpp"
 #include "filters/running_bound.hpp"
 #include "scene/certificates.hpp"
+#include "scene/scene_pool.hpp"
 
 namespace relpos {
+namespace {
 
+/// The scene view of a core verdict.
 SceneVerdict scene_verdict(const Verdict& v) {
   SceneVerdict out;
   out.position = v.position;
@@ -26,8 +29,6 @@ SceneVerdict scene_verdict(const Verdict& v) {
   out.stage = v.stage;
   return out;
 }
-
-namespace {
 
 using Interval = CGAL::Interval_nt<false>;  // paraboloid constants only (needs Protect_FPU_rounding)
 using RB = RunningBound;                    // the per-body filter (running_bound.hpp)
@@ -55,11 +56,6 @@ struct RationalView {
   const Matrix4* m;
   const Rational& operator()(int i, int j) const { return (*m)(i, j); }
 };
-
-template <class NT, class Get>
-SymmetricEntries<NT> entries(Get get) {
-  return {get(0, 0), get(1, 1), get(2, 2), get(0, 1), get(0, 2), get(1, 2), get(0, 3), get(1, 3), get(2, 3), get(3, 3)};
-}
 
 RB bounded(const Rational& q) {
   const auto i = CGAL::to_interval(q);
@@ -247,6 +243,53 @@ double scale_for(double mx) {
   return std::ldexp(1.0, -k);
 }
 
+/// The entries of a body read from text, from its stored enclosures, scaled by a power of two;
+/// false when they are beyond 2^1000 or a scaled bound underflows (then no early-out).
+bool enclosure_entries(const detail::EnclosureMatrix4& enc, SymmetricEntries<RB>& x, bool& sphere) {
+  const auto point = [&](std::size_t i) { return enc.lo[i] == enc.hi[i]; };
+  sphere = point(0) && point(1) && point(2) && point(5) && point(6) && point(10) && enc.lo[1] == 0 && enc.lo[2] == 0 &&
+           enc.lo[6] == 0 && enc.lo[0] == enc.lo[5] && enc.lo[0] == enc.lo[10];
+  double mx = 0;
+  for (std::size_t i : {0, 1, 2, 3, 5, 6, 7, 10, 11, 15})
+    mx = std::max({mx, std::fabs(enc.lo[i]), std::fabs(enc.hi[i])});
+  if (!(mx <= 0x1p1000)) return false;
+  const double s = scale_for(mx);
+  bool exact_scaling = true;  // no scaled bound underflows (else: no early-out)
+  x = entries<RB>([&](int i, int j) {
+    const auto k = static_cast<std::size_t>(4 * i + j);
+    const double lo = enc.lo[k] * s, hi = enc.hi[k] * s;
+    if (lo / s != enc.lo[k] || hi / s != enc.hi[k]) exact_scaling = false;
+    return RB::enclosing(lo, hi);
+  });
+  return exact_scaling;
+}
+
+/// The entries of a body given by rationals, enclosed from their truncated doubles and scaled by a
+/// power of two; false beyond 2^1000 (not filtered).
+bool rational_entries(const Matrix4& m, SymmetricEntries<RB>& x, bool& sphere) {
+  sphere = CGAL::is_zero(m(0, 1)) && CGAL::is_zero(m(0, 2)) && CGAL::is_zero(m(1, 2)) && m(0, 0) == m(1, 1) &&
+           m(0, 0) == m(2, 2);
+  // mpq_get_d truncates towards zero: |q - v| < ulp(v) <= 2^-52 |v| (or one subnormal step), about
+  // four times cheaper than CGAL::to_interval. Inputs beyond 2^1000 are not filtered.
+  std::array<double, 16> v{};
+  double mx = 0;
+  for (std::size_t i : {0, 1, 2, 3, 5, 6, 7, 10, 11, 15}) {
+    v[i] = mpq_get_d(m.a[i].mpq());
+    mx = std::max(mx, std::fabs(v[i]));
+  }
+  if (!(mx <= 0x1p1000)) return false;
+  const double s = scale_for(mx);
+  // |q s - v s| <= 2^-52 |v s| + 2^-1074 s, and v s is exact unless it underflows (one more
+  // subnormal step).
+  x = entries<RB>([&](int i, int j) {
+    if (CGAL::is_zero(m(i, j))) return RB(0);
+    const double y = v[static_cast<std::size_t>(4 * i + j)] * s;
+    const double r = std::fabs(y) * 0x1p-51 + 0x1p-1073 * std::max(s, 1.0);
+    return RB::enclosing(y - r, y + r);
+  });
+  return true;
+}
+
 /// The early-outs. Bodies given by exact doubles in range take the fast path (Fast, counts from
 /// PreparedParaboloid); the others carry full RunningBounds. Rounding to nearest, no mode switch. A certificate
 /// holds only when every sign it needs is certain.
@@ -278,47 +321,50 @@ double scale_for(double mx) {
       return y * inv == v ? RB(y) : RB::enclosing(y - 0x1p-1074, y + 0x1p-1074);
     });
   } else if (const auto& enc = storage_of(e).enclosure()) {  // read from text: the stored enclosures
-    const auto point = [&](std::size_t i) { return enc->lo[i] == enc->hi[i]; };
-    sphere = point(0) && point(1) && point(2) && point(5) && point(6) && point(10) && enc->lo[1] == 0 &&
-             enc->lo[2] == 0 && enc->lo[6] == 0 && enc->lo[0] == enc->lo[5] && enc->lo[0] == enc->lo[10];
-    double mx = 0;
-    for (std::size_t i : {0, 1, 2, 3, 5, 6, 7, 10, 11, 15})
-      mx = std::max({mx, std::fabs(enc->lo[i]), std::fabs(enc->hi[i])});
-    if (!(mx <= 0x1p1000)) return Early::None;
-    const double s = scale_for(mx);
-    bool exact_scaling = true;  // no scaled bound underflows (else: no early-out)
-    x = entries<RB>([&](int i, int j) {
-      const auto k = static_cast<std::size_t>(4 * i + j);
-      const double lo = enc->lo[k] * s, hi = enc->hi[k] * s;
-      if (lo / s != enc->lo[k] || hi / s != enc->hi[k]) exact_scaling = false;
-      return RB::enclosing(lo, hi);
-    });
-    if (!exact_scaling) return Early::None;
-  } else {
-    const Matrix4& m = e.matrix();
-    sphere = CGAL::is_zero(m(0, 1)) && CGAL::is_zero(m(0, 2)) && CGAL::is_zero(m(1, 2)) && m(0, 0) == m(1, 1) &&
-             m(0, 0) == m(2, 2);
-    // mpq_get_d truncates towards zero: |q - v| < ulp(v) <= 2^-52 |v| (or one subnormal step), about
-    // four times cheaper than CGAL::to_interval. Inputs beyond 2^1000 are not filtered.
-    std::array<double, 16> v{};
-    double mx = 0;
-    for (std::size_t i : {0, 1, 2, 3, 5, 6, 7, 10, 11, 15}) {
-      v[i] = mpq_get_d(m.a[i].mpq());
-      mx = std::max(mx, std::fabs(v[i]));
-    }
-    if (!(mx <= 0x1p1000)) return Early::None;
-    const double s = scale_for(mx);
-    // |q s - v s| <= 2^-52 |v s| + 2^-1074 s, and v s is exact unless it underflows (one more
-    // subnormal step).
-    x = entries<RB>([&](int i, int j) {
-      if (CGAL::is_zero(m(i, j))) return RB(0);
-      const double y = v[static_cast<std::size_t>(4 * i + j)] * s;
-      const double r = std::fabs(y) * 0x1p-51 + 0x1p-1073 * std::max(s, 1.0);
-      return RB::enclosing(y - r, y + r);
-    });
+    if (!enclosure_entries(*enc, x, sphere)) return Early::None;
+  } else if (!rational_entries(e.matrix(), x, sphere)) {
+    return Early::None;
   }
   if (sphere) return certify_sphere(x, f.p, f.diagonal_a, f.lambda_max, f.rho_factor, tracked_sign);
   return certify_general(x, f.p, f.diagonal_a, f.adj_a, f.det_p, tracked_sign);
+}
+
+/// Bodies [lo, hi) into out[lo, hi): the early-outs (unless switched off), then the bodies they
+/// leave open through decide_position's verdicts. `pending` and `decided`: the caller's buffers,
+/// reused from chunk to chunk.
+void classify_chunk(const Scene::PreparedParaboloid& prepared, const Paraboloid& p, const Ellipsoid* bodies,
+                    std::size_t lo, std::size_t hi, const SceneOptions& options, SceneVerdict* out,
+                    std::vector<std::size_t>& pending, std::vector<Verdict>& decided) {
+  pending.clear();
+  CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);  // threads inherit the caller's mode
+  if (options.early_outs) {
+    for (std::size_t i = lo; i < hi; ++i) {
+      // The filter reads the 16 doubles at the start of each body and its flags after them:
+      // fetch them a few bodies ahead (measured: about 5 % of the scene time).
+      if (i + 8 < hi) {
+        const char* ahead = reinterpret_cast<const char*>(&bodies[i + 8]);
+        __builtin_prefetch(ahead);
+        __builtin_prefetch(ahead + 64);
+        __builtin_prefetch(ahead + 128);
+      }
+      const Early x = early_out_filter(prepared, bodies[i]);
+      if (x != Early::None)
+        out[i] = *verdict_of(x);
+      else
+        pending.push_back(i);
+    }
+  } else {
+    for (std::size_t i = lo; i < hi; ++i) pending.push_back(i);
+  }
+  if (options.size_limit.max_bits != SizeLimit{}.max_bits) {  // a raised limit: one at a time, with it
+    for (std::size_t i : pending) out[i] = scene_verdict(decide_position(bodies[i], p, options.size_limit));
+  } else {
+    // The bodies the early-outs leave open, decided in lanes (decide_positions: decide_position's
+    // verdicts).
+    decided.resize(pending.size());
+    detail::decide_positions_at(bodies, pending.data(), pending.size(), p, decided.data());
+    for (std::size_t k = 0; k < pending.size(); ++k) out[pending[k]] = scene_verdict(decided[k]);
+  }
 }
 
 }  // namespace
@@ -341,18 +387,31 @@ SceneVerdict Scene::classify(const Ellipsoid& e) const {
 
 SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const SceneOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
+  const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
+  unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
+  threads =
+      static_cast<unsigned>(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, (count + chunk - 1) / chunk)));
+  detail::WorkerPool pool(threads);  // fewer threads when one cannot start: the others do its work
+  SceneResult result = detail::SceneAccess::classify(*this, bodies, count, options, pool);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+SceneResult detail::SceneAccess::classify(const Scene& scene, const Ellipsoid* bodies, std::size_t count,
+                                          const SceneOptions& options, WorkerPool& pool) {
+  const auto start = std::chrono::steady_clock::now();
   SceneResult result;
   result.verdicts.resize(count);
   const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
   const std::size_t chunks = (count + chunk - 1) / chunk;
-  unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
-  threads = static_cast<unsigned>(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, chunks)));
+  const unsigned threads = pool.threads();
 
   std::atomic<std::size_t> next{0};
   std::vector<SceneCounts> counts(threads);
   std::vector<std::exception_ptr> errors(threads);
   SceneVerdict* out = result.verdicts.data();
-  const PreparedParaboloid& prepared = *prepared_;
+  const Scene::PreparedParaboloid& prepared = *scene.prepared_;
+  const Paraboloid& p = scene.p_;
 
   auto work = [&](unsigned w) {
     SceneCounts local;  // per thread, merged once at the end (no shared cache lines while counting)
@@ -364,36 +423,7 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
         const std::size_t c = next.fetch_add(1, std::memory_order_relaxed);
         if (c >= chunks) break;
         const std::size_t lo = c * chunk, hi = std::min(count, lo + chunk);
-        pending.clear();
-        CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);  // threads inherit the caller's mode
-        if (options.early_outs) {
-          for (std::size_t i = lo; i < hi; ++i) {
-            // The filter reads the 16 doubles at the start of each body and its flags after them:
-            // fetch them a few bodies ahead (measured: about 5 % of the scene time).
-            if (i + 8 < hi) {
-              const char* ahead = reinterpret_cast<const char*>(&bodies[i + 8]);
-              __builtin_prefetch(ahead);
-              __builtin_prefetch(ahead + 64);
-              __builtin_prefetch(ahead + 128);
-            }
-            const Early x = early_out_filter(prepared, bodies[i]);
-            if (x != Early::None)
-              out[i] = *verdict_of(x);
-            else
-              pending.push_back(i);
-          }
-        } else {
-          for (std::size_t i = lo; i < hi; ++i) pending.push_back(i);
-        }
-        if (options.size_limit.max_bits != SizeLimit{}.max_bits) {  // a raised limit: one at a time, with it
-          for (std::size_t i : pending) out[i] = scene_verdict(decide_position(bodies[i], p_, options.size_limit));
-        } else {
-          // The bodies the early-outs leave open, decided in lanes (decide_positions: decide_position's
-          // verdicts).
-          decided.resize(pending.size());
-          detail::decide_positions_at(bodies, pending.data(), pending.size(), p_, decided.data());
-          for (std::size_t k = 0; k < pending.size(); ++k) out[pending[k]] = scene_verdict(decided[k]);
-        }
+        classify_chunk(prepared, p, bodies, lo, hi, options, out, pending, decided);
         for (std::size_t i = lo; i < hi; ++i) local.add(out[i]);
         if (options.progress) options.progress->fetch_add(hi - lo, std::memory_order_relaxed);
       }
@@ -404,8 +434,8 @@ SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const Sc
     counts[w] = local;
   };
 
-  detail::WorkerPool pool(threads);
-  result.threads = pool.threads();  // fewer when a thread cannot start: the others do its work
+  // The pool's threads that have bodies to take: at most one per chunk (the others find none).
+  result.threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, chunks)));
   pool.run_on_each(work);
   for (const auto& err : errors)
     if (err) std::rethrow_exception(err);

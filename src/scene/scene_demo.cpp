@@ -17,7 +17,9 @@ Ellipsoid DemoBody::ellipsoid() const {
   return kind == Kind::Sphere ? Ellipsoid::sphere(centre, radius) : Ellipsoid::from_coefficients(coefficients);
 }
 
-namespace {
+// Named (not anonymous): DemoSceneGenerator::State holds them, and a unity build compiles this file
+// inside another's translation unit, where GCC warns of a class with members of internal linkage.
+namespace detail::demo {
 
 class Random {
  public:
@@ -32,11 +34,6 @@ class Random {
   std::mt19937_64 g_;
 };
 
-Rational frac(long n, long d) { return Rational(Integer(n), Integer(d)); }
-
-/// x rounded to a multiple of 2^e: an exact double, then its exact rational value.
-Rational on_grid(double x, int e) { return exact_rational(std::ldexp(std::nearbyint(std::ldexp(x, -e)), e)); }
-
 struct Container {
   double a2, b2;  // a^2, b^2 as doubles (sampling only)
   double l;       // min(a, b)^2: twice the smallest radius of curvature
@@ -45,6 +42,18 @@ struct Container {
   Rational rl;    // l, exactly
   double f(double x, double y, double z) const { return x * x / a2 + y * y / b2 - z; }
 };
+
+}  // namespace detail::demo
+
+namespace {
+
+using detail::demo::Container;
+using detail::demo::Random;
+
+Rational frac(long n, long d) { return Rational(Integer(n), Integer(d)); }
+
+/// x rounded to a multiple of 2^e: an exact double, then its exact rational value.
+Rational on_grid(double x, int e) { return exact_rational(std::ldexp(std::nearbyint(std::ldexp(x, -e)), e)); }
 
 DemoBody sphere(Vector3 c, Rational r) {
   DemoBody b;

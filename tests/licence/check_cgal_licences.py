@@ -89,8 +89,10 @@ def main():
     units, headers = 0, set()
     compiler = None
     for e in entries:
-        rel = os.path.relpath(os.path.realpath(e["file"]), source_dir)
-        if not rel.startswith(PROJECT_DIRS):
+        path = os.path.realpath(e["file"])
+        # A unity build's batch (CMakeLists.txt, "Unity build") includes the library's sources.
+        unity = re.search(r"/Unity/unity_[0-9]+_cxx\.cxx$", path)
+        if not os.path.relpath(path, source_dir).startswith(PROJECT_DIRS) and not unity:
             continue
         argv = shlex.split(e["command"]) if "command" in e else e["arguments"]
         if os.path.basename(argv[0]) == "ccache":

@@ -117,6 +117,9 @@ class QuadricMatrix {
   mutable std::shared_ptr<const Matrix4> m_;
 };
 
+/// The library's access to a quadric's construction and storage (quadric.hpp).
+struct QuadricAccess;
+
 /// A quadric whose shape and sign normalization the caller has certified (src/io's fast reader).
 Ellipsoid make_ellipsoid(QuadricMatrix m);
 Paraboloid make_paraboloid(QuadricMatrix m);
