@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "general/decision.hpp"
 #include "general_float.hpp"
 #include "oracle/nearest.hpp"
 #include "relpos/general_classify.hpp"
@@ -159,11 +160,12 @@ int edge(const std::string& out, int maps) {
   struct Row {
     long n = 0, relpos_wrong = 0, pencil_wrong = 0, wwk_wrong = 0;
   };
-  std::vector<std::vector<Row>> rows(kAllQuadricTypes.size(), std::vector<Row>(ks.size()));
+  std::vector<std::vector<Row>> rows(general::kAllQuadricTypes.size(), std::vector<Row>(ks.size()));
   for (std::size_t ki = 0; ki < ks.size(); ++ki)
     for (const testing::Nudged& k : testing::nudged_tangencies({ks[ki]})) {
       const std::size_t ti = static_cast<std::size_t>(
-          std::find(kAllQuadricTypes.begin(), kAllQuadricTypes.end(), k.q.type()) - kAllQuadricTypes.begin());
+          std::find(general::kAllQuadricTypes.begin(), general::kAllQuadricTypes.end(), k.q.type()) -
+          general::kAllQuadricTypes.begin());
       for (int m = 0; m < maps; ++m) {
         const testing::AffineMap map = testing::random_map(rng, false);
         const Quadric qe = Quadric::from_map(Quadric::from_matrix(k.e), map.l, map.t);
@@ -183,10 +185,11 @@ int edge(const std::string& out, int maps) {
     for (std::size_t ki = 0; ki < ks.size(); ++ki) {
       const Row& r = rows[ti][ki];
       if (r.n == 0) continue;
-      csv << to_string(kAllQuadricTypes[ti]) << "," << ks[ki] << "," << r.n << "," << r.relpos_wrong << ","
+      csv << to_string(general::kAllQuadricTypes[ti]) << "," << ks[ki] << "," << r.n << "," << r.relpos_wrong << ","
           << r.pencil_wrong << "," << r.wwk_wrong << "\n";
       std::printf("%-24s 1e-%-3d n %4ld  relpos wrong %ld  pencil float wrong %4ld  WWK wrong %4ld\n",
-                  to_string(kAllQuadricTypes[ti]).c_str(), ks[ki], r.n, r.relpos_wrong, r.pencil_wrong, r.wwk_wrong);
+                  to_string(general::kAllQuadricTypes[ti]).c_str(), ks[ki], r.n, r.relpos_wrong, r.pencil_wrong,
+                  r.wwk_wrong);
     }
   long wrong = 0;
   for (const auto& t : rows)
@@ -202,7 +205,7 @@ void per_type(std::size_t n, int rounds) {
               rounds);
   std::printf("  %-24s %8s %8s %8s %7s %7s  %s\n", "type", "float", "WWK", "relpos", "/float", "/WWK",
               "positions; float wrong, WWK wrong, filter decided");
-  for (QuadricType type : kAllQuadricTypes) {
+  for (QuadricType type : general::kAllQuadricTypes) {
     const Quadric base = canonical(type);
     const Matrix4 ball = Quadric::sphere({Rational(0), Rational(0), Rational(0)}, Rational(1)).matrix();
     std::vector<DoubleMatrix4> em, qm;
