@@ -1,106 +1,37 @@
 // general_bench: an ellipsoid against another ellipsoid (and the other quadrics) on relpos's general
-// path against the float decision in the same run (doc/performance.md, "General quadrics").
+// path against the float decisions in the same run (doc/performance.md, "General quadrics").
 //
-// The float decision is the decision of math.md §16–§17 in plain doubles, nothing certified: the
-// characteristic quartic f = det(Q + t E) (the library's fastest double code, two terms at a time in
-// vector lanes) and the cubic D = det(B + t M), the extreme roots of D by Newton, and the sign rule --
-// the Sturm–Habicht sign variations of f at those roots, at 0 and at +-oo, the sides taken in the
-// order of the decision and each only when the previous one is empty. relpos's decide_position runs
-// the same formulas with certified bounds (and the exact stage when they cannot certify).
+// The float decisions are those of general_float.hpp, nothing certified: the decision of math.md
+// §16–§17 in plain doubles (the characteristic quartic f = det(Q + t E) in the library's vector lanes,
+// the cubic D = det(B + t M), the extreme roots of D by Newton, and the sign rule -- Sturm sequence
+// variations of f at those roots, at 0 and at +-oo, the sides taken in the order of the decision and
+// each only when the previous one is empty), and Wang–Wang–Kim's separation test in doubles for two
+// ellipsoids. relpos's decide_position runs the same formulas with certified bounds (and the exact
+// stage when they cannot certify).
 //
 // Usage: general_bench [pairs] [rounds] [prebuilt]   (defaults 20000, 7; `prebuilt`: skip from_doubles)
+//        general_bench --edge OUT [maps]             (the error rates near tangency -> OUT/general_edge.csv)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
 
-#include "algebra/sturm_habicht_quartic.hpp"
-#include "general/pencil.hpp"
+#include "general/decision.hpp"
+#include "general_float.hpp"
+#include "oracle/nearest.hpp"
 #include "relpos/general_classify.hpp"
+#include "support/general_random.hpp"
 
 using namespace relpos;
+using bench::pencil_float;
+using bench::wwk_separated;
 
 namespace {
-
-struct View {
-  const DoubleMatrix4& a;
-  double operator()(int i, int j) const { return a[static_cast<std::size_t>(4 * i + j)]; }
-};
-
-double horner(const double* c, int n, double x) {
-  double v = c[n];
-  for (int i = n - 1; i >= 0; --i) v = v * x + c[i];
-  return v;
-}
-
-/// The largest root of the real-rooted cubic d (positive leading coefficient): Newton from the
-/// Samuelson bound, as the filter does.
-double largest_root(const double* d) {
-  const double s1 = -d[2] / d[3], s2 = s1 * s1 - 2 * d[1] / d[3];
-  const double mean = s1 / 3, var = std::max(0.0, s2 / 3 - mean * mean);
-  double x = mean + std::sqrt(2 * var) * (1 + 0x1p-20) + std::fabs(mean) * 0x1p-40 + 0x1p-1000;
-  for (int i = 0; i < 100; ++i) {
-    const double v = horner(d, 3, x), dv = (3 * d[3] * x + 2 * d[2]) * x + d[1];
-    if (!(dv > 0)) break;
-    const double step = v / dv;
-    if (!(step > 0)) break;
-    x -= step;
-    if (step <= std::fabs(x) * 0x1p-40) break;
-  }
-  return x;
-}
-
-/// The float decision for two ellipsoids (E, TE never told apart from E, C by a float: no tangency
-/// is ever reported, as a float code would not).
-QuadricPosition float_decision(const DoubleMatrix4& e, const DoubleMatrix4& q) {
-  const Quartic<double> f = characteristic_polynomial_lanes(e, q);
-  const general::Cubic<double> d = general::pencil_cubic<double>(View{e}, View{q});
-  double g2[3], g1[2];
-  detail::sturm_habicht_quartic_g2_g1(f[0], f[1], f[2], f[3], f[4], g2, g1);
-  const double inv_i = 12 * f[0] * f[4] - 3 * f[1] * f[3] + f[2] * f[2];
-  const double inv_j = 72 * f[0] * f[2] * f[4] + 9 * f[1] * f[2] * f[3] - 27 * f[0] * f[3] * f[3] -
-                       27 * f[4] * f[1] * f[1] - 2 * f[2] * f[2] * f[2];
-  const double g0[1] = {4 * inv_i * inv_i * inv_i - inv_j * inv_j};  // 27 Disc(f)
-  const double fp[4] = {f[1], 2 * f[2], 3 * f[3], 4 * f[4]};
-  const double lead = f[4] > 0 ? 1 : -1;
-  auto var_at = [&](double x) {
-    const double s[5] = {horner(f.data(), 4, x), horner(fp, 3, x), lead * ((g2[0] * x + g2[1]) * x + g2[2]),
-                         lead * (g1[0] * x + g1[1]), lead * g0[0]};
-    int n = 0, last = 0;
-    for (double v : s) {
-      const int sg = v > 0 ? 1 : (v < 0 ? -1 : 0);
-      if (sg == 0) continue;
-      if (last != 0 && sg != last) ++n;
-      last = sg;
-    }
-    return n;
-  };
-  auto var_inf = [&](bool plus) {
-    const double s[5] = {f[4], fp[3], lead * g2[0], lead * g1[0], lead * g0[0]};
-    const int deg[5] = {4, 3, 2, 1, 0};
-    int n = 0, last = 0;
-    for (int i = 0; i < 5; ++i) {
-      int sg = s[i] > 0 ? 1 : (s[i] < 0 ? -1 : 0);
-      if (!plus && deg[i] % 2 == 1) sg = -sg;
-      if (sg == 0) continue;
-      if (last != 0 && sg != last) ++n;
-      last = sg;
-    }
-    return n;
-  };
-  // The sides in the order of the decision, each only when the previous one has no root.
-  const int v0 = var_at(0), v_plus = var_inf(true), v_minus = var_inf(false);
-  if (v0 - v_plus > 0) return QuadricPosition::E;
-  const double mirrored[4] = {-d[0], d[1], -d[2], d[3]};  // D(-x), leading coefficient kept positive
-  const double r1 = -largest_root(mirrored);
-  if (v_minus - var_at(r1) > 0) return QuadricPosition::I;
-  if (var_at(largest_root(d.data())) - v0 > 0) return QuadricPosition::O;
-  return QuadricPosition::C;
-}
 
 /// A random ordinary ellipsoid as doubles: semi-axes in [0.2, 2], a random rotation, a centre in the
 /// cube [-2, 2]^3 (the two bodies overlap, nest or lie apart).
@@ -151,9 +82,191 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+DoubleMatrix4 doubles_of(const Matrix4& m) {
+  DoubleMatrix4 d{};
+  for (std::size_t i = 0; i < 16; ++i) d[i] = oracle::nearest_double(m.a[i]);
+  return d;
+}
+
+/// H^T Q H for x = L u + t, H = [[L, t], [0, 1]]: the solid's preimage, the same type (an affine
+/// congruence). With dyadic L and t and a quadric of small dyadic entries, every entry is a double.
+Matrix4 congruent(const Matrix4& q, const Matrix3& l, const Vector3& t) {
+  Matrix4 h;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) h(i, j) = l(i, j);
+    h(i, 3) = t[static_cast<std::size_t>(i)];
+  }
+  h(3, 3) = Rational(1);
+  Matrix4 qh, out;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 4; ++k) qh(i, j) += q(i, k) * h(k, j);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 4; ++k) out(i, j) += h(k, i) * qh(k, j);
+  return out;
+}
+
+/// A random dyadic affine map: entries of L in {-8, ..., 8} / 8 with |det L| >= 1/4, t in [-2, 2] / 8ths.
+void dyadic_map(std::mt19937_64& rng, Matrix3& l, Vector3& t) {
+  std::uniform_int_distribution<int> d(-8, 8), td(-16, 16);
+  do {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) l(i, j) = Rational(d(rng), 8);
+  } while (CGAL::abs(l(0, 0) * (l(1, 1) * l(2, 2) - l(1, 2) * l(2, 1)) -
+                     l(0, 1) * (l(1, 0) * l(2, 2) - l(1, 2) * l(2, 0)) +
+                     l(0, 2) * (l(1, 0) * l(2, 1) - l(1, 1) * l(2, 0))) < Rational(1, 4));
+  for (Rational& x : t) x = Rational(td(rng), 8);
+}
+
+/// The canonical quadric of each type (axes 1, centre 0).
+Quadric canonical(QuadricType t) {
+  const Vector3 o{Rational(0), Rational(0), Rational(0)}, ones{Rational(1), Rational(1), Rational(1)};
+  const Rational one(1);
+  switch (t) {
+    case QuadricType::Ellipsoid:
+      return Quadric::ellipsoid(o, ones);
+    case QuadricType::HyperboloidOneSheet:
+      return Quadric::hyperboloid_one_sheet(o, ones);
+    case QuadricType::HyperboloidTwoSheets:
+      return Quadric::hyperboloid_two_sheets(o, ones);
+    case QuadricType::Cone:
+      return Quadric::cone(o, one, one);
+    case QuadricType::EllipticParaboloid:
+      return Quadric::elliptic_paraboloid(o, one, one);
+    case QuadricType::HyperbolicParaboloid:
+      return Quadric::hyperbolic_paraboloid(o, one, one);
+    case QuadricType::EllipticCylinder:
+      return Quadric::elliptic_cylinder(o, one, one);
+    case QuadricType::HyperbolicCylinder:
+      return Quadric::hyperbolic_cylinder(o, one, one);
+    case QuadricType::ParabolicCylinder:
+      return Quadric::parabolic_cylinder(o, one);
+    case QuadricType::Slab:
+      return Quadric::slab({Rational(0), Rational(0), one}, -one, one);
+    case QuadricType::HalfSpace:
+      return Quadric::half_space({Rational(0), Rational(0), one}, Rational(0));
+  }
+  return Quadric::sphere(o, one);
+}
+
+/// general_bench --edge OUT [maps]: the tangencies of tests/support/general_random.hpp (balls touching
+/// every type of quadric, known by construction) nudged by 10^-k, each under `maps` random rational
+/// congruences (rotations from integer quaternions, scalings, reflections): relpos decides the exact
+/// matrices, the float methods read their nearest doubles. Counts of wrong answers per type and k.
+int edge(const std::string& out, int maps) {
+  const std::vector<int> ks = {2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 25, 35};
+  std::mt19937_64 rng(3636);
+  struct Row {
+    long n = 0, relpos_wrong = 0, pencil_wrong = 0, wwk_wrong = 0;
+  };
+  std::vector<std::vector<Row>> rows(general::kAllQuadricTypes.size(), std::vector<Row>(ks.size()));
+  for (std::size_t ki = 0; ki < ks.size(); ++ki)
+    for (const testing::Nudged& k : testing::nudged_tangencies({ks[ki]})) {
+      const std::size_t ti = static_cast<std::size_t>(
+          std::find(general::kAllQuadricTypes.begin(), general::kAllQuadricTypes.end(), k.q.type()) -
+          general::kAllQuadricTypes.begin());
+      for (int m = 0; m < maps; ++m) {
+        const testing::AffineMap map = testing::random_map(rng, false);
+        const Quadric qe = Quadric::from_map(Quadric::from_matrix(k.e), map.l, map.t);
+        const Quadric qq = Quadric::from_map(k.q, map.l, map.t);
+        const Ellipsoid e = Ellipsoid::from_matrix(qe.matrix());
+        const DoubleMatrix4 ed = doubles_of(qe.matrix()), qd = doubles_of(qq.matrix());
+        Row& r = rows[ti][ki];
+        ++r.n;
+        r.relpos_wrong += decide_position(e, qq).position != k.expected;
+        r.pencil_wrong += pencil_float(ed, qd, qq.type()) != k.expected;
+        r.wwk_wrong += wwk_separated(ed, qd) != (k.expected == QuadricPosition::E);
+      }
+    }
+  std::ofstream csv(out + "/general_edge.csv");
+  csv << "type,k,n,relpos_wrong,pencil_float_wrong,wwk_wrong\n";
+  for (std::size_t ti = 0; ti < rows.size(); ++ti)
+    for (std::size_t ki = 0; ki < ks.size(); ++ki) {
+      const Row& r = rows[ti][ki];
+      if (r.n == 0) continue;
+      csv << to_string(general::kAllQuadricTypes[ti]) << "," << ks[ki] << "," << r.n << "," << r.relpos_wrong << ","
+          << r.pencil_wrong << "," << r.wwk_wrong << "\n";
+      std::printf("%-24s 1e-%-3d n %4ld  relpos wrong %ld  pencil float wrong %4ld  WWK wrong %4ld\n",
+                  to_string(general::kAllQuadricTypes[ti]).c_str(), ks[ki], r.n, r.relpos_wrong, r.pencil_wrong,
+                  r.wwk_wrong);
+    }
+  long wrong = 0;
+  for (const auto& t : rows)
+    for (const Row& r : t) wrong += r.relpos_wrong;
+  return wrong == 0 ? 0 : 1;
+}
+
+/// Ordinary pairs per type: the canonical quadric and the unit ball, each under its own dyadic affine
+/// map (every entry a double): float decisions and decide_position in alternating rounds.
+void per_type(std::size_t n, int rounds) {
+  std::mt19937_64 rng(3600);
+  std::printf("per type, %zu ordinary pairs each, ns of thread CPU time a pair (median of %d rounds, same run):\n", n,
+              rounds);
+  std::printf("  %-24s %8s %8s %8s %7s %7s  %s\n", "type", "float", "WWK", "relpos", "/float", "/WWK",
+              "positions; float wrong, WWK wrong, filter decided");
+  for (QuadricType type : general::kAllQuadricTypes) {
+    const Quadric base = canonical(type);
+    const Matrix4 ball = Quadric::sphere({Rational(0), Rational(0), Rational(0)}, Rational(1)).matrix();
+    std::vector<DoubleMatrix4> em, qm;
+    std::vector<Ellipsoid> es;
+    std::vector<Quadric> qs;
+    while (em.size() < n) {
+      Matrix3 l;
+      Vector3 t;
+      dyadic_map(rng, l, t);
+      const Matrix4 q = congruent(base.matrix(), l, t);
+      dyadic_map(rng, l, t);
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) l(i, j) *= 2;  // balls of radius about 1/2
+      const Matrix4 e = congruent(ball, l, t);
+      const Quadric qq = Quadric::from_matrix(q);
+      if (qq.type() != type) continue;
+      em.push_back(doubles_of(e));
+      qm.push_back(doubles_of(q));
+      es.push_back(Ellipsoid::from_doubles(em.back()));
+      qs.push_back(Quadric::from_doubles(qm.back()));
+    }
+    std::size_t counts[8] = {}, float_wrong = 0, wwk_wrong = 0, filtered = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const QuadricVerdict v = decide_position(es[i], qs[i]);
+      ++counts[static_cast<int>(v.position)];
+      filtered += v.stage == QuadricStage::Filter;
+      float_wrong += pencil_float(em[i], qm[i], type) != v.position;
+      wwk_wrong += wwk_separated(em[i], qm[i]) != (v.position == QuadricPosition::E);
+    }
+    std::vector<double> tf, tw, td;
+    volatile int sink = 0;
+    for (int r = 0; r < rounds; ++r) {
+      tf.push_back(seconds([&] {
+        int s = 0;
+        for (std::size_t i = 0; i < n; ++i) s += static_cast<int>(pencil_float(em[i], qm[i], type));
+        sink = sink + s;
+      }));
+      tw.push_back(seconds([&] {
+        int s = 0;
+        for (std::size_t i = 0; i < n; ++i) s += wwk_separated(em[i], qm[i]);
+        sink = sink + s;
+      }));
+      td.push_back(seconds([&] {
+        int s = 0;
+        for (std::size_t i = 0; i < n; ++i) s += static_cast<int>(decide_position(es[i], qs[i]).position);
+        sink = sink + s;
+      }));
+    }
+    const double k = 1e9 / static_cast<double>(n), f = median(tf) * k, w = median(tw) * k, d = median(td) * k;
+    std::string pos;
+    for (int p = 0; p < 8; ++p)
+      if (counts[p]) pos += to_string(static_cast<QuadricPosition>(p)) + " " + std::to_string(counts[p]) + " ";
+    std::printf("  %-24s %8.1f %8.1f %8.1f %6.2fx %6.2fx  %s; %zu, %zu, %zu\n", to_string(type).c_str(), f, w, d, d / f,
+                d / w, pos.c_str(), float_wrong, wwk_wrong, filtered);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 2 && std::string(argv[1]) == "--edge") return edge(argv[2], argc > 3 ? std::atoi(argv[3]) : 6);
   const std::size_t n = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 20000;
   const int rounds = argc > 2 ? std::atoi(argv[2]) : 7;
   const bool from = !(argc > 3 && std::string(argv[3]) == "prebuilt");
@@ -167,8 +280,9 @@ int main(int argc, char** argv) {
     es.push_back(Ellipsoid::from_doubles(em.back()));
     qs.push_back(Quadric::from_doubles(qm.back()));
   }
-  // Answers: relpos's against the exact stage (must agree) and the float decision's error rate.
-  std::size_t filtered = 0, float_wrong = 0, counts[8] = {};
+  const QuadricType ell = QuadricType::Ellipsoid;
+  // Answers: relpos's against the exact stage (must agree) and the float decisions' error rates.
+  std::size_t filtered = 0, float_wrong = 0, wwk_wrong = 0, counts[8] = {};
   for (std::size_t i = 0; i < n; ++i) {
     const QuadricVerdict v = decide_position(es[i], qs[i]), x = decide_position_exact(es[i], qs[i]);
     if (v.position != x.position) {
@@ -176,18 +290,26 @@ int main(int argc, char** argv) {
       return 1;
     }
     filtered += v.stage == QuadricStage::Filter;
-    float_wrong += float_decision(em[i], qm[i]) != x.position;
+    float_wrong += pencil_float(em[i], qm[i], ell) != x.position;
+    wwk_wrong += wwk_separated(em[i], qm[i]) != (x.position == QuadricPosition::E);
     ++counts[static_cast<int>(x.position)];
   }
-  std::printf("pairs %zu: I %zu, C %zu, E %zu, O %zu (others %zu); filter decided %zu; float decision wrong on %zu\n",
-              n, counts[0], counts[2], counts[4], counts[5], counts[1] + counts[3] + counts[6] + counts[7], filtered,
-              float_wrong);
-  std::vector<double> t_float, t_decide, t_from;
+  std::printf(
+      "pairs %zu: I %zu, C %zu, E %zu, O %zu (others %zu); filter decided %zu; float decision wrong on %zu, "
+      "WWK wrong on %zu\n",
+      n, counts[0], counts[2], counts[4], counts[5], counts[1] + counts[3] + counts[6] + counts[7], filtered,
+      float_wrong, wwk_wrong);
+  std::vector<double> t_float, t_wwk, t_decide, t_from;
   volatile int sink = 0;
   for (int r = 0; r < rounds; ++r) {
     t_float.push_back(seconds([&] {
       int s = 0;
-      for (std::size_t i = 0; i < n; ++i) s += static_cast<int>(float_decision(em[i], qm[i]));
+      for (std::size_t i = 0; i < n; ++i) s += static_cast<int>(pencil_float(em[i], qm[i], ell));
+      sink = sink + s;
+    }));
+    t_wwk.push_back(seconds([&] {
+      int s = 0;
+      for (std::size_t i = 0; i < n; ++i) s += wwk_separated(em[i], qm[i]);
       sink = sink + s;
     }));
     t_decide.push_back(seconds([&] {
@@ -203,16 +325,21 @@ int main(int argc, char** argv) {
         sink = sink + s;
       }));
   }
-  // The same per position (pairs of one position timed together, the float decision on the same pairs).
+  // The same per position (pairs of one position timed together, the float decisions on the same pairs).
   for (QuadricPosition p : {QuadricPosition::E, QuadricPosition::C}) {
     std::vector<std::size_t> idx;
     for (std::size_t i = 0; i < n; ++i)
       if (decide_position(es[i], qs[i]).position == p) idx.push_back(i);
-    std::vector<double> tf, td;
+    std::vector<double> tf, tw, td;
     for (int r = 0; r < rounds; ++r) {
       tf.push_back(seconds([&] {
         int s = 0;
-        for (std::size_t i : idx) s += static_cast<int>(float_decision(em[i], qm[i]));
+        for (std::size_t i : idx) s += static_cast<int>(pencil_float(em[i], qm[i], ell));
+        sink = sink + s;
+      }));
+      tw.push_back(seconds([&] {
+        int s = 0;
+        for (std::size_t i : idx) s += wwk_separated(em[i], qm[i]);
         sink = sink + s;
       }));
       td.push_back(seconds([&] {
@@ -221,18 +348,20 @@ int main(int argc, char** argv) {
         sink = sink + s;
       }));
     }
-    const double a = median(tf) / static_cast<double>(idx.size()) * 1e9,
-                 b = median(td) / static_cast<double>(idx.size()) * 1e9;
-    std::printf("  %s pairs (%zu): float %.1f ns, decide_position %.1f ns (%.2fx)\n", to_string(p).c_str(), idx.size(),
-                a, b, b / a);
+    const double k = 1e9 / static_cast<double>(idx.size()), a = median(tf) * k, w = median(tw) * k, b = median(td) * k;
+    std::printf("  %s pairs (%zu): float %.1f ns, WWK %.1f ns, decide_position %.1f ns (%.2fx float, %.2fx WWK)\n",
+                to_string(p).c_str(), idx.size(), a, w, b, b / a, b / w);
   }
-  const double f = median(t_float) / n * 1e9, d = median(t_decide) / n * 1e9;
+  const double f = median(t_float) / n * 1e9, w = median(t_wwk) / n * 1e9, d = median(t_decide) / n * 1e9;
   const double fr = from ? median(t_from) / n * 1e9 : 0;
   std::printf("ellipsoid-ellipsoid, ns of thread CPU time a pair (median of %d rounds, same run):\n", rounds);
   std::printf("  float decision (quartic, cubic, sign rule; nothing certified)  %8.1f\n", f);
-  std::printf("  decide_position(e, q), prebuilt objects                        %8.1f  (%.2fx)\n", d, d / f);
+  std::printf("  Wang-Wang-Kim in doubles (separated or not; nothing certified) %8.1f\n", w);
+  std::printf("  decide_position(e, q), prebuilt objects                        %8.1f  (%.2fx float, %.2fx WWK)\n", d,
+              d / f, d / w);
   if (from)
-    std::printf("  from_doubles + decide_position                                 %8.1f  (%.2fx)\n", fr, fr / f);
+    std::printf("  from_doubles + decide_position                                 %8.1f  (%.2fx float)\n", fr, fr / f);
+  per_type(std::max<std::size_t>(n / 4, 1), rounds);
   // Scaled matrices: the same pairs with E times 3 and Q times 1/3 (rationals that are not doubles:
   // the filter reads enclosures) against E times 10^300 and Q times 10^-300, on the filter and on the
   // exact stage (each matrix's own primitive integer form: the same integers, math.md §17).
@@ -240,9 +369,9 @@ int main(int argc, char** argv) {
     const std::size_t m = std::min<std::size_t>(n, 2000);
     Rational big(1);
     for (int i = 0; i < 300; ++i) big *= 10;
-    auto scaled = [](const DoubleMatrix4& d, const Rational& s) {
+    auto scaled = [](const DoubleMatrix4& x, const Rational& s) {
       Matrix4 out;
-      for (std::size_t i = 0; i < 16; ++i) out.a[i] = Rational(d[i]) * s;
+      for (std::size_t i = 0; i < 16; ++i) out.a[i] = Rational(x[i]) * s;
       return out;
     };
     std::vector<Ellipsoid> e3, eb;

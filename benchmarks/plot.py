@@ -1,6 +1,7 @@
-"""Charts for benchmarks/results (doc/performance.md). Usage: plot.py [--edge] RESULTS_DIR
+"""Charts for benchmarks/results (doc/performance.md). Usage: plot.py [--edge | --general] RESULTS_DIR
 
 --edge: only the near-tangency chart, from edge.csv (edge_bench).
+--general: only the general quadrics' near-tangency chart, from general_edge.csv (general_bench --edge).
 """
 import csv
 import json
@@ -55,8 +56,36 @@ def near_tangency(out, colors):
     savefig(fig, f"{out}/near_tangency.png", [f"{out}/edge.csv"])
 
 
-args = [a for a in sys.argv[1:] if a != "--edge"]
+def general_edge(out):
+    """The float decisions' error rates against the nudge 10^-k of a tangency, per type of quadric
+    (general_bench --edge, general_edge.csv)."""
+    rows = list(csv.DictReader(open(f"{out}/general_edge.csv")))
+    types = []
+    for r in rows:
+        if r["type"] not in types:
+            types.append(r["type"])
+    colors = dict(zip(types, plt.cm.tab20.colors[::2] + plt.cm.tab20.colors[1::2]))
+    fig, axes = plt.subplots(1, 2, figsize=(13, 4.8), sharey=True)
+    for ax, col, title in ((axes[0], "pencil_float_wrong", "float decision of the pencil (sign rule in doubles)"),
+                           (axes[1], "wwk_wrong", "Wang–Wang–Kim in doubles (separated or not)")):
+        for t in types:
+            rs = sorted((r for r in rows if r["type"] == t), key=lambda r: int(r["k"]))
+            ax.plot([int(r["k"]) for r in rs], [int(r[col]) / int(r["n"]) for r in rs], marker="o", label=t,
+                    color=colors[t], ls="-" if t == "ellipsoid" else "--", lw=2.2 if t == "ellipsoid" else 1)
+        ax.set_xlabel("k: the tangency nudged by 10^-k")
+        ax.set_title(title)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("error rate (wrong answers)")
+    axes[1].legend(fontsize=7)
+    fig.tight_layout()
+    savefig(fig, f"{out}/general_edge.png", [f"{out}/general_edge.csv"])
+
+
+args = [a for a in sys.argv[1:] if a not in ("--edge", "--general")]
 out = args[0] if args else "benchmarks/results"
+if "--general" in sys.argv:
+    general_edge(out)
+    sys.exit(0)
 if "--edge" in sys.argv:  # only the near-tangency chart (edge_bench's edge.csv)
     near_tangency(out, dict(zip(["naive-double", "long-double", "float128", "mpfr-256", "interval", "exact", "flint",
                                  "adaptive"], plt.cm.tab10.colors)))

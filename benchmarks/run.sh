@@ -5,6 +5,8 @@
 #   benchmarks/run.sh --quick    # smaller family (a), fewer batches
 #   benchmarks/run.sh --scene    # only the scene benchmark (scene_bench, 10^6 bodies)
 #   benchmarks/run.sh --edge     # only the near-tangent benchmark (edge_bench) and its chart
+#   benchmarks/run.sh --general  # general quadrics (general_bench): speed against the float decisions
+#                                # and their error rates near tangency, with its chart
 #   benchmarks/run.sh --ordinary [ordinary_bench options]   # ordinary pairs and relpos batch against
 #                                # the minimal float decision and json.loads, from the installed package
 #   benchmarks/run.sh --regime   # regime_bench: the paper's regime against the naive and minimal float
@@ -121,6 +123,21 @@ if [ "${1:-}" = "--lanes" ]; then
     tee "$OUT/lanes_log.txt"
   [ "${PIPESTATUS[0]}" = 0 ] || exit 1
   /usr/bin/python3 "$ROOT/benchmarks/tables.py" --lanes "$OUT"
+  exit 0
+fi
+# benchmarks/run.sh --general: general_bench (20 000 ellipsoid pairs and 5 000 pairs of every type,
+# 9 rounds) -> benchmarks/results/general_log.txt, then general_bench --edge (the tangencies of every
+# type nudged by 10^-k under 6 congruences each) -> general_edge.csv, general_edge_log.txt and
+# general_edge.png, and its table in doc/performance.md rewritten (tables.py --general). A minute or two.
+if [ "${1:-}" = "--general" ]; then
+  cmake --build "$BUILD" -j2 --target general_bench
+  mkdir -p "$OUT"
+  "$BUILD/benchmarks/general_bench" 20000 9 2>&1 | tee "$OUT/general_log.txt"
+  [ "${PIPESTATUS[0]}" = 0 ] || exit 1
+  "$BUILD/benchmarks/general_bench" --edge "$OUT" 6 2>&1 | tee "$OUT/general_edge_log.txt"
+  [ "${PIPESTATUS[0]}" = 0 ] || exit 1
+  /usr/bin/python3 "$ROOT/benchmarks/plot.py" --general "$OUT"
+  /usr/bin/python3 "$ROOT/benchmarks/tables.py" --general "$OUT"
   exit 0
 fi
 # benchmarks/run.sh --edge: spheres at 2^-k from exact tangencies (a few minutes) ->

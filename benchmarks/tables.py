@@ -3,6 +3,7 @@
 
     /usr/bin/python3 benchmarks/tables.py [RESULTS_DIR]
     /usr/bin/python3 benchmarks/tables.py --edge [RESULTS_DIR]       # "Near tangency", from edge.csv
+    /usr/bin/python3 benchmarks/tables.py --general [RESULTS_DIR]    # "General quadrics", general_edge.csv
     /usr/bin/python3 benchmarks/tables.py --ordinary [RESULTS_DIR]   # "Ordinary pairs ...", see below
 
     /usr/bin/python3 benchmarks/tables.py --python [RESULTS_DIR]     # doc/python.md "Measured", see below
@@ -32,7 +33,8 @@ python = "--python" in args
 regime = "--regime" in args
 lanes = "--lanes" in args
 evidence = "--evidence" in args
-args = [a for a in args if a not in ("--edge", "--ordinary", "--python", "--regime", "--lanes", "--evidence")]
+general = "--general" in args
+args = [a for a in args if a not in ("--edge", "--ordinary", "--python", "--regime", "--lanes", "--evidence", "--general")]
 out = args[0] if args else os.path.join(os.path.dirname(__file__), "results")
 
 # The bars of the ordinary-pairs section: time ratio to the minimal float decision at most this, and
@@ -416,6 +418,33 @@ if lanes:
     lanes_json = os.path.join(out, "lanes.json")
     write_generated([("many pairs", "benchmarks/run.sh --lanes", [lanes_json],
                       lanes_section(json.load(open(lanes_json))))])
+    sys.exit(0)
+
+def general_edge_table(rows):
+    """Error rates of the two float decisions per type and nudge (general_bench --edge)."""
+    ks = sorted({int(r["k"]) for r in rows})
+    types = []
+    for r in rows:
+        if r["type"] not in types:
+            types.append(r["type"])
+    cell = {(r["type"], int(r["k"])): r for r in rows}
+    lines = ["| type (pairs per nudge) | " + " | ".join(f"10^-{k}" for k in ks) + " |", "|---" * (len(ks) + 1) + "|"]
+    for t in types:
+        n = cell[(t, ks[0])]["n"]
+        lines.append(f"| {t} ({n}) | " + " | ".join(
+            f"{int(cell[(t, k)]['pencil_float_wrong']) / int(cell[(t, k)]['n']):.2f} / "
+            f"{int(cell[(t, k)]['wwk_wrong']) / int(cell[(t, k)]['n']):.2f}" for k in ks) + " |")
+    wrong = sum(int(r["relpos_wrong"]) for r in rows)
+    total = sum(int(r["n"]) for r in rows)
+    lines += ["", f"Each cell: the error rate of the float decision of the pencil / of Wang–Wang–Kim in doubles. "
+              f"`decide_position` on the exact matrices: {wrong} wrong of {total}."]
+    return "\n".join(lines)
+
+
+if general:
+    general_csv = os.path.join(out, "general_edge.csv")
+    write_generated([("general near-tangency table", "benchmarks/run.sh --general", [general_csv],
+                      general_edge_table(list(csv.DictReader(open(general_csv)))))])
     sys.exit(0)
 
 if edge:

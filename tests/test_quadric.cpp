@@ -73,6 +73,18 @@ TEST_CASE("classify_quadric: every affine type from its normal form", "[quadric]
   }
 }
 
+TEST_CASE("classify_quadric: the same type at every scale (decided on the primitive integer form)", "[quadric]") {
+  Rational big(1);
+  for (int i = 0; i < 300; ++i) big *= 10;
+  for (const auto& k : all_kinds()) {
+    CAPTURE(k.equation);
+    // Integer forms with a common factor (6, 10^300: each entry, its mirror too, divided once) and
+    // rational ones (10^-300, 7/10^300): the type of each is that of the normal form.
+    for (const Rational& s : {Rational(6), big, Rational(1) / big, Rational(-7) / big, -big * Rational(5, 3)})
+      CHECK(classify_quadric(scaled(k.m, s)) == k.kind);
+  }
+}
+
 TEST_CASE("classify_quadric: the type is invariant under random affine congruences", "[quadric][random]") {
   const std::uint64_t seed = 0x51C0FFEE;
   Rng g(seed);

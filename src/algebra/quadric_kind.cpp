@@ -8,19 +8,24 @@
 #include <string>
 #include <utility>
 
+#include "algebra/integer_form.hpp"
 #include "relpos/error.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos {
 namespace {
 
-int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+template <class NT>
+int sgn(const NT& q) {
+  return q > 0 ? 1 : (q < 0 ? -1 : 0);
+}
 
 /// Determinant of the principal submatrix of q on the given index set (Laplace, n <= 4).
-Rational principal_minor(const Matrix4& q, const int* idx, int n) {
-  if (n == 0) return Rational(1);
+template <class NT, class M>
+NT principal_minor(const M& q, const int* idx, int n) {
+  if (n == 0) return NT(1);
   if (n == 1) return q(idx[0], idx[0]);
-  Rational det(0);
+  NT det(0);
   // expand along the first row of the submatrix
   for (int c = 0; c < n; ++c) {
     int rows[3], cols[3], k = 0;
@@ -28,7 +33,7 @@ Rational principal_minor(const Matrix4& q, const int* idx, int n) {
       if (j != c) cols[k++] = idx[j];
     for (int i = 1; i < n; ++i) rows[i - 1] = idx[i];
     // minor on rows x cols (not principal in general): small explicit cases
-    Rational m;
+    NT m;
     if (n == 2) {
       m = q(rows[0], cols[0]);
     } else if (n == 3) {
@@ -40,23 +45,28 @@ Rational principal_minor(const Matrix4& q, const int* idx, int n) {
               (q(rows[1], cols[0]) * q(rows[2], cols[2]) - q(rows[1], cols[2]) * q(rows[2], cols[0])) +
           q(rows[0], cols[2]) * (q(rows[1], cols[0]) * q(rows[2], cols[1]) - q(rows[1], cols[1]) * q(rows[2], cols[0]));
     }
-    Rational term = q(idx[0], idx[c]) * m;
+    NT term = q(idx[0], idx[c]) * m;
     det += (c % 2 == 0) ? term : -term;
   }
   return det;
 }
 
-/// Inertia (positive, negative) of the leading n x n block of a symmetric matrix. The characteristic
-/// polynomial of a real symmetric matrix has only real roots, so Descartes' rule of signs counts its
-/// positive and negative roots exactly. det(xI - S) = sum_k (-1)^k E_k x^(n-k), E_k the sum of the
-/// k x k principal minors.
-std::pair<int, int> inertia(const Matrix4& q, int n) {
-  std::array<Rational, 5> e{};  // E_0..E_n
+/// Inertia (positive, negative) of the leading n x n block of a symmetric matrix, and its determinant.
+/// The characteristic polynomial of a real symmetric matrix has only real roots, so Descartes' rule
+/// of signs counts its positive and negative roots exactly. det(xI - S) = sum_k (-1)^k E_k x^(n-k),
+/// E_k the sum of the k x k principal minors (E_n the determinant).
+struct Inertia {
+  int positive, negative, det_sign;
+};
+
+template <class NT, class M>
+Inertia inertia(const M& q, int n) {
+  std::array<NT, 5> e{};  // E_0..E_n
   for (int mask = 0; mask < (1 << n); ++mask) {
     int idx[4], k = 0;
     for (int i = 0; i < n; ++i)
       if (mask & (1 << i)) idx[k++] = i;
-    e[static_cast<std::size_t>(k)] += principal_minor(q, idx, k);
+    e[static_cast<std::size_t>(k)] += principal_minor<NT>(q, idx, k);
   }
   auto variations = [&](bool negate_x) {
     int count = 0, last = 0;
@@ -70,12 +80,7 @@ std::pair<int, int> inertia(const Matrix4& q, int n) {
     }
     return count;
   };
-  return {variations(false), variations(true)};
-}
-
-Rational det4(const Matrix4& q) {
-  static const int all[4] = {0, 1, 2, 3};
-  return principal_minor(q, all, 4);
+  return {variations(false), variations(true), sgn(e[static_cast<std::size_t>(n)])};
 }
 
 void require_symmetric(const Matrix4& q) {
@@ -161,14 +166,25 @@ void refuse_as_paraboloid(QuadricKind k) {
 
 QuadricKind classify_quadric(const Matrix4& q) {
   require_symmetric(q);
-  auto [p3, n3] = inertia(q, 3);
-  auto [p4, n4] = inertia(q, 4);
+  // The signs on the matrix's primitive integer form (a positive multiple): products of integers,
+  // no gcd, and a matrix scaled by 10^300 or 10^-300 costs what the unscaled one does.
+  Integer l, g;  // fresh: written through mpz()
+  forms::MatrixOf<Integer> z = forms::integer_form(q, l);
+  for (const Integer& x : z.a)
+    if (mpz_cmp_ui(g.mpz(), 1) != 0) mpz_gcd(g.mpz(), g.mpz(), x.mpz());  // stops at 1, as most do at once
+  if (mpz_cmp_ui(g.mpz(), 1) > 0) {
+    forms::MatrixOf<Integer> w;  // fresh integers (an entry of z may share its value with another)
+    for (std::size_t i = 0; i < 16; ++i) mpz_divexact(w.a[i].mpz(), z.a[i].mpz(), g.mpz());
+    z = w;
+  }
+  const Inertia i3 = inertia<Integer>(z, 3), i4 = inertia<Integer>(z, 4);
+  int p3 = i3.positive, n3 = i3.negative, p4 = i4.positive, n4 = i4.negative;
   if (p3 < n3) {  // orientation does not change the type: normalize to p3 >= n3
     std::swap(p3, n3);
     std::swap(p4, n4);
   }
   const int rank4 = p4 + n4;
-  const int s = sgn(det4(q));
+  const int s = i4.det_sign;
   if (p3 == 3) return s < 0 ? QuadricKind::Ellipsoid : (s > 0 ? QuadricKind::ImaginaryEllipsoid : QuadricKind::Point);
   if (p3 == 2 && n3 == 1)
     return s > 0 ? QuadricKind::HyperboloidOneSheet : (s < 0 ? QuadricKind::HyperboloidTwoSheets : QuadricKind::Cone);

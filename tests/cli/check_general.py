@@ -5,7 +5,8 @@ construction or of the independent oracle, `relpos verify` checks every certific
 tampered ones), `relpos classify --quadric` answers a geometric form as the batch does, and `relpos
 scene --quadric` gives the constructed pairs that share a quadric their positions.
 
-Usage: check_general.py RELPOS GENERATOR [RANDOM]
+Usage: check_general.py RELPOS GENERATOR [RANDOM [SEED [MAPS]]]
+(the self-check at scale, doc/testing.md: RANDOM 10000 and MAPS 8 under a few seeds)
 """
 import json
 from fractions import Fraction
@@ -18,10 +19,11 @@ from pathlib import Path
 def main() -> int:
     relpos, generator = sys.argv[1], sys.argv[2]
     random = sys.argv[3] if len(sys.argv) > 3 else "300"
+    more = sys.argv[4:6]  # the generator's SEED and MAPS
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         cases = Path(tmp) / "general.jsonl"
-        cases.write_text(subprocess.run([generator, random], check=True, capture_output=True, text=True).stdout)
+        cases.write_text(subprocess.run([generator, random] + more, check=True, capture_output=True, text=True).stdout)
         lines = cases.read_text().splitlines()
         for evidence in ("full", "minimal"):
             out = subprocess.run([relpos, "batch", str(cases), "--evidence", evidence], check=True,

@@ -104,14 +104,15 @@ struct Nudged {
   QuadricPosition expected;
 };
 
-inline std::vector<Nudged> nudged_tangencies() {
+/// exponents: the k of 10^-k (general_bench --edge sweeps more of them).
+inline std::vector<Nudged> nudged_tangencies(const std::vector<int>& exponents = {6, 12, 20, 35}) {
   using P = QuadricPosition;
   std::vector<Nudged> out;
   for (const GeneralCase& k : constructed_cases()) {
     if (k.expected != P::TE && k.expected != P::TI && k.expected != P::TO) continue;
     if (k.e(0, 0) != 1 || k.e(1, 1) != 1 || k.e(2, 2) != 1 || k.e(0, 1) != 0 || k.e(0, 2) != 0 || k.e(1, 2) != 0)
       continue;  // balls only: their radius is the knob
-    for (int exponent : {6, 12, 20, 35}) {
+    for (int exponent : exponents) {
       for (int s : {-1, 1}) {
         Rational eps(1);
         for (int i = 0; i < exponent; ++i) eps /= 10;
