@@ -485,7 +485,24 @@ class CertificateError(ValueError):
     """relpos.verify: the certificate does not prove the position (the message says why)."""
 
 
-class Classification(_Answer):
+class _Classified(_Answer):
+    """What every classification carries beside its fields: the meta echoed and the certificate."""
+
+    __slots__ = ()
+
+    @property
+    def meta(self) -> Any:
+        """The meta value given to classify (None when none was)."""
+        return self._fields.get("meta")
+
+    @property
+    def certificate(self) -> Optional[Certificate]:
+        """The certificate (evidence="full"), else None."""
+        c = self._fields.get("certificate")
+        return None if c is None else Certificate(c)
+
+
+class Classification(_Classified):
     """The answer for one pair, with its evidence: the fields of the JSON object `relpos batch` writes.
 
     position ("I", "TI", "C", "TE" or "E", for an ellipsoid of any size), small, contact (True or
@@ -505,17 +522,6 @@ class Classification(_Answer):
     rho = _field("rho", "rho exactly ('p/q') when it is rational, else None.")
 
     @property
-    def meta(self) -> Any:
-        """The meta value given to classify (None when none was)."""
-        return self._fields.get("meta")
-
-    @property
-    def certificate(self) -> Optional[Certificate]:
-        """The certificate (evidence="full"), else None."""
-        c = self._fields.get("certificate")
-        return None if c is None else Certificate(c)
-
-    @property
     def margin(self) -> Optional[Margin]:
         """The margin s* with its proof (classify(..., margin=True)), else None."""
         m = self._fields.get("margin")
@@ -531,7 +537,7 @@ class Classification(_Answer):
         )
 
 
-class QuadricClassification(_Answer):
+class QuadricClassification(_Classified):
     """The answer for an ellipsoid and a relpos.Quadric (doc/quadrics.md): the fields of the JSON object
     `relpos batch` writes for a line with "quadric".
 
@@ -552,17 +558,6 @@ class QuadricClassification(_Answer):
     f = _field("f", "det(Q + t E): exact coefficients ('p/q'), lowest degree first (evidence='full').")
     d = _field("d", "det(B + t M): exact coefficients ('p/q'), lowest degree first (evidence='full').")
     roots = _field("roots", "The distinct real roots of f and d with intervals and multiplicities (evidence='full').")
-
-    @property
-    def meta(self) -> Any:
-        """The meta value given to classify (None when none was)."""
-        return self._fields.get("meta")
-
-    @property
-    def certificate(self) -> Optional[Certificate]:
-        """The certificate (evidence="full"), else None."""
-        c = self._fields.get("certificate")
-        return None if c is None else Certificate(c)
 
     def __repr__(self):
         f = self._fields

@@ -28,6 +28,10 @@ import shutil
 import stat
 import tempfile
 
+# Imported with this module, not on first use: a Ctrl-C during the import of `distributed` (seconds on
+# a loaded machine) would leave it half-initialised in sys.modules and every later call hanging.
+import distributed
+
 from . import _relpos
 
 __all__ = ["batch"]
@@ -144,8 +148,6 @@ def _run(client, submitted, rounds):
     """Wait for the futures of `rounds` (a list per file) and return their results, list by list;
     the first error is raised as soon as its task fails. `submitted` collects every future (for
     cancellation)."""
-    import distributed
-
     flat = [f for per_file in rounds for f in per_file]
     submitted += flat
     for f in distributed.as_completed(flat):
@@ -290,8 +292,6 @@ def _local_client():
     """A client of a local cluster for one call: threads of this process (the work is compiled code
     that releases the GIL), so no process is started and a script without an
     `if __name__ == "__main__":` guard works."""
-    import distributed
-
     cluster = distributed.LocalCluster(processes=False, n_workers=1, threads_per_worker=os.cpu_count() or 1,
                                        dashboard_address=None)
     return distributed.Client(cluster)
@@ -343,8 +343,6 @@ def batch(paths, out_dir, client=None, evidence="full", numbers="exact", contact
                 copy, size = _spool(p, out_dir, temporary)
                 sources.append(copy)
                 sizes.append(size)
-
-        import distributed
 
         if client is None:
             try:
