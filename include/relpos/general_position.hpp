@@ -102,6 +102,6 @@ std::optional<std::string> verify_certificate(const Ellipsoid& e, const Quadric&
 /// The same on raw matrices. E is normalized here by negation (M positive definite); Q by negation
 /// when its 3x3 block has more negative than positive eigenvalues, as Quadric::from_matrix does.
 std::optional<std::string> verify_certificate(const Matrix4& e, const Matrix4& q, QuadricPosition position,
-                                                      const QuadricCertificate& c);
+                                              const QuadricCertificate& c);
 
 }  // namespace relpos

@@ -285,8 +285,8 @@ const char* kind_name(QuadricCertificate::Kind k) {
 
 }  // namespace
 
-std::optional<std::string> verify_certificate(const Matrix4& e_in, const Matrix4& q_in,
-                                                      QuadricPosition position, const QuadricCertificate& c) {
+std::optional<std::string> verify_certificate(const Matrix4& e_in, const Matrix4& q_in, QuadricPosition position,
+                                              const QuadricCertificate& c) {
   Matrix4 e = e_in, q = q_in;
   if (auto r = normalize_ellipsoid(e)) return r;
   if (auto r = normalize_quadric(q)) return r;
