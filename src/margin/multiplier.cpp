@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algebra/between.hpp"
+#include "algebra/flint_poly.hpp"
 #include "algebra/flint_thread.hpp"
 #include "algebra/power_of_two.hpp"
 #include "margin/approximate.hpp"
@@ -63,24 +64,12 @@ std::vector<Integer> square_free(const std::vector<Integer>& p) {
   fmpz_poly_init(q);
   fmpz_poly_init(d);
   fmpz_poly_init(g);
-  fmpz_t z;
-  fmpz_init(z);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    fmpz_set_mpz(z, p[i].mpz());
-    fmpz_poly_set_coeff_fmpz(q, static_cast<slong>(i), z);
-  }
+  to_flint(q, p);
   fmpz_poly_derivative(d, q);
   fmpz_poly_gcd(g, q, d);
   fmpz_poly_div(q, q, g);  // exact: g divides q
   fmpz_poly_primitive_part(q, q);
-  std::vector<Integer> out;
-  for (slong i = 0; i <= fmpz_poly_degree(q); ++i) {
-    fmpz_poly_get_coeff_fmpz(z, q, i);
-    Integer c;  // fresh object: written through its mpz_t
-    fmpz_get_mpz(c.mpz(), z);
-    out.push_back(c);
-  }
-  fmpz_clear(z);
+  std::vector<Integer> out = from_flint(q);
   fmpz_poly_clear(q);
   fmpz_poly_clear(d);
   fmpz_poly_clear(g);
