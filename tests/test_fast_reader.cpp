@@ -527,19 +527,3 @@ TEST_CASE("fast reader: a decimal written as a string is the same number, the sa
     CHECK(fast_ellipsoid(std::string_view(strings).substr(e, p - e), false).has_value());
   }
 }
-
-TEST_CASE("general reader: a ball is the sphere of half its diameter", "[io]") {
-  const std::pair<const char*, const char*> diameter_radius[] = {
-      {"1", "0.5"}, {"0.3", "0.15"}, {"7", "3.5"}, {"1e-30", "5e-31"}};
-  for (const auto& [d, r] : diameter_radius) {
-    const std::string c = R"("center":[0.1,-2,3],)";
-    const Ellipsoid ball =
-        relpos::io::detail::ellipsoid_from_tree(general_json(R"({"ball":{)" + c + R"("diameter":)" + d + "}}", false));
-    const Ellipsoid sphere =
-        relpos::io::detail::ellipsoid_from_tree(general_json(R"({"sphere":{)" + c + R"("radius":)" + r + "}}", false));
-    CHECK(ball.matrix() == sphere.matrix());
-  }
-  CHECK_THROWS_AS(
-      relpos::io::detail::ellipsoid_from_tree(general_json(R"({"ball":{"center":[0,0,0],"radius":1}})", false)),
-      relpos::InputError);
-}

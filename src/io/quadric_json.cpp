@@ -83,17 +83,6 @@ Ellipsoid ellipsoid_from_tree(const Json& v, const std::string& role) {
     Rational r = rational_from_json(required(s, "radius", path), key_path(path, "radius"));
     return with_role(role, [&] { return Ellipsoid::sphere(c, r); });
   }
-  if (v.contains("ball")) {  // a sphere given by its diameter
-    check_keys(v, {"ball"}, role);
-    const std::string path = key_path(role, "ball");
-    const Json& s = v["ball"];
-    if (!s.is_object()) fail(path, "expected an object {\"center\": [x,y,z], \"diameter\": d}, got " + describe(s));
-    check_keys(s, {"center", "centre", "diameter"}, path);
-    auto [cj, cpath] = center_field(s, path);
-    Vector3 c = vector3(*cj, cpath);
-    Rational d = rational_from_json(required(s, "diameter", path), key_path(path, "diameter"));
-    return with_role(role, [&] { return Ellipsoid::sphere(c, d / Rational(2)); });
-  }
   if (v.contains("axes")) {
     check_keys(v, {"center", "centre", "axes", "rotation", "rotation_matrix"}, role);
     auto [cj, cpath] = center_field(v, role);
@@ -116,9 +105,9 @@ Ellipsoid ellipsoid_from_tree(const Json& v, const std::string& role) {
     Matrix3 l = matrix3(v["map"], key_path(role, "map"));
     return with_role(role, [&] { return Ellipsoid::from_map(c, l); });
   }
-  fail(role, "no recognized ellipsoid form in " + key_list(v) +
-                 " (expected a 4x4 array or an object with \"matrix\", \"coefficients\", \"sphere\", \"ball\", "
-                 "\"axes\" or \"map\")");
+  fail(role,
+       "no recognized ellipsoid form in " + key_list(v) +
+           " (expected a 4x4 array or an object with \"matrix\", \"coefficients\", \"sphere\", \"axes\" or \"map\")");
 }
 
 Paraboloid paraboloid_from_tree(const Json& v, const std::string& role) {
