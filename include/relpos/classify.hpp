@@ -36,16 +36,13 @@ enum class Stage : unsigned char {
   Interval,             ///< all signs certified by interval arithmetic
   ExactSigns,           ///< exact integer signs of the same polynomials
   ExactRoots,           ///< exact gcd / square-free factorisation (Disc(f) = 0 or defective sequence)
-  Probe,                ///< a stage that looks at the pair and never settles it (the worked example)
 };
 /// Every stage, in order (tables indexed by Stage take their size from here).
-inline constexpr std::array kAllStages{Stage::InsideCertificate,  Stage::OutsideCertificate,
-                                       Stage::DiscriminantFilter, Stage::StaticDouble,
-                                       Stage::SemiStaticDouble,   Stage::MultipleRootWitness,
-                                       Stage::Interval,           Stage::ExactSigns,
-                                       Stage::ExactRoots,         Stage::Probe};
+inline constexpr std::array kAllStages{Stage::InsideCertificate, Stage::OutsideCertificate, Stage::DiscriminantFilter,
+                                       Stage::StaticDouble,      Stage::SemiStaticDouble,   Stage::MultipleRootWitness,
+                                       Stage::Interval,          Stage::ExactSigns,         Stage::ExactRoots};
 /// "inside-certificate", "outside-certificate", "discriminant-filter", "static-double", "semi-static-double",
-/// "multiple-root-witness", "interval", "exact-signs", "exact-roots", "probe".
+/// "multiple-root-witness", "interval", "exact-signs", "exact-roots".
 std::string to_string(Stage s);
 
 /// The rule that decided (describe() gives the sentence).

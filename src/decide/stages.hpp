@@ -39,7 +39,6 @@ inline constexpr StageRow kStageTable[] = {
     {Stage::ExactSigns, "exact-signs", "exact integer signs", "full-classifier"},
     {Stage::ExactRoots, "exact-roots", "exact factorisation of f: Disc(f) = 0 or a defective Sturm-Habicht sequence",
      "full-classifier"},
-    {Stage::Probe, "probe", "a look at the pair that never settles it", "full-classifier"},
 };
 
 /// The row of a stage (the table is in enum order: checked below).
@@ -78,10 +77,6 @@ struct ExactSignsStage {
   static constexpr Stage id = Stage::ExactSigns;
   static Step run(Climb& c);
 };
-struct ProbeStage {
-  static constexpr Stage id = Stage::Probe;
-  static Step run(Climb& c);
-};
 struct ExactRootsStage {
   static constexpr Stage id = Stage::ExactRoots;
   static Step run(Climb& c);
@@ -92,17 +87,15 @@ template <class... S>
 struct StageList {};
 
 /// The classifier's ladder, in the order the stages run (each only while a needed sign is uncertain).
-using ClassifierLadder = StageList<StaticDoubleStage, ProbeStage, SemiStaticDoubleStage, MultipleRootWitnessStage,
-                                   IntervalStage, ExactSignsStage, ExactRootsStage>;
+using ClassifierLadder = StageList<StaticDoubleStage, SemiStaticDoubleStage, MultipleRootWitnessStage, IntervalStage,
+                                   ExactSignsStage, ExactRootsStage>;
 
 /// The stages of decide_position / classify, in order (a pair classified alone never ends in an early-out).
-inline constexpr std::array kClassifierStages{Stage::StaticDouble,        Stage::Probe,    Stage::SemiStaticDouble,
-                                              Stage::MultipleRootWitness, Stage::Interval, Stage::ExactSigns,
-                                              Stage::ExactRoots};
+inline constexpr std::array kClassifierStages{Stage::StaticDouble, Stage::SemiStaticDouble, Stage::MultipleRootWitness,
+                                              Stage::Interval,     Stage::ExactSigns,       Stage::ExactRoots};
 /// The stages a scene body can end in (scene.hpp), in order: the early-outs, then the classifier's.
-inline constexpr std::array kSceneStages{
-    Stage::InsideCertificate, Stage::OutsideCertificate,  Stage::StaticDouble, Stage::Probe,
-    Stage::SemiStaticDouble,  Stage::MultipleRootWitness, Stage::Interval,     Stage::ExactSigns,
-    Stage::ExactRoots};
+inline constexpr std::array kSceneStages{Stage::InsideCertificate, Stage::OutsideCertificate,  Stage::StaticDouble,
+                                         Stage::SemiStaticDouble,  Stage::MultipleRootWitness, Stage::Interval,
+                                         Stage::ExactSigns,        Stage::ExactRoots};
 
 }  // namespace relpos::detail
