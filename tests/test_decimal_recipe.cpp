@@ -193,6 +193,7 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
   // Mantissas made of a few primes, the radius, the centre and vz often multiples of a's or b's
   // mantissa and a's of b's: the closed forms' reductions then meet the common factors that
   // rational arithmetic cancels (beyond the powers of 2 and 5), and zeros and w = vz - z = 0 occur.
+  // Every other vertex is off the axis (its x and y related numbers too, sometimes the centre's).
   // Compared in lowest terms with rational arithmetic on the constructors' matrices.
   std::mt19937_64 rng(41);
   const std::uint64_t primes[] = {2, 3, 5, 7, 11, 13, 9, 343, 1000003};
@@ -230,6 +231,10 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     const Decimal z = related(rng() % 2 == 0);
     e.n = {related(true), related(false), z, rng() % 3 == 0 ? number(ma, false) : number(mantissa(), false)};
     p.n = {Decimal{}, Decimal{}, trial % 7 == 0 ? z : related(rng() % 2 == 0), number(ma, false), number(mb, false)};
+    if (trial % 2 == 1) {
+      p.n[0] = trial % 5 == 1 ? e.n[0] : related(rng() % 2 == 0);
+      p.n[1] = related(rng() % 2 == 0);
+    }
     INFO(trial);
     REQUIRE(relpos::forms::has_closed_evidence(e, p));
     REQUIRE_FALSE(relpos::forms::has_closed_evidence(p, e));
