@@ -5,7 +5,8 @@
 //     Paraboloid::standard), or the numbers with their orientation, for decimals and for doubles;
 //   - write_integer_form writes integer_form(exact_matrix) and split_scale(l, exact_matrix), factor
 //     for factor (off the axis: a coprime base of the same rest), and only the parts asked for;
-//   - truncated_doubles is truncated_double of each exact entry, for the recipes with closed forms;
+//   - truncated_doubles is truncated_double of each exact entry, for decimal spheres and standard
+//     paraboloids (the vertex anywhere);
 //   - sphere_standard_evidence gives f, s, lambda_s and rho in lowest terms, and S^4 f, S^3 s.
 #include <gmp.h>
 
@@ -152,9 +153,8 @@ TEST_CASE("decimal recipes: exact matrix, integer form and truncated doubles of 
     const bool closed = r.form == DecimalRecipe::Form::Sphere || (r.n[0].m == 0 && r.n[1].m == 0);
     REQUIRE(relpos::detail::has_closed_form(r) == closed);
     relpos::DoubleMatrix4 d;
-    REQUIRE(relpos::detail::truncated_doubles(r, d) == closed);
-    if (closed)
-      for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(m.a[k]));
+    REQUIRE(relpos::detail::truncated_doubles(r, d));  // on and off the axis
+    for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(m.a[k]));
     check_integer_form(r);  // on and off the axis: the numbers' form is the constructor matrix's
   }
 }
