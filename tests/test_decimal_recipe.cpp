@@ -5,8 +5,7 @@
 //     Paraboloid::standard), or the numbers with their orientation, for decimals and for doubles;
 //   - write_integer_form writes integer_form(exact_matrix) and split_scale(l, exact_matrix), factor
 //     for factor (off the axis: a coprime base of the same rest), and only the parts asked for;
-//   - truncated_doubles is truncated_double of each exact entry, for decimal spheres and standard
-//     paraboloids (the vertex anywhere);
+//   - truncated_doubles is truncated_double of each exact entry, for every recipe of decimals;
 //   - sphere_standard_evidence gives f, s, lambda_s and rho in lowest terms, and S^4 f, S^3 s.
 #include <gmp.h>
 
@@ -169,6 +168,9 @@ TEST_CASE("decimal recipes: a matrix with either orientation, and numbers that a
     const relpos::Matrix4 m = relpos::detail::exact_matrix(r);
     for (std::size_t k = 0; k < 16; ++k) REQUIRE(m.a[k] == (r.orientation < 0 ? -value(r.n[k]) : value(r.n[k])));
     REQUIRE_FALSE(relpos::detail::has_closed_form(r));
+    relpos::DoubleMatrix4 d;
+    REQUIRE(relpos::detail::truncated_doubles(r, d));
+    for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(m.a[k]));
     check_integer_form(r);
     // The same form over doubles (--numbers double): (-1)^neg m 2^(e - 53), built exactly.
     DecimalRecipe s = sphere_recipe(rng);
@@ -181,6 +183,7 @@ TEST_CASE("decimal recipes: a matrix with either orientation, and numbers that a
     const auto q = [&](std::size_t k) { return Rational(std::ldexp(static_cast<double>(s.n[k].m), s.n[k].e - 53)); };
     REQUIRE(relpos::detail::exact_matrix(s) == relpos::Ellipsoid::sphere({q(0), q(1), q(2)}, q(3)).matrix());
     REQUIRE_FALSE(relpos::detail::has_closed_form(s));
+    REQUIRE_FALSE(relpos::detail::truncated_doubles(s, d));
     relpos::forms::MatrixOf<Integer> form;
     Integer l;
     relpos::forms::SplitScale split;

@@ -133,7 +133,7 @@ bool has_closed_form(const DecimalRecipe& r) {
 }
 
 bool truncated_doubles(const DecimalRecipe& r, DoubleMatrix4& out) {
-  if (r.doubles || r.form == DecimalRecipe::Form::Matrix) return false;
+  if (r.doubles) return false;
   // Each entry made canonical in one scratch rational (decimal_value() and sphere_constant_value(),
   // as exact() and sphere_constant() make it) and truncated.
   thread_local Rational scratch;  // one per thread, never copied (so written in place): its limbs are kept
@@ -146,6 +146,11 @@ bool truncated_doubles(const DecimalRecipe& r, DoubleMatrix4& out) {
     return forms::truncated_double(scratch);
   };
   const auto& n = r.n;
+  if (r.form == DecimalRecipe::Form::Matrix) {  // the numbers with the orientation (exactly symmetric)
+    for (std::size_t k = 0; k < 16; ++k)
+      out[k] = k % 4 < k / 4 ? out[4 * (k % 4) + k / 4] : decimal(n[k], r.orientation < 0);
+    return true;
+  }
   out.fill(0.0);
   if (r.form == DecimalRecipe::Form::Sphere) {
     out[0] = out[5] = out[10] = 1.0;
