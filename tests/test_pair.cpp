@@ -2,7 +2,7 @@
 // computation of the same quantity -- the generic formulas on the rational matrices, the definitions
 // of the integer forms, the scaled roots of the compact form, lambda_s as a root of s -- for pairs of
 // doubles, of rationals and read from decimal text; each value built once; and the per-thread scratch
-// (recycled.hpp) never showing in a result.
+// (algebra/recycled.hpp) never showing in a result.
 #include <catch2/catch.hpp>
 #include <random>
 #include <relpos/classify.hpp>
@@ -211,16 +211,4 @@ TEST_CASE("pair: the per-thread scratch never shows in a result", "[pair]") {
   }
   for (const Case& k : all) static_cast<void>(relpos::classify(k.e, k.p));
   for (std::size_t i = 0; i < kept.size(); ++i) CHECK(digits(kept[i]) == before[i]);
-}
-
-TEST_CASE("pair: Recycled gives each live handle its own object and reuses a given-back one", "[pair]") {
-  const int* first;
-  {
-    relpos::detail::Recycled<int> a, b;
-    CHECK(&*a != &*b);
-    *a = 7;
-    first = &*a;
-  }
-  relpos::detail::Recycled<int> c, d;
-  CHECK((&*c == first || &*d == first));  // both given back: one of them is the first again
 }

@@ -8,15 +8,14 @@
 // library's business (relpos::io::normalize_line), so a block answered here gives the bytes the CLI
 // writes for the same lines with the same numbers.
 #include <algorithm>
-#include <atomic>
 #include <cstddef>
 #include <relpos/error.hpp>
 #include <relpos/io.hpp>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <vector>
 
+#include "base/worker_pool.hpp"
 #include "io/batch.hpp"
 #include "module.hpp"
 
@@ -74,15 +73,10 @@ std::string answer_block(std::string_view block, long first_line, const relpos::
     return out;
   }
   std::vector<std::string> answers(lines.size());
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < lines.size();)
-      relpos::io::answer_batch_line(lines[i], first_line + static_cast<long>(i), options, answers[i]);
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::min<std::size_t>(threads, lines.size()); ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+  relpos::detail::WorkerPool pool(static_cast<unsigned>(std::min<std::size_t>(threads, lines.size())));
+  pool.run(lines.size(), [&](std::size_t i) {
+    relpos::io::answer_batch_line(lines[i], first_line + static_cast<long>(i), options, answers[i]);
+  });
   for (const std::string& a : answers) out.append(a).push_back('\n');
   return out;
 }
@@ -111,7 +105,8 @@ void bind_batch(py::module_& m) {
       "max_bits"_a = static_cast<long long>(relpos::kMaxNormalizedBits),
       "The output of `relpos batch` for the lines of `data` (whole lines of a JSON Lines file, the first of them "
       "line number `first_line`), as bytes: one answer and '\\n' per line. The options are those of `relpos batch` "
-      "(--evidence, --numbers, --contact-only, --digits, --max-line-bytes, --max-bits); `threads` std::threads answer "
+      "(--evidence, --numbers, --contact-only, --digits, --max-line-bytes, --max-bits); `threads` threads of one "
+      "worker pool answer "
       "the lines.");
 }
 

@@ -19,9 +19,12 @@
 #include <vector>
 
 #include "algebra/pair_size.hpp"
+#include "base/worker_pool.hpp"
 #include "decide/stages.hpp"
 #include "io/general_io.hpp"
 #include "module.hpp"
+#include "scene/chunk_loop.hpp"
+#include "scene/scene_pool.hpp"
 #include "signals.hpp"
 
 namespace relpos_python {
@@ -294,6 +297,49 @@ std::string hint(bool ellipsoid, const std::string& message) {
   return "";
 }
 
+/// Pairs per work item of decide_positions: a thread takes 64 pairs at a time.
+constexpr std::size_t kChunk = 64;
+
+/// The error a decide_positions call raises: the lowest index's, whichever thread meets it first.
+class FirstError {
+ public:
+  /// Keeps message() for pair i if no lower pair has failed (message is called only then).
+  template <class Message>
+  void offer(std::size_t i, const Message& message) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (i >= index_) return;
+    index_ = i;
+    text_ = message();
+  }
+  const std::string& text() const { return text_; }
+
+ private:
+  std::mutex mutex_;
+  std::size_t index_ = std::numeric_limits<std::size_t>::max();
+  std::string text_;
+};
+
+/// chunk(begin, end) for the chunks of kChunk pairs of [0, n), on `threads` threads (0: every core;
+/// at most one per chunk) of one worker pool (src/base/worker_pool.hpp); the calling thread polls
+/// Python's signals between its chunks, and every thread stops at its next chunk once one arrived.
+/// The caller releases the GIL.
+template <class Chunk>
+void in_chunks(std::size_t n, unsigned threads, SignalWatch& watch, const Chunk& chunk) {
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  unsigned workers = threads > 0 ? threads : std::thread::hardware_concurrency();
+  workers = static_cast<unsigned>(std::clamp<std::size_t>(workers, 1, std::max<std::size_t>(1, chunks)));
+  std::atomic<std::size_t> next{0};
+  relpos::detail::WorkerPool pool(workers);
+  pool.run_on_each([&](unsigned w) {
+    for (;;) {
+      if (w == 0 ? watch.poll() : watch.stopped()) return;
+      const std::size_t begin = next.fetch_add(kChunk);
+      if (begin >= n) return;
+      chunk(begin, std::min(n, begin + kChunk));
+    }
+  });
+}
+
 py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input, unsigned threads, bool raise_errors,
                                           bool upper, std::size_t max_bits) {
   const relpos::SizeLimit limit{max_bits};
@@ -308,8 +354,8 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
   std::int8_t* codes = out.mutable_data();
 
   std::optional<relpos::Paraboloid> shared;
-  std::size_t error_index = std::numeric_limits<std::size_t>::max();
-  std::string error_message;
+  std::string error_message;  // the shared paraboloid's, else first_error's
+  FirstError first_error;
   SignalWatch watch;  // Ctrl-C: the calling thread polls between its chunks, every thread stops
   {
     py::gil_scoped_release release;
@@ -322,77 +368,59 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
       }
     }
     if (error_message.empty() && n > 0) {
-      unsigned workers = threads > 0 ? threads : std::thread::hardware_concurrency();
-      constexpr std::size_t kChunk = 64;
-      const std::size_t chunks = (n + kChunk - 1) / kChunk;
-      workers = static_cast<unsigned>(std::clamp<std::size_t>(workers, 1, chunks));
-      std::atomic<std::size_t> next{0};
-      std::mutex error_mutex;
       // float64 matrices read whole (not symmetrize='upper'): decided in lanes across pairs.
       const bool lanes = !upper && e_side.doubles() && p_side.doubles();
-      auto work = [&](bool caller) {
-        std::vector<double> shared_p;  // the one paraboloid's doubles, once for each pair of a chunk
-        if (lanes && shared)
-          for (std::size_t k = 0; k < kChunk; ++k)
-            shared_p.insert(shared_p.end(), p_side.doubles(), p_side.doubles() + 16);
-        for (;;) {
-          if (caller ? watch.poll() : watch.stopped()) return;
-          const std::size_t begin = next.fetch_add(kChunk);
-          if (begin >= n) return;
-          const std::size_t end = std::min(n, begin + kChunk);
-          // float64 matrices: decided in lanes (decide_positions: decide_position's positions); a pair
-          // it refuses is asked again below, which words its error.
-          std::array<relpos::PairStatus, kChunk> status;
-          status.fill(relpos::PairStatus::InvalidEllipsoid);
-          if (lanes) {
-            std::array<relpos::Position, kChunk> positions;
-            relpos::decide_positions(e_side.doubles() + 16 * begin,
-                                     shared ? shared_p.data() : p_side.doubles() + 16 * begin, end - begin,
-                                     positions.data(), status.data());
-            for (std::size_t i = begin; i < end; ++i)
-              if (status[i - begin] == relpos::PairStatus::Decided) codes[i] = position_code(positions[i - begin]);
-          }
-          for (std::size_t i = begin; i < end; ++i) {
-            if (status[i - begin] == relpos::PairStatus::Decided) continue;
-            const char* failed = "E";
-            if (!shared && e_side.doubles() && p_side.doubles()) {
-              // Both float64: the one-call decision (the shapes' last signs read off the pencil). An
-              // error is asked again of the two steps below, which say which matrix it is.
-              try {
-                codes[i] = position_code(
-                    relpos::decide_position(e_side.matrices->doubles_at(i), p_side.matrices->doubles_at(i)).position);
-                continue;
-              } catch (const std::exception&) {
-              }
-            }
+      std::vector<double> shared_p;  // the one paraboloid's doubles, once for each pair of a chunk
+      if (lanes && shared)
+        for (std::size_t k = 0; k < kChunk; ++k)
+          shared_p.insert(shared_p.end(), p_side.doubles(), p_side.doubles() + 16);
+      in_chunks(n, threads, watch, [&](std::size_t begin, std::size_t end) {
+        // float64 matrices: decided in lanes (decide_positions: decide_position's positions); a pair
+        // it refuses is asked again below, which words its error.
+        std::array<relpos::PairStatus, kChunk> status;
+        status.fill(relpos::PairStatus::InvalidEllipsoid);
+        if (lanes) {
+          std::array<relpos::Position, kChunk> positions;
+          relpos::decide_positions(e_side.doubles() + 16 * begin,
+                                   shared ? shared_p.data() : p_side.doubles() + 16 * begin, end - begin,
+                                   positions.data(), status.data());
+          for (std::size_t i = begin; i < end; ++i)
+            if (status[i - begin] == relpos::PairStatus::Decided) codes[i] = position_code(positions[i - begin]);
+        }
+        for (std::size_t i = begin; i < end; ++i) {
+          if (status[i - begin] == relpos::PairStatus::Decided) continue;
+          const char* failed = "E";
+          if (!shared && e_side.doubles() && p_side.doubles()) {
+            // Both float64: the one-call decision (the shapes' last signs read off the pencil). An
+            // error is asked again of the two steps below, which say which matrix it is.
             try {
-              const relpos::Ellipsoid e = e_side.ellipsoid(i);
-              if (shared) {
-                codes[i] = position_code(relpos::decide_position(e, *shared, limit).position);
-              } else {
-                failed = "P";
-                codes[i] = position_code(relpos::decide_position(e, p_side.paraboloid(i), limit).position);
-              }
-            } catch (const std::exception& err) {
-              codes[i] = kInvalid;
-              if (!raise_errors) continue;
-              const std::lock_guard<std::mutex> lock(error_mutex);
-              if (i < error_index) {
-                error_index = i;
-                const bool is_e = failed[0] == 'E';
-                const bool matrix = is_e ? e_side.matrices.has_value() : p_side.matrices.has_value();
-                error_message = std::string(failed) + "[" + std::to_string(i) +
-                                "]: " + (is_e ? "ellipsoid: " : "paraboloid: ") + err.what() +
-                                (matrix ? hint(is_e, err.what()) : "");
-              }
+              codes[i] = position_code(
+                  relpos::decide_position(e_side.matrices->doubles_at(i), p_side.matrices->doubles_at(i)).position);
+              continue;
+            } catch (const std::exception&) {
             }
+          }
+          try {
+            const relpos::Ellipsoid e = e_side.ellipsoid(i);
+            if (shared) {
+              codes[i] = position_code(relpos::decide_position(e, *shared, limit).position);
+            } else {
+              failed = "P";
+              codes[i] = position_code(relpos::decide_position(e, p_side.paraboloid(i), limit).position);
+            }
+          } catch (const std::exception& err) {
+            codes[i] = kInvalid;
+            if (!raise_errors) continue;
+            first_error.offer(i, [&] {
+              const bool is_e = failed[0] == 'E';
+              const bool matrix = is_e ? e_side.matrices.has_value() : p_side.matrices.has_value();
+              return std::string(failed) + "[" + std::to_string(i) + "]: " + (is_e ? "ellipsoid: " : "paraboloid: ") +
+                     err.what() + (matrix ? hint(is_e, err.what()) : "");
+            });
           }
         }
-      };
-      std::vector<std::thread> pool;
-      for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work, false);
-      work(true);
-      for (auto& t : pool) t.join();
+      });
+      error_message = first_error.text();
     }
   }
   watch.raise_if_stopped();
@@ -414,47 +442,29 @@ py::array_t<std::int8_t> decide_positions_quadric(py::handle e_input, const relp
   py::array_t<std::int8_t> out(static_cast<py::ssize_t>(n));
   std::int8_t* codes = out.mutable_data();
   const relpos::io::GeneralPairSize size(q);  // the quadric's size once
-  std::size_t error_index = std::numeric_limits<std::size_t>::max();
-  std::string error_message;
+  FirstError first_error;
   SignalWatch watch;  // Ctrl-C: the calling thread polls between its chunks, every thread stops
   {
     py::gil_scoped_release release;
-    constexpr std::size_t kChunk = 64;
-    const std::size_t chunks = (n + kChunk - 1) / kChunk;
-    unsigned workers = threads > 0 ? threads : std::thread::hardware_concurrency();
-    workers = static_cast<unsigned>(std::clamp<std::size_t>(workers, 1, std::max<std::size_t>(1, chunks)));
-    std::atomic<std::size_t> next{0};
-    std::mutex error_mutex;
-    auto work = [&](bool caller) {
-      for (;;) {
-        if (caller ? watch.poll() : watch.stopped()) return;
-        const std::size_t begin = next.fetch_add(kChunk);
-        if (begin >= n) return;
-        for (std::size_t i = begin; i < std::min(n, begin + kChunk); ++i) {
-          try {
-            const relpos::Ellipsoid e = e_side.ellipsoid(i);
-            size.check(e);
-            codes[i] = static_cast<std::int8_t>(relpos::decide_position(e, q).position);
-          } catch (const std::exception& err) {
-            codes[i] = kInvalid;
-            if (!raise_errors) continue;
-            const std::lock_guard<std::mutex> lock(error_mutex);
-            if (i < error_index) {
-              error_index = i;
-              error_message = "E[" + std::to_string(i) + "]: ellipsoid: " + err.what() +
-                              (e_side.matrices ? hint(true, err.what()) : "");
-            }
-          }
+    in_chunks(n, threads, watch, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        try {
+          const relpos::Ellipsoid e = e_side.ellipsoid(i);
+          size.check(e);
+          codes[i] = static_cast<std::int8_t>(relpos::decide_position(e, q).position);
+        } catch (const std::exception& err) {
+          codes[i] = kInvalid;
+          if (!raise_errors) continue;
+          first_error.offer(i, [&] {
+            return "E[" + std::to_string(i) + "]: ellipsoid: " + err.what() +
+                   (e_side.matrices ? hint(true, err.what()) : "");
+          });
         }
       }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work, false);
-    work(true);
-    for (auto& t : pool) t.join();
+    });
   }
   watch.raise_if_stopped();
-  if (raise_errors && !error_message.empty()) throw relpos::InputError(error_message);
+  if (raise_errors && !first_error.text().empty()) throw relpos::InputError(first_error.text());
   return out;
 }
 
@@ -534,11 +544,13 @@ py::tuple scene(const relpos::Paraboloid& p, py::handle bodies, unsigned threads
     py::gil_scoped_release release;
     check_body_sizes(p, e, options.size_limit, watch);
     const relpos::Scene prepared(p);
+    // One pool for every piece, as relpos scene keeps one for its blocks (src/scene/scene_pool.hpp).
+    relpos::detail::WorkerPool pool(relpos::detail::scene_threads(options, n));
     std::size_t piece = 4096;
     for (std::size_t begin = 0; begin < n && !watch.poll();) {
       const std::size_t count = std::min(piece, n - begin);
       const auto start = std::chrono::steady_clock::now();
-      relpos::SceneResult r = prepared.classify(e.data() + begin, count, options);
+      relpos::SceneResult r = relpos::detail::SceneAccess::classify(prepared, e.data() + begin, count, options, pool);
       const auto took = std::chrono::steady_clock::now() - start;
       if (took < std::chrono::milliseconds(20) && piece < (std::size_t(1) << 20)) piece *= 2;
       if (took > std::chrono::milliseconds(100) && piece > 64) piece /= 2;

@@ -1,10 +1,9 @@
-// Per-thread recycling of GMP's small blocks (include/relpos/numbers.hpp, install_gmp_block_cache).
-//
-// Written by hand because no Debian-packaged allocator fits: the exact stages and the full evidence
-// allocate and free millions of limb arrays of a few sizes, and glibc's per-thread cache keeps
-// only 7 blocks per size, so most frees go through its locked bins (a tenth of a decimal batch
-// line; doc/performance.md). GMP passes the size to free and realloc, so a cache keyed on the
-// exact size needs no header and never hands a block to a request larger than the block.
+// Per-thread recycling of GMP's small blocks (include/relpos/numbers.hpp, install_gmp_block_cache):
+// the second home of relpos's one memory strategy, recycle per thread (doc/performance.md, "Memory:
+// one strategy", with the A/B against glibc, jemalloc and mimalloc). Whole integers are given back
+// to the free list (recycled.hpp); the limbs of the numbers no object keeps (CGAL's handles, the
+// evidence's rationals) come here. GMP passes the size to free and realloc, so a cache keyed on
+// the exact size needs no header and never hands a block to a request larger than the block.
 #include <gmp.h>
 
 #include <cstdlib>

@@ -1,14 +1,12 @@
 // PooledInteger: an exact integer (GMP mpz) for the exact-sign stage whose temporaries cost no heap
-// allocation once the pool is warm.
+// allocation once the thread is warm.
 //
-// Why by hand: the generic formulas (pencil.hpp, sturm.hpp, smallness.hpp) create a few hundred
-// temporaries per pair. With CGAL::Gmpz each one allocates a reference-counted handle and its limbs
-// and frees them again; on the 100- to 3000-bit numbers of the exact stage that malloc/free traffic,
-// not the arithmetic, was most of the time (measured: about 40 % in malloc/free alone, more in a
-// process whose heap is fragmented by a million stored bodies). GMP offers no allocation-free
-// temporaries, and setting its memory functions would change them for the whole process. Here
-// every PooledInteger takes an initialised mpz_t from a thread-local free list and gives it back on
-// destruction, limbs included, so a warm pool serves the whole evaluation without malloc.
+// The generic formulas (pencil.hpp, sturm.hpp, smallness.hpp) create a few hundred temporaries per
+// pair; with CGAL::Gmpz each one allocates a reference-counted handle and its limbs and frees them
+// again, and on the 100- to 3000-bit numbers of the exact stage that traffic, not the arithmetic,
+// was most of the time. Here every PooledInteger takes an initialised mpz_t, limbs included, from
+// the thread's free list (algebra/recycled.hpp, the one strategy: doc/performance.md, "Memory: one
+// strategy") and gives it back on destruction.
 //
 // Value semantics, ring operations and sign only: what the generic formulas need. Objects must be
 // destroyed on the thread that created them (the exact stage uses them inside one call).
@@ -16,9 +14,11 @@
 
 #include <gmp.h>
 
+#include <memory>
+#include <type_traits>
 #include <utility>
-#include <vector>
 
+#include "algebra/recycled.hpp"
 #include "algebra/sturm.hpp"
 #include "relpos/numbers.hpp"
 
@@ -124,32 +124,17 @@ class PooledInteger {
   struct Raw {};
   explicit PooledInteger(Raw) : z_(take()) {}  // value unspecified: the caller overwrites it
 
-  /// The thread's free list of initialised mpz_t (their limbs kept), cleared at thread exit.
-  struct Pool {
-    std::vector<mpz_ptr> free;
-    ~Pool() {
-      for (mpz_ptr z : free) {
-        mpz_clear(z);
-        delete z;
-      }
-    }
+  /// An initialised mpz_t, its limbs kept while it waits on the free list.
+  struct Mpz {
+    __mpz_struct z;  // first member: &z and the Mpz share their address
+    Mpz() { mpz_init(&z); }
+    ~Mpz() { mpz_clear(&z); }
+    Mpz(const Mpz&) = delete;
+    Mpz& operator=(const Mpz&) = delete;
   };
-  static Pool& pool() {
-    thread_local Pool p;
-    return p;
-  }
-  static mpz_ptr take() {
-    Pool& p = pool();
-    if (p.free.empty()) {
-      mpz_ptr z = new __mpz_struct;
-      mpz_init(z);
-      return z;
-    }
-    mpz_ptr z = p.free.back();
-    p.free.pop_back();
-    return z;
-  }
-  static void give(mpz_ptr z) { pool().free.push_back(z); }
+  static_assert(std::is_standard_layout_v<Mpz>, "an Mpz pointer and its z pointer are interconvertible");
+  static mpz_ptr take() { return &detail::Recycled<Mpz>::take().release()->z; }
+  static void give(mpz_ptr z) { detail::Recycled<Mpz>::give(std::unique_ptr<Mpz>(reinterpret_cast<Mpz*>(z))); }
 
   mpz_ptr z_;
 };

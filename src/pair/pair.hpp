@@ -13,13 +13,13 @@
 
 #include "algebra/double_sign.hpp"
 #include "algebra/forms.hpp"
+#include "algebra/recycled.hpp"
 #include "algebra/roots.hpp"
 #include "anysize/exact.hpp"
 #include "pair/compact_pencil.hpp"
 #include "pair/evidence_pencil.hpp"
 #include "pair/integer_poly.hpp"
 #include "pair/point_form.hpp"
-#include "pair/recycled.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos::detail {

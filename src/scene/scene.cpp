@@ -16,6 +16,7 @@
 #include "decide/many_pairs.hpp"
 #include "filters/running_bound.hpp"
 #include "scene/certificates.hpp"
+#include "scene/chunk_loop.hpp"
 #include "scene/scene_pool.hpp"
 
 namespace relpos {
@@ -387,11 +388,8 @@ SceneVerdict Scene::classify(const Ellipsoid& e) const {
 
 SceneResult Scene::classify(const Ellipsoid* bodies, std::size_t count, const SceneOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
-  const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
-  unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
-  threads =
-      static_cast<unsigned>(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, (count + chunk - 1) / chunk)));
-  detail::WorkerPool pool(threads);  // fewer threads when one cannot start: the others do its work
+  detail::WorkerPool pool(
+      detail::scene_threads(options, count));  // fewer threads when one cannot start: the others do its work
   SceneResult result = detail::SceneAccess::classify(*this, bodies, count, options, pool);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -402,44 +400,21 @@ SceneResult detail::SceneAccess::classify(const Scene& scene, const Ellipsoid* b
   const auto start = std::chrono::steady_clock::now();
   SceneResult result;
   result.verdicts.resize(count);
-  const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
-  const std::size_t chunks = (count + chunk - 1) / chunk;
-  const unsigned threads = pool.threads();
-
-  std::atomic<std::size_t> next{0};
-  std::vector<SceneCounts> counts(threads);
-  std::vector<std::exception_ptr> errors(threads);
   SceneVerdict* out = result.verdicts.data();
   const Scene::PreparedParaboloid& prepared = *scene.prepared_;
   const Paraboloid& p = scene.p_;
-
-  auto work = [&](unsigned w) {
-    SceneCounts local;  // per thread, merged once at the end (no shared cache lines while counting)
-    try {
-      std::vector<std::size_t> pending;
-      pending.reserve(chunk);
-      std::vector<Verdict> decided;
-      for (;;) {
-        const std::size_t c = next.fetch_add(1, std::memory_order_relaxed);
-        if (c >= chunks) break;
-        const std::size_t lo = c * chunk, hi = std::min(count, lo + chunk);
-        classify_chunk(prepared, p, bodies, lo, hi, options, out, pending, decided);
-        for (std::size_t i = lo; i < hi; ++i) local.add(out[i]);
-        if (options.progress) options.progress->fetch_add(hi - lo, std::memory_order_relaxed);
-      }
-    } catch (...) {
-      errors[w] = std::current_exception();
-      next.store(chunks, std::memory_order_relaxed);  // the others stop after their chunk
-    }
-    counts[w] = local;
+  struct State {
+    SceneCounts counts;
+    std::vector<std::size_t> pending;  // a chunk's bodies the early-outs leave open, kept for the next chunk
+    std::vector<Verdict> decided;
   };
-
-  // The pool's threads that have bodies to take: at most one per chunk (the others find none).
-  result.threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, chunks)));
-  pool.run_on_each(work);
-  for (const auto& err : errors)
-    if (err) std::rethrow_exception(err);
-  for (const auto& c : counts) result.counts.merge(c);
+  const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
+  result.threads =
+      classify_in_chunks<State>(pool, count, options, result.counts, [&](State& s, std::size_t lo, std::size_t hi) {
+        s.pending.reserve(chunk);
+        classify_chunk(prepared, p, bodies, lo, hi, options, out, s.pending, s.decided);
+        for (std::size_t i = lo; i < hi; ++i) s.counts.add(out[i]);
+      });
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
