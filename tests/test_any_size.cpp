@@ -33,11 +33,12 @@ using relpos::Position;
 using relpos::Rational;
 using relpos::Vector3;
 using relpos::testing::LargeCase;
+using rt::form_value;
 using rt::Q;
 
 namespace {
 
-std::uint64_t run_seed() {
+std::uint64_t any_size_seed() {
   static const std::uint64_t seed = relpos::testing::announced_seed("test_any_size", 20250111ULL);
   return seed;
 }
@@ -47,7 +48,7 @@ const std::vector<LargeCase>& corpus() {
   static const std::vector<LargeCase> all = [] {
     std::vector<LargeCase> out = relpos::testing::large_cases();
     const std::size_t n = out.size();
-    rt::Rng g(run_seed());
+    rt::Rng g(any_size_seed());
     for (std::size_t i = 0; i < n; ++i) {
       // Under AddressSanitizer one copy per case, rigid and affine in turn (support/scale.hpp).
       if (relpos::testing::kSanitizerShare == 1 || i % 2 == 0)
@@ -72,14 +73,6 @@ std::string secular_or_error(const LargeCase& c, std::optional<Position>& got, b
   }
 }
 
-Rational xtqx(const Matrix4& q, const Vector3& x) {
-  const Rational v[4] = {x[0], x[1], x[2], Rational(1)};
-  Rational s(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) s += v[i] * q(i, j) * v[j];
-  return s;
-}
-
 // ---- sampling in long double --------------------------------------------------------------------
 
 struct SampleResult {
@@ -95,7 +88,7 @@ SampleResult sample(const LargeCase& c, std::mt19937_64& gen, int n) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) m(i, j) = em(i, j);
   const Vector3 centre = rt::solve3(m, {-em(0, 3), -em(1, 3), -em(2, 3)});
-  const Rational kappa = -xtqx(em, centre);  // X^T E X at the centre = -kappa
+  const Rational kappa = -form_value(em, centre);  // X^T E X at the centre = -kappa
   REQUIRE(kappa > 0);
   long double M[3][3], L[3][3] = {}, P[4][4], ctr[3];
   for (int i = 0; i < 3; ++i) {
@@ -171,9 +164,9 @@ TEST_CASE("the secular polynomial is D^2 e(x(t)) (one case, exact rational t)", 
       const Rational D = f.eval(sp.D, {t, Rational(0)}).u, S = f.eval(sp.S, {t, Rational(0)}).u;
       const Rational F = f.eval(sp.F, {t, Rational(0)}).u;
       CHECK(D == det);
-      CHECK(S == D * D * xtqx(em, x));
+      CHECK(S == D * D * form_value(em, x));
       // R = F / D = p(x) + t e(x).
-      CHECK(F / D == xtqx(pm, x) + t * xtqx(em, x));
+      CHECK(F / D == form_value(pm, x) + t * form_value(em, x));
     }
   }
 }
@@ -200,7 +193,7 @@ TEST_CASE("second method gives the constructed answer", "[secular]") {
 }
 
 TEST_CASE("sampling agrees with the constructed answer", "[sampling]") {
-  std::mt19937_64 gen(run_seed());
+  std::mt19937_64 gen(any_size_seed());
   const auto base = relpos::testing::large_cases();
   int contact_checks = 0;
   for (const LargeCase& c : base) {
@@ -210,8 +203,8 @@ TEST_CASE("sampling agrees with the constructed answer", "[sampling]") {
                           << "], tolerance " << static_cast<double>(sampled.tol));
     SampleResult s = sampled;
     for (const Vector3& w : c.witnesses) {
-      REQUIRE(xtqx(c.e.matrix(), w) < 0);
-      const Rational pw = xtqx(c.p.matrix(), w);
+      REQUIRE(form_value(c.e.matrix(), w) < 0);
+      const Rational pw = form_value(c.p.matrix(), w);
       const long double v = static_cast<long double>(CGAL::to_double(pw));
       INFO("witness p = " << relpos::to_decimal(pw, 6));
       CHECK(pw != 0);
@@ -236,8 +229,8 @@ TEST_CASE("sampling agrees with the constructed answer", "[sampling]") {
     }
     // Exact contact points: on both surfaces.
     for (const Vector3& pt : c.contacts) {
-      CHECK(xtqx(c.e.matrix(), pt) == 0);
-      CHECK(xtqx(c.p.matrix(), pt) == 0);
+      CHECK(form_value(c.e.matrix(), pt) == 0);
+      CHECK(form_value(c.p.matrix(), pt) == 0);
       ++contact_checks;
     }
   }
@@ -287,7 +280,7 @@ TEST_CASE("classifier gives the constructed answer on any size", "[anysize]") {
 }
 
 TEST_CASE("2000 random general pairs", "[anysize][random]") {
-  rt::Rng g(run_seed() ^ 0xA11517E5ULL);
+  rt::Rng g(any_size_seed() ^ 0xA11517E5ULL);
   CAPTURE(g.seed);
   std::map<std::string, int> histogram;
   int mismatches = 0, errors = 0, definite_mismatches = 0;

@@ -37,12 +37,12 @@ using relpos::io::detail::Json;
 
 namespace {
 
-Rational q(long n, long d = 1) { return Rational(n, d); }
+Rational rat(long n, long d = 1) { return Rational(n, d); }
 
 /// z = x^2 + y^2 (Paraboloid::standard({0,0,0}, 1, 1)).
-Paraboloid cup() { return Paraboloid::standard({q(0), q(0), q(0)}, q(1), q(1)); }
+Paraboloid cup() { return Paraboloid::standard({rat(0), rat(0), rat(0)}, rat(1), rat(1)); }
 
-Ellipsoid sphere(const Rational& cz, const Rational& r) { return Ellipsoid::sphere({q(0), q(0), cz}, r); }
+Ellipsoid sphere(const Rational& cz, const Rational& r) { return Ellipsoid::sphere({rat(0), rat(0), cz}, r); }
 
 Certificate definite(const Rational& lambda) {
   Certificate c;
@@ -72,7 +72,7 @@ QuadraticNumber qn(const Rational& a, const Rational& b = Rational(0)) { return 
 /// The first lambda = k/8, k = 1..200 (times `sign`) that the verifier accepts for `position`.
 std::optional<Rational> scan_lambda(const Ellipsoid& e, const Paraboloid& p, Position position, int sign) {
   for (long k = 1; k <= 200; ++k) {
-    const Rational lambda = q(sign * k, 8);
+    const Rational lambda = rat(sign * k, 8);
     if (!relpos::verify_certificate(e, p, position, definite(lambda))) return lambda;
   }
   return std::nullopt;
@@ -106,10 +106,10 @@ Certificate circle_certificate() {
   Certificate c;
   c.kind = Kind::HardTangent;
   c.d = 0;
-  c.lambda_q = qn(q(-1));
-  c.centre = {qn(q(0)), qn(q(0)), qn(q(3, 4))};
-  c.directions = {{qn(q(1)), qn(q(0)), qn(q(0))}, {qn(q(0)), qn(q(1)), qn(q(0))}};
-  c.radius2 = qn(q(3, 4));
+  c.lambda_q = qn(rat(-1));
+  c.centre = {qn(rat(0)), qn(rat(0)), qn(rat(3, 4))};
+  c.directions = {{qn(rat(1)), qn(rat(0)), qn(rat(0))}, {qn(rat(0)), qn(rat(1)), qn(rat(0))}};
+  c.radius2 = qn(rat(3, 4));
   return c;
 }
 
@@ -160,30 +160,30 @@ Certificate round_trip(const Certificate& c) {
 TEST_CASE("Q(sqrt d) signs are exact", "[certificate]") {
   using relpos::Integer;
   using relpos::quadratic_sign;
-  CHECK(quadratic_sign(qn(q(1), q(-1)), Integer(2)) == -1);  // 1 - sqrt 2
-  CHECK(quadratic_sign(qn(q(3), q(-2)), Integer(2)) == 1);   // 3 - 2 sqrt 2 = 0.17...
-  CHECK(quadratic_sign(qn(q(-3), q(2)), Integer(2)) == -1);
-  CHECK(quadratic_sign(qn(q(0), q(0)), Integer(5)) == 0);
-  CHECK(quadratic_sign(qn(q(2), q(-1)), Integer(4)) == 0);  // 2 - sqrt 4
-  CHECK(quadratic_sign(qn(q(0), q(-1, 3)), Integer(7)) == -1);
-  CHECK(quadratic_sign(qn(q(-5), q(0)), Integer(7)) == -1);
-  CHECK(quadratic_sign(qn(q(1), q(1)), Integer(3)) == 1);
-  CHECK(quadratic_sign(qn(q(-1), q(5)), Integer(0)) == -1);  // d = 0: sqrt d = 0
+  CHECK(quadratic_sign(qn(rat(1), rat(-1)), Integer(2)) == -1);  // 1 - sqrt 2
+  CHECK(quadratic_sign(qn(rat(3), rat(-2)), Integer(2)) == 1);   // 3 - 2 sqrt 2 = 0.17...
+  CHECK(quadratic_sign(qn(rat(-3), rat(2)), Integer(2)) == -1);
+  CHECK(quadratic_sign(qn(rat(0), rat(0)), Integer(5)) == 0);
+  CHECK(quadratic_sign(qn(rat(2), rat(-1)), Integer(4)) == 0);  // 2 - sqrt 4
+  CHECK(quadratic_sign(qn(rat(0), rat(-1, 3)), Integer(7)) == -1);
+  CHECK(quadratic_sign(qn(rat(-5), rat(0)), Integer(7)) == -1);
+  CHECK(quadratic_sign(qn(rat(1), rat(1)), Integer(3)) == 1);
+  CHECK(quadratic_sign(qn(rat(-1), rat(5)), Integer(0)) == -1);  // d = 0: sqrt d = 0
   // 99/70 is just above sqrt 2, 140/99 just below.
-  CHECK(quadratic_sign(qn(q(99, 70), q(-1)), Integer(2)) == 1);
-  CHECK(quadratic_sign(qn(q(140, 99), q(-1)), Integer(2)) == -1);
+  CHECK(quadratic_sign(qn(rat(99, 70), rat(-1)), Integer(2)) == 1);
+  CHECK(quadratic_sign(qn(rat(140, 99), rat(-1)), Integer(2)) == -1);
 }
 
 TEST_CASE("E: unit sphere at (0,0,-3) below the cup", "[certificate]") {
-  const Ellipsoid e = sphere(q(-3), q(1));
+  const Ellipsoid e = sphere(rat(-3), rat(1));
   const Paraboloid p = cup();
   const auto lambda = scan_lambda(e, p, Position::E, 1);
   REQUIRE(lambda);
-  CHECK(pencil_pd(q(-3), q(1), *lambda));              // hand formula agrees
-  CHECK(accepted(e, p, Position::E, definite(q(2))));  // 1 + 2 > 0, 8 - 4 > 0
-  require_rejected(e, p, Position::E, definite(q(0)), "must be > 0");
-  require_rejected(e, p, Position::E, definite(q(-1, 2)), "must be > 0");
-  require_rejected(e, p, Position::E, definite(q(1000)), "not positive definite");
+  CHECK(pencil_pd(rat(-3), rat(1), *lambda));            // hand formula agrees
+  CHECK(accepted(e, p, Position::E, definite(rat(2))));  // 1 + 2 > 0, 8 - 4 > 0
+  require_rejected(e, p, Position::E, definite(rat(0)), "must be > 0");
+  require_rejected(e, p, Position::E, definite(rat(-1, 2)), "must be > 0");
+  require_rejected(e, p, Position::E, definite(rat(1000)), "not positive definite");
   require_rejected(e, p, Position::I, definite(*lambda), "must be < 0");
   // Wrong kinds and positions.
   require_rejected(e, p, Position::TE, definite(*lambda), "cannot prove");
@@ -204,48 +204,48 @@ TEST_CASE("E: unit sphere at (0,0,-3) below the cup", "[certificate]") {
 }
 
 TEST_CASE("I: sphere of radius 1/10 at (0,0,1) inside the cup", "[certificate]") {
-  const Ellipsoid e = sphere(q(1), q(1, 10));
+  const Ellipsoid e = sphere(rat(1), rat(1, 10));
   const Paraboloid p = cup();
   const auto lambda = scan_lambda(e, p, Position::I, -1);
   REQUIRE(lambda);
-  CHECK(pencil_pd(q(1), q(1, 100), *lambda));
-  CHECK(accepted(e, p, Position::I, definite(q(-1, 2))));
-  require_rejected(e, p, Position::I, definite(q(1, 2)), "must be < 0");
-  require_rejected(e, p, Position::E, definite(q(1, 2)));
-  require_rejected(e, p, Position::I, definite(q(-2)), "not positive definite");  // 1 + lambda < 0
+  CHECK(pencil_pd(rat(1), rat(1, 100), *lambda));
+  CHECK(accepted(e, p, Position::I, definite(rat(-1, 2))));
+  require_rejected(e, p, Position::I, definite(rat(1, 2)), "must be < 0");
+  require_rejected(e, p, Position::E, definite(rat(1, 2)));
+  require_rejected(e, p, Position::I, definite(rat(-2)), "not positive definite");  // 1 + lambda < 0
   require_rejected(e, p, Position::E, definite(*lambda), "must be > 0");
 }
 
 TEST_CASE("TE: unit sphere at (0,0,-1) touching the vertex from outside", "[certificate]") {
-  const Ellipsoid e = sphere(q(-1), q(1));
+  const Ellipsoid e = sphere(rat(-1), rat(1));
   const Paraboloid p = cup();
   // det(lambda P + E) = -(1 + lambda)^2 (1 - lambda/2)^2: the double root lambda = 2.
-  const Certificate good = tangent(q(2), {q(0), q(0), q(0)});
+  const Certificate good = tangent(rat(2), {rat(0), rat(0), rat(0)});
   CHECK(accepted(e, p, Position::TE, good));
-  require_rejected(e, p, Position::TE, tangent(q(2), {q(0), q(0), q(1, 1000)}), "not on the");
-  require_rejected(e, p, Position::TE, tangent(q(2), {q(1, 1000), q(0), q(0)}), "not on the");
-  require_rejected(e, p, Position::TE, tangent(q(3), {q(0), q(0), q(0)}), "not positive semidefinite");
-  require_rejected(e, p, Position::TE, tangent(q(-1), {q(0), q(0), q(0)}), "must be > 0");
+  require_rejected(e, p, Position::TE, tangent(rat(2), {rat(0), rat(0), rat(1, 1000)}), "not on the");
+  require_rejected(e, p, Position::TE, tangent(rat(2), {rat(1, 1000), rat(0), rat(0)}), "not on the");
+  require_rejected(e, p, Position::TE, tangent(rat(3), {rat(0), rat(0), rat(0)}), "not positive semidefinite");
+  require_rejected(e, p, Position::TE, tangent(rat(-1), {rat(0), rat(0), rat(0)}), "must be > 0");
   require_rejected(e, p, Position::TI, good, "must be < 0");
   require_rejected(e, p, Position::E, good, "cannot prove");
   // A Definite certificate cannot exist (the pencil is singular at 2) and the verifier agrees.
-  CHECK(relpos::verify_certificate(e, p, Position::E, definite(q(2))));
+  CHECK(relpos::verify_certificate(e, p, Position::E, definite(rat(2))));
 }
 
 TEST_CASE("TI: sphere of radius 1/4 at (0,0,1/4) touching the vertex from inside", "[certificate]") {
-  const Ellipsoid e = sphere(q(1, 4), q(1, 4));
+  const Ellipsoid e = sphere(rat(1, 4), rat(1, 4));
   const Paraboloid p = cup();
   // lambda P + E = diag(1 + l, 1 + l) (+) [[1, -1/4 - l/2], [-1/4 - l/2, 0]]: PSD only at l = -1/2.
-  const Certificate good = tangent(q(-1, 2), {q(0), q(0), q(0)});
+  const Certificate good = tangent(rat(-1, 2), {rat(0), rat(0), rat(0)});
   CHECK(accepted(e, p, Position::TI, good));
-  require_rejected(e, p, Position::TI, tangent(q(-1, 2), {q(0), q(0), q(1, 2)}), "not on the paraboloid");
-  require_rejected(e, p, Position::TI, tangent(q(-1, 2), {q(1, 2), q(0), q(1, 4)}), "not on the ellipsoid");
-  require_rejected(e, p, Position::TI, tangent(q(-3, 5), {q(0), q(0), q(0)}), "not positive semidefinite");
+  require_rejected(e, p, Position::TI, tangent(rat(-1, 2), {rat(0), rat(0), rat(1, 2)}), "not on the paraboloid");
+  require_rejected(e, p, Position::TI, tangent(rat(-1, 2), {rat(1, 2), rat(0), rat(1, 4)}), "not on the ellipsoid");
+  require_rejected(e, p, Position::TI, tangent(rat(-3, 5), {rat(0), rat(0), rat(0)}), "not positive semidefinite");
   require_rejected(e, p, Position::TE, good, "must be > 0");
 }
 
 TEST_CASE("TI, hard case: unit sphere at (0,0,5/4) touching along a circle", "[certificate]") {
-  const Ellipsoid e = sphere(q(5, 4), q(1));
+  const Ellipsoid e = sphere(rat(5, 4), rat(1));
   const Paraboloid p = cup();
   const Certificate good = circle_certificate();
   CHECK(accepted(e, p, Position::TI, good));
@@ -255,42 +255,42 @@ TEST_CASE("TI, hard case: unit sphere at (0,0,5/4) touching along a circle", "[c
   CHECK(accepted(e, p, Position::TI, d2));
   // The directions in another basis of the kernel.
   Certificate basis = good;
-  basis.directions = {{qn(q(1)), qn(q(1)), qn(q(0))}, {qn(q(1)), qn(q(-2)), qn(q(0))}};
+  basis.directions = {{qn(rat(1)), qn(rat(1)), qn(rat(0))}, {qn(rat(1)), qn(rat(-2)), qn(rat(0))}};
   CHECK(accepted(e, p, Position::TI, basis));
   // A direction with an irrational part that cancels: (sqrt 4 - 2, 1, 0) = (0, 1, 0).
   Certificate cancel = good;
   cancel.d = 4;
-  cancel.directions[1] = {qn(q(-2), q(1)), qn(q(1)), qn(q(0))};
+  cancel.directions[1] = {qn(rat(-2), rat(1)), qn(rat(1)), qn(rat(0))};
   CHECK(accepted(e, p, Position::TI, cancel));
 
   SECTION("tampered") {
     Certificate c = good;
-    c.radius2 = qn(q(1));
+    c.radius2 = qn(rat(1));
     require_rejected(e, p, Position::TI, c, "radius2");
     c = good;
-    c.lambda_q = qn(q(-999, 1000));
+    c.lambda_q = qn(rat(-999, 1000));
     require_rejected(e, p, Position::TI, c, "not positive semidefinite");
     c = good;
-    c.lambda_q = qn(q(-1001, 1000));
+    c.lambda_q = qn(rat(-1001, 1000));
     require_rejected(e, p, Position::TI, c, "not positive semidefinite");
     c = good;
     c.d = 2;
-    c.lambda_q = qn(q(-1), q(1, 1000000));  // -1 + sqrt(2)/10^6
+    c.lambda_q = qn(rat(-1), rat(1, 1000000));  // -1 + sqrt(2)/10^6
     require_rejected(e, p, Position::TI, c, "not positive semidefinite");
     c = good;
-    c.centre[2] = qn(q(1, 2));
+    c.centre[2] = qn(rat(1, 2));
     require_rejected(e, p, Position::TI, c, "K (centre, 1)");
     c = good;
-    c.centre[0] = qn(q(1, 10));  // still in K's kernel, but not the centre of the circle
+    c.centre[0] = qn(rat(1, 10));  // still in K's kernel, but not the centre of the circle
     require_rejected(e, p, Position::TI, c, "conjugate");
     c = good;
-    c.directions[1] = {qn(q(0)), qn(q(1)), qn(q(1))};
+    c.directions[1] = {qn(rat(0)), qn(rat(1)), qn(rat(1))};
     require_rejected(e, p, Position::TI, c, "kernel");
     c = good;
-    c.directions[1] = {qn(q(2)), qn(q(0)), qn(q(0))};
+    c.directions[1] = {qn(rat(2)), qn(rat(0)), qn(rat(0))};
     require_rejected(e, p, Position::TI, c, "dependent");
     c = good;
-    c.directions[1] = {qn(q(0)), qn(q(0)), qn(q(0))};
+    c.directions[1] = {qn(rat(0)), qn(rat(0)), qn(rat(0))};
     require_rejected(e, p, Position::TI, c, "zero");
     c = good;
     c.directions.pop_back();  // the kernel has dimension 2: one direction describes two points only
@@ -311,35 +311,35 @@ TEST_CASE("TI, hard case: unit sphere at (0,0,5/4) touching along a circle", "[c
   SECTION("a single contact point (radius2 = 0): TI at the vertex as a hard certificate") {
     // The sphere of radius 1/2 at (0, 0, 1/2) osculates the vertex: lambda_s = -1 is also the
     // double root, K = diag(0, 0) (+) [[1, -1/2 + 1/2 = 0], [0, 0]], centre (0, 0, 0), radius2 0.
-    const Ellipsoid osc = sphere(q(1, 2), q(1, 2));
+    const Ellipsoid osc = sphere(rat(1, 2), rat(1, 2));
     Certificate c;
     c.kind = Kind::HardTangent;
     c.d = 0;
-    c.lambda_q = qn(q(-1));
-    c.centre = {qn(q(0)), qn(q(0)), qn(q(0))};
-    c.radius2 = qn(q(0));
+    c.lambda_q = qn(rat(-1));
+    c.centre = {qn(rat(0)), qn(rat(0)), qn(rat(0))};
+    c.radius2 = qn(rat(0));
     CHECK(accepted(osc, p, Position::TI, c));
     c.directions = good.directions;  // the full kernel is fine too
     CHECK(accepted(osc, p, Position::TI, c));
-    CHECK(accepted(osc, p, Position::TI, tangent(q(-1), {q(0), q(0), q(0)})));
-    c.radius2 = qn(q(1, 4));
+    CHECK(accepted(osc, p, Position::TI, tangent(rat(-1), {rat(0), rat(0), rat(0)})));
+    c.radius2 = qn(rat(1, 4));
     require_rejected(osc, p, Position::TI, c, "radius2");
   }
 }
 
 TEST_CASE("C: unit sphere at the origin crossing the cup", "[certificate]") {
-  const Ellipsoid e = sphere(q(0), q(1));
+  const Ellipsoid e = sphere(rat(0), rat(1));
   const Paraboloid p = cup();
-  const Vector3 in{q(0), q(0), q(1, 2)}, out{q(0), q(0), q(-1, 2)};
+  const Vector3 in{rat(0), rat(0), rat(1, 2)}, out{rat(0), rat(0), rat(-1, 2)};
   CHECK(accepted(e, p, Position::C, crossing(in, out)));
-  CHECK(accepted(e, p, Position::C, crossing(in, {q(0), q(0), q(-1)})));  // on the sphere: X^T E X = 0
+  CHECK(accepted(e, p, Position::C, crossing(in, {rat(0), rat(0), rat(-1)})));  // on the sphere: X^T E X = 0
   require_rejected(e, p, Position::C, crossing(out, in), "not inside the paraboloid");
   require_rejected(e, p, Position::C, crossing(in, in), "not outside the paraboloid");
-  require_rejected(e, p, Position::C, crossing({q(0), q(0), q(2)}, out), "not in the solid ellipsoid");
-  require_rejected(e, p, Position::C, crossing(in, {q(0), q(0), q(-2)}), "not in the solid ellipsoid");
-  require_rejected(e, p, Position::C, crossing(in, {q(0), q(0), q(0)}), "not outside");  // on the paraboloid
+  require_rejected(e, p, Position::C, crossing({rat(0), rat(0), rat(2)}, out), "not in the solid ellipsoid");
+  require_rejected(e, p, Position::C, crossing(in, {rat(0), rat(0), rat(-2)}), "not in the solid ellipsoid");
+  require_rejected(e, p, Position::C, crossing(in, {rat(0), rat(0), rat(0)}), "not outside");  // on the paraboloid
   require_rejected(e, p, Position::E, crossing(in, out), "cannot prove");
-  require_rejected(e, p, Position::C, definite(q(1)), "cannot prove");
+  require_rejected(e, p, Position::C, definite(rat(1)), "cannot prove");
 }
 
 TEST_CASE("a classification's unused numbers stay zero across results", "[certificate]") {
@@ -347,10 +347,10 @@ TEST_CASE("a classification's unused numbers stay zero across results", "[certif
   // members left at their defaults (results may share their default numbers).
   const Paraboloid p = cup();
   for (int round = 0; round < 2; ++round) {
-    const relpos::Classification c = relpos::classify(sphere(q(0), q(1)), p);      // C: inside, outside
-    const relpos::Classification i = relpos::classify(sphere(q(1), q(1, 10)), p);  // I: lambda
-    const relpos::Classification t = relpos::classify(sphere(q(-1), q(1)), p);     // TE: lambda, contact
-    const relpos::Classification h = relpos::classify(sphere(q(5, 4), q(1)), p);   // TI: the hard case
+    const relpos::Classification c = relpos::classify(sphere(rat(0), rat(1)), p);      // C: inside, outside
+    const relpos::Classification i = relpos::classify(sphere(rat(1), rat(1, 10)), p);  // I: lambda
+    const relpos::Classification t = relpos::classify(sphere(rat(-1), rat(1)), p);     // TE: lambda, contact
+    const relpos::Classification h = relpos::classify(sphere(rat(5, 4), rat(1)), p);   // TI: the hard case
     REQUIRE(c.certificate.kind == Kind::Crossing);
     REQUIRE(i.certificate.kind == Kind::Definite);
     REQUIRE(t.certificate.kind == Kind::Tangent);
@@ -376,7 +376,7 @@ TEST_CASE("a classification's unused numbers stay zero across results", "[certif
 
 TEST_CASE("a certificate that cannot be built is an internal error, never a null certificate", "[certificate]") {
   // The unit sphere at the origin crosses the cup: no rational double root of f proves a tangency.
-  const Ellipsoid e = sphere(q(0), q(1));
+  const Ellipsoid e = sphere(rat(0), rat(1));
   const Paraboloid p = cup();
   CHECK_THROWS_AS(relpos::certificate::build(e, p, Position::TE), std::logic_error);
   CHECK_THROWS_WITH(relpos::certificate::build(e, p, Position::TI),
@@ -389,20 +389,20 @@ TEST_CASE("a certificate that cannot be built is an internal error, never a null
 TEST_CASE("certificates survive JSON exactly", "[certificate]") {
   require_same(round_trip(Certificate{}), Certificate{});
   CHECK(relpos::certificate_json_text(Certificate{}) == "null");
-  const Certificate d = definite(q(-7, 3));
+  const Certificate d = definite(rat(-7, 3));
   CHECK(relpos::certificate_json_text(d) == R"({"lambda":"-7/3"})");
   require_same(round_trip(d), d);
-  const Certificate t = tangent(q(2), {q(1, 3), q(-2), q(0)});
+  const Certificate t = tangent(rat(2), {rat(1, 3), rat(-2), rat(0)});
   CHECK(relpos::certificate_json_text(t) == R"({"lambda":"2","contact":["1/3","-2","0"]})");
   require_same(round_trip(t), t);
-  const Certificate c = crossing({q(0), q(0), q(1, 2)}, {q(5), q(-1, 1000000), q(3)});
+  const Certificate c = crossing({rat(0), rat(0), rat(1, 2)}, {rat(5), rat(-1, 1000000), rat(3)});
   require_same(round_trip(c), c);
 
   Certificate h = circle_certificate();
   h.d = 35;
-  h.lambda_q = qn(q(-3, 2), q(1, 7));
-  h.centre[0] = qn(q(0), q(-1, 2));
-  h.radius2 = qn(q(3, 4), q(2));
+  h.lambda_q = qn(rat(-3, 2), rat(1, 7));
+  h.centre[0] = qn(rat(0), rat(-1, 2));
+  h.radius2 = qn(rat(3, 4), rat(2));
   require_same(round_trip(h), h);
   const Json j = Json::parse(relpos::certificate_json_text(h, 6));
   CHECK(j["lambda"]["d"] == "35");
@@ -415,7 +415,7 @@ TEST_CASE("certificates survive JSON exactly", "[certificate]") {
   // Numbers may also be JSON numbers (read exactly) and "decimal" is ignored.
   const Certificate n = relpos::certificate_from_json(R"({"lambda": 0.1})");
   CHECK(n.kind == Kind::Definite);
-  CHECK(n.lambda == q(1, 10));
+  CHECK(n.lambda == rat(1, 10));
 }
 
 TEST_CASE("malformed certificate JSON is an InputError", "[certificate]") {
@@ -451,9 +451,9 @@ TEST_CASE("the report's JSON text holds the classification's exact values, for e
   // The one writer of reports (src/io/answer_json.cpp): its text is read back member by member and
   // compared with the Classification it renders; dumping the tree read from it gives the same text.
   const std::pair<Ellipsoid, Position> cases[] = {
-      {sphere(q(-3), q(1)), Position::E},    {sphere(q(1), q(1, 10)), Position::I},
-      {sphere(q(-1), q(1)), Position::TE},   {sphere(q(1, 4), q(1, 4)), Position::TI},
-      {sphere(q(5, 4), q(1)), Position::TI}, {sphere(q(0), q(1)), Position::C}};
+      {sphere(rat(-3), rat(1)), Position::E},    {sphere(rat(1), rat(1, 10)), Position::I},
+      {sphere(rat(-1), rat(1)), Position::TE},   {sphere(rat(1, 4), rat(1, 4)), Position::TI},
+      {sphere(rat(5, 4), rat(1)), Position::TI}, {sphere(rat(0), rat(1)), Position::C}};
   for (const auto& [e, expected] : cases) {
     const relpos::Classification c = relpos::classify(e, cup(), relpos::Evidence::Full);
     REQUIRE(c.verdict.position == expected);
@@ -630,7 +630,7 @@ TEST_CASE("an irrational lambda_s: a reduced on first use, the enclosure as from
     };
     const Rational s2 = coefficient(1, 1L << 50), s1 = coefficient(1, 1L << 50);
     // s0 in (0, s1^2 / (4 s2)): two negative roots.
-    const Rational s0 = s1 * s1 / (4 * s2) * q(uniform(1, 999), 1000);
+    const Rational s0 = s1 * s1 / (4 * s2) * rat(uniform(1, 999), 1000);
     const relpos::anysize::Poly s{s0, s1, s2};
     const LambdaS ls = relpos::anysize::lambda_s_of(s);
     if (ls.rational()) continue;
@@ -697,7 +697,7 @@ TEST_CASE("full evidence on a thread does not depend on the calls before it", "[
       pairs.emplace_back(Ellipsoid::from_doubles(e), Paraboloid::from_doubles(p));
     } catch (const std::exception&) {  // a perturbed block that is not positive definite
     }
-    pairs.emplace_back(sphere(q(k % 7 - 2, 3), q(1 + k % 5, 4)), cup());
+    pairs.emplace_back(sphere(rat(k % 7 - 2, 3), rat(1 + k % 5, 4)), cup());
   }
   std::vector<std::string> sequential;
   for (const auto& [e, p] : pairs)

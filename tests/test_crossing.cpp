@@ -20,18 +20,10 @@ using relpos::Ellipsoid;
 using relpos::Matrix4;
 using relpos::Paraboloid;
 using relpos::Rational;
+using rt::form_value;
 using rt::Q;
 
 namespace {
-
-/// X^T Q X for X = (x, 1), written out.
-Rational form_value(const Matrix4& q, const rt::Vector3& x) {
-  const Rational X[4] = {x[0], x[1], x[2], Rational(1)};
-  Rational acc(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) acc += X[i] * q(i, j) * X[j];
-  return acc;
-}
 
 void check_crossing(const Ellipsoid& e, const Paraboloid& p) {
   const relpos::detail::PairContext pair(e, p);

@@ -10,12 +10,14 @@
 #include "general/decision.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/general_classify.hpp"
+#include "support/construct.hpp"
 #include "support/general_cases.hpp"
 #include "support/seed.hpp"
 #include "support/trs_oracle.hpp"
 
 using namespace relpos;
 using namespace relpos::testing;
+using rt::form_value;
 
 namespace {
 
@@ -46,14 +48,6 @@ Rational leading_minor(const std::array<Rational, 16>& m, int n) {
   return det(sub);
 }
 
-Rational form(const Matrix4& m, const Vector3& x) {
-  const std::array<Rational, 4> v{x[0], x[1], x[2], Rational(1)};
-  Rational s(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) s += v[static_cast<std::size_t>(i)] * m(i, j) * v[static_cast<std::size_t>(j)];
-  return s;
-}
-
 /// The test's own check of a certificate (beyond the library's verifier): definite members by their
 /// leading minors, tangency points on both surfaces and in the kernel of Q + t E, crossing points in
 /// both quadrics, the hard case's contact set sampled in high precision.
@@ -72,8 +66,8 @@ void check_certificate(const Matrix4& e, const Matrix4& q, QuadricPosition p, co
       break;
     }
     case K::Tangent: {
-      CHECK(form(e, c.contact) == 0);
-      CHECK(form(q, c.contact) == 0);
+      CHECK(form_value(e, c.contact) == 0);
+      CHECK(form_value(q, c.contact) == 0);
       pencil(c.t);
       const std::array<Rational, 4> x{c.contact[0], c.contact[1], c.contact[2], Rational(1)};
       for (int i = 0; i < 4; ++i) {
@@ -114,13 +108,13 @@ void check_certificate(const Matrix4& e, const Matrix4& q, QuadricPosition p, co
       break;
     }
     case K::Crossing:
-      CHECK(form(e, c.inside) <= 0);
-      CHECK(form(q, c.inside) < 0);
-      CHECK(form(e, c.outside) <= 0);
-      CHECK(form(q, c.outside) > 0);
+      CHECK(form_value(e, c.inside) <= 0);
+      CHECK(form_value(q, c.inside) < 0);
+      CHECK(form_value(e, c.outside) <= 0);
+      CHECK(form_value(q, c.outside) > 0);
       if (c.beyond) {
-        CHECK(form(q, *c.beyond) <= 0);
-        CHECK(form(e, *c.beyond) > 0);
+        CHECK(form_value(q, *c.beyond) <= 0);
+        CHECK(form_value(e, *c.beyond) > 0);
       }
       break;
     case K::Equal:

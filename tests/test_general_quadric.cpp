@@ -12,21 +12,15 @@
 #include "general/decision.hpp"
 #include "relpos/error.hpp"
 #include "relpos/general_quadric.hpp"
+#include "support/construct.hpp"
 #include "support/general_cases.hpp"
 #include "support/seed.hpp"
 
 using namespace relpos;
 using namespace relpos::testing;
+using rt::form_value;
 
 namespace {
-
-Rational form(const Matrix4& m, const Vector3& x) {
-  const std::array<Rational, 4> v{x[0], x[1], x[2], Rational(1)};
-  Rational s(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) s += v[static_cast<std::size_t>(i)] * m(i, j) * v[static_cast<std::size_t>(j)];
-  return s;
-}
 
 /// (positive, negative) eigenvalues of B, the test's own: the three real roots of the characteristic
 /// polynomial by the trigonometric formula in long double (these matrices are small and well
@@ -148,8 +142,8 @@ TEST_CASE("general quadric: every form has its type, its solid, and survives fro
   for (const Form& f : all_forms()) {
     INFO(f.name);
     CHECK(f.q.type() == f.type);
-    for (const Vector3& x : f.inside) CHECK(form(f.q.matrix(), x) < 0);
-    for (const Vector3& x : f.outside) CHECK(form(f.q.matrix(), x) > 0);
+    for (const Vector3& x : f.inside) CHECK(form_value(f.q.matrix(), x) < 0);
+    for (const Vector3& x : f.outside) CHECK(form_value(f.q.matrix(), x) > 0);
     const Quadric again = Quadric::from_matrix(f.q.matrix());
     CHECK(again.type() == f.type);
     CHECK(again.matrix() == f.q.matrix());
@@ -158,7 +152,7 @@ TEST_CASE("general quadric: every form has its type, its solid, and survives fro
     const Quadric negated = Quadric::from_matrix(scaled_matrix(f.q.matrix(), Rational(-3)));
     CHECK(negated.type() == f.type);
     if (sign_as_given(f.type)) {
-      for (const Vector3& x : f.inside) CHECK(form(negated.matrix(), x) > 0);
+      for (const Vector3& x : f.inside) CHECK(form_value(negated.matrix(), x) > 0);
     } else {
       CHECK(negated.matrix() == scaled_matrix(f.q.matrix(), Rational(3)));
     }
@@ -192,7 +186,7 @@ TEST_CASE("general quadric: types and normalization under random congruences and
           for (int j = 0; j < 3; ++j) acc += m.l(i, j) * u[static_cast<std::size_t>(j)];
           x[static_cast<std::size_t>(i)] = acc;
         }
-        CHECK(CGAL::sign(form(q.matrix(), x)) == (flipped ? 1 : -1));
+        CHECK(CGAL::sign(form_value(q.matrix(), x)) == (flipped ? 1 : -1));
       }
     }
 }

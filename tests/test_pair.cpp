@@ -23,12 +23,13 @@ using relpos::Quadratic;
 using relpos::Quartic;
 using relpos::Rational;
 using relpos::detail::PairContext;
+using rt::form_value;
 using rt::Q;
 using rt::sgn;
 
 namespace {
 
-struct Case {
+struct PairCase {
   std::string name;
   Ellipsoid e;
   Paraboloid p;
@@ -36,8 +37,8 @@ struct Case {
 
 /// Pairs of every input form: doubles (rotated and axis-aligned), rationals, decimal text (a sphere
 /// and an axis paraboloid, the closed forms; matrices), at several scales.
-std::vector<Case> cases(std::uint64_t seed) {
-  std::vector<Case> out;
+std::vector<PairCase> cases(std::uint64_t seed) {
+  std::vector<PairCase> out;
   std::mt19937_64 rng(seed);
   for (int i = 0; i < 40; ++i) {
     const Matrix4 em = rt::random_double_ellipsoid_matrix(rng, 0.05);
@@ -66,20 +67,11 @@ std::vector<Case> cases(std::uint64_t seed) {
   return out;
 }
 
-/// X^T Q X for X = (x, 1), written out.
-Rational form_value(const Matrix4& q, const rt::Vector3& x) {
-  const Rational X[4] = {x[0], x[1], x[2], Rational(1)};
-  Rational acc(0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) acc += X[i] * q(i, j) * X[j];
-  return acc;
-}
-
 /// The generic formulas on the rational matrices: f = det(lambda P + E), s = det(lambda A + M).
-Quartic<Rational> f_of(const Case& k) {
+Quartic<Rational> f_of(const PairCase& k) {
   return relpos::characteristic_polynomial<Rational>(k.p.matrix(), k.e.matrix());
 }
-Quadratic<Rational> s_of(const Case& k) { return relpos::special_polynomial<Rational>(k.p.matrix(), k.e.matrix()); }
+Quadratic<Rational> s_of(const PairCase& k) { return relpos::special_polynomial<Rational>(k.p.matrix(), k.e.matrix()); }
 
 /// The ratio of two polynomials that are positive multiples of each other (nullopt when they are not).
 template <class A, class B>
@@ -99,7 +91,7 @@ std::optional<Rational> positive_ratio(const A& x, const B& y) {
 }  // namespace
 
 TEST_CASE("pair: the evidence's f, s, S^4 f, S^3 s and lambda_s are those of the matrices", "[pair]") {
-  for (const Case& k : cases(relpos::testing::announced_seed("test_pair", 20260301))) {
+  for (const PairCase& k : cases(relpos::testing::announced_seed("test_pair", 20260301))) {
     INFO(k.name);
     const PairContext pair(k.e, k.p);
     const Quartic<Rational> f = f_of(k);
@@ -127,7 +119,7 @@ TEST_CASE("pair: the evidence's f, s, S^4 f, S^3 s and lambda_s are those of the
 }
 
 TEST_CASE("pair: the compact pencil's roots are those of f and s times one positive constant", "[pair]") {
-  for (const Case& k : cases(relpos::testing::seed_from_env(20260301))) {
+  for (const PairCase& k : cases(relpos::testing::seed_from_env(20260301))) {
     INFO(k.name);
     const PairContext pair(k.e, k.p);
     const Quartic<Rational> f = f_of(k);
@@ -152,7 +144,7 @@ TEST_CASE("pair: the compact pencil's roots are those of f and s times one posit
 
 TEST_CASE("pair: the integer forms, signs at points, f's sign and the roots against their definitions", "[pair]") {
   rt::Rng g(relpos::testing::seed_from_env(20260301));
-  for (const Case& k : cases(relpos::testing::seed_from_env(20260301))) {
+  for (const PairCase& k : cases(relpos::testing::seed_from_env(20260301))) {
     INFO(k.name);
     const PairContext pair(k.e, k.p);
     const relpos::detail::IntegerForms& z = pair.integer_forms();
@@ -193,7 +185,7 @@ TEST_CASE("pair: the integer forms, signs at points, f's sign and the roots agai
 TEST_CASE("pair: the per-thread scratch never shows in a result", "[pair]") {
   // Results of the full evidence, kept while later pairs reuse the thread's scratch: every number
   // of an earlier result keeps its value (their digits compared before and after).
-  const std::vector<Case> all = cases(relpos::testing::seed_from_env(20260301));
+  const std::vector<PairCase> all = cases(relpos::testing::seed_from_env(20260301));
   std::vector<relpos::Classification> kept;
   std::vector<std::string> before;
   auto digits = [](const relpos::Classification& c) {
@@ -205,10 +197,10 @@ TEST_CASE("pair: the per-thread scratch never shows in a result", "[pair]") {
          relpos::to_string(c.certificate.d);
     return t;
   };
-  for (const Case& k : all) {
+  for (const PairCase& k : all) {
     kept.push_back(relpos::classify(k.e, k.p));
     before.push_back(digits(kept.back()));
   }
-  for (const Case& k : all) static_cast<void>(relpos::classify(k.e, k.p));
+  for (const PairCase& k : all) static_cast<void>(relpos::classify(k.e, k.p));
   for (std::size_t i = 0; i < kept.size(); ++i) CHECK(digits(kept[i]) == before[i]);
 }

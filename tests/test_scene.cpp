@@ -52,7 +52,7 @@ void check_against_exact(const Scene& scene, const Body& b, const SceneVerdict& 
     CHECK(relpos::contact_of(x.verdict.position) == relpos::Contact::None);
 }
 
-Ellipsoid sphere(const Vector3& c, const Rational& r) { return Ellipsoid::sphere(c, r); }
+Ellipsoid sphere_at(const Vector3& c, const Rational& r) { return Ellipsoid::sphere(c, r); }
 
 /// An ellipsoid with semi-axes (ra, rb, rc) along the rotation of q, centre c (general path: not a
 /// sphere unless the axes are equal).
@@ -101,7 +101,7 @@ std::vector<Body> constructed_bodies(Rng& g, const Rational& a, const Rational& 
     const TangentPoint tp = tangent_point(a, b, s, t);
     const Rational r = random_tangent_radius(g, a, b);
     for (const Config& k : tangency_family(tp, r, g.uniform(1, 7)))
-      out.push_back({describe(k), sphere(k.c, k.r), true, k.expected});
+      out.push_back({describe(k), sphere_at(k.c, k.r), true, k.expected});
   }
   const Rational a2 = rmin(a, b) * rmin(a, b);
   const Rational r = a2 / 8;
@@ -109,10 +109,10 @@ std::vector<Body> constructed_bodies(Rng& g, const Rational& a, const Rational& 
     const Rational eps = Rational(1) / pow_q(Q(2), k);
     const std::string tag = " (eps 2^-" + std::to_string(k) + ")";
     // On the axis at height z: I for z > r (z <= a^2/2), C for |z| < r, E for z < -r.
-    out.push_back({"axis barely inside" + tag, sphere(V(Q(0), Q(0), r * (1 + eps)), r), true, Position::I});
-    out.push_back({"axis barely crossing" + tag, sphere(V(Q(0), Q(0), r * (1 - eps)), r), true, Position::C});
-    out.push_back({"axis barely outside" + tag, sphere(V(Q(0), Q(0), -r * (1 + eps)), r), true, Position::E});
-    out.push_back({"axis barely crossing below" + tag, sphere(V(Q(0), Q(0), -r * (1 - eps)), r), true, Position::C});
+    out.push_back({"axis barely inside" + tag, sphere_at(V(Q(0), Q(0), r * (1 + eps)), r), true, Position::I});
+    out.push_back({"axis barely crossing" + tag, sphere_at(V(Q(0), Q(0), r * (1 - eps)), r), true, Position::C});
+    out.push_back({"axis barely outside" + tag, sphere_at(V(Q(0), Q(0), -r * (1 + eps)), r), true, Position::E});
+    out.push_back({"axis barely crossing below" + tag, sphere_at(V(Q(0), Q(0), -r * (1 - eps)), r), true, Position::C});
     // The same as ellipsoids flattened along z by (1 - eps) (general path): the flattened body lies
     // inside the sphere, so I and E stay I and E, and a body touching at the vertex from inside or
     // outside with vertical semi-axis r' is TI / TE.
@@ -123,16 +123,16 @@ std::vector<Body> constructed_bodies(Rng& g, const Rational& a, const Rational& 
     out.push_back({"flat TE at the vertex" + tag, axes(V(Q(0), Q(0), -rf), r, r, rf), true, Position::TE});
   }
   // Exact tangencies at the vertex.
-  out.push_back({"TI vertex", sphere(V(Q(0), Q(0), r), r), true, Position::TI});
-  out.push_back({"TE vertex", sphere(V(Q(0), Q(0), -r), r), true, Position::TE});
+  out.push_back({"TI vertex", sphere_at(V(Q(0), Q(0), r), r), true, Position::TI});
+  out.push_back({"TE vertex", sphere_at(V(Q(0), Q(0), -r), r), true, Position::TE});
   // Well inside / outside (the early-outs should fire; checked in "early-outs fire").
-  out.push_back({"deep inside", sphere(V(Q(0), Q(0), 4 * a2), r), true, Position::I});
-  out.push_back({"far below", sphere(V(Q(0), Q(0), -4 * a2), r), true, Position::E});
+  out.push_back({"deep inside", sphere_at(V(Q(0), Q(0), 4 * a2), r), true, Position::I});
+  out.push_back({"far below", sphere_at(V(Q(0), Q(0), -4 * a2), r), true, Position::E});
   // Not small: inside (I: distance^2 to the cup a^2 z - a^4/4 = 31/4 a^4 > r^2 = 4 a^4), outside
   // (E), crossing at the vertex (C); math.md §8 classifies every size.
-  out.push_back({"big sphere inside, not small", sphere(V(Q(0), Q(0), 8 * a2), 2 * a2), true, Position::I});
-  out.push_back({"big sphere below, not small", sphere(V(Q(0), Q(0), -3 * a2), 2 * a2), true, Position::E});
-  out.push_back({"big sphere at the vertex", sphere(V(Q(0), Q(0), Q(0)), 2 * a2), true, Position::C});
+  out.push_back({"big sphere inside, not small", sphere_at(V(Q(0), Q(0), 8 * a2), 2 * a2), true, Position::I});
+  out.push_back({"big sphere below, not small", sphere_at(V(Q(0), Q(0), -3 * a2), 2 * a2), true, Position::E});
+  out.push_back({"big sphere at the vertex", sphere_at(V(Q(0), Q(0), Q(0)), 2 * a2), true, Position::C});
   return out;
 }
 
@@ -145,8 +145,8 @@ TEST_CASE("scene: the certificate polynomials are det M, -det E, D^2 P(c), s(l) 
   for (int trial = 0; trial < 40; ++trial) {
     const Paraboloid p = Paraboloid::from_matrix(transform(Matrix4{}, paraboloid_matrix(Q(1), Q(3, 2)), g).p);
     const Ellipsoid e = trial % 2 ? random_dyadic_ellipsoid(g)
-                                  : sphere(V(g.rational(-4, 4, 3), g.rational(-4, 4, 3), g.rational(-4, 4, 3)),
-                                           g.positive_rational(4, 3));
+                                  : sphere_at(V(g.rational(-4, 4, 3), g.rational(-4, 4, 3), g.rational(-4, 4, 3)),
+                                              g.positive_rational(4, 3));
     const Matrix4 &em = e.matrix(), &pm = p.matrix();
     auto ent = [](const Matrix4& m) {
       return relpos::SymmetricEntries<Rational>{m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2),
@@ -267,23 +267,24 @@ TEST_CASE("scene: the early-outs fire on bodies well inside or outside, small or
   };
   const Quaternion q{Q(1), Q(1), Q(1), Q(1)};
   const std::vector<Case> cases = {
-      {"sphere deep inside", &p, sphere(V(Q(0), Q(0), Q(2)), Q(1, 8)), Position::I, Stage::InsideCertificate},
-      {"sphere off-axis inside", &p, sphere(V(Q(1, 2), Q(1, 2), Q(1)), Q(1, 8)), Position::I, Stage::InsideCertificate},
+      {"sphere deep inside", &p, sphere_at(V(Q(0), Q(0), Q(2)), Q(1, 8)), Position::I, Stage::InsideCertificate},
+      {"sphere off-axis inside", &p, sphere_at(V(Q(1, 2), Q(1, 2), Q(1)), Q(1, 8)), Position::I,
+       Stage::InsideCertificate},
       {"rotated ellipsoid inside", &p, axes(V(Q(0), Q(1, 4), Q(2)), Q(1, 4), Q(1, 8), Q(1, 16), q), Position::I,
        Stage::InsideCertificate},
-      {"non-dyadic sphere inside", &p, sphere(V(Q(1, 3), Q(1, 7), Q(5, 3)), Q(1, 10)), Position::I,
+      {"non-dyadic sphere inside", &p, sphere_at(V(Q(1, 3), Q(1, 7), Q(5, 3)), Q(1, 10)), Position::I,
        Stage::InsideCertificate},
-      {"sphere below", &p, sphere(V(Q(0), Q(0), Q(-1)), Q(1, 4)), Position::E, Stage::OutsideCertificate},
-      {"sphere beside the rim", &p, sphere(V(Q(3), Q(0), Q(1)), Q(1, 2)), Position::E, Stage::OutsideCertificate},
+      {"sphere below", &p, sphere_at(V(Q(0), Q(0), Q(-1)), Q(1, 4)), Position::E, Stage::OutsideCertificate},
+      {"sphere beside the rim", &p, sphere_at(V(Q(3), Q(0), Q(1)), Q(1, 2)), Position::E, Stage::OutsideCertificate},
       {"rotated ellipsoid outside", &p, axes(V(Q(2), Q(0), Q(1)), Q(1, 4), Q(1, 8), Q(1, 16), q), Position::E,
        Stage::OutsideCertificate},
-      {"huge sphere far below (not small)", &p, sphere(V(Q(0), Q(0), Q(-100)), Q(10)), Position::E,
+      {"huge sphere far below (not small)", &p, sphere_at(V(Q(0), Q(0), Q(-100)), Q(10)), Position::E,
        Stage::OutsideCertificate},
-      {"2^100 scale, inside", &p_huge, sphere(V(Q(0), Q(0), 2 * big * big), big * big / 16), Position::I,
+      {"2^100 scale, inside", &p_huge, sphere_at(V(Q(0), Q(0), 2 * big * big), big * big / 16), Position::I,
        Stage::InsideCertificate},
-      {"2^100 scale, outside", &p_huge, sphere(V(Q(0), Q(0), -2 * big * big), big * big / 16), Position::E,
+      {"2^100 scale, outside", &p_huge, sphere_at(V(Q(0), Q(0), -2 * big * big), big * big / 16), Position::E,
        Stage::OutsideCertificate},
-      {"2^-100 scale, inside", &p_tiny, sphere(V(Q(0), Q(0), 2 * tiny * tiny), tiny * tiny / 16), Position::I,
+      {"2^-100 scale, inside", &p_tiny, sphere_at(V(Q(0), Q(0), 2 * tiny * tiny), tiny * tiny / 16), Position::I,
        Stage::InsideCertificate},
       {"2^-100 scale, ellipsoid inside", &p_tiny,
        axes(V(Q(0), Q(0), 2 * tiny * tiny), tiny * tiny / 16, tiny * tiny / 32, tiny * tiny / 64, q), Position::I,
@@ -305,7 +306,7 @@ TEST_CASE("scene: the early-outs fire on bodies well inside or outside, small or
       {"flat ellipsoid inside, not small", &p, axes(V(Q(0), Q(0), Q(3)), Q(1), Q(2), Q(1, 10)), Position::I,
        Stage::InsideCertificate},
       // distance^2 from (0,0,8) to the cup: a^2 z - a^4/4 = 31/4 > r^2 = 4.
-      {"big sphere inside, not small", &p, sphere(V(Q(0), Q(0), Q(8)), Q(2)), Position::I, Stage::InsideCertificate},
+      {"big sphere inside, not small", &p, sphere_at(V(Q(0), Q(0), Q(8)), Q(2)), Position::I, Stage::InsideCertificate},
   };
   for (const Case& c : not_small) {
     INFO(c.name);
@@ -398,7 +399,7 @@ void check_bound(const relpos::RunningBound& x, const Rational& exact, const std
 }
 
 /// A random double: mantissa of `bits` bits, exponent in [lo, hi], either sign.
-double random_double(Rng& g, int bits, int lo, int hi) {
+double random_double_bits(Rng& g, int bits, int lo, int hi) {
   const double m = static_cast<double>(g.uniform(1, (1L << bits) - 1)) / static_cast<double>(1L << bits);
   return (g.chance(50) ? -1 : 1) * std::ldexp(m, static_cast<int>(g.uniform(lo, hi)));
 }
@@ -413,12 +414,12 @@ TEST_CASE("scene: RunningBound bounds the rounding error of the certificate prog
   // Cancellation and underflow on purpose: x*y - z with z = fl(x*y) +- a few ulps; products of
   // 2^-600-sized numbers (the exact product underflows); sums of terms of very different size.
   for (int i = 0; i < 2000; ++i) {
-    const double x = random_double(g, 53, -30, 30), y = random_double(g, 53, -30, 30);
+    const double x = random_double_bits(g, 53, -30, 30), y = random_double_bits(g, 53, -30, 30);
     const double z = std::nextafter(x * y, g.chance(50) ? 1e300 : -1e300);
     check_bound(RB(x) * RB(y) - RB(z),
                 relpos::exact_rational(x) * relpos::exact_rational(y) - relpos::exact_rational(z), "x y - z");
-    const double u = random_double(g, 30, -620, -560), v = random_double(g, 30, -620, -560);
-    const double w = random_double(g, 30, -1100, -1030);
+    const double u = random_double_bits(g, 30, -620, -560), v = random_double_bits(g, 30, -620, -560);
+    const double w = random_double_bits(g, 30, -1100, -1030);
     check_bound(RB(u) * RB(v) + RB(w) - RB(u) * RB(-v),
                 2 * relpos::exact_rational(u) * relpos::exact_rational(v) + relpos::exact_rational(w), "underflow");
     check_bound((RB(x) + RB(u)) * (RB(y) - RB(u)) - RB(x) * RB(y),
@@ -431,11 +432,13 @@ TEST_CASE("scene: RunningBound bounds the rounding error of the certificate prog
   // scales E to at most 2^40; here up to 2^60 and down to 2^-60), against the exact values.
   for (int i = 0; i < 300; ++i) {
     const int e_lo = static_cast<int>(g.uniform(-60, 0)), e_hi = e_lo + static_cast<int>(g.uniform(0, 60));
-    auto rd = [&] { return g.chance(15) ? 0.0 : random_double(g, static_cast<int>(g.uniform(1, 53)), e_lo, e_hi); };
+    auto rd = [&] {
+      return g.chance(15) ? 0.0 : random_double_bits(g, static_cast<int>(g.uniform(1, 53)), e_lo, e_hi);
+    };
     double ev[10], pv[10], av[10];
     for (double& v : ev) v = rd();
-    for (double& v : pv) v = random_double(g, 20, -8, 0);
-    for (double& v : av) v = random_double(g, 20, -8, 0);
+    for (double& v : pv) v = random_double_bits(g, 20, -8, 0);
+    for (double& v : av) v = random_double_bits(g, 20, -8, 0);
     auto as_rb = [](const double* v) {
       return relpos::SymmetricEntries<RB>{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9]};
     };
@@ -458,7 +461,7 @@ TEST_CASE("scene: RunningBound bounds the rounding error of the certificate prog
   }
   // An enclosure: the true value anywhere in [lo, hi].
   for (int i = 0; i < 200; ++i) {
-    const double lo = random_double(g, 53, -20, 20), hi = std::nextafter(std::nextafter(lo, 1e300), 1e300);
+    const double lo = random_double_bits(g, 53, -20, 20), hi = std::nextafter(std::nextafter(lo, 1e300), 1e300);
     const RB x = RB::enclosing(lo, hi) * RB(3) - RB(lo) * RB(3);
     for (const double t : {lo, hi})
       check_bound(x, relpos::exact_rational(t) * 3 - relpos::exact_rational(lo) * 3, "enclosure");
@@ -504,8 +507,8 @@ TEST_CASE("scene: empty scenes, more threads than chunks, progress counter") {
   const relpos::SceneResult empty = scene.classify(std::vector<Ellipsoid>{});
   CHECK(empty.verdicts.empty());
   CHECK(empty.counts.bodies == 0);
-  std::vector<Ellipsoid> es{sphere(V(Q(0), Q(0), Q(1)), Q(1, 8)), sphere(V(Q(0), Q(0), Q(-1)), Q(1, 8)),
-                            sphere(V(Q(0), Q(0), Q(1, 8)), Q(1, 8))};
+  std::vector<Ellipsoid> es{sphere_at(V(Q(0), Q(0), Q(1)), Q(1, 8)), sphere_at(V(Q(0), Q(0), Q(-1)), Q(1, 8)),
+                            sphere_at(V(Q(0), Q(0), Q(1, 8)), Q(1, 8))};
   std::atomic<std::size_t> progress{0};
   relpos::SceneOptions o;
   o.threads = 8;

@@ -53,6 +53,15 @@ inline Rational pow_q(const Rational& q, int k) {
   return out;
 }
 
+/// X^T Q X for X = (x, 1), written out: the value of a quadric's form at a point.
+inline Rational form_value(const Matrix4& q, const Vector3& x) {
+  const Rational v[4] = {x[0], x[1], x[2], Rational(1)};
+  Rational s(0);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) s += v[i] * q(i, j) * v[j];
+  return s;
+}
+
 inline Matrix4 mul(const Matrix4& a, const Matrix4& b) {
   Matrix4 out;
   for (int i = 0; i < 4; ++i)
