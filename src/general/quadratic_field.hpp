@@ -1,6 +1,8 @@
 // Exact arithmetic in Q(sqrt n) and the linear algebra of a tangency at the end of an interval
 // (math.md §18): the multiplier t* = a + b sqrt n is a root of D of degree <= 2, and the contact set
-// is computed over Q(sqrt n) by Gaussian elimination.
+// is computed over Q(sqrt n) by Gaussian elimination. The verifiers have their own Q(sqrt d)
+// (src/certificate/quadratic_field.hpp) on purpose: a certificate is evidence only if the code that
+// checks it shares nothing with the code that wrote it (doc/math.md §18).
 #pragma once
 
 #include <array>

@@ -77,8 +77,9 @@ class LineReader {
     if (!duplicate_.empty()) throw InputError("duplicate key \"" + duplicate_ + "\"");
     if (!unknown_.empty())
       throw InputError("unknown key \"" + unknown_ + "\"" +
-                       (scene_ ? " (a scene line takes \"id\", \"ellipsoid\" and \"comment\")"
-                               : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" and \"comment\")"));
+                       (scene_ ? " (a scene line takes \"id\", \"ellipsoid\", \"meta\" and \"comment\")"
+                               : " (a line takes \"id\", \"ellipsoid\", \"paraboloid\" or \"quadric\", \"meta\""
+                                 " and \"comment\")"));
     if (!out_.ellipsoid && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
     if (given("quadric")) return read_quadric(ellipsoid, paraboloid);
     if (fixed_quadric_) {  // a scene line against a general quadric (doc/cli.md, "relpos scene")

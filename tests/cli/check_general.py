@@ -99,6 +99,14 @@ def main() -> int:
             want = [m for _, m in mixed]
             if got != want:
                 failures.append(f"paraboloid and quadric (--numbers {numbers}): {got}, expected {want}")
+        # An unknown key's message names the keys a line takes; a line with every one of them (the
+        # "quadric" in place of the "paraboloid") is answered, so the list is the reader's own.
+        typo = f'{{"id":1,"ellipsoid":{json.dumps(e)},"quadric":{json.dumps(q)},"colour":1}}\n'
+        every = f'{{"id":2,"ellipsoid":{json.dumps(e)},"quadric":{json.dumps(q)},"meta":{{"k":1}},"comment":"c"}}\n'
+        out = subprocess.run([relpos, "batch"], input=typo + every, capture_output=True, text=True).stdout.splitlines()
+        named = 'unknown key "colour" (a line takes "id", "ellipsoid", "paraboloid" or "quadric", "meta" and "comment")'
+        if len(out) != 2 or json.loads(out[0]).get("error") != named or "position" not in json.loads(out[1]):
+            failures.append(f"the keys a line takes: {out}")
         # relpos scene --quadric: the lines that share a quadric (constructed ones, nudged tangencies)
         # form a scene; every body gets the position of its construction (on 2 threads: one run per
         # scene keeps the sanitizer build's time down; test_general_scene varies the threads), and the
