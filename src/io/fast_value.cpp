@@ -161,7 +161,8 @@ int FastValue::number() {
     x.e = 0;
   } else {
     x.e = digits.exponent + digits.scale + zeros;
-    if (x.e > kMaxExponent || x.e < -kMaxExponent) return -1;
+    if (x.e > kMaxWideExponent || x.e < -kMaxWideExponent) return -1;
+    wide_ = wide_ || wide(n);
     decimals_ = true;  // enclosed by enclose_decimals()
   }
   return self;
@@ -177,10 +178,14 @@ void FastValue::enclose_decimals() {
                                ? FastInterval(static_cast<double>(x.m))
                                : FastInterval(static_cast<double>(x.m >> 11)) * FastInterval(2048.0) +
                                      FastInterval(static_cast<double>(x.m & 2047));
-    const int p10 = x.e < 0 ? -x.e : x.e;
+    // A wide number (|e| > 44) first takes steps of 10^22, each rounded outwards (10^|e| itself may
+    // leave the double range while the number does not).
+    FastInterval v = m;
+    int p10 = x.e < 0 ? -x.e : x.e;
+    for (; p10 > 44; p10 -= 22) v = x.e >= 0 ? v * FastInterval(kPow10[22]) : v / FastInterval(kPow10[22]);
     const FastInterval p =
         p10 <= 22 ? FastInterval(kPow10[p10]) : FastInterval(kPow10[22]) * FastInterval(kPow10[p10 - 22]);
-    n.x = x.e >= 0 ? m * p : m / p;
+    n.x = x.e >= 0 ? v * p : v / p;
     if (x.neg) n.x = -n.x;
   }
 }
