@@ -5,8 +5,8 @@
 // value is located as a span of the text, so that the id is echoed byte for byte, duplicate keys are
 // seen, and "comment" is validated by a pass that stores nothing. The two quadrics are read by the
 // fast reader (fast_quadric.hpp: common forms, short numbers, straight to double enclosures; for a
-// "quadric", an ellipsoid's or an elliptic paraboloid's matrix) during the scan, or else parsed into (small, bounded) trees by the general reader (quadric_json.hpp),
-// which words every error.
+// "quadric", an ellipsoid's or an elliptic paraboloid's matrix) during the scan, or else parsed into (small, bounded)
+// trees by the general reader (quadric_json.hpp), which words every error.
 #include "io/batch.hpp"
 
 #include <algorithm>

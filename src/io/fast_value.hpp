@@ -39,8 +39,9 @@ class FastValue {
  public:
   static constexpr int kMaxNodes = 32;
   static constexpr int kMaxDepth = 3;
-  static constexpr int kMaxDigits = 19;    ///< significant digits: m < 10^19 < 2^64
-  static constexpr int kMaxExponent = 30;  ///< |e| of a short number, trailing zeros removed (fast_quadric.hpp's size bound)
+  static constexpr int kMaxDigits = 19;  ///< significant digits: m < 10^19 < 2^64
+  static constexpr int kMaxExponent =
+      30;  ///< |e| of a short number, trailing zeros removed (fast_quadric.hpp's size bound)
   /// |e| of any number read: beyond kMaxExponent a number is "wide", taken only in a matrix whose
   /// exponents span at most 2 kMaxExponent (a matrix scaled by a power of ten; fast_quadric.hpp).
   static constexpr int kMaxWideExponent = 340;  ///< beyond, m 10^e leaves the double range
