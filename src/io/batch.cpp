@@ -108,7 +108,7 @@ class LineReader {
     if (given("paraboloid")) throw InputError("a line takes \"paraboloid\" or \"quadric\", not both");
     if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
     if (!out_.quadric) out_.quadric = quadric_from_json(second, "quadric");
-    check_general_pair_size(*out_.ellipsoid, *out_.quadric);  // doc/cli.md, Limits
+    check_general_pair_size(*out_.ellipsoid, *out_.quadric, options_.size_limit);  // doc/cli.md, Limits
   }
 
   void set_id(std::string_view text) {
