@@ -5,7 +5,7 @@
 //     Paraboloid::standard), or the numbers with their orientation, for decimals and for doubles;
 //   - write_integer_form writes integer_form(exact_matrix) and split_scale(l, exact_matrix), factor
 //     for factor (off the axis: a coprime base of the same rest), and only the parts asked for;
-//   - truncated_doubles is truncated_double of each exact entry, for the recipes with closed forms;
+//   - truncated_doubles is truncated_double of each exact entry, for every recipe of decimals;
 //   - sphere_standard_evidence gives f, s, lambda_s and rho in lowest terms, and S^4 f, S^3 s.
 #include <gmp.h>
 
@@ -152,9 +152,8 @@ TEST_CASE("decimal recipes: exact matrix, integer form and truncated doubles of 
     const bool closed = r.form == DecimalRecipe::Form::Sphere || (r.n[0].m == 0 && r.n[1].m == 0);
     REQUIRE(relpos::detail::has_closed_form(r) == closed);
     relpos::DoubleMatrix4 d;
-    REQUIRE(relpos::detail::truncated_doubles(r, d) == closed);
-    if (closed)
-      for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(m.a[k]));
+    REQUIRE(relpos::detail::truncated_doubles(r, d));  // on and off the axis
+    for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(m.a[k]));
     check_integer_form(r);  // on and off the axis: the numbers' form is the constructor matrix's
   }
 }
@@ -169,6 +168,9 @@ TEST_CASE("decimal recipes: a matrix with either orientation, and numbers that a
     const relpos::Matrix4 m = relpos::detail::exact_matrix(r);
     for (std::size_t k = 0; k < 16; ++k) REQUIRE(m.a[k] == (r.orientation < 0 ? -value(r.n[k]) : value(r.n[k])));
     REQUIRE_FALSE(relpos::detail::has_closed_form(r));
+    relpos::DoubleMatrix4 d;
+    REQUIRE(relpos::detail::truncated_doubles(r, d));
+    for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(m.a[k]));
     check_integer_form(r);
     // The same form over doubles (--numbers double): (-1)^neg m 2^(e - 53), built exactly.
     DecimalRecipe s = sphere_recipe(rng);
@@ -181,6 +183,7 @@ TEST_CASE("decimal recipes: a matrix with either orientation, and numbers that a
     const auto q = [&](std::size_t k) { return Rational(std::ldexp(static_cast<double>(s.n[k].m), s.n[k].e - 53)); };
     REQUIRE(relpos::detail::exact_matrix(s) == relpos::Ellipsoid::sphere({q(0), q(1), q(2)}, q(3)).matrix());
     REQUIRE_FALSE(relpos::detail::has_closed_form(s));
+    REQUIRE_FALSE(relpos::detail::truncated_doubles(s, d));
     relpos::forms::MatrixOf<Integer> form;
     Integer l;
     relpos::forms::SplitScale split;
@@ -193,6 +196,7 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
   // Mantissas made of a few primes, the radius, the centre and vz often multiples of a's or b's
   // mantissa and a's of b's: the closed forms' reductions then meet the common factors that
   // rational arithmetic cancels (beyond the powers of 2 and 5), and zeros and w = vz - z = 0 occur.
+  // Every other vertex is off the axis (its x and y related numbers too, sometimes the centre's).
   // Compared in lowest terms with rational arithmetic on the constructors' matrices.
   std::mt19937_64 rng(41);
   const std::uint64_t primes[] = {2, 3, 5, 7, 11, 13, 9, 343, 1000003};
@@ -230,6 +234,10 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     const Decimal z = related(rng() % 2 == 0);
     e.n = {related(true), related(false), z, rng() % 3 == 0 ? number(ma, false) : number(mantissa(), false)};
     p.n = {Decimal{}, Decimal{}, trial % 7 == 0 ? z : related(rng() % 2 == 0), number(ma, false), number(mb, false)};
+    if (trial % 2 == 1) {
+      p.n[0] = trial % 5 == 1 ? e.n[0] : related(rng() % 2 == 0);
+      p.n[1] = related(rng() % 2 == 0);
+    }
     INFO(trial);
     REQUIRE(relpos::forms::has_closed_evidence(e, p));
     REQUIRE_FALSE(relpos::forms::has_closed_evidence(p, e));

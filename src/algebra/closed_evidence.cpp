@@ -236,18 +236,30 @@ struct Closed {
 /// f0 .. f4, s0 .. s2 as pending coefficients (math.md §2, §5; the closed forms of
 /// sphere_standard_evidence), over 2^u 5^v R_a^2 R_b^2 (f1 to f4, s1, s2; A = 2^pa 5^qa R_b^2 /
 /// (R_a^2 R_b^2), and so on) or 2^u 5^v (f0 = -r^2), each in its own integer; the sphere's numbers
-/// and vz are read as integers over 10^low.
-void pending_coefficients(const DecimalRecipe& sphere, const Decimal& vz, Closed& c, const ClosedEvidence& out) {
+/// and the vertex's are read as integers over 10^low. A vertex off the axis moves both bodies by
+/// (-v_x, -v_y, 0): a congruence of determinant 1, so f and s are those of the centre (x - v_x,
+/// y - v_y, z) and the vertex on the axis (math.md §2).
+void pending_coefficients(const DecimalRecipe& sphere, const DecimalRecipe& paraboloid, Closed& c,
+                          const ClosedEvidence& out) {
   mpz_t* t = c.t;
   const Decimal &x = sphere.n[0], &y = sphere.n[1], &z = sphere.n[2], &r = sphere.n[3];
+  const Decimal &vx = paraboloid.n[0], &vy = paraboloid.n[1], &vz = paraboloid.n[2];
   int low = 0;
-  for (const Decimal* d : {&x, &y, &z, &r, &vz})
+  for (const Decimal* d : {&x, &y, &z, &r, &vx, &vy, &vz})
     if (d->m != 0) low = std::min(low, d->e);
   const mpz_ptr X2 = t[0], Y2 = t[1], R2 = t[2], W = t[3], P1 = t[4], P2 = t[5], Q0 = t[6], sum = t[7], tmp = t[8],
                 a2 = t[10], b2 = t[11], both = t[12], ra_w = t[13], rb_w = t[14];
-  set_scaled(X2, x, low);
+  set_scaled(X2, x, low);  // (x - v_x) 10^(-low)
+  if (vx.m != 0) {
+    set_scaled(tmp, vx, low);
+    mpz_sub(X2, X2, tmp);
+  }
   mpz_mul(X2, X2, X2);
   set_scaled(Y2, y, low);
+  if (vy.m != 0) {
+    set_scaled(tmp, vy, low);
+    mpz_sub(Y2, Y2, tmp);
+  }
   mpz_mul(Y2, Y2, Y2);
   set_scaled(R2, r, low);
   mpz_mul(R2, R2, R2);
@@ -338,8 +350,9 @@ Multiples multiples(Closed& c, const ClosedEvidence& out) {
 }  // namespace
 
 bool has_closed_evidence(const DecimalRecipe& sphere, const DecimalRecipe& paraboloid) {
+  // The vertex anywhere: f and s do not see a translation of both bodies (pending_coefficients).
   return sphere.form == DecimalRecipe::Form::Sphere && paraboloid.form == DecimalRecipe::Form::Standard &&
-         detail::has_closed_form(sphere) && detail::has_closed_form(paraboloid);
+         detail::has_closed_form(sphere) && !paraboloid.doubles;
 }
 
 void sphere_standard_evidence(const DecimalRecipe& sphere, const DecimalRecipe& paraboloid, const ClosedEvidence& out) {
@@ -354,7 +367,7 @@ void sphere_standard_evidence(const DecimalRecipe& sphere, const DecimalRecipe& 
   mpz_mul(b2, b2, b2);
   mpz_mul(both, a2, b2);
   const Rests rests{c.A.rest, c.B.rest, a2, b2, both};
-  pending_coefficients(sphere, paraboloid.n[2], c, out);
+  pending_coefficients(sphere, paraboloid, c, out);
   lambda_s_and_rho(sphere, paraboloid, c, out);
   const Multiples m = multiples(c, out);
   reduce_all(c.pending, kMostPending, rests, m, t[9]);

@@ -1,4 +1,4 @@
-// The full evidence of a decimal sphere and a standard paraboloid with its vertex on the axis, from
+// The full evidence of a decimal sphere and an unrotated standard paraboloid (its vertex anywhere), from
 // closed forms on the numbers read (decimal_recipe.hpp): f, s, lambda_s and rho on short integers.
 #pragma once
 
@@ -22,14 +22,14 @@ struct ClosedEvidence {
   Quadratic<Integer>& s_multiple;  ///< S^3 s
 };
 
-/// Whether sphere_standard_evidence takes the pair: a sphere and a standard paraboloid on the axis,
-/// both of decimal numbers (detail::has_closed_form).
+/// Whether sphere_standard_evidence takes the pair: a sphere and an unrotated standard paraboloid,
+/// both of decimal numbers, the vertex anywhere (f and s do not see a common translation, math.md §2).
 bool has_closed_evidence(const detail::DecimalRecipe& sphere, const detail::DecimalRecipe& paraboloid);
 
 /// The reported f = det(lambda P + E) and s = det(lambda A + M), lambda_s and rho of a sphere E
-/// and a standard paraboloid P with its vertex on the axis (has_closed_evidence), from closed forms
-/// (math.md §2, §5). With A = 1/a^2, B = 1/b^2, w = vz - z, E's block is the identity and P's is
-/// diag(A, B, 0):
+/// and a standard paraboloid P (has_closed_evidence), from closed forms (math.md §2, §5). With
+/// A = 1/a^2, B = 1/b^2, x and y the centre's less the vertex's, w = vz - z, E's block is the
+/// identity and P's is diag(A, B, 0):
 ///   f0 = -r^2,  f1 = A (x^2 - r^2) + B (y^2 - r^2) + w,  f2 = A B (x^2 + y^2 - r^2) + (A + B) w - 1/4,
 ///   f3 = A B w - (A + B) / 4,  f4 = -A B / 4,  s = (1 + A lambda)(1 + B lambda),
 /// so lambda_s, the root of s nearest 0, is -min(a, b)^2 and rho = (f0 / f4)(s2 / s0) / lambda_s^2

@@ -133,7 +133,7 @@ bool has_closed_form(const DecimalRecipe& r) {
 }
 
 bool truncated_doubles(const DecimalRecipe& r, DoubleMatrix4& out) {
-  if (!has_closed_form(r)) return false;
+  if (r.doubles) return false;
   // Each entry made canonical in one scratch rational (decimal_value() and sphere_constant_value(),
   // as exact() and sphere_constant() make it) and truncated.
   thread_local Rational scratch;  // one per thread, never copied (so written in place): its limbs are kept
@@ -146,6 +146,11 @@ bool truncated_doubles(const DecimalRecipe& r, DoubleMatrix4& out) {
     return forms::truncated_double(scratch);
   };
   const auto& n = r.n;
+  if (r.form == DecimalRecipe::Form::Matrix) {  // the numbers with the orientation (exactly symmetric)
+    for (std::size_t k = 0; k < 16; ++k)
+      out[k] = k % 4 < k / 4 ? out[4 * (k % 4) + k / 4] : decimal(n[k], r.orientation < 0);
+    return true;
+  }
   out.fill(0.0);
   if (r.form == DecimalRecipe::Form::Sphere) {
     out[0] = out[5] = out[10] = 1.0;
@@ -153,15 +158,36 @@ bool truncated_doubles(const DecimalRecipe& r, DoubleMatrix4& out) {
     if (sphere_constant_value(r, q)) out[15] = forms::truncated_double(scratch);
     return true;
   }
-  for (std::size_t i = 0; i < 2; ++i) {  // 1/a^2, 1/b^2 (forms::inverse_square): a > 0 canonical, inverted, squared
+  thread_local Rational inverse[2], sum;  // 1/a^2 and 1/b^2 kept for a vertex off the axis
+  for (std::size_t i = 0; i < 2; ++i) {   // 1/a^2, 1/b^2 (forms::inverse_square): a > 0 canonical, inverted, squared
     decimal(n[3 + i], false);
     mpz_swap(num, den);
     mpz_mul(num, num, num);
     mpz_mul(den, den, den);
     out[5 * i] = forms::truncated_double(scratch);
+    mpq_swap(inverse[i].mpq(), q);
   }
   out[11] = out[14] = -0.5;
-  out[15] = decimal(n[2], false);
+  if (on_axis(r)) {
+    out[15] = decimal(n[2], false);
+    return true;
+  }
+  // Paraboloid::standard's entries -v_x/a^2, -v_y/b^2 and v_x^2/a^2 + v_y^2/b^2 + v_z, each exact
+  // (rational products and sums, no matrix) and then truncated.
+  if (n[2].m == 0) {
+    mpq_set_ui(sum.mpq(), 0, 1);
+  } else {
+    decimal_value(n[2], false, sum.mpq());
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (n[i].m == 0) continue;
+    decimal_value(n[i], true, q);  // -v
+    mpq_mul(inverse[i].mpq(), inverse[i].mpq(), q);
+    out[4 * i + 3] = out[12 + i] = forms::truncated_double(inverse[i]);
+    mpq_mul(q, q, inverse[i].mpq());  // v^2 / a^2
+    mpq_add(sum.mpq(), sum.mpq(), q);
+  }
+  out[15] = forms::truncated_double(sum);
   return true;
 }
 

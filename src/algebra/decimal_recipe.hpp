@@ -46,9 +46,10 @@ Matrix4 exact_matrix(const DecimalRecipe& r);
 /// numbers of a sphere, or of a standard paraboloid with its vertex on the axis.
 bool has_closed_form(const DecimalRecipe& r);
 
-/// For a recipe with a closed form: exact_matrix(r)'s entries truncated towards zero
-/// (forms::truncated_double of each), written from the numbers in one scratch rational, without a
-/// matrix of rationals; false (out unspecified) for any other recipe.
+/// For decimal numbers (a matrix, a sphere, a standard paraboloid with its vertex anywhere):
+/// exact_matrix(r)'s entries truncated towards zero (forms::truncated_double of each), written from
+/// the numbers in a few scratch rationals, without a matrix of rationals; false (out unspecified)
+/// for a recipe of doubles.
 bool truncated_doubles(const DecimalRecipe& r, DoubleMatrix4& out);
 
 /// For decimal numbers: integer_form(exact_matrix(r), l) and split_scale(l, exact_matrix(r)) written

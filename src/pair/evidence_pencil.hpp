@@ -2,7 +2,7 @@
 // s = det(lambda A + M) reduced, their common-lcm integer multiples S^4 f and S^3 s (the root
 // isolation and the certificate's exact signs), lambda_s, and rho when closed forms give it --
 // computed from each matrix's own integer form (Pz = lp P, Ez = le E; doc/architecture.md, "One batch
-// line"), or for a sphere and a standard paraboloid on the axis read from decimal text from their
+// line"), or for a sphere and a standard paraboloid read from decimal text from their
 // closed forms (forms::sphere_standard_evidence).
 #pragma once
 
