@@ -17,6 +17,7 @@ must agree line by line, and the full-evidence certificates are checked with `re
 """
 
 import argparse
+import fractions
 import json
 import os
 import random
@@ -70,6 +71,98 @@ def write_user_regime(path, lines, seed=12):
             out.write('{"id":%d,"ellipsoid":{"sphere":{"center":[%s,%s,%s],"radius":%s}},'
                       '"paraboloid":{"vertex":[%s,%s,%s],"a":%s,"b":%s}}\n'
                       % (i, f(c[0]), f(c[1]), f(c[2]), f(r), f(v[0]), f(v[1]), f(v[2]), f(a), f(b)))
+
+
+def write_off_axis(path, lines, seed=21):
+    """Paraboloids off the z axis, a line of each kind in turn: a standard paraboloid whose vertex is
+    off the axis (write_user_regime's pairs), the same turned by a small integer quaternion
+    ("rotation"), and the turned one as a matrix of %.17g numbers (det Q3 = 0 shown by no zero
+    entry: the general reader's) with exact "p/q" entries; the sphere near the surface as in write_user_regime."""
+    rng = random.Random(seed)
+    f = lambda v: "%.17g" % v
+    with open(path, "w") as out:
+        for i in range(lines):
+            v = [rng.uniform(-2, 2) for _ in range(3)]
+            a, b = rng.uniform(0.5, 2), rng.uniform(0.5, 2)
+            r = rng.uniform(0.02, 0.3) * min(a, b) ** 2
+            x, y = rng.uniform(-0.5, 0.5) * a, rng.uniform(-0.5, 0.5) * b
+            u = [x, y, x * x / (a * a) + y * y / (b * b) + rng.uniform(-2.4, 5) * r]  # in the body's frame
+            q = [rng.randint(-3, 3) for _ in range(4)]
+            if not any(q) or i % 3 == 0:
+                q = [1, 0, 0, 0]
+            w, qx, qy, qz = q
+            n = w * w + qx * qx + qy * qy + qz * qz
+            rot = [[(w * w + qx * qx - qy * qy - qz * qz) / n, 2 * (qx * qy - w * qz) / n, 2 * (qx * qz + w * qy) / n],
+                   [2 * (qx * qy + w * qz) / n, (w * w - qx * qx + qy * qy - qz * qz) / n, 2 * (qy * qz - w * qx) / n],
+                   [2 * (qx * qz - w * qy) / n, 2 * (qy * qz + w * qx) / n, (w * w - qx * qx - qy * qy + qz * qz) / n]]
+            c = [v[k] + sum(rot[k][j] * u[j] for j in range(3)) for k in range(3)]
+            sphere = '{"sphere":{"center":[%s,%s,%s],"radius":%s}}' % (f(c[0]), f(c[1]), f(c[2]), f(r))
+            if i % 3 != 2:
+                rotation = "" if i % 3 == 0 else ',"rotation":[%d,%d,%d,%d]' % tuple(q)
+                cup = '{"vertex":[%s,%s,%s],"a":%s,"b":%s%s}' % (f(v[0]), f(v[1]), f(v[2]), f(a), f(b), rotation)
+            else:
+                # The turned paraboloid's exact matrix, as "p/q" strings (its doubles would not be a
+                # paraboloid): Q = R diag(1/a^2, 1/b^2, 0) R^T about v, the linear part along R's third column.
+                F = fractions.Fraction
+                R = [[F(2 * t) / n if k != l else F(t) / n for l, t in enumerate(row)] for k, row in enumerate(
+                    [[w * w + qx * qx - qy * qy - qz * qz, qx * qy - w * qz, qx * qz + w * qy],
+                     [qx * qy + w * qz, w * w - qx * qx + qy * qy - qz * qz, qy * qz - w * qx],
+                     [qx * qz - w * qy, qy * qz + w * qx, w * w - qx * qx - qy * qy + qz * qz]])]
+                d = [1 / F(a) ** 2, 1 / F(b) ** 2, F(0)]
+                V = [F(t) for t in v]
+                A = [[sum(R[k][j] * d[j] * R[l][j] for j in range(3)) for l in range(3)] for k in range(3)]
+                g = [R[k][2] for k in range(3)]
+                bl = [-sum(A[k][l] * V[l] for l in range(3)) - g[k] / 2 for k in range(3)]
+                c0 = sum(V[k] * A[k][l] * V[l] for k in range(3) for l in range(3)) + sum(g[k] * V[k] for k in range(3))
+                m = [A[0] + [bl[0]], A[1] + [bl[1]], A[2] + [bl[2]], bl + [c0]]
+                cup = "[" + ",".join("[" + ",".join('"%s"' % m[k][l] for l in range(4)) + "]" for k in range(4)) + "]"
+            out.write('{"id":%d,"ellipsoid":%s,"paraboloid":%s}\n' % (i, sphere, cup))
+
+
+def write_scaled(path, lines, kind="quadric", shift=0, seed=36):
+    """Random ordinary pairs as matrices of decimals with 12 significant digits: an ellipsoid (semi-axes
+    in [0.2, 2], a random rotation, the centre in [-2, 2]^3) against another ("quadric") or against an
+    axis-aligned paraboloid ("paraboloid"), the ellipsoid's exponents moved by +shift and the second
+    body's by -shift (shift 300: the pair scaled by 10^300 and 10^-300, the same mantissas)."""
+    rng = random.Random(seed)
+
+    def rotation():
+        q = [rng.gauss(0, 1) for _ in range(4)]
+        n = sum(t * t for t in q) ** 0.5
+        w, x, y, z = [t / n for t in q]
+        return [[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]]
+
+    def ellipsoid():
+        R, ax = rotation(), [rng.uniform(0.2, 2) for _ in range(3)]
+        c = [rng.uniform(-2, 2) for _ in range(3)]
+        A = [[sum(R[i][k] * R[j][k] / ax[k] ** 2 for k in range(3)) for j in range(3)] for i in range(3)]
+        b = [-sum(A[i][j] * c[j] for j in range(3)) for i in range(3)]
+        c0 = sum(c[i] * A[i][j] * c[j] for i in range(3) for j in range(3)) - 1
+        return [A[0] + [b[0]], A[1] + [b[1]], A[2] + [b[2]], b + [c0]]
+
+    def paraboloid():
+        a, b = rng.uniform(0.3, 2), rng.uniform(0.3, 2)
+        v = [rng.uniform(-2, 2) for _ in range(3)]
+        ia, ib = 1 / a / a, 1 / b / b
+        return [[ia, 0, 0, -ia * v[0]], [0, ib, 0, -ib * v[1]], [0, 0, 0, -0.5],
+                [-ia * v[0], -ib * v[1], -0.5, ia * v[0] ** 2 + ib * v[1] ** 2 + v[2]]]
+
+    def text(m, k):
+        def number(v):
+            if v == 0:
+                return "0"
+            mantissa, e = ("%.11e" % v).split("e")
+            return "%se%d" % (mantissa, int(e) + k)
+        return "[" + ",".join("[" + ",".join(number(m[min(i, j)][max(i, j)]) for j in range(4)) + "]"
+                              for i in range(4)) + "]"
+
+    with open(path, "w") as out:
+        for i in range(lines):
+            e = ellipsoid()
+            q = ellipsoid() if kind == "quadric" else paraboloid()
+            out.write('{"id":%d,"ellipsoid":%s,"%s":%s}\n' % (i, text(e, shift), kind, text(q, -shift)))
 
 
 def run_time(cmd, out_path):

@@ -198,7 +198,7 @@ std::string with_margin(std::string answer, const std::optional<relpos::Margin>&
 
 /// `relpos classify --quadric Q`: an ellipsoid against a general quadric (doc/quadrics.md).
 int run_classify_general(const ShapeOptions& shapes, const std::string& quadric, int digits, bool json,
-                         bool contact_only) {
+                         bool contact_only, const relpos::SizeLimit& limit) {
   if (shapes.paraboloid || shapes.standard)
     throw UsageError{"give either --quadric or a paraboloid (--paraboloid, --standard-paraboloid), not both"};
   if (!shapes.ellipsoid && !shapes.sphere)
@@ -207,8 +207,10 @@ int run_classify_general(const ShapeOptions& shapes, const std::string& quadric,
   try {
     const relpos::Ellipsoid e = shapes.make_ellipsoid();
     const relpos::Quadric q = relpos::io::quadric_from_json(parse_inline(quadric, "quadric"), "quadric");
+    const std::size_t bits = relpos::io::check_general_pair_size(e, q, limit);  // as a batch line with "quadric"
     if (contact_only) {
-      const relpos::QuadricVerdict v = relpos::decide_position(e, q);
+      const relpos::QuadricVerdict v =
+          relpos::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); });
       if (json)
         std::cout << relpos::io::detail::answer_text(256, v) << '\n';
       else
@@ -217,7 +219,8 @@ int run_classify_general(const ShapeOptions& shapes, const std::string& quadric,
                   << relpos::to_string(v.stage) << ")\n";
       return finish_cout();
     }
-    const relpos::QuadricClassification c = relpos::classify(e, q);
+    const relpos::QuadricClassification c =
+        relpos::io::with_stack_for_general(bits, [&] { return relpos::classify(e, q); });
     if (json)
       std::cout << relpos::io::detail::answer_text(2048, c, digits) << '\n';
     else
@@ -261,7 +264,7 @@ int run_classify(Args& args) {
   }
   if (quadric && margin_bits > 0)
     throw UsageError{"--margin: the margin s* is defined for an ellipsoid and an elliptic paraboloid only"};
-  if (quadric) return run_classify_general(shapes, *quadric, digits, json, contact_only);
+  if (quadric) return run_classify_general(shapes, *quadric, digits, json, contact_only, limit);
   shapes.check(/*need_ellipsoid=*/true);
 
   relpos::io::RenderOptions options;

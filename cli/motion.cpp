@@ -355,6 +355,11 @@ int run_motion(Args& args) {
       digits = static_cast<int>(parse_count(v, "--digits", 1, kMaxMotionDigits));
     else if (args.value("--max-seconds", v))
       max_seconds = parse_count(v, "--max-seconds", 1, 86400);
+    else if (args.value("--quadric", v))  // doc/cli.md, "relpos motion": what is not supported
+      throw UsageError{
+          "--quadric: a motion is decided against an elliptic paraboloid only (its first contact and timeline "
+          "follow the pencil through time, doc/math.md §7); for the position at one instant, place the ellipsoid "
+          "there and run `relpos classify --quadric Q`"};
     else
       args.unexpected();
   }

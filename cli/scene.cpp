@@ -424,7 +424,7 @@ int run_scene(Args& args) {
   try {
     if (quadric_text) {
       fixed.quadric = relpos::io::quadric_from_json(parse_inline(*quadric_text, "quadric"), "quadric");
-      fixed.quadric_size.emplace(*fixed.quadric);
+      fixed.quadric_size.emplace(*fixed.quadric, options_line.size_limit);
     } else {
       fixed.paraboloid = shapes.make_paraboloid();
     }

@@ -6,7 +6,10 @@
 #   scripts/corpus-outputs.sh --compare OLD NEW      # byte for byte, the scene summaries' timings masked
 # The corpora: the examples, the hostile inputs, the regime files (spheres and matrices, as
 # benchmarks/batch_bench.py writes them, 2 000 lines each), the edge cases, the fuzz seed corpus, the
-# scene examples and a generated scene, one-pair reports, a motion, and `verify` on full answers.
+# scene examples and a generated scene, one-pair reports, a motion, and `verify` on full answers; the
+# general pairs (tests/general_cases_jsonl.cpp: every type, every position, mapped and scaled), the
+# paraboloids off the z axis and the pairs scaled by 10^300 and 10^-300 (batch_bench.py's
+# write_off_axis and write_scaled).
 set -euo pipefail
 if [ "${1:-}" = "--compare" ]; then
   old=$2 new=$3 status=0
@@ -31,11 +34,15 @@ trap 'rm -rf "$tmp"' EXIT
 /usr/bin/python3 - "$tmp" <<'PY'
 import sys
 sys.path.insert(0, "benchmarks")
-from batch_bench import write_regime
+from batch_bench import write_off_axis, write_regime, write_scaled
 write_regime(sys.argv[1] + "/regime-sphere.jsonl", 2000, form="sphere")
 write_regime(sys.argv[1] + "/regime-matrix.jsonl", 2000, form="matrix")
+write_off_axis(sys.argv[1] + "/off-axis.jsonl", 600)
+write_scaled(sys.argv[1] + "/scaled-quadric.jsonl", 300, kind="quadric", shift=300)
+write_scaled(sys.argv[1] + "/scaled-paraboloid.jsonl", 60, kind="paraboloid", shift=300)
 PY
 "$build/tests/edge_cases_jsonl" >"$tmp/edges.jsonl" 2>/dev/null || true
+"$build/tests/general_cases_jsonl" 300 36 4 >"$tmp/general.jsonl" 2>/dev/null || true
 : >"$tmp/fuzz.jsonl"
 for f in fuzz/corpus/batch_line/*; do
   tr -d '\n\r' <"$f" >>"$tmp/fuzz.jsonl"
@@ -48,7 +55,8 @@ batch() {  # name input args...
   "$cli" batch "$input" --threads 2 "$@" >"$out/$name.out" 2>&1 || echo "exit $?" >>"$out/$name.out"
 }
 for input in examples/mixed.jsonl tests/hostile/hostile.jsonl "$tmp/regime-sphere.jsonl" "$tmp/regime-matrix.jsonl" \
-  "$tmp/edges.jsonl" "$tmp/fuzz.jsonl" examples/scene-container.jsonl; do
+  "$tmp/edges.jsonl" "$tmp/fuzz.jsonl" examples/scene-container.jsonl "$tmp/general.jsonl" "$tmp/off-axis.jsonl" \
+  "$tmp/scaled-quadric.jsonl" "$tmp/scaled-paraboloid.jsonl"; do
   n=$(basename "$input" .jsonl)
   batch "$n-full" "$input"
   batch "$n-minimal" "$input" --evidence minimal
@@ -59,6 +67,8 @@ done
 "$cli" verify examples/mixed.jsonl "$out/mixed-full.out" >"$out/verify-mixed.out" 2>&1 || true
 "$cli" verify "$tmp/edges.jsonl" "$out/edges-full.out" >"$out/verify-edges.out" 2>&1 || true
 "$cli" verify "$tmp/regime-sphere.jsonl" "$out/regime-sphere-full.out" >"$out/verify-regime.out" 2>&1 || true
+"$cli" verify "$tmp/general.jsonl" "$out/general-full.out" >"$out/verify-general.out" 2>&1 || true
+"$cli" verify "$tmp/off-axis.jsonl" "$out/off-axis-full.out" >"$out/verify-off-axis.out" 2>&1 || true
 
 scene() {  # name args...
   local name=$1

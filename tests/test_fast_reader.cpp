@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cstdio>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -16,9 +18,11 @@
 #include "algebra/pencil.hpp"
 #include "io/batch.hpp"
 #include "io/fast_quadric.hpp"
+#include "io/general_io.hpp"
 #include "io/json_tree.hpp"
 #include "io/quadric_json.hpp"
 #include "relpos/classify.hpp"
+#include "relpos/general_classify.hpp"
 #include "relpos/io.hpp"
 
 namespace {
@@ -529,5 +533,128 @@ TEST_CASE("fast reader: a decimal written as a string is the same number, the sa
     // And the quadrics themselves: the fast reader takes the strings.
     const std::size_t e = strings.find("\"ellipsoid\":") + 12, p = strings.find(",\"paraboloid\":");
     CHECK(fast_ellipsoid(std::string_view(strings).substr(e, p - e), false).has_value());
+  }
+}
+
+namespace {
+
+/// A matrix as text, each entry v spelled with 17 significant digits and its decimal exponent
+/// moved by `shift`: the numbers of v 10^shift, exactly (the same mantissas).
+std::string shifted_matrix(const double (&m)[16], int shift) {
+  std::string s = "[";
+  for (int i = 0; i < 4; ++i) {
+    s += i ? ",[" : "[";
+    for (int j = 0; j < 4; ++j) {
+      const double v = m[4 * i + j];
+      char b[48];
+      std::snprintf(b, sizeof b, "%.16e", v);
+      std::string t = b;
+      const std::size_t e = t.find('e');
+      if (v != 0) t = t.substr(0, e + 1) + std::to_string(std::stoi(t.substr(e + 1)) + shift);
+      s += (j ? "," : "") + (v == 0 ? std::string("0") : t);
+    }
+    s += "]";
+  }
+  return s + "]";
+}
+
+}  // namespace
+
+TEST_CASE("fast reader: a matrix scaled by a power of ten is read as the unscaled one", "[io][fast]") {
+  // Known by construction: a positive factor changes neither the quadric nor the position. The
+  // scaled texts are taken by the fast reader (not only the short ones), with the general reader's
+  // exact matrices inside their enclosures, the same integer forms and the unscaled pair's position.
+  std::mt19937_64 rng(300);
+  std::uniform_real_distribution<double> u(-0.3, 0.3), pos(0.8, 2.0), rad(0.01, 0.4);
+  for (int trial = 0; trial < 24; ++trial) {
+    const double x = u(rng), y = u(rng), a = pos(rng), b = pos(rng), r = rad(rng);
+    const double z = x * x / a / a + y * y / b / b + u(rng);
+    // A = [[1, 1/4, 0], [1/4, 1, 0], [0, 0, 1]] about the centre (x, y, z), radius r: b = -A c.
+    const double bx = -(x + 0.25 * y), by = -(0.25 * x + y), c0 = x * x + y * y + 0.5 * x * y + z * z - r * r;
+    const double em[16] = {1, 0.25, 0, bx, 0.25, 1, 0, by, 0, 0, 1, -z, bx, by, -z, c0};
+    const double pm[16] = {1 / a / a, 0, 0, -x, 0, 1 / b / b, 0, 0, 0, 0, 0, -0.5, -x, 0, -0.5, 3 * x};
+    const int shifts[][2] = {{300, -300}, {-300, 300}, {100, 250}, {-280, -31}};
+    const int* s = shifts[trial % 4];
+    const std::string e0 = shifted_matrix(em, 0), p0 = shifted_matrix(pm, 0);
+    const std::string es = shifted_matrix(em, s[0]), ps = shifted_matrix(pm, s[1]);
+    check_pair(es, ps, false);
+    if (trial < 2) check_pair_evidence(es, ps, false);
+    REQUIRE(relpos::decide_position(*fast_ellipsoid(es, false), *fast_paraboloid(ps, false)).position ==
+            relpos::decide_position(*fast_ellipsoid(e0, false), *fast_paraboloid(p0, false)).position);
+  }
+}
+
+TEST_CASE("fast reader: scaled numbers it leaves to the general reader", "[io][fast]") {
+  for (const char* text : {
+           // exponents spanning more than 60 in one matrix (the size bound of fast_quadric.hpp)
+           "[[1e300,0,0,0],[0,1e300,0,0],[0,0,1e300,0],[0,0,0,-1e239]]",
+           // beyond 2^1020 (the filters' range), or beyond the double range
+           "[[9e307,0,0,0],[0,9e307,0,0],[0,0,9e307,0],[0,0,0,-9e307]]",
+           "[[1e341,0,0,0],[0,1e341,0,0],[0,0,1e341,0],[0,0,0,-1e341]]",
+           "[[1e-341,0,0,0],[0,1e-341,0,0],[0,0,1e-341,0],[0,0,0,-1e-341]]",
+           // a sphere's numbers stay short (its constant entry squares them)
+           R"({"sphere":{"center":[1e40,0,0],"radius":1e40}})",
+       }) {
+    INFO(text);
+    REQUIRE_FALSE(fast_ellipsoid(text, false));
+  }
+  REQUIRE_FALSE(fast_paraboloid(R"({"vertex":[0,0,1e-31],"a":1,"b":1})", false));
+  // Within the bounds: taken, the exact matrix that of the text.
+  const auto e = fast_ellipsoid("[[1e300,0,0,0],[0,1e300,0,0],[0,0,1e300,0],[0,0,0,-1e240]]", false);
+  REQUIRE(e);
+  auto pow10 = [](int n) {
+    relpos::Rational p(1);
+    for (int k = 0; k < n; ++k) p *= 10;
+    return p;
+  };
+  REQUIRE(e->matrix()(0, 0) == pow10(300));
+  REQUIRE(e->matrix()(3, 3) == -pow10(240));
+}
+
+TEST_CASE("fast reader: a general quadric that is an ellipsoid's or an elliptic paraboloid's matrix", "[io][fast]") {
+  // The quadric the general reader makes of the same text: the same exact matrix (its orientation
+  // included) and type; any other type or form is left to it.
+  using relpos::Quadric;
+  using relpos::QuadricType;
+  const std::string ball = "[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]]";
+  const std::string texts[] = {
+      ball,
+      "{\"matrix\":[[-2,0,0,0.1],[0,-3,0,0],[0,0,-4,0],[0.1,0,0,50]]}",         // negated
+      "[[1e300,0,0,0],[0,2e300,0,0],[0,0,3e300,-1e300],[0,0,-1e300,-4e300]]",   // scaled
+      "[[1,0,0,0],[0,2.5,0,0],[0,0,0,-0.5],[0,0,-0.5,0.25]]",                   // a paraboloid
+      "[[-1e-300,0,0,0],[0,-1e-300,0,0],[0,0,0,5e-301],[0,0,5e-301,-2e-300]]",  // negated, scaled
+  };
+  const QuadricType types[] = {QuadricType::Ellipsoid, QuadricType::Ellipsoid, QuadricType::Ellipsoid,
+                               QuadricType::EllipticParaboloid, QuadricType::EllipticParaboloid};
+  const Ellipsoid probe = *fast_ellipsoid("{\"sphere\":{\"center\":[0.5,0.25,2],\"radius\":1.5}}", false);
+  for (std::size_t k = 0; k < 5; ++k) {
+    INFO(texts[k]);
+    for (const bool doubles : {false, true}) {
+      std::optional<Quadric> q;
+      std::size_t end = 0;
+      const std::string text = texts[k] + ",\"id\":1}";
+      if (doubles && k >= 2 && k != 3) {  // beyond 2^100: the general reader's, as for an ellipsoid
+        REQUIRE_FALSE(relpos::io::detail::fast_quadric_at(text, doubles, end, q));
+        continue;
+      }
+      REQUIRE(relpos::io::detail::fast_quadric_at(text, doubles, end, q));
+      REQUIRE(end == texts[k].size());
+      const Quadric g = relpos::io::quadric_from_json(general_json(texts[k], doubles));
+      REQUIRE(q->type() == types[k]);
+      REQUIRE(g.type() == types[k]);
+      REQUIRE(q->matrix() == g.matrix());
+      REQUIRE(relpos::decide_position(probe, *q).position == relpos::decide_position_exact(probe, g).position);
+    }
+  }
+  // Left to the general reader: other types, the geometric forms, an ellipsoid's own forms.
+  for (const char* text : {"[[1,0,0,0],[0,1,0,0],[0,0,-1,0],[0,0,0,-1]]",  // a hyperboloid of one sheet
+                           "[[1,0,0,0],[0,1,0,0],[0,0,0,0],[0,0,0,-1]]",   // an elliptic cylinder
+                           R"({"type":"sphere","center":[0,0,0],"radius":1})",
+                           R"({"sphere":{"center":[0,0,0],"radius":1}})", R"({"vertex":[0,0,0],"a":1,"b":1})"}) {
+    INFO(text);
+    std::optional<Quadric> q;
+    std::size_t end = 0;
+    REQUIRE_FALSE(relpos::io::detail::fast_quadric_at(text, false, end, q));
+    REQUIRE_FALSE(q);
   }
 }

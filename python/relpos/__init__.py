@@ -636,8 +636,8 @@ def classify(
 
     With a relpos.Quadric as p (any real quadric, doc/quadrics.md) the answer is a
     QuadricClassification, the fields `relpos batch` writes for a line with "quadric"; margin=True
-    is refused (s* is defined for a paraboloid only) and the size limit is the batch line's
-    (max_bits applies to paraboloids).
+    is refused (s* is defined for a paraboloid only); max_bits is the size limit as for a paraboloid
+    (a batch line's with "quadric").
     """
     _check_pair(e, p, "classify", general=True)
     if not isinstance(evidence, str) or evidence not in ("full", "minimal"):
@@ -650,8 +650,7 @@ def classify(
     if general:
         if margin:
             raise ValueError("margin: the margin s* is defined for an ellipsoid and an elliptic paraboloid only")
-        _max_bits(max_bits)
-        fields = _json.loads(_relpos._classify_quadric_json(e, p, evidence == "full"))
+        fields = _json.loads(_relpos._classify_quadric_json(e, p, evidence == "full", max_bits=_max_bits(max_bits)))
     else:
         fields = _json.loads(_relpos._classify_json(e, p, evidence == "full", _max_bits(max_bits)))
     if margin:
@@ -764,16 +763,17 @@ def decide_positions(
 
     P may also be one relpos.Quadric (any real quadric, doc/quadrics.md) shared by every pair: the
     codes are then indices into QUADRIC_POSITION_NAMES (5 = "O", 6 = "TO", 7 = "EQ" besides the
-    five), each pair decided as classify(e, q) decides it, the size limit a batch line's.
+    five), each pair decided as classify(e, q) decides it, the size limit (max_bits) a batch line's.
     """
     if not isinstance(errors, str) or errors not in ("raise", "code"):
         raise ValueError("errors: expected 'raise' or 'code', got %s" % _shown(errors))
     if symmetrize not in (None, "upper"):
         raise ValueError("symmetrize: expected None or 'upper', got %r" % (symmetrize,))
     if isinstance(P, Quadric):
-        _max_bits(max_bits)
         E = dict(E) if isinstance(E, Mapping) else E
-        return _relpos._decide_positions_quadric(E, P, _thread_count(threads), errors == "raise", symmetrize == "upper")
+        return _relpos._decide_positions_quadric(
+            E, P, _thread_count(threads), errors == "raise", symmetrize == "upper", _max_bits(max_bits)
+        )
     E = dict(E) if isinstance(E, Mapping) else E
     P = dict(P) if isinstance(P, Mapping) else P
     return _relpos._decide_positions(

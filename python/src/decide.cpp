@@ -433,7 +433,7 @@ py::array_t<std::int8_t> decide_positions(py::handle e_input, py::handle p_input
 /// decide_position(e, q) (the general part has no lanes across pairs), the size limit as a batch
 /// line's ("E[i]: numbers too large: ..."). Errors and threads as for the paraboloid.
 py::array_t<std::int8_t> decide_positions_quadric(py::handle e_input, const relpos::Quadric& q, unsigned threads,
-                                                  bool raise_errors, bool upper) {
+                                                  bool raise_errors, bool upper, std::size_t max_bits) {
   static_assert(static_cast<int>(relpos::QuadricPosition::E) == 4 && static_cast<int>(relpos::QuadricPosition::EQ) == 7,
                 "codes are the order of relpos.QUADRIC_POSITION_NAMES");
   const Side e_side(e_input, "E", true, upper);
@@ -441,7 +441,7 @@ py::array_t<std::int8_t> decide_positions_quadric(py::handle e_input, const relp
   const std::size_t n = *e_side.n;
   py::array_t<std::int8_t> out(static_cast<py::ssize_t>(n));
   std::int8_t* codes = out.mutable_data();
-  const relpos::io::GeneralPairSize size(q);  // the quadric's size once
+  const relpos::io::GeneralPairSize size(q, relpos::SizeLimit{max_bits});  // the quadric's size once
   FirstError first_error;
   SignalWatch watch;  // Ctrl-C: the calling thread polls between its chunks, every thread stops
   {
@@ -450,8 +450,9 @@ py::array_t<std::int8_t> decide_positions_quadric(py::handle e_input, const relp
       for (std::size_t i = begin; i < end; ++i) {
         try {
           const relpos::Ellipsoid e = e_side.ellipsoid(i);
-          size.check(e);
-          codes[i] = static_cast<std::int8_t>(relpos::decide_position(e, q).position);
+          const std::size_t bits = size.check(e);
+          codes[i] = static_cast<std::int8_t>(
+              relpos::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); }).position);
         } catch (const std::exception& err) {
           codes[i] = kInvalid;
           if (!raise_errors) continue;
@@ -583,6 +584,7 @@ void bind_decide(py::module_& m) {
         "relpos::Scene on the bodies: (position codes, contact codes, stage codes, threads used).");
   m.attr("_INVALID") = kInvalid;
   m.def("_decide_positions_quadric", &decide_positions_quadric, "E"_a, "q"_a, "threads"_a, "raise_errors"_a, "upper"_a,
+        "max_bits"_a,
         "Position codes (int8, 0 = I ... 7 = EQ, -1 = invalid pair) of the ellipsoids E (n, 4, 4) or parameters "
         "against one relpos.Quadric.");
   m.def("_decide_positions", &decide_positions, "E"_a, "P"_a, "threads"_a, "raise_errors"_a, "upper"_a, "max_bits"_a,

@@ -21,12 +21,16 @@ namespace {
 using namespace pybind11::literals;
 
 /// The answer of `relpos batch` (full evidence) or `relpos batch --evidence minimal` for the line
-/// {"ellipsoid": e, "quadric": q}, without "id", as text; the size limit as the line's.
-std::string classify_quadric_json(const relpos::Ellipsoid& e, const relpos::Quadric& q, bool full, int digits) {
+/// {"ellipsoid": e, "quadric": q}, without "id", as text; the size limit as the line's (max_bits).
+std::string classify_quadric_json(const relpos::Ellipsoid& e, const relpos::Quadric& q, bool full, int digits,
+                                  std::size_t max_bits) {
   py::gil_scoped_release release;
-  relpos::io::check_general_pair_size(e, q);
-  if (full) return relpos::io::detail::answer_text(2048, relpos::classify(e, q), digits);
-  return relpos::io::detail::answer_text(256, relpos::decide_position(e, q));
+  const std::size_t bits = relpos::io::check_general_pair_size(e, q, relpos::SizeLimit{max_bits});
+  if (full)
+    return relpos::io::detail::answer_text(
+        2048, relpos::io::with_stack_for_general(bits, [&] { return relpos::classify(e, q); }), digits);
+  return relpos::io::detail::answer_text(
+      256, relpos::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); }));
 }
 
 /// The verifier's reason why the certificate (JSON text) does not prove the position, or None.
@@ -44,6 +48,7 @@ std::optional<std::string> verify_quadric(const relpos::Ellipsoid& e, const relp
 
 void bind_general(py::module_& m) {
   m.def("_classify_quadric_json", &classify_quadric_json, "e"_a, "q"_a, "full"_a = true, "digits"_a = 12,
+        "max_bits"_a = relpos::kMaxNormalizedBits,
         "The JSON object of `relpos batch` (or `--evidence minimal`) for a line with \"quadric\", without \"id\", "
         "as text.");
   m.def("_verify_quadric", &verify_quadric, "e"_a, "q"_a, "position"_a, "certificate"_a,

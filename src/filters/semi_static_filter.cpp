@@ -255,11 +255,12 @@ bool enclosed(const Matrix4& m, View<RunningBound>& out) {
 }
 
 /// The same from certified enclosures [lo, hi]: scaled by the power of two that brings the largest
-/// bound near 1 (exact while the scaled bounds stay above the entry floor, checked).
+/// bound near 1 (exact while the scaled bounds stay above the entry floor, checked; up to 2^1020 the
+/// factor is a normal double: the fast reader's matrices scaled by 10^300, fast_quadric.hpp).
 bool enclosed(const detail::EnclosureMatrix4& m, View<RunningBound>& out) {
   double mx = 0;
   for (std::size_t i = 0; i < 16; ++i) mx = std::max({mx, std::fabs(m.lo[i]), std::fabs(m.hi[i])});
-  if (!(mx > 0 && mx <= 0x1p1000)) return false;
+  if (!(mx > 0 && mx <= 0x1p1020)) return false;
   const double k = std::ldexp(1.0, -std::ilogb(mx) - 1);
   for (std::size_t i = 0; i < 16; ++i) {
     const double lo = m.lo[i] * k, hi = m.hi[i] * k;

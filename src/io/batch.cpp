@@ -4,9 +4,9 @@
 // The top-level object of a line is scanned once with the lexer (json_lexer.hpp): each member's
 // value is located as a span of the text, so that the id is echoed byte for byte, duplicate keys are
 // seen, and "comment" is validated by a pass that stores nothing. The two quadrics are read by the
-// fast reader (fast_quadric.hpp: common forms, short numbers, straight to double enclosures) during
-// the scan, or else parsed into (small, bounded) trees by the general reader (quadric_json.hpp),
-// which words every error.
+// fast reader (fast_quadric.hpp: common forms, short numbers, straight to double enclosures; for a
+// "quadric", an ellipsoid's or an elliptic paraboloid's matrix) during the scan, or else parsed into (small, bounded)
+// trees by the general reader (quadric_json.hpp), which words every error.
 #include "io/batch.hpp"
 
 #include <algorithm>
@@ -108,8 +108,8 @@ class LineReader {
   void read_quadric(const Json& ellipsoid, const Json& second) {
     if (given("paraboloid")) throw InputError("a line takes \"paraboloid\" or \"quadric\", not both");
     if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
-    out_.quadric = quadric_from_json(second, "quadric");
-    check_general_pair_size(*out_.ellipsoid, *out_.quadric);  // doc/cli.md, Limits
+    if (!out_.quadric) out_.quadric = quadric_from_json(second, "quadric");
+    check_general_pair_size(*out_.ellipsoid, *out_.quadric, options_.size_limit);  // doc/cli.md, Limits
   }
 
   void set_id(std::string_view text) {
@@ -168,6 +168,8 @@ class LineReader {
       taken = detail::fast_ellipsoid_at(line_.substr(i), options_.numbers_as_doubles, end, out_.ellipsoid);
     else if (key == "paraboloid" && !scene_)
       taken = detail::fast_paraboloid_at(line_.substr(i), options_.numbers_as_doubles, end, out_.paraboloid);
+    else if (key == "quadric" && !scene_)
+      taken = detail::fast_quadric_at(line_.substr(i), options_.numbers_as_doubles, end, out_.quadric);
     end = end == std::string_view::npos ? detail::value_end(line_, i) : i + end;
     if (end == std::string_view::npos) invalid_json(line_);
     const std::string_view value = line_.substr(i, end - i);

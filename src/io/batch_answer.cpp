@@ -10,6 +10,7 @@
 
 #include "io/answer_json.hpp"
 #include "io/batch.hpp"
+#include "io/general_io.hpp"
 #include "relpos/classify.hpp"
 #include "relpos/contact.hpp"
 #include "relpos/error.hpp"
@@ -26,10 +27,16 @@ void answer(const BatchLine& in, std::string_view id, const BatchOptions& option
   if (in.quadric) {  // a general quadric (doc/cli.md, "General quadrics"): --contact-only gets the verdict
     if (options.margin_bits > 0)
       throw InputError("--margin: the margin s* is defined for an ellipsoid and an elliptic paraboloid only");
+    // Beyond the default limit (raised by --max-bits; the reader checked the size): a large stack.
+    const std::size_t bits = options.size_limit.max_bits > kMaxNormalizedBits
+                                 ? check_general_pair_size(*in.ellipsoid, *in.quadric, options.size_limit)
+                                 : 0;
     if (options.evidence == Evidence::Full && !options.contact_only)
-      detail::write_answer(id, out, classify(*in.ellipsoid, *in.quadric), options.render.digits);
+      detail::write_answer(id, out, with_stack_for_general(bits, [&] { return classify(*in.ellipsoid, *in.quadric); }),
+                           options.render.digits);
     else
-      detail::write_answer(id, out, decide_position(*in.ellipsoid, *in.quadric));
+      detail::write_answer(id, out,
+                           with_stack_for_general(bits, [&] { return decide_position(*in.ellipsoid, *in.quadric); }));
     return;
   }
   const std::optional<Margin> m =

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
+#include <cmath>
 #include <memory>
 
 #include "algebra/decimal_recipe.hpp"
@@ -67,6 +69,33 @@ void take_matrix(const std::array<Number, 16>& n, Entries& x, DecimalRecipe& rec
   }
 }
 
+/// The entries the shape test reads, or null when this reader does not take the matrix. Short
+/// numbers: x itself. A matrix with wide numbers (one scaled by a power of ten, fast_value.hpp) is
+/// taken when its non-zero numbers' exponents span at most 2 kMaxExponent, so that its primitive
+/// integer form is one of a matrix of short numbers (the size bound of fast_quadric.hpp), and each
+/// enclosure lies within [2^-1020, 2^1020] in magnitude (the range the filters scale exactly,
+/// semi_static_filter.cpp); its shape is then read on x scaled by the power of two that brings the
+/// largest bound below 1 (exact: the scaled bounds stay normal; a positive factor changes no sign,
+/// doc/math.md §1).
+const Entries* shape_entries(const Reader& r, const std::array<Number, 16>& n, const Entries& x, Entries& scaled) {
+  if (!r.any_wide()) return &x;
+  int low = INT_MAX, high = INT_MIN;
+  double mx = 0;
+  for (std::size_t k = 0; k < 16; ++k) {
+    if (n[k].d.is_zero()) continue;
+    low = std::min(low, n[k].d.e);
+    high = std::max(high, n[k].d.e);
+    mx = std::max({mx, std::fabs(x[k].inf()), std::fabs(x[k].sup())});
+  }
+  if (high < low || high - low > 2 * Reader::kMaxExponent) return nullptr;
+  for (std::size_t k = 0; k < 16; ++k)
+    if (!n[k].d.is_zero() && !(std::min(std::fabs(x[k].inf()), std::fabs(x[k].sup())) >= 0x1p-1020 && mx <= 0x1p1020))
+      return nullptr;
+  const I scale(std::ldexp(1.0, -std::ilogb(mx) - 1));
+  for (std::size_t k = 0; k < 16; ++k) scaled[k] = x[k] * scale;
+  return &scaled;
+}
+
 /// The matrix of a 4x4 array or {"matrix": 4x4}, or -1.
 int matrix_node(const Reader& r, int root) {
   if (r.node(root).kind == FastKind::Array) return root;
@@ -84,7 +113,7 @@ int sphere_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recipe)
   std::array<Number, 3> c;
   if (radius < 0 || r.node(radius).kind != FastKind::Number || !r.numbers(centre, c)) return 0;
   const Number& rad = r.node(radius).number;
-  if (!positive(rad)) return 0;
+  if (!positive(rad) || r.wide(c[0]) || r.wide(c[1]) || r.wide(c[2]) || r.wide(rad)) return 0;  // the size bound
   recipe.form = DecimalRecipe::Form::Sphere;
   recipe.n = {c[0].d, c[1].d, c[2].d, rad.d};
   x.fill(I(0));
@@ -94,17 +123,23 @@ int sphere_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recipe)
   return 1;
 }
 
-/// The entries of the ellipsoid of the text, in interval arithmetic, and its orientation (the sign
-/// that makes Q3 positive definite); 0 when this reader does not take the text. Rounding towards
+/// The entries of an ellipsoid's matrix (node m), in interval arithmetic, and its orientation (the
+/// sign that makes Q3 positive definite); 0 when this reader does not take it. Rounding towards
 /// +inf (the caller's guard).
-int ellipsoid_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recipe) {
-  const int m = matrix_node(r, root);
-  if (m < 0) return sphere_entries(r, root, x, recipe);
+int ellipsoid_matrix_entries(const Reader& r, int m, Entries& x, DecimalRecipe& recipe) {
   std::array<Number, 16> n;
   if (!symmetric_matrix(r, m, n) || n[0].d.is_zero()) return 0;
   const int want = n[0].d.neg ? -1 : 1;
   take_matrix(n, x, recipe);
-  return shape_filter::certified_ellipsoid_intervals(x, want) == want ? want : 0;
+  Entries scaled;
+  const Entries* shape = shape_entries(r, n, x, scaled);
+  return shape && shape_filter::certified_ellipsoid_intervals(*shape, want) == want ? want : 0;
+}
+
+/// The same for the ellipsoid of the text: a matrix or a sphere.
+int ellipsoid_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recipe) {
+  const int m = matrix_node(r, root);
+  return m < 0 ? sphere_entries(r, root, x, recipe) : ellipsoid_matrix_entries(r, m, x, recipe);
 }
 
 /// {"vertex": [x, y, z], "a": a, "b": b}: Paraboloid::standard without rotation, valid when a, b > 0.
@@ -116,7 +151,8 @@ int standard_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recip
       !r.numbers(r.member(root, "vertex"), v))
     return 0;
   const Number &na = r.node(a).number, &nb = r.node(b).number;
-  if (!positive(na) || !positive(nb)) return 0;
+  if (!positive(na) || !positive(nb) || r.wide(v[0]) || r.wide(v[1]) || r.wide(v[2]) || r.wide(na) || r.wide(nb))
+    return 0;  // the size bound
   recipe.form = DecimalRecipe::Form::Standard;
   recipe.n = {v[0].d, v[1].d, v[2].d, na.d, nb.d};
   const I ia = I(1) / CGAL::square(na.x), ib = I(1) / CGAL::square(nb.x);
@@ -130,10 +166,8 @@ int standard_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recip
   return 1;
 }
 
-/// The same for an elliptic paraboloid (the orientation makes Q3 positive semidefinite).
-int paraboloid_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recipe) {
-  const int m = matrix_node(r, root);
-  if (m < 0) return standard_entries(r, root, x, recipe);
+/// The same for an elliptic paraboloid's matrix (the orientation makes Q3 positive semidefinite).
+int paraboloid_matrix_entries(const Reader& r, int m, Entries& x, DecimalRecipe& recipe) {
   std::array<Number, 16> n;
   if (!symmetric_matrix(r, m, n)) return 0;
   // det Q3 = 0 exactly, from entries that are exactly zero (axis-aligned cups); else the general reader.
@@ -141,7 +175,15 @@ int paraboloid_entries(const Reader& r, int root, Entries& x, DecimalRecipe& rec
                                            n[6].d.is_zero(), n[10].d.is_zero()))
     return 0;
   take_matrix(n, x, recipe);
-  return shape_filter::certified_paraboloid_intervals(x);
+  Entries scaled;
+  const Entries* shape = shape_entries(r, n, x, scaled);
+  return shape ? shape_filter::certified_paraboloid_intervals(*shape) : 0;
+}
+
+/// The same for the elliptic paraboloid of the text: a matrix or the standard form.
+int paraboloid_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recipe) {
+  const int m = matrix_node(r, root);
+  return m < 0 ? standard_entries(r, root, x, recipe) : paraboloid_matrix_entries(r, m, x, recipe);
 }
 
 /// The quadric of the text into `out` (made there: a quadric is a few hundred bytes), or false and
@@ -171,6 +213,38 @@ bool read_quadric(std::string_view text, bool doubles, std::size_t* end, Entries
 }
 
 }  // namespace
+
+bool fast_quadric_at(std::string_view text, bool doubles, std::size_t& end, std::optional<Quadric>& out) {
+  Entries x;
+  DecimalRecipe recipe;
+  recipe.doubles = doubles;
+  recipe.orientation = 0;
+  bool ellipsoid = true;
+  Reader r(text, doubles);
+  const int root = r.parse_prefix();
+  end = root >= 0 ? r.end() : std::string_view::npos;
+  const int m = root >= 0 ? matrix_node(r, root) : -1;
+  if (m >= 0) {
+    CGAL::Protect_FPU_rounding<true> guard;  // Interval_nt<false>: rounding towards +inf
+    r.enclose_decimals();
+    recipe.orientation = ellipsoid_matrix_entries(r, m, x, recipe);
+    if (recipe.orientation == 0) {
+      ellipsoid = false;
+      recipe.orientation = paraboloid_matrix_entries(r, m, x, recipe);
+    }
+  }
+  if (recipe.orientation == 0) {
+    out.reset();
+    return false;
+  }
+  // Quadric::of keeps the storage: the general reader's Quadric::from_matrix gives the same exact
+  // matrix (the orientation of Q3 definite or semidefinite, math.md §14) and the same type.
+  if (ellipsoid)
+    out.emplace(Quadric::of(relpos::detail::make_ellipsoid(storage(x, recipe))));
+  else
+    out.emplace(Quadric::of(relpos::detail::make_paraboloid(storage(x, recipe))));
+  return true;
+}
 
 std::optional<Ellipsoid> fast_ellipsoid(std::string_view text, bool doubles) {
   std::optional<Ellipsoid> e;

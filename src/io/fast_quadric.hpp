@@ -5,7 +5,10 @@
 // A value is read here only when it is one of the forms below, its JSON is plainly valid (keys
 // without escapes, no duplicate keys, no other keys) and each number is short (at most 19
 // significant digits and a decimal exponent within +-30 after trailing zeros are removed; with
-// --numbers double, a double within 2^+-100). Anything else returns nullopt and the caller takes the
+// --numbers double, a double within 2^+-100), or, in a matrix, when its numbers are those of a
+// matrix of short numbers times one power of ten (exponents spanning at most 60, each
+// enclosure within 2^+-1020: a matrix scaled by 10^300 is read as fast as the unscaled one).
+// Anything else returns nullopt and the caller takes the
 // general reader, which decides every case and words every error: this reader never answers
 // differently and never refuses. The numbers read and the form are kept as the quadric's recipe
 // (algebra/decimal_recipe.hpp), from which the exact matrix is built only when an exact stage or the
@@ -25,11 +28,14 @@
 // denominator have at most 64 + 100 bits; the entries of these forms are polynomials of degree at
 // most 4 in at most 5 such numbers over powers of ten and the squares of a and b, whose primitive
 // integer forms stay below 1500 bits (tests/test_fast_reader.cpp builds the extreme case and checks it).
+// A matrix of wide numbers has the primitive integer form of its numbers times 10^-s (s the
+// smallest exponent), a matrix of short numbers: the same bound.
 #pragma once
 
 #include <optional>
 #include <string_view>
 
+#include "relpos/general_quadric.hpp"
 #include "relpos/quadric.hpp"
 
 namespace relpos::io::detail {
@@ -47,5 +53,11 @@ std::optional<Paraboloid> fast_paraboloid(std::string_view text, bool doubles);
 /// caller scanning a line needs no second pass over it.
 bool fast_ellipsoid_at(std::string_view text, bool doubles, std::size_t& end, std::optional<Ellipsoid>& out);
 bool fast_paraboloid_at(std::string_view text, bool doubles, std::size_t& end, std::optional<Paraboloid>& out);
+
+/// The "quadric" of a batch line (doc/cli.md, "General quadrics") when it is a matrix (a 4x4 array or
+/// {"matrix": 4x4}) that this reader certifies as an ellipsoid or an elliptic paraboloid: made in
+/// `out` by Quadric::of, the quadric the general reader makes of it (the same exact matrix and type);
+/// any other form or type: false, `out` empty, for the general reader. `end` as fast_ellipsoid_at.
+bool fast_quadric_at(std::string_view text, bool doubles, std::size_t& end, std::optional<Quadric>& out);
 
 }  // namespace relpos::io::detail

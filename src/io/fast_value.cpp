@@ -1,5 +1,6 @@
 #include "io/fast_value.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +16,22 @@ using relpos::detail::Decimal;
 /// Powers of ten that are exact doubles.
 constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                              1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+/// The largest power of ten below the double range.
+constexpr int kMaxPower = 308;
+
+/// An enclosure of 10^k, 0 <= k <= kMaxPower: 10^(k - 22) 10^22 rounded outwards (for k <= 44 the
+/// product of the two exact doubles, as enclose_decimals writes it), made once, under the first
+/// caller's rounding towards +inf.
+FastInterval power_of_ten(int k) {
+  static const std::array<FastInterval, kMaxPower + 1> table = [] {
+    std::array<FastInterval, kMaxPower + 1> t;
+    for (int j = 0; j <= 22; ++j) t[static_cast<std::size_t>(j)] = FastInterval(kPow10[j]);
+    for (std::size_t j = 23; j <= kMaxPower; ++j) t[j] = t[j - 22] * t[22];
+    return t;
+  }();
+  return table[static_cast<std::size_t>(k)];
+}
 
 /// The lexer's sink of a number read as a decimal: the significant digits go into m (at most
 /// kMaxDigits of them; zeros after those only move the exponent), `scale` counts the fraction's
@@ -161,7 +178,8 @@ int FastValue::number() {
     x.e = 0;
   } else {
     x.e = digits.exponent + digits.scale + zeros;
-    if (x.e > kMaxExponent || x.e < -kMaxExponent) return -1;
+    if (x.e > kMaxWideExponent || x.e < -kMaxWideExponent) return -1;
+    wide_ = wide_ || wide(n);
     decimals_ = true;  // enclosed by enclose_decimals()
   }
   return self;
@@ -178,9 +196,16 @@ void FastValue::enclose_decimals() {
                                : FastInterval(static_cast<double>(x.m >> 11)) * FastInterval(2048.0) +
                                      FastInterval(static_cast<double>(x.m & 2047));
     const int p10 = x.e < 0 ? -x.e : x.e;
-    const FastInterval p =
-        p10 <= 22 ? FastInterval(kPow10[p10]) : FastInterval(kPow10[22]) * FastInterval(kPow10[p10 - 22]);
-    n.x = x.e >= 0 ? m * p : m / p;
+    if (p10 <= 44) {
+      const FastInterval p =
+          p10 <= 22 ? FastInterval(kPow10[p10]) : FastInterval(kPow10[22]) * FastInterval(kPow10[p10 - 22]);
+      n.x = x.e >= 0 ? m * p : m / p;
+    } else if (p10 <= kMaxPower) {  // a wide number
+      n.x = x.e >= 0 ? m * power_of_ten(p10) : m / power_of_ten(p10);
+    } else {  // 10^|e| beyond the double range, the number perhaps not: one step of 10^22 first
+      const FastInterval p = power_of_ten(22);
+      n.x = x.e >= 0 ? m * p * power_of_ten(p10 - 22) : m / p / power_of_ten(p10 - 22);
+    }
     if (x.neg) n.x = -n.x;
   }
 }

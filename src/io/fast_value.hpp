@@ -39,8 +39,17 @@ class FastValue {
  public:
   static constexpr int kMaxNodes = 32;
   static constexpr int kMaxDepth = 3;
-  static constexpr int kMaxDigits = 19;    ///< significant digits: m < 10^19 < 2^64
-  static constexpr int kMaxExponent = 30;  ///< |e| after trailing zeros are removed (fast_quadric.hpp's size bound)
+  static constexpr int kMaxDigits = 19;  ///< significant digits: m < 10^19 < 2^64
+  static constexpr int kMaxExponent =
+      30;  ///< |e| of a short number, trailing zeros removed (fast_quadric.hpp's size bound)
+  /// |e| of any number read: beyond kMaxExponent a number is "wide", taken only in a matrix whose
+  /// exponents span at most 2 kMaxExponent (a matrix scaled by a power of ten; fast_quadric.hpp).
+  static constexpr int kMaxWideExponent = 340;  ///< beyond, m 10^e leaves the double range
+
+  /// Whether a decimal number has |e| > kMaxExponent (a double, --numbers double, never is).
+  bool wide(const FastNumber& n) const { return !doubles_ && (n.d.e > kMaxExponent || n.d.e < -kMaxExponent); }
+  /// Whether any number read is wide.
+  bool any_wide() const { return wide_; }
 
   /// `doubles`: each number is the double nearest its text (--numbers double).
   FastValue(std::string_view text, bool doubles) : s_(text), doubles_(doubles) {}
@@ -53,8 +62,8 @@ class FastValue {
   const FastNode& node(int k) const { return nodes_[k].node; }
 
   /// The enclosures of the decimal numbers: m exactly (a sum of two exact doubles when m > 2^53),
-  /// then one exactly-rounded operation with 10^|e| (two when |e| > 22). Call with the rounding mode
-  /// towards +inf.
+  /// then one exactly-rounded operation with 10^|e| (two when |e| > 22; for a wide number, with an
+  /// enclosure of 10^|e| made once). Call with the rounding mode towards +inf.
   void enclose_decimals();
 
   /// The child of an object named `name`, or -1.
@@ -87,6 +96,7 @@ class FastValue {
   std::size_t i_ = 0;
   int n_ = 0;
   bool decimals_ = false;
+  bool wide_ = false;
   union Slot {  // storage: a node is made when it is read (most of the kMaxNodes are never used)
     Slot() {}
     FastNode node;

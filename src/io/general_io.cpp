@@ -1,6 +1,7 @@
 // JSON in and out for the general quadrics (src/io/general_io.hpp; doc/cli.md, "General quadrics").
 #include "io/general_io.hpp"
 
+#include <algorithm>
 #include <array>
 #include <initializer_list>
 #include <sstream>
@@ -207,23 +208,21 @@ Quadric quadric_from_json(const Json& v, const std::string& role) {
        "\"type\")");
 }
 
-void check_general_pair_size(const Ellipsoid& e, const Quadric& q) {
-  relpos::detail::check_normalized_size(storage_of(e), storage_of(q), SizeLimit{});  // doc/cli.md, Limits
+std::size_t check_general_pair_size(const Ellipsoid& e, const Quadric& q, const SizeLimit& limit) {
+  return relpos::detail::check_normalized_size(storage_of(e), storage_of(q), limit);  // doc/cli.md, Limits
 }
 
-GeneralPairSize::GeneralPairSize(const Quadric& q) : q_(q) {
+GeneralPairSize::GeneralPairSize(const Quadric& q, const SizeLimit& limit) : q_(q), limit_(limit) {
   try {
-    relpos::detail::check_normalized_size(storage_of(q), SizeLimit{});
+    q_bits_ = relpos::detail::check_normalized_size(storage_of(q), limit_);
   } catch (const InputError&) {
     within_ = false;  // each pair's error then names the larger of its two matrices
   }
 }
 
-void GeneralPairSize::check(const Ellipsoid& e) const {
-  if (within_)
-    relpos::detail::check_normalized_size(storage_of(e), SizeLimit{});
-  else
-    check_general_pair_size(e, q_);
+std::size_t GeneralPairSize::check(const Ellipsoid& e) const {
+  if (within_) return std::max(q_bits_, relpos::detail::check_normalized_size(storage_of(e), limit_));
+  return check_general_pair_size(e, q_, limit_);
 }
 
 std::optional<QuadricPosition> quadric_position_from_text(const std::string& s) {

@@ -4,9 +4,12 @@
 // are written by the one answer writer (answer_json.hpp).
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 
+#include "base/large_stack.hpp"
 #include "io/json_tree.hpp"
 #include "relpos/general_classify.hpp"
 
@@ -22,21 +25,36 @@ namespace relpos::io {
 Quadric quadric_from_json(const detail::Json& value, const std::string& role = "quadric");
 
 /// The pair's size limit (doc/cli.md, Limits): InputError "numbers too large: ..." when a matrix's
-/// primitive integer form has entries beyond kMaxNormalizedBits bits, the message of
-/// check_normalized_pair_size. Free for matrices of doubles (always within the limit).
-void check_general_pair_size(const Ellipsoid& e, const Quadric& q);
+/// primitive integer form has entries beyond limit.max_bits bits (--max-bits, max_bits), the
+/// message of check_normalized_pair_size. Free for matrices of doubles (always within the limit).
+/// Returns the bits as check_normalized_size does (0 or at most kMaxNormalizedBits within the default).
+std::size_t check_general_pair_size(const Ellipsoid& e, const Quadric& q, const SizeLimit& limit = {});
+
+/// f() directly, or, for a pair beyond the default size limit (`bits` from check_general_pair_size
+/// under a raised limit), on a thread whose stack fits the exact stage's root isolation, whose
+/// recursion grows with the numbers (base/large_stack.hpp; as decide_position does for a paraboloid).
+template <class F>
+auto with_stack_for_general(std::size_t bits, F f) -> decltype(f()) {
+  if (bits <= kMaxNormalizedBits) return f();
+  std::optional<decltype(f())> out;
+  relpos::detail::run_on_large_stack(relpos::detail::stack_for_bits(bits), [&] { out.emplace(f()); });
+  return std::move(*out);
+}
 
 /// check_general_pair_size for many ellipsoids against one quadric (a scene, Python's
 /// decide_positions): the quadric's own size computed once, each ellipsoid's as it comes; the same
 /// errors with the same messages.
 class GeneralPairSize {
  public:
-  explicit GeneralPairSize(const Quadric& q);
-  void check(const Ellipsoid& e) const;
+  explicit GeneralPairSize(const Quadric& q, const SizeLimit& limit = {});
+  /// The bits as check_general_pair_size returns them (a bound: exact beyond kMaxNormalizedBits).
+  std::size_t check(const Ellipsoid& e) const;
 
  private:
   const Quadric& q_;
-  bool within_ = true;  ///< q alone is within the limit
+  SizeLimit limit_;
+  std::size_t q_bits_ = 0;  ///< q's bits as check_normalized_size returns them
+  bool within_ = true;      ///< q alone is within the limit
 };
 
 /// The same pair as a multi-line report (relpos classify --quadric).

@@ -87,6 +87,10 @@ check "a quaternion vanishing on [t0, t1] is an input error (1)" $(($? != 1))
 "$relpos" motion --sphere 0,0,0,1/4 --standard-paraboloid 1,2 --translation '[[1],[2]]' --t0 0 --t1 1 \
   >/dev/null 2>&1
 check "a translation with 2 components is an input error (1)" $(($? != 1))
+err=$("$relpos" motion --sphere 0,0,0,1/4 --quadric '[[1,0,0,0],[0,1,0,0],[0,0,-1,0],[0,0,0,-1]]' --t0 0 --t1 1 \
+  2>&1 >/dev/null)
+check "a general quadric is a usage error (2) saying what is not supported" \
+  $(($? != 2 || $(echo "$err" | grep -c "elliptic paraboloid only") != 1))
 "$relpos" motion --help | grep -q "Usage: relpos motion"
 check "motion --help" $?
 

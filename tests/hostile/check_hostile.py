@@ -14,6 +14,7 @@ their exit codes.
 import json
 import os
 import random
+import re
 import subprocess
 import sys
 import tempfile
@@ -205,6 +206,35 @@ def main():
             p = run([relpos] + cmd + ["-"] + limit, stdin=(data + "\n").encode())
             if p is None or p.returncode != 0 or want not in p.stdout:
                 fail("relpos %s %s: expected %r, got %s" % (cmd[0], limit, want, p and p.stdout[:200]))
+    # The same limit for a general pair (classify --quadric, a batch line with "quadric", scene
+    # --quadric), at the limit: the pair's N bits, from the error, are answered with --max-bits N and
+    # refused with N - 1, the error naming N - 1.
+    ring = '{"type": "hyperboloid of one sheet", "center": [0, 0, 0], "axes": [10, 10, 10]}'
+    p = run([relpos, "classify", "--sphere", wide, "--quadric", ring])
+    message = p.stderr.decode() if p is not None else ""
+    m = re.search(r"has (\d+)-bit entries, beyond the limit of 4096 bits", message)
+    if p is None or p.returncode != 1 or not m:
+        fail("relpos classify --quadric with a 4661-bit sphere: expected the size error, got %r" % message[:200])
+    else:
+        bits = int(m.group(1))
+        # (answered with the verdict alone: the full evidence of so large a general pair takes seconds)
+        p = run([relpos, "classify", "--sphere", wide, "--quadric", ring, "--max-bits", str(bits), "--json",
+                 "--contact-only"])
+        if p is None or p.returncode != 0 or json.loads(p.stdout.decode()).get("position") != "I":
+            fail("relpos classify --quadric --max-bits %d: expected position I, got %s" % (bits, p and p.stdout[:200]))
+        for extra in ([], ["--contact-only"]):
+            p = run([relpos, "classify", "--sphere", wide, "--quadric", ring, "--max-bits", str(bits - 1)] + extra)
+            if p is None or p.returncode != 1 or ("beyond the limit of %d bits" % (bits - 1)) not in p.stderr.decode():
+                fail("relpos classify --quadric --max-bits %d %s: expected the size error naming the limit, got %s"
+                     % (bits - 1, extra, p and p.stderr[:200]))
+        for cmd, data in ((["batch"], line[:-1] + ', "quadric": %s}' % ring),
+                          (["scene", "--quadric", ring, "--no-progress"], line)):
+            for limit, want in (([], b"beyond the limit of 4096 bits"), (["--max-bits", str(bits)], b'"position":"I"'),
+                                (["--max-bits", str(bits - 1)], b"beyond the limit of %d bits" % (bits - 1))):
+                minimal = ["--evidence", "minimal"] if cmd[0] == "batch" else []
+                p = run([relpos] + cmd + ["-"] + minimal + limit, stdin=(data + "\n").encode())
+                if p is None or p.returncode != 0 or want not in p.stdout:
+                    fail("relpos %s (quadric) %s: expected %r, got %s" % (cmd[0], limit, want, p and p.stdout[:200]))
     p = run([relpos, "classify", "--sphere", "0,0,1,x", "--standard-paraboloid", "1,2", "--json"])
     if p is None or p.returncode != 1 or "error" not in json.loads(p.stdout.decode() or "{}"):
         fail("relpos classify --json with a bad number: expected exit 1 and {\"error\": ...} on stdout")

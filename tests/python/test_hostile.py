@@ -448,6 +448,32 @@ def test_size_limit_can_be_raised():
     assert answer == relpos.classify(e, CUP, max_bits=8000).as_dict()
 
 
+def test_size_limit_of_a_general_pair_can_be_raised():
+    # The same limit for a Quadric (a batch line with "quadric"): refused by default, answered with
+    # max_bits raised, by classify and decide_positions, as by the CLI.
+    e = long_sphere(700)
+    ring = relpos.Quadric.hyperboloid_one_sheet((0, 0, 0), (10, 10, 10))
+    ball = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], [0, 0, -1, 1 - 1 / 16]]  # centre (0, 0, 1), radius 1/4
+    E = numpy.array([ball, ball], dtype=float)
+    for call in (lambda **k: relpos.classify(e, ring, **k), lambda **k: relpos.classify(e, ring, "minimal", **k)):
+        with pytest.raises(ValueError, match="beyond the limit of 4096 bits"):
+            call()
+        with pytest.raises(ValueError, match="beyond the limit of 4500 bits"):
+            call(max_bits=4500)
+    # answered with the verdict alone: the full evidence of so large a general pair takes seconds
+    assert relpos.classify(e, ring, "minimal", max_bits=8000).position == "I"
+    wide = relpos.Quadric.hyperboloid_one_sheet((0, 0, F(1, 10**700 + 7)), (10, 10, 10))
+    with pytest.raises(ValueError, match="beyond the limit of 4096 bits"):
+        relpos.decide_positions(E, wide)
+    assert list(relpos.decide_positions(E, wide, max_bits=8000)) == [0, 0]  # I
+    line = json.dumps({"id": 1, "ellipsoid": {"sphere": {"center": [0, "1/%d" % (10**700 + 7), 1], "radius": "1/4"}},
+                       "quadric": {"type": "hyperboloid of one sheet", "center": [0, 0, 0], "axes": [10, 10, 10]}})
+    assert b"beyond the limit of 4096 bits" in cli("batch", data=line.encode())
+    answer = json.loads(cli("batch", "--max-bits", "8000", "--evidence", "minimal", data=line.encode()))
+    del answer["id"]
+    assert answer == relpos.classify(e, ring, "minimal", max_bits=8000).as_dict()
+
+
 def test_beyond_the_default_limit_on_a_small_stack(tmp_path):
     """A pair of ~40 000 bits whose roots are 10^-1000 apart: the root isolation recurses deeper than
     a small thread stack holds; the library gives such pairs a stack of their own."""
