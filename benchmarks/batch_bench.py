@@ -54,6 +54,16 @@ def write_regime(path, lines, seed=12, form="sphere"):
             out.write('{"id":%d,"ellipsoid":{"matrix":%s},"paraboloid":{"matrix":%s}}\n' % (i, m(e), m(p)))
 
 
+def user_placement(rng):
+    """One pair of write_user_regime, drawn: the vertex v, a, b, the radius r, the centre's x, y in the
+    paraboloid's frame (vertex at the origin, axis z) and its height above the surface in radii, t."""
+    v = [rng.uniform(-2, 2) for _ in range(3)]
+    a, b = rng.uniform(0.5, 2), rng.uniform(0.5, 2)
+    r = rng.uniform(0.02, 0.3) * min(a, b) ** 2
+    x, y = rng.uniform(-0.5, 0.5) * a, rng.uniform(-0.5, 0.5) * b
+    return v, a, b, r, x, y, rng.uniform(-2.4, 5)
+
+
 def write_user_regime(path, lines, seed=12):
     """Spheres and standard paraboloids as a user's float code places them (regime::user_pair of
     benchmarks/ordinary/regime_matrices.hpp, written as text): the vertex anywhere in [-2, 2]^3, a, b
@@ -63,11 +73,8 @@ def write_user_regime(path, lines, seed=12):
     f = lambda v: "%.17g" % v
     with open(path, "w") as out:
         for i in range(lines):
-            v = [rng.uniform(-2, 2) for _ in range(3)]
-            a, b = rng.uniform(0.5, 2), rng.uniform(0.5, 2)
-            r = rng.uniform(0.02, 0.3) * min(a, b) ** 2
-            x, y = rng.uniform(-0.5, 0.5) * a, rng.uniform(-0.5, 0.5) * b
-            c = [v[0] + x, v[1] + y, v[2] + x * x / (a * a) + y * y / (b * b) + rng.uniform(-2.4, 5) * r]
+            v, a, b, r, x, y, t = user_placement(rng)
+            c = [v[0] + x, v[1] + y, v[2] + x * x / (a * a) + y * y / (b * b) + t * r]
             out.write('{"id":%d,"ellipsoid":{"sphere":{"center":[%s,%s,%s],"radius":%s}},'
                       '"paraboloid":{"vertex":[%s,%s,%s],"a":%s,"b":%s}}\n'
                       % (i, f(c[0]), f(c[1]), f(c[2]), f(r), f(v[0]), f(v[1]), f(v[2]), f(a), f(b)))
@@ -82,11 +89,8 @@ def write_off_axis(path, lines, seed=21):
     f = lambda v: "%.17g" % v
     with open(path, "w") as out:
         for i in range(lines):
-            v = [rng.uniform(-2, 2) for _ in range(3)]
-            a, b = rng.uniform(0.5, 2), rng.uniform(0.5, 2)
-            r = rng.uniform(0.02, 0.3) * min(a, b) ** 2
-            x, y = rng.uniform(-0.5, 0.5) * a, rng.uniform(-0.5, 0.5) * b
-            u = [x, y, x * x / (a * a) + y * y / (b * b) + rng.uniform(-2.4, 5) * r]  # in the body's frame
+            v, a, b, r, x, y, t = user_placement(rng)
+            u = [x, y, x * x / (a * a) + y * y / (b * b) + t * r]  # in the body's frame
             q = [rng.randint(-3, 3) for _ in range(4)]
             if not any(q) or i % 3 == 0:
                 q = [1, 0, 0, 0]
