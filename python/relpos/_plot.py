@@ -189,7 +189,8 @@ def plot(e, p, ax=None, classification=None, half_width=None, title=None, max_bi
     or half the side of the box around the ellipsoid a Quadric is drawn in (default: three times the
     largest semi-axis). Returns ax. Raises relpos._plot.PlotError (a ValueError) saying why when the
     pair cannot be drawn in floating point (axes of the ellipsoid differing by hundreds of orders of
-    magnitude, a second body too far for its size).
+    magnitude, a paraboloid too far for its size; a Quadric too far is left out of the view, and the
+    title says so).
     """
     import matplotlib.pyplot as plt
 
@@ -206,8 +207,6 @@ def plot(e, p, ax=None, classification=None, half_width=None, title=None, max_bi
         h = half_width / world[1] if world else half_width
     if general:
         sheets = _quadric_surface.surfaces(p.type, frame.local(p.matrix()), h)
-        if sheets is None:
-            raise PlotError("plot: the quadric is too far from the ellipsoid, for its size, to draw in floating point")
     else:
         cup = frame.cup() if half_width is None else None
         sheets = [cup if cup is not None else frame.patch(h)]  # the whole cup, from the vertex to past the ellipsoid

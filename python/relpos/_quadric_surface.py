@@ -130,11 +130,9 @@ def _patches(kind, An, quad, lin, h, width, n):
 
 def surfaces(kind, local, width, n=48):
     """Grids (X, Y, Z) in u of the quadric of type `kind` given in the ellipsoid's frame by `local`
-    (relpos._plot._Frame.local), NaN outside the box |u_i| <= width; None when its floats are not
-    finite (the quadric too far from the ellipsoid, for its size, to draw)."""
+    (relpos._plot._Frame.local), NaN outside the box |u_i| <= width (all NaN when the quadric is too
+    far from the ellipsoid, for its size, to reach the box)."""
     An, quad, lin, h = local
-    if not (numpy.all(numpy.isfinite(lin)) and math.isfinite(h) and math.isfinite(quad)):
-        return None
     with numpy.errstate(all="ignore"):
         patches, V = _patches(kind, An, quad, lin, h, width, n)
         out = []
