@@ -221,9 +221,12 @@ def plot(e, p, ax=None, classification=None, half_width=None, title=None, max_bi
     pts = [numpy.stack([a.ravel() for a in (X2, Y2, Z2)])]
     for X, Y, Z in sheets:
         shown = numpy.isfinite(Z)
-        if shown.any():
-            ax.plot_surface(X, Y, Z, color="tab:blue", alpha=0.3, linewidth=0.3, edgecolor="navy", shade=True)
         pts.insert(-1, numpy.stack([a[shown] for a in (X, Y, Z)]))
+        if shown.any():
+            # A quadric's sheet too small for the view (an ellipsoid 10^-150 the size of the ball) has
+            # normals that underflow: drawn unshaded.
+            shade = not general or numpy.ptp(pts[-2], axis=1).max() > 1e-6 * numpy.ptp(pts[-1], axis=1).max()
+            ax.plot_surface(X, Y, Z, color="tab:blue", alpha=0.3, linewidth=0.3, edgecolor="navy", shade=bool(shade))
     shown = any(pt.shape[1] for pt in pts[:-1])
     ax.plot_surface(X2, Y2, Z2, color="tab:orange", alpha=0.6, linewidth=0, shade=True)
     pts = numpy.concatenate(pts, axis=1)

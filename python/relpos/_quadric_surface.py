@@ -49,7 +49,7 @@ def _plane(normal, h, reach, n):
 
 def _patches(kind, An, quad, lin, h, width, n):
     """Patches (each a (3, n, n) array) in the eigen-frame y = V^T u, and V; u = V y."""
-    reach = width * math.sqrt(3.0)  # the box |u_i| <= width lies in the ball |y| <= reach
+    reach = width * numpy.sqrt(3.0)  # the box |u_i| <= width lies in the ball |y| <= reach
     rank = _RANK[kind]
     if rank == 0:
         return _plane(lin, h, reach, n), numpy.eye(3)
@@ -82,13 +82,13 @@ def _patches(kind, An, quad, lin, h, width, n):
             lo, hi = span(c)
             ts = numpy.linspace(lo, hi, n)
             if k > 0:  # two sheets: put their vertices on the grid
-                v = math.sqrt(k / -w[c])
+                v = numpy.sqrt(k / -w[c])
                 ts = numpy.union1d(ts, [x for x in (-v, v) if lo < x < hi])
             theta = numpy.linspace(0, 2 * math.pi, n)
             T, TH = numpy.meshgrid(ts, theta)
             R = numpy.sqrt(-k - w[c] * T**2)  # NaN between the two sheets
             z = numpy.zeros((3,) + T.shape)
-            z[c], z[i], z[j] = T, R / math.sqrt(w[i]) * numpy.cos(TH), R / math.sqrt(w[j]) * numpy.sin(TH)
+            z[c], z[i], z[j] = T, R / numpy.sqrt(w[i]) * numpy.cos(TH), R / numpy.sqrt(w[j]) * numpy.sin(TH)
             patches.append(z)
     elif rank == 2:
         i, j, a = 0, 1, 2  # a: the zero eigenvalue's axis
@@ -98,12 +98,12 @@ def _patches(kind, An, quad, lin, h, width, n):
             patches.append(z)
         elif w[i] > 0 and w[j] > 0:  # elliptic cylinder
             T, TH = _grid(span(a), (0, 2 * math.pi), n)
-            z = numpy.stack([math.sqrt(-k / w[i]) * numpy.cos(TH), math.sqrt(-k / w[j]) * numpy.sin(TH), T])
+            z = numpy.stack([numpy.sqrt(-k / w[i]) * numpy.cos(TH), numpy.sqrt(-k / w[j]) * numpy.sin(TH), T])
             patches.append(z)
         else:  # hyperbolic cylinder: w_p z_p^2 - |w_q| z_q^2 = -k with -k / w_p > 0, two branches
             p, q = (i, j) if -k / w[i] > 0 else (j, i)
-            A, B = math.sqrt(-k / w[p]), math.sqrt(k / w[q])
-            top = math.asinh((abs(o[q]) + reach) / B)
+            A, B = numpy.sqrt(-k / w[p]), numpy.sqrt(k / w[q])
+            top = numpy.arcsinh((abs(o[q]) + reach) / B)
             T, S = _grid(span(a), (-top, top), n)
             for sign in (1, -1):
                 z = numpy.zeros((3,) + T.shape)
@@ -122,7 +122,7 @@ def _patches(kind, An, quad, lin, h, width, n):
         else:  # slab: the planes z_0 = +-sqrt(-k / w_0)
             for sign in (1, -1):
                 Y1, Y2 = _grid((-reach, reach), (-reach, reach), n)
-                patches.append(numpy.stack([numpy.full_like(Y1, sign * math.sqrt(-k / w[0])), Y1, Y2]))
+                patches.append(numpy.stack([numpy.full_like(Y1, sign * numpy.sqrt(-k / w[0])), Y1, Y2]))
     for z in patches:
         z -= o[:, None, None]
     return patches, V

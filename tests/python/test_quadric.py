@@ -348,6 +348,12 @@ def test_plot_quadric_at_any_scale_and_its_errors():
     ax.figure.canvas.draw()
     assert ax.get_title() == "%s: hyperboloid of one sheet, touching" % relpos.classify(e, h).position
     plt.close(ax.figure)
+    # A quadric ellipsoid 10^-150 the size of the ball inside it: its sheet drawn (unshaded), not a crash.
+    ball, speck = relpos.Ellipsoid.sphere((0, 0, 0), 1), relpos.Quadric.ellipsoid((0, 0, 0), (tiny, tiny, tiny))
+    ax = relpos.plot(ball, speck)
+    ax.figure.canvas.draw()
+    assert ax.get_title() == "%s: ellipsoid, none" % relpos.classify(ball, speck).position
+    plt.close(ax.figure)
     # A plane 10^300 radii away: out of the view, and the title says so.
     far = relpos.Quadric.half_space((1, 0, 0), "1e150")
     ax = relpos.plot(e, far)
