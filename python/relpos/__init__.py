@@ -980,9 +980,11 @@ def _position_at(self, t: Number) -> str:
 # ------------------------------------------------------------------------------------------------
 
 
-def plot(e: Ellipsoid, p: Paraboloid, ax: Any = None, **kwargs: Any) -> Any:
+def plot(e: Ellipsoid, p: Union[Paraboloid, Quadric], ax: Any = None, **kwargs: Any) -> Any:
     """Draw the pair (matplotlib 3D axes) titled with its position; returns the axes. See relpos._plot."""
     from ._plot import plot as _plot
+
+    _check_pair(e, p, "plot", general=True)
 
     return _plot(e, p, ax=ax, **kwargs)
 

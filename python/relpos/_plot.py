@@ -14,6 +14,8 @@ from fractions import Fraction
 
 import numpy
 
+from . import _quadric_surface
+
 #: Half the width of the view around the ellipsoid when the cup is not drawn whole, in its size.
 _WINDOW = 3.0
 
@@ -74,7 +76,7 @@ class _Frame:
     largest semi-axis), every number computed exactly before it becomes a float."""
 
     def __init__(self, e, p):
-        E, P = e.matrix(), p.matrix()
+        E = e.matrix()
         M = [row[:3] for row in E[:3]]
         b = [E[i][3] for i in range(3)]
         self.c = [-x for x in _solve3(M, b)]  # the centre: M c = -b
@@ -91,21 +93,33 @@ class _Frame:
         self.axes = V
         if not numpy.all(numpy.isfinite(self.semi)):
             raise PlotError("plot: the ellipsoid's axes are too unequal to draw in floating point")
-        # The paraboloid in u: s^2 u^T A u + 2 s g^T u + h = 0 with g = A c + b_P, h = P(c); each term
-        # divided by the largest of them (the small ones may become 0: negligible at this scale).
+        if p is not None:
+            self._paraboloid(p)
+
+    def local(self, P):
+        """The second body's q(x) = x^T A x + 2 b^T x + d in u, as floats: (An, quad, lin, h) with
+        q / scale = quad u^T An u + lin^T u + h, An = A / (its largest entry) (None when A = 0) and
+        scale the largest term; the small terms may become 0 (negligible at this scale)."""
         A = [row[:3] for row in P[:3]]
         bp = [P[i][3] for i in range(3)]
         g = [sum(A[i][j] * self.c[j] for j in range(3)) + bp[i] for i in range(3)]
         h = sum(self.c[i] * (g[i] + bp[i]) for i in range(3)) + P[3][3]
-        An, a = _normalized(A)
+        if any(x != 0 for row in A for x in row):
+            An, a = _normalized(A)
+        else:
+            An, a = None, Fraction(0)
         quad = self.s * self.s * a
         scale = max([abs(quad)] + [abs(2 * self.s * x) for x in g] + [abs(h)])
+        lin = numpy.array([_ratio(2 * self.s * x, scale) for x in g])
+        return An, _ratio(quad, scale), lin, _ratio(h, scale)
+
+    def _paraboloid(self, p):
+        # The paraboloid in u: s^2 u^T A u + 2 s g^T u + h = 0 with g = A c + b_P, h = P(c).
+        An, quad, lin, self.h = self.local(p.matrix())
         wa, U = numpy.linalg.eigh(An)  # ascending: wa[0] = 0 along the axis
         self.U = U
-        self.a = wa[1:] * _ratio(quad, scale)  # y0 along the axis, y1, y2 across it
-        lin = numpy.array([_ratio(2 * self.s * x, scale) for x in g])
+        self.a = wa[1:] * quad  # y0 along the axis, y1, y2 across it
         self.l = U.T @ lin
-        self.h = _ratio(h, scale)
         if self.l[0] == 0 or not numpy.all(numpy.isfinite(self.l)):
             raise PlotError("plot: the paraboloid is too far from the ellipsoid, for its size, to draw in floating point")
 
@@ -166,45 +180,56 @@ class _Frame:
 
 
 def plot(e, p, ax=None, classification=None, half_width=None, title=None, max_bits=None):
-    """Draw paraboloid `p` near ellipsoid `e` and the ellipsoid, titled with the exact position.
+    """Draw paraboloid (or relpos.Quadric) `p` near ellipsoid `e` and the ellipsoid, titled with the
+    exact position.
 
-    ax: a 3D matplotlib axes (default: a new figure). classification: a relpos.Classification to
-    use instead of classifying again (max_bits: the size limit of that classification). half_width:
-    radius of the paraboloid patch across its axis (default: three times the largest semi-axis).
-    Returns ax. Raises relpos._plot.PlotError (a ValueError) saying why when the pair cannot be
-    drawn in floating point (axes of the ellipsoid differing by hundreds of orders of magnitude).
+    ax: a 3D matplotlib axes (default: a new figure). classification: a relpos.Classification (a
+    relpos.QuadricClassification for a Quadric) to use instead of classifying again (max_bits: the
+    size limit of that classification). half_width: radius of the paraboloid patch across its axis,
+    or half the side of the box around the ellipsoid a Quadric is drawn in (default: three times the
+    largest semi-axis). Returns ax. Raises relpos._plot.PlotError (a ValueError) saying why when the
+    pair cannot be drawn in floating point (axes of the ellipsoid differing by hundreds of orders of
+    magnitude, a paraboloid too far for its size; a Quadric too far is left out of the view, and the
+    title says so).
     """
     import matplotlib.pyplot as plt
 
-    from . import MAX_BITS, POSITION_MEANINGS, classify
+    from . import MAX_BITS, POSITION_MEANINGS, Quadric, classify
 
     c = classification
     if c is None:
         c = classify(e, p, evidence="minimal", max_bits=MAX_BITS if max_bits is None else max_bits)
-    frame = _Frame(e, p)
+    general = isinstance(p, Quadric)
+    frame = _Frame(e, None if general else p)
     world = frame.world()
-    cup = frame.cup() if half_width is None else None
-    if cup is not None:
-        X, Y, Z = cup  # the whole cup, from the vertex to past the ellipsoid
+    h = _WINDOW * float(frame.semi.max())
+    if half_width is not None:
+        h = half_width / world[1] if world else half_width
+    if general:
+        sheets = _quadric_surface.surfaces(p.type, frame.local(p.matrix()), h)
     else:
-        h = _WINDOW * float(frame.semi.max())
-        if half_width is not None:
-            h = half_width / world[1] if world else half_width
-        X, Y, Z = frame.patch(h)
+        cup = frame.cup() if half_width is None else None
+        sheets = [cup if cup is not None else frame.patch(h)]  # the whole cup, from the vertex to past the ellipsoid
     X2, Y2, Z2 = frame.ellipsoid()
     if world is not None:  # x = offset + unit u
         (ox, oy, oz), unit = world
-        X, Y, Z, X2, Y2, Z2 = (ox + unit * X, oy + unit * Y, oz + unit * Z, ox + unit * X2, oy + unit * Y2,
-                               oz + unit * Z2)
+        sheets = [(ox + unit * X, oy + unit * Y, oz + unit * Z) for X, Y, Z in sheets]
+        X2, Y2, Z2 = ox + unit * X2, oy + unit * Y2, oz + unit * Z2
     if ax is None:
         fig = plt.figure(figsize=(5, 5))
         ax = fig.add_subplot(projection="3d")
-    shown = numpy.isfinite(Z)
-    if shown.any():
-        ax.plot_surface(X, Y, Z, color="tab:blue", alpha=0.3, linewidth=0.3, edgecolor="navy", shade=True)
+    pts = [numpy.stack([a.ravel() for a in (X2, Y2, Z2)])]
+    for X, Y, Z in sheets:
+        shown = numpy.isfinite(Z)
+        pts.insert(-1, numpy.stack([a[shown] for a in (X, Y, Z)]))
+        if shown.any():
+            # A quadric's sheet too small for the view (an ellipsoid 10^-150 the size of the ball) has
+            # normals that underflow: drawn unshaded.
+            shade = not general or numpy.ptp(pts[-2], axis=1).max() > 1e-6 * numpy.ptp(pts[-1], axis=1).max()
+            ax.plot_surface(X, Y, Z, color="tab:blue", alpha=0.3, linewidth=0.3, edgecolor="navy", shade=bool(shade))
+    shown = any(pt.shape[1] for pt in pts[:-1])
     ax.plot_surface(X2, Y2, Z2, color="tab:orange", alpha=0.6, linewidth=0, shade=True)
-    pts = numpy.concatenate([numpy.stack([a[shown] for a in (X, Y, Z)]),
-                             numpy.stack([a.ravel() for a in (X2, Y2, Z2)])], axis=1)
+    pts = numpy.concatenate(pts, axis=1)
     lo, hi = pts.min(axis=1), pts.max(axis=1)
     span = hi - lo
     span = numpy.maximum(span, 1e-9 * max(span.max(), numpy.abs(pts).max()) or 1.0)
@@ -220,10 +245,14 @@ def plot(e, p, ax=None, classification=None, half_width=None, title=None, max_bi
         unit = _text(frame.s)
         for axis, name, centre in zip((ax.set_xlabel, ax.set_ylabel, ax.set_zlabel), "xyz", frame.c):
             axis("(%s - %s) / %s" % (name, _text(centre), unit), fontsize=7)
+    body = "the %s" % p.type if general else "the paraboloid"
     if title is None:
-        title = "%s: %s" % (c.position, POSITION_MEANINGS.get(c.position, c.rule))
-        if not shown.any():
-            title += "\n(the paraboloid lies outside this view of the ellipsoid)"
+        if general:
+            title = "%s: %s, %s" % (c.position, p.type, c.contact)
+        else:
+            title = "%s: %s" % (c.position, POSITION_MEANINGS.get(c.position, c.rule))
+        if not shown:
+            title += "\n(%s lies outside this view of the ellipsoid)" % body
     ax.set_title(title)
     ax.tick_params(labelsize=7)
     return ax

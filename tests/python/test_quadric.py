@@ -269,3 +269,103 @@ def test_errors_are_the_clis():
         relpos.classify(ellipsoid, relpos.Quadric.__new__(relpos.Quadric))
     with pytest.raises(TypeError, match="already built"):
         q.__init__(H)
+
+
+# ------------------------------------------------------------------------------------------------
+# plot: every type drawn (doc/python.md, "Any real quadric"; doc/quadrics.md, "Figures")
+# ------------------------------------------------------------------------------------------------
+
+# (ellipsoid, quadric, position) known by elementary geometry, one pair per type.
+DRAWN = [
+    (relpos.Ellipsoid.sphere((0, 0, 0), 2), relpos.Quadric.ellipsoid((0, 0, 0), (1, "1/2", "1/3")), "O"),
+    (relpos.Ellipsoid.sphere((0, 0, 0), 1), relpos.Quadric.hyperboloid_one_sheet((0, 0, 0), (1, 1, 1)), "TI"),
+    (relpos.Ellipsoid.sphere((0, 0, 0), 1), relpos.Quadric.hyperboloid_two_sheets((0, 0, 0), (1, 1, 1)), "TE"),
+    (relpos.Ellipsoid.sphere((0, 0, 2), "1/2"), relpos.Quadric.cone((0, 0, 0), 1, 1), "I"),
+    (relpos.Ellipsoid.sphere((0, 0, -1), "1/2"), relpos.Quadric.elliptic_paraboloid((0, 0, 0), 1, 1), "E"),
+    # rotated; its vertex, a point of the surface, strictly inside the ball
+    (relpos.Ellipsoid.sphere((0, 0, 0), "1/2"), relpos.Quadric.hyperbolic_paraboloid((0, 0, "1/4"), 2, 3, (1, 2, 3, 4)),
+     "C"),
+    (relpos.Ellipsoid.sphere((1, 0, 0), "1/2"), relpos.Quadric.elliptic_cylinder((0, 0, 0), 1, 1), "C"),
+    (relpos.Ellipsoid.sphere((0, 0, 0), "1/2"), relpos.Quadric.hyperbolic_cylinder((0, 0, 0), 1, 1), "I"),
+    (relpos.Ellipsoid.sphere((0, 0, -1), 1), relpos.Quadric.parabolic_cylinder((0, 0, 0), 1), "TE"),
+    (relpos.Ellipsoid.sphere((0, 0, 0), 1), relpos.Quadric.slab((0, 0, 1), -1, 1), "TI"),
+    (relpos.Ellipsoid.from_axes((0, 0, 0), (1, "1/2", "1/3"), (1, 1, 0, 0)), relpos.Quadric.half_space((1, 1, 1), 0),
+     "C"),
+]
+
+
+def on_surface(q, X, Y, Z):
+    """|q(x)| of the drawn points over the size of q's terms there (a float cross-check)."""
+    Q = numpy.array([[float(x) for x in row] for row in q.matrix()])
+    pts = numpy.stack([X.ravel(), Y.ravel(), Z.ravel(), numpy.ones(X.size)])
+    pts = pts[:, numpy.isfinite(pts).all(axis=0)]
+    value = numpy.einsum("ik,ij,jk->k", pts, Q, pts)
+    size = numpy.einsum("ik,ij,jk->k", numpy.abs(pts), numpy.abs(Q), numpy.abs(pts))
+    return pts.shape[1], numpy.max(numpy.abs(value) / size)
+
+
+def test_plot_draws_every_type_on_its_surface():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from relpos import _plot, _quadric_surface
+
+    assert sorted(q.type for _, q, _ in DRAWN) == sorted(relpos.QUADRIC_TYPES)
+    for e, q, expected in DRAWN:
+        position = relpos.classify(e, q).position
+        assert position == expected, q.type
+        ax = relpos.plot(e, q)
+        ax.figure.canvas.draw()
+        assert ax.get_title().startswith("%s: %s, " % (position, q.type))
+        assert len(ax.collections) >= 2  # the quadric's sheets and the ellipsoid
+        plt.close(ax.figure)
+        frame = _plot._Frame(e, None)
+        width = 3.0 * float(frame.semi.max())
+        sheets = _quadric_surface.surfaces(q.type, frame.local(q.matrix()), width)
+        assert len(sheets) == (2 if q.type in ("hyperbolic cylinder", "slab") else 1)
+        offset, unit = frame.world()
+        for X, Y, Z in sheets:
+            drawn = numpy.isfinite(X)
+            assert drawn.any(), q.type
+            assert numpy.abs(numpy.stack([X[drawn], Y[drawn], Z[drawn]])).max() <= width
+            count, worst = on_surface(q, *(offset[i] + unit * a for i, a in enumerate((X, Y, Z))))
+            assert count > 100 and worst < 1e-12, (q.type, count, worst)
+
+
+def test_plot_quadric_at_any_scale_and_its_errors():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    # The unit picture of the hyperboloid's waist scaled by 10^-150: still TI, drawn in units of s.
+    tiny = "1e-150"
+    e = relpos.Ellipsoid.sphere((0, 0, 0), tiny)
+    h = relpos.Quadric.hyperboloid_one_sheet((0, 0, 0), (tiny, tiny, tiny))
+    ax = relpos.plot(e, h)
+    ax.figure.canvas.draw()
+    assert ax.get_title() == "%s: hyperboloid of one sheet, touching" % relpos.classify(e, h).position
+    plt.close(ax.figure)
+    # A quadric ellipsoid 10^-150 the size of the ball inside it: its sheet drawn (unshaded), not a crash.
+    ball, speck = relpos.Ellipsoid.sphere((0, 0, 0), 1), relpos.Quadric.ellipsoid((0, 0, 0), (tiny, tiny, tiny))
+    ax = relpos.plot(ball, speck)
+    ax.figure.canvas.draw()
+    assert ax.get_title() == "%s: ellipsoid, none" % relpos.classify(ball, speck).position
+    plt.close(ax.figure)
+    # A plane 10^300 radii away: out of the view, and the title says so.
+    far = relpos.Quadric.half_space((1, 0, 0), "1e150")
+    ax = relpos.plot(e, far)
+    assert ax.get_title().endswith("(the half-space lies outside this view of the ellipsoid)")
+    assert ax.get_title().startswith(relpos.classify(e, far).position + ": half-space, none")
+    plt.close(ax.figure)
+    # Not drawable: the same error, and the same message, as with a paraboloid.
+    flat = relpos.Ellipsoid.from_axes((0, 0, 1), ("1e-200", 1, 1))
+    with pytest.raises(ValueError, match="plot: the ellipsoid's axes are too unequal") as by_quadric:
+        relpos.plot(flat, h)
+    with pytest.raises(ValueError) as by_paraboloid:
+        relpos.plot(flat, relpos.Paraboloid.standard((0, 0, 0), 1, 1))
+    assert type(by_quadric.value) is type(by_paraboloid.value) and str(by_quadric.value) == str(by_paraboloid.value)
+    with pytest.raises(TypeError, match="plot: p must be a relpos.Paraboloid or relpos.Quadric"):
+        relpos.plot(e, h.matrix())
