@@ -592,6 +592,12 @@ TEST_CASE("fast reader: scaled numbers it leaves to the general reader", "[io][f
            "[[9e307,0,0,0],[0,9e307,0,0],[0,0,9e307,0],[0,0,0,-9e307]]",
            "[[1e341,0,0,0],[0,1e341,0,0],[0,0,1e341,0],[0,0,0,-1e341]]",
            "[[1e-341,0,0,0],[0,1e-341,0,0],[0,0,1e-341,0],[0,0,0,-1e-341]]",
+           // 10^|e| beyond the double range, |e| up to the widest exponent read (its enclosure in
+           // two steps of the table of powers: the sanitizer build checks every index)
+           "[[1e-309,0,0,0],[0,1e-309,0,0],[0,0,1e-309,0],[0,0,0,-1e-309]]",
+           "[[1e-335,0,0,0],[0,1e-335,0,0],[0,0,1e-335,0],[0,0,0,-1e-335]]",
+           "[[1e-340,0,0,0],[0,1e-340,0,0],[0,0,1e-340,0],[0,0,0,-1e-340]]",
+           "[[1e340,0,0,0],[0,1e340,0,0],[0,0,1e340,0],[0,0,0,-1e340]]",
            // a sphere's numbers stay short (its constant entry squares them)
            R"({"sphere":{"center":[1e40,0,0],"radius":1e40}})",
        }) {

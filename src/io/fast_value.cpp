@@ -202,9 +202,11 @@ void FastValue::enclose_decimals() {
       n.x = x.e >= 0 ? m * p : m / p;
     } else if (p10 <= kMaxPower) {  // a wide number
       n.x = x.e >= 0 ? m * power_of_ten(p10) : m / power_of_ten(p10);
-    } else {  // 10^|e| beyond the double range, the number perhaps not: one step of 10^22 first
-      const FastInterval p = power_of_ten(22);
-      n.x = x.e >= 0 ? m * p * power_of_ten(p10 - 22) : m / p / power_of_ten(p10 - 22);
+    } else {  // 10^|e| beyond the double range, the number perhaps not: 10^(|e| - kMaxPower) first
+      // (|e| <= kMaxWideExponent, so both powers are in the table)
+      static_assert(kMaxWideExponent - kMaxPower <= kMaxPower, "10^|e| in two steps of the table");
+      const FastInterval p = power_of_ten(p10 - kMaxPower);
+      n.x = x.e >= 0 ? m * p * power_of_ten(kMaxPower) : m / p / power_of_ten(kMaxPower);
     }
     if (x.neg) n.x = -n.x;
   }
