@@ -1,12 +1,11 @@
 #!/usr/bin/env bash
-# Run each libFuzzer harness (fuzz/: clang, -fsanitize=fuzzer,address,undefined) for a while, as many at
-# a time as there are cores, starting from the seed corpus in fuzz/corpus/<harness>/ (doc/testing.md).
+# Build the libFuzzer harnesses (fuzz/: clang, -fsanitize=fuzzer,address,undefined) and run each one
+# for a while, as many at a time as there are cores, starting from the seed corpus in
+# fuzz/corpus/<harness>/ (doc/testing.md).
 #   scripts/fuzz.sh [SECONDS_PER_HARNESS]      (default 60; CI runs 30)
-# The harnesses are those of the sanitizer build (build-asan/fuzz/, scripts/sanitize.sh) when it is
-# there, brought up to date; otherwise a build of the library and the harnesses alone in build-fuzz/.
 # New corpus entries go to build-fuzz/corpus-<harness>/ (not into the repository); a crash, a
 # sanitizer report, an input slower than 60 s or an invariant violation fails the script with the
-# reproducer in build-fuzz/artifacts/. Replay one with <build>/fuzz/fuzz_<harness> FILE.
+# reproducer in build-fuzz/artifacts/. Replay one with build-fuzz/fuzz_<harness> FILE.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_PER=${1:-60}
@@ -16,20 +15,12 @@ PACKAGES=(clang libclang-rt-14-dev make cmake libcgal-dev libgmp-dev libmpfr-dev
           libflint-dev)
 scripts/install-packages.sh "${PACKAGES[@]}"
 
-HARNESSES=(classify batch_line numbers)
 SECONDS=0
-if grep -qs '^RELPOS_FUZZ:BOOL=ON' build-asan/CMakeCache.txt; then
-  build=build-asan
-else
-  # -O1 -g1, as for scripts/sanitize.sh (and libFuzzer's documentation): three quarters of the compile
-  # time of -O2 -g (doc/testing.md, "Time in CI"); line tables are all a report's stack trace needs.
-  build=build-fuzz
-  cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DRELPOS_FUZZ=ON -DRELPOS_BUILD_TESTS=OFF \
-    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" >/dev/null
-fi
-cmake --build "$build" -j"$(nproc)" --target "${HARNESSES[@]/#/fuzz_}"
-echo "relpos: harnesses of $build configured and built in $SECONDS s"
-export FUZZERS=$build/fuzz
+# -O1 -g1, as for scripts/sanitize.sh (and libFuzzer's documentation): three quarters of the compile
+# time of -O2 -g (doc/testing.md, "Time in CI"); line tables are all a report's stack trace needs.
+cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" >/dev/null
+cmake --build build-fuzz -j"$(nproc)"
+echo "relpos: build-fuzz configured and built in $SECONDS s"
 mkdir -p build-fuzz/artifacts
 
 # One harness for SECONDS_PER seconds (libFuzzer runs on one core).
@@ -41,7 +32,7 @@ run_harness() {
   [ -f "fuzz/$harness.dict" ] && options+=(-dict="fuzz/$harness.dict")
   [ "$harness" = classify ] && options+=(-max_len=256) || options+=(-max_len=4096)
   echo "== fuzz_$harness for ${SECONDS_PER} s"
-  if ! "$FUZZERS/fuzz_$harness" "${options[@]}" "$work" "fuzz/corpus/$harness" >"$log" 2>&1; then
+  if ! build-fuzz/fuzz_$harness "${options[@]}" "$work" "fuzz/corpus/$harness" >"$log" 2>&1; then
     tail -n 60 "$log"
     echo "relpos: fuzz_$harness found a defect; reproducer in build-fuzz/artifacts/ (see doc/testing.md)"
     return 1
@@ -54,5 +45,5 @@ export SECONDS_PER
 # As many harnesses at a time as there are cores, each still for the full SECONDS_PER seconds; xargs
 # fails when one of them does.
 SECONDS=0
-printf '%s\n' "${HARNESSES[@]}" | xargs -P "$(nproc)" -I{} bash -c 'run_harness {}'
+printf '%s\n' classify batch_line numbers | xargs -P "$(nproc)" -I{} bash -c 'run_harness {}'
 echo "relpos: fuzz runs in $SECONDS s"
