@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -20,12 +19,16 @@ using detail::kPairLanes;
 /// that the lines are still in L1 when their block comes (doc/performance.md, "Many pairs at once").
 constexpr std::size_t kPrefetchBlocks = 2;
 
-/// Every cache line of [first, last) requested for reading, into all levels of the cache. Inlined
-/// always: GCC takes a function that only prefetches for one without effects, and drops its calls.
-[[gnu::always_inline]] inline void prefetch_lines(const double* first, const double* last) {
-  constexpr std::uintptr_t kLine = 64;
-  const char* line = reinterpret_cast<const char*>(reinterpret_cast<std::uintptr_t>(first) & ~(kLine - 1));
-  for (; line < reinterpret_cast<const char*>(last); line += kLine) __builtin_prefetch(line, 0, 3);
+/// Every cache line of the `Bytes` bytes at `first` requested for reading, into all levels of the
+/// cache: one request a line length apart and one for the last byte (the line a range that does not
+/// start on a line's boundary ends in), unrolled. Inlined always: GCC takes a function that only
+/// prefetches for one without effects, and drops its calls.
+template <std::size_t Bytes>
+[[gnu::always_inline]] inline void prefetch_bytes(const double* first) {
+  constexpr std::size_t kLine = 64;
+  const char* bytes = reinterpret_cast<const char*>(first);
+  for (std::size_t k = 0; k < Bytes; k += kLine) __builtin_prefetch(bytes + k, 0, 3);
+  __builtin_prefetch(bytes + Bytes - 1, 0, 3);
 }
 
 /// Pairs as 32 raw doubles each.
@@ -36,12 +39,13 @@ struct RawPairs {
     el = e + 16 * i;
     pl = p + 16 * i;
   }
-  /// Pairs [first, last) requested from memory: arrays of pairs are read once, from first to last,
+  /// The block of pairs from `first` requested from memory: arrays of pairs are read once, in order,
   /// and the lanes' compute and the stream from memory overlap only if the next pairs are on their
   /// way before the lanes need them.
-  [[gnu::always_inline]] void prefetch(std::size_t first, std::size_t last) const {
-    prefetch_lines(e + 16 * first, e + 16 * last);
-    prefetch_lines(p + 16 * first, p + 16 * last);
+  [[gnu::always_inline]] void prefetch(std::size_t first) const {
+    constexpr std::size_t kBytes = 16 * sizeof(double) * kPairLanes;
+    prefetch_bytes<kBytes>(e + 16 * first);
+    prefetch_bytes<kBytes>(p + 16 * first);
   }
   /// decide_position on the doubles as its two steps (the same verdict, and the same InputError, the
   /// ellipsoid's first; classify.hpp): its one-call form would first repeat the static route, which
@@ -84,7 +88,7 @@ struct BuiltPairs {
     pl = filter_doubles_of(p[shared ? 0 : i]);
   }
   /// Nothing requested: the quadrics' doubles are wherever their objects are.
-  void prefetch(std::size_t, std::size_t) const {}
+  void prefetch(std::size_t) const {}
   /// decide_position on the quadrics: InputError only for the size limit.
   PairStatus scalar(std::size_t i, Verdict& v) const {
     try {
@@ -107,7 +111,7 @@ struct IndexedPairs {
     pl = filter_doubles_of(*p);
   }
   /// Nothing requested, as for BuiltPairs.
-  void prefetch(std::size_t, std::size_t) const {}
+  void prefetch(std::size_t) const {}
   PairStatus scalar(std::size_t k, Verdict& v) const {
     v = decide_position(bodies[index[k]], *p);
     return PairStatus::Decided;
@@ -254,7 +258,7 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Fil
     for (std::size_t start = chunk; start < end; start += kPairLanes) {
       const int count = static_cast<int>(std::min<std::size_t>(kPairLanes, end - start));
       const std::size_t ahead = start + kPrefetchBlocks * kPairLanes;
-      if (prefetch && ahead < n) pairs.prefetch(ahead, std::min(n, ahead + kPairLanes));
+      if (prefetch && ahead + kPairLanes <= n) pairs.prefetch(ahead);  // whole blocks only
       for (int l = 0; l < kPairLanes; ++l) {
         if (l < count) {
           pairs.lane(start + static_cast<std::size_t>(l), block.e[l], block.p[l]);
