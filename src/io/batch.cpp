@@ -190,6 +190,7 @@ class LineReader {
       for (std::size_t m = 0; m < count_; ++m)
         if (members_[m].key == k && duplicate_.empty()) duplicate_ = key;
       if (count_ < kMembers) members_[count_++] = Member{k, value, taken};
+      general_ = general_ || (!taken && (k == "ellipsoid" || k == "paraboloid" || k == "quadric"));
       break;
     }
     if (known) return;
@@ -233,6 +234,7 @@ class LineReader {
 
   /// The quadrics the fast reader left: small bounded trees, numbers exact (or the nearest doubles).
   void general_quadrics(Json& ellipsoid, Json& paraboloid) {
+    if (!general_) return;  // the fast reader took every quadric (most lines)
     detail::JsonReadOptions read;
     read.doubles = options_.numbers_as_doubles;
     read.max_elements = kMaxQuadricEntries;
@@ -264,6 +266,7 @@ class LineReader {
   static constexpr std::size_t kMembers = 6;  // one of each known key
   Member members_[kMembers];
   std::size_t count_ = 0;
+  bool general_ = false;  ///< a quadric the fast reader left
   std::string unknown_, duplicate_, key_storage_;
 };
 

@@ -46,9 +46,8 @@ class FastValue {
   /// exponents span at most 2 kMaxExponent (a matrix scaled by a power of ten; fast_quadric.hpp).
   static constexpr int kMaxWideExponent = 340;  ///< beyond, m 10^e leaves the double range
 
-  /// Whether a decimal number has |e| > kMaxExponent (a double, --numbers double, never is).
-  bool wide(const FastNumber& n) const { return !doubles_ && (n.d.e > kMaxExponent || n.d.e < -kMaxExponent); }
-  /// Whether any number read is wide.
+  /// Whether any number read is wide: a decimal with |e| > kMaxExponent (a double, --numbers
+  /// double, never is).
   bool any_wide() const { return wide_; }
 
   /// `doubles`: each number is the double nearest its text (--numbers double).
@@ -57,7 +56,7 @@ class FastValue {
   /// The root node, or -1 when the text is not entirely one value of the accepted kinds.
   int parse();
   /// The root node of the value at the start of the text, or -1; the value ends at end().
-  int parse_prefix() { return value(0); }
+  int parse_prefix();
   std::size_t end() const { return i_; }
   const FastNode& node(int k) const { return nodes_[k].node; }
 
@@ -86,7 +85,7 @@ class FastValue {
 
  private:
   int new_node(FastKind kind);
-  int value(int depth);
+  [[gnu::always_inline]] inline int value(int depth);
   int container(int depth, bool object);
   [[gnu::always_inline]] inline bool member_key(int self, std::string_view& name);
   int number();
