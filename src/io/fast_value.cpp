@@ -1,5 +1,6 @@
 #include "io/fast_value.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -77,7 +78,7 @@ inline int FastValue::value(int depth) {
   if (i_ >= s_.size()) return -1;
   const char c = s_[i_];
   if (c == '[' || c == '{') return container(depth, c == '{');
-  return number();
+  return c == '"' ? number<true>() : number<false>();
 }
 
 int FastValue::parse() {
@@ -142,13 +143,13 @@ int FastValue::container(int depth, bool object) {
   }
 }
 
+template <bool quoted>
 int FastValue::number() {
   // A decimal written as a JSON string ("0.1") is the number 0.1 to the general reader: read here
   // too, so that both spellings give the quadric the same storage and the same stages run (with
   // --numbers doubles only JSON numbers are rounded: a string stays with the general reader).
   const char* first = s_.data() + i_;
   const char* const last = s_.data() + s_.size();
-  const bool quoted = *first == '"';
   if (quoted && doubles_) return -1;
   first += quoted;
   const int self = new_node(FastKind::Number);
@@ -186,7 +187,6 @@ int FastValue::number() {
     x.m = m;
     x.e = e;
     x.neg = digits.neg;
-    wide_ = wide_ || e > kMaxExponent || e < -kMaxExponent;
     decimals_ = true;  // enclosed by enclose_decimals()
   }
   return self;
@@ -194,6 +194,7 @@ int FastValue::number() {
 
 void FastValue::enclose_decimals() {
   if (!decimals_) return;
+  int widest = 0;  // the largest |e|: one test after the loop, not one a number as it is read
   for (int k = 0; k < n_; ++k) {
     FastNumber& n = nodes_[k].node.number;
     const Decimal& x = n.d;
@@ -203,6 +204,7 @@ void FastValue::enclose_decimals() {
                                : FastInterval(static_cast<double>(x.m >> 11)) * FastInterval(2048.0) +
                                      FastInterval(static_cast<double>(x.m & 2047));
     const int p10 = x.e < 0 ? -x.e : x.e;
+    widest = std::max(widest, p10);
     if (p10 <= 44) {
       const FastInterval p =
           p10 <= 22 ? FastInterval(kPow10[p10]) : FastInterval(kPow10[22]) * FastInterval(kPow10[p10 - 22]);
@@ -217,6 +219,7 @@ void FastValue::enclose_decimals() {
     }
     if (x.neg) n.x = -n.x;
   }
+  wide_ = widest > kMaxExponent;
 }
 
 }  // namespace relpos::io::detail

@@ -47,7 +47,7 @@ class FastValue {
   static constexpr int kMaxWideExponent = 340;  ///< beyond, m 10^e leaves the double range
 
   /// Whether any number read is wide: a decimal with |e| > kMaxExponent (a double, --numbers
-  /// double, never is).
+  /// double, never is). Known once enclose_decimals() has run.
   bool any_wide() const { return wide_; }
 
   /// `doubles`: each number is the double nearest its text (--numbers double).
@@ -88,6 +88,8 @@ class FastValue {
   [[gnu::always_inline]] inline int value(int depth);
   int container(int depth, bool object);
   [[gnu::always_inline]] inline bool member_key(int self, std::string_view& name);
+  /// A number, `quoted` when its text starts with '"' (a decimal written as a JSON string).
+  template <bool quoted>
   int number();
 
   std::string_view s_;
