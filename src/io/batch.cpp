@@ -150,18 +150,23 @@ class LineReader {
   /// reader as the line is scanned: its end comes with it.
   std::size_t member(std::size_t i) {
     if (i >= line_.size() || line_[i] != '"') invalid_json(line_);
-    const std::size_t key_end = detail::string_end(line_, i);
-    if (key_end == std::string_view::npos) invalid_json(line_);
-    const std::string_view key_text = line_.substr(i, key_end - i);
+    // A plain key (every key of a well-formed line) is its text between the quotes: one pass.
+    std::size_t key_end = detail::plain_string_end(line_, i);
+    std::string_view key;
+    if (key_end != std::string_view::npos) {
+      key = line_.substr(i + 1, key_end - i - 2);
+    } else {
+      key_end = detail::string_end(line_, i);
+      if (key_end == std::string_view::npos) invalid_json(line_);
+      try {
+        key = key_name(line_.substr(i, key_end - i), key_storage_);
+      } catch (const nlohmann::json::exception&) {
+        invalid_json(line_);
+      }
+    }
     i = detail::skip_space(line_, key_end);
     if (i >= line_.size() || line_[i] != ':') invalid_json(line_);
     i = detail::skip_space(line_, i + 1);
-    std::string_view key;
-    try {
-      key = key_name(key_text, key_storage_);
-    } catch (const nlohmann::json::exception&) {
-      invalid_json(line_);
-    }
     std::size_t end = std::string_view::npos;
     bool taken = false;
     if (key == "ellipsoid")
