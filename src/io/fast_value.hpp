@@ -62,7 +62,8 @@ class FastValue {
 
   /// The enclosures of the decimal numbers: m exactly (a sum of two exact doubles when m > 2^53),
   /// then one exactly-rounded operation with 10^|e| (two when |e| > 22; for a wide number, with an
-  /// enclosure of 10^|e| made once). Call with the rounding mode towards +inf.
+  /// enclosure of 10^|e| made once), and whether any is wide (any_wide). Call with the rounding
+  /// mode towards +inf.
   void enclose_decimals();
 
   /// The child of an object named `name`, or -1.
