@@ -271,7 +271,7 @@ TEST_CASE("A pair beyond the default limit is classified on a stack of its own",
   // Roots of f 10^-1200 apart (the sphere at (0, 0, 1) of radius 1/4 in the circular cup has the
   // double root -1 of f; a perturbation of 10^-1200 splits it): CGAL's root isolation recurses
   // about 4000 levels, more than a 256 KiB thread stack holds. The library runs such a pair on a
-  // thread whose stack fits it (base/large_stack.hpp), whatever the caller's stack.
+  // thread whose stack fits it (algebra/large_stack.hpp), whatever the caller's stack.
   Rational tiny(1);
   for (int i = 0; i < 1200; ++i) tiny /= 10;
   Matrix4 p;

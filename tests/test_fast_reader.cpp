@@ -617,6 +617,37 @@ TEST_CASE("fast reader: scaled numbers it leaves to the general reader", "[io][f
   REQUIRE(e->matrix()(3, 3) == -pow10(240));
 }
 
+TEST_CASE("fast reader: a sphere's and a standard paraboloid's size bound, number by number", "[io][fast]") {
+  // Whether a value holds a wide number (|e| > 30 once trailing zeros are removed) is known after
+  // its numbers are read: in each place of the form, a number at the bound is taken (and read as the
+  // general reader reads it), one past it left to the general reader, however it is spelled.
+  const std::string at[] = {"1e30", "-1e-30", "0.1e-29", "1000e27", "\"2.5e-29\"", "-1234567890123456789e-30"};
+  const std::string past[] = {"1e31", "-1e-31", "0.1e-30", "10e30", "\"2.5e-30\"", "-1234567890123456789e-31"};
+  for (std::size_t place = 0; place < 5; ++place)
+    for (std::size_t k = 0; k < 6; ++k) {
+      for (const bool wide : {false, true}) {
+        std::string x = wide ? past[k] : at[k];
+        if (place >= 3 && x[0] == '-') x = x.substr(1);  // a radius, a and b: positive
+        std::string n[5] = {"0.5", "-0.25", "2", "1.5", "3"};
+        n[place] = x;
+        const std::string sphere =
+            "{\"sphere\":{\"center\":" + vec3(n[0], n[1], n[2]) + ",\"radius\":" + (place == 4 ? n[4] : n[3]) + "}}";
+        const std::string cup = "{\"vertex\":" + vec3(n[0], n[1], n[2]) + ",\"a\":" + n[3] + ",\"b\":" + n[4] + "}";
+        INFO(sphere << "  " << cup);
+        if (wide) {
+          REQUIRE_FALSE(fast_ellipsoid(sphere, false));
+          REQUIRE_FALSE(fast_paraboloid(cup, false));
+        } else {
+          check_pair(sphere, cup, false);
+        }
+      }
+    }
+  // A zero is never wide, whatever its exponent; with --numbers double no number is.
+  check_pair(R"({"sphere":{"center":[0e400,0,-0.0e-9999],"radius":1}})", R"({"vertex":[0,0e999,0],"a":1,"b":2})",
+             false);
+  check_pair(R"({"sphere":{"center":[1e20,0,0],"radius":1e-20}})", R"({"vertex":[0,0,1e20],"a":1e-20,"b":2})", true);
+}
+
 TEST_CASE("fast reader: a general quadric that is an ellipsoid's or an elliptic paraboloid's matrix", "[io][fast]") {
   // The quadric the general reader makes of the same text: the same exact matrix (its orientation
   // included) and type; any other type or form is left to it.

@@ -144,3 +144,37 @@ TEST_CASE("valid_utf8: lead and continuation bytes", "[json_lexer]") {
   CHECK_FALSE(relpos::io::detail::valid_utf8("\xFF"));
   CHECK_FALSE(relpos::io::detail::valid_utf8("\x80"));
 }
+
+TEST_CASE("eight_digits: the value of eight digits, or not digits, against the digits one by one", "[json_lexer]") {
+  // The bytes next to the digits ('/' and ':'), a byte whose low nibble is a digit's and bytes with
+  // the high bit set, so that the test of the whole word is checked byte by byte.
+  std::mt19937_64 rng(11);
+  const std::string alphabet = std::string("0123456789012345678901234567890123456789/:\x10p") + '\xB5' + '\xF9';
+  int numbers = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    std::string eight(8, '0');
+    for (char& c : eight) c = alphabet[rng() % alphabet.size()];
+    const std::string text = std::string(trial % 8, '-') + eight;  // at every alignment
+    std::uint64_t expected = 0;
+    bool digits = true;
+    for (const char c : eight) {
+      digits = digits && c >= '0' && c <= '9';
+      expected = expected * 10 + static_cast<std::uint64_t>(c - '0');
+    }
+    CAPTURE(eight);
+    const std::uint64_t got = relpos::io::detail::eight_digits(text.data() + trial % 8);
+    if (!digits) {
+      REQUIRE(got == relpos::io::detail::kNotDigits);
+      continue;
+    }
+    ++numbers;
+    REQUIRE(got == expected);
+  }
+  CHECK(numbers > 1000);
+  // The extremes.
+  CHECK(relpos::io::detail::eight_digits("00000000") == 0);
+  CHECK(relpos::io::detail::eight_digits("99999999") == 99999999);
+  CHECK(relpos::io::detail::eight_digits("12345678") == 12345678);
+  CHECK(relpos::io::detail::eight_digits("1234567:") == relpos::io::detail::kNotDigits);
+  CHECK(relpos::io::detail::eight_digits("/2345678") == relpos::io::detail::kNotDigits);
+}

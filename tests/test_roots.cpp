@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "algebra/large_stack.hpp"
 #include "algebra/roots.hpp"
 #include "support/construct.hpp"
 #include "support/printers.hpp"
@@ -436,6 +437,54 @@ TEST_CASE("Classification::roots gives the rational simple roots -a^2, -b^2 exac
         CHECK(*r.exact == x);
       }
   CHECK(found == 2);
+}
+
+TEST_CASE("exact_root_structure: a repeated factor of 30 000-bit coefficients", "[roots][bug]") {
+  // f = (a l + b)^2 (l^2 + 1), a = 2^30000 + 12345, b = 7 - floor(3a / 2): one double root -b/a near
+  // 3/2 and a non-real pair. The square-free factorisation's gcd has coefficients of 60 000 bits,
+  // beyond what a gcd modulo CGAL's table of 2 000 primes of 26 bits can rebuild: with that gcd
+  // (CGAL_USE_INTERNAL_MODULAR_GCD, CMakeLists.txt) this never ended. Its isolation needs a few
+  // levels only, so the case is quick.
+  Integer a(1);
+  mpz_mul_2exp(a.mpz(), a.mpz(), 30000);
+  a += 12345;
+  Integer b = Integer(3) * a;
+  mpz_fdiv_q_2exp(b.mpz(), b.mpz(), 1);
+  b = Integer(7) - b;
+  // (a l + b)^2 (l^2 + 1) = b^2 + 2ab l + (a^2 + b^2) l^2 + 2ab l^3 + a^2 l^4
+  const Quartic<Integer> f{b * b, 2 * a * b, a * a + b * b, 2 * a * b, a * a};
+  const Quadratic<Integer> s{Integer(5), Integer(0), Integer(1)};  // l^2 + 5: no common root
+  const auto rs = relpos::exact_root_structure(f, s);
+  REQUIRE(rs.real_roots.size() == 1);
+  const auto& r = rs.real_roots[0];
+  CHECK(r.multiplicity_f == 2);
+  CHECK(r.multiplicity_s == 0);
+  REQUIRE(r.exact);
+  CHECK(*r.exact == Rational(-b, a));
+  CHECK(rs.nonreal == 2);
+  CHECK(rs.sign_disc_f == 0);
+  const auto d = relpos::real_root_decimals(f, 12);
+  REQUIRE(d.size() == 1);
+  CHECK(rabs(relpos::parse_rational(d[0]) - Rational(-b, a)) < Rational(1, 1000000) * Rational(1, 100000));
+}
+
+TEST_CASE("root isolation on a thread with a small stack: roots 2^-3000 apart", "[roots][bug]") {
+  // f = (a l - b)(a l - b - 1)(l^2 + 1), a = 2^3000 + 1, b = a + 3: two roots 1/a apart near 1. CGAL's
+  // Descartes method recurses about once per bit of their separation, 3 000 levels of about 210
+  // bytes: more than the 256 KiB stack of the thread below. The isolation asks for its own stack
+  // (large_stack.hpp, isolate_on_fitting_stack); without it this test dies of a stack overflow.
+  Integer a(1);
+  mpz_mul_2exp(a.mpz(), a.mpz(), 3000);
+  a += 1;
+  const Integer b = a + 3, c = b + 1;
+  // (a l - b)(a l - c) = a^2 l^2 - a (b + c) l + b c; times l^2 + 1.
+  const Integer q2 = a * a, q1 = -a * (b + c), q0 = b * c;
+  const Quartic<Integer> f{q0, q1, q0 + q2, q1, q2};
+  std::vector<std::string> d;
+  relpos::detail::run_on_large_stack(std::size_t(256) << 10, [&] { d = relpos::real_root_decimals(f, 12); });
+  REQUIRE(d.size() == 2);
+  CHECK(rabs(relpos::parse_rational(d[0]) - Rational(b, a)) < Rational(1, 1000000) * Rational(1, 100000));
+  CHECK(rabs(relpos::parse_rational(d[1]) - Rational(c, a)) < Rational(1, 1000000) * Rational(1, 100000));
 }
 
 TEST_CASE("sign_of_discriminant for degrees 1 to 4", "[roots]") {

@@ -89,7 +89,7 @@ int nonreal_multiple(const AK& ak, const Poly& f) {
   for (const auto& [h, m] : factors) {
     if (m < 2) continue;
     Solutions hr;
-    ak.solve_1_object()(h, std::back_inserter(hr));
+    solve_on_fitting_stack(ak, h, std::back_inserter(hr));
     count += (h.degree() - static_cast<int>(hr.size())) * m;
   }
   return count;
@@ -136,7 +136,7 @@ RootStructure exact_root_structure(const Quartic<Integer>& fc, const Quadratic<I
 
   AK ak;
   Solutions roots;
-  ak.solve_1_object()(f, std::back_inserter(roots));  // distinct real roots, increasing, with multiplicity
+  solve_on_fitting_stack(ak, f, std::back_inserter(roots));  // distinct real roots, increasing, with multiplicity
   const Poly ds = CGAL::differentiate(s);
   int real_with_mult = 0;
   for (const auto& [root, mult] : roots) {
@@ -159,7 +159,7 @@ std::vector<std::string> real_root_decimals(const Quartic<Integer>& fc, int digi
   const Poly f = make_poly(fc);
   AK ak;
   Solutions roots;
-  ak.solve_1_object()(f, std::back_inserter(roots));
+  solve_on_fitting_stack(ak, f, std::back_inserter(roots));
   std::vector<std::string> out;
   const int bits = static_cast<int>(digits * 3.33) + 8;
   for (const auto& r : roots) {

@@ -12,10 +12,15 @@
 // Theorem 5: -a^2, -b^2 in the normal frame) and is not a tangency.
 #pragma once
 
+#include <gmp.h>
+
+#include <algorithm>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "algebra/large_stack.hpp"
 #include "algebra/pencil.hpp"
 #include "relpos/numbers.hpp"
 
@@ -50,6 +55,17 @@ RootStructure exact_root_structure(const Quartic<Integer>& f, const Quadratic<In
 /// digits and the true root lies within one unit of the last digit (the isolating interval is
 /// refined until it is that narrow).
 std::vector<std::string> real_root_decimals(const Quartic<Integer>& f, int digits);
+
+/// CGAL's algebraic kernel's solve_1 of p (an integer polynomial), its roots appended to `out`, on
+/// a stack its recursion fits (large_stack.hpp: isolate_on_fitting_stack), whatever the calling
+/// thread's stack. Every isolation of the roots of a pair's f and D (decision, evidence, report) goes
+/// through here; a motion's candidate instants, within its limits (doc/cli.md), do not.
+template <class AK, class Poly, class Out>
+void solve_on_fitting_stack(const AK& ak, const Poly& p, Out out) {
+  std::size_t bits = 0;
+  for (int i = 0; i <= p.degree(); ++i) bits = std::max(bits, mpz_sizeinbase(p[i].mpz(), 2));
+  detail::isolate_on_fitting_stack(p.degree(), bits, [&] { ak.solve_1_object()(p, out); });
+}
 
 /// Exact sign of Disc(g) for a polynomial over Z of degree 1..4 (via Res(g, g')); used for f~.
 int sign_of_discriminant(const std::vector<Integer>& coefficients);

@@ -5,9 +5,9 @@
 
 #include <optional>
 
+#include "algebra/large_stack.hpp"
 #include "algebra/pair_size.hpp"
 #include "algebra/shape_filter.hpp"
-#include "base/large_stack.hpp"
 #include "decide/evidence.hpp"
 #include "decide/ladder.hpp"
 #include "decide/unchecked.hpp"
@@ -30,7 +30,7 @@ Classification classify_impl(const Ellipsoid& e, const Paraboloid& p, Evidence e
 
 /// f() directly, or, for a pair beyond the default size limit (a raised SizeLimit: `bits` from
 /// check_normalized_pair_size), on a thread whose stack fits the exact root isolation's recursion,
-/// whose depth grows with the numbers (base/large_stack.hpp).
+/// whose depth grows with the numbers (algebra/large_stack.hpp).
 template <class F>
 auto with_stack_for(std::size_t bits, F f) -> decltype(f()) {
   if (bits <= kMaxNormalizedBits) return f();

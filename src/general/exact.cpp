@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "algebra/between.hpp"
+#include "algebra/roots.hpp"
 
 namespace relpos::general {
 namespace {
@@ -57,8 +58,8 @@ struct Analysis {
   bool ellipsoid = false;
 
   Analysis(const IntegerPencil& p, bool ellipsoid_q) : f(make_poly(p.f)), d(make_poly(p.d)), ellipsoid(ellipsoid_q) {
-    ak.solve_1_object()(f, std::back_inserter(fr));
-    ak.solve_1_object()(d, std::back_inserter(dr));
+    solve_on_fitting_stack(ak, f, std::back_inserter(fr));
+    solve_on_fitting_stack(ak, d, std::back_inserter(dr));
     // D = det(B + t M) with M positive definite: three real roots, counted with multiplicity (the
     // generalized eigenvalues of the symmetric pencil, math.md §15).
     int real = 0;

@@ -150,18 +150,23 @@ class LineReader {
   /// reader as the line is scanned: its end comes with it.
   std::size_t member(std::size_t i) {
     if (i >= line_.size() || line_[i] != '"') invalid_json(line_);
-    const std::size_t key_end = detail::string_end(line_, i);
-    if (key_end == std::string_view::npos) invalid_json(line_);
-    const std::string_view key_text = line_.substr(i, key_end - i);
+    // A plain key (every key of a well-formed line) is its text between the quotes: one pass.
+    std::size_t key_end = detail::plain_string_end(line_, i);
+    std::string_view key;
+    if (key_end != std::string_view::npos) {
+      key = line_.substr(i + 1, key_end - i - 2);
+    } else {
+      key_end = detail::string_end(line_, i);
+      if (key_end == std::string_view::npos) invalid_json(line_);
+      try {
+        key = key_name(line_.substr(i, key_end - i), key_storage_);
+      } catch (const nlohmann::json::exception&) {
+        invalid_json(line_);
+      }
+    }
     i = detail::skip_space(line_, key_end);
     if (i >= line_.size() || line_[i] != ':') invalid_json(line_);
     i = detail::skip_space(line_, i + 1);
-    std::string_view key;
-    try {
-      key = key_name(key_text, key_storage_);
-    } catch (const nlohmann::json::exception&) {
-      invalid_json(line_);
-    }
     std::size_t end = std::string_view::npos;
     bool taken = false;
     if (key == "ellipsoid")
@@ -190,6 +195,7 @@ class LineReader {
       for (std::size_t m = 0; m < count_; ++m)
         if (members_[m].key == k && duplicate_.empty()) duplicate_ = key;
       if (count_ < kMembers) members_[count_++] = Member{k, value, taken};
+      general_ = general_ || (!taken && (k == "ellipsoid" || k == "paraboloid" || k == "quadric"));
       break;
     }
     if (known) return;
@@ -233,6 +239,7 @@ class LineReader {
 
   /// The quadrics the fast reader left: small bounded trees, numbers exact (or the nearest doubles).
   void general_quadrics(Json& ellipsoid, Json& paraboloid) {
+    if (!general_) return;  // the fast reader took every quadric (most lines)
     detail::JsonReadOptions read;
     read.doubles = options_.numbers_as_doubles;
     read.max_elements = kMaxQuadricEntries;
@@ -264,6 +271,7 @@ class LineReader {
   static constexpr std::size_t kMembers = 6;  // one of each known key
   Member members_[kMembers];
   std::size_t count_ = 0;
+  bool general_ = false;  ///< a quadric the fast reader left
   std::string unknown_, duplicate_, key_storage_;
 };
 

@@ -113,7 +113,8 @@ int sphere_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recipe)
   std::array<Number, 3> c;
   if (radius < 0 || r.node(radius).kind != FastKind::Number || !r.numbers(centre, c)) return 0;
   const Number& rad = r.node(radius).number;
-  if (!positive(rad) || r.wide(c[0]) || r.wide(c[1]) || r.wide(c[2]) || r.wide(rad)) return 0;  // the size bound
+  // The size bound: no wide number (the tree holds these four numbers and no other, by the counts).
+  if (!positive(rad) || r.any_wide()) return 0;
   recipe.form = DecimalRecipe::Form::Sphere;
   recipe.n = {c[0].d, c[1].d, c[2].d, rad.d};
   x.fill(I(0));
@@ -151,8 +152,8 @@ int standard_entries(const Reader& r, int root, Entries& x, DecimalRecipe& recip
       !r.numbers(r.member(root, "vertex"), v))
     return 0;
   const Number &na = r.node(a).number, &nb = r.node(b).number;
-  if (!positive(na) || !positive(nb) || r.wide(v[0]) || r.wide(v[1]) || r.wide(v[2]) || r.wide(na) || r.wide(nb))
-    return 0;  // the size bound
+  // The size bound: no wide number (the tree holds these five numbers and no other, by the counts).
+  if (!positive(na) || !positive(nb) || r.any_wide()) return 0;
   recipe.form = DecimalRecipe::Form::Standard;
   recipe.n = {v[0].d, v[1].d, v[2].d, na.d, nb.d};
   const I ia = I(1) / CGAL::square(na.x), ib = I(1) / CGAL::square(nb.x);

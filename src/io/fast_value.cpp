@@ -1,5 +1,6 @@
 #include "io/fast_value.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -35,26 +36,29 @@ FastInterval power_of_ten(int k) {
 
 /// The lexer's sink of a number read as a decimal: the significant digits go into m (at most
 /// kMaxDigits of them; zeros after those only move the exponent), `scale` counts the fraction's
-/// digits and `zeros` the zeros dropped from m's end; the exponent has at most five digits.
+/// digits and `zeros` the zeros dropped from m's end; the exponent has at most five digits. m is
+/// the sink's own, not the node's: the digits are loads of chars, which may alias any store, so a
+/// node's m would go back to memory after every digit.
 struct DecimalDigits {
-  Decimal& x;
+  std::uint64_t m = 0;
+  bool neg = false;
   int significant = 0, scale = 0, zeros = 0, exponent = 0, exponent_length = 0;
-  void negative() { x.neg = true; }
-  bool wants_eight() const { return x.m != 0 && significant + 8 <= FastValue::kMaxDigits; }
+  void negative() { neg = true; }
+  bool wants_eight() const { return m != 0 && significant + 8 <= FastValue::kMaxDigits; }
   bool eight(std::uint64_t block, bool fraction) {
-    x.m = x.m * 100000000 + block;
+    m = m * 100000000 + block;
     significant += 8;
     if (fraction) scale -= 8;
     return true;
   }
   bool digit(unsigned d, bool fraction) {
     if (fraction) --scale;
-    if (x.m == 0 && d == 0) return true;  // a leading zero
+    if (m == 0 && d == 0) return true;  // a leading zero
     if (significant == FastValue::kMaxDigits) {
       ++zeros;
       return d == 0;  // more than kMaxDigits significant digits: refused
     }
-    x.m = x.m * 10 + d;
+    m = m * 10 + d;
     ++significant;
     return true;
   }
@@ -70,6 +74,13 @@ struct DecimalDigits {
 
 }  // namespace
 
+inline int FastValue::value(int depth) {
+  if (i_ >= s_.size()) return -1;
+  const char c = s_[i_];
+  if (c == '[' || c == '{') return container(depth, c == '{');
+  return c == '"' ? number<true>() : number<false>();
+}
+
 int FastValue::parse() {
   i_ = skip_space(s_, i_);
   const int root = value(0);
@@ -77,18 +88,13 @@ int FastValue::parse() {
   return root >= 0 && i_ == s_.size() ? root : -1;
 }
 
+int FastValue::parse_prefix() { return value(0); }
+
 int FastValue::new_node(FastKind kind) {
   if (n_ == kMaxNodes) return -1;
   new (&nodes_[n_].node) FastNode;  // its members' initializers; no zeroing of the whole node
   nodes_[n_].node.kind = kind;
   return n_++;
-}
-
-int FastValue::value(int depth) {
-  if (i_ >= s_.size()) return -1;
-  const char c = s_[i_];
-  if (c == '[' || c == '{') return container(depth, c == '{');
-  return number();
 }
 
 inline bool FastValue::member_key(int self, std::string_view& name) {
@@ -137,20 +143,18 @@ int FastValue::container(int depth, bool object) {
   }
 }
 
+template <bool quoted>
 int FastValue::number() {
   // A decimal written as a JSON string ("0.1") is the number 0.1 to the general reader: read here
   // too, so that both spellings give the quadric the same storage and the same stages run (with
   // --numbers doubles only JSON numbers are rounded: a string stays with the general reader).
   const char* first = s_.data() + i_;
   const char* const last = s_.data() + s_.size();
-  const bool quoted = *first == '"';
   if (quoted && doubles_) return -1;
   first += quoted;
   const int self = new_node(FastKind::Number);
   if (self < 0) return -1;
-  FastNumber& n = nodes_[self].node.number;  // read in place (a copy of a number stalls on its parts)
-  Decimal& x = n.d;
-  DecimalDigits digits{x};
+  DecimalDigits digits;
   const char* const p = scan_number(first, last, digits);
   if (!p) return -1;
   const char* after = p;
@@ -160,9 +164,12 @@ int FastValue::number() {
   }
   if (after < last && *after != ',' && *after != ']' && *after != '}' && !is_json_space(*after)) return -1;
   i_ = static_cast<std::size_t>(after - s_.data());
+  FastNumber& n = nodes_[self].node.number;  // written in place (a copy of a number stalls on its parts)
+  Decimal& x = n.d;
+  std::uint64_t m = digits.m;
   int zeros = digits.zeros;
-  while (x.m != 0 && x.m % 10 == 0) x.m /= 10, ++zeros;  // m without trailing zeros: one identity a value
-  if (doubles_) {  // round to nearest here: the caller's guard starts after parse()
+  while (m != 0 && m % 10 == 0) m /= 10, ++zeros;  // m without trailing zeros: one identity a value
+  if (doubles_) {                                  // round to nearest here: the caller's guard starts after parse()
     double d = 0;
     const auto r = std::from_chars(first, p, d);
     if (r.ec != std::errc() || r.ptr != p) return -1;
@@ -172,14 +179,14 @@ int FastValue::number() {
     x.neg = d < 0;
     x.e = 0;
     x.m = d == 0 ? 0 : static_cast<std::uint64_t>(std::fabs(std::frexp(d, &x.e)) * 0x1p53);
-  } else if (x.m == 0) {
+  } else if (m == 0) {
     n.x = FastInterval(0);
-    x.neg = false;
-    x.e = 0;
   } else {
-    x.e = digits.exponent + digits.scale + zeros;
-    if (x.e > kMaxWideExponent || x.e < -kMaxWideExponent) return -1;
-    wide_ = wide_ || wide(n);
+    const int e = digits.exponent + digits.scale + zeros;
+    if (e > kMaxWideExponent || e < -kMaxWideExponent) return -1;
+    x.m = m;
+    x.e = e;
+    x.neg = digits.neg;
     decimals_ = true;  // enclosed by enclose_decimals()
   }
   return self;
@@ -187,6 +194,7 @@ int FastValue::number() {
 
 void FastValue::enclose_decimals() {
   if (!decimals_) return;
+  int widest = 0;  // the largest |e|: one test after the loop, not one a number as it is read
   for (int k = 0; k < n_; ++k) {
     FastNumber& n = nodes_[k].node.number;
     const Decimal& x = n.d;
@@ -196,6 +204,7 @@ void FastValue::enclose_decimals() {
                                : FastInterval(static_cast<double>(x.m >> 11)) * FastInterval(2048.0) +
                                      FastInterval(static_cast<double>(x.m & 2047));
     const int p10 = x.e < 0 ? -x.e : x.e;
+    widest = std::max(widest, p10);
     if (p10 <= 44) {
       const FastInterval p =
           p10 <= 22 ? FastInterval(kPow10[p10]) : FastInterval(kPow10[22]) * FastInterval(kPow10[p10 - 22]);
@@ -210,6 +219,7 @@ void FastValue::enclose_decimals() {
     }
     if (x.neg) n.x = -n.x;
   }
+  wide_ = widest > kMaxExponent;
 }
 
 }  // namespace relpos::io::detail

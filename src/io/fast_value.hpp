@@ -46,9 +46,8 @@ class FastValue {
   /// exponents span at most 2 kMaxExponent (a matrix scaled by a power of ten; fast_quadric.hpp).
   static constexpr int kMaxWideExponent = 340;  ///< beyond, m 10^e leaves the double range
 
-  /// Whether a decimal number has |e| > kMaxExponent (a double, --numbers double, never is).
-  bool wide(const FastNumber& n) const { return !doubles_ && (n.d.e > kMaxExponent || n.d.e < -kMaxExponent); }
-  /// Whether any number read is wide.
+  /// Whether any number read is wide: a decimal with |e| > kMaxExponent (a double, --numbers
+  /// double, never is). Known once enclose_decimals() has run.
   bool any_wide() const { return wide_; }
 
   /// `doubles`: each number is the double nearest its text (--numbers double).
@@ -57,13 +56,14 @@ class FastValue {
   /// The root node, or -1 when the text is not entirely one value of the accepted kinds.
   int parse();
   /// The root node of the value at the start of the text, or -1; the value ends at end().
-  int parse_prefix() { return value(0); }
+  int parse_prefix();
   std::size_t end() const { return i_; }
   const FastNode& node(int k) const { return nodes_[k].node; }
 
   /// The enclosures of the decimal numbers: m exactly (a sum of two exact doubles when m > 2^53),
   /// then one exactly-rounded operation with 10^|e| (two when |e| > 22; for a wide number, with an
-  /// enclosure of 10^|e| made once). Call with the rounding mode towards +inf.
+  /// enclosure of 10^|e| made once), and whether any is wide (any_wide). Call with the rounding
+  /// mode towards +inf.
   void enclose_decimals();
 
   /// The child of an object named `name`, or -1.
@@ -86,9 +86,11 @@ class FastValue {
 
  private:
   int new_node(FastKind kind);
-  int value(int depth);
+  [[gnu::always_inline]] inline int value(int depth);
   int container(int depth, bool object);
   [[gnu::always_inline]] inline bool member_key(int self, std::string_view& name);
+  /// A number, `quoted` when its text starts with '"' (a decimal written as a JSON string).
+  template <bool quoted>
   int number();
 
   std::string_view s_;

@@ -9,7 +9,7 @@
 #include <string>
 #include <utility>
 
-#include "base/large_stack.hpp"
+#include "algebra/large_stack.hpp"
 #include "io/json_tree.hpp"
 #include "relpos/general_classify.hpp"
 
@@ -32,7 +32,7 @@ std::size_t check_general_pair_size(const Ellipsoid& e, const Quadric& q, const 
 
 /// f() directly, or, for a pair beyond the default size limit (`bits` from check_general_pair_size
 /// under a raised limit), on a thread whose stack fits the exact stage's root isolation, whose
-/// recursion grows with the numbers (base/large_stack.hpp; as decide_position does for a paraboloid).
+/// recursion grows with the numbers (algebra/large_stack.hpp; as decide_position does for a paraboloid).
 template <class F>
 auto with_stack_for_general(std::size_t bits, F f) -> decltype(f()) {
   if (bits <= kMaxNormalizedBits) return f();

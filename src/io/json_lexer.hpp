@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string_view>
 
 namespace relpos::io::detail {
@@ -79,7 +80,11 @@ constexpr std::uint64_t kNotDigits = ~std::uint64_t(0);
 /// (eight digits at once: the long numbers of printed doubles are most of a line's bytes).
 inline std::uint64_t eight_digits(const char* p) {
   std::uint64_t v = 0;
-  for (int k = 7; k >= 0; --k) v = v << 8 | static_cast<unsigned char>(p[k]);  // little-endian: one load
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  std::memcpy(&v, p, 8);  // one load (the loop below is not always folded into one)
+#else
+  for (int k = 7; k >= 0; --k) v = v << 8 | static_cast<unsigned char>(p[k]);  // p[0] in the low byte
+#endif
   // Each byte is 0x30..0x39: its high nibble is 3 and adding 6 does not carry out of the low nibble.
   if (((v & 0xF0F0F0F0F0F0F0F0) | (((v + 0x0606060606060606) & 0xF0F0F0F0F0F0F0F0) >> 4)) != 0x3333333333333333)
     return kNotDigits;

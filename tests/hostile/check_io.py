@@ -69,6 +69,20 @@ check("two ellipsoids: error", "duplicate key \\\"ellipsoid\\\"" in out[0], out[
 check("two ids: error", "duplicate key \\\"id\\\"" in out[1], out[1])
 check("duplicate nested key: error", "duplicate key" in out[2] and "ellipsoid" in out[2], out[2])
 
+# --- keys: a plain key read in one pass, one with escapes by the parser: the same name ------------
+escaped = '{"\\u0069d":"k",%s,%s}\n' % (E.replace('"ellipsoid"', '"\\u0065llipsoid"'),
+                                         P.replace('"paraboloid"', '"para\\u0062oloid"'))
+data = ('{"id":"k",%s,%s}\n' % (E, P) + escaped + '{"id":"k","\\q":1,%s,%s}\n' % (E, P) +
+        '{"id":"k","\u00e9":1,%s,%s}\n' % (E, P) + '{"id":"k","a\tb":1,%s,%s}\n' % (E, P) +
+        '{"id":"k","ellipsoid\n').encode()
+out = lines(run(["batch", write("keys.jsonl", data)]))
+check("keys with escapes: the same answer as plain keys",
+      len(out) == 6 and out[0] == out[1] and '"position":"I"' in out[0], out[:2])
+check("a key with a bad escape: invalid JSON", 'forbidden character after backslash' in out[2], out[2])
+check("a non-ASCII key: unknown key", '"id":"k","error":"unknown key' in out[3], out[3])
+check("a key with a control character: invalid JSON", 'control character U+0009' in out[4], out[4])
+check("an unterminated key: invalid JSON", 'missing closing quote' in out[5], out[5])
+
 # --- BOM, CRLF, NUL, trailing separators: JSONL and CSV alike ----------------------------------
 p = run(["batch"], stdin=('\ufeff{"id":"bom",%s,%s}\r\n' % (E, P)).encode())
 check("JSONL with BOM and CRLF answered", '"position":"I"' in p.stdout.decode(), p.stdout)

@@ -1,5 +1,5 @@
 // A thread with a large stack for one piece of work (large_stack.hpp).
-#include "base/large_stack.hpp"
+#include "algebra/large_stack.hpp"
 
 #include <pthread.h>
 
@@ -10,6 +10,11 @@
 namespace relpos::detail {
 
 std::size_t stack_for_bits(std::size_t bits) { return std::max<std::size_t>(std::size_t(16) << 20, 128 * bits); }
+
+std::size_t stack_for_isolation(int degree, std::size_t bits) {
+  const std::size_t n = degree > 0 ? static_cast<std::size_t>(degree) : 0;
+  return 256 * (n * (bits + n) + 64);
+}
 
 namespace {
 
