@@ -15,7 +15,6 @@ import json
 import os
 import random
 import re
-import resource
 import subprocess
 import sys
 import tempfile
@@ -29,13 +28,10 @@ def fail(msg):
     print("FAIL: " + msg)
 
 
-def run(args, stdin=None, stack=None):
-    # `timeout` kills a hung relpos; the Python timeout is a second line of defence. `stack`: the
-    # process's stack limit in bytes (ulimit -s), for the main thread's.
-    limit = (lambda: resource.setrlimit(resource.RLIMIT_STACK, (stack, stack))) if stack else None
+def run(args, stdin=None):
+    # `timeout` kills a hung relpos; the Python timeout is a second line of defence.
     try:
-        p = subprocess.run(["timeout", str(TIMEOUT)] + args, input=stdin, capture_output=True, timeout=TIMEOUT + 30,
-                           preexec_fn=limit)
+        p = subprocess.run(["timeout", str(TIMEOUT)] + args, input=stdin, capture_output=True, timeout=TIMEOUT + 30)
     except subprocess.TimeoutExpired:
         return None
     return p
@@ -239,13 +235,6 @@ def main():
                 p = run([relpos] + cmd + ["-"] + minimal + limit, stdin=(data + "\n").encode())
                 if p is None or p.returncode != 0 or want not in p.stdout:
                     fail("relpos %s (quadric) %s: expected %r, got %s" % (cmd[0], limit, want, p and p.stdout[:200]))
-            # Beyond the default limit the exact stage runs on a stack of its own (base/large_stack.hpp),
-            # a scene's as batch's: answered with the caller's stack limited to 1 MiB, which this pair's
-            # root isolation overflows in a Release build (it needs between 1 and 2 MiB there).
-            p = run([relpos] + cmd + ["-", "--max-bits", str(bits)], stdin=(data + "\n").encode(), stack=1 << 20)
-            if p is None or p.returncode != 0 or b'"position":"I"' not in p.stdout:
-                fail("relpos %s (quadric) --max-bits %d, 1 MiB stack: expected position I, got %s"
-                     % (cmd[0], bits, p and (p.stdout[:200], p.stderr[-300:])))
     p = run([relpos, "classify", "--sphere", "0,0,1,x", "--standard-paraboloid", "1,2", "--json"])
     if p is None or p.returncode != 1 or "error" not in json.loads(p.stdout.decode() or "{}"):
         fail("relpos classify --json with a bad number: expected exit 1 and {\"error\": ...} on stdout")
