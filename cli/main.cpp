@@ -44,7 +44,7 @@
 
 namespace relpos_cli {
 
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 constexpr const char* kExitCodes =
     "Exit codes:\n"
@@ -175,7 +175,7 @@ namespace {
 /// --digits N of classify and batch.
 int parse_digits(const std::string& text) { return static_cast<int>(parse_count(text, "--digits", 1, 1000)); }
 
-void write_json_line(const Json& j) { std::cout << relpos::io::detail::dump_json(j) << '\n'; }
+void write_json_line(const Json& j) { std::cout << relpos::detail::io::dump_json(j) << '\n'; }
 
 /// --margin and --margin-bits B (classify and batch): bits > 0 asks for the margin.
 bool take_margin(Args& args, int& bits) {
@@ -192,7 +192,7 @@ bool take_margin(Args& args, int& bits) {
 /// An answer's JSON text with "margin" as its last member (when there is a margin), by the answer writer.
 std::string with_margin(std::string answer, const std::optional<relpos::Margin>& m,
                         const relpos::io::RenderOptions& options) {
-  if (m) relpos::io::detail::append_margin_member(*m, options.digits, answer);
+  if (m) relpos::detail::io::append_margin_member(*m, options.digits, answer);
   return answer;
 }
 
@@ -212,7 +212,7 @@ int run_classify_general(const ShapeOptions& shapes, const std::string& quadric,
       const relpos::QuadricVerdict v =
           relpos::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); });
       if (json)
-        std::cout << relpos::io::detail::answer_text(256, v) << '\n';
+        std::cout << relpos::detail::io::answer_text(256, v) << '\n';
       else
         std::cout << "contact: " << relpos::to_string(relpos::contact_of(v.position)) << " (position "
                   << relpos::to_string(v.position) << "; " << relpos::describe(v.rule) << "; decided by "
@@ -222,7 +222,7 @@ int run_classify_general(const ShapeOptions& shapes, const std::string& quadric,
     const relpos::QuadricClassification c =
         relpos::io::with_stack_for_general(bits, [&] { return relpos::classify(e, q); });
     if (json)
-      std::cout << relpos::io::detail::answer_text(2048, c, digits) << '\n';
+      std::cout << relpos::detail::io::answer_text(2048, c, digits) << '\n';
     else
       std::cout << relpos::io::general_answer_text(c, digits);
     return finish_cout();
@@ -306,7 +306,7 @@ namespace {
 constexpr std::size_t kAnswerReserve = 256;
 
 /// {"id":N,"error":"message"} and a newline, written in pieces (no allocation); message is plain ASCII.
-/// With `doubles` (--numbers double) the line says so, as every answer does (io::detail::append_trailer).
+/// With `doubles` (--numbers double) the line says so, as every answer does (detail::io::append_trailer).
 void write_error_line(Output& out, long number, std::string_view message, bool doubles) {
   char digits[24];
   const auto end = std::to_chars(digits, digits + sizeof digits, number).ptr;

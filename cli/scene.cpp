@@ -49,7 +49,7 @@
 namespace relpos_cli {
 namespace {
 
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 constexpr std::size_t kBlockLines = std::size_t(1) << 12;
 
@@ -174,7 +174,7 @@ void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, co
       throw relpos::InputError("field " + std::to_string(i + 1) + " of " + std::to_string(f.size()) + " is empty" +
                                (i + 1 == f.size() ? " (a trailing separator?)" : ""));
   if (f.size() == 5 || f.size() == 11) {
-    out.id = relpos::io::detail::dump_json(Json(f.front()));
+    out.id = relpos::detail::io::dump_json(Json(f.front()));
     f.erase(f.begin());
   }
   if (f.size() != 4 && f.size() != 10)
@@ -321,7 +321,7 @@ std::size_t count_lines(const std::string& path) {
 
 // ------------------------------------------------------------------------------------------------
 
-std::string dump(const Json& j) { return relpos::io::detail::dump_json(j); }
+std::string dump(const Json& j) { return relpos::detail::io::dump_json(j); }
 
 /// A measured time or rate to 3 significant digits (more would be noise).
 double significant(double x) {
@@ -543,7 +543,7 @@ int run_scene(Args& args) {
         } else {
           out += ",\"line\":" + std::to_string(x.line) + ",\"error\":" + dump(Json(x.error)) + "}";
         }
-        relpos::io::detail::append_trailer(x.meta, false, out);
+        relpos::detail::io::append_trailer(x.meta, false, out);
         out += '\n';
         output.write(out);
       }
@@ -565,7 +565,7 @@ int run_scene(Args& args) {
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Json positions, stages;
   if (fixed.quadric) {  // O, TO and EQ only when the quadric is an ellipsoid
-    for (const relpos::QuadricPosition pos : relpos::general::kAllQuadricPositions)
+    for (const relpos::QuadricPosition pos : relpos::detail::general::kAllQuadricPositions)
       if (static_cast<int>(pos) < static_cast<int>(relpos::QuadricPosition::O) ||
           fixed.quadric->type() == relpos::QuadricType::Ellipsoid)
         positions[relpos::to_string(pos)] = general_counts.count(pos);

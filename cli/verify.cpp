@@ -34,7 +34,7 @@
 
 namespace {
 
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 constexpr const char* kVerifyHelp =
     "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--numbers exact|double] [--quiet]\n"
@@ -106,7 +106,7 @@ InputPair read_input(const std::string& line, long number, bool doubles) {
 /// Why the answer's "margin" (when it has one) does not prove s* for the pair (relpos/margin.hpp).
 std::optional<std::string> margin_failure(const relpos::Ellipsoid& e, const relpos::Paraboloid& p, const Json& answer) {
   if (!answer.contains("margin")) return std::nullopt;
-  return relpos::verify_margin(e, p, relpos::io::detail::margin_from_tree(answer["margin"]));
+  return relpos::verify_margin(e, p, relpos::detail::io::margin_from_tree(answer["margin"]));
 }
 
 }  // namespace
@@ -166,7 +166,7 @@ int run_verify(Args& args) {
     }
     Json answer;
     try {
-      answer = relpos::io::detail::parse_json_exact(answer_line);
+      answer = relpos::detail::io::parse_json_exact(answer_line);
     } catch (const std::exception& err) {
       fail(number, std::string("the answer is not JSON: ") + clip(err.what()));
       continue;
@@ -246,7 +246,7 @@ int run_verify(Args& args) {
       continue;
     }
     try {
-      const relpos::Certificate c = relpos::io::detail::certificate_from_tree(answer["certificate"]);
+      const relpos::Certificate c = relpos::detail::io::certificate_from_tree(answer["certificate"]);
       if (auto reason = relpos::verify_certificate(*in.e, *in.p, *position, c))
         fail(number, position_text + ": " + clip(*reason));
       else if (auto margin_reason = margin_failure(*in.e, *in.p, answer))

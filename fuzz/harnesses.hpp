@@ -48,7 +48,7 @@ inline void expect(bool ok, const std::string& what) {
 }
 
 using relpos::Rational;
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 // ------------------------------------------------------------------------------------------------
 // Numbers
@@ -116,9 +116,9 @@ inline void check_numbers(const std::uint8_t* data, std::size_t size) {
   }
   // 2. The JSON route: a number or string gives the same exact value or InputError.
   try {
-    const Json doc = relpos::io::detail::parse_json_exact(text);
+    const Json doc = relpos::detail::io::parse_json_exact(text);
     try {
-      const Rational j = relpos::io::detail::rational_from_json(doc, "x");
+      const Rational j = relpos::detail::io::rational_from_json(doc, "x");
       // A bare JSON number (not a string literal) is the same text for parse_rational.
       if (parsed && text.find('"') == std::string::npos)
         expect(j == q, "JSON number and parse_rational disagree on " + text);
@@ -164,13 +164,13 @@ void check_fast_quadric(std::string_view text, bool doubles, Fast fast, FastAt f
            std::string("fast reader: another end or matrix inside a line for the ") + role);
   }
   if (!q) return;
-  relpos::io::detail::JsonReadOptions read;
+  relpos::detail::io::JsonReadOptions read;
   read.doubles = doubles;
   read.max_elements = 16;
   read.start_depth = 1;
   std::optional<Q> g;
   try {
-    g = general(relpos::io::detail::parse_json(text, read), role);
+    g = general(relpos::detail::io::parse_json(text, read), role);
   } catch (const relpos::InputError& e) {
     expect(false, std::string("fast reader took a ") + role + " the general reader refuses: " + e.what());
   }
@@ -184,12 +184,12 @@ void check_fast_quadric(std::string_view text, bool doubles, Fast fast, FastAt f
 
 inline void check_fast_reader(std::string_view text) {
   for (const bool doubles : {false, true}) {
-    check_fast_quadric<relpos::Ellipsoid>(text, doubles, relpos::io::detail::fast_ellipsoid,
-                                          relpos::io::detail::fast_ellipsoid_at,
-                                          relpos::io::detail::ellipsoid_from_tree, "ellipsoid");
-    check_fast_quadric<relpos::Paraboloid>(text, doubles, relpos::io::detail::fast_paraboloid,
-                                           relpos::io::detail::fast_paraboloid_at,
-                                           relpos::io::detail::paraboloid_from_tree, "paraboloid");
+    check_fast_quadric<relpos::Ellipsoid>(text, doubles, relpos::detail::io::fast_ellipsoid,
+                                          relpos::detail::io::fast_ellipsoid_at,
+                                          relpos::detail::io::ellipsoid_from_tree, "ellipsoid");
+    check_fast_quadric<relpos::Paraboloid>(text, doubles, relpos::detail::io::fast_paraboloid,
+                                           relpos::detail::io::fast_paraboloid_at,
+                                           relpos::detail::io::paraboloid_from_tree, "paraboloid");
   }
 }
 
@@ -218,7 +218,7 @@ inline void check_batch_line(const std::uint8_t* data, std::size_t size) {
     }
     Json answer;
     try {
-      answer = relpos::io::detail::parse_json_exact(text);  // ids are echoed as written: 1e400 too
+      answer = relpos::detail::io::parse_json_exact(text);  // ids are echoed as written: 1e400 too
     } catch (const relpos::InputError&) {
       expect(false, "answer is not JSON: " + text.substr(0, 200));
     }
@@ -479,7 +479,7 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
   if (c.verdict.small)
     for (const auto& r : c.roots)
       if (r.multiplicity_f >= 2 && r.exact)
-        expect(relpos::oracle::kernel_has_common_point(e, p, *r.exact) == r.tangency(),
+        expect(relpos::detail::oracle::kernel_has_common_point(e, p, *r.exact) == r.tangency(),
                what + ": kernel test disagrees at the root " + relpos::to_string(*r.exact));
 
   // Invariance: a signed permutation + translation, a random congruence, positive rescaling and sign

@@ -23,7 +23,7 @@
 #include "support/seed.hpp"
 
 using namespace relpos;
-using namespace relpos::oracle;
+using namespace relpos::detail::oracle;
 
 namespace {
 

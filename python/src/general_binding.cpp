@@ -27,9 +27,9 @@ std::string classify_quadric_json(const relpos::Ellipsoid& e, const relpos::Quad
   py::gil_scoped_release release;
   const std::size_t bits = relpos::io::check_general_pair_size(e, q, relpos::SizeLimit{max_bits});
   if (full)
-    return relpos::io::detail::answer_text(
+    return relpos::detail::io::answer_text(
         2048, relpos::io::with_stack_for_general(bits, [&] { return relpos::classify(e, q); }), digits);
-  return relpos::io::detail::answer_text(
+  return relpos::detail::io::answer_text(
       256, relpos::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); }));
 }
 
@@ -39,7 +39,7 @@ std::optional<std::string> verify_quadric(const relpos::Ellipsoid& e, const relp
   const std::optional<relpos::QuadricPosition> p = relpos::io::quadric_position_from_text(position);
   if (!p) throw relpos::InputError("position \"" + position + "\" is not one of I, TI, C, TE, E, O, TO, EQ");
   const relpos::QuadricCertificate c =
-      relpos::io::quadric_certificate_from_json(relpos::io::detail::parse_json_exact(certificate));
+      relpos::io::quadric_certificate_from_json(relpos::detail::io::parse_json_exact(certificate));
   py::gil_scoped_release release;
   return relpos::verify_certificate(e, q, *p, c);
 }

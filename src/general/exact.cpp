@@ -12,7 +12,7 @@
 
 #include "algebra/between.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 namespace {
 
 using AK = CGAL::Algebraic_kernel_d_1<Integer>;
@@ -289,4 +289,4 @@ ExactEvidence exact_evidence(const IntegerPencil& p, bool ellipsoid) {
   return ev;
 }
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

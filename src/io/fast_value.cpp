@@ -8,7 +8,7 @@
 
 #include "io/json_lexer.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 namespace {
 
 using relpos::detail::Decimal;
@@ -212,4 +212,4 @@ void FastValue::enclose_decimals() {
   }
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io
