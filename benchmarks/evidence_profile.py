@@ -34,7 +34,7 @@ from batch_bench import write_regime  # noqa: E402
 # Component -> the functions (demangled names, up to the argument list) whose samples it counts;
 # "minus" components are a parent's share less its children's.
 COMPONENTS = [
-    ("read", "reading the line (scan, numbers, quadrics)", ["relpos::io::read_batch_line"]),
+    ("read", "reading the line (scan, numbers, quadrics)", ["relpos::detail::io::read_batch_line"]),
     ("decide", "deciding (the ladder's stages)", ["relpos::(anonymous namespace)::classify_impl"]),
     ("evidence", "evidence (all of fill_full_evidence)", ["relpos::detail::fill_full_evidence"]),
     ("pencil", "  f, s, λ_s in lowest terms (EvidencePencil)", ["relpos::detail::EvidencePencil::EvidencePencil"]),

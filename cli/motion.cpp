@@ -206,11 +206,11 @@ std::string first_contact_text(const relpos::FirstContact& fc, int digits) {
   switch (fc.kind) {
     case relpos::FirstContact::Kind::NotExteriorAtStart:
       os << "first contact: not exterior at t0 = " << time_text(*fc.time, digits) << ": position "
-         << relpos::to_string(fc.position) << " - " << relpos::io::position_meaning(fc.position) << "\n";
+         << relpos::to_string(fc.position) << " - " << relpos::detail::io::position_meaning(fc.position) << "\n";
       break;
     case relpos::FirstContact::Kind::Contact:
       os << "first contact: t* = " << time_text(*fc.time, digits) << "  (" << time_exact_text(*fc.time) << ")\n"
-         << "  position at t*: " << relpos::to_string(fc.position) << " - " << relpos::io::position_meaning(fc.position)
+         << "  position at t*: " << relpos::to_string(fc.position) << " - " << relpos::detail::io::position_meaning(fc.position)
          << "\n"
          << "  decided: " << fc.how << "\n";
       break;

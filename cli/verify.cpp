@@ -80,15 +80,15 @@ struct InputPair {
   std::string error;  // why the line is not a valid pair (empty if it is)
 };
 
-/// The input line as `relpos batch` reads it (relpos::io::read_batch_line), its numbers exact or
+/// The input line as `relpos batch` reads it (relpos::detail::io::read_batch_line), its numbers exact or
 /// the doubles nearest their text.
 InputPair read_input(const std::string& line, long number, bool doubles) {
   InputPair in;
-  relpos::io::BatchLine read;
-  relpos::io::BatchOptions options;
+  relpos::detail::io::BatchLine read;
+  relpos::detail::io::BatchOptions options;
   options.numbers_as_doubles = doubles;
   try {
-    relpos::io::read_batch_line(line, number, options, nullptr, read);
+    relpos::detail::io::read_batch_line(line, number, options, nullptr, read);
     in.e = std::move(read.ellipsoid);
     in.p = std::move(read.paraboloid);
     in.q = std::move(read.quadric);
@@ -218,14 +218,14 @@ int run_verify(Args& args) {
     }
     const std::string position_text = answer["position"].get<std::string>();
     if (in.q) {  // a general pair: its positions and certificates (src/io/general_io.hpp)
-      const std::optional<relpos::QuadricPosition> qp = relpos::io::quadric_position_from_text(position_text);
+      const std::optional<relpos::QuadricPosition> qp = relpos::detail::io::quadric_position_from_text(position_text);
       if (!qp) {
         fail(number, "position \"" + clip(position_text) + "\" is not one of I, TI, C, TE, E, O, TO, EQ");
       } else if (!answer.contains("certificate")) {
         fail(number, "the answer has no \"certificate\"");
       } else {
         try {
-          const relpos::QuadricCertificate c = relpos::io::quadric_certificate_from_json(answer["certificate"]);
+          const relpos::QuadricCertificate c = relpos::detail::io::quadric_certificate_from_json(answer["certificate"]);
           if (auto reason = relpos::verify_certificate(*in.e, *in.q, *qp, c))
             fail(number, position_text + ": " + clip(*reason));
           else

@@ -195,15 +195,15 @@ inline void check_fast_reader(std::string_view text) {
 
 inline void check_batch_line(const std::uint8_t* data, std::size_t size) {
   // The bytes may hold several lines, split at '\n' as the CLI splits its input; each goes through
-  // the library's relpos::io::answer_batch_line, the one function `relpos batch` calls.
+  // the library's relpos::detail::io::answer_batch_line, the one function `relpos batch` calls.
   const std::string all(reinterpret_cast<const char*>(data), size);
   std::size_t start = 0;
   long number = 0;
   while (start < all.size()) {
     std::size_t end = all.find('\n', start);
     if (end == std::string::npos) end = all.size();
-    const std::string text = relpos::io::answer_batch_line(std::string_view(all).substr(start, end - start), ++number,
-                                                           relpos::io::BatchOptions{});
+    const std::string text = relpos::detail::io::answer_batch_line(std::string_view(all).substr(start, end - start), ++number,
+                                                           relpos::detail::io::BatchOptions{});
     expect(text.find('\n') == std::string::npos, "answer spans several lines");
     // The fast reader on the raw line and on the quadric values of a line that is a JSON object
     // (their bytes as written: the members' spans are located in the raw text).

@@ -524,11 +524,11 @@ TEST_CASE("fast reader: a decimal written as a string is the same number, the sa
     INFO(strings);
     REQUIRE(std::count(strings.begin(), strings.end(), '"') >= std::count(line.begin(), line.end(), '"') + 16);
     for (const relpos::Evidence evidence : {relpos::Evidence::Minimal, relpos::Evidence::Full}) {
-      relpos::io::BatchOptions options;
+      relpos::detail::io::BatchOptions options;
       options.evidence = evidence;
-      const std::string a = relpos::io::answer_batch_line(line, 1, options);
+      const std::string a = relpos::detail::io::answer_batch_line(line, 1, options);
       CHECK(a.find("\"error\"") == std::string::npos);
-      CHECK(a == relpos::io::answer_batch_line(strings, 1, options));
+      CHECK(a == relpos::detail::io::answer_batch_line(strings, 1, options));
     }
     // And the quadrics themselves: the fast reader takes the strings.
     const std::size_t e = strings.find("\"ellipsoid\":") + 12, p = strings.find(",\"paraboloid\":");
@@ -645,7 +645,7 @@ TEST_CASE("fast reader: a general quadric that is an ellipsoid's or an elliptic 
       }
       REQUIRE(relpos::detail::io::fast_quadric_at(text, doubles, end, q));
       REQUIRE(end == texts[k].size());
-      const Quadric g = relpos::io::quadric_from_json(general_json(texts[k], doubles));
+      const Quadric g = relpos::detail::io::quadric_from_json(general_json(texts[k], doubles));
       REQUIRE(q->type() == types[k]);
       REQUIRE(g.type() == types[k]);
       REQUIRE(q->matrix() == g.matrix());

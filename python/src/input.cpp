@@ -200,7 +200,7 @@ relpos::Paraboloid paraboloid_from_python(py::handle description) {
 }
 
 relpos::Quadric quadric_from_python(py::handle description) {
-  return described_quadric<relpos::Quadric>(description, "quadric", relpos::io::quadric_from_json);
+  return described_quadric<relpos::Quadric>(description, "quadric", relpos::detail::io::quadric_from_json);
 }
 
 void throw_unbuilt(py::handle x) {

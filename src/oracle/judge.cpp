@@ -134,10 +134,10 @@ TruthPair pair_of(const CaseLine& c, Truth truth) {
     out.p = detail::io::paraboloid_from_tree(out.paraboloid);
     return out;
   }
-  io::BatchOptions options;
+  detail::io::BatchOptions options;
   options.numbers_as_doubles = truth == Truth::Double;
-  io::BatchLine line;
-  io::read_batch_line(c.text, c.number, options, nullptr, line);
+  detail::io::BatchLine line;
+  detail::io::read_batch_line(c.text, c.number, options, nullptr, line);
   out.e = std::move(line.ellipsoid);
   out.p = std::move(line.paraboloid);
   const Json* e = member(c.json, "ellipsoid");
