@@ -79,8 +79,9 @@ int run_cases(Args& args) {
     } else if (args.value("--form", v)) {
       if (v != "exact" && v != "double" && v != "matrix")
         throw UsageError{"--form must be exact, double or matrix, got '" + v + "'"};
-      form = v == "exact" ? relpos::detail::oracle::Form::Exact
-                          : (v == "double" ? relpos::detail::oracle::Form::Double : relpos::detail::oracle::Form::Matrix);
+      form = v == "exact"
+                 ? relpos::detail::oracle::Form::Exact
+                 : (v == "double" ? relpos::detail::oracle::Form::Double : relpos::detail::oracle::Form::Matrix);
     } else if (args.value("--threads", v)) {
       options.threads = static_cast<unsigned>(parse_count(v, "--threads", 1, 1024));
     } else if (args.peek().rfind("-", 0) == 0) {

@@ -92,7 +92,8 @@ int run_judge(Args& args) {
       if (v != "exact" && v != "double" && v != "matrix")
         throw UsageError{"--truth must be exact, double or matrix, got '" + v + "'"};
       options.truth = v == "exact" ? relpos::detail::oracle::Truth::Exact
-                                   : (v == "double" ? relpos::detail::oracle::Truth::Double : relpos::detail::oracle::Truth::Matrix);
+                                   : (v == "double" ? relpos::detail::oracle::Truth::Double
+                                                    : relpos::detail::oracle::Truth::Matrix);
     } else if (args.value("--tolerance", v)) {
       const relpos::Rational tau = exact_option(v, "--tolerance");
       if (tau < 0) throw UsageError{"--tolerance must be at least 0, got '" + v + "'"};

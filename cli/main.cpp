@@ -207,7 +207,8 @@ int run_classify_general(const ShapeOptions& shapes, const std::string& quadric,
   try {
     const relpos::Ellipsoid e = shapes.make_ellipsoid();
     const relpos::Quadric q = relpos::detail::io::quadric_from_json(parse_inline(quadric, "quadric"), "quadric");
-    const std::size_t bits = relpos::detail::io::check_general_pair_size(e, q, limit);  // as a batch line with "quadric"
+    const std::size_t bits =
+        relpos::detail::io::check_general_pair_size(e, q, limit);  // as a batch line with "quadric"
     if (contact_only) {
       const relpos::QuadricVerdict v =
           relpos::detail::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); });
@@ -289,7 +290,8 @@ int run_classify(Args& args) {
     if (json)
       std::cout << with_margin(relpos::io::classification_json_text(c, options), m, options) << '\n';
     else
-      std::cout << relpos::io::classification_to_text(c, options) << (m ? relpos::detail::io::margin_to_text(*m, options) : "");
+      std::cout << relpos::io::classification_to_text(c, options)
+                << (m ? relpos::detail::io::margin_to_text(*m, options) : "");
     return finish_cout();
   } catch (const relpos::InputError& err) {
     if (json) write_json_line(Json{{"error", err.what()}});
@@ -349,7 +351,8 @@ class BatchPipeline {
       if (!slot) return;
       for (std::size_t i = 0; i < slot->n; ++i)
         if (slot->status[i] == LineReader::Status::Line)
-          relpos::detail::io::answer_batch_line(slot->lines[i], slot->first + static_cast<long>(i), options_, slot->answers[i]);
+          relpos::detail::io::answer_batch_line(slot->lines[i], slot->first + static_cast<long>(i), options_,
+                                                slot->answers[i]);
       finish(*slot);
     }
   }
@@ -514,7 +517,8 @@ int run_batch(Args& args) {
   LineReader reader(fd, options.max_line_bytes);
   Output out;
   WorkerPool pool(threads);
-  BatchPipeline pipeline(reader, out, options, pool.threads(), relpos::detail::io::too_long_message(options.max_line_bytes));
+  BatchPipeline pipeline(reader, out, options, pool.threads(),
+                         relpos::detail::io::too_long_message(options.max_line_bytes));
   pool.run_on_each([&](unsigned) { pipeline.work(); });
   if (out.failed()) return out.report_failure();
   if (pipeline.read_error() != 0) {

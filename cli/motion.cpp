@@ -210,8 +210,8 @@ std::string first_contact_text(const relpos::FirstContact& fc, int digits) {
       break;
     case relpos::FirstContact::Kind::Contact:
       os << "first contact: t* = " << time_text(*fc.time, digits) << "  (" << time_exact_text(*fc.time) << ")\n"
-         << "  position at t*: " << relpos::to_string(fc.position) << " - " << relpos::detail::io::position_meaning(fc.position)
-         << "\n"
+         << "  position at t*: " << relpos::to_string(fc.position) << " - "
+         << relpos::detail::io::position_meaning(fc.position) << "\n"
          << "  decided: " << fc.how << "\n";
       break;
     case relpos::FirstContact::Kind::None:

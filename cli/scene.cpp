@@ -162,7 +162,8 @@ struct Parsed {
   std::string error;
 };
 
-void parse_csv(std::string_view raw, const relpos::detail::io::BatchOptions& options, const FixedBody& fixed, Parsed& out) {
+void parse_csv(std::string_view raw, const relpos::detail::io::BatchOptions& options, const FixedBody& fixed,
+               Parsed& out) {
   const std::string line = trim(std::string(relpos::detail::io::normalize_line(raw, out.line, options.max_line_bytes)));
   if (line.empty() || line[0] == '#') {
     out.skip = true;
@@ -206,8 +207,8 @@ void parse_csv(std::string_view raw, const relpos::detail::io::BatchOptions& opt
 
 /// Parse a line; never throws (errors land in out.error). JSON Lines go through the reader of
 /// `relpos batch` (relpos::detail::io::read_batch_line), so both commands answer a line alike.
-void parse_line(const std::string& line, Format format, const relpos::detail::io::BatchOptions& options, const FixedBody& fixed,
-                Parsed& out) {
+void parse_line(const std::string& line, Format format, const relpos::detail::io::BatchOptions& options,
+                const FixedBody& fixed, Parsed& out) {
   out.id = std::to_string(out.line);
   try {
     if (format == Format::Jsonl) {

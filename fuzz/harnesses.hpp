@@ -202,8 +202,8 @@ inline void check_batch_line(const std::uint8_t* data, std::size_t size) {
   while (start < all.size()) {
     std::size_t end = all.find('\n', start);
     if (end == std::string::npos) end = all.size();
-    const std::string text = relpos::detail::io::answer_batch_line(std::string_view(all).substr(start, end - start), ++number,
-                                                           relpos::detail::io::BatchOptions{});
+    const std::string text = relpos::detail::io::answer_batch_line(std::string_view(all).substr(start, end - start),
+                                                                   ++number, relpos::detail::io::BatchOptions{});
     expect(text.find('\n') == std::string::npos, "answer spans several lines");
     // The fast reader on the raw line and on the quadric values of a line that is a JSON object
     // (their bytes as written: the members' spans are located in the raw text).

@@ -66,7 +66,8 @@ TEST_CASE("to_compact_integers: positive multiples of D M D, primitive, with f's
   for (int trial = 0; trial < 500; ++trial) {
     const relpos::Matrix4 p = random_symmetric(g), e = random_symmetric(g);
     relpos::detail::forms::MatrixOf<Integer> pz, ez;  // fresh entries: written through mpz()
-    relpos::detail::forms::to_compact_integers(p, e, relpos::detail::forms::entries(pz), relpos::detail::forms::entries(ez));
+    relpos::detail::forms::to_compact_integers(p, e, relpos::detail::forms::entries(pz),
+                                               relpos::detail::forms::entries(ez));
     Integer t(1);
     for (const relpos::Matrix4* m : {&p, &e})
       for (int i = 0; i < 3; ++i) mpz_lcm(t.mpz(), t.mpz(), (*m)(i, 3).denominator().mpz());

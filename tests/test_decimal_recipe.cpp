@@ -128,7 +128,8 @@ void check_integer_form(const DecimalRecipe& r) {
   // Off the axis the factors may be coarser than split_scale's (recipe_integer_form.cpp).
   const bool on_axis = r.form != DecimalRecipe::Form::Standard || (r.n[0].m == 0 && r.n[1].m == 0);
   require_same_split(s, relpos::detail::forms::split_scale(l2, m), on_axis);
-  REQUIRE(relpos::detail::write_integer_form(r, {relpos::detail::forms::entries(untouched), l_only, split_only, false, false}));
+  REQUIRE(relpos::detail::write_integer_form(
+      r, {relpos::detail::forms::entries(untouched), l_only, split_only, false, false}));
   CHECK(l_only == l);
   CHECK(split_only.rest == s.rest);
   CHECK(split_only.twos == s.twos);
@@ -254,8 +255,8 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
     relpos::Quartic<Integer> f_multiple;
     relpos::Quadratic<Integer> s_multiple;
     relpos::detail::forms::sphere_standard_evidence(e, p,
-                                            {f, s, lambda_s, rho, std::max(p_split.twos, e_split.twos),
-                                             std::max(p_split.fives, e_split.fives), f_multiple, s_multiple});
+                                                    {f, s, lambda_s, rho, std::max(p_split.twos, e_split.twos),
+                                                     std::max(p_split.fives, e_split.fives), f_multiple, s_multiple});
     const auto want_f = relpos::characteristic_polynomial<Rational>(constructed(p), constructed(e));
     const auto want_s = relpos::special_polynomial<Rational>(constructed(p), constructed(e));
     for (std::size_t k = 0; k < 5; ++k) same(f[k], want_f[k]);

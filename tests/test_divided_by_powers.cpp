@@ -60,7 +60,8 @@ TEST_CASE("divided_by_powers: two scales with shared prime factors, as rational 
     Integer z(static_cast<long>(g.uniform(-100000, 100000)));
     for (long i = g.uniform(0, 4); i > 0; --i) z *= Integer(parts[g.uniform(0, 9)]);
     if (trial % 4 == 0) z *= a * a * b;
-    const relpos::detail::forms::SplitScale sa = relpos::detail::forms::split_scale(a), sb = relpos::detail::forms::split_scale(b);
+    const relpos::detail::forms::SplitScale sa = relpos::detail::forms::split_scale(a),
+                                            sb = relpos::detail::forms::split_scale(b);
     for (unsigned long i = 0; i <= 4; ++i) {
       Rational expected(z);
       for (unsigned long k = 0; k < i; ++k) expected /= Rational(a);

@@ -172,7 +172,8 @@ TEST_CASE("tolerance: sphere margins with s* in closed form", "[oracle]") {
   // A sphere of radius r centred (0, 0, c) in the cup z = x^2 + y^2 (a = b = 1): with c <= 1/2 the
   // vertex is the nearest point, s* = c / r (rational); above, the nearest points form a circle at
   // distance sqrt(c - 1/4), s*^2 = (c - 1/4) / r^2 (math of doc/oracle.md, "Families").
-  const detail::oracle::MarginValue rational = margin_from_json(margin_json(q(2, 5), q(2, 5), {-2, 5}));  // c = 1/5, r = 1/2
+  const detail::oracle::MarginValue rational =
+      margin_from_json(margin_json(q(2, 5), q(2, 5), {-2, 5}));  // c = 1/5, r = 1/2
   CHECK(compare_with(q(2, 5), rational) == 0);
   CHECK(compare_with(q(1, 2), rational) == 1);
   // c = 3/4, r = 1: s*^2 = 1/2, s* = 1/sqrt(2) ~ 0.7071 in [7/10, 71/100], root of 2 x^2 - 1.

@@ -171,8 +171,8 @@ TEST_CASE("the fixed-size pencil equals the GMP one on entries below 2^62 and de
     relpos::Quartic<PooledInteger> f;
     relpos::Quadratic<PooledInteger> s;
     REQUIRE(relpos::small_pencil_polynomials(pp, ep, f, s));
-    const auto fz =
-        characteristic_polynomial<Integer>(relpos::detail::forms::MatrixOf<Integer>{pi}, relpos::detail::forms::MatrixOf<Integer>{ei});
+    const auto fz = characteristic_polynomial<Integer>(relpos::detail::forms::MatrixOf<Integer>{pi},
+                                                       relpos::detail::forms::MatrixOf<Integer>{ei});
     const auto sz = exact_special_polynomial<PooledInteger>(pp, ep);
     for (std::size_t k = 0; k < 5; ++k) CHECK(f[k].to_integer() == fz[k]);
     for (std::size_t k = 0; k < 3; ++k) CHECK(s[k].to_integer() == sz[k].to_integer());

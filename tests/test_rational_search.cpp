@@ -13,6 +13,7 @@
 #include "support/seed.hpp"
 
 using relpos::Rational;
+using relpos::detail::IntegerPoly;
 using relpos::detail::anysize::Poly;
 using relpos::detail::certificate::floor_to;
 using relpos::detail::certificate::log2_of;
@@ -20,7 +21,6 @@ using relpos::detail::certificate::power_of_two;
 using relpos::detail::certificate::refine_root;
 using relpos::detail::certificate::search_near_roots;
 using relpos::detail::certificate::sqrt_below;
-using relpos::detail::IntegerPoly;
 using rt::Q;
 using rt::sgn;
 

@@ -145,7 +145,8 @@ TEST_CASE("split_scale from the decimal reader's parts equals the split along th
       for (const auto& f : rests) seen = seen || f.base == r;
       if (!seen) rests.push_back({r, 2});
     }
-    const relpos::detail::forms::SplitScale parts = relpos::detail::forms::split_scale(along.twos, along.fives, along.rest, rests);
+    const relpos::detail::forms::SplitScale parts =
+        relpos::detail::forms::split_scale(along.twos, along.fives, along.rest, rests);
     CAPTURE(relpos::to_string(a), relpos::to_string(b), relpos::to_string(scale));
     check_split(parts, scale);
     CHECK(parts.rest == along.rest);

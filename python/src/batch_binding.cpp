@@ -26,8 +26,9 @@ using namespace pybind11::literals;
 namespace {
 
 /// The options of `relpos batch`, spelled as its command-line values; the CLI's ranges.
-relpos::detail::io::BatchOptions batch_options(const std::string& evidence, const std::string& numbers, bool contact_only,
-                                       int digits, long long max_line_bytes, long long max_bits) {
+relpos::detail::io::BatchOptions batch_options(const std::string& evidence, const std::string& numbers,
+                                               bool contact_only, int digits, long long max_line_bytes,
+                                               long long max_bits) {
   relpos::detail::io::BatchOptions options;
   if (evidence != "full" && evidence != "minimal")
     throw relpos::InputError("evidence: expected 'full' or 'minimal', got '" + evidence + "'");
@@ -101,8 +102,8 @@ void bind_batch(py::module_& m) {
         return py::bytes(out);
       },
       "data"_a, "first_line"_a = 1, "evidence"_a = "full", "numbers"_a = "exact", "contact_only"_a = false,
-      "digits"_a = 12, "max_line_bytes"_a = static_cast<long long>(relpos::detail::io::kDefaultMaxLineBytes), "threads"_a = 1,
-      "max_bits"_a = static_cast<long long>(relpos::kMaxNormalizedBits),
+      "digits"_a = 12, "max_line_bytes"_a = static_cast<long long>(relpos::detail::io::kDefaultMaxLineBytes),
+      "threads"_a = 1, "max_bits"_a = static_cast<long long>(relpos::kMaxNormalizedBits),
       "The output of `relpos batch` for the lines of `data` (whole lines of a JSON Lines file, the first of them "
       "line number `first_line`), as bytes: one answer and '\\n' per line. The options are those of `relpos batch` "
       "(--evidence, --numbers, --contact-only, --digits, --max-line-bytes, --max-bits); `threads` threads of one "

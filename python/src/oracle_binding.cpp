@@ -52,7 +52,8 @@ void bind_oracle(py::module_& m) {
         std::string out;
         {
           py::gil_scoped_release release;
-          for (const auto& c : relpos::detail::oracle::make_cases(options)) out.append(relpos::detail::oracle::case_line(c, f)) += '\n';
+          for (const auto& c : relpos::detail::oracle::make_cases(options))
+            out.append(relpos::detail::oracle::case_line(c, f)) += '\n';
         }
         return out;
       },

@@ -165,7 +165,8 @@ int filtered_ellipsoid(const Matrix4& e) {
 int filtered_paraboloid(const Matrix4& p) {
   if (!exactly_symmetric(p)) return 0;
   if (!detail::shape_filter::impl::zero_by_pattern(CGAL::is_zero(p.a[0]), CGAL::is_zero(p.a[1]), CGAL::is_zero(p.a[2]),
-                                           CGAL::is_zero(p.a[5]), CGAL::is_zero(p.a[6]), CGAL::is_zero(p.a[10]))) {
+                                                   CGAL::is_zero(p.a[5]), CGAL::is_zero(p.a[6]),
+                                                   CGAL::is_zero(p.a[10]))) {
     if (!CGAL::is_zero(detail::shape_filter::impl::det3<Rational>(p.a))) return 0;
   }
   CGAL::Protect_FPU_rounding<true> guard;

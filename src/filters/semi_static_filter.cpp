@@ -309,7 +309,8 @@ DecisionSigns semi_static_filter_signs_translated(const DoubleMatrix4& pn, const
     if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return DecisionSigns{};
   View<Lanes> moved;
   Lanes q[kQuantities];
-  if (!translate(detail::forms::converted<Lanes>(en), d, moved) || !evaluate(detail::forms::converted<Lanes>(pn), moved, q))
+  if (!translate(detail::forms::converted<Lanes>(en), d, moved) ||
+      !evaluate(detail::forms::converted<Lanes>(pn), moved, q))
     return DecisionSigns{};
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], counts[static_cast<std::size_t>(i)]);

@@ -76,7 +76,8 @@ QuadricClassification classify(const Ellipsoid& e, const Quadric& q) {
     const Rational& operator()(int i, int j) const { return m(i, j); }
   };
   const Quartic<Rational> f = detail::general::pencil_quartic<Rational>(View{e.matrix()}, View{q.matrix()});
-  const detail::general::Cubic<Rational> d = detail::general::pencil_cubic<Rational>(View{e.matrix()}, View{q.matrix()});
+  const detail::general::Cubic<Rational> d =
+      detail::general::pencil_cubic<Rational>(View{e.matrix()}, View{q.matrix()});
   for (std::size_t i = 0; i < 5; ++i) c.f[i] = f[i];
   for (std::size_t i = 0; i < 4; ++i) c.d[i] = d[i];
   for (PencilRoot r : ev.roots) {

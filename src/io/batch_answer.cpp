@@ -33,10 +33,9 @@ void answer(const BatchLine& in, std::string_view id, const BatchOptions& option
                                  : 0;
     if (options.evidence == Evidence::Full && !options.contact_only)
       write_answer(id, out, with_stack_for_general(bits, [&] { return classify(*in.ellipsoid, *in.quadric); }),
-                           options.render.digits);
+                   options.render.digits);
     else
-      write_answer(id, out,
-                           with_stack_for_general(bits, [&] { return decide_position(*in.ellipsoid, *in.quadric); }));
+      write_answer(id, out, with_stack_for_general(bits, [&] { return decide_position(*in.ellipsoid, *in.quadric); }));
     return;
   }
   const std::optional<Margin> m =
@@ -74,8 +73,7 @@ void out_of_memory(std::string_view id, std::string_view meta, long line_number,
   }
   char number[24];
   const auto end = std::to_chars(number, number + sizeof number, line_number).ptr;
-  if (write_error(std::string_view(number, static_cast<std::size_t>(end - number)), kOutOfMemoryNoIdMessage,
-                          out)) {
+  if (write_error(std::string_view(number, static_cast<std::size_t>(end - number)), kOutOfMemoryNoIdMessage, out)) {
     finish(std::string_view(), options, out);
     return;
   }

@@ -17,7 +17,9 @@
 namespace relpos::detail::io {
 namespace {
 
-[[noreturn]] void general_fail(const std::string& path, const std::string& message) { throw InputError(path + ": " + message); }
+[[noreturn]] void general_fail(const std::string& path, const std::string& message) {
+  throw InputError(path + ": " + message);
+}
 
 std::string member(const std::string& path, const std::string& key) { return path + "." + key; }
 
@@ -127,10 +129,10 @@ Quadric geometric_form(const Json& v, const std::string& role) {
     return with_role(role, [&] { return Quadric::slab(vec("normal"), num("low"), num("high")); });
   }
   general_fail(member(role, "type"),
-       "unknown type \"" + type.substr(0, 40) +
-           "\" (expected sphere, ellipsoid, hyperboloid of one sheet, hyperboloid of two sheets, "
-           "elliptic cone (or cone), elliptic paraboloid, hyperbolic paraboloid, elliptic cylinder, "
-           "hyperbolic cylinder, parabolic cylinder, slab or half-space)");
+               "unknown type \"" + type.substr(0, 40) +
+                   "\" (expected sphere, ellipsoid, hyperboloid of one sheet, hyperboloid of two sheets, "
+                   "elliptic cone (or cone), elliptic paraboloid, hyperbolic paraboloid, elliptic cylinder, "
+                   "hyperbolic cylinder, parabolic cylinder, slab or half-space)");
 }
 
 std::string meaning(QuadricPosition p) {
@@ -162,7 +164,8 @@ Json quad_json(const QuadraticNumber& x) { return Json{{"a", to_string(x.a)}, {"
 QuadraticNumber quad(const Json& j, const std::string& path) {
   if (!j.is_object()) general_fail(path, "expected {\"a\": ..., \"b\": ...}");
   general_check_keys(j, {"a", "b"}, path);
-  return {number(general_required(j, "a", path), member(path, "a")), number(general_required(j, "b", path), member(path, "b"))};
+  return {number(general_required(j, "a", path), member(path, "a")),
+          number(general_required(j, "b", path), member(path, "b"))};
 }
 
 QuadraticVector3 quad_vector(const Json& j, const std::string& path) {
@@ -202,8 +205,8 @@ Quadric quadric_from_json(const Json& v, const std::string& role) {
   }
   if (v.contains("type")) return geometric_form(v, role);
   general_fail(role,
-       "no recognized quadric form (expected a 4x4 array or an object with \"matrix\", \"coefficients\" or "
-       "\"type\")");
+               "no recognized quadric form (expected a 4x4 array or an object with \"matrix\", \"coefficients\" or "
+               "\"type\")");
 }
 
 std::size_t check_general_pair_size(const Ellipsoid& e, const Quadric& q, const SizeLimit& limit) {
@@ -304,7 +307,8 @@ QuadricCertificate quadric_certificate_from_json(const Json& j) {
     general_check_keys(s, {"center", "directions", "radius2", "decimal"}, sp);
     c.centre = quad_vector(general_required(s, "center", sp), member(sp, "center"));
     const Json& dirs = general_required(s, "directions", sp);
-    if (!dirs.is_array() || dirs.size() > 3) general_fail(member(sp, "directions"), "expected an array of at most 3 vectors");
+    if (!dirs.is_array() || dirs.size() > 3)
+      general_fail(member(sp, "directions"), "expected an array of at most 3 vectors");
     for (std::size_t i = 0; i < dirs.size(); ++i)
       c.directions.push_back(quad_vector(dirs[i], member(sp, "directions") + "[" + std::to_string(i) + "]"));
     c.radius2 = quad(general_required(s, "radius2", sp), member(sp, "radius2"));

@@ -113,6 +113,8 @@ std::string margin_json_text(const Margin& m, int digits) {
   return text;
 }
 
-Margin margin_from_json_text(std::string_view text) { return detail::io::margin_from_tree(detail::io::parse_json_exact(text)); }
+Margin margin_from_json_text(std::string_view text) {
+  return detail::io::margin_from_tree(detail::io::parse_json_exact(text));
+}
 
 }  // namespace relpos::io
