@@ -14,6 +14,23 @@ namespace {
 
 using detail::kPairLanes;
 
+/// Blocks ahead whose pairs are requested while a block is decided: far enough for a line to arrive
+/// from memory during the blocks between (a block takes a few hundred ns in the lanes), near enough
+/// that the lines are still in L1 when their block comes (doc/performance.md, "Many pairs at once").
+constexpr std::size_t kPrefetchBlocks = 2;
+
+/// Every cache line of the `Bytes` bytes at `first` requested for reading, into all levels of the
+/// cache: one request a line length apart and one for the last byte (the line a range that does not
+/// start on a line's boundary ends in), unrolled. Inlined always: GCC takes a function that only
+/// prefetches for one without effects, and drops its calls.
+template <std::size_t Bytes>
+[[gnu::always_inline]] inline void prefetch_bytes(const double* first) {
+  constexpr std::size_t kLine = 64;
+  const char* bytes = reinterpret_cast<const char*>(first);
+  for (std::size_t k = 0; k < Bytes; k += kLine) __builtin_prefetch(bytes + k, 0, 3);
+  __builtin_prefetch(bytes + Bytes - 1, 0, 3);
+}
+
 /// Pairs as 32 raw doubles each.
 struct RawPairs {
   const double *e, *p;
@@ -21,6 +38,14 @@ struct RawPairs {
   void lane(std::size_t i, const double*& el, const double*& pl) const {
     el = e + 16 * i;
     pl = p + 16 * i;
+  }
+  /// The block of pairs from `first` requested from memory: arrays of pairs are read once, in order,
+  /// and the lanes' compute and the stream from memory overlap only if the next pairs are on their
+  /// way before the lanes need them.
+  [[gnu::always_inline]] void prefetch(std::size_t first) const {
+    constexpr std::size_t kBytes = 16 * sizeof(double) * kPairLanes;
+    prefetch_bytes<kBytes>(e + 16 * first);
+    prefetch_bytes<kBytes>(p + 16 * first);
   }
   /// decide_position on the doubles as its two steps (the same verdict, and the same InputError, the
   /// ellipsoid's first; classify.hpp): its one-call form would first repeat the static route, which
@@ -62,6 +87,8 @@ struct BuiltPairs {
     el = filter_doubles_of(e[i]);
     pl = filter_doubles_of(p[shared ? 0 : i]);
   }
+  /// Nothing requested: the quadrics' doubles are wherever their objects are.
+  void prefetch(std::size_t) const {}
   /// decide_position on the quadrics: InputError only for the size limit.
   PairStatus scalar(std::size_t i, Verdict& v) const {
     try {
@@ -83,6 +110,8 @@ struct IndexedPairs {
     el = filter_doubles_of(bodies[index[k]]);
     pl = filter_doubles_of(*p);
   }
+  /// Nothing requested, as for BuiltPairs.
+  void prefetch(std::size_t) const {}
   PairStatus scalar(std::size_t k, Verdict& v) const {
     v = decide_position(bodies[index[k]], *p);
     return PairStatus::Decided;
@@ -146,14 +175,27 @@ struct VerdictsOut {
   void failed(std::size_t, PairStatus) const {}
 };
 
-/// The filter of the blocks: the copy chosen when the library was loaded, or a given one.
+/// Whether the pairs of the blocks ahead are requested from memory (RawPairs::prefetch) for `copy`
+/// of the lanes: for the AVX-512 copy only. It let that copy's compute overlap the stream from
+/// memory; the AVX2 copy (two passes of four lanes a block) ran slower with the same requests on the
+/// machine of doc/performance.md ("Many pairs at once"), and the baseline copy was not measured.
+bool prefetches(detail::FilterCopy copy) { return copy == detail::FilterCopy::avx512; }
+
+/// The filter of the blocks: the copy chosen when the library was loaded, or a given one; and
+/// whether that copy prefetches.
 struct LoadedCopy {
+  /// The loaded copy is the AVX-512 one wherever that one runs (static_filter_lanes' resolver).
+  bool prefetch() const {
+    static const bool avx512 = detail::static_filter_lanes_copy_runs(detail::FilterCopy::avx512);
+    return avx512 && prefetches(detail::FilterCopy::avx512);
+  }
   void operator()(const detail::PairBlock& block, detail::PairInput input, detail::PairBlockSigns& out) const {
     detail::static_filter_lanes(block, input, out);
   }
 };
 struct GivenCopy {
   detail::FilterCopy copy;
+  bool prefetch() const { return prefetches(copy); }
   void operator()(const detail::PairBlock& block, detail::PairInput input, detail::PairBlockSigns& out) const {
     detail::static_filter_lanes_copy(copy, block, input, out);
   }
@@ -185,7 +227,8 @@ template <class Out>
 /// decide_position runs its interval stage instead) in blocks of kPairLanes pairs; the pairs whose
 /// signs they do not settle through decide_position itself, after the blocks of their chunk (so that
 /// neither the lanes' code nor the ladder's evicts the other's from the instruction caches pair by
-/// pair).
+/// pair; the chunk's pairs are still in the L2 cache then). While a block is decided, the pairs
+/// kPrefetchBlocks blocks ahead are requested from memory, where the filter's copy prefetches.
 template <class Pairs, class Out, class Filter = LoadedCopy>
 std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Filter filter = {}) {
   static const RouteTable table;
@@ -206,6 +249,7 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Fil
   }
   constexpr std::size_t kChunk = 1024;
   std::size_t open[kChunk];
+  const bool prefetch = filter.prefetch();
   detail::PairBlock block;
   detail::PairBlockSigns signs;
   for (std::size_t chunk = 0; chunk < n; chunk += kChunk) {
@@ -213,6 +257,8 @@ std::size_t decide_blocks(const Pairs& pairs, std::size_t n, const Out& out, Fil
     std::size_t opened = 0;
     for (std::size_t start = chunk; start < end; start += kPairLanes) {
       const int count = static_cast<int>(std::min<std::size_t>(kPairLanes, end - start));
+      const std::size_t ahead = start + kPrefetchBlocks * kPairLanes;
+      if (prefetch && ahead + kPairLanes <= n) pairs.prefetch(ahead);  // whole blocks only
       for (int l = 0; l < kPairLanes; ++l) {
         if (l < count) {
           pairs.lane(start + static_cast<std::size_t>(l), block.e[l], block.p[l]);
