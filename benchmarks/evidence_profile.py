@@ -34,17 +34,17 @@ from batch_bench import write_regime  # noqa: E402
 # Component -> the functions (demangled names, up to the argument list) whose samples it counts;
 # "minus" components are a parent's share less its children's.
 COMPONENTS = [
-    ("read", "reading the line (scan, numbers, quadrics)", ["relpos::io::read_batch_line"]),
+    ("read", "reading the line (scan, numbers, quadrics)", ["relpos::detail::io::read_batch_line"]),
     ("decide", "deciding (the ladder's stages)", ["relpos::(anonymous namespace)::classify_impl"]),
     ("evidence", "evidence (all of fill_full_evidence)", ["relpos::detail::fill_full_evidence"]),
     ("pencil", "  f, s, λ_s in lowest terms (EvidencePencil)", ["relpos::detail::EvidencePencil::EvidencePencil"]),
     ("forms", "    the integer forms and their scales", ["relpos::detail::EvidencePencil::write_integer_forms"]),
-    ("lowest", "    lowest terms (divided_by_powers)", ["relpos::forms::divided_by_powers"]),
+    ("lowest", "    lowest terms (divided_by_powers)", ["relpos::detail::forms::divided_by_powers"]),
     ("roots", "  the roots isolated (exact_root_structure)", ["relpos::exact_root_structure"]),
-    ("certificate", "  the certificate", ["relpos::certificate::definite", "relpos::certificate::tangent",
-                                          "relpos::certificate::crossing_points"]),
-    ("write", "writing the answer (JSON)", ["relpos::io::detail::append_members"]),
-    ("digits", "  the rationals' decimal digits", ["relpos::io::detail::(anonymous namespace)::put_decimal"]),
+    ("certificate", "  the certificate", ["relpos::detail::certificate::definite", "relpos::detail::certificate::tangent",
+                                          "relpos::detail::certificate::crossing_points"]),
+    ("write", "writing the answer (JSON)", ["relpos::detail::io::append_members"]),
+    ("digits", "  the rationals' decimal digits", ["relpos::detail::io::(anonymous namespace)::put_decimal"]),
     ("startup", "process start-up (dynamic linking)", ["_dl_start"]),
 ]
 

@@ -11,11 +11,11 @@
 namespace bench {
 
 using namespace relpos;
-using relpos::oracle::float_classify;
-using relpos::oracle::Mat;
-using relpos::oracle::minimal_float;
-using relpos::oracle::naive_table;
-using relpos::oracle::usign;
+using relpos::detail::oracle::float_classify;
+using relpos::detail::oracle::Mat;
+using relpos::detail::oracle::minimal_float;
+using relpos::detail::oracle::naive_table;
+using relpos::detail::oracle::usign;
 
 /// The double and long double baselines, compiled in their own translation unit without
 /// -frounding-math (naive_double.cpp): what a user's float code would be.

@@ -128,7 +128,7 @@ bool min_end_positive(QuadricType t) {
 
 QuadricPosition pencil_float(const DoubleMatrix4& e, const DoubleMatrix4& q, QuadricType type) {
   const relpos::Quartic<double> f = relpos::characteristic_polynomial_lanes(e, q);
-  const relpos::general::Cubic<double> d = relpos::general::pencil_cubic<double>(View{e}, View{q});
+  const relpos::detail::general::Cubic<double> d = relpos::detail::general::pencil_cubic<double>(View{e}, View{q});
   const int k = zero_multiplicity(type);
   // Var(x) and Var(+-oo) of f / t^k: the Sturm–Habicht sequence for the quartic (the cheapest),
   // the remainder sequence for the cubic and the quadratic left by a type with k > 0.

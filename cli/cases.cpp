@@ -27,13 +27,13 @@ void print_cases_help(std::ostream& os) {
         "\n"
         "Families (`all` for every one; --list describes them):\n"
         "  ";
-  for (const auto& f : relpos::oracle::families()) os << f.name << ' ';
+  for (const auto& f : relpos::detail::oracle::families()) os << f.name << ' ';
   os << "\n\n"
         "Options:\n"
         "  --n N          cases per family and eps (default 100)\n"
         "  --eps LIST     relative distances, exact numbers in [0, 1), comma-separated (default\n"
         "                 "
-     << relpos::oracle::kDefaultEps
+     << relpos::detail::oracle::kDefaultEps
      << "): the ellipsoid scaled by 1 +- eps\n"
         "                 about its centre touches the paraboloid; 0 gives the exact tangencies\n"
         "  --seed S       the random seed (default 1)\n"
@@ -50,8 +50,8 @@ void print_cases_help(std::ostream& os) {
 }
 
 int run_cases(Args& args) {
-  relpos::oracle::CaseOptions options;
-  relpos::oracle::Form form = relpos::oracle::Form::Exact;
+  relpos::detail::oracle::CaseOptions options;
+  relpos::detail::oracle::Form form = relpos::detail::oracle::Form::Exact;
   bool list = false;
   while (!args.done()) {
     std::string v;
@@ -79,8 +79,9 @@ int run_cases(Args& args) {
     } else if (args.value("--form", v)) {
       if (v != "exact" && v != "double" && v != "matrix")
         throw UsageError{"--form must be exact, double or matrix, got '" + v + "'"};
-      form = v == "exact" ? relpos::oracle::Form::Exact
-                          : (v == "double" ? relpos::oracle::Form::Double : relpos::oracle::Form::Matrix);
+      form = v == "exact"
+                 ? relpos::detail::oracle::Form::Exact
+                 : (v == "double" ? relpos::detail::oracle::Form::Double : relpos::detail::oracle::Form::Matrix);
     } else if (args.value("--threads", v)) {
       options.threads = static_cast<unsigned>(parse_count(v, "--threads", 1, 1024));
     } else if (args.peek().rfind("-", 0) == 0) {
@@ -91,15 +92,15 @@ int run_cases(Args& args) {
   }
   if (list) {
     if (!options.families.empty()) throw UsageError{"--list takes no family"};
-    for (const auto& f : relpos::oracle::families())
+    for (const auto& f : relpos::detail::oracle::families())
       std::cout << f.name << std::string(11 - std::string(f.name).size(), ' ') << f.description << "\n";
     return finish_cout();
   }
   if (options.families.empty()) throw UsageError{"name at least one family (or all)"};
-  const std::vector<relpos::oracle::Case> cases = relpos::oracle::make_cases(options);
+  const std::vector<relpos::detail::oracle::Case> cases = relpos::detail::oracle::make_cases(options);
   Output out;
   for (const auto& c : cases) {
-    out.write(relpos::oracle::case_line(c, form));
+    out.write(relpos::detail::oracle::case_line(c, form));
     out.write("\n");
   }
   return out.flush() ? kExitOk : out.report_failure();

@@ -80,7 +80,7 @@ bool read_all(const std::string& file, std::string& out) {
 
 int run_judge(Args& args) {
   std::vector<std::string> files;
-  relpos::oracle::JudgeOptions options;
+  relpos::detail::oracle::JudgeOptions options;
   std::string format = "md", plot;
   std::size_t max_misses = 20;
   while (!args.done()) {
@@ -91,8 +91,9 @@ int run_judge(Args& args) {
     } else if (args.value("--truth", v)) {
       if (v != "exact" && v != "double" && v != "matrix")
         throw UsageError{"--truth must be exact, double or matrix, got '" + v + "'"};
-      options.truth = v == "exact" ? relpos::oracle::Truth::Exact
-                                   : (v == "double" ? relpos::oracle::Truth::Double : relpos::oracle::Truth::Matrix);
+      options.truth = v == "exact" ? relpos::detail::oracle::Truth::Exact
+                                   : (v == "double" ? relpos::detail::oracle::Truth::Double
+                                                    : relpos::detail::oracle::Truth::Matrix);
     } else if (args.value("--tolerance", v)) {
       const relpos::Rational tau = exact_option(v, "--tolerance");
       if (tau < 0) throw UsageError{"--tolerance must be at least 0, got '" + v + "'"};
@@ -124,9 +125,9 @@ int run_judge(Args& args) {
   if (files[0] == "-" && files[1] == "-") throw UsageError{"CASES and ANSWERS cannot both be standard input"};
   std::string cases, answers;
   if (!read_all(files[1], answers) || !read_all(files[0], cases)) return kExitIo;
-  const relpos::oracle::JudgeReport report = relpos::oracle::judge(cases, answers, options);
+  const relpos::detail::oracle::JudgeReport report = relpos::detail::oracle::judge(cases, answers, options);
   if (!plot.empty()) {
-    const std::string png = relpos::oracle::chart_png(report);
+    const std::string png = relpos::detail::oracle::chart_png(report);
     std::ofstream f(plot, std::ios::binary);
     f.write(png.data(), static_cast<std::streamsize>(png.size()));
     if (!f.flush()) {
@@ -135,11 +136,11 @@ int run_judge(Args& args) {
     }
   }
   if (format == "md")
-    std::cout << relpos::oracle::report_markdown(report, max_misses);
+    std::cout << relpos::detail::oracle::report_markdown(report, max_misses);
   else if (format == "csv")
-    std::cout << relpos::oracle::report_csv(report);
+    std::cout << relpos::detail::oracle::report_csv(report);
   else
-    std::cout << relpos::oracle::report_json(report);
+    std::cout << relpos::detail::oracle::report_json(report);
   return finish_cout();
 }
 

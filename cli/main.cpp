@@ -44,7 +44,7 @@
 
 namespace relpos_cli {
 
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 constexpr const char* kExitCodes =
     "Exit codes:\n"
@@ -175,7 +175,7 @@ namespace {
 /// --digits N of classify and batch.
 int parse_digits(const std::string& text) { return static_cast<int>(parse_count(text, "--digits", 1, 1000)); }
 
-void write_json_line(const Json& j) { std::cout << relpos::io::detail::dump_json(j) << '\n'; }
+void write_json_line(const Json& j) { std::cout << relpos::detail::io::dump_json(j) << '\n'; }
 
 /// --margin and --margin-bits B (classify and batch): bits > 0 asks for the margin.
 bool take_margin(Args& args, int& bits) {
@@ -192,7 +192,7 @@ bool take_margin(Args& args, int& bits) {
 /// An answer's JSON text with "margin" as its last member (when there is a margin), by the answer writer.
 std::string with_margin(std::string answer, const std::optional<relpos::Margin>& m,
                         const relpos::io::RenderOptions& options) {
-  if (m) relpos::io::detail::append_margin_member(*m, options.digits, answer);
+  if (m) relpos::detail::io::append_margin_member(*m, options.digits, answer);
   return answer;
 }
 
@@ -206,13 +206,14 @@ int run_classify_general(const ShapeOptions& shapes, const std::string& quadric,
   if (shapes.ellipsoid && shapes.sphere) throw UsageError{"give either --ellipsoid or --sphere, not both"};
   try {
     const relpos::Ellipsoid e = shapes.make_ellipsoid();
-    const relpos::Quadric q = relpos::io::quadric_from_json(parse_inline(quadric, "quadric"), "quadric");
-    const std::size_t bits = relpos::io::check_general_pair_size(e, q, limit);  // as a batch line with "quadric"
+    const relpos::Quadric q = relpos::detail::io::quadric_from_json(parse_inline(quadric, "quadric"), "quadric");
+    const std::size_t bits =
+        relpos::detail::io::check_general_pair_size(e, q, limit);  // as a batch line with "quadric"
     if (contact_only) {
       const relpos::QuadricVerdict v =
-          relpos::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); });
+          relpos::detail::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); });
       if (json)
-        std::cout << relpos::io::detail::answer_text(256, v) << '\n';
+        std::cout << relpos::detail::io::answer_text(256, v) << '\n';
       else
         std::cout << "contact: " << relpos::to_string(relpos::contact_of(v.position)) << " (position "
                   << relpos::to_string(v.position) << "; " << relpos::describe(v.rule) << "; decided by "
@@ -220,11 +221,11 @@ int run_classify_general(const ShapeOptions& shapes, const std::string& quadric,
       return finish_cout();
     }
     const relpos::QuadricClassification c =
-        relpos::io::with_stack_for_general(bits, [&] { return relpos::classify(e, q); });
+        relpos::detail::io::with_stack_for_general(bits, [&] { return relpos::classify(e, q); });
     if (json)
-      std::cout << relpos::io::detail::answer_text(2048, c, digits) << '\n';
+      std::cout << relpos::detail::io::answer_text(2048, c, digits) << '\n';
     else
-      std::cout << relpos::io::general_answer_text(c, digits);
+      std::cout << relpos::detail::io::general_answer_text(c, digits);
     return finish_cout();
   } catch (const relpos::InputError& err) {
     if (json) write_json_line(Json{{"error", err.what()}});
@@ -282,14 +283,15 @@ int run_classify(Args& args) {
       else
         std::cout << "contact: " << relpos::to_string(a.contact) << " (position " << relpos::to_string(a.position)
                   << "; " << relpos::describe(a.rule) << "; decided by " << relpos::decided_by(a.stage) << ")\n"
-                  << (m ? relpos::io::margin_to_text(*m, options) : "") << std::flush;
+                  << (m ? relpos::detail::io::margin_to_text(*m, options) : "") << std::flush;
       return std::cout ? kExitOk : kExitIo;
     }
     const relpos::Classification c = relpos::classify(*e, *p, relpos::Evidence::Full, limit);
     if (json)
       std::cout << with_margin(relpos::io::classification_json_text(c, options), m, options) << '\n';
     else
-      std::cout << relpos::io::classification_to_text(c, options) << (m ? relpos::io::margin_to_text(*m, options) : "");
+      std::cout << relpos::io::classification_to_text(c, options)
+                << (m ? relpos::detail::io::margin_to_text(*m, options) : "");
     return finish_cout();
   } catch (const relpos::InputError& err) {
     if (json) write_json_line(Json{{"error", err.what()}});
@@ -306,7 +308,7 @@ namespace {
 constexpr std::size_t kAnswerReserve = 256;
 
 /// {"id":N,"error":"message"} and a newline, written in pieces (no allocation); message is plain ASCII.
-/// With `doubles` (--numbers double) the line says so, as every answer does (io::detail::append_trailer).
+/// With `doubles` (--numbers double) the line says so, as every answer does (detail::io::append_trailer).
 void write_error_line(Output& out, long number, std::string_view message, bool doubles) {
   char digits[24];
   const auto end = std::to_chars(digits, digits + sizeof digits, number).ptr;
@@ -326,7 +328,7 @@ void write_error_line(Output& out, long number, std::string_view message, bool d
 /// answered line by line.
 class BatchPipeline {
  public:
-  BatchPipeline(LineReader& reader, Output& out, const relpos::io::BatchOptions& options, unsigned threads,
+  BatchPipeline(LineReader& reader, Output& out, const relpos::detail::io::BatchOptions& options, unsigned threads,
                 std::string too_long)
       : reader_(reader),
         out_(out),
@@ -349,7 +351,8 @@ class BatchPipeline {
       if (!slot) return;
       for (std::size_t i = 0; i < slot->n; ++i)
         if (slot->status[i] == LineReader::Status::Line)
-          relpos::io::answer_batch_line(slot->lines[i], slot->first + static_cast<long>(i), options_, slot->answers[i]);
+          relpos::detail::io::answer_batch_line(slot->lines[i], slot->first + static_cast<long>(i), options_,
+                                                slot->answers[i]);
       finish(*slot);
     }
   }
@@ -440,8 +443,8 @@ class BatchPipeline {
         write_error_line(out_, line_number, too_long_, options_.numbers_as_doubles);
       else if (s.status[i] == LineReader::Status::OutOfMemory)
         write_error_line(out_, line_number, "out of memory while reading this line", options_.numbers_as_doubles);
-      else if (s.answers[i].empty())  // not even the short error fitted (relpos::io::answer_batch_line)
-        write_error_line(out_, line_number, relpos::io::kOutOfMemoryNoIdMessage, options_.numbers_as_doubles);
+      else if (s.answers[i].empty())  // not even the short error fitted (relpos::detail::io::answer_batch_line)
+        write_error_line(out_, line_number, relpos::detail::io::kOutOfMemoryNoIdMessage, options_.numbers_as_doubles);
       else
         out_.write(s.answers[i]);
       out_.write("\n");
@@ -461,7 +464,7 @@ class BatchPipeline {
 
   LineReader& reader_;
   Output& out_;
-  const relpos::io::BatchOptions& options_;
+  const relpos::detail::io::BatchOptions& options_;
   const std::string too_long_;
   std::vector<Slot> slots_;  // group seq is in slots_[seq % size]
   std::mutex read_mutex_;    // one reader at a time; held before mutex_, never after
@@ -477,7 +480,7 @@ class BatchPipeline {
 
 int run_batch(Args& args) {
   std::optional<std::string> file;
-  relpos::io::BatchOptions options;
+  relpos::detail::io::BatchOptions options;
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   while (!args.done()) {
     std::string v;
@@ -514,7 +517,8 @@ int run_batch(Args& args) {
   LineReader reader(fd, options.max_line_bytes);
   Output out;
   WorkerPool pool(threads);
-  BatchPipeline pipeline(reader, out, options, pool.threads(), relpos::io::too_long_message(options.max_line_bytes));
+  BatchPipeline pipeline(reader, out, options, pool.threads(),
+                         relpos::detail::io::too_long_message(options.max_line_bytes));
   pool.run_on_each([&](unsigned) { pipeline.work(); });
   if (out.failed()) return out.report_failure();
   if (pipeline.read_error() != 0) {

@@ -38,7 +38,7 @@ namespace relpos_cli {
 namespace {
 
 using relpos::Rational;
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 /// Above this degree the text report names the defining polynomial by its degree only (the JSON
 /// output always has every coefficient).
@@ -93,15 +93,15 @@ void print_motion_help(std::ostream& os) {
 namespace {
 
 /// Limits of `relpos motion` (doc/cli.md, "Limits"; those on the polynomials are
-/// relpos::io::detail::kMaxMotionDegree and kMaxMotionCoefficientBits).
+/// relpos::detail::io::kMaxMotionDegree and kMaxMotionCoefficientBits).
 constexpr int kMaxMotionDigits = 200;
 constexpr unsigned long long kDefaultMaxSeconds = 60;
 
-/// A JSON array of `N` polynomials (relpos::io::detail::motion_polynomials).
+/// A JSON array of `N` polynomials (relpos::detail::io::motion_polynomials).
 template <std::size_t N>
 std::array<relpos::TimePolynomial, N> polynomials(const std::string& text, const std::string& role) {
   const std::vector<relpos::TimePolynomial> p =
-      relpos::io::detail::motion_polynomials(parse_inline(text, role), N, role);
+      relpos::detail::io::motion_polynomials(parse_inline(text, role), N, role);
   std::array<relpos::TimePolynomial, N> out;
   std::copy(p.begin(), p.end(), out.begin());
   return out;
@@ -206,12 +206,12 @@ std::string first_contact_text(const relpos::FirstContact& fc, int digits) {
   switch (fc.kind) {
     case relpos::FirstContact::Kind::NotExteriorAtStart:
       os << "first contact: not exterior at t0 = " << time_text(*fc.time, digits) << ": position "
-         << relpos::to_string(fc.position) << " - " << relpos::io::position_meaning(fc.position) << "\n";
+         << relpos::to_string(fc.position) << " - " << relpos::detail::io::position_meaning(fc.position) << "\n";
       break;
     case relpos::FirstContact::Kind::Contact:
       os << "first contact: t* = " << time_text(*fc.time, digits) << "  (" << time_exact_text(*fc.time) << ")\n"
-         << "  position at t*: " << relpos::to_string(fc.position) << " - " << relpos::io::position_meaning(fc.position)
-         << "\n"
+         << "  position at t*: " << relpos::to_string(fc.position) << " - "
+         << relpos::detail::io::position_meaning(fc.position) << "\n"
          << "  decided: " << fc.how << "\n";
       break;
     case relpos::FirstContact::Kind::None:
@@ -304,7 +304,7 @@ std::string compute(const ShapeOptions& shapes, const std::optional<std::string>
     out["motion"] = motion;
     out["first_contact"] = first_contact_json(fc, digits);
     if (tl) out["timeline"] = timeline_json(*tl, digits);
-    return relpos::io::detail::dump_json(out) + "\n";
+    return relpos::detail::io::dump_json(out) + "\n";
   }
   std::ostringstream os;
   os << "motion on [" << relpos::to_string(t0) << ", " << relpos::to_string(t1) << "]: c(t) = ("
@@ -420,7 +420,7 @@ int run_motion(Args& args) {
   if (show) std::cerr << "\r\033[K";
   if (result->code != kExitOk) {
     if (json && result->code == kExitInput)
-      std::cout << relpos::io::detail::dump_json(Json{{"error", result->error}}) << "\n";
+      std::cout << relpos::detail::io::dump_json(Json{{"error", result->error}}) << "\n";
     std::cerr << "relpos: " << result->error << "\n";
     return finish_cout() == kExitOk ? result->code : kExitIo;
   }

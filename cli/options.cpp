@@ -50,7 +50,7 @@ unsigned long long parse_count(const std::string& text, const char* what, unsign
   }
   if (used == 0 || used != text.size() || n < lo || n > hi)
     throw UsageError{std::string(what) + " needs an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                     ", got " + relpos::io::detail::dump_json(relpos::io::detail::Json(text))};
+                     ", got " + relpos::detail::io::dump_json(relpos::detail::io::Json(text))};
   return n;
 }
 
@@ -69,7 +69,7 @@ std::vector<relpos::Rational> comma_numbers(const std::string& text, std::size_t
   if (parts.size() != count)
     throw relpos::InputError(what + ": expected " + std::to_string(count) + " comma-separated numbers, got " +
                              std::to_string(parts.size()) + " in " +
-                             relpos::io::detail::dump_json(relpos::io::detail::Json(text)));
+                             relpos::detail::io::dump_json(relpos::detail::io::Json(text)));
   std::vector<relpos::Rational> out;
   for (std::size_t i = 0; i < parts.size(); ++i)
     out.push_back(exact_option(parts[i], what + "[" + std::to_string(i) + "]"));
@@ -84,9 +84,9 @@ relpos::Rational exact_option(const std::string& text, const std::string& name) 
   }
 }
 
-relpos::io::detail::Json parse_inline(const std::string& text, const std::string& role) {
+relpos::detail::io::Json parse_inline(const std::string& text, const std::string& role) {
   try {
-    return relpos::io::detail::parse_json_exact(text);
+    return relpos::detail::io::parse_json_exact(text);
   } catch (const relpos::InputError& e) {
     throw relpos::InputError(role + ": " + e.what());
   }

@@ -59,7 +59,7 @@ std::vector<relpos::Rational> comma_numbers(const std::string& text, std::size_t
 relpos::Rational exact_option(const std::string& text, const std::string& name);
 
 /// Inline JSON of an option, numbers exact; InputError "<role>: invalid JSON ..." otherwise.
-relpos::io::detail::Json parse_inline(const std::string& text, const std::string& role);
+relpos::detail::io::Json parse_inline(const std::string& text, const std::string& role);
 
 /// The ellipsoid and paraboloid options of classify, scene and motion.
 struct ShapeOptions {

@@ -49,7 +49,7 @@
 namespace relpos_cli {
 namespace {
 
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 constexpr std::size_t kBlockLines = std::size_t(1) << 12;
 
@@ -142,7 +142,7 @@ enum class Format { Jsonl, Csv };
 struct FixedBody {
   std::optional<relpos::Paraboloid> paraboloid;
   std::optional<relpos::Quadric> quadric;
-  std::optional<relpos::io::GeneralPairSize> quadric_size;  ///< the quadric's size, computed once
+  std::optional<relpos::detail::io::GeneralPairSize> quadric_size;  ///< the quadric's size, computed once
   /// The pair size limit of `relpos batch` for a body against it.
   void check_size(const relpos::Ellipsoid& e, const relpos::SizeLimit& limit) const {
     if (quadric)
@@ -162,8 +162,9 @@ struct Parsed {
   std::string error;
 };
 
-void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, const FixedBody& fixed, Parsed& out) {
-  const std::string line = trim(std::string(relpos::io::normalize_line(raw, out.line, options.max_line_bytes)));
+void parse_csv(std::string_view raw, const relpos::detail::io::BatchOptions& options, const FixedBody& fixed,
+               Parsed& out) {
+  const std::string line = trim(std::string(relpos::detail::io::normalize_line(raw, out.line, options.max_line_bytes)));
   if (line.empty() || line[0] == '#') {
     out.skip = true;
     return;
@@ -174,7 +175,7 @@ void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, co
       throw relpos::InputError("field " + std::to_string(i + 1) + " of " + std::to_string(f.size()) + " is empty" +
                                (i + 1 == f.size() ? " (a trailing separator?)" : ""));
   if (f.size() == 5 || f.size() == 11) {
-    out.id = relpos::io::detail::dump_json(Json(f.front()));
+    out.id = relpos::detail::io::dump_json(Json(f.front()));
     f.erase(f.begin());
   }
   if (f.size() != 4 && f.size() != 10)
@@ -205,18 +206,18 @@ void parse_csv(std::string_view raw, const relpos::io::BatchOptions& options, co
 }
 
 /// Parse a line; never throws (errors land in out.error). JSON Lines go through the reader of
-/// `relpos batch` (relpos::io::read_batch_line), so both commands answer a line alike.
-void parse_line(const std::string& line, Format format, const relpos::io::BatchOptions& options, const FixedBody& fixed,
-                Parsed& out) {
+/// `relpos batch` (relpos::detail::io::read_batch_line), so both commands answer a line alike.
+void parse_line(const std::string& line, Format format, const relpos::detail::io::BatchOptions& options,
+                const FixedBody& fixed, Parsed& out) {
   out.id = std::to_string(out.line);
   try {
     if (format == Format::Jsonl) {
-      relpos::io::BatchLine in;
+      relpos::detail::io::BatchLine in;
       try {
         if (fixed.quadric)
-          relpos::io::read_batch_line(line, out.line, options, *fixed.quadric_size, in);
+          relpos::detail::io::read_batch_line(line, out.line, options, *fixed.quadric_size, in);
         else
-          relpos::io::read_batch_line(line, out.line, options, &*fixed.paraboloid, in);
+          relpos::detail::io::read_batch_line(line, out.line, options, &*fixed.paraboloid, in);
       } catch (...) {
         out.id = std::move(in.id);
         out.meta = std::move(in.meta);
@@ -321,7 +322,7 @@ std::size_t count_lines(const std::string& path) {
 
 // ------------------------------------------------------------------------------------------------
 
-std::string dump(const Json& j) { return relpos::io::detail::dump_json(j); }
+std::string dump(const Json& j) { return relpos::detail::io::dump_json(j); }
 
 /// A measured time or rate to 3 significant digits (more would be noise).
 double significant(double x) {
@@ -370,7 +371,7 @@ int run_scene(Args& args) {
   unsigned long long seed = 1;
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   bool summary_only = false, progress = true;
-  relpos::io::BatchOptions options_line;  // the line reader of `relpos batch`
+  relpos::detail::io::BatchOptions options_line;  // the line reader of `relpos batch`
   while (!args.done()) {
     std::string v;
     if (args.help()) {
@@ -423,7 +424,7 @@ int run_scene(Args& args) {
   }
   try {
     if (quadric_text) {
-      fixed.quadric = relpos::io::quadric_from_json(parse_inline(*quadric_text, "quadric"), "quadric");
+      fixed.quadric = relpos::detail::io::quadric_from_json(parse_inline(*quadric_text, "quadric"), "quadric");
       fixed.quadric_size.emplace(*fixed.quadric, options_line.size_limit);
     } else {
       fixed.paraboloid = shapes.make_paraboloid();
@@ -486,7 +487,7 @@ int run_scene(Args& args) {
       x.line = line_number + static_cast<long>(lines.size()) + 1;
       x.id = std::to_string(x.line);
       if (status == relpos_cli::LineReader::Status::TooLong)
-        x.error = relpos::io::too_long_message(options_line.max_line_bytes);
+        x.error = relpos::detail::io::too_long_message(options_line.max_line_bytes);
       else if (status == relpos_cli::LineReader::Status::OutOfMemory)
         x.error = "out of memory while reading this line";
       parsed.push_back(std::move(x));
@@ -543,7 +544,7 @@ int run_scene(Args& args) {
         } else {
           out += ",\"line\":" + std::to_string(x.line) + ",\"error\":" + dump(Json(x.error)) + "}";
         }
-        relpos::io::detail::append_trailer(x.meta, false, out);
+        relpos::detail::io::append_trailer(x.meta, false, out);
         out += '\n';
         output.write(out);
       }
@@ -565,7 +566,7 @@ int run_scene(Args& args) {
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Json positions, stages;
   if (fixed.quadric) {  // O, TO and EQ only when the quadric is an ellipsoid
-    for (const relpos::QuadricPosition pos : relpos::general::kAllQuadricPositions)
+    for (const relpos::QuadricPosition pos : relpos::detail::general::kAllQuadricPositions)
       if (static_cast<int>(pos) < static_cast<int>(relpos::QuadricPosition::O) ||
           fixed.quadric->type() == relpos::QuadricType::Ellipsoid)
         positions[relpos::to_string(pos)] = general_counts.count(pos);

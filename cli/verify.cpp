@@ -34,7 +34,7 @@
 
 namespace {
 
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 constexpr const char* kVerifyHelp =
     "Usage: relpos verify INPUT.jsonl ANSWERS.jsonl [--numbers exact|double] [--quiet]\n"
@@ -80,15 +80,15 @@ struct InputPair {
   std::string error;  // why the line is not a valid pair (empty if it is)
 };
 
-/// The input line as `relpos batch` reads it (relpos::io::read_batch_line), its numbers exact or
+/// The input line as `relpos batch` reads it (relpos::detail::io::read_batch_line), its numbers exact or
 /// the doubles nearest their text.
 InputPair read_input(const std::string& line, long number, bool doubles) {
   InputPair in;
-  relpos::io::BatchLine read;
-  relpos::io::BatchOptions options;
+  relpos::detail::io::BatchLine read;
+  relpos::detail::io::BatchOptions options;
   options.numbers_as_doubles = doubles;
   try {
-    relpos::io::read_batch_line(line, number, options, nullptr, read);
+    relpos::detail::io::read_batch_line(line, number, options, nullptr, read);
     in.e = std::move(read.ellipsoid);
     in.p = std::move(read.paraboloid);
     in.q = std::move(read.quadric);
@@ -106,7 +106,7 @@ InputPair read_input(const std::string& line, long number, bool doubles) {
 /// Why the answer's "margin" (when it has one) does not prove s* for the pair (relpos/margin.hpp).
 std::optional<std::string> margin_failure(const relpos::Ellipsoid& e, const relpos::Paraboloid& p, const Json& answer) {
   if (!answer.contains("margin")) return std::nullopt;
-  return relpos::verify_margin(e, p, relpos::io::detail::margin_from_tree(answer["margin"]));
+  return relpos::verify_margin(e, p, relpos::detail::io::margin_from_tree(answer["margin"]));
 }
 
 }  // namespace
@@ -166,7 +166,7 @@ int run_verify(Args& args) {
     }
     Json answer;
     try {
-      answer = relpos::io::detail::parse_json_exact(answer_line);
+      answer = relpos::detail::io::parse_json_exact(answer_line);
     } catch (const std::exception& err) {
       fail(number, std::string("the answer is not JSON: ") + clip(err.what()));
       continue;
@@ -218,14 +218,14 @@ int run_verify(Args& args) {
     }
     const std::string position_text = answer["position"].get<std::string>();
     if (in.q) {  // a general pair: its positions and certificates (src/io/general_io.hpp)
-      const std::optional<relpos::QuadricPosition> qp = relpos::io::quadric_position_from_text(position_text);
+      const std::optional<relpos::QuadricPosition> qp = relpos::detail::io::quadric_position_from_text(position_text);
       if (!qp) {
         fail(number, "position \"" + clip(position_text) + "\" is not one of I, TI, C, TE, E, O, TO, EQ");
       } else if (!answer.contains("certificate")) {
         fail(number, "the answer has no \"certificate\"");
       } else {
         try {
-          const relpos::QuadricCertificate c = relpos::io::quadric_certificate_from_json(answer["certificate"]);
+          const relpos::QuadricCertificate c = relpos::detail::io::quadric_certificate_from_json(answer["certificate"]);
           if (auto reason = relpos::verify_certificate(*in.e, *in.q, *qp, c))
             fail(number, position_text + ": " + clip(*reason));
           else
@@ -246,7 +246,7 @@ int run_verify(Args& args) {
       continue;
     }
     try {
-      const relpos::Certificate c = relpos::io::detail::certificate_from_tree(answer["certificate"]);
+      const relpos::Certificate c = relpos::detail::io::certificate_from_tree(answer["certificate"]);
       if (auto reason = relpos::verify_certificate(*in.e, *in.p, *position, c))
         fail(number, position_text + ": " + clip(*reason));
       else if (auto margin_reason = margin_failure(*in.e, *in.p, answer))

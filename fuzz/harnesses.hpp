@@ -48,7 +48,7 @@ inline void expect(bool ok, const std::string& what) {
 }
 
 using relpos::Rational;
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 // ------------------------------------------------------------------------------------------------
 // Numbers
@@ -116,9 +116,9 @@ inline void check_numbers(const std::uint8_t* data, std::size_t size) {
   }
   // 2. The JSON route: a number or string gives the same exact value or InputError.
   try {
-    const Json doc = relpos::io::detail::parse_json_exact(text);
+    const Json doc = relpos::detail::io::parse_json_exact(text);
     try {
-      const Rational j = relpos::io::detail::rational_from_json(doc, "x");
+      const Rational j = relpos::detail::io::rational_from_json(doc, "x");
       // A bare JSON number (not a string literal) is the same text for parse_rational.
       if (parsed && text.find('"') == std::string::npos)
         expect(j == q, "JSON number and parse_rational disagree on " + text);
@@ -164,13 +164,13 @@ void check_fast_quadric(std::string_view text, bool doubles, Fast fast, FastAt f
            std::string("fast reader: another end or matrix inside a line for the ") + role);
   }
   if (!q) return;
-  relpos::io::detail::JsonReadOptions read;
+  relpos::detail::io::JsonReadOptions read;
   read.doubles = doubles;
   read.max_elements = 16;
   read.start_depth = 1;
   std::optional<Q> g;
   try {
-    g = general(relpos::io::detail::parse_json(text, read), role);
+    g = general(relpos::detail::io::parse_json(text, read), role);
   } catch (const relpos::InputError& e) {
     expect(false, std::string("fast reader took a ") + role + " the general reader refuses: " + e.what());
   }
@@ -184,26 +184,26 @@ void check_fast_quadric(std::string_view text, bool doubles, Fast fast, FastAt f
 
 inline void check_fast_reader(std::string_view text) {
   for (const bool doubles : {false, true}) {
-    check_fast_quadric<relpos::Ellipsoid>(text, doubles, relpos::io::detail::fast_ellipsoid,
-                                          relpos::io::detail::fast_ellipsoid_at,
-                                          relpos::io::detail::ellipsoid_from_tree, "ellipsoid");
-    check_fast_quadric<relpos::Paraboloid>(text, doubles, relpos::io::detail::fast_paraboloid,
-                                           relpos::io::detail::fast_paraboloid_at,
-                                           relpos::io::detail::paraboloid_from_tree, "paraboloid");
+    check_fast_quadric<relpos::Ellipsoid>(text, doubles, relpos::detail::io::fast_ellipsoid,
+                                          relpos::detail::io::fast_ellipsoid_at,
+                                          relpos::detail::io::ellipsoid_from_tree, "ellipsoid");
+    check_fast_quadric<relpos::Paraboloid>(text, doubles, relpos::detail::io::fast_paraboloid,
+                                           relpos::detail::io::fast_paraboloid_at,
+                                           relpos::detail::io::paraboloid_from_tree, "paraboloid");
   }
 }
 
 inline void check_batch_line(const std::uint8_t* data, std::size_t size) {
   // The bytes may hold several lines, split at '\n' as the CLI splits its input; each goes through
-  // the library's relpos::io::answer_batch_line, the one function `relpos batch` calls.
+  // the library's relpos::detail::io::answer_batch_line, the one function `relpos batch` calls.
   const std::string all(reinterpret_cast<const char*>(data), size);
   std::size_t start = 0;
   long number = 0;
   while (start < all.size()) {
     std::size_t end = all.find('\n', start);
     if (end == std::string::npos) end = all.size();
-    const std::string text = relpos::io::answer_batch_line(std::string_view(all).substr(start, end - start), ++number,
-                                                           relpos::io::BatchOptions{});
+    const std::string text = relpos::detail::io::answer_batch_line(std::string_view(all).substr(start, end - start),
+                                                                   ++number, relpos::detail::io::BatchOptions{});
     expect(text.find('\n') == std::string::npos, "answer spans several lines");
     // The fast reader on the raw line and on the quadric values of a line that is a JSON object
     // (their bytes as written: the members' spans are located in the raw text).
@@ -218,7 +218,7 @@ inline void check_batch_line(const std::uint8_t* data, std::size_t size) {
     }
     Json answer;
     try {
-      answer = relpos::io::detail::parse_json_exact(text);  // ids are echoed as written: 1e400 too
+      answer = relpos::detail::io::parse_json_exact(text);  // ids are echoed as written: 1e400 too
     } catch (const relpos::InputError&) {
       expect(false, "answer is not JSON: " + text.substr(0, 200));
     }
@@ -479,7 +479,7 @@ inline void check_classify(const std::uint8_t* data, std::size_t size) {
   if (c.verdict.small)
     for (const auto& r : c.roots)
       if (r.multiplicity_f >= 2 && r.exact)
-        expect(relpos::oracle::kernel_has_common_point(e, p, *r.exact) == r.tangency(),
+        expect(relpos::detail::oracle::kernel_has_common_point(e, p, *r.exact) == r.tangency(),
                what + ": kernel test disagrees at the root " + relpos::to_string(*r.exact));
 
   // Invariance: a signed permutation + translation, a random congruence, positive rescaling and sign

@@ -15,6 +15,9 @@ holds, and the floors it may include. The check fails when
     include check cannot see: the friend needs no include),
   - a file declares, at namespace scope, a function defined only in files of a higher floor (a call
     upward through a hand-written declaration instead of an include),
+  - a file under src/ opens a namespace other than relpos (the definitions of public names), a public
+    namespace of include/relpos (relpos::io), relpos::detail or one under it, or an anonymous one
+    (doc/architecture.md, "Namespaces"),
   - a file of SIZE_RULE (all of src/) has more than MAX_FILE_LINES lines or a function of more
     than MAX_FUNCTION_LINES lines (one job per file; the scan is described in doc/architecture.md,
     "Sizes").
@@ -238,6 +241,50 @@ def public_declarations(code: str):
     return out
 
 
+def opened_namespaces(code: str):
+    """Every namespace opened in stripped code, as (its full name, line): a tuple of its names from the
+    outermost in, an anonymous namespace written "" (`extern "C"` blocks are transparent)."""
+    out, stack = [], []  # stack: the names of each open block, None for a block that is no namespace
+    i, n, start, paren = 0, len(code), 0, 0
+    while i < n:
+        c = code[i]
+        if c in "([":
+            paren += 1
+        elif c in ")]":
+            paren -= 1
+        elif c == ";" and paren == 0:
+            start = i + 1
+        elif c == "}":
+            if stack:
+                stack.pop()
+            start = i + 1
+        elif c == "{":
+            head = code[start:i]
+            if paren > 0 or block_kind(head) != "namespace":
+                i = matching_brace(code, i)
+                start = i
+                continue
+            names = tuple(re.findall(r"\w+", re.sub(r'\b(inline|namespace|extern)\b|""', " ", head)))
+            if re.search(r"\bnamespace\b", head):
+                full = tuple(x for names_ in stack for x in names_) + (names or ("",))
+                out.append((full, code.count("\n", 0, i) + 1))
+            stack.append(names or (("",) if re.search(r"\bnamespace\b", head) else ()))
+            start = i + 1
+        i += 1
+    return out
+
+
+def private_namespace(full, public) -> bool:
+    """Whether a namespace opened under src/ breaks the rule: relpos, a public namespace,
+    relpos::detail and anything under it, and anonymous namespaces anywhere in them are allowed."""
+    named = tuple(x for x in full if x)
+    if not named:
+        return False
+    if named[0] != "relpos" or len(named) == 1:
+        return named[0] != "relpos"
+    return named[1] != "detail" and named not in public
+
+
 FRIEND = re.compile(r"\bfriend\b([^;{]*?)\b(?:[A-Za-z_]\w*::)*([A-Za-z_]\w*)\s*\(([^;{]*)\)\s*[^;{]*;")
 
 
@@ -296,6 +343,30 @@ std::string to_string(Verdict v);
 """
 
 
+# The namespace rule on a fixture: relpos, relpos::io (public), relpos::detail and what is under it
+# and anonymous namespaces pass; relpos::forms, relpos::io::detail and a namespace outside relpos fail.
+NAMESPACE_TEST = r"""namespace relpos {
+namespace {
+int f() { namespace x = std; return 0; }
+}  // namespace
+namespace detail::forms {
+struct S { int g() { return 1; } };
+}  // namespace detail::forms
+}  // namespace relpos
+namespace relpos::io {
+namespace detail {
+}  // namespace detail
+}  // namespace relpos::io
+namespace relpos::forms {
+extern "C" {
+int h();
+}
+}  // namespace relpos::forms
+namespace other {
+}  // namespace other
+"""
+
+
 def self_test() -> None:
     functions, declarations = scan_code(strip_code(SELF_TEST))
     want = [("f", 3, 8), ("S", 10, 12), ("operator==", 14, 14), ("k", 20, 20)]
@@ -306,6 +377,10 @@ def self_test() -> None:
                   "relpos.kLimit", "relpos.to_string"]
     if names != want_names:
         sys.exit(f"check_architecture.py: the public count miscounts its fixture: {names}")
+    public = {("relpos",), ("relpos", "io")}
+    bad = [(full, line) for full, line in opened_namespaces(strip_code(NAMESPACE_TEST)) if private_namespace(full, public)]
+    if bad != [(("relpos", "io", "detail"), 10), (("relpos", "forms"), 13), (("other",), 18)]:
+        sys.exit(f"check_architecture.py: the namespace scan misreads its fixture: {bad}")
 
 
 def read_floors(doc: Path):
@@ -477,6 +552,19 @@ def check_declarations_and_sizes(root: Path, files, row_of, floor_of, errors):
             if last - first + 1 > MAX_FUNCTION_LINES:
                 errors.append(f"{rel}:{first}: {name} has {last - first + 1} lines, beyond the limit of "
                               f"{MAX_FUNCTION_LINES}")
+
+    # Everything private in relpos::detail (doc/architecture.md, "Namespaces"): the namespaces of src/
+    # are those of the public headers, relpos::detail and those under it, and anonymous ones.
+    public_namespaces = {full for rel, (code, _, _) in scans.items() if rel.startswith(PUBLIC_HEADERS)
+                         for full, _ in opened_namespaces(code) if "detail" not in full and "" not in full}
+    for rel, (code, _, _) in sorted(scans.items()):
+        if rel.startswith("src/"):
+            for full, line in opened_namespaces(code):
+                # A namespace inside one already reported is not reported again.
+                if private_namespace(full, public_namespaces) and not any(
+                        private_namespace(full[:k], public_namespaces) for k in range(1, len(full))):
+                    errors.append(f"{rel}:{line}: opens namespace {'::'.join(x or '(anonymous)' for x in full)}, "
+                                  "neither public (include/relpos) nor under relpos::detail")
 
     public = {}  # a public name -> where it is first declared
     for rel, (code, _, _) in sorted(scans.items()):

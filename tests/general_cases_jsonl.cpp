@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
   for (long i = 0; i < random; ++i) {
     const Family f = families[i % 3];
     const QuadricType t =
-        general::kAllQuadricTypes[static_cast<std::size_t>((i / 3) % general::kAllQuadricTypes.size())];
+        detail::general::kAllQuadricTypes[static_cast<std::size_t>((i / 3) % detail::general::kAllQuadricTypes.size())];
     const RandomPair p = gen.pair(f, t);
     const OracleAnswer o = oracle_position(p.e.matrix(), p.q.matrix(), t == QuadricType::Ellipsoid);
     // A tangency or EQ from random numbers is a coincidence the oracle reads within its tolerance:

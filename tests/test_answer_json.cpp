@@ -18,7 +18,7 @@
 namespace {
 
 using relpos::Rational;
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 relpos::Paraboloid cup() {
   return relpos::Paraboloid::standard({Rational(0), Rational(0), Rational(0)}, Rational(1), Rational(1));
@@ -31,7 +31,7 @@ relpos::Ellipsoid sphere(const Rational& z, const Rational& r) {
 /// The answer read back: the writer's bytes are what dumping its tree gives, and the id comes first.
 Json read_back(const std::string& text, const std::string& id) {
   const Json j = Json::parse(text);
-  CHECK(relpos::io::detail::dump_json(j) == text);
+  CHECK(relpos::detail::io::dump_json(j) == text);
   CHECK(text.rfind("{\"id\":" + id + ",", 0) == 0);
   return j;
 }
@@ -53,7 +53,7 @@ TEST_CASE("answers at every evidence level read back to what they report", "[ans
       CAPTURE(id, relpos::to_string(position));
       const relpos::Verdict v = relpos::decide_position(e, cup());
       REQUIRE(v.position == position);
-      relpos::io::detail::write_answer(id, out, v);
+      relpos::detail::io::write_answer(id, out, v);
       Json j = read_back(out, id);
       CHECK(j.size() == 6);
       CHECK(j["position"] == relpos::to_string(v.position));
@@ -63,7 +63,7 @@ TEST_CASE("answers at every evidence level read back to what they report", "[ans
       CHECK(j["stage"] == relpos::to_string(v.stage));
 
       const relpos::ContactAnswer a = relpos::contact(e, cup());
-      relpos::io::detail::write_answer(id, out, a);
+      relpos::detail::io::write_answer(id, out, a);
       j = read_back(out, id);
       CHECK(j.size() == 5);
       CHECK(j["contact"] == relpos::to_string(a.contact));
@@ -76,7 +76,7 @@ TEST_CASE("answers at every evidence level read back to what they report", "[ans
       const relpos::Classification c = relpos::classify(e, cup(), relpos::Evidence::Full);
       relpos::io::RenderOptions options;
       options.digits = 20;
-      relpos::io::detail::write_answer(id, out, c, options);
+      relpos::detail::io::write_answer(id, out, c, options);
       j = read_back(out, id);
       CHECK(j["position"] == relpos::to_string(c.verdict.position));
       CHECK(j["certificate"].is_object());
@@ -95,11 +95,11 @@ TEST_CASE("the error line escapes any message and replaces invalid UTF-8", "[ans
   std::string out;
   for (const std::string& m : messages) {
     CAPTURE(m);
-    REQUIRE(relpos::io::detail::write_error("42", m, out));
+    REQUIRE(relpos::detail::io::write_error("42", m, out));
     const Json j = read_back(out, "42");
     CHECK(j.size() == 2);
     // What the tree of the message dumps to, invalid bytes replaced (U+FFFD).
-    CHECK(relpos::io::detail::dump_json(j["error"]) == relpos::io::detail::dump_json(Json(m)));
+    CHECK(relpos::detail::io::dump_json(j["error"]) == relpos::detail::io::dump_json(Json(m)));
   }
 }
 
@@ -115,10 +115,10 @@ TEST_CASE("the margin is the last member of an answer at every evidence level", 
     auto check = [&](const std::string& level) {
       CAPTURE(level, with);
       const std::string id = "\"m\"";
-      relpos::io::detail::append_margin_member(m, 12, with);
+      relpos::detail::io::append_margin_member(m, 12, with);
       Json j = read_back(with, id);
       CHECK((--j.end()).key() == "margin");
-      const relpos::Margin back = relpos::io::detail::margin_from_tree(j["margin"]);
+      const relpos::Margin back = relpos::detail::io::margin_from_tree(j["margin"]);
       CHECK(back.lo == m.lo);
       CHECK(back.hi == m.hi);
       CHECK(back.polynomial == m.polynomial);
@@ -127,15 +127,15 @@ TEST_CASE("the margin is the last member of an answer at every evidence level", 
       j.erase("margin");
       CHECK(j == Json::parse(plain));
     };
-    relpos::io::detail::write_answer("\"m\"", plain, relpos::decide_position(e, cup()));
-    relpos::io::detail::write_answer("\"m\"", with, relpos::decide_position(e, cup()));
+    relpos::detail::io::write_answer("\"m\"", plain, relpos::decide_position(e, cup()));
+    relpos::detail::io::write_answer("\"m\"", with, relpos::decide_position(e, cup()));
     check("minimal");
-    relpos::io::detail::write_answer("\"m\"", plain, relpos::contact(e, cup()));
-    relpos::io::detail::write_answer("\"m\"", with, relpos::contact(e, cup()));
+    relpos::detail::io::write_answer("\"m\"", plain, relpos::contact(e, cup()));
+    relpos::detail::io::write_answer("\"m\"", with, relpos::contact(e, cup()));
     check("contact only");
     const relpos::Classification c = relpos::classify(e, cup(), relpos::Evidence::Full);
-    relpos::io::detail::write_answer("\"m\"", plain, c, relpos::io::RenderOptions{});
-    relpos::io::detail::write_answer("\"m\"", with, c, relpos::io::RenderOptions{});
+    relpos::detail::io::write_answer("\"m\"", plain, c, relpos::io::RenderOptions{});
+    relpos::detail::io::write_answer("\"m\"", with, c, relpos::io::RenderOptions{});
     check("full");
   }
 }

@@ -33,7 +33,7 @@ using relpos::QuadraticNumber;
 using relpos::Rational;
 using relpos::Vector3;
 using Kind = relpos::Certificate::Kind;
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 namespace {
 
@@ -378,10 +378,10 @@ TEST_CASE("a certificate that cannot be built is an internal error, never a null
   // The unit sphere at the origin crosses the cup: no rational double root of f proves a tangency.
   const Ellipsoid e = sphere(rat(0), rat(1));
   const Paraboloid p = cup();
-  CHECK_THROWS_AS(relpos::certificate::build(e, p, Position::TE), std::logic_error);
-  CHECK_THROWS_WITH(relpos::certificate::build(e, p, Position::TI),
+  CHECK_THROWS_AS(relpos::detail::certificate::build(e, p, Position::TE), std::logic_error);
+  CHECK_THROWS_WITH(relpos::detail::certificate::build(e, p, Position::TI),
                     Catch::Contains("internal error") && Catch::Contains("classified TI"));
-  const Certificate c = relpos::certificate::build(e, p, Position::C);
+  const Certificate c = relpos::detail::certificate::build(e, p, Position::C);
   CHECK(c.kind == Kind::Crossing);
   CHECK_FALSE(relpos::verify_certificate(e, p, Position::C, c));
 }
@@ -460,7 +460,7 @@ TEST_CASE("the report's JSON text holds the classification's exact values, for e
     const std::string text = relpos::io::classification_json_text(c);
     CAPTURE(text);
     const Json j = Json::parse(text);
-    CHECK(relpos::io::detail::dump_json(j) == text);
+    CHECK(relpos::detail::io::dump_json(j) == text);
     CHECK(j["position"] == relpos::to_string(c.verdict.position));
     CHECK(j["small"] == c.verdict.small);
     CHECK(j["stage"] == relpos::to_string(c.verdict.stage));
@@ -475,9 +475,9 @@ TEST_CASE("the report's JSON text holds the classification's exact values, for e
     std::size_t multiple = 0;
     for (const auto& r : c.roots) multiple += r.multiplicity_f >= 2;
     CHECK(j["multiple_roots"].size() == multiple);
-    require_same(relpos::io::detail::certificate_from_tree(j["certificate"]), c.certificate);
+    require_same(relpos::detail::io::certificate_from_tree(j["certificate"]), c.certificate);
     CHECK_FALSE(relpos::verify_certificate(e, cup(), c.verdict.position,
-                                           relpos::io::detail::certificate_from_tree(j["certificate"])));
+                                           relpos::detail::io::certificate_from_tree(j["certificate"])));
   }
 }
 
@@ -508,7 +508,7 @@ TEST_CASE("the report writer's rationals are GMP's decimal text at every length"
     }
     const relpos::Rational q = trial % 2 ? relpos::Rational(z) : relpos::Rational(z, z * z + 1);
     std::string text;
-    relpos::io::detail::JsonWriter w(text);
+    relpos::detail::io::JsonWriter w(text);
     w.rational(q);
     REQUIRE(text == "\"" + relpos::to_string(q) + "\"");
     ++checked;
@@ -523,7 +523,7 @@ TEST_CASE("the report writer's integers are their decimal text at the edges of i
   // nines and zeros across every such edge, powers of two at limb edges, and random digits.
   const auto written = [](const Rational& x) {
     std::string text;
-    relpos::io::detail::JsonWriter w(text);
+    relpos::detail::io::JsonWriter w(text);
     w.rational(x);
     return text;
   };
@@ -605,8 +605,8 @@ TEST_CASE("tight_interval_of_quotient is tight_interval of the reduced fraction,
     if (trial % 5 == 0) c = c * c * c;
     const relpos::Integer n = value.numerator() * c, den = value.denominator() * c;
     CAPTURE(relpos::to_string(value), relpos::to_string(c));
-    const std::pair<double, double> got = relpos::anysize::tight_interval_of_quotient(n.mpz(), den.mpz()),
-                                    want = relpos::forms::tight_interval(value);
+    const std::pair<double, double> got = relpos::detail::anysize::tight_interval_of_quotient(n.mpz(), den.mpz()),
+                                    want = relpos::detail::forms::tight_interval(value);
     CHECK(got.first == want.first);
     CHECK(got.second == want.second);
   }
@@ -616,8 +616,8 @@ TEST_CASE("an irrational lambda_s: a reduced on first use, the enclosure as from
   // s = s2 (l - r1)(l - r2) + t with two negative roots and an irrational discriminant; its
   // coefficients are dyadic (as from doubles) or general rationals. lambda_s = a + b sqrt(d) with
   // a = -s1 / (2 s2), and [lo, hi] the interval sum of the tight enclosures of a, b and sqrt(d).
-  using relpos::anysize::LambdaS;
-  using relpos::anysize::QuadraticReal;
+  using relpos::detail::anysize::LambdaS;
+  using relpos::detail::anysize::QuadraticReal;
   using I = CGAL::Interval_nt<false>;
   std::mt19937_64 bits(1618);
   auto uniform = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(bits); };
@@ -631,15 +631,15 @@ TEST_CASE("an irrational lambda_s: a reduced on first use, the enclosure as from
     const Rational s2 = coefficient(1, 1L << 50), s1 = coefficient(1, 1L << 50);
     // s0 in (0, s1^2 / (4 s2)): two negative roots.
     const Rational s0 = s1 * s1 / (4 * s2) * rat(uniform(1, 999), 1000);
-    const relpos::anysize::Poly s{s0, s1, s2};
-    const LambdaS ls = relpos::anysize::lambda_s_of(s);
+    const relpos::detail::anysize::Poly s{s0, s1, s2};
+    const LambdaS ls = relpos::detail::anysize::lambda_s_of(s);
     if (ls.rational()) continue;
     ++irrational;
     {
       // Between irrational ones, a rational lambda_s = r1 (s = s2 (l - r1)(l - r2), r2 < r1 < 0): the
       // numbers an irrational lambda_s wrote must not show through (each LambdaS starts blank).
       const Rational r1 = -coefficient(1, 1L << 30), r2 = r1 - coefficient(1, 1L << 30);
-      const LambdaS rl = relpos::anysize::lambda_s_of({s2 * r1 * r2, -s2 * (r1 + r2), s2});
+      const LambdaS rl = relpos::detail::anysize::lambda_s_of({s2 * r1 * r2, -s2 * (r1 + r2), s2});
       CHECK(rl.rational());
       CHECK(rl.d == 0);
       CHECK(rl.value().a == r1);
@@ -657,8 +657,8 @@ TEST_CASE("an irrational lambda_s: a reduced on first use, the enclosure as from
     CHECK(ls.sign({v.a - Rational(lo), v.b}) >= 0);
     CHECK(ls.sign({v.a - Rational(hi), v.b}) <= 0);
     CGAL::Protect_FPU_rounding<true> guard;
-    const I want = I(relpos::forms::tight_interval(v.a)) +
-                   I(relpos::forms::tight_interval(v.b)) * CGAL::sqrt(I(CGAL::to_interval(ls.d)));
+    const I want = I(relpos::detail::forms::tight_interval(v.a)) +
+                   I(relpos::detail::forms::tight_interval(v.b)) * CGAL::sqrt(I(CGAL::to_interval(ls.d)));
     CHECK(lo == want.inf());
     CHECK(hi == want.sup());
   }

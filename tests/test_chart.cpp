@@ -13,7 +13,7 @@
 #include "oracle/png.hpp"
 #include "oracle/raster.hpp"
 
-using namespace relpos::oracle;
+using namespace relpos::detail::oracle;
 
 namespace {
 

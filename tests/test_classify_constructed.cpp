@@ -529,8 +529,8 @@ TEST_CASE("not small: every position is decided (math.md §8)", "[classify][smal
     CHECK(c.verdict.position == Position::C);
     CHECK(c.verdict.position == secular_position(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p())));
     CHECK_FALSE(c.verdict.small);
-    CHECK(
-        relpos::oracle::kernel_has_common_point(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()), Q(-1)));
+    CHECK(relpos::detail::oracle::kernel_has_common_point(Ellipsoid::from_matrix(k.e()), Paraboloid::from_matrix(k.p()),
+                                                          Q(-1)));
     CHECK(root_at(c, Q(-1)).multiplicity_s == 1);
   }
   SECTION("a big sphere resting inside on the axis touches along a circle: never called TI") {

@@ -36,7 +36,7 @@ relpos::Matrix4 random_symmetric(rt::Rng& g) {
 
 /// The positive factor c with form = c D m D entry by entry (0 when there is none), checking that the
 /// form is integer and primitive.
-Rational factor_of(const relpos::forms::MatrixOf<Integer>& form, const relpos::Matrix4& m, const Integer& t) {
+Rational factor_of(const relpos::detail::forms::MatrixOf<Integer>& form, const relpos::Matrix4& m, const Integer& t) {
   Rational c(0);
   Integer content(0);
   for (int i = 0; i < 4; ++i)
@@ -65,8 +65,9 @@ TEST_CASE("to_compact_integers: positive multiples of D M D, primitive, with f's
   rt::Rng g(1111);
   for (int trial = 0; trial < 500; ++trial) {
     const relpos::Matrix4 p = random_symmetric(g), e = random_symmetric(g);
-    relpos::forms::MatrixOf<Integer> pz, ez;  // fresh entries: written through mpz()
-    relpos::forms::to_compact_integers(p, e, relpos::forms::entries(pz), relpos::forms::entries(ez));
+    relpos::detail::forms::MatrixOf<Integer> pz, ez;  // fresh entries: written through mpz()
+    relpos::detail::forms::to_compact_integers(p, e, relpos::detail::forms::entries(pz),
+                                               relpos::detail::forms::entries(ez));
     Integer t(1);
     for (const relpos::Matrix4* m : {&p, &e})
       for (int i = 0; i < 3; ++i) mpz_lcm(t.mpz(), t.mpz(), (*m)(i, 3).denominator().mpz());

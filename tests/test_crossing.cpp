@@ -28,7 +28,7 @@ namespace {
 void check_crossing(const Ellipsoid& e, const Paraboloid& p) {
   const relpos::detail::PairContext pair(e, p);
   Certificate c;
-  relpos::certificate::crossing_points(pair, c);
+  relpos::detail::certificate::crossing_points(pair, c);
   CHECK(c.kind == Certificate::Kind::Crossing);
   CHECK(form_value(e.matrix(), c.inside) <= 0);
   CHECK(form_value(p.matrix(), c.inside) < 0);
@@ -73,6 +73,6 @@ TEST_CASE("crossing_points: pairs of doubles and of decimal text", "[crossing]")
   for (const char* es :
        {R"({"sphere":{"center":[1.2,0,1],"radius":0.5}})", R"({"sphere":{"center":[0.6,0.75,0.5],"radius":1e-9}})",
         R"({"sphere":{"center":[0,0,0],"radius":3}})"})
-    check_crossing(*relpos::io::detail::fast_ellipsoid(es, false),
-                   *relpos::io::detail::fast_paraboloid(R"({"vertex":[0,0,0],"a":1.2,"b":1.5})", false));
+    check_crossing(*relpos::detail::io::fast_ellipsoid(es, false),
+                   *relpos::detail::io::fast_paraboloid(R"({"vertex":[0,0,0],"a":1.2,"b":1.5})", false));
 }

@@ -87,7 +87,7 @@ relpos::Matrix4 constructed(const DecimalRecipe& r) {
 
 /// The same split; with `same_factors` false, a's factors only a coprime base of the rest (what
 /// divided_by_powers reads), not necessarily b's.
-void require_same_split(const relpos::forms::SplitScale& a, const relpos::forms::SplitScale& b,
+void require_same_split(const relpos::detail::forms::SplitScale& a, const relpos::detail::forms::SplitScale& b,
                         bool same_factors = true) {
   REQUIRE(a.twos == b.twos);
   REQUIRE(a.fives == b.fives);
@@ -118,22 +118,23 @@ void require_same_split(const relpos::forms::SplitScale& a, const relpos::forms:
 /// left alone.
 void check_integer_form(const DecimalRecipe& r) {
   const relpos::Matrix4 m = relpos::detail::exact_matrix(r);
-  relpos::forms::MatrixOf<Integer> form, untouched;
+  relpos::detail::forms::MatrixOf<Integer> form, untouched;
   Integer l, l2, l_only, unused;
-  relpos::forms::SplitScale s, split_only, exponents;
-  REQUIRE(relpos::detail::write_integer_form(r, {relpos::forms::entries(form), l, s}));
-  const relpos::forms::MatrixOf<Integer> want = relpos::forms::integer_form(m, l2);
+  relpos::detail::forms::SplitScale s, split_only, exponents;
+  REQUIRE(relpos::detail::write_integer_form(r, {relpos::detail::forms::entries(form), l, s}));
+  const relpos::detail::forms::MatrixOf<Integer> want = relpos::detail::forms::integer_form(m, l2);
   REQUIRE(l == l2);
   for (std::size_t k = 0; k < 16; ++k) REQUIRE(form.a[k] == want.a[k]);
   // Off the axis the factors may be coarser than split_scale's (recipe_integer_form.cpp).
   const bool on_axis = r.form != DecimalRecipe::Form::Standard || (r.n[0].m == 0 && r.n[1].m == 0);
-  require_same_split(s, relpos::forms::split_scale(l2, m), on_axis);
-  REQUIRE(relpos::detail::write_integer_form(r, {relpos::forms::entries(untouched), l_only, split_only, false, false}));
+  require_same_split(s, relpos::detail::forms::split_scale(l2, m), on_axis);
+  REQUIRE(relpos::detail::write_integer_form(
+      r, {relpos::detail::forms::entries(untouched), l_only, split_only, false, false}));
   CHECK(l_only == l);
   CHECK(split_only.rest == s.rest);
   CHECK(split_only.twos == s.twos);
   REQUIRE(relpos::detail::write_integer_form(
-      r, {relpos::forms::entries(untouched), unused, exponents, false, false, false}));
+      r, {relpos::detail::forms::entries(untouched), unused, exponents, false, false, false}));
   CHECK(exponents.twos == s.twos);
   CHECK(exponents.fives == s.fives);
   for (const Integer& x : untouched.a) CHECK(x == 0);
@@ -153,7 +154,7 @@ TEST_CASE("decimal recipes: exact matrix, integer form and truncated doubles of 
     REQUIRE(relpos::detail::has_closed_form(r) == closed);
     relpos::DoubleMatrix4 d;
     REQUIRE(relpos::detail::truncated_doubles(r, d));  // on and off the axis
-    for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(m.a[k]));
+    for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::detail::forms::truncated_double(m.a[k]));
     check_integer_form(r);  // on and off the axis: the numbers' form is the constructor matrix's
   }
 }
@@ -170,7 +171,7 @@ TEST_CASE("decimal recipes: a matrix with either orientation, and numbers that a
     REQUIRE_FALSE(relpos::detail::has_closed_form(r));
     relpos::DoubleMatrix4 d;
     REQUIRE(relpos::detail::truncated_doubles(r, d));
-    for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(m.a[k]));
+    for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::detail::forms::truncated_double(m.a[k]));
     check_integer_form(r);
     // The same form over doubles (--numbers double): (-1)^neg m 2^(e - 53), built exactly.
     DecimalRecipe s = sphere_recipe(rng);
@@ -184,10 +185,10 @@ TEST_CASE("decimal recipes: a matrix with either orientation, and numbers that a
     REQUIRE(relpos::detail::exact_matrix(s) == relpos::Ellipsoid::sphere({q(0), q(1), q(2)}, q(3)).matrix());
     REQUIRE_FALSE(relpos::detail::has_closed_form(s));
     REQUIRE_FALSE(relpos::detail::truncated_doubles(s, d));
-    relpos::forms::MatrixOf<Integer> form;
+    relpos::detail::forms::MatrixOf<Integer> form;
     Integer l;
-    relpos::forms::SplitScale split;
-    REQUIRE_FALSE(relpos::detail::write_integer_form(s, {relpos::forms::entries(form), l, split}));
+    relpos::detail::forms::SplitScale split;
+    REQUIRE_FALSE(relpos::detail::write_integer_form(s, {relpos::detail::forms::entries(form), l, split}));
   }
 }
 
@@ -239,23 +240,23 @@ TEST_CASE("closed forms of a sphere and a standard paraboloid: the general path'
       p.n[1] = related(rng() % 2 == 0);
     }
     INFO(trial);
-    REQUIRE(relpos::forms::has_closed_evidence(e, p));
-    REQUIRE_FALSE(relpos::forms::has_closed_evidence(p, e));
+    REQUIRE(relpos::detail::forms::has_closed_evidence(e, p));
+    REQUIRE_FALSE(relpos::detail::forms::has_closed_evidence(p, e));
     // S = lcm(lp, le) of the integer forms, its exponents of 2 and 5 from their splits.
     Integer lp, le, lcm;
-    relpos::forms::SplitScale p_split, e_split;
-    relpos::forms::MatrixOf<Integer> pm, em;
-    REQUIRE(relpos::detail::write_integer_form(p, {relpos::forms::entries(pm), lp, p_split}));
-    REQUIRE(relpos::detail::write_integer_form(e, {relpos::forms::entries(em), le, e_split}));
+    relpos::detail::forms::SplitScale p_split, e_split;
+    relpos::detail::forms::MatrixOf<Integer> pm, em;
+    REQUIRE(relpos::detail::write_integer_form(p, {relpos::detail::forms::entries(pm), lp, p_split}));
+    REQUIRE(relpos::detail::write_integer_form(e, {relpos::detail::forms::entries(em), le, e_split}));
     mpz_lcm(lcm.mpz(), lp.mpz(), le.mpz());
     relpos::Quartic<Rational> f;
     relpos::Quadratic<Rational> s;
     Rational lambda_s, rho;
     relpos::Quartic<Integer> f_multiple;
     relpos::Quadratic<Integer> s_multiple;
-    relpos::forms::sphere_standard_evidence(e, p,
-                                            {f, s, lambda_s, rho, std::max(p_split.twos, e_split.twos),
-                                             std::max(p_split.fives, e_split.fives), f_multiple, s_multiple});
+    relpos::detail::forms::sphere_standard_evidence(e, p,
+                                                    {f, s, lambda_s, rho, std::max(p_split.twos, e_split.twos),
+                                                     std::max(p_split.fives, e_split.fives), f_multiple, s_multiple});
     const auto want_f = relpos::characteristic_polynomial<Rational>(constructed(p), constructed(e));
     const auto want_s = relpos::special_polynomial<Rational>(constructed(p), constructed(e));
     for (std::size_t k = 0; k < 5; ++k) same(f[k], want_f[k]);

@@ -229,7 +229,7 @@ Classification run_case(const Case& k, Rng& g) {
   int tangent_kernel = 0;
   for (const auto& r : c.roots) {
     if (r.multiplicity_f < 2 || !r.exact) continue;
-    const bool kernel = relpos::oracle::kernel_has_common_point(e, p, *r.exact);
+    const bool kernel = relpos::detail::oracle::kernel_has_common_point(e, p, *r.exact);
     if (c.verdict.small) CHECK(kernel == r.tangency());
     if (kernel) ++tangent_kernel;
     ++stats().kernel;

@@ -33,11 +33,11 @@ TEST_CASE("divided_by_power: z / scale^k in lowest terms, as rational division g
     const auto extra = g.uniform(0, 6);
     for (long i = 0; i < extra; ++i) z *= Integer(trial % 3 == 0 ? 5 : trial % 3 == 1 ? 2 : rests[trial % 7]);
     if (trial % 5 == 0) z *= scale * scale;  // common factors beyond one power of the scale
-    const relpos::forms::SplitScale split = relpos::forms::split_scale(scale);
+    const relpos::detail::forms::SplitScale split = relpos::detail::forms::split_scale(scale);
     for (unsigned long k = 0; k <= 4; ++k) {
       Rational expected(z);
       for (unsigned long i = 0; i < k; ++i) expected /= Rational(scale);
-      const Rational got = relpos::forms::divided_by_power(z, split, k);
+      const Rational got = relpos::detail::forms::divided_by_power(z, split, k);
       CAPTURE(relpos::to_string(z), relpos::to_string(scale), k);
       CHECK(got == expected);
       CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // canonical
@@ -60,12 +60,13 @@ TEST_CASE("divided_by_powers: two scales with shared prime factors, as rational 
     Integer z(static_cast<long>(g.uniform(-100000, 100000)));
     for (long i = g.uniform(0, 4); i > 0; --i) z *= Integer(parts[g.uniform(0, 9)]);
     if (trial % 4 == 0) z *= a * a * b;
-    const relpos::forms::SplitScale sa = relpos::forms::split_scale(a), sb = relpos::forms::split_scale(b);
+    const relpos::detail::forms::SplitScale sa = relpos::detail::forms::split_scale(a),
+                                            sb = relpos::detail::forms::split_scale(b);
     for (unsigned long i = 0; i <= 4; ++i) {
       Rational expected(z);
       for (unsigned long k = 0; k < i; ++k) expected /= Rational(a);
       for (unsigned long k = i; k < 4; ++k) expected /= Rational(b);
-      const Rational got = relpos::forms::divided_by_powers(z, {{sa, i}, {sb, 4 - i}});
+      const Rational got = relpos::detail::forms::divided_by_powers(z, {{sa, i}, {sb, 4 - i}});
       CAPTURE(relpos::to_string(z), relpos::to_string(a), relpos::to_string(b), i);
       CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // same canonical form
       CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(expected.mpq())) == 0);
@@ -75,11 +76,11 @@ TEST_CASE("divided_by_powers: two scales with shared prime factors, as rational 
 
 TEST_CASE("divided_by_powers refuses a split scale without its factors", "[divided_by_powers]") {
   // The closed forms' splits carry their rest apart (no factors): dividing by one would drop it.
-  relpos::forms::SplitScale s;
+  relpos::detail::forms::SplitScale s;
   s.twos = 3;
   s.rest = Integer(7);
-  CHECK_THROWS_AS(relpos::forms::divided_by_power(Integer(49), s, 1), std::logic_error);
-  CHECK(relpos::forms::divided_by_power(Integer(49), s, 0) == Rational(49));  // k = 0: nothing divided
+  CHECK_THROWS_AS(relpos::detail::forms::divided_by_power(Integer(49), s, 1), std::logic_error);
+  CHECK(relpos::detail::forms::divided_by_power(Integer(49), s, 0) == Rational(49));  // k = 0: nothing divided
   s.rest = Integer(1);
-  CHECK(relpos::forms::divided_by_power(Integer(12), s, 2) == Rational(Integer(12), Integer(64)));
+  CHECK(relpos::detail::forms::divided_by_power(Integer(12), s, 2) == Rational(Integer(12), Integer(64)));
 }

@@ -25,7 +25,7 @@ TEST_CASE("dyadic_of: a double as m 2^k with m odd", "[exact_doubles]") {
                                 : std::ldexp(std::uniform_real_distribution<double>(-1, 1)(bits),
                                              static_cast<int>(g.uniform(-1080, 1024)));
     if (!std::isfinite(x) || x == 0) continue;
-    const relpos::forms::Dyadic d = relpos::forms::dyadic_of(x);
+    const relpos::detail::forms::Dyadic d = relpos::detail::forms::dyadic_of(x);
     CAPTURE(x);
     CHECK(d.m % 2 != 0);
     CHECK(std::ldexp(static_cast<double>(d.m), static_cast<int>(d.k)) == x);  // exact: |m| < 2^53
@@ -53,7 +53,7 @@ TEST_CASE("set_double writes the canonical rational mpq_set_d writes", "[exact_d
                                              static_cast<int>(g.uniform(-1080, 1024)));
     if (!std::isfinite(x)) continue;
     Rational got(Integer(g.uniform(-99, 99)), Integer(g.uniform(1, 99))), want;
-    relpos::forms::set_double(got.mpq(), x);
+    relpos::detail::forms::set_double(got.mpq(), x);
     mpq_set_d(want.mpq(), x);
     CAPTURE(x);
     CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(want.mpq())) == 0);
@@ -71,7 +71,7 @@ TEST_CASE("truncated_double is mpq_get_d, dyadic or not", "[exact_doubles]") {
     if (trial % 3 == 1) q += Rational(Integer(1), Integer(1) << 300);  // dyadic, more than 53 bits
     if (trial % 3 == 2) q *= Rational(Integer(g.uniform(1, 1000)), Integer(g.uniform(1, 999)) * 2 + 1);
     CAPTURE(relpos::to_string(q));
-    CHECK(relpos::forms::truncated_double(q) == mpq_get_d(q.mpq()));
+    CHECK(relpos::detail::forms::truncated_double(q) == mpq_get_d(q.mpq()));
   }
 }
 
@@ -98,7 +98,7 @@ TEST_CASE("tight_interval equals CGAL::to_interval bit for bit", "[exact_doubles
         q = Rational(Integer(g.uniform(1, 1000)), Integer(3)) * Rational(std::isfinite(d) && d != 0 ? d : 1.0);
     }
     CAPTURE(relpos::to_string(q));
-    const std::pair<double, double> got = relpos::forms::tight_interval(q), want = CGAL::to_interval(q);
+    const std::pair<double, double> got = relpos::detail::forms::tight_interval(q), want = CGAL::to_interval(q);
     CHECK(got.first == want.first);
     CHECK(got.second == want.second);
   }

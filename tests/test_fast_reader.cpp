@@ -30,15 +30,15 @@ namespace {
 using relpos::Ellipsoid;
 using relpos::Matrix4;
 using relpos::Paraboloid;
-using relpos::io::detail::fast_ellipsoid;
-using relpos::io::detail::fast_paraboloid;
+using relpos::detail::io::fast_ellipsoid;
+using relpos::detail::io::fast_paraboloid;
 
-relpos::io::detail::Json general_json(const std::string& text, bool doubles) {
-  relpos::io::detail::JsonReadOptions read;
+relpos::detail::io::Json general_json(const std::string& text, bool doubles) {
+  relpos::detail::io::JsonReadOptions read;
   read.doubles = doubles;
   read.max_elements = 16;
   read.start_depth = 1;
-  return relpos::io::detail::parse_json(text, read);
+  return relpos::detail::io::parse_json(text, read);
 }
 
 /// Every exact entry inside its enclosure (or equal to the double, when the quadric has doubles).
@@ -64,12 +64,12 @@ void check_storage(const Q& q) {
 template <class Q>
 void check_integer_form(const Q& q) {
   using relpos::Integer;
-  relpos::forms::MatrixOf<Integer> m;
+  relpos::detail::forms::MatrixOf<Integer> m;
   Integer l, l2;
-  relpos::forms::SplitScale s;
-  relpos::forms::integer_form_of(storage_of(q), {relpos::forms::entries(m), l, s});
-  const relpos::forms::MatrixOf<Integer> m2 = relpos::forms::integer_form(q.matrix(), l2);
-  const relpos::forms::SplitScale s2 = relpos::forms::split_scale(l2, q.matrix());
+  relpos::detail::forms::SplitScale s;
+  relpos::detail::forms::integer_form_of(storage_of(q), {relpos::detail::forms::entries(m), l, s});
+  const relpos::detail::forms::MatrixOf<Integer> m2 = relpos::detail::forms::integer_form(q.matrix(), l2);
+  const relpos::detail::forms::SplitScale s2 = relpos::detail::forms::split_scale(l2, q.matrix());
   REQUIRE(l == l2);
   for (std::size_t k = 0; k < 16; ++k) REQUIRE(m.a[k] == m2.a[k]);
   REQUIRE(s.twos == s2.twos);
@@ -110,7 +110,7 @@ void check_truncated_doubles(const Q& q) {
   const bool written = relpos::detail::truncated_doubles(*recipe, d);
   REQUIRE(written == !recipe->doubles);
   if (!written) return;
-  for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::forms::truncated_double(q.matrix().a[k]));
+  for (std::size_t k = 0; k < 16; ++k) REQUIRE(d[k] == relpos::detail::forms::truncated_double(q.matrix().a[k]));
 }
 
 /// The full evidence of a pair read by the fast reader (integer forms from the numbers read, reduced
@@ -156,8 +156,8 @@ void check_pair(const std::string& e_text, const std::string& p_text, bool doubl
   const auto fp = fast_paraboloid(p_text, doubles);
   REQUIRE(fe);
   REQUIRE(fp);
-  const Ellipsoid ge = relpos::io::detail::ellipsoid_from_tree(general_json(e_text, doubles), "ellipsoid");
-  const Paraboloid gp = relpos::io::detail::paraboloid_from_tree(general_json(p_text, doubles), "paraboloid");
+  const Ellipsoid ge = relpos::detail::io::ellipsoid_from_tree(general_json(e_text, doubles), "ellipsoid");
+  const Paraboloid gp = relpos::detail::io::paraboloid_from_tree(general_json(p_text, doubles), "paraboloid");
   check_integer_form(*fe);
   check_integer_form(*fp);
   check_truncated_doubles(*fe);
@@ -174,8 +174,8 @@ void check_pair_evidence(const std::string& e_text, const std::string& p_text, b
   check_pair(e_text, p_text, doubles);
   INFO(e_text << "  " << p_text << (doubles ? "  (--numbers double)" : ""));
   check_full_evidence(*fast_ellipsoid(e_text, doubles), *fast_paraboloid(p_text, doubles),
-                      relpos::io::detail::ellipsoid_from_tree(general_json(e_text, doubles), "ellipsoid"),
-                      relpos::io::detail::paraboloid_from_tree(general_json(p_text, doubles), "paraboloid"));
+                      relpos::detail::io::ellipsoid_from_tree(general_json(e_text, doubles), "ellipsoid"),
+                      relpos::detail::io::paraboloid_from_tree(general_json(p_text, doubles), "paraboloid"));
 }
 
 /// The decimal d 10^exponent, d of `digits` random significant digits, in one of the spellings JSON
@@ -309,7 +309,7 @@ TEST_CASE("fast reader: texts it leaves to the general reader", "[io][fast]") {
   // entries: the general reader takes it.
   const char* tilted = "[[2,3,4,-0.5],[3,5,7,1],[4,7,10,-0.5],[-0.5,1,-0.5,0]]";
   REQUIRE_FALSE(fast_paraboloid(tilted, false));
-  REQUIRE_NOTHROW(relpos::io::detail::paraboloid_from_tree(general_json(tilted, false), "paraboloid"));
+  REQUIRE_NOTHROW(relpos::detail::io::paraboloid_from_tree(general_json(tilted, false), "paraboloid"));
   // det Q3 = 0 by zeros, although rotated about the axis: taken.
   REQUIRE(fast_paraboloid("[[1,0.5,0,0],[0.5,1,0,0],[0,0,0,-0.5],[0,0,-0.5,0]]", false));
   // Exactly symmetric although spelled differently: taken.
@@ -375,8 +375,8 @@ TEST_CASE("fast reader: long digit runs, at most 19 significant digits, zeros", 
 }
 
 TEST_CASE("fast reader: a value at the start of a longer text, with its end", "[io][fast]") {
-  using relpos::io::detail::fast_ellipsoid_at;
-  using relpos::io::detail::fast_paraboloid_at;
+  using relpos::detail::io::fast_ellipsoid_at;
+  using relpos::detail::io::fast_paraboloid_at;
   const std::string sphere = R"({"sphere":{"center":[0.1,0,12345678.123456789],"radius":1}})";
   const std::string cup = "[[1,0,0,0],[0,2.5,0,0],[0,0,0,-0.5],[0,0,-0.5,0]]";
   std::optional<Ellipsoid> e;
@@ -524,11 +524,11 @@ TEST_CASE("fast reader: a decimal written as a string is the same number, the sa
     INFO(strings);
     REQUIRE(std::count(strings.begin(), strings.end(), '"') >= std::count(line.begin(), line.end(), '"') + 16);
     for (const relpos::Evidence evidence : {relpos::Evidence::Minimal, relpos::Evidence::Full}) {
-      relpos::io::BatchOptions options;
+      relpos::detail::io::BatchOptions options;
       options.evidence = evidence;
-      const std::string a = relpos::io::answer_batch_line(line, 1, options);
+      const std::string a = relpos::detail::io::answer_batch_line(line, 1, options);
       CHECK(a.find("\"error\"") == std::string::npos);
-      CHECK(a == relpos::io::answer_batch_line(strings, 1, options));
+      CHECK(a == relpos::detail::io::answer_batch_line(strings, 1, options));
     }
     // And the quadrics themselves: the fast reader takes the strings.
     const std::size_t e = strings.find("\"ellipsoid\":") + 12, p = strings.find(",\"paraboloid\":");
@@ -671,12 +671,12 @@ TEST_CASE("fast reader: a general quadric that is an ellipsoid's or an elliptic 
       std::size_t end = 0;
       const std::string text = texts[k] + ",\"id\":1}";
       if (doubles && k >= 2 && k != 3) {  // beyond 2^100: the general reader's, as for an ellipsoid
-        REQUIRE_FALSE(relpos::io::detail::fast_quadric_at(text, doubles, end, q));
+        REQUIRE_FALSE(relpos::detail::io::fast_quadric_at(text, doubles, end, q));
         continue;
       }
-      REQUIRE(relpos::io::detail::fast_quadric_at(text, doubles, end, q));
+      REQUIRE(relpos::detail::io::fast_quadric_at(text, doubles, end, q));
       REQUIRE(end == texts[k].size());
-      const Quadric g = relpos::io::quadric_from_json(general_json(texts[k], doubles));
+      const Quadric g = relpos::detail::io::quadric_from_json(general_json(texts[k], doubles));
       REQUIRE(q->type() == types[k]);
       REQUIRE(g.type() == types[k]);
       REQUIRE(q->matrix() == g.matrix());
@@ -691,7 +691,7 @@ TEST_CASE("fast reader: a general quadric that is an ellipsoid's or an elliptic 
     INFO(text);
     std::optional<Quadric> q;
     std::size_t end = 0;
-    REQUIRE_FALSE(relpos::io::detail::fast_quadric_at(text, false, end, q));
+    REQUIRE_FALSE(relpos::detail::io::fast_quadric_at(text, false, end, q));
     REQUIRE_FALSE(q);
   }
 }

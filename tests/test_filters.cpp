@@ -93,8 +93,8 @@ std::optional<bool> exact_gap(const DoubleMatrix4& pn, const DoubleMatrix4& en) 
     em.a[i] = relpos::exact_rational(en[i]);
   }
   const RationalView p{pm}, e{em};
-  return relpos::anysize::roots_above_lambda_s(relpos::characteristic_polynomial<Rational>(p, e),
-                                               relpos::special_polynomial<Rational>(p, e));
+  return relpos::detail::anysize::roots_above_lambda_s(relpos::characteristic_polynomial<Rational>(p, e),
+                                                       relpos::special_polynomial<Rational>(p, e));
 }
 
 /// Check both filters on one pair of normalized matrices against the exact signs.
@@ -497,8 +497,9 @@ TEST_CASE("semi-static gap test (math.md §8): every certified answer is the exa
     const RationalView pv{p}, ev{e};
     const auto f = relpos::characteristic_polynomial<Rational>(pv, ev);
     const auto s = relpos::special_polynomial<Rational>(pv, ev);
-    const auto exact = relpos::anysize::roots_above_lambda_s(
-        relpos::anysize::GapQuantities<Rational>(f, s), [](const Rational& x) { return std::optional<int>(sgn(x)); });
+    const auto exact =
+        relpos::detail::anysize::roots_above_lambda_s(relpos::detail::anysize::GapQuantities<Rational>(f, s),
+                                                      [](const Rational& x) { return std::optional<int>(sgn(x)); });
     REQUIRE(exact);
     CHECK(*fast == *exact);
     ++answered;

@@ -72,7 +72,8 @@ TEST_CASE("regression: pairs beyond the size limit are refused quickly, with the
     const auto bytes = read_bytes(fs::path(RELPOS_SOURCE_DIR) / "fuzz/regressions/batch_line" / name);
     std::string line(bytes.begin(), bytes.end());
     while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
-    const auto answer = nlohmann::json::parse(relpos::io::answer_batch_line(line, 1, relpos::io::BatchOptions{}));
+    const auto answer =
+        nlohmann::json::parse(relpos::detail::io::answer_batch_line(line, 1, relpos::detail::io::BatchOptions{}));
     REQUIRE(answer.contains("error"));
     CHECK_THAT(answer["error"].get<std::string>(), Catch::Matchers::Contains("numbers too large"));
   }

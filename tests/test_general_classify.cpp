@@ -187,7 +187,7 @@ TEST_CASE("general pairs: every type and every position its geometry allows is c
     seen.insert({k.q.type(), k.expected});
     if (k.hard) hard_seen.insert(k.q.type());
   }
-  for (QuadricType t : general::kAllQuadricTypes)
+  for (QuadricType t : detail::general::kAllQuadricTypes)
     for (QuadricPosition p :
          {QuadricPosition::I, QuadricPosition::TI, QuadricPosition::C, QuadricPosition::TE, QuadricPosition::E}) {
       INFO(to_string(t) << " " << to_string(p));

@@ -241,5 +241,5 @@ TEST_CASE("general quadric: an Ellipsoid and a Paraboloid as quadrics", "[genera
   CHECK(Quadric::of(p).type() == QuadricType::EllipticParaboloid);
   CHECK(Quadric::of(p).matrix() == p.matrix());
   CHECK(Quadric::from_matrix(p.matrix()).matrix() == p.matrix());
-  for (QuadricType t : general::kAllQuadricTypes) CHECK(!to_string(t).empty());
+  for (QuadricType t : detail::general::kAllQuadricTypes) CHECK(!to_string(t).empty());
 }

@@ -31,7 +31,7 @@ TEST_CASE("random general pairs: filter == exact on every pair, the oracle agree
   int checked_by_oracle = 0, certificates = 0;
   for (int round = 0; round < 40 / kSanitizerShare; ++round)
     for (Family f : {Family::General, Family::AxisAligned, Family::Concentric})
-      for (QuadricType t : general::kAllQuadricTypes) {
+      for (QuadricType t : detail::general::kAllQuadricTypes) {
         const RandomPair p = gen.pair(f, t);
         const QuadricVerdict v = decide_position(p.e, p.q), x = decide_position_exact(p.e, p.q);
         INFO(family_name(f) << " " << to_string(t) << " round " << round);
@@ -86,7 +86,7 @@ TEST_CASE("matrices scaled by 10^300 and 10^-300 get the unscaled pair's answer 
   GeneralPairs gen(announced_seed("scaled pairs", 300));
   Rational big(1);
   for (int i = 0; i < 300; ++i) big *= 10;
-  for (QuadricType t : general::kAllQuadricTypes)
+  for (QuadricType t : detail::general::kAllQuadricTypes)
     for (int i = 0; i < 5; ++i) {
       const RandomPair p = gen.pair(Family::General, t);
       const Ellipsoid e = Ellipsoid::from_matrix(scaled_matrix(p.e.matrix(), big));

@@ -98,7 +98,7 @@ TEST_CASE("general verifier: genuine certificates pass, tampered ones are refuse
       ++refused;
     }
     // The same evidence does not prove another position.
-    for (QuadricPosition other : general::kAllQuadricPositions)
+    for (QuadricPosition other : detail::general::kAllQuadricPositions)
       if (other != k.expected) CHECK(verify_certificate(e, k.q, other, c.certificate).has_value());
   }
   CHECK(refused > 200);

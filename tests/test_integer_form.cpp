@@ -26,7 +26,7 @@ TEST_CASE("integer_form of rationals: the entries times the lcm of their denomin
       x = g.chance(20) ? Rational(0)
                        : Rational(Integer(g.uniform(-99999, 99999)), Integer(dens[g.uniform(0, top - 1)]));
     Integer l;
-    const auto z = relpos::forms::integer_form(m, l);
+    const auto z = relpos::detail::forms::integer_form(m, l);
     Integer want(1);
     for (const Rational& x : m.a) mpz_lcm(want.mpz(), want.mpz(), x.denominator().mpz());
     CHECK(l == want);
@@ -60,8 +60,8 @@ TEST_CASE("integer_form of doubles equals integer_form of their exact rationals"
     relpos::Matrix4 m;
     for (std::size_t i = 0; i < 16; ++i) m.a[i] = Rational(d[i]);
     Integer l1, l2;
-    const auto a = relpos::forms::integer_form(d, l1);
-    const auto b = relpos::forms::integer_form(m, l2);
+    const auto a = relpos::detail::forms::integer_form(d, l1);
+    const auto b = relpos::detail::forms::integer_form(m, l2);
     CHECK(l1 == l2);
     for (std::size_t i = 0; i < 16; ++i) CHECK(a.a[i] == b.a[i]);
   }
@@ -74,14 +74,14 @@ TEST_CASE("small_integer_form: integer_form in words exactly when every entry is
   rt::Rng g(62);
   auto check = [](const relpos::DoubleMatrix4& d) {
     Integer l;
-    const auto a = relpos::forms::integer_form(d, l);
+    const auto a = relpos::detail::forms::integer_form(d, l);
     Integer bound(1);
     mpz_mul_2exp(bound.mpz(), bound.mpz(), 62);
     bool fits = true;
     for (const Integer& x : a.a) fits = fits && CGAL::abs(x) < bound;
-    relpos::forms::MatrixOf<std::int64_t> w;
+    relpos::detail::forms::MatrixOf<std::int64_t> w;
     unsigned long twos = 0;
-    const bool taken = relpos::forms::small_integer_form(d, w, twos);
+    const bool taken = relpos::detail::forms::small_integer_form(d, w, twos);
     CHECK(taken == fits);
     if (!taken || !fits) return fits;
     Integer two_to(1);

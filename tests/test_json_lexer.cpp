@@ -16,7 +16,7 @@
 
 namespace {
 
-using relpos::io::detail::scan_number;
+using relpos::detail::io::scan_number;
 
 /// Counts what scan_number hands to a sink: the digits of the integer and fraction parts (blocks
 /// of eight counted as eight) and of the exponent.
@@ -57,7 +57,7 @@ TEST_CASE("scan_number: RFC 8259's number grammar, and every digit handed to the
     const std::string s = random_text(rng, trial % 2 ? "0123456789.eE+-" : "01234567890123456789.e-", 30);
     const bool valid = std::regex_match(s, grammar);
     CAPTURE(s);
-    REQUIRE(relpos::io::detail::is_number(s) == valid);
+    REQUIRE(relpos::detail::io::is_number(s) == valid);
     Counting c;
     const char* end = scan_number(s.data(), s.data() + s.size(), c);
     if (end) REQUIRE(std::regex_match(std::string(s.data(), end), grammar));  // a number as far as it goes
@@ -84,7 +84,7 @@ TEST_CASE("valid_string: only strings the parser reads, and every string the wri
   for (int trial = 0; trial < 100000; ++trial) {
     const std::string token = "\"" + random_text(rng, alphabet, 12) + "\"";
     CAPTURE(token);
-    if (!relpos::io::detail::valid_string(token)) continue;
+    if (!relpos::detail::io::valid_string(token)) continue;
     ++accepted;
     nlohmann::json parsed;
     REQUIRE_NOTHROW(parsed = nlohmann::json::parse(token));
@@ -96,8 +96,8 @@ TEST_CASE("valid_string: only strings the parser reads, and every string the wri
     const std::string dumped =
         nlohmann::json(raw).dump(-1, ' ', trial % 2 == 0, nlohmann::json::error_handler_t::replace);
     CAPTURE(dumped);
-    REQUIRE(relpos::io::detail::valid_string(dumped));
-    REQUIRE(relpos::io::detail::string_end(dumped + ",1", 0) == dumped.size());
+    REQUIRE(relpos::detail::io::valid_string(dumped));
+    REQUIRE(relpos::detail::io::string_end(dumped + ",1", 0) == dumped.size());
   }
 }
 
@@ -131,18 +131,18 @@ TEST_CASE("value_end: the end of every value the writer writes, whatever follows
     for (const char* tail : {"", ",", "}", "]", " ,\"x\":1}"}) {
       CAPTURE(value, tail);
       const std::string text = "[" + value + tail;
-      REQUIRE(relpos::io::detail::value_end(text, 1) == 1 + value.size());
+      REQUIRE(relpos::detail::io::value_end(text, 1) == 1 + value.size());
     }
   }
 }
 
 TEST_CASE("valid_utf8: lead and continuation bytes", "[json_lexer]") {
-  CHECK(relpos::io::detail::valid_utf8("plain ascii"));
-  CHECK(relpos::io::detail::valid_utf8("\xC3\xA9t\xC3\xA9 \xF0\x9F\x98\x80"));
-  CHECK_FALSE(relpos::io::detail::valid_utf8("\xC3"));
-  CHECK_FALSE(relpos::io::detail::valid_utf8("\xC3("));
-  CHECK_FALSE(relpos::io::detail::valid_utf8("\xFF"));
-  CHECK_FALSE(relpos::io::detail::valid_utf8("\x80"));
+  CHECK(relpos::detail::io::valid_utf8("plain ascii"));
+  CHECK(relpos::detail::io::valid_utf8("\xC3\xA9t\xC3\xA9 \xF0\x9F\x98\x80"));
+  CHECK_FALSE(relpos::detail::io::valid_utf8("\xC3"));
+  CHECK_FALSE(relpos::detail::io::valid_utf8("\xC3("));
+  CHECK_FALSE(relpos::detail::io::valid_utf8("\xFF"));
+  CHECK_FALSE(relpos::detail::io::valid_utf8("\x80"));
 }
 
 TEST_CASE("eight_digits: the value of eight digits, or not digits, against the digits one by one", "[json_lexer]") {

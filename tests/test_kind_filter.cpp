@@ -53,17 +53,17 @@ TEST_CASE("certified_kind answers only with classify_quadric's type", "[kind_fil
     for (const auto& s : signatures) {
       DoubleMatrix4 m = congruent(s, rng, round % 2 ? 1 : 1e6);
       if (round % 3 == 0) m[15] = std::nextafter(m[15], 1e300);  // one ulp
-      const std::optional<QuadricKind> k = shape_filter::certified_kind(m);
+      const std::optional<QuadricKind> k = detail::shape_filter::certified_kind(m);
       if (!k) continue;
       ++answered;
       CHECK(*k == classify_quadric(exact(m)));
     }
   CHECK(answered > 2000);
   // Declined: a zero leading entry, a singular block, asymmetry, a NaN.
-  CHECK(!shape_filter::certified_kind({0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1}));
-  CHECK(!shape_filter::certified_kind({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0}));
-  CHECK(!shape_filter::certified_kind({1, 1e-300, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1}));
-  CHECK(!shape_filter::certified_kind({NAN, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1}));
+  CHECK(!detail::shape_filter::certified_kind({0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1}));
+  CHECK(!detail::shape_filter::certified_kind({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, -0.5, 0, 0, -0.5, 0}));
+  CHECK(!detail::shape_filter::certified_kind({1, 1e-300, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1}));
+  CHECK(!detail::shape_filter::certified_kind({NAN, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1}));
 }
 
 TEST_CASE("from_doubles refuses a rounded rotated paraboloid with the exact path's message", "[kind_filter]") {
@@ -87,5 +87,5 @@ TEST_CASE("from_doubles refuses a rounded rotated paraboloid with the exact path
   }
   REQUIRE(!slow.empty());
   CHECK(fast == slow);
-  CHECK(shape_filter::certified_kind(d).has_value());
+  CHECK(detail::shape_filter::certified_kind(d).has_value());
 }

@@ -64,8 +64,8 @@ std::vector<Pair> corpus(std::uint64_t seed) {
   for (const char* es : {R"({"sphere":{"center":[0,0.5,0.7120447530864197],"radius":0.25}})",
                          R"({"sphere":{"center":[0.1,0.2,0.3],"radius":2}})",
                          R"([[2,0.5,0,-1],[0.5,3,0.25,0],[0,0.25,1,-0.5],[-1,0,-0.5,-0.75]])"})
-    out.push_back({std::string("text ") + es, *relpos::io::detail::fast_ellipsoid(es, false),
-                   *relpos::io::detail::fast_paraboloid(R"({"vertex":[0,0,0],"a":1.2,"b":1.5})", false)});
+    out.push_back({std::string("text ") + es, *relpos::detail::io::fast_ellipsoid(es, false),
+                   *relpos::detail::io::fast_paraboloid(R"({"vertex":[0,0,0],"a":1.2,"b":1.5})", false)});
   return out;
 }
 

@@ -510,10 +510,10 @@ TEST_CASE("margin: bits, the JSON form and the batch member", "[margin]") {
   // The batch line's last member, after the certificate; the other members as without --margin.
   const std::string line =
       R"({"id":"x","ellipsoid":{"sphere":{"center":[1,0,0.5],"radius":"1/3"}},"paraboloid":{"vertex":[0,0,0],"a":1,"b":1}})";
-  relpos::io::BatchOptions options;
-  const std::string plain = relpos::io::answer_batch_line(line, 1, options);
+  relpos::detail::io::BatchOptions options;
+  const std::string plain = relpos::detail::io::answer_batch_line(line, 1, options);
   options.margin_bits = relpos::kDefaultMarginBits;
-  const std::string with = relpos::io::answer_batch_line(line, 1, options);
+  const std::string with = relpos::detail::io::answer_batch_line(line, 1, options);
   const std::string member = ",\"margin\":" + relpos::io::margin_json_text(relpos::margin(e, p)) + "}";
   CHECK(with == plain.substr(0, plain.size() - 1) + member);
   CHECK_THROWS_AS(relpos::io::margin_from_json_text(R"({"approx":1,"lo":"1","hi":"1"})"), relpos::InputError);

@@ -23,7 +23,7 @@
 #include "support/seed.hpp"
 
 using namespace relpos;
-using namespace relpos::oracle;
+using namespace relpos::detail::oracle;
 
 namespace {
 
@@ -172,11 +172,12 @@ TEST_CASE("tolerance: sphere margins with s* in closed form", "[oracle]") {
   // A sphere of radius r centred (0, 0, c) in the cup z = x^2 + y^2 (a = b = 1): with c <= 1/2 the
   // vertex is the nearest point, s* = c / r (rational); above, the nearest points form a circle at
   // distance sqrt(c - 1/4), s*^2 = (c - 1/4) / r^2 (math of doc/oracle.md, "Families").
-  const oracle::MarginValue rational = margin_from_json(margin_json(q(2, 5), q(2, 5), {-2, 5}));  // c = 1/5, r = 1/2
+  const detail::oracle::MarginValue rational =
+      margin_from_json(margin_json(q(2, 5), q(2, 5), {-2, 5}));  // c = 1/5, r = 1/2
   CHECK(compare_with(q(2, 5), rational) == 0);
   CHECK(compare_with(q(1, 2), rational) == 1);
   // c = 3/4, r = 1: s*^2 = 1/2, s* = 1/sqrt(2) ~ 0.7071 in [7/10, 71/100], root of 2 x^2 - 1.
-  const oracle::MarginValue root = margin_from_json(margin_json(q(7, 10), q(71, 100), {-1, 0, 2}));
+  const detail::oracle::MarginValue root = margin_from_json(margin_json(q(7, 10), q(71, 100), {-1, 0, 2}));
   for (const auto& [t, sign] : std::vector<std::pair<Rational, int>>{
            {q(7, 10), -1}, {q(707, 1000), -1}, {q(7072, 10000), 1}, {q(71, 100), 1}, {q(1), 1}, {q(1, 2), -1}})
     CHECK(compare_with(t, root) == sign);
@@ -189,14 +190,14 @@ TEST_CASE("tolerance: sphere margins with s* in closed form", "[oracle]") {
   CHECK(!within_tolerance(Position::E, CentreSide::Inside, root, q(1, 2)));
   CHECK(!within_tolerance(Position::TE, CentreSide::Inside, root, q(1, 2)));
   // Outside, s* = 1 + 1/1000: E within any tau, TE from tau = 1/1000 on, C beyond it.
-  const oracle::MarginValue out = margin_from_json(margin_json(q(1001, 1000), q(1001, 1000), {-1001, 1000}));
+  const detail::oracle::MarginValue out = margin_from_json(margin_json(q(1001, 1000), q(1001, 1000), {-1001, 1000}));
   CHECK(within_tolerance(Position::E, CentreSide::Outside, out, q(0)));
   CHECK(!within_tolerance(Position::TE, CentreSide::Outside, out, q(999, 1000000)));
   CHECK(within_tolerance(Position::TE, CentreSide::Outside, out, q(1, 1000)));
   CHECK(!within_tolerance(Position::C, CentreSide::Outside, out, q(1, 1000)));
   CHECK(within_tolerance(Position::C, CentreSide::Outside, out, q(1001, 1000000)));
   // The centre on the surface: only C.
-  const oracle::MarginValue zero = margin_from_json(margin_json(q(0), q(0), {0, 1}));
+  const detail::oracle::MarginValue zero = margin_from_json(margin_json(q(0), q(0), {0, 1}));
   CHECK(within_tolerance(Position::C, CentreSide::On, zero, q(0)));
   CHECK(!within_tolerance(Position::TI, CentreSide::On, zero, q(2)));
   // Refused margins.

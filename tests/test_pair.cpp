@@ -62,8 +62,8 @@ std::vector<PairCase> cases(std::uint64_t seed) {
                         R"([[1,0,0,0],[0,2,0,0],[0,0,0,-0.5],[0,0,-0.5,0.125]])"};
   for (const char* es : spheres)
     for (const char* ps : cups)
-      out.push_back({std::string("text ") + es + " " + ps, *relpos::io::detail::fast_ellipsoid(es, false),
-                     *relpos::io::detail::fast_paraboloid(ps, false)});
+      out.push_back({std::string("text ") + es + " " + ps, *relpos::detail::io::fast_ellipsoid(es, false),
+                     *relpos::detail::io::fast_paraboloid(ps, false)});
   return out;
 }
 
@@ -105,8 +105,8 @@ TEST_CASE("pair: the evidence's f, s, S^4 f, S^3 s and lambda_s are those of the
     REQUIRE(ks);
     CHECK(*kf * *kf * *kf == *ks * *ks * *ks * *ks);  // S^12 both ways
     // lambda_s: a root of s, the one nearest 0 (s2 > 0 and both roots negative, math.md §8).
-    const relpos::anysize::LambdaS& ls = pair.lambda_s();
-    const relpos::anysize::QuadraticReal at = ls.at(relpos::anysize::to_poly(s.data(), 3));
+    const relpos::detail::anysize::LambdaS& ls = pair.lambda_s();
+    const relpos::detail::anysize::QuadraticReal at = ls.at(relpos::detail::anysize::to_poly(s.data(), 3));
     CHECK(at.a == 0);
     CHECK(at.b == 0);
     const Rational mean = -s[1] / (2 * s[2]);  // (lambda_s + lambda_s2) / 2
@@ -154,7 +154,7 @@ TEST_CASE("pair: the integer forms, signs at points, f's sign and the roots agai
     }
     CHECK(z.le > 0);
     CHECK(z.lp > 0);
-    const relpos::anysize::Poly fp = relpos::anysize::to_poly(f_of(k).data(), 5);
+    const relpos::detail::anysize::Poly fp = relpos::detail::anysize::to_poly(f_of(k).data(), 5);
     for (int t = 0; t < 20; ++t) {
       const rt::Vector3 x{g.rational(-4, 4, 9), g.rational(-4, 4, 9), g.rational(-4, 4, 9)};
       const relpos::detail::PointForm::Point xz(x);

@@ -156,7 +156,7 @@ TEST_CASE("the fixed-size pencil equals the GMP one on entries below 2^62 and de
   // 2^62 - 1 in a Hadamard sign pattern (coefficients near the 2^257 of the overflow proof, and
   // every carry and borrow of the 320-bit sums); 2^62 and two-limb entries take the GMP path.
   using relpos::PooledInteger;
-  using Forms = relpos::forms::MatrixOf<PooledInteger>;
+  using Forms = relpos::detail::forms::MatrixOf<PooledInteger>;
   Rng g(6262);
   const long top = (1L << 62) - 1;
   auto check = [](const std::array<long, 16>& pv, const std::array<long, 16>& ev) {
@@ -171,8 +171,8 @@ TEST_CASE("the fixed-size pencil equals the GMP one on entries below 2^62 and de
     relpos::Quartic<PooledInteger> f;
     relpos::Quadratic<PooledInteger> s;
     REQUIRE(relpos::small_pencil_polynomials(pp, ep, f, s));
-    const auto fz =
-        characteristic_polynomial<Integer>(relpos::forms::MatrixOf<Integer>{pi}, relpos::forms::MatrixOf<Integer>{ei});
+    const auto fz = characteristic_polynomial<Integer>(relpos::detail::forms::MatrixOf<Integer>{pi},
+                                                       relpos::detail::forms::MatrixOf<Integer>{ei});
     const auto sz = exact_special_polynomial<PooledInteger>(pp, ep);
     for (std::size_t k = 0; k < 5; ++k) CHECK(f[k].to_integer() == fz[k]);
     for (std::size_t k = 0; k < 3; ++k) CHECK(s[k].to_integer() == sz[k].to_integer());

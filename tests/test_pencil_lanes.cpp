@@ -30,14 +30,15 @@ std::uint64_t bits(double x) {
 bool same_bits(double x, double y) { return bits(x) == bits(y) || (std::isnan(x) && std::isnan(y)); }
 
 void check_same(const DoubleMatrix4& p, const DoubleMatrix4& e) {
-  const auto scalar =
-      relpos::characteristic_polynomial<double>(relpos::forms::DoubleView{p}, relpos::forms::DoubleView{e});
+  const auto scalar = relpos::characteristic_polynomial<double>(relpos::detail::forms::DoubleView{p},
+                                                                relpos::detail::forms::DoubleView{e});
   const auto lanes = relpos::characteristic_polynomial_lanes(p, e);
   for (std::size_t i = 0; i < 5; ++i) {
     INFO("f coefficient " << i << ": " << scalar[i] << " vs " << lanes[i]);
     CHECK(same_bits(scalar[i], lanes[i]));
   }
-  const auto s_scalar = relpos::special_polynomial<double>(relpos::forms::DoubleView{p}, relpos::forms::DoubleView{e});
+  const auto s_scalar =
+      relpos::special_polynomial<double>(relpos::detail::forms::DoubleView{p}, relpos::detail::forms::DoubleView{e});
   const auto s_lanes = relpos::special_polynomial_lanes(p, e);
   for (std::size_t i = 0; i < 3; ++i) {
     INFO("s coefficient " << i << ": " << s_scalar[i] << " vs " << s_lanes[i]);

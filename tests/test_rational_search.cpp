@@ -13,14 +13,14 @@
 #include "support/seed.hpp"
 
 using relpos::Rational;
-using relpos::anysize::Poly;
-using relpos::certificate::floor_to;
-using relpos::certificate::log2_of;
-using relpos::certificate::power_of_two;
-using relpos::certificate::refine_root;
-using relpos::certificate::search_near_roots;
-using relpos::certificate::sqrt_below;
 using relpos::detail::IntegerPoly;
+using relpos::detail::anysize::Poly;
+using relpos::detail::certificate::floor_to;
+using relpos::detail::certificate::log2_of;
+using relpos::detail::certificate::power_of_two;
+using relpos::detail::certificate::refine_root;
+using relpos::detail::certificate::search_near_roots;
+using relpos::detail::certificate::sqrt_below;
 using rt::Q;
 using rt::sgn;
 

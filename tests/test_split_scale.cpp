@@ -23,7 +23,7 @@ namespace {
 
 /// 2^twos 5^fives rest, and rest prime to 10; rest_power[k] = rest^k; the factors' bases pairwise
 /// coprime with rest as the product of base^power (or no factors and no powers for rest 1).
-void check_split(const relpos::forms::SplitScale& s, const Integer& scale) {
+void check_split(const relpos::detail::forms::SplitScale& s, const Integer& scale) {
   Integer back = s.rest;
   for (unsigned long i = 0; i < s.twos; ++i) back *= Integer(2);
   for (unsigned long i = 0; i < s.fives; ++i) back *= Integer(5);
@@ -66,7 +66,7 @@ TEST_CASE("split_scale: the parts multiply back to the scale, the rest prime to 
     if (trial % 11 == 0)
       for (int i = 0; i < 6; ++i) scale *= Integer(1000003);  // a rest beyond one limb
     CAPTURE(relpos::to_string(scale));
-    const relpos::forms::SplitScale s = relpos::forms::split_scale(scale);
+    const relpos::detail::forms::SplitScale s = relpos::detail::forms::split_scale(scale);
     check_split(s, scale);
     CHECK(s.factors.size() == (s.rest == 1 ? 0u : 1u));  // no matrix: the rest is its one factor
   }
@@ -88,9 +88,9 @@ TEST_CASE("split_scale along a matrix's denominators: a coprime base of the rest
       m.a[i] = g.uniform(0, 3) == 0 ? Rational(0) : Rational(Integer(g.uniform(-50, 50)) * Integer(2), den);
     }
     Integer scale;
-    relpos::forms::integer_form(m, scale);
-    const relpos::forms::SplitScale split = relpos::forms::split_scale(scale, m);
-    const relpos::forms::SplitScale plain = relpos::forms::split_scale(scale);
+    relpos::detail::forms::integer_form(m, scale);
+    const relpos::detail::forms::SplitScale split = relpos::detail::forms::split_scale(scale, m);
+    const relpos::detail::forms::SplitScale plain = relpos::detail::forms::split_scale(scale);
     CHECK(split.twos == plain.twos);
     CHECK(split.fives == plain.fives);
     Integer product(1);
@@ -109,7 +109,7 @@ TEST_CASE("split_scale along a matrix's denominators: a coprime base of the rest
     for (unsigned long k = 0; k <= 4; ++k) {
       Rational expected(z);
       for (unsigned long i = 0; i < k; ++i) expected /= Rational(scale);
-      const Rational got = relpos::forms::divided_by_power(z, split, k);
+      const Rational got = relpos::detail::forms::divided_by_power(z, split, k);
       CAPTURE(relpos::to_string(z), relpos::to_string(scale), k);
       CHECK(mpz_cmp(mpq_numref(got.mpq()), mpq_numref(expected.mpq())) == 0);  // same canonical form
       CHECK(mpz_cmp(mpq_denref(got.mpq()), mpq_denref(expected.mpq())) == 0);
@@ -132,10 +132,10 @@ TEST_CASE("split_scale from the decimal reader's parts equals the split along th
     m(2, 3) = m(3, 2) = Rational(-1, 2);
     m(3, 3) = Rational(Integer(g.uniform(-50, 50)), Integer(g.chance(50) ? 8 : 125));
     Integer scale;
-    relpos::forms::integer_form(m, scale);
-    const relpos::forms::SplitScale along = relpos::forms::split_scale(scale, m);
+    relpos::detail::forms::integer_form(m, scale);
+    const relpos::detail::forms::SplitScale along = relpos::detail::forms::split_scale(scale, m);
     // The reader's parts: the rests of the mantissas (numerators of a and b without 2s and 5s).
-    std::vector<relpos::forms::SplitScale::Factor> rests;
+    std::vector<relpos::detail::forms::SplitScale::Factor> rests;
     for (const Rational* x : {&a, &b}) {
       Integer r;  // fresh: written through mpz() (a copy would share the numerator's value)
       mpz_set(r.mpz(), x->numerator().mpz());
@@ -145,7 +145,8 @@ TEST_CASE("split_scale from the decimal reader's parts equals the split along th
       for (const auto& f : rests) seen = seen || f.base == r;
       if (!seen) rests.push_back({r, 2});
     }
-    const relpos::forms::SplitScale parts = relpos::forms::split_scale(along.twos, along.fives, along.rest, rests);
+    const relpos::detail::forms::SplitScale parts =
+        relpos::detail::forms::split_scale(along.twos, along.fives, along.rest, rests);
     CAPTURE(relpos::to_string(a), relpos::to_string(b), relpos::to_string(scale));
     check_split(parts, scale);
     CHECK(parts.rest == along.rest);

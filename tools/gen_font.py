@@ -120,7 +120,7 @@ def main():
     print("// the glyphs drawn there; do not edit by hand.")
     print('#include "oracle/raster.hpp"')
     print()
-    print("namespace relpos::oracle {")
+    print("namespace relpos::detail::oracle {")
     print()
     print("namespace {")
     print()
@@ -138,7 +138,7 @@ def main():
     print("  return kGlyphs[i >= 0 && i < 95 ? i : '?' - 32];")
     print("}")
     print()
-    print("}  // namespace relpos::oracle")
+    print("}  // namespace relpos::detail::oracle")
 
 
 if __name__ == "__main__":

@@ -149,9 +149,9 @@ for n, name in ((3, "cubic"), (2, "quadratic")):
     for j in range(n - 2, -1, -1):
         b.insert(0, f"inline constexpr int kStHa{name.capitalize()}Power{j} = {powers[j]};")
     bodies.append(b)
-out += ["#pragma once", "", "// clang-format off (generated)", "namespace relpos::general {", ""]
+out += ["#pragma once", "", "// clang-format off (generated)", "namespace relpos::detail::general {", ""]
 for b in bodies:
     out += b + [""]
-out.append("}  // namespace relpos::general")
+out.append("}  // namespace relpos::detail::general")
 out.append("// clang-format on")
 print("\n".join(out))

@@ -1,11 +1,11 @@
 // relpos._relpos._batch_block: the lines of `relpos batch` for a block of a JSON Lines file, answered
-// by the library's relpos::io::answer_batch_line (the one batch-line function of the CLI), for
+// by the library's relpos::detail::io::answer_batch_line (the one batch-line function of the CLI), for
 // relpos.distributed (doc/python.md, "Dask").
 //
 // A block is whole lines of a file: it is cut into lines as `relpos batch` reads a file (at each
 // '\n'; a last line without '\n' is a line, nothing after a final '\n' is), and every answer is
 // followed by '\n'. The BOM, a trailing '\r', blank lines, NUL bytes and over-long lines are the
-// library's business (relpos::io::normalize_line), so a block answered here gives the bytes the CLI
+// library's business (relpos::detail::io::normalize_line), so a block answered here gives the bytes the CLI
 // writes for the same lines with the same numbers.
 #include <algorithm>
 #include <cstddef>
@@ -26,9 +26,10 @@ using namespace pybind11::literals;
 namespace {
 
 /// The options of `relpos batch`, spelled as its command-line values; the CLI's ranges.
-relpos::io::BatchOptions batch_options(const std::string& evidence, const std::string& numbers, bool contact_only,
-                                       int digits, long long max_line_bytes, long long max_bits) {
-  relpos::io::BatchOptions options;
+relpos::detail::io::BatchOptions batch_options(const std::string& evidence, const std::string& numbers,
+                                               bool contact_only, int digits, long long max_line_bytes,
+                                               long long max_bits) {
+  relpos::detail::io::BatchOptions options;
   if (evidence != "full" && evidence != "minimal")
     throw relpos::InputError("evidence: expected 'full' or 'minimal', got '" + evidence + "'");
   if (numbers != "exact" && numbers != "double")
@@ -61,13 +62,13 @@ std::vector<std::string_view> split_lines(std::string_view block) {
   return lines;
 }
 
-std::string answer_block(std::string_view block, long first_line, const relpos::io::BatchOptions& options,
+std::string answer_block(std::string_view block, long first_line, const relpos::detail::io::BatchOptions& options,
                          unsigned threads) {
   const std::vector<std::string_view> lines = split_lines(block);
   std::string out, answer;
   if (threads <= 1 || lines.size() < 2) {
     for (std::size_t i = 0; i < lines.size(); ++i) {
-      relpos::io::answer_batch_line(lines[i], first_line + static_cast<long>(i), options, answer);
+      relpos::detail::io::answer_batch_line(lines[i], first_line + static_cast<long>(i), options, answer);
       out.append(answer).push_back('\n');
     }
     return out;
@@ -75,7 +76,7 @@ std::string answer_block(std::string_view block, long first_line, const relpos::
   std::vector<std::string> answers(lines.size());
   relpos::detail::WorkerPool pool(static_cast<unsigned>(std::min<std::size_t>(threads, lines.size())));
   pool.run(lines.size(), [&](std::size_t i) {
-    relpos::io::answer_batch_line(lines[i], first_line + static_cast<long>(i), options, answers[i]);
+    relpos::detail::io::answer_batch_line(lines[i], first_line + static_cast<long>(i), options, answers[i]);
   });
   for (const std::string& a : answers) out.append(a).push_back('\n');
   return out;
@@ -88,7 +89,7 @@ void bind_batch(py::module_& m) {
       "_batch_block",
       [](const py::bytes& data, long first_line, const std::string& evidence, const std::string& numbers,
          bool contact_only, int digits, long long max_line_bytes, int threads, long long max_bits) {
-        const relpos::io::BatchOptions options =
+        const relpos::detail::io::BatchOptions options =
             batch_options(evidence, numbers, contact_only, digits, max_line_bytes, max_bits);
         if (first_line < 1) throw relpos::InputError("first_line: expected >= 1, got " + std::to_string(first_line));
         if (threads < 1) throw relpos::InputError("threads: expected >= 1, got " + std::to_string(threads));
@@ -101,8 +102,8 @@ void bind_batch(py::module_& m) {
         return py::bytes(out);
       },
       "data"_a, "first_line"_a = 1, "evidence"_a = "full", "numbers"_a = "exact", "contact_only"_a = false,
-      "digits"_a = 12, "max_line_bytes"_a = static_cast<long long>(relpos::io::kDefaultMaxLineBytes), "threads"_a = 1,
-      "max_bits"_a = static_cast<long long>(relpos::kMaxNormalizedBits),
+      "digits"_a = 12, "max_line_bytes"_a = static_cast<long long>(relpos::detail::io::kDefaultMaxLineBytes),
+      "threads"_a = 1, "max_bits"_a = static_cast<long long>(relpos::kMaxNormalizedBits),
       "The output of `relpos batch` for the lines of `data` (whole lines of a JSON Lines file, the first of them "
       "line number `first_line`), as bytes: one answer and '\\n' per line. The options are those of `relpos batch` "
       "(--evidence, --numbers, --contact-only, --digits, --max-line-bytes, --max-bits); `threads` threads of one "

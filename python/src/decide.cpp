@@ -441,7 +441,7 @@ py::array_t<std::int8_t> decide_positions_quadric(py::handle e_input, const relp
   const std::size_t n = *e_side.n;
   py::array_t<std::int8_t> out(static_cast<py::ssize_t>(n));
   std::int8_t* codes = out.mutable_data();
-  const relpos::io::GeneralPairSize size(q, relpos::SizeLimit{max_bits});  // the quadric's size once
+  const relpos::detail::io::GeneralPairSize size(q, relpos::SizeLimit{max_bits});  // the quadric's size once
   FirstError first_error;
   SignalWatch watch;  // Ctrl-C: the calling thread polls between its chunks, every thread stops
   {
@@ -452,7 +452,7 @@ py::array_t<std::int8_t> decide_positions_quadric(py::handle e_input, const relp
           const relpos::Ellipsoid e = e_side.ellipsoid(i);
           const std::size_t bits = size.check(e);
           codes[i] = static_cast<std::int8_t>(
-              relpos::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); }).position);
+              relpos::detail::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); }).position);
         } catch (const std::exception& err) {
           codes[i] = kInvalid;
           if (!raise_errors) continue;

@@ -25,21 +25,21 @@ using namespace pybind11::literals;
 std::string classify_quadric_json(const relpos::Ellipsoid& e, const relpos::Quadric& q, bool full, int digits,
                                   std::size_t max_bits) {
   py::gil_scoped_release release;
-  const std::size_t bits = relpos::io::check_general_pair_size(e, q, relpos::SizeLimit{max_bits});
+  const std::size_t bits = relpos::detail::io::check_general_pair_size(e, q, relpos::SizeLimit{max_bits});
   if (full)
-    return relpos::io::detail::answer_text(
-        2048, relpos::io::with_stack_for_general(bits, [&] { return relpos::classify(e, q); }), digits);
-  return relpos::io::detail::answer_text(
-      256, relpos::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); }));
+    return relpos::detail::io::answer_text(
+        2048, relpos::detail::io::with_stack_for_general(bits, [&] { return relpos::classify(e, q); }), digits);
+  return relpos::detail::io::answer_text(
+      256, relpos::detail::io::with_stack_for_general(bits, [&] { return relpos::decide_position(e, q); }));
 }
 
 /// The verifier's reason why the certificate (JSON text) does not prove the position, or None.
 std::optional<std::string> verify_quadric(const relpos::Ellipsoid& e, const relpos::Quadric& q,
                                           const std::string& position, const std::string& certificate) {
-  const std::optional<relpos::QuadricPosition> p = relpos::io::quadric_position_from_text(position);
+  const std::optional<relpos::QuadricPosition> p = relpos::detail::io::quadric_position_from_text(position);
   if (!p) throw relpos::InputError("position \"" + position + "\" is not one of I, TI, C, TE, E, O, TO, EQ");
   const relpos::QuadricCertificate c =
-      relpos::io::quadric_certificate_from_json(relpos::io::detail::parse_json_exact(certificate));
+      relpos::detail::io::quadric_certificate_from_json(relpos::detail::io::parse_json_exact(certificate));
   py::gil_scoped_release release;
   return relpos::verify_certificate(e, q, *p, c);
 }

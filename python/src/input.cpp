@@ -132,7 +132,7 @@ py::object to_python(const relpos::Rational& q) {
 }
 
 relpos::Rational to_rational(py::handle x, const std::string& path) {
-  return relpos::io::detail::rational_from_json(to_json(x, path), path);
+  return relpos::detail::io::rational_from_json(to_json(x, path), path);
 }
 
 namespace {
@@ -192,15 +192,15 @@ Q described_quadric(py::handle description, const char* role, Q (*from_json)(con
 }  // namespace
 
 relpos::Ellipsoid ellipsoid_from_python(py::handle description) {
-  return described_quadric<relpos::Ellipsoid>(description, "ellipsoid", relpos::io::detail::ellipsoid_from_tree);
+  return described_quadric<relpos::Ellipsoid>(description, "ellipsoid", relpos::detail::io::ellipsoid_from_tree);
 }
 
 relpos::Paraboloid paraboloid_from_python(py::handle description) {
-  return described_quadric<relpos::Paraboloid>(description, "paraboloid", relpos::io::detail::paraboloid_from_tree);
+  return described_quadric<relpos::Paraboloid>(description, "paraboloid", relpos::detail::io::paraboloid_from_tree);
 }
 
 relpos::Quadric quadric_from_python(py::handle description) {
-  return described_quadric<relpos::Quadric>(description, "quadric", relpos::io::quadric_from_json);
+  return described_quadric<relpos::Quadric>(description, "quadric", relpos::detail::io::quadric_from_json);
 }
 
 void throw_unbuilt(py::handle x) {

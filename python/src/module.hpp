@@ -19,7 +19,7 @@
 namespace relpos_python {
 
 namespace py = pybind11;
-using relpos::io::detail::Json;
+using relpos::detail::io::Json;
 
 /// A Python value as the JSON value the CLI would read for it, without rounding: int (any size) as
 /// an integer or its exact digits, float as the double (read exactly by the library), a finite

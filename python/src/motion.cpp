@@ -24,7 +24,7 @@ using namespace pybind11::literals;
 
 /// `count` polynomials in t, read and limited as `relpos motion` reads --translation / --rotation.
 std::vector<relpos::TimePolynomial> polynomials(py::handle x, std::size_t count, const std::string& role) {
-  return relpos::io::detail::motion_polynomials(to_json(x, role), count, role);
+  return relpos::detail::io::motion_polynomials(to_json(x, role), count, role);
 }
 
 relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py::handle pivot) {
@@ -52,7 +52,7 @@ relpos::RigidMotion rigid_motion(py::handle translation, py::handle rotation, py
     const Json point = to_json(pivot, "pivot");
     if (!point.is_array() || point.size() != 3) throw relpos::InputError("pivot: expected origin, center or a point");
     for (std::size_t i = 0; i < 3; ++i)
-      m.pivot_point[i] = relpos::io::detail::rational_from_json(point[i], "pivot[" + std::to_string(i) + "]");
+      m.pivot_point[i] = relpos::detail::io::rational_from_json(point[i], "pivot[" + std::to_string(i) + "]");
   }
   return m;
 }

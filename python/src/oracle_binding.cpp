@@ -17,17 +17,17 @@ using namespace pybind11::literals;
 
 namespace {
 
-relpos::oracle::Form form_of(const std::string& form) {
-  if (form == "exact") return relpos::oracle::Form::Exact;
-  if (form == "double") return relpos::oracle::Form::Double;
-  if (form == "matrix") return relpos::oracle::Form::Matrix;
+relpos::detail::oracle::Form form_of(const std::string& form) {
+  if (form == "exact") return relpos::detail::oracle::Form::Exact;
+  if (form == "double") return relpos::detail::oracle::Form::Double;
+  if (form == "matrix") return relpos::detail::oracle::Form::Matrix;
   throw relpos::InputError("form: expected 'exact', 'double' or 'matrix', got '" + form + "'");
 }
 
-relpos::oracle::Truth truth_of(const std::string& truth) {
-  if (truth == "exact") return relpos::oracle::Truth::Exact;
-  if (truth == "double") return relpos::oracle::Truth::Double;
-  if (truth == "matrix") return relpos::oracle::Truth::Matrix;
+relpos::detail::oracle::Truth truth_of(const std::string& truth) {
+  if (truth == "exact") return relpos::detail::oracle::Truth::Exact;
+  if (truth == "double") return relpos::detail::oracle::Truth::Double;
+  if (truth == "matrix") return relpos::detail::oracle::Truth::Matrix;
   throw relpos::InputError("truth: expected 'exact', 'double' or 'matrix', got '" + truth + "'");
 }
 
@@ -35,24 +35,25 @@ relpos::oracle::Truth truth_of(const std::string& truth) {
 
 void bind_oracle(py::module_& m) {
   py::list names;
-  for (const auto& f : relpos::oracle::families()) names.append(py::make_tuple(f.name, f.description));
+  for (const auto& f : relpos::detail::oracle::families()) names.append(py::make_tuple(f.name, f.description));
   m.attr("_FAMILIES") = py::tuple(names);
-  m.attr("_DEFAULT_EPS") = relpos::oracle::kDefaultEps;
+  m.attr("_DEFAULT_EPS") = relpos::detail::oracle::kDefaultEps;
   m.def(
       "_cases",
       [](const std::vector<std::string>& families, std::size_t n, const std::vector<std::string>& eps,
          unsigned long long seed, unsigned threads, const std::string& form) {
-        relpos::oracle::CaseOptions options;
+        relpos::detail::oracle::CaseOptions options;
         options.families = families;
         options.n = n;
         options.eps = eps;
         options.seed = seed;
         options.threads = threads;
-        const relpos::oracle::Form f = form_of(form);
+        const relpos::detail::oracle::Form f = form_of(form);
         std::string out;
         {
           py::gil_scoped_release release;
-          for (const auto& c : relpos::oracle::make_cases(options)) out.append(relpos::oracle::case_line(c, f)) += '\n';
+          for (const auto& c : relpos::detail::oracle::make_cases(options))
+            out.append(relpos::detail::oracle::case_line(c, f)) += '\n';
         }
         return out;
       },
@@ -62,7 +63,7 @@ void bind_oracle(py::module_& m) {
       "_judge",
       [](const std::string& cases, const std::string& answers, const std::string& truth,
          std::optional<std::string> tolerance, const std::vector<std::string>& by, bool baselines, bool chart) {
-        relpos::oracle::JudgeOptions options;
+        relpos::detail::oracle::JudgeOptions options;
         options.truth = truth_of(truth);
         if (tolerance) {
           options.tolerance = relpos::parse_rational(*tolerance);
@@ -73,11 +74,11 @@ void bind_oracle(py::module_& m) {
         std::string json, md, csv, png;
         {
           py::gil_scoped_release release;
-          const relpos::oracle::JudgeReport r = relpos::oracle::judge(cases, answers, options);
-          json = relpos::oracle::report_json(r);
-          md = relpos::oracle::report_markdown(r);
-          csv = relpos::oracle::report_csv(r);
-          if (chart) png = relpos::oracle::chart_png(r);
+          const relpos::detail::oracle::JudgeReport r = relpos::detail::oracle::judge(cases, answers, options);
+          json = relpos::detail::oracle::report_json(r);
+          md = relpos::detail::oracle::report_markdown(r);
+          csv = relpos::detail::oracle::report_csv(r);
+          if (chart) png = relpos::detail::oracle::chart_png(r);
         }
         return py::make_tuple(json, md, csv, chart ? py::object(py::bytes(png)) : py::object(py::none()));
       },

@@ -206,7 +206,7 @@ PYBIND11_MODULE(_relpos, m) {
           const relpos::SizeLimit limit{max_bits};
           // The minimal answer as `relpos batch --evidence minimal` computes and writes it.
           text = full ? relpos::io::classification_json_text(relpos::classify(e, p, relpos::Evidence::Full, limit))
-                      : relpos::io::minimal_json_text(relpos::decide_position(e, p, limit));
+                      : relpos::detail::io::minimal_json_text(relpos::decide_position(e, p, limit));
         }
         return text;
       },

@@ -9,7 +9,7 @@
 #include "algebra/power_of_five.hpp"
 #include "algebra/word_arithmetic.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 namespace {
 
 using detail::Decimal;
@@ -375,4 +375,4 @@ void sphere_standard_evidence(const DecimalRecipe& sphere, const DecimalRecipe& 
   mpz_mul(mpq_denref(out.rho.mpq()), mpq_denref(out.rho.mpq()), mpq_denref(out.rho.mpq()));
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

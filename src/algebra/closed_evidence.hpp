@@ -6,7 +6,7 @@
 #include "relpos/numbers.hpp"
 #include "relpos/polynomials.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 /// Where sphere_standard_evidence writes: f and s in lowest terms, lambda_s and rho.
 /// With the exponents of 2 and 5 in S = lcm(lp, le), the lcm of the two integer forms' scales
@@ -42,4 +42,4 @@ bool has_closed_evidence(const detail::DecimalRecipe& sphere, const detail::Deci
 void sphere_standard_evidence(const detail::DecimalRecipe& sphere, const detail::DecimalRecipe& paraboloid,
                               const ClosedEvidence& out);
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

@@ -2,7 +2,7 @@
 
 #include "algebra/denominators.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 namespace {
 
 /// The scratch integers of to_compact_integers, one set per thread: they keep their limbs between
@@ -79,4 +79,4 @@ void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mp
   compact_form(e, scratch, ez);
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

@@ -9,7 +9,7 @@
 
 #include "relpos/quadric.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 /// The smallest integer form the *decisions* need (not the evidence: the roots move). With
 /// D = diag(1, 1, 1, t), t the lcm of the denominators of both translation columns, and positive
@@ -23,4 +23,4 @@ namespace relpos::forms {
 void to_compact_integers(const Matrix4& p, const Matrix4& e, const std::array<mpz_ptr, 16>& pz,
                          const std::array<mpz_ptr, 16>& ez);
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

@@ -6,7 +6,7 @@
 
 #include "relpos/numbers.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 /// lcm(l, d) into l (d > 0): a divisibility test first, since most denominators of a matrix or a
 /// polynomial are equal or divide one already taken (powers of 2 and 5), and lcm costs a gcd.
@@ -36,4 +36,4 @@ inline void scaled_numerator(const Rational& q, const Integer& l, mpz_ptr out) {
   mpz_mul(out, out, mpq_numref(q.mpq()));
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

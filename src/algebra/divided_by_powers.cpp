@@ -5,7 +5,7 @@
 
 #include "algebra/power_of_five.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 namespace {
 
 /// num / rest^k in lowest terms for d = scale^k, num already free of the scale's 2s and 5s: the
@@ -90,4 +90,4 @@ Rational divided_by_powers(mpz_srcptr z, std::initializer_list<ScalePower> divis
   return out;
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

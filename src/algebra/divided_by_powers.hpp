@@ -9,7 +9,7 @@
 #include "algebra/split_scale.hpp"
 #include "relpos/numbers.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 /// One divisor of divided_by_powers: scale^k, k <= 4.
 struct ScalePower {
@@ -32,4 +32,4 @@ inline Rational divided_by_power(const Integer& z, const SplitScale& scale, unsi
   return divided_by_powers(z, {{scale, k}});
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

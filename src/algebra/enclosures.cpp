@@ -6,7 +6,7 @@
 #include <cfloat>
 #include <cmath>
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 namespace {
 
 /// The power of two that brings mx into [1/2, 1) (1 for zero or a non-finite mx), as an interval.
@@ -68,4 +68,4 @@ MatrixOf<Interval> to_intervals(const Matrix4& m) {
   return out;
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

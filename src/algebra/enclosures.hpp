@@ -9,7 +9,7 @@
 #include "algebra/matrix_view.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 using Interval = CGAL::Interval_nt<false>;
 
@@ -24,4 +24,4 @@ MatrixOf<Interval> to_intervals(const detail::EnclosureMatrix4& m);
 /// (mpq_get_d truncates towards zero, so q lies between v and the next double away from zero).
 MatrixOf<Interval> to_intervals(const Matrix4& m);
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

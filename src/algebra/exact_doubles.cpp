@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 Dyadic dyadic_of(double x) {
   std::uint64_t bits = 0;
@@ -68,4 +68,4 @@ std::pair<double, double> tight_interval(const Rational& q) {
   return t < 0 ? std::make_pair(away, t) : std::make_pair(t, away);
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

@@ -9,7 +9,7 @@
 
 #include "relpos/numbers.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 /// A finite non-zero double as m 2^k with m odd (|m| < 2^53), from its bits (subnormals: exponent
 /// field 0, no hidden bit).
@@ -40,4 +40,4 @@ double truncated_double(const Rational& q);
 /// (MPFR). Independent of the rounding mode.
 std::pair<double, double> tight_interval(const Rational& q);
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

@@ -6,7 +6,7 @@
 #include "algebra/denominators.hpp"
 #include "algebra/exact_doubles.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 namespace {
 
 /// The entries of a dyadic matrix (every denominator a power of two) over the largest, 2^top.
@@ -126,4 +126,4 @@ MatrixOf<Integer> integer_form(const DoubleMatrix4& d, Integer& l) {
   return out;
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

@@ -13,7 +13,7 @@
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 /// The matrix times the lcm of its own denominators (returned in `l`): the integer form of one
 /// quadric. The reported evidence is computed on the two forms, each with its own scale:
@@ -51,4 +51,4 @@ struct IntegerFormOut {
 /// the mantissas, no rationals and no gcd of long numbers) when it can, else from the matrix.
 void integer_form_of(const detail::QuadricMatrix& q, const IntegerFormOut& out);
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

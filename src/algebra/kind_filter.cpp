@@ -7,7 +7,7 @@
 
 #include "algebra/shape_filter.hpp"
 
-namespace relpos::shape_filter {
+namespace relpos::detail::shape_filter {
 
 namespace {
 
@@ -92,4 +92,4 @@ std::optional<QuadricKind> certified_kind(const DoubleMatrix4& d) {
   return s[3] > 0 ? QuadricKind::HyperboloidOneSheet : QuadricKind::HyperboloidTwoSheets;
 }
 
-}  // namespace relpos::shape_filter
+}  // namespace relpos::detail::shape_filter

@@ -12,11 +12,11 @@
 
 #include "relpos/quadric.hpp"
 
-namespace relpos::shape_filter {
+namespace relpos::detail::shape_filter {
 
 /// classify_quadric(d) when d is symmetric, finite, and its leading minors d1, d2, d3 and det d are
 /// non-zero (then the type is one of ellipsoid, imaginary ellipsoid, hyperboloid of one or two
 /// sheets); nullopt otherwise (the exact path decides).
 std::optional<QuadricKind> certified_kind(const DoubleMatrix4& d);
 
-}  // namespace relpos::shape_filter
+}  // namespace relpos::detail::shape_filter

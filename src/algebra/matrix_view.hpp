@@ -7,7 +7,7 @@
 
 #include "relpos/quadric.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 /// Matrix view with entries converted to NT, for the generic pencil code (m(i, j), row-major).
 template <class NT>
@@ -39,4 +39,4 @@ std::array<mpz_ptr, 16> entries(MatrixOf<NT>& m) {
   return out;
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

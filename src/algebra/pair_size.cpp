@@ -19,7 +19,7 @@ namespace {
 /// integer form, num * (l / den), has at most bits(num) + bits(l) - bits(den) + 1 bits.
 std::size_t normalized_bits_bound(const Matrix4& m) {
   Integer l(1);
-  forms::lcm_of_denominators(m.a.begin(), m.a.end(), l);
+  detail::forms::lcm_of_denominators(m.a.begin(), m.a.end(), l);
   const std::size_t lb = mpz_sizeinbase(l.mpz(), 2);
   std::size_t bound = 0;
   for (const Rational& q : m.a)

@@ -1,6 +1,6 @@
 // The pair's size limit (relpos::SizeLimit, quadric.hpp) on the storage of any two quadrics
 // (defined in pair_size.cpp): the bits of a matrix's primitive integer form and one check, with one
-// message, for the paraboloid's pair and a general pair (io::check_general_pair_size).
+// message, for the paraboloid's pair and a general pair (detail::io::check_general_pair_size).
 #pragma once
 
 #include <cstddef>

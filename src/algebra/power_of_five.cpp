@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 namespace {
 
 /// 5^0 .. 5^(filled - 1), filled on demand; entries never move (a fixed array).
@@ -79,4 +79,4 @@ unsigned long remove_fives(mpz_ptr x, unsigned long most) {
   return removed;
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

@@ -4,7 +4,7 @@
 
 #include <gmp.h>
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 /// out = 5^k: copied from a per-thread table of the powers met so far (k up to 512; beyond, computed):
 /// the reductions by decimal scales need the same few powers line after line, and mpz_ui_pow_ui
@@ -18,4 +18,4 @@ void times_power_of_five(mpz_ptr out, mpz_srcptr x, unsigned long k);
 /// is x's (r = x + k 5^27). No mpz temporaries, unlike mpz_remove.
 unsigned long remove_fives(mpz_ptr x, unsigned long most);
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

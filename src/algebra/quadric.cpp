@@ -86,15 +86,15 @@ std::array<Rational, N> exact_array(const std::array<double, N>& d) {
 /// only 2s and 5s there).
 Rational squared_norm_minus(const Vector3& c, const Rational& r) {
   Integer l(1), num, t;  // fresh: written through mpz()
-  forms::lcm_of_denominators(c.begin(), c.end(), l);
-  forms::fold_lcm(l.mpz(), mpq_denref(r.mpq()));
+  detail::forms::lcm_of_denominators(c.begin(), c.end(), l);
+  detail::forms::fold_lcm(l.mpz(), mpq_denref(r.mpq()));
   for (const Rational& x : c) {
-    forms::scaled_numerator(x, l, t.mpz());
+    detail::forms::scaled_numerator(x, l, t.mpz());
     mpz_addmul(num.mpz(), t.mpz(), t.mpz());
   }
-  forms::scaled_numerator(r, l, t.mpz());
+  detail::forms::scaled_numerator(r, l, t.mpz());
   mpz_submul(num.mpz(), t.mpz(), t.mpz());
-  return forms::divided_by_power(num, forms::split_scale(l), 2);
+  return detail::forms::divided_by_power(num, detail::forms::split_scale(l), 2);
 }
 
 }  // namespace
@@ -143,9 +143,9 @@ bool exactly_symmetric(const Matrix4& q) {
 }
 
 /// Certified enclosures of the entries (CGAL::to_interval; rounding towards +inf by the caller).
-std::array<shape_filter::impl::I, 16> entry_intervals(const Matrix4& q) {
-  std::array<shape_filter::impl::I, 16> x;
-  for (std::size_t k = 0; k < 16; ++k) x[k] = shape_filter::impl::I(CGAL::to_interval(q.a[k]));
+std::array<detail::shape_filter::impl::I, 16> entry_intervals(const Matrix4& q) {
+  std::array<detail::shape_filter::impl::I, 16> x;
+  for (std::size_t k = 0; k < 16; ++k) x[k] = detail::shape_filter::impl::I(CGAL::to_interval(q.a[k]));
   return x;
 }
 
@@ -156,7 +156,7 @@ int filtered_ellipsoid(const Matrix4& e) {
   const int want = CGAL::sign(e(0, 0));
   if (want == 0 || !exactly_symmetric(e)) return 0;
   CGAL::Protect_FPU_rounding<true> guard;
-  return shape_filter::certified_ellipsoid_intervals(entry_intervals(e), want) == want ? want : 0;
+  return detail::shape_filter::certified_ellipsoid_intervals(entry_intervals(e), want) == want ? want : 0;
 }
 
 /// The same for an elliptic paraboloid: the sign of the trace of Q3 when certain. det Q3 = 0 is
@@ -164,12 +164,13 @@ int filtered_ellipsoid(const Matrix4& e) {
 /// inertia).
 int filtered_paraboloid(const Matrix4& p) {
   if (!exactly_symmetric(p)) return 0;
-  if (!shape_filter::impl::zero_by_pattern(CGAL::is_zero(p.a[0]), CGAL::is_zero(p.a[1]), CGAL::is_zero(p.a[2]),
-                                           CGAL::is_zero(p.a[5]), CGAL::is_zero(p.a[6]), CGAL::is_zero(p.a[10]))) {
-    if (!CGAL::is_zero(shape_filter::impl::det3<Rational>(p.a))) return 0;
+  if (!detail::shape_filter::impl::zero_by_pattern(CGAL::is_zero(p.a[0]), CGAL::is_zero(p.a[1]), CGAL::is_zero(p.a[2]),
+                                                   CGAL::is_zero(p.a[5]), CGAL::is_zero(p.a[6]),
+                                                   CGAL::is_zero(p.a[10]))) {
+    if (!CGAL::is_zero(detail::shape_filter::impl::det3<Rational>(p.a))) return 0;
   }
   CGAL::Protect_FPU_rounding<true> guard;
-  return shape_filter::certified_paraboloid_intervals(entry_intervals(p));
+  return detail::shape_filter::certified_paraboloid_intervals(entry_intervals(p));
 }
 
 }  // namespace
@@ -259,7 +260,7 @@ Paraboloid Paraboloid::from_coefficients(const Coefficients10& c) {
 Paraboloid Paraboloid::standard(const Vector3& v, const Rational& a, const Rational& b, const Quaternion& q) {
   if (a <= 0 || b <= 0)
     throw InputError("paraboloid parameters a, b must be positive, got a = " + to_string(a) + ", b = " + to_string(b));
-  const Rational ia = forms::inverse_square(a), ib = forms::inverse_square(b);
+  const Rational ia = detail::forms::inverse_square(a), ib = detail::forms::inverse_square(b);
   // A congruence of the standard paraboloid by an invertible affine map is an elliptic paraboloid
   // with the same orientation (Sylvester's law of inertia): no validation, no sign normalization.
   if (q[0] != 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) {

@@ -149,7 +149,7 @@ bool all_finite(const DoubleMatrix4& d) {
 /// classification). Its orientation when it finds an ellipsoid and one is wanted (the sign of the
 /// first entry: Q3 is definite), else 0: the exact path decides.
 int kind_orientation(const DoubleMatrix4& d, QuadricKind want, void (*refuse)(QuadricKind)) {
-  const std::optional<QuadricKind> k = shape_filter::certified_kind(d);
+  const std::optional<QuadricKind> k = detail::shape_filter::certified_kind(d);
   if (k && *k != want) refuse(*k);
   return k && *k == QuadricKind::Ellipsoid ? (d[0] > 0 ? 1 : -1) : 0;
 }
@@ -163,10 +163,10 @@ int kind_orientation(const DoubleMatrix4& d, QuadricKind want, void (*refuse)(Qu
   // normalized doubles are finite, so all_finite runs only when the normalization did not.
   Ellipsoid out(e);
   const DoubleMatrix4* normalized = out.m_.filter_doubles();
-  int orientation = shape_filter::certified_ellipsoid_in_doubles(normalized);
+  int orientation = detail::shape_filter::certified_ellipsoid_in_doubles(normalized);
   if (orientation == 0) {
     [&]() __attribute__((noinline)) {
-      orientation = normalized || all_finite(e) ? shape_filter::certified_ellipsoid_by_intervals(e) : 0;
+      orientation = normalized || all_finite(e) ? detail::shape_filter::certified_ellipsoid_by_intervals(e) : 0;
       // Not certified (or not an ellipsoid): the exact path decides and names what the matrix is.
       if (orientation == 0) orientation = kind_orientation(e, QuadricKind::Ellipsoid, detail::refuse_as_ellipsoid);
       if (orientation == 0) out = Ellipsoid(*from_matrix(exact_matrix(e)).doubles());
@@ -182,10 +182,10 @@ int kind_orientation(const DoubleMatrix4& d, QuadricKind want, void (*refuse)(Qu
 [[gnu::flatten]] Paraboloid Paraboloid::from_doubles(const DoubleMatrix4& p) {
   Paraboloid out(p);
   const DoubleMatrix4* normalized = out.m_.filter_doubles();
-  int orientation = shape_filter::certified_paraboloid_in_doubles(p, normalized);
+  int orientation = detail::shape_filter::certified_paraboloid_in_doubles(p, normalized);
   if (orientation == 0) {
     [&]() __attribute__((noinline)) {
-      orientation = normalized || all_finite(p) ? shape_filter::certified_paraboloid_by_intervals(p) : 0;
+      orientation = normalized || all_finite(p) ? detail::shape_filter::certified_paraboloid_by_intervals(p) : 0;
       if (orientation == 0) kind_orientation(p, QuadricKind::EllipticParaboloid, detail::refuse_as_paraboloid);
       if (orientation == 0) out = Paraboloid(*from_matrix(exact_matrix(p)).doubles());
     }

@@ -169,11 +169,11 @@ QuadricKind classify_quadric(const Matrix4& q) {
   // The signs on the matrix's primitive integer form (a positive multiple): products of integers,
   // no gcd, and a matrix scaled by 10^300 or 10^-300 costs what the unscaled one does.
   Integer l, g;  // fresh: written through mpz()
-  forms::MatrixOf<Integer> z = forms::integer_form(q, l);
+  detail::forms::MatrixOf<Integer> z = detail::forms::integer_form(q, l);
   for (const Integer& x : z.a)
     if (mpz_cmp_ui(g.mpz(), 1) != 0) mpz_gcd(g.mpz(), g.mpz(), x.mpz());  // stops at 1, as most do at once
   if (mpz_cmp_ui(g.mpz(), 1) > 0) {
-    forms::MatrixOf<Integer> w;  // fresh integers (an entry of z may share its value with another)
+    detail::forms::MatrixOf<Integer> w;  // fresh integers (an entry of z may share its value with another)
     for (std::size_t i = 0; i < 16; ++i) mpz_divexact(w.a[i].mpz(), z.a[i].mpz(), g.mpz());
     z = w;
   }

@@ -20,7 +20,7 @@
 #include "algebra/rounding.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::shape_filter {
+namespace relpos::detail::shape_filter {
 
 namespace impl {
 
@@ -434,4 +434,4 @@ inline int certified_paraboloid_in_doubles(const DoubleMatrix4& d, const DoubleM
   return zero && *zero ? trace_sign : 0;
 }
 
-}  // namespace relpos::shape_filter
+}  // namespace relpos::detail::shape_filter

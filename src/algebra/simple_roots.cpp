@@ -48,8 +48,8 @@ bool certified_real_roots(const Integer* h, int n, std::size_t expected, std::ve
       if (sl != 0 && sh != 0 && sl != sh) {
         RealRoot& root = out.emplace_back();  // fresh bounds: written in place
         root.sign = r < 0 ? -1 : 1;
-        forms::set_double(root.lower.mpq(), lo);
-        forms::set_double(root.upper.mpq(), hi);
+        detail::forms::set_double(root.lower.mpq(), lo);
+        detail::forms::set_double(root.upper.mpq(), hi);
         prev_hi = hi;
         ok = true;
       }

@@ -7,7 +7,7 @@
 
 #include "algebra/power_of_five.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 namespace {
 
 /// rest^k for k = 0..4 and the rest as its one factor (a scale whose rest is not 1).
@@ -150,4 +150,4 @@ SplitScale split_scale(unsigned long twos, unsigned long fives, const Integer& r
   return out;
 }
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

@@ -8,7 +8,7 @@
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::forms {
+namespace relpos::detail::forms {
 
 /// A positive integer scale split as 2^twos 5^fives rest, and rest^k for the powers a caller
 /// divides by. The rest is also kept as a product of pairwise coprime factors base^power (one
@@ -41,4 +41,4 @@ SplitScale split_scale(const Integer& scale, const Matrix4& m);
 SplitScale split_scale(unsigned long twos, unsigned long fives, const Integer& rest,
                        const std::vector<SplitScale::Factor>& rests);
 
-}  // namespace relpos::forms
+}  // namespace relpos::detail::forms

@@ -9,7 +9,7 @@
 
 #include "algebra/forms.hpp"
 
-namespace relpos::anysize {
+namespace relpos::detail::anysize {
 
 Poly trimmed(Poly p) {
   while (!p.empty() && p.back() == 0) p.pop_back();
@@ -363,4 +363,4 @@ AnySizeFacts any_size_facts(const Poly& f, const Poly& s) {
   return x;
 }
 
-}  // namespace relpos::anysize
+}  // namespace relpos::detail::anysize

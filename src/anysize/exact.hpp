@@ -15,7 +15,7 @@
 #include "relpos/numbers.hpp"
 #include "relpos/polynomials.hpp"
 
-namespace relpos::anysize {
+namespace relpos::detail::anysize {
 
 /// Polynomial over Q, index = power; no trailing zeros (the zero polynomial is empty). Evaluated by
 /// relpos::evaluate (relpos/polynomials.hpp).
@@ -114,4 +114,4 @@ Poly to_poly(const Z* c, std::size_t n) {
   return trimmed(std::move(p));
 }
 
-}  // namespace relpos::anysize
+}  // namespace relpos::detail::anysize

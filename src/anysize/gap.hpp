@@ -23,7 +23,7 @@
 #include "algebra/pencil.hpp"
 #include "algebra/sturm.hpp"
 
-namespace relpos::anysize {
+namespace relpos::detail::anysize {
 
 /// Number of quantities of the gap test: d, then U, V, W for f', f'', f''' (GapQuantities::flatten).
 inline constexpr int kGapSigns = 10;
@@ -126,4 +126,4 @@ std::optional<bool> roots_above_lambda_s(const Quartic<NT>& f, const Quadratic<N
   return roots_above_lambda_s(GapQuantities<NT>(f, s), [](const NT& x) { return certain_sign(x); });
 }
 
-}  // namespace relpos::anysize
+}  // namespace relpos::detail::anysize

@@ -3,7 +3,7 @@
 #include "certificate/curve.hpp"
 #include "certificate/kinds.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 void build(const detail::PairContext& pair, Position position, Certificate& c) {
   switch (position) {
@@ -26,4 +26,4 @@ Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position) {
   return c;
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

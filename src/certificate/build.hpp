@@ -7,7 +7,7 @@
 #include "pair/pair.hpp"
 #include "relpos/position.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 /// The certificate of `position` for the pair (which must be the pair's position), written into `out`,
 /// a default-constructed certificate (a caller's member: one certificate's two dozen exact numbers are
@@ -18,4 +18,4 @@ void build(const detail::PairContext& pair, Position position, Certificate& out)
 /// The same for a pair alone.
 Certificate build(const Ellipsoid& e, const Paraboloid& p, Position position);
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

@@ -18,7 +18,7 @@
 #include "certificate/rational_search.hpp"
 #include "certificate/secular_search.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 namespace {
 
 using detail::EnclosureMatrix4;
@@ -187,4 +187,4 @@ void crossing_points(const PairContext& pr, Certificate& c) {
   c.outside = *search.outside;
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

@@ -2,7 +2,7 @@
 
 #include "algebra/centre.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 Rational form(const Matrix4& q, const V3& x) {
   Rational acc = q(3, 3);
@@ -29,4 +29,4 @@ std::logic_error internal_error(const std::string& what) {
   return std::logic_error("relpos internal error: " + what + " (please report the input)");
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

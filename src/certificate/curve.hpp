@@ -12,7 +12,7 @@
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 using V3 = std::array<Rational, 3>;
 using detail::PairContext;
@@ -31,4 +31,4 @@ std::optional<V3> x_of(const PairContext& pr, const Rational& lambda);
 /// The error of a certificate that cannot be built (an internal error, doc/certificates.md).
 std::logic_error internal_error(const std::string& what);
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

@@ -11,7 +11,7 @@
 #include "certificate/kinds.hpp"
 #include "certificate/rational_search.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 namespace {
 
 /// A lambda in the domain with f(lambda) > 0 from the isolating intervals of f's real roots: f has
@@ -58,4 +58,4 @@ void definite(const detail::PairContext& pr, Position position, Certificate& c) 
   c.lambda = *l;
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

@@ -8,7 +8,7 @@
 #include "certificate/rational_search.hpp"
 #include "filters/checked_int.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 std::optional<Enclosure3> enclosure(const V3& x) {
   Enclosure3 out;
@@ -218,4 +218,4 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
   }
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

@@ -14,7 +14,7 @@
 #include "certificate/curve.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 /// Tight enclosures of a point's coordinates (forms::tight_interval).
 using Enclosure3 = std::array<std::pair<double, double>, 3>;
@@ -48,4 +48,4 @@ void double_curve_search(const DoubleMatrix4& em, const DoubleMatrix4& pm, const
                          const V3& centre, const std::optional<V3>& inside, const std::optional<V3>& outside,
                          const Consider& consider, DoubleBracket (&brackets)[2]);
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

@@ -7,7 +7,7 @@
 
 #include "certificate/kinds.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 namespace {
 
 using anysize::LambdaS;
@@ -131,4 +131,4 @@ bool hard_case(const detail::PairContext& pr, Certificate& c) {
   return true;
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

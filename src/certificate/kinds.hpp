@@ -5,7 +5,7 @@
 #include "pair/pair.hpp"
 #include "relpos/position.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 /// E, I (definite.cpp): lambda with lambda P + E positive definite.
 void definite(const detail::PairContext& pr, Position position, Certificate& c);
@@ -18,4 +18,4 @@ bool hard_case(const detail::PairContext& pr, Certificate& c);
 /// C (crossing.cpp): two points of the solid ellipsoid with p < 0 and p > 0.
 void crossing_points(const detail::PairContext& pr, Certificate& c);
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

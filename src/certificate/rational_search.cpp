@@ -2,7 +2,7 @@
 
 #include <gmp.h>
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 namespace {
 
 int sgn(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
@@ -85,4 +85,4 @@ int RootBoxes::variations(const Rational& x) {
   return anysize::variations(signs_);
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

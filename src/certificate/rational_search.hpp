@@ -15,7 +15,7 @@
 #include "pair/integer_poly.hpp"
 #include "relpos/numbers.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 using detail::power_of_two;
 /// floor(log2 |x|) up to one, for x != 0.
@@ -127,4 +127,4 @@ bool refine_root(const detail::IntegerPoly& q, Rational good, Rational bad, Acce
   return false;
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

@@ -9,7 +9,7 @@
 #include "certificate/kinds.hpp"
 #include "certificate/rational_search.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 Secular::Secular(const PairContext& pr) {
   detail::flint_thread_cleanup_at_exit();
@@ -177,4 +177,4 @@ void max_side_point(const PairContext& pr, const Secular& sec, std::optional<V3>
   refine_root(sec.e, Rational(0), *lo, curve_accept(pr, sec, 1, found, consider), sec.budget);
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

@@ -12,7 +12,7 @@
 #include "certificate/double_search.hpp"
 #include "pair/integer_poly.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 /// The signs of e and p along the curve x(lambda), lambda in (lambda_s, oo), from two polynomials
 /// (math.md §8): lambda p + e is f/s at x(lambda), and its derivative in lambda is p(x(lambda))
@@ -46,4 +46,4 @@ void min_side_point(const PairContext& pr, const Secular& sec, std::optional<V3>
 /// The point of the solid with p > 0 from the max side, exactly, the hard case included.
 void max_side_point(const PairContext& pr, const Secular& sec, std::optional<V3>& found, const ConsiderExact& consider);
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

@@ -5,7 +5,7 @@
 #include "certificate/kinds.hpp"
 #include "certificate/rational_search.hpp"
 
-namespace relpos::certificate {
+namespace relpos::detail::certificate {
 
 void tangent(const detail::PairContext& pr, Position position, Certificate& c) {
   const anysize::Poly& f = pr.f_poly();
@@ -28,4 +28,4 @@ void tangent(const detail::PairContext& pr, Position position, Certificate& c) {
   throw internal_error("no contact point for a pair classified " + to_string(position));
 }
 
-}  // namespace relpos::certificate
+}  // namespace relpos::detail::certificate

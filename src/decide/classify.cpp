@@ -65,8 +65,8 @@ Verdict decide_position(const DoubleMatrix4& e, const DoubleMatrix4& p) {
   Paraboloid par = QuadricAccess::from_doubles_unchecked<Paraboloid>(p);
   detail::QuadricMatrix& em = QuadricAccess::storage(ell);
   detail::QuadricMatrix& pm = QuadricAccess::storage(par);
-  const int oe = shape_filter::ellipsoid_before_det_if_nearest(em.filter_doubles());
-  const int op = oe != 0 ? shape_filter::paraboloid_before_det(p, pm.filter_doubles()) : 0;
+  const int oe = detail::shape_filter::ellipsoid_before_det_if_nearest(em.filter_doubles());
+  const int op = oe != 0 ? detail::shape_filter::paraboloid_before_det(p, pm.filter_doubles()) : 0;
   if (op != 0) {
     if (oe < 0) em.negate_doubles();
     if (op < 0) pm.negate_doubles();

@@ -126,22 +126,24 @@ inline bool small_entries(const forms::MatrixOf<PooledInteger>& m, forms::Matrix
 /// g = exact_characteristic_polynomial(p, e) and h = exact_special_polynomial(p, e) in fixed-size
 /// integers, written into g and h, for entries all below 2^62 in absolute value (the caller's
 /// promise: the proof above rests on it).
-inline void small_pencil_polynomials(const forms::MatrixOf<std::int64_t>& p, const forms::MatrixOf<std::int64_t>& e,
-                                     Quartic<PooledInteger>& g, Quadratic<PooledInteger>& h) {
+inline void small_pencil_polynomials(const detail::forms::MatrixOf<std::int64_t>& p,
+                                     const detail::forms::MatrixOf<std::int64_t>& e, Quartic<PooledInteger>& g,
+                                     Quadratic<PooledInteger>& h) {
   // The minors in 128 bits: products of two 64-bit words.
   const Quartic<detail::Int320> gs =
-      exact_characteristic_polynomial<Int128, forms::MatrixOf<std::int64_t>, detail::Int320>(p, e);
+      exact_characteristic_polynomial<Int128, detail::forms::MatrixOf<std::int64_t>, detail::Int320>(p, e);
   const Quadratic<detail::Int320> hs =
-      exact_special_polynomial<Int128, forms::MatrixOf<std::int64_t>, detail::Int320>(p, e);
+      exact_special_polynomial<Int128, detail::forms::MatrixOf<std::int64_t>, detail::Int320>(p, e);
   for (std::size_t i = 0; i < 5; ++i) gs[i].to_mpz(g[i].mpz());
   for (std::size_t i = 0; i < 3; ++i) hs[i].to_mpz(h[i].mpz());
 }
 
 /// The same for integer matrices in pooled integers when every entry is below 2^62 in absolute
 /// value; false (g and h untouched) otherwise.
-inline bool small_pencil_polynomials(const forms::MatrixOf<PooledInteger>& p, const forms::MatrixOf<PooledInteger>& e,
-                                     Quartic<PooledInteger>& g, Quadratic<PooledInteger>& h) {
-  forms::MatrixOf<std::int64_t> ps, es;
+inline bool small_pencil_polynomials(const detail::forms::MatrixOf<PooledInteger>& p,
+                                     const detail::forms::MatrixOf<PooledInteger>& e, Quartic<PooledInteger>& g,
+                                     Quadratic<PooledInteger>& h) {
+  detail::forms::MatrixOf<std::int64_t> ps, es;
   if (!detail::small_entries(p, ps) || !detail::small_entries(e, es)) return false;
   small_pencil_polynomials(ps, es, g, h);
   return true;

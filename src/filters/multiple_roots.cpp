@@ -16,7 +16,7 @@ using Int = CheckedInt::Int;
 // ---------------------------------------------------------------------------------------------
 // Exact integer matrices from exact doubles.
 
-using forms::MatrixOf;
+using detail::forms::MatrixOf;
 
 /// m scaled by the power of two that makes every entry an integer with an odd entry somewhere
 /// (exact: the bits are read directly, no libm call). Returns the largest bit length of an entry,

@@ -21,7 +21,7 @@ namespace {
 using Lanes = RunningBoundLanes;
 
 template <class NT>
-using View = forms::MatrixOf<NT>;
+using View = detail::forms::MatrixOf<NT>;
 
 constexpr int kQuantities = 13;              // f0..f4, g2[0..2], g1[0..1], g0, vertex, graeffe
 constexpr double kEntryFloor = 0x1p-60;      // smallest non-zero |entry| accepted (degree 4: >= 2^-240)
@@ -40,7 +40,7 @@ bool evaluate(const DoubleMatrix4& pn, const DoubleMatrix4& en, NT out[kQuantiti
   for (const DoubleMatrix4* m : {&pn, &en})
     for (double x : *m)
       if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return false;
-  return evaluate(forms::converted<NT>(pn), forms::converted<NT>(en), out);
+  return evaluate(detail::forms::converted<NT>(pn), detail::forms::converted<NT>(en), out);
 }
 
 /// f and s in NT, balanced (lambda = 2^t mu, |f4| 2^(4t) ~ |f0|) and each brought near 1, by powers
@@ -103,26 +103,26 @@ bool evaluate_discriminant(const View<NT>& p, const View<NT>& e, NT out[kDiscrim
 
 /// The gap test's quantities (anysize/gap.hpp) in NT, in GapQuantities::flatten order.
 template <class NT>
-bool evaluate_gap(const View<NT>& p, const View<NT>& e, NT out[anysize::kGapSigns]) {
+bool evaluate_gap(const View<NT>& p, const View<NT>& e, NT out[detail::anysize::kGapSigns]) {
   Quartic<NT> f;
   Quadratic<NT> s;
   if (!scaled_pencil(p, e, f, s, kGapCoeffFloor)) return false;
-  anysize::GapQuantities<NT>(f, s).flatten(out);
+  detail::anysize::GapQuantities<NT>(f, s).flatten(out);
   return true;
 }
 
 /// Operation counts of the gap program, from RunningBound (as counts() below).
-const std::array<int, anysize::kGapSigns>& gap_counts() {
-  static const std::array<int, anysize::kGapSigns> c = [] {
+const std::array<int, detail::anysize::kGapSigns>& gap_counts() {
+  static const std::array<int, detail::anysize::kGapSigns> c = [] {
     DoubleMatrix4 one;
     one.fill(0.5);
-    RunningBound q[anysize::kGapSigns];
-    std::array<int, anysize::kGapSigns> r{};
-    if (!evaluate_gap(forms::converted<RunningBound>(one), forms::converted<RunningBound>(one), q)) {
+    RunningBound q[detail::anysize::kGapSigns];
+    std::array<int, detail::anysize::kGapSigns> r{};
+    if (!evaluate_gap(detail::forms::converted<RunningBound>(one), detail::forms::converted<RunningBound>(one), q)) {
       r.fill(1 << 20);  // cannot happen for these inputs; if it did, certify nothing
       return r;
     }
-    for (int i = 0; i < anysize::kGapSigns; ++i) r[static_cast<std::size_t>(i)] = q[i].count();
+    for (int i = 0; i < detail::anysize::kGapSigns; ++i) r[static_cast<std::size_t>(i)] = q[i].count();
     return r;
   }();
   return c;
@@ -183,8 +183,8 @@ const std::array<int, kQuantities>& counts_translated() {
     View<RunningBound> moved;
     RunningBound q[kQuantities];
     std::array<int, kQuantities> r{};
-    if (!translate(forms::converted<RunningBound>(one), {0.25, 0.25, 0.25}, moved) ||
-        !evaluate(forms::converted<RunningBound>(one), moved, q)) {
+    if (!translate(detail::forms::converted<RunningBound>(one), {0.25, 0.25, 0.25}, moved) ||
+        !evaluate(detail::forms::converted<RunningBound>(one), moved, q)) {
       r.fill(1 << 20);  // cannot happen for these inputs; if it did, certify nothing
       return r;
     }
@@ -292,14 +292,14 @@ std::optional<bool> semi_static_roots_above_lambda_s(const DoubleMatrix4& pn, co
   for (const DoubleMatrix4* m : {&pn, &en})
     for (double x : *m)
       if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return std::nullopt;
-  const std::array<int, anysize::kGapSigns>& counts = gap_counts();
-  Lanes q[anysize::kGapSigns];
-  if (!evaluate_gap(forms::converted<Lanes>(pn), forms::converted<Lanes>(en), q)) return std::nullopt;
-  std::optional<int> signs[anysize::kGapSigns];
-  for (int i = 0; i < anysize::kGapSigns; ++i)
+  const std::array<int, detail::anysize::kGapSigns>& counts = gap_counts();
+  Lanes q[detail::anysize::kGapSigns];
+  if (!evaluate_gap(detail::forms::converted<Lanes>(pn), detail::forms::converted<Lanes>(en), q)) return std::nullopt;
+  std::optional<int> signs[detail::anysize::kGapSigns];
+  for (int i = 0; i < detail::anysize::kGapSigns; ++i)
     if (const int c = RunningBound::certain_sign(q[i].value(), q[i].magnitude(), counts[static_cast<std::size_t>(i)]))
       signs[i] = c;
-  return anysize::roots_above_lambda_s(signs);
+  return detail::anysize::roots_above_lambda_s(signs);
 }
 
 DecisionSigns semi_static_filter_signs_translated(const DoubleMatrix4& pn, const DoubleMatrix4& en,
@@ -309,7 +309,8 @@ DecisionSigns semi_static_filter_signs_translated(const DoubleMatrix4& pn, const
     if (x != 0 && !(std::fabs(x) >= kEntryFloor)) return DecisionSigns{};
   View<Lanes> moved;
   Lanes q[kQuantities];
-  if (!translate(forms::converted<Lanes>(en), d, moved) || !evaluate(forms::converted<Lanes>(pn), moved, q))
+  if (!translate(detail::forms::converted<Lanes>(en), d, moved) ||
+      !evaluate(detail::forms::converted<Lanes>(pn), moved, q))
     return DecisionSigns{};
   USign c[kQuantities];
   for (int i = 0; i < kQuantities; ++i) c[i] = certified(q[i], counts[static_cast<std::size_t>(i)]);

@@ -29,7 +29,7 @@ constexpr double kEps0 = detail::kStaticFilterEps0;
 
 using Bounds = detail::StaticFilterBounds;
 
-constexpr int kDisc27 = Bounds::kDisc27, kGap = Bounds::kGap, kSecondStage = kGap + anysize::kGapSigns;
+constexpr int kDisc27 = Bounds::kDisc27, kGap = Bounds::kGap, kSecondStage = kGap + detail::anysize::kGapSigns;
 static_assert(kSecondStage == sizeof Bounds::a / sizeof(double), "one bound per second-stage quantity");
 
 void second_stage(const Sfe& in, double out[kSecondStage]) {
@@ -42,9 +42,9 @@ void second_stage(const Sfe& in, double out[kSecondStage]) {
   const Sfe q[9] = {
       sh.g2[0], sh.g2[1], sh.g2[2], sh.g1[0], sh.g1[1], sh.g0[0], sq.vertex, sq.graeffe, discriminant_times_27(f)};
   for (int i = 0; i < 9; ++i) out[i] = q[i].error();
-  Sfe gap[anysize::kGapSigns];
-  anysize::GapQuantities<Sfe>(f, s).flatten(gap);
-  for (int i = 0; i < anysize::kGapSigns; ++i) out[kGap + i] = gap[i].error();
+  Sfe gap[detail::anysize::kGapSigns];
+  detail::anysize::GapQuantities<Sfe>(f, s).flatten(gap);
+  for (int i = 0; i < detail::anysize::kGapSigns; ++i) out[kGap + i] = gap[i].error();
 }
 
 // noinline: computed once; kept out of the flattened hot functions below (it is large).
@@ -148,7 +148,7 @@ DecisionSigns static_filter_signs(const DoubleMatrix4& pin, const DoubleMatrix4&
 
 namespace {
 
-using View = forms::DoubleView;
+using View = detail::forms::DoubleView;
 
 }  // namespace
 
@@ -296,12 +296,12 @@ template <class F>
   // One branch, rarely taken: `&` rather than `&&`, whose first test (the case) is unpredictable.
   if (gap && (static_cast<int>(out.discriminant_case() == DiscriminantCase::AllNegative) &
               static_cast<int>(out.rho_vs_one() == 1))) {
-    double q[anysize::kGapSigns];
-    anysize::GapQuantities<double>(f, s).flatten(q);
-    std::optional<int> signs[anysize::kGapSigns];
-    for (int i = 0; i < anysize::kGapSigns; ++i)
+    double q[detail::anysize::kGapSigns];
+    detail::anysize::GapQuantities<double>(f, s).flatten(q);
+    std::optional<int> signs[detail::anysize::kGapSigns];
+    for (int i = 0; i < detail::anysize::kGapSigns; ++i)
       signs[i] = detail::certain(certified(q[i], b.a[kGap + i] + b.r[kGap + i] * eps));
-    *gap = anysize::roots_above_lambda_s(signs);
+    *gap = detail::anysize::roots_above_lambda_s(signs);
   }
 }
 

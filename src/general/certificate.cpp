@@ -10,7 +10,7 @@
 #include "general/quadratic_field.hpp"
 #include "general/witness.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 namespace {
 
 std::logic_error internal_error(const std::string& what) { return std::logic_error("relpos internal error: " + what); }
@@ -153,4 +153,4 @@ QuadricCertificate build_certificate(const Matrix4& e, const Matrix4& q, const E
   throw internal_error("no certificate for a pair classified " + name);
 }
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

@@ -4,7 +4,7 @@
 #include "general/exact.hpp"
 #include "relpos/general_position.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 /// The certificate of ev's verdict for the stored (sign-normalized) matrices e and q; `scale` turns
 /// the integer pencil's multipliers s into multipliers t = s * scale of Q + t E. Throws
@@ -13,4 +13,4 @@ namespace relpos::general {
 QuadricCertificate build_certificate(const Matrix4& e, const Matrix4& q, const ExactEvidence& ev,
                                      const Rational& scale);
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

@@ -49,22 +49,22 @@ std::string describe(QuadricRule r) {
 }
 
 QuadricVerdict decide_position_exact(const Ellipsoid& e, const Quadric& q) {
-  const general::IntegerPencil p = general::integer_pencil(e.matrix(), q.matrix());
-  QuadricVerdict v = general::decide(general::exact_facts(p, q.type() == QuadricType::Ellipsoid));
+  const detail::general::IntegerPencil p = detail::general::integer_pencil(e.matrix(), q.matrix());
+  QuadricVerdict v = detail::general::decide(detail::general::exact_facts(p, q.type() == QuadricType::Ellipsoid));
   v.type = q.type();
   v.stage = QuadricStage::Exact;
   return v;
 }
 
 QuadricVerdict decide_position(const Ellipsoid& e, const Quadric& q) {
-  if (const std::optional<QuadricVerdict> v = general::filtered_decision(e, q)) return *v;
+  if (const std::optional<QuadricVerdict> v = detail::general::filtered_decision(e, q)) return *v;
   return decide_position_exact(e, q);
 }
 
 QuadricClassification classify(const Ellipsoid& e, const Quadric& q) {
   const QuadricVerdict decided = decide_position(e, q);
-  const general::IntegerPencil p = general::integer_pencil(e.matrix(), q.matrix());
-  const general::ExactEvidence ev = general::exact_evidence(p, q.type() == QuadricType::Ellipsoid);
+  const detail::general::IntegerPencil p = detail::general::integer_pencil(e.matrix(), q.matrix());
+  const detail::general::ExactEvidence ev = detail::general::exact_evidence(p, q.type() == QuadricType::Ellipsoid);
   if (ev.verdict.position != decided.position)
     throw std::logic_error("relpos internal error: the filter and the exact stage disagree (" +
                            to_string(decided.position) + " / " + to_string(ev.verdict.position) + ")");
@@ -75,8 +75,9 @@ QuadricClassification classify(const Ellipsoid& e, const Quadric& q) {
     const Matrix4& m;
     const Rational& operator()(int i, int j) const { return m(i, j); }
   };
-  const Quartic<Rational> f = general::pencil_quartic<Rational>(View{e.matrix()}, View{q.matrix()});
-  const general::Cubic<Rational> d = general::pencil_cubic<Rational>(View{e.matrix()}, View{q.matrix()});
+  const Quartic<Rational> f = detail::general::pencil_quartic<Rational>(View{e.matrix()}, View{q.matrix()});
+  const detail::general::Cubic<Rational> d =
+      detail::general::pencil_cubic<Rational>(View{e.matrix()}, View{q.matrix()});
   for (std::size_t i = 0; i < 5; ++i) c.f[i] = f[i];
   for (std::size_t i = 0; i < 4; ++i) c.d[i] = d[i];
   for (PencilRoot r : ev.roots) {
@@ -85,7 +86,7 @@ QuadricClassification classify(const Ellipsoid& e, const Quadric& q) {
     if (r.exact) *r.exact *= p.scale;
     c.roots.push_back(r);
   }
-  c.certificate = general::build_certificate(e.matrix(), q.matrix(), ev, p.scale);
+  c.certificate = detail::general::build_certificate(e.matrix(), q.matrix(), ev, p.scale);
   return c;
 }
 

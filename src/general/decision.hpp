@@ -7,7 +7,7 @@
 
 #include "relpos/general_classify.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 /// The roots of f on one side (math.md §15): in the open interval of multipliers of that side, and
 /// at its finite end.
@@ -67,4 +67,4 @@ inline constexpr std::array kAllQuadricTypes{QuadricType::Ellipsoid,
                                              QuadricType::Slab,
                                              QuadricType::HalfSpace};
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

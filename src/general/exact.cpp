@@ -13,7 +13,7 @@
 #include "algebra/between.hpp"
 #include "algebra/roots.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 namespace {
 
 using AK = CGAL::Algebraic_kernel_d_1<Integer>;
@@ -290,4 +290,4 @@ ExactEvidence exact_evidence(const IntegerPencil& p, bool ellipsoid) {
   return ev;
 }
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

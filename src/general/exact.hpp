@@ -10,7 +10,7 @@
 #include "general/integer_pencil.hpp"
 #include "relpos/general_classify.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 /// The facts of math.md §16 from the exact roots.
 PencilFacts exact_facts(const IntegerPencil& p, bool ellipsoid);
@@ -34,4 +34,4 @@ struct ExactEvidence {
 /// Everything above for a pair (the facts, the verdict, the roots and the certificate's numbers).
 ExactEvidence exact_evidence(const IntegerPencil& p, bool ellipsoid);
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

@@ -16,7 +16,7 @@
 #include "general/pencil.hpp"
 #include "general/sturm_habicht_low.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 Structure structure_of(QuadricType type) {
   switch (type) {
@@ -439,4 +439,4 @@ std::optional<QuadricVerdict> filtered_decision(const Ellipsoid& e, const Quadri
   return v;
 }
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

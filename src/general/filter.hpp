@@ -9,7 +9,7 @@
 
 #include "relpos/general_classify.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 /// What the filter can certify, or nullopt. Stage Filter.
 std::optional<QuadricVerdict> filtered_decision(const Ellipsoid& e, const Quadric& q);
@@ -23,4 +23,4 @@ struct Structure {
 };
 Structure structure_of(QuadricType type);
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

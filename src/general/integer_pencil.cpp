@@ -2,7 +2,7 @@
 
 #include <gmp.h>
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 IntegerMatrix primitive_form(const Matrix4& m, Rational& factor) {
   Integer l(1), g(0);
@@ -36,4 +36,4 @@ IntegerPencil integer_pencil(const Matrix4& e, const Matrix4& q) {
   return p;
 }
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

@@ -12,7 +12,7 @@
 #include "general/pencil.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 /// A 4x4 integer matrix, row-major, read as m(i, j) by the generic pencil code.
 struct IntegerMatrix {
@@ -32,4 +32,4 @@ struct IntegerPencil {
 
 IntegerPencil integer_pencil(const Matrix4& e, const Matrix4& q);
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

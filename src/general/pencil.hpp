@@ -11,7 +11,7 @@
 
 #include "algebra/pencil.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 template <class NT>
 using Cubic = std::array<NT, 4>;
@@ -37,4 +37,4 @@ Cubic<NT> pencil_cubic(const M& e, const M& q) {
   return d;
 }
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

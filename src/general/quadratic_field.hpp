@@ -12,7 +12,7 @@
 
 #include "relpos/general_position.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 /// u + v sqrt(n) for the field's n (n = 0: the rationals).
 struct Qn {
@@ -107,4 +107,4 @@ inline std::optional<AffineSolution> solve_affine(const QuadraticField& k, std::
   return s;
 }
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

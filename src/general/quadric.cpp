@@ -170,12 +170,12 @@ Quadric Quadric::from_doubles(const DoubleMatrix4& d) {
   // type (and names what it is when refused).
   detail::QuadricMatrix m(d);
   const DoubleMatrix4* normalized = m.filter_doubles();
-  if (const int o = shape_filter::certified_ellipsoid_in_doubles(normalized)) {
+  if (const int o = detail::shape_filter::certified_ellipsoid_in_doubles(normalized)) {
     if (o < 0) m.negate_doubles();
     return Quadric(std::move(m), QuadricType::Ellipsoid);
   }
   if (normalized)
-    if (const int o = shape_filter::certified_paraboloid_in_doubles(d, normalized)) {
+    if (const int o = detail::shape_filter::certified_paraboloid_in_doubles(d, normalized)) {
       if (o < 0) m.negate_doubles();
       return Quadric(std::move(m), QuadricType::EllipticParaboloid);
     }

@@ -10,7 +10,7 @@
 #pragma once
 
 // clang-format off (generated)
-namespace relpos::general {
+namespace relpos::detail::general {
 
 inline constexpr int kStHaCubicPower0 = 1;
 inline constexpr int kStHaCubicPower1 = 1;
@@ -28,5 +28,5 @@ void sturm_habicht_quadratic(const NT& a0, const NT& a1, const NT& a2, NT g0[1])
   g0[0] = -NT(4) * a0 * a2 + a1 * a1;
 }
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general
 // clang-format on

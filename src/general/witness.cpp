@@ -17,7 +17,7 @@
 #include "algebra/matrix4.hpp"
 #include "general/pencil.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 namespace {
 
 using detail::form_at;
@@ -429,4 +429,4 @@ Vector3 negative_point(const Matrix4& k, const Matrix4& g) {
   throw std::logic_error("relpos internal error: no crossing witness found within 8192 bits");
 }
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

@@ -4,7 +4,7 @@
 
 #include "relpos/quadric.hpp"
 
-namespace relpos::general {
+namespace relpos::detail::general {
 
 /// A rational point x with k(x) <= 0 and g(x) < 0, where K is a sign-normalized ellipsoid (3x3 block
 /// positive definite, det K < 0) and the minimum of g = X^T G X over K's solid is negative (the
@@ -15,4 +15,4 @@ namespace relpos::general {
 /// when no point is found within 8192 bits.
 Vector3 negative_point(const Matrix4& k, const Matrix4& g);
 
-}  // namespace relpos::general
+}  // namespace relpos::detail::general

@@ -12,8 +12,7 @@
 #include "io/report_text.hpp"
 #include "io/root_decimals.hpp"
 
-namespace relpos::io {
-namespace detail {
+namespace relpos::detail::io {
 namespace {
 
 /// The members of a report that depend on the verdict alone, written once: a batch line copies them.
@@ -61,7 +60,7 @@ const std::string& rule_member(Rule r) { return verdict_texts().rule.at(static_c
 const std::string& stage_member(Stage st) { return verdict_texts().stage.at(static_cast<std::size_t>(st)); }
 
 /// The full answer's multiple roots: value, interval, approx, multiplicities, tangency.
-void append_multiple_roots(const Classification& c, const RenderOptions& options, JsonWriter& w) {
+void append_multiple_roots(const Classification& c, const relpos::io::RenderOptions& options, JsonWriter& w) {
   w.raw('[');
   const auto approx_roots = root_decimals(c, options.digits, /*only_multiple=*/true);
   bool first = true;
@@ -111,7 +110,7 @@ void append_members(const Verdict& v, JsonWriter& w) {
   w.raw('}');
 }
 
-void append_members(const Classification& c, const RenderOptions& options, JsonWriter& w) {
+void append_members(const Classification& c, const relpos::io::RenderOptions& options, JsonWriter& w) {
   const Verdict& v = c.verdict;
   append_verdict_head(v, w);
   w.member("rho_vs_one");
@@ -252,15 +251,17 @@ void append_trailer(std::string_view meta, bool numbers_as_doubles, std::string&
   out.push_back('}');
 }
 
-}  // namespace detail
+std::string minimal_json_text(const Verdict& v) { return answer_text(128, v); }
+
+}  // namespace relpos::detail::io
+
+namespace relpos::io {
 
 std::string classification_json_text(const Classification& c, const RenderOptions& options) {
   // The reports of ordinary pairs fit: no reallocation.
-  return detail::answer_text(c.has_full_evidence ? 2048 : 512, c, options);
+  return detail::io::answer_text(c.has_full_evidence ? 2048 : 512, c, options);
 }
 
-std::string contact_json_text(const ContactAnswer& a) { return detail::answer_text(128, a); }
-
-std::string minimal_json_text(const Verdict& v) { return detail::answer_text(128, v); }
+std::string contact_json_text(const ContactAnswer& a) { return detail::io::answer_text(128, a); }
 
 }  // namespace relpos::io

@@ -18,14 +18,14 @@
 #include "relpos/io.hpp"
 #include "relpos/margin.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 /// The minimal answer: position, small, contact, rule, stage.
 void append_members(const Verdict& v, JsonWriter& w);
 /// The full answer (classification_json_text's members): position, small, contact, rho_vs_one,
 /// rho, rho_approx, rule, stage, disc_sign, disc_ftilde_sign, roots, and with full evidence
 /// degree_ftilde (before roots), f, s, multiple_roots and certificate.
-void append_members(const Classification& c, const RenderOptions& options, JsonWriter& w);
+void append_members(const Classification& c, const relpos::io::RenderOptions& options, JsonWriter& w);
 /// The contact-only answer (doc/contact.md): contact, position, rule, decided_by.
 void append_members(const ContactAnswer& a, JsonWriter& w);
 /// A general pair's answer (doc/cli.md, "General quadrics"): position, contact, quadric_type, rule,
@@ -74,12 +74,8 @@ bool write_error(std::string_view id, std::string_view message, std::string& out
 /// leaves `out` as it was, a whole JSON object.
 void append_trailer(std::string_view meta, bool numbers_as_doubles, std::string& out);
 
-}  // namespace relpos::io::detail
-
-namespace relpos::io {
-
 /// The minimal report of `relpos batch --evidence minimal` (without "id") as one line of JSON
 /// text: position, small, contact, rule, stage (the Python package's classify(evidence="minimal")).
 std::string minimal_json_text(const Verdict& v);
 
-}  // namespace relpos::io
+}  // namespace relpos::detail::io

@@ -21,17 +21,15 @@
 #include "io/quadric_json.hpp"
 #include "relpos/error.hpp"
 
-namespace relpos::io {
+namespace relpos::detail::io {
 namespace {
-
-using detail::Json;
 
 /// Entries allowed per array or object inside a quadric (a 4x4 matrix has 4 rows of 4).
 constexpr std::size_t kMaxQuadricEntries = 16;
 
 /// The message of a line that is not JSON, from the parser (columns count from the line's start).
 [[noreturn]] void invalid_json(std::string_view line) {
-  detail::validate_json(line);
+  validate_json(line);
   throw InputError("invalid JSON: expected one JSON object");
 }
 
@@ -44,7 +42,7 @@ struct Member {
 /// The name of a key given as its JSON text "...": the text between the quotes when it is plain
 /// (what every key of a well-formed line is), else the general parser's reading, kept in `storage`.
 std::string_view key_name(std::string_view key_text, std::string& storage) {
-  if (detail::plain_string_end(key_text, 0) == key_text.size()) return key_text.substr(1, key_text.size() - 2);
+  if (plain_string_end(key_text, 0) == key_text.size()) return key_text.substr(1, key_text.size() - 2);
   storage = Json::parse(key_text).get<std::string>();
   return storage;
 }
@@ -83,13 +81,13 @@ class LineReader {
     if (!out_.ellipsoid && ellipsoid.is_null()) throw InputError("ellipsoid: missing");
     if (given("quadric")) return read_quadric(ellipsoid, paraboloid);
     if (fixed_quadric_) {  // a scene line against a general quadric (doc/cli.md, "relpos scene")
-      if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
+      if (!out_.ellipsoid) out_.ellipsoid = ellipsoid_from_tree(ellipsoid, "ellipsoid");
       fixed_quadric_->check(*out_.ellipsoid);
       return;
     }
     if (!fixed_ && !out_.paraboloid && paraboloid.is_null()) throw InputError("paraboloid: missing");
-    if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
-    if (!fixed_ && !out_.paraboloid) out_.paraboloid = detail::paraboloid_from_tree(paraboloid, "paraboloid");
+    if (!out_.ellipsoid) out_.ellipsoid = ellipsoid_from_tree(ellipsoid, "ellipsoid");
+    if (!fixed_ && !out_.paraboloid) out_.paraboloid = paraboloid_from_tree(paraboloid, "paraboloid");
     relpos::detail::check_normalized_pair_size(*out_.ellipsoid, fixed_ ? *fixed_ : *out_.paraboloid,
                                                options_.size_limit);  // doc/cli.md, Limits
   }
@@ -107,7 +105,7 @@ class LineReader {
   /// quadrics"), its tree in `second`; the size limit as check_normalized_pair_size words it.
   void read_quadric(const Json& ellipsoid, const Json& second) {
     if (given("paraboloid")) throw InputError("a line takes \"paraboloid\" or \"quadric\", not both");
-    if (!out_.ellipsoid) out_.ellipsoid = detail::ellipsoid_from_tree(ellipsoid, "ellipsoid");
+    if (!out_.ellipsoid) out_.ellipsoid = ellipsoid_from_tree(ellipsoid, "ellipsoid");
     if (!out_.quadric) out_.quadric = quadric_from_json(second, "quadric");
     check_general_pair_size(*out_.ellipsoid, *out_.quadric, options_.size_limit);  // doc/cli.md, Limits
   }
@@ -119,25 +117,25 @@ class LineReader {
   /// The top-level object's members; every structural error is reported by the parser's message on
   /// the whole line.
   void scan() {
-    std::size_t i = detail::skip_space(line_, 0);
+    std::size_t i = skip_space(line_, 0);
     if (i == line_.size()) throw InputError("empty line");
     if (line_[i] != '{') {
-      detail::validate_json(line_);  // not JSON, or JSON that is not an object
+      validate_json(line_);  // not JSON, or JSON that is not an object
       throw InputError(scene_ ? "expected a JSON object {\"id\": ..., \"ellipsoid\": ...}"
                               : "expected a JSON object {\"id\": ..., \"ellipsoid\": ..., \"paraboloid\": ...}");
     }
-    i = detail::skip_space(line_, i + 1);
+    i = skip_space(line_, i + 1);
     if (i < line_.size() && line_[i] == '}') {
-      i = detail::skip_space(line_, i + 1);
+      i = skip_space(line_, i + 1);
     } else {
       for (;;) {
-        i = detail::skip_space(line_, member(i));
+        i = skip_space(line_, member(i));
         if (i < line_.size() && line_[i] == ',') {
-          i = detail::skip_space(line_, i + 1);
+          i = skip_space(line_, i + 1);
           continue;
         }
         if (i < line_.size() && line_[i] == '}') {
-          i = detail::skip_space(line_, i + 1);
+          i = skip_space(line_, i + 1);
           break;
         }
         invalid_json(line_);
@@ -170,12 +168,12 @@ class LineReader {
     std::size_t end = std::string_view::npos;
     bool taken = false;
     if (key == "ellipsoid")
-      taken = detail::fast_ellipsoid_at(line_.substr(i), options_.numbers_as_doubles, end, out_.ellipsoid);
+      taken = fast_ellipsoid_at(line_.substr(i), options_.numbers_as_doubles, end, out_.ellipsoid);
     else if (key == "paraboloid" && !scene_)
-      taken = detail::fast_paraboloid_at(line_.substr(i), options_.numbers_as_doubles, end, out_.paraboloid);
+      taken = fast_paraboloid_at(line_.substr(i), options_.numbers_as_doubles, end, out_.paraboloid);
     else if (key == "quadric" && !scene_)
-      taken = detail::fast_quadric_at(line_.substr(i), options_.numbers_as_doubles, end, out_.quadric);
-    end = end == std::string_view::npos ? detail::value_end(line_, i) : i + end;
+      taken = fast_quadric_at(line_.substr(i), options_.numbers_as_doubles, end, out_.quadric);
+    end = end == std::string_view::npos ? value_end(line_, i) : i + end;
     if (end == std::string_view::npos) invalid_json(line_);
     const std::string_view value = line_.substr(i, end - i);
     // nlohmann skips a byte order mark at the start of what it parses; inside a line it is not JSON.
@@ -201,8 +199,8 @@ class LineReader {
     if (known) return;
     if (unknown_.empty()) unknown_ = key.substr(0, 40);
     try {
-      if (!detail::plainly_valid(value)) detail::validate_json(value, 1);  // not stored; still JSON within the limits
-    } catch (const detail::JsonSyntaxError&) {
+      if (!plainly_valid(value)) validate_json(value, 1);  // not stored; still JSON within the limits
+    } catch (const JsonSyntaxError&) {
       invalid_json(line_);
     }
   }
@@ -211,10 +209,10 @@ class LineReader {
   void validate_members() {
     for (std::size_t m = 0; m < count_; ++m) {
       if (members_[m].key == "ellipsoid" || members_[m].key == "paraboloid" || members_[m].key == "quadric") continue;
-      if (detail::plainly_valid(members_[m].value)) continue;
+      if (plainly_valid(members_[m].value)) continue;
       try {
-        detail::validate_json(members_[m].value, 1);
-      } catch (const detail::JsonSyntaxError&) {
+        validate_json(members_[m].value, 1);
+      } catch (const JsonSyntaxError&) {
         invalid_json(line_);  // reported on the whole line, with its columns
       }
     }
@@ -226,8 +224,8 @@ class LineReader {
     for (std::size_t m = count_; m-- > 0;)  // the first one when there are two (an error below)
       if (members_[m].key == key) {
         const std::string_view value = members_[m].value;
-        if (!detail::valid_utf8(value)) {
-          stored = detail::dump_json(detail::parse_json_exact(value));
+        if (!valid_utf8(value)) {
+          stored = dump_json(parse_json_exact(value));
           if (view) *view = stored;
         } else if (view) {
           *view = value;  // byte for byte, not copied
@@ -248,8 +246,8 @@ class LineReader {
       const Member& x = members_[m];
       if ((x.key != "ellipsoid" && x.key != "paraboloid" && x.key != "quadric") || x.fast) continue;
       try {
-        (x.key == "ellipsoid" ? ellipsoid : paraboloid) = detail::parse_json(x.value, read);
-      } catch (const detail::JsonSyntaxError&) {
+        (x.key == "ellipsoid" ? ellipsoid : paraboloid) = parse_json(x.value, read);
+      } catch (const JsonSyntaxError&) {
         out_.id = std::to_string(number_);  // as for any line that is not JSON
         set_id(out_.id);
         invalid_json(line_);
@@ -320,4 +318,4 @@ void read_batch_line(std::string_view line, long line_number, const BatchOptions
   read_line(line, line_number, options, nullptr, &fixed, out, id, meta);
 }
 
-}  // namespace relpos::io
+}  // namespace relpos::detail::io

@@ -12,7 +12,7 @@
 #include "relpos/io.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::io {
+namespace relpos::detail::io {
 
 // The answer to one JSON Lines input line, as `relpos batch` writes it (doc/cli.md, "relpos batch"):
 // the one batch-line function of the CLI, the Python package and the fuzzers (batch_answer.cpp).
@@ -26,7 +26,7 @@ struct BatchOptions {
   bool numbers_as_doubles = false;     ///< each JSON number is the IEEE double nearest its text
   std::size_t max_line_bytes = kDefaultMaxLineBytes;
   SizeLimit size_limit;  ///< the pair size limit (--max-bits)
-  RenderOptions render;
+  relpos::io::RenderOptions render;
   /// > 0: every answer ends with "margin" (margin.hpp, margin_json_text), its enclosure of relative
   /// width 2^-margin_bits; 0: no margin.
   int margin_bits = 0;
@@ -82,4 +82,4 @@ void read_batch_line(std::string_view line, long line_number, const BatchOptions
 void read_batch_line(std::string_view line, long line_number, const BatchOptions& options, const GeneralPairSize& fixed,
                      BatchLine& out, std::string_view* id = nullptr, std::string_view* meta = nullptr);
 
-}  // namespace relpos::io
+}  // namespace relpos::detail::io

@@ -18,7 +18,7 @@
 #include "relpos/io.hpp"
 #include "relpos/margin.hpp"
 
-namespace relpos::io {
+namespace relpos::detail::io {
 namespace {
 
 /// The answer of a line read, at the evidence level of the options, ending with its margin when the
@@ -32,31 +32,30 @@ void answer(const BatchLine& in, std::string_view id, const BatchOptions& option
                                  ? check_general_pair_size(*in.ellipsoid, *in.quadric, options.size_limit)
                                  : 0;
     if (options.evidence == Evidence::Full && !options.contact_only)
-      detail::write_answer(id, out, with_stack_for_general(bits, [&] { return classify(*in.ellipsoid, *in.quadric); }),
-                           options.render.digits);
+      write_answer(id, out, with_stack_for_general(bits, [&] { return classify(*in.ellipsoid, *in.quadric); }),
+                   options.render.digits);
     else
-      detail::write_answer(id, out,
-                           with_stack_for_general(bits, [&] { return decide_position(*in.ellipsoid, *in.quadric); }));
+      write_answer(id, out, with_stack_for_general(bits, [&] { return decide_position(*in.ellipsoid, *in.quadric); }));
     return;
   }
   const std::optional<Margin> m =
       options.margin_bits > 0 ? std::optional<Margin>(margin(*in.ellipsoid, *in.paraboloid, options.margin_bits))
                               : std::nullopt;
   if (options.contact_only) {
-    detail::write_answer(id, out, contact(*in.ellipsoid, *in.paraboloid, options.size_limit));
+    write_answer(id, out, contact(*in.ellipsoid, *in.paraboloid, options.size_limit));
   } else if (options.evidence == Evidence::Minimal) {  // the verdict alone: classify's, without its evidence
-    detail::write_answer(id, out, decide_position(*in.ellipsoid, *in.paraboloid, options.size_limit));
+    write_answer(id, out, decide_position(*in.ellipsoid, *in.paraboloid, options.size_limit));
   } else {
     const Classification c = classify(*in.ellipsoid, *in.paraboloid, Evidence::Full, options.size_limit);
-    detail::write_answer(id, out, c, options.render);
+    write_answer(id, out, c, options.render);
   }
-  if (m) detail::append_margin_member(*m, options.render.digits, out);
+  if (m) append_margin_member(*m, options.render.digits, out);
 }
 
 /// The answer's last members (detail::append_trailer); false when out of memory there.
 bool finish(std::string_view meta, const BatchOptions& options, std::string& out) noexcept {
   try {
-    detail::append_trailer(meta, options.numbers_as_doubles, out);
+    append_trailer(meta, options.numbers_as_doubles, out);
     return true;
   } catch (...) {
     return false;
@@ -68,14 +67,13 @@ bool finish(std::string_view meta, const BatchOptions& options, std::string& out
 /// when they fit (the meta only with the id).
 void out_of_memory(std::string_view id, std::string_view meta, long line_number, const BatchOptions& options,
                    std::string& out) noexcept {
-  if (detail::write_error(id, kOutOfMemoryMessage, out)) {
+  if (write_error(id, kOutOfMemoryMessage, out)) {
     finish(meta, options, out);
     return;
   }
   char number[24];
   const auto end = std::to_chars(number, number + sizeof number, line_number).ptr;
-  if (detail::write_error(std::string_view(number, static_cast<std::size_t>(end - number)), kOutOfMemoryNoIdMessage,
-                          out)) {
+  if (write_error(std::string_view(number, static_cast<std::size_t>(end - number)), kOutOfMemoryNoIdMessage, out)) {
     finish(std::string_view(), options, out);
     return;
   }
@@ -93,19 +91,19 @@ void answer_batch_line(std::string_view line, long line_number, const BatchOptio
   try {
     read_batch_line(line, line_number, options, nullptr, in, &id, &meta);
     answer(in, id, options, out);
-    detail::append_trailer(meta, options.numbers_as_doubles, out);
+    append_trailer(meta, options.numbers_as_doubles, out);
     return;
   } catch (const InputError& err) {
-    if (detail::write_error(id, err.what(), out) && finish(meta, options, out)) return;
+    if (write_error(id, err.what(), out) && finish(meta, options, out)) return;
   } catch (const std::bad_alloc&) {
   } catch (const std::exception& err) {
     try {
       internal = std::string("internal error: ") + err.what();
     } catch (...) {
     }
-    if (!internal.empty() && detail::write_error(id, internal, out) && finish(meta, options, out)) return;
+    if (!internal.empty() && write_error(id, internal, out) && finish(meta, options, out)) return;
   } catch (...) {
-    if (detail::write_error(id, "internal error: unknown exception", out) && finish(meta, options, out)) return;
+    if (write_error(id, "internal error: unknown exception", out) && finish(meta, options, out)) return;
   }
   out_of_memory(id, meta, line_number, options, out);
 }
@@ -116,4 +114,4 @@ std::string answer_batch_line(std::string_view line, long line_number, const Bat
   return out;
 }
 
-}  // namespace relpos::io
+}  // namespace relpos::detail::io

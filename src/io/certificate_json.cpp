@@ -13,7 +13,7 @@
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 namespace {
 
 /// floor(sqrt(d) * 10^k) / 10^k: below sqrt d by less than 10^-k.
@@ -202,19 +202,19 @@ Certificate certificate_from_tree(const Json& j) {
   return c;
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io
 
 namespace relpos {
 
 std::string certificate_json_text(const Certificate& c, int digits) {
   std::string text;
-  io::detail::JsonWriter w(text);
-  io::detail::append_certificate(c, digits, w);
+  detail::io::JsonWriter w(text);
+  detail::io::append_certificate(c, digits, w);
   return text;
 }
 
 Certificate certificate_from_json(std::string_view text) {
-  return io::detail::certificate_from_tree(io::detail::parse_json_exact(text));
+  return detail::io::certificate_from_tree(detail::io::parse_json_exact(text));
 }
 
 }  // namespace relpos

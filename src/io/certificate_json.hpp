@@ -6,7 +6,7 @@
 #include "io/json_write.hpp"
 #include "relpos/position.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 /// The certificate's JSON value (certificate_json_text describes it).
 void append_certificate(const Certificate& c, int digits, JsonWriter& w);
@@ -15,4 +15,4 @@ void append_certificate(const Certificate& c, int digits, JsonWriter& w);
 /// naming the field on malformed input.
 Certificate certificate_from_tree(const Json& j);
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

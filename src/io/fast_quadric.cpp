@@ -20,7 +20,7 @@
 #include "algebra/shape_filter.hpp"
 #include "io/fast_value.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 namespace {
 
 using I = FastInterval;
@@ -267,4 +267,4 @@ bool fast_paraboloid_at(std::string_view text, bool doubles, std::size_t& end, s
   return read_quadric(text, doubles, &end, paraboloid_entries, relpos::detail::make_paraboloid, out);
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -38,7 +38,7 @@
 #include "relpos/general_quadric.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 /// The ellipsoid described by the JSON text, or nullopt when this reader does not take it.
 /// `doubles`: each number is the double nearest its text (--numbers double).
@@ -60,4 +60,4 @@ bool fast_paraboloid_at(std::string_view text, bool doubles, std::size_t& end, s
 /// any other form or type: false, `out` empty, for the general reader. `end` as fast_ellipsoid_at.
 bool fast_quadric_at(std::string_view text, bool doubles, std::size_t& end, std::optional<Quadric>& out);
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -9,7 +9,7 @@
 
 #include "io/json_lexer.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 namespace {
 
 using relpos::detail::Decimal;
@@ -222,4 +222,4 @@ void FastValue::enclose_decimals() {
   wide_ = widest > kMaxExponent;
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

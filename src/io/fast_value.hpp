@@ -14,7 +14,7 @@
 
 #include "algebra/decimal_recipe.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 using FastInterval = CGAL::Interval_nt<false>;
 
@@ -107,4 +107,4 @@ class FastValue {
   Slot nodes_[kMaxNodes];
 };
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -14,12 +14,12 @@
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
-namespace relpos::io {
+namespace relpos::detail::io {
 namespace {
 
-using detail::Json;
-
-[[noreturn]] void fail(const std::string& path, const std::string& message) { throw InputError(path + ": " + message); }
+[[noreturn]] void general_fail(const std::string& path, const std::string& message) {
+  throw InputError(path + ": " + message);
+}
 
 std::string member(const std::string& path, const std::string& key) { return path + "." + key; }
 
@@ -28,32 +28,32 @@ std::string described(const Json& v) {
   return s.size() > 60 ? s.substr(0, 57) + "..." : s;
 }
 
-void check_keys(const Json& v, std::initializer_list<const char*> allowed, const std::string& path) {
+void general_check_keys(const Json& v, std::initializer_list<const char*> allowed, const std::string& path) {
   for (auto it = v.begin(); it != v.end(); ++it) {
     bool ok = false;
     for (const char* k : allowed) ok = ok || it.key() == k;
-    if (!ok) fail(path, "unknown key \"" + it.key().substr(0, 40) + "\"");
+    if (!ok) general_fail(path, "unknown key \"" + it.key().substr(0, 40) + "\"");
   }
 }
 
-const Json& required(const Json& v, const char* key, const std::string& path) {
-  if (!v.contains(key)) fail(path, std::string("missing \"") + key + "\"");
+const Json& general_required(const Json& v, const char* key, const std::string& path) {
+  if (!v.contains(key)) general_fail(path, std::string("missing \"") + key + "\"");
   return v[key];
 }
 
-Rational number(const Json& v, const std::string& path) { return detail::rational_from_json(v, path); }
+Rational number(const Json& v, const std::string& path) { return rational_from_json(v, path); }
 
 template <std::size_t N>
 std::array<Rational, N> numbers(const Json& v, const std::string& path) {
   if (!v.is_array() || v.size() != N)
-    fail(path, "expected an array of " + std::to_string(N) + " numbers, got " + described(v));
+    general_fail(path, "expected an array of " + std::to_string(N) + " numbers, got " + described(v));
   std::array<Rational, N> out;
   for (std::size_t i = 0; i < N; ++i) out[i] = number(v[i], path + "[" + std::to_string(i) + "]");
   return out;
 }
 
-Matrix4 matrix4(const Json& v, const std::string& path) {
-  if (!v.is_array() || v.size() != 4) fail(path, "expected a 4x4 array, got " + described(v));
+Matrix4 general_matrix4(const Json& v, const std::string& path) {
+  if (!v.is_array() || v.size() != 4) general_fail(path, "expected a 4x4 array, got " + described(v));
   Matrix4 m;
   for (int i = 0; i < 4; ++i) {
     const std::array<Rational, 4> row =
@@ -79,16 +79,16 @@ Quaternion rotation_of(const Json& v, const std::string& path) {
 
 Quadric geometric_form(const Json& v, const std::string& role) {
   const Json& t = v["type"];
-  if (!t.is_string()) fail(member(role, "type"), "expected a string naming the type, got " + described(t));
+  if (!t.is_string()) general_fail(member(role, "type"), "expected a string naming the type, got " + described(t));
   const std::string type = t.get<std::string>();
-  auto vec = [&](const char* key) { return numbers<3>(required(v, key, role), member(role, key)); };
-  auto num = [&](const char* key) { return number(required(v, key, role), member(role, key)); };
+  auto vec = [&](const char* key) { return numbers<3>(general_required(v, key, role), member(role, key)); };
+  auto num = [&](const char* key) { return number(general_required(v, key, role), member(role, key)); };
   if (type == "sphere") {
-    check_keys(v, {"type", "center", "radius"}, role);
+    general_check_keys(v, {"type", "center", "radius"}, role);
     return with_role(role, [&] { return Quadric::sphere(vec("center"), num("radius")); });
   }
   if (type == "ellipsoid" || type == "hyperboloid of one sheet" || type == "hyperboloid of two sheets") {
-    check_keys(v, {"type", "center", "axes", "rotation"}, role);
+    general_check_keys(v, {"type", "center", "axes", "rotation"}, role);
     const Vector3 c = vec("center"), axes = vec("axes");
     const Quaternion q = rotation_of(v, role);
     if (type == "ellipsoid") return with_role(role, [&] { return Quadric::ellipsoid(c, axes, q); });
@@ -97,11 +97,11 @@ Quadric geometric_form(const Json& v, const std::string& role) {
     return with_role(role, [&] { return Quadric::hyperboloid_two_sheets(c, axes, q); });
   }
   if (type == "elliptic cone" || type == "cone") {
-    check_keys(v, {"type", "apex", "a", "b", "rotation"}, role);
+    general_check_keys(v, {"type", "apex", "a", "b", "rotation"}, role);
     return with_role(role, [&] { return Quadric::cone(vec("apex"), num("a"), num("b"), rotation_of(v, role)); });
   }
   if (type == "elliptic paraboloid" || type == "hyperbolic paraboloid") {
-    check_keys(v, {"type", "vertex", "a", "b", "rotation"}, role);
+    general_check_keys(v, {"type", "vertex", "a", "b", "rotation"}, role);
     const Vector3 p = vec("vertex");
     const Rational a = num("a"), b = num("b");
     const Quaternion q = rotation_of(v, role);
@@ -109,7 +109,7 @@ Quadric geometric_form(const Json& v, const std::string& role) {
     return with_role(role, [&] { return Quadric::hyperbolic_paraboloid(p, a, b, q); });
   }
   if (type == "elliptic cylinder" || type == "hyperbolic cylinder") {
-    check_keys(v, {"type", "center", "a", "b", "rotation"}, role);
+    general_check_keys(v, {"type", "center", "a", "b", "rotation"}, role);
     const Vector3 c = vec("center");
     const Rational a = num("a"), b = num("b");
     const Quaternion q = rotation_of(v, role);
@@ -117,22 +117,22 @@ Quadric geometric_form(const Json& v, const std::string& role) {
     return with_role(role, [&] { return Quadric::hyperbolic_cylinder(c, a, b, q); });
   }
   if (type == "parabolic cylinder") {
-    check_keys(v, {"type", "vertex", "a", "rotation"}, role);
+    general_check_keys(v, {"type", "vertex", "a", "rotation"}, role);
     return with_role(role, [&] { return Quadric::parabolic_cylinder(vec("vertex"), num("a"), rotation_of(v, role)); });
   }
   if (type == "half-space") {
-    check_keys(v, {"type", "normal", "offset"}, role);
+    general_check_keys(v, {"type", "normal", "offset"}, role);
     return with_role(role, [&] { return Quadric::half_space(vec("normal"), num("offset")); });
   }
   if (type == "slab") {
-    check_keys(v, {"type", "normal", "low", "high"}, role);
+    general_check_keys(v, {"type", "normal", "low", "high"}, role);
     return with_role(role, [&] { return Quadric::slab(vec("normal"), num("low"), num("high")); });
   }
-  fail(member(role, "type"),
-       "unknown type \"" + type.substr(0, 40) +
-           "\" (expected sphere, ellipsoid, hyperboloid of one sheet, hyperboloid of two sheets, "
-           "elliptic cone (or cone), elliptic paraboloid, hyperbolic paraboloid, elliptic cylinder, "
-           "hyperbolic cylinder, parabolic cylinder, slab or half-space)");
+  general_fail(member(role, "type"),
+               "unknown type \"" + type.substr(0, 40) +
+                   "\" (expected sphere, ellipsoid, hyperboloid of one sheet, hyperboloid of two sheets, "
+                   "elliptic cone (or cone), elliptic paraboloid, hyperbolic paraboloid, elliptic cylinder, "
+                   "hyperbolic cylinder, parabolic cylinder, slab or half-space)");
 }
 
 std::string meaning(QuadricPosition p) {
@@ -162,13 +162,14 @@ Json vector_json(const Vector3& x) { return Json::array({to_string(x[0]), to_str
 Json quad_json(const QuadraticNumber& x) { return Json{{"a", to_string(x.a)}, {"b", to_string(x.b)}}; }
 
 QuadraticNumber quad(const Json& j, const std::string& path) {
-  if (!j.is_object()) fail(path, "expected {\"a\": ..., \"b\": ...}");
-  check_keys(j, {"a", "b"}, path);
-  return {number(required(j, "a", path), member(path, "a")), number(required(j, "b", path), member(path, "b"))};
+  if (!j.is_object()) general_fail(path, "expected {\"a\": ..., \"b\": ...}");
+  general_check_keys(j, {"a", "b"}, path);
+  return {number(general_required(j, "a", path), member(path, "a")),
+          number(general_required(j, "b", path), member(path, "b"))};
 }
 
 QuadraticVector3 quad_vector(const Json& j, const std::string& path) {
-  if (!j.is_array() || j.size() != 3) fail(path, "expected 3 numbers {\"a\", \"b\"}");
+  if (!j.is_array() || j.size() != 3) general_fail(path, "expected 3 numbers {\"a\", \"b\"}");
   return {quad(j[0], path + "[0]"), quad(j[1], path + "[1]"), quad(j[2], path + "[2]")};
 }
 
@@ -188,24 +189,24 @@ std::string quad_decimal(const QuadraticNumber& x, const Integer& d, int digits)
 
 Quadric quadric_from_json(const Json& v, const std::string& role) {
   if (v.is_array()) {
-    const Matrix4 m = matrix4(v, role);
+    const Matrix4 m = general_matrix4(v, role);
     return with_role(role, [&] { return Quadric::from_matrix(m); });
   }
-  if (!v.is_object()) fail(role, "expected a 4x4 array or an object describing a quadric, got " + described(v));
+  if (!v.is_object()) general_fail(role, "expected a 4x4 array or an object describing a quadric, got " + described(v));
   if (v.contains("matrix")) {
-    check_keys(v, {"matrix"}, role);
-    const Matrix4 m = matrix4(v["matrix"], member(role, "matrix"));
+    general_check_keys(v, {"matrix"}, role);
+    const Matrix4 m = general_matrix4(v["matrix"], member(role, "matrix"));
     return with_role(role, [&] { return Quadric::from_matrix(m); });
   }
   if (v.contains("coefficients")) {
-    check_keys(v, {"coefficients"}, role);
+    general_check_keys(v, {"coefficients"}, role);
     const Coefficients10 c = numbers<10>(v["coefficients"], member(role, "coefficients"));
     return with_role(role, [&] { return Quadric::from_coefficients(c); });
   }
   if (v.contains("type")) return geometric_form(v, role);
-  fail(role,
-       "no recognized quadric form (expected a 4x4 array or an object with \"matrix\", \"coefficients\" or "
-       "\"type\")");
+  general_fail(role,
+               "no recognized quadric form (expected a 4x4 array or an object with \"matrix\", \"coefficients\" or "
+               "\"type\")");
 }
 
 std::size_t check_general_pair_size(const Ellipsoid& e, const Quadric& q, const SizeLimit& limit) {
@@ -274,54 +275,55 @@ QuadricCertificate quadric_certificate_from_json(const Json& j) {
   const std::string path = "certificate";
   QuadricCertificate c;
   if (j.is_null()) return c;
-  if (!j.is_object()) fail(path, "expected an object, got " + described(j));
+  if (!j.is_object()) general_fail(path, "expected an object, got " + described(j));
   if (j.contains("ratio")) {
-    check_keys(j, {"ratio"}, path);
+    general_check_keys(j, {"ratio"}, path);
     c.kind = K::Equal;
     c.ratio = number(j["ratio"], member(path, "ratio"));
     return c;
   }
   if (j.contains("inside") || j.contains("outside")) {
-    check_keys(j, {"inside", "outside", "beyond"}, path);
+    general_check_keys(j, {"inside", "outside", "beyond"}, path);
     c.kind = K::Crossing;
-    c.inside = numbers<3>(required(j, "inside", path), member(path, "inside"));
-    c.outside = numbers<3>(required(j, "outside", path), member(path, "outside"));
+    c.inside = numbers<3>(general_required(j, "inside", path), member(path, "inside"));
+    c.outside = numbers<3>(general_required(j, "outside", path), member(path, "outside"));
     if (j.contains("beyond")) c.beyond = numbers<3>(j["beyond"], member(path, "beyond"));
     return c;
   }
   if (j.contains("contact_set")) {
-    check_keys(j, {"t", "contact_set"}, path);
+    general_check_keys(j, {"t", "contact_set"}, path);
     c.kind = K::HardTangent;
-    const Json& t = required(j, "t", path);
-    if (!t.is_object()) fail(member(path, "t"), "expected {\"a\", \"b\", \"d\"}");
-    check_keys(t, {"a", "b", "d"}, member(path, "t"));
-    c.t_q = {number(required(t, "a", member(path, "t")), member(path, "t.a")),
-             number(required(t, "b", member(path, "t")), member(path, "t.b"))};
-    const Rational d = number(required(t, "d", member(path, "t")), member(path, "t.d"));
-    if (d.denominator() != 1 || d < 0) fail(member(path, "t.d"), "expected a non-negative integer");
+    const Json& t = general_required(j, "t", path);
+    if (!t.is_object()) general_fail(member(path, "t"), "expected {\"a\", \"b\", \"d\"}");
+    general_check_keys(t, {"a", "b", "d"}, member(path, "t"));
+    c.t_q = {number(general_required(t, "a", member(path, "t")), member(path, "t.a")),
+             number(general_required(t, "b", member(path, "t")), member(path, "t.b"))};
+    const Rational d = number(general_required(t, "d", member(path, "t")), member(path, "t.d"));
+    if (d.denominator() != 1 || d < 0) general_fail(member(path, "t.d"), "expected a non-negative integer");
     c.d = d.numerator();
     const std::string sp = member(path, "contact_set");
     const Json& s = j["contact_set"];
-    if (!s.is_object()) fail(sp, "expected an object");
-    check_keys(s, {"center", "directions", "radius2", "decimal"}, sp);
-    c.centre = quad_vector(required(s, "center", sp), member(sp, "center"));
-    const Json& dirs = required(s, "directions", sp);
-    if (!dirs.is_array() || dirs.size() > 3) fail(member(sp, "directions"), "expected an array of at most 3 vectors");
+    if (!s.is_object()) general_fail(sp, "expected an object");
+    general_check_keys(s, {"center", "directions", "radius2", "decimal"}, sp);
+    c.centre = quad_vector(general_required(s, "center", sp), member(sp, "center"));
+    const Json& dirs = general_required(s, "directions", sp);
+    if (!dirs.is_array() || dirs.size() > 3)
+      general_fail(member(sp, "directions"), "expected an array of at most 3 vectors");
     for (std::size_t i = 0; i < dirs.size(); ++i)
       c.directions.push_back(quad_vector(dirs[i], member(sp, "directions") + "[" + std::to_string(i) + "]"));
-    c.radius2 = quad(required(s, "radius2", sp), member(sp, "radius2"));
+    c.radius2 = quad(general_required(s, "radius2", sp), member(sp, "radius2"));
     return c;
   }
   if (j.contains("contact")) {
-    check_keys(j, {"t", "contact"}, path);
+    general_check_keys(j, {"t", "contact"}, path);
     c.kind = K::Tangent;
-    c.t = number(required(j, "t", path), member(path, "t"));
+    c.t = number(general_required(j, "t", path), member(path, "t"));
     c.contact = numbers<3>(j["contact"], member(path, "contact"));
     return c;
   }
-  check_keys(j, {"t"}, path);
+  general_check_keys(j, {"t"}, path);
   c.kind = K::Definite;
-  c.t = number(required(j, "t", path), member(path, "t"));
+  c.t = number(general_required(j, "t", path), member(path, "t"));
   return c;
 }
 
@@ -339,8 +341,8 @@ std::string general_answer_text(const QuadricClassification& c, int digits) {
   for (const PencilRoot& r : c.roots)
     os << "  " << (r.exact ? to_string(*r.exact) : to_decimal((r.lower + r.upper) / 2, digits))
        << "  (multiplicity in f " << r.multiplicity_f << ", in D " << r.multiplicity_d << ")\n";
-  os << "certificate: " << detail::dump_json(quadric_certificate_to_json(c.certificate, digits)) << "\n";
+  os << "certificate: " << dump_json(quadric_certificate_to_json(c.certificate, digits)) << "\n";
   return os.str();
 }
 
-}  // namespace relpos::io
+}  // namespace relpos::detail::io

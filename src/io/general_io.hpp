@@ -13,7 +13,7 @@
 #include "io/json_tree.hpp"
 #include "relpos/general_classify.hpp"
 
-namespace relpos::io {
+namespace relpos::detail::io {
 
 /// A general quadric from a tree of detail::parse_json: a 4x4 array, {"matrix"}, {"coefficients"},
 /// or a geometric form {"type": NAME, ...} with NAME one of to_string(QuadricType) or "sphere":
@@ -22,7 +22,7 @@ namespace relpos::io {
 ///   the elliptic and hyperbolic cylinders {"center", "a", "b", "rotation"?}; "parabolic cylinder"
 ///   {"vertex", "a", "rotation"?}; "half-space" {"normal", "offset"}; "slab" {"normal", "low", "high"}.
 /// InputError "<role>: ..." naming the field, or what the matrix is when it is refused.
-Quadric quadric_from_json(const detail::Json& value, const std::string& role = "quadric");
+Quadric quadric_from_json(const Json& value, const std::string& role = "quadric");
 
 /// The pair's size limit (doc/cli.md, Limits): InputError "numbers too large: ..." when a matrix's
 /// primitive integer form has entries beyond limit.max_bits bits (--max-bits, max_bits), the
@@ -64,11 +64,11 @@ std::string general_answer_text(const QuadricClassification& c, int digits);
 ///   Definite {"t"}; Tangent {"t", "contact"}; HardTangent {"t": {"a", "b", "d"}, "contact_set":
 ///   {"center", "directions", "radius2", "decimal"}}; Crossing {"inside", "outside", "beyond"?};
 ///   Equal {"ratio"}.
-detail::Json quadric_certificate_to_json(const QuadricCertificate& c, int digits);
+Json quadric_certificate_to_json(const QuadricCertificate& c, int digits);
 /// The inverse (numbers also as JSON numbers, read exactly); InputError naming the field.
-QuadricCertificate quadric_certificate_from_json(const detail::Json& j);
+QuadricCertificate quadric_certificate_from_json(const Json& j);
 
 /// "I", "TI", ..., "EQ" back to the position, or nullopt.
 std::optional<QuadricPosition> quadric_position_from_text(const std::string& s);
 
-}  // namespace relpos::io
+}  // namespace relpos::detail::io

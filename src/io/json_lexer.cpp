@@ -3,7 +3,7 @@
 #include <cctype>
 #include <string>
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 namespace {
 
 /// Length of the valid UTF-8 sequence at s[i] (1 to 4), or 0 (what the JSON parser refuses:
@@ -75,4 +75,4 @@ bool valid_utf8(std::string_view s) {
   return true;
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <string_view>
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 inline bool is_json_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 inline bool is_digit(char c) { return static_cast<unsigned>(c - '0') <= 9; }
@@ -171,4 +171,4 @@ inline bool plainly_valid(std::string_view v) {
   return !v.empty() && (v.front() == '"' ? valid_string(v) : is_number(v));
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

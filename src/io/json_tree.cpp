@@ -9,7 +9,7 @@
 #include "relpos/io.hpp"
 #include "relpos/numbers.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 namespace {
 
 /// "[json.exception.parse_error.101] parse error at ..." -> "parse error at ...".
@@ -235,4 +235,4 @@ void validate_json(std::string_view text, std::size_t start_depth) {
 
 std::string dump_json(const Json& value) { return value.dump(-1, ' ', false, Json::error_handler_t::replace); }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -11,7 +11,7 @@
 
 #include "relpos/error.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 using Json = nlohmann::ordered_json;
 
@@ -44,4 +44,4 @@ std::string dump_json(const Json& value);
 /// Deepest nesting of arrays and objects that the JSON reader accepts.
 inline constexpr std::size_t kMaxJsonDepth = 256;
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -4,7 +4,7 @@
 
 #include "relpos/error.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 namespace {
 
 template <std::size_t N>
@@ -147,4 +147,4 @@ Rational rational_from_json(const Json& v, const std::string& path) {
   }
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -13,7 +13,7 @@
 #include "relpos/numbers.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 /// An exact number from a JSON value (integer, string such as "p/q", "-3", "1.5e-7", or a float kept
 /// as text by parse_json). Throws InputError "<path>: expected a number, got true" and the like.
@@ -44,4 +44,4 @@ std::pair<const Json*, std::string> center_field(const Json& obj, const std::str
 /// "keys "a", "b"" or "an empty object", for messages.
 std::string key_list(const Json& obj);
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -12,7 +12,7 @@
 
 #include "io/json_tree.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 void JsonWriter::key(std::string_view name) {
   char text[64];  // "name": in one append (the reports' names are short)
@@ -252,4 +252,4 @@ void JsonWriter::rationals(const Rational* q, std::size_t n) {
   out_ += ']';
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

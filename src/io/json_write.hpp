@@ -10,7 +10,7 @@
 
 #include "relpos/numbers.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 /// Appends JSON values to a string; the caller writes the punctuation of objects and arrays.
 class JsonWriter {
@@ -43,4 +43,4 @@ class JsonWriter {
   std::string& out_;
 };
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -12,8 +12,7 @@
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
-namespace relpos::io {
-namespace detail {
+namespace relpos::detail::io {
 namespace {
 
 /// An exact number: what rational_from_json reads (a JSON number's text or a string "p/q").
@@ -103,15 +102,19 @@ Margin margin_from_tree(const Json& j) {
   return m;
 }
 
-}  // namespace detail
+}  // namespace relpos::detail::io
+
+namespace relpos::io {
 
 std::string margin_json_text(const Margin& m, int digits) {
   std::string text;
-  detail::JsonWriter w(text);
-  detail::append_margin(m, digits, w);
+  detail::io::JsonWriter w(text);
+  detail::io::append_margin(m, digits, w);
   return text;
 }
 
-Margin margin_from_json_text(std::string_view text) { return detail::margin_from_tree(detail::parse_json_exact(text)); }
+Margin margin_from_json_text(std::string_view text) {
+  return detail::io::margin_from_tree(detail::io::parse_json_exact(text));
+}
 
 }  // namespace relpos::io

@@ -7,7 +7,7 @@
 #include "io/json_write.hpp"
 #include "relpos/margin.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 /// {"approx": <double>, "lo": "p/q", "hi": "p/q", "polynomial": ["c0", ...], then "below" and
 /// "above" (lo < hi) or "at" (lo == hi > 0), certificates as append_certificate writes them}.
@@ -17,4 +17,4 @@ void append_margin(const Margin& m, int digits, JsonWriter& w);
 /// decimal text, null for +infinity). Throws InputError naming the field ("margin.lo: ...").
 Margin margin_from_tree(const Json& j);
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -7,7 +7,7 @@
 #include "io/json_values.hpp"
 #include "relpos/error.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 std::vector<std::vector<Rational>> motion_polynomials(const Json& v, std::size_t count, const std::string& role) {
   if (!v.is_array() || v.size() != count)
@@ -38,4 +38,4 @@ std::vector<std::vector<Rational>> motion_polynomials(const Json& v, std::size_t
   return out;
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -9,7 +9,7 @@
 #include "io/json_tree.hpp"
 #include "relpos/numbers.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 /// Limits on the polynomials of a rigid motion (doc/cli.md, Limits): the event polynomials' degree
 /// and coefficient sizes grow with these, and the cost with them.
@@ -22,4 +22,4 @@ inline constexpr std::size_t kMaxMotionCoefficientBits = 512;
 /// non-number or beyond the limits above.
 std::vector<std::vector<Rational>> motion_polynomials(const Json& value, std::size_t count, const std::string& role);
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -5,8 +5,7 @@
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
-namespace relpos::io {
-namespace detail {
+namespace relpos::detail::io {
 namespace {
 
 /// Run a library factory, prefixing its InputError with the role.
@@ -144,26 +143,28 @@ Paraboloid paraboloid_from_tree(const Json& v, const std::string& role) {
                  "\"map\"/\"translation\")");
 }
 
-}  // namespace detail
+}  // namespace relpos::detail::io
+
+namespace relpos::io {
 
 Ellipsoid ellipsoid_from_json(std::string_view text, const std::string& role) {
-  detail::Json tree;
+  detail::io::Json tree;
   try {
-    tree = detail::parse_json_exact(text);
+    tree = detail::io::parse_json_exact(text);
   } catch (const InputError& e) {
     throw InputError(role + ": " + e.what());
   }
-  return detail::ellipsoid_from_tree(tree, role);
+  return detail::io::ellipsoid_from_tree(tree, role);
 }
 
 Paraboloid paraboloid_from_json(std::string_view text, const std::string& role) {
-  detail::Json tree;
+  detail::io::Json tree;
   try {
-    tree = detail::parse_json_exact(text);
+    tree = detail::io::parse_json_exact(text);
   } catch (const InputError& e) {
     throw InputError(role + ": " + e.what());
   }
-  return detail::paraboloid_from_tree(tree, role);
+  return detail::io::paraboloid_from_tree(tree, role);
 }
 
 }  // namespace relpos::io

@@ -16,9 +16,9 @@
 #include "io/json_tree.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 Ellipsoid ellipsoid_from_tree(const Json& value, const std::string& role = "ellipsoid");
 Paraboloid paraboloid_from_tree(const Json& value, const std::string& role = "paraboloid");
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -15,7 +15,7 @@
 #include "relpos/io.hpp"
 #include "relpos/margin.hpp"
 
-namespace relpos::io {
+namespace relpos::detail::io {
 
 std::string position_meaning(Position p) {
   switch (p) {
@@ -85,7 +85,7 @@ std::string polynomial_to_text(const Rational* c, int size, const std::string& v
 namespace {
 
 /// The "small:" line's text: the smallness and rho, exactly when rational.
-std::string smallness_text(const Classification& c, const RenderOptions& options) {
+std::string smallness_text(const Classification& c, const relpos::io::RenderOptions& options) {
   std::string small =
       c.verdict.small ? "yes (the paper's smallness hypothesis holds): " : "no (the smallness hypothesis fails): ";
   const std::string compare = std::string("rho ") + (c.verdict.rho_vs_one < 0    ? "< 1"
@@ -103,9 +103,9 @@ std::string smallness_text(const Classification& c, const RenderOptions& options
 }
 
 /// One line per real root of f: its certified decimal, its exact value, its multiplicities.
-std::string root_lines(const Classification& c, const RenderOptions& options) {
+std::string root_lines(const Classification& c, const relpos::io::RenderOptions& options) {
   std::string t;
-  const auto approx = detail::root_decimals(c, options.digits, /*only_multiple=*/false);
+  const auto approx = root_decimals(c, options.digits, /*only_multiple=*/false);
   std::size_t width = 0;
   for (const auto& a : approx) width = std::max(width, a.size());
   for (std::size_t i = 0; i < c.roots.size(); ++i) {
@@ -128,7 +128,7 @@ std::string root_lines(const Classification& c, const RenderOptions& options) {
 }
 
 /// The polynomials, their discriminants' signs and the roots of f.
-std::string polynomial_lines(const Classification& c, const RenderOptions& options) {
+std::string polynomial_lines(const Classification& c, const relpos::io::RenderOptions& options) {
   std::string t;
   if (c.has_full_evidence) {
     t += "f(l) = det(l P + E) = " + polynomial_to_text(c.f.data(), 5) + "\n";
@@ -151,6 +151,10 @@ std::string polynomial_lines(const Classification& c, const RenderOptions& optio
 
 }  // namespace
 
+}  // namespace relpos::detail::io
+
+namespace relpos::io {
+
 std::string classification_to_text(const Classification& c, const RenderOptions& options) {
   std::string t;
   auto line = [&](const std::string& label, const std::string& text) {
@@ -158,23 +162,27 @@ std::string classification_to_text(const Classification& c, const RenderOptions&
     if (label.size() < 10) t += std::string(10 - label.size(), ' ');
     t += text + "\n";
   };
-  line("position:", to_string(c.verdict.position) + " - " + position_meaning(c.verdict.position));
+  line("position:", to_string(c.verdict.position) + " - " + detail::io::position_meaning(c.verdict.position));
   line("rule:", c.rule_text());
-  line("small:", smallness_text(c, options));
+  line("small:", detail::io::smallness_text(c, options));
   line("contact:", contact_of(c.verdict.position) != Contact::None ? "yes" : "no");
-  line("stage:", to_string(c.verdict.stage) + " (" + stage_meaning(c.verdict.stage) + ")");
-  if (c.has_full_evidence) line("proof:", certificate_text(c.certificate));
-  return t + "\n" + polynomial_lines(c, options);
+  line("stage:", to_string(c.verdict.stage) + " (" + detail::io::stage_meaning(c.verdict.stage) + ")");
+  if (c.has_full_evidence) line("proof:", detail::io::certificate_text(c.certificate));
+  return t + "\n" + detail::io::polynomial_lines(c, options);
 }
 
-std::string margin_to_text(const Margin& m, const RenderOptions& options) {
+}  // namespace relpos::io
+
+namespace relpos::detail::io {
+
+std::string margin_to_text(const Margin& m, const relpos::io::RenderOptions& options) {
   const std::string pad(10, ' ');
   std::string t = "margin:   s* ";
   if (m.hi == 0) return t + "= 0: the ellipsoid's centre lies on the paraboloid (any scaling crosses it)\n";
   const bool rational = m.lo == m.hi;
   t += rational ? "= " + to_string(m.lo) + " exactly" : "~ " + m.value().decimals(options.digits);
   t += ": the factor by which the ellipsoid, scaled about its centre, first touches the paraboloid\n";
-  t += pad + "minimal polynomial " + polynomial_text(m.polynomial) + "\n";
+  t += pad + "minimal polynomial " + relpos::polynomial_text(m.polynomial) + "\n";
   if (rational) {
     t += pad + "proof: scaled by s* it is tangent (" +
          (m.at.lambda < 0 || m.at.kind == Certificate::Kind::HardTangent ? std::string("TI") : std::string("TE")) +
@@ -187,4 +195,4 @@ std::string margin_to_text(const Margin& m, const RenderOptions& options) {
   return t;
 }
 
-}  // namespace relpos::io
+}  // namespace relpos::detail::io

@@ -6,7 +6,7 @@
 
 #include "relpos/io.hpp"
 
-namespace relpos::io {
+namespace relpos::detail::io {
 
 /// One sentence saying what a position means ("the ellipsoid lies inside the paraboloid ...").
 std::string position_meaning(Position p);
@@ -18,6 +18,6 @@ std::string rho_vs_one_text(int sign);
 std::string polynomial_to_text(const Rational* coefficients, int size, const std::string& variable = "l");
 
 /// Three or four lines of text for `relpos classify --margin` (ends with a newline).
-std::string margin_to_text(const Margin& m, const RenderOptions& options = {});
+std::string margin_to_text(const Margin& m, const relpos::io::RenderOptions& options = {});
 
-}  // namespace relpos::io
+}  // namespace relpos::detail::io

@@ -3,7 +3,7 @@
 #include "algebra/denominators.hpp"
 #include "algebra/roots.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 namespace {
 
 /// f scaled by the positive lcm of its denominators: same roots, integer coefficients.
@@ -37,4 +37,4 @@ std::vector<std::string> root_decimals(const Classification& c, int digits, bool
   return out;
 }
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -7,10 +7,10 @@
 
 #include "relpos/classify.hpp"
 
-namespace relpos::io::detail {
+namespace relpos::detail::io {
 
 /// One certified decimal per entry of c.roots; with only_multiple, only for the roots of
 /// multiplicity >= 2 (the others are left empty).
 std::vector<std::string> root_decimals(const Classification& c, int digits, bool only_multiple);
 
-}  // namespace relpos::io::detail
+}  // namespace relpos::detail::io

@@ -107,7 +107,7 @@ Ellipsoid scaled_square(const detail::ScaledFamily& family, const Rational& v) {
 /// (certificate::build fails, as an internal error, rather than certify anything else).
 Certificate certificate_of(const detail::ScaledFamily& family, const Paraboloid& p, const Rational& v,
                            Position position) {
-  return certificate::build(scaled_square(family, v), p, position);
+  return detail::certificate::build(scaled_square(family, v), p, position);
 }
 
 /// s*^2 among the candidates: the nested family has no contact below s* and crosses above it, so

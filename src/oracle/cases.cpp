@@ -14,7 +14,7 @@
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -206,4 +206,4 @@ std::string case_line(const Case& c, Form form) {
   return line.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

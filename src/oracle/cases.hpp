@@ -13,7 +13,7 @@
 #include "relpos/margin.hpp"
 #include "relpos/position.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 /// The default epsilons of `relpos cases`.
 inline const char* const kDefaultEps = "1e-2,1e-4,1e-6,1e-8,1e-10,1e-12,0";
@@ -55,4 +55,4 @@ enum class Form { Exact, Double, Matrix };
 /// The JSON line of a case (doc/oracle.md, "Case lines"), without a newline.
 std::string case_line(const Case& c, Form form);
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

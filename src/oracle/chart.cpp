@@ -8,7 +8,7 @@
 
 #include "oracle/raster.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -173,4 +173,4 @@ std::string chart_png(const JudgeReport& r) {
   return c.png(palette());
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

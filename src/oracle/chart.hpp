@@ -7,9 +7,9 @@
 
 #include "oracle/judge.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 /// The PNG file of the chart of r.curves.
 std::string chart_png(const JudgeReport& r);
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -15,7 +15,7 @@
 #include "oracle/random.hpp"
 #include "relpos/error.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -345,4 +345,4 @@ Construction construct(const Family& family, const Rational& eps, std::uint64_t 
   return out;
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

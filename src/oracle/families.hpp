@@ -13,7 +13,7 @@
 #include "relpos/position.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 /// The parameters of a pair: what a float code starts from.
 struct Parameters {
@@ -55,4 +55,4 @@ const Family* find_family(std::string_view name);
 /// inside-only families) is even, 1 - eps when odd: I, C (inside) or E, C (outside); TI, TE at eps = 0.
 Construction construct(const Family& family, const Rational& eps, std::uint64_t seed, std::uint64_t index);
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -3,7 +3,7 @@
 
 #include "oracle/nearest.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -104,4 +104,4 @@ DoubleMatrix4 upper_triangle(const DoubleMatrix4& m) {
   return out;
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -8,7 +8,7 @@
 #include "oracle/families.hpp"
 #include "relpos/quadric.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 struct DoubleParameters {
   std::array<double, 3> centre, axes;
@@ -36,4 +36,4 @@ DoubleMatrix4 paraboloid_matrix(const DoubleParameters& d);
 /// symmetric matrix, doc/oracle.md).
 DoubleMatrix4 upper_triangle(const DoubleMatrix4& m);
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

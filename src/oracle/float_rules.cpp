@@ -2,7 +2,7 @@
 // would write, with every optimisation the compiler may apply to plain float code.
 #include "oracle/float_rules.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 std::optional<Position> paper_rule_double(const std::array<double, 16>& pd, const std::array<double, 16>& ed) {
   return float_classify<double>(pd, ed, [](double d) { return d; });
@@ -16,4 +16,4 @@ Position minimal_rule_double(const std::array<double, 16>& pd, const std::array<
   return minimal_float<double>(pd, ed);
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

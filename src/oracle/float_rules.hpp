@@ -13,7 +13,7 @@
 #include "algebra/sturm.hpp"
 #include "relpos/classify.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 template <class NT>
 struct Mat {
@@ -108,4 +108,4 @@ std::optional<Position> paper_rule_double(const std::array<double, 16>& pd, cons
 std::optional<Position> paper_rule_long_double(const std::array<double, 16>& pd, const std::array<double, 16>& ed);
 Position minimal_rule_double(const std::array<double, 16>& pd, const std::array<double, 16>& ed);
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -2,7 +2,7 @@
 // the glyphs drawn there; do not edit by hand.
 #include "oracle/raster.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -112,4 +112,4 @@ const std::array<std::uint8_t, 7>& glyph(char c) {
   return kGlyphs[i >= 0 && i < 95 ? i : '?' - 32];
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

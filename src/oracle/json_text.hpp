@@ -5,11 +5,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 using Json = nlohmann::ordered_json;
 
 /// One line of JSON text.
 inline std::string dump(const Json& j) { return j.dump(-1, ' ', false, Json::error_handler_t::replace); }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -21,7 +21,7 @@
 #include "relpos/error.hpp"
 #include "relpos/io.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -130,14 +130,14 @@ TruthPair pair_of(const CaseLine& c, Truth truth) {
   if (truth == Truth::Double && member(dbl, "ellipsoid") && member(dbl, "paraboloid")) {
     out.ellipsoid = exactified(*member(dbl, "ellipsoid"));
     out.paraboloid = exactified(*member(dbl, "paraboloid"));
-    out.e = io::detail::ellipsoid_from_tree(out.ellipsoid);
-    out.p = io::detail::paraboloid_from_tree(out.paraboloid);
+    out.e = detail::io::ellipsoid_from_tree(out.ellipsoid);
+    out.p = detail::io::paraboloid_from_tree(out.paraboloid);
     return out;
   }
-  io::BatchOptions options;
+  detail::io::BatchOptions options;
   options.numbers_as_doubles = truth == Truth::Double;
-  io::BatchLine line;
-  io::read_batch_line(c.text, c.number, options, nullptr, line);
+  detail::io::BatchLine line;
+  detail::io::read_batch_line(c.text, c.number, options, nullptr, line);
   out.e = std::move(line.ellipsoid);
   out.p = std::move(line.paraboloid);
   const Json* e = member(c.json, "ellipsoid");
@@ -416,4 +416,4 @@ JudgeReport judge(std::string_view cases_text, std::string_view answers_text, co
   return r;
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -14,7 +14,7 @@
 
 #include "relpos/position.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 /// Which pair an answer is judged against (doc/oracle.md, "The three truths").
 enum class Truth {
@@ -102,4 +102,4 @@ std::string report_markdown(const JudgeReport& r, std::size_t max_misses = 20);
 std::string report_csv(const JudgeReport& r);
 std::string report_json(const JudgeReport& r);
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

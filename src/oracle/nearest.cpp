@@ -7,7 +7,7 @@
 
 #include "relpos/error.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -33,4 +33,4 @@ double nearest_double(const Rational& q) {
 
 std::string exact_text(double x) { return to_string(exact_rational(x)); }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -6,7 +6,7 @@
 
 #include "relpos/numbers.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 /// The double nearest q, ties to the even significand (IEEE round to nearest, as a correctly
 /// rounding decimal reader gives it). Throws InputError beyond the largest finite double.
@@ -15,4 +15,4 @@ double nearest_double(const Rational& q);
 /// The exact value of a finite double as the shortest exact text: "3", "-7/2", "5404319552844595/18014398509481984".
 std::string exact_text(double x);
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

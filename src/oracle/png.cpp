@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -84,4 +84,4 @@ std::string png_indexed(std::size_t width, std::size_t height, const std::vector
   return out;
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 /// CRC-32 of ISO 3309 / ITU-T V.42 (reflected polynomial 0xEDB88320), as PNG and zlib's crc32 define it.
 std::uint32_t crc32(const unsigned char* data, std::size_t n);
@@ -22,4 +22,4 @@ std::uint32_t adler32(const unsigned char* data, std::size_t n);
 std::string png_indexed(std::size_t width, std::size_t height, const std::vector<std::array<std::uint8_t, 3>>& palette,
                         const std::vector<std::uint8_t>& pixels);
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

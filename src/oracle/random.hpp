@@ -9,7 +9,7 @@
 
 #include "relpos/numbers.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 class Random {
  public:
@@ -56,4 +56,4 @@ class Random {
   std::uint64_t state_;
 };
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

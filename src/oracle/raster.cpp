@@ -6,7 +6,7 @@
 
 #include "oracle/png.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 Canvas::Canvas(int width, int height, std::uint8_t background)
     : width_(width), height_(height), pixels_(static_cast<std::size_t>(width * height), background) {}
@@ -58,4 +58,4 @@ std::string Canvas::png(const std::vector<std::array<std::uint8_t, 3>>& palette)
   return png_indexed(static_cast<std::size_t>(width_), static_cast<std::size_t>(height_), palette, pixels_);
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 /// The 5x7 glyph of a printable ASCII character (others draw as '?'): row r (top 0) is bits 4..0
 /// of glyph(c)[r], bit 4 the leftmost column.
@@ -38,4 +38,4 @@ class Canvas {
   std::vector<std::uint8_t> pixels_;
 };
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -7,7 +7,7 @@
 #include "oracle/json_text.hpp"
 #include "oracle/judge.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -175,4 +175,4 @@ std::string report_json(const JudgeReport& r) {
   return dump(out) + "\n";
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

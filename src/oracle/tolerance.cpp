@@ -4,7 +4,7 @@
 #include "oracle/json_text.hpp"
 #include "relpos/error.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 namespace {
 
@@ -72,4 +72,4 @@ bool within_tolerance(Position answer, CentreSide side, const MarginValue& m, co
   return false;
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -11,7 +11,7 @@
 
 #include "relpos/position.hpp"
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 /// s*, the number alone, as a margin member of an answer line gives it: the only root of
 /// `polynomial` (integer coefficients, lowest degree first) in [lo, hi], or lo itself when lo = hi.
@@ -39,4 +39,4 @@ enum class CentreSide { Inside, On, Outside };
 /// Whether `answer` is the position of the pair scaled by some factor s in [1 - tau, 1 + tau], s > 0.
 bool within_tolerance(Position answer, CentreSide side, const MarginValue& m, const Rational& tau);
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle

@@ -12,7 +12,7 @@
 namespace relpos {
 
 static_assert(std::tuple_size<decltype(QuadricSceneResult::Counts::positions)>::value ==
-                  general::kAllQuadricPositions.size(),
+                  detail::general::kAllQuadricPositions.size(),
               "one count per position");
 
 QuadricSceneResult classify_scene(const Quadric& q, const Ellipsoid* bodies, std::size_t count,

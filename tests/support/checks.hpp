@@ -269,7 +269,7 @@ inline void check_kernel(const Ellipsoid& e, const Paraboloid& p, const Classifi
     if (r.multiplicity_f < 2 || !r.exact) continue;
     INFO("multiple root " << relpos::to_string(*r.exact) << " mult_f " << r.multiplicity_f << " mult_s "
                           << r.multiplicity_s);
-    CHECK(relpos::oracle::kernel_has_common_point(e, p, *r.exact) == r.tangency());
+    CHECK(relpos::detail::oracle::kernel_has_common_point(e, p, *r.exact) == r.tangency());
     ++g_kernel_checks;
     if (r.tangency()) ++g_kernel_tangent;
   }

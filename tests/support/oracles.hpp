@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace relpos::oracle {
+namespace relpos::detail::oracle {
 
 /// Independent tangency check (math.md §3): lambda0 a real root of f; true iff the kernel of
 /// lambda0 P + E contains a real X != 0 with X^T E X = 0. lambda0 must be rational.
@@ -76,4 +76,4 @@ inline bool kernel_has_common_point(const Ellipsoid& e, const Paraboloid& p, con
   return !(pos_def || neg_def);
 }
 
-}  // namespace relpos::oracle
+}  // namespace relpos::detail::oracle
