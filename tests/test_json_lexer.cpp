@@ -162,9 +162,9 @@ TEST_CASE("eight_digits: the value of eight digits, or not digits, against the d
       expected = expected * 10 + static_cast<std::uint64_t>(c - '0');
     }
     CAPTURE(eight);
-    const std::uint64_t got = relpos::io::detail::eight_digits(text.data() + trial % 8);
+    const std::uint64_t got = relpos::detail::io::eight_digits(text.data() + trial % 8);
     if (!digits) {
-      REQUIRE(got == relpos::io::detail::kNotDigits);
+      REQUIRE(got == relpos::detail::io::kNotDigits);
       continue;
     }
     ++numbers;
@@ -172,9 +172,9 @@ TEST_CASE("eight_digits: the value of eight digits, or not digits, against the d
   }
   CHECK(numbers > 1000);
   // The extremes.
-  CHECK(relpos::io::detail::eight_digits("00000000") == 0);
-  CHECK(relpos::io::detail::eight_digits("99999999") == 99999999);
-  CHECK(relpos::io::detail::eight_digits("12345678") == 12345678);
-  CHECK(relpos::io::detail::eight_digits("1234567:") == relpos::io::detail::kNotDigits);
-  CHECK(relpos::io::detail::eight_digits("/2345678") == relpos::io::detail::kNotDigits);
+  CHECK(relpos::detail::io::eight_digits("00000000") == 0);
+  CHECK(relpos::detail::io::eight_digits("99999999") == 99999999);
+  CHECK(relpos::detail::io::eight_digits("12345678") == 12345678);
+  CHECK(relpos::detail::io::eight_digits("1234567:") == relpos::detail::io::kNotDigits);
+  CHECK(relpos::detail::io::eight_digits("/2345678") == relpos::detail::io::kNotDigits);
 }

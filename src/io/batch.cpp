@@ -149,12 +149,12 @@ class LineReader {
   std::size_t member(std::size_t i) {
     if (i >= line_.size() || line_[i] != '"') invalid_json(line_);
     // A plain key (every key of a well-formed line) is its text between the quotes: one pass.
-    std::size_t key_end = detail::plain_string_end(line_, i);
+    std::size_t key_end = plain_string_end(line_, i);
     std::string_view key;
     if (key_end != std::string_view::npos) {
       key = line_.substr(i + 1, key_end - i - 2);
     } else {
-      key_end = detail::string_end(line_, i);
+      key_end = string_end(line_, i);
       if (key_end == std::string_view::npos) invalid_json(line_);
       try {
         key = key_name(line_.substr(i, key_end - i), key_storage_);
@@ -162,9 +162,9 @@ class LineReader {
         invalid_json(line_);
       }
     }
-    i = detail::skip_space(line_, key_end);
+    i = skip_space(line_, key_end);
     if (i >= line_.size() || line_[i] != ':') invalid_json(line_);
-    i = detail::skip_space(line_, i + 1);
+    i = skip_space(line_, i + 1);
     std::size_t end = std::string_view::npos;
     bool taken = false;
     if (key == "ellipsoid")
@@ -238,7 +238,7 @@ class LineReader {
   /// The quadrics the fast reader left: small bounded trees, numbers exact (or the nearest doubles).
   void general_quadrics(Json& ellipsoid, Json& paraboloid) {
     if (!general_) return;  // the fast reader took every quadric (most lines)
-    detail::JsonReadOptions read;
+    JsonReadOptions read;
     read.doubles = options_.numbers_as_doubles;
     read.max_elements = kMaxQuadricEntries;
     read.start_depth = 1;
