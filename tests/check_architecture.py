@@ -186,15 +186,55 @@ def scan_code(code: str):
 FORWARD = re.compile(r"(?:class|struct|union|enum(?:\s+class|\s+struct)?)\s+\w+(?:\s*:\s*[\w:\s]+)?")
 
 
+def namespace_scope(code: str):
+    """Walk stripped code at namespace scope, yielding (event, head, position, heads of the open
+    namespace blocks): "statement" for each ';' there, "namespace" for a namespace (or `extern "C"`)
+    block opened, "block" for any other block there, which the walk then skips (a class, enum or
+    initializer to its ';'); a braced initializer inside parentheses is skipped."""
+    heads = []
+    i, n, start, paren = 0, len(code), 0, 0
+    while i < n:
+        c = code[i]
+        if c in "([":
+            paren += 1
+        elif c in ")]":
+            paren -= 1
+        elif c == ";" and paren == 0:
+            yield "statement", code[start:i], i, tuple(heads)
+            start = i + 1
+        elif c == "}":
+            if heads:
+                heads.pop()
+            start = i + 1
+        elif c == "{" and paren > 0:  # a braced initializer in a declaration (a default argument)
+            i = matching_brace(code, i)
+            continue
+        elif c == "{":
+            head = code[start:i]
+            kind = block_kind(head)
+            if kind == "namespace":
+                yield "namespace", head, i, tuple(heads)
+                heads.append(head)
+                start = i + 1
+            else:
+                yield "block", head, i, tuple(heads)
+                i = matching_brace(code, i)
+                if kind != "function":  # a class, enum or initializer ends at its ';'
+                    i = code.find(";", i)
+                    i = n if i < 0 else i
+                start = i + 1
+                continue
+        i += 1
+
+
 def public_declarations(code: str):
     """The names declared at namespace scope in stripped code outside any namespace named detail, as
     (qualified name, line): every class, struct, union, enum, alias, variable and function (a
     function's overloads share its name, so a caller counts each name once); forward declarations,
     friends and static_asserts declare nothing new."""
-    out, stack = [], []  # stack: the names of each open namespace
-    i, n, start, paren = 0, len(code), 0, 0
+    out = []
 
-    def record(head: str, at: int, definition: bool):
+    def record(head: str, at: int, definition: bool, stack):  # stack: the names of each open namespace
         text = " ".join(drop_template_heads(head).split())
         if not text or any("detail" in names for names in stack) or re.match(r"(friend|static_assert)\b", text):
             return
@@ -208,70 +248,26 @@ def public_declarations(code: str):
         text = ".".join([*(n for names in stack for n in names), name[-1] if name else text])
         out.append((text, code.count("\n", 0, at) + 1))
 
-    while i < n:
-        c = code[i]
-        if c in "([":
-            paren += 1
-        elif c in ")]":
-            paren -= 1
-        elif c == ";" and paren == 0:
-            record(code[start:i], i, False)
-            start = i + 1
-        elif c == "}":
-            if stack:
-                stack.pop()
-            start = i + 1
-        elif c == "{" and paren > 0:  # a braced initializer in a declaration (a default argument)
-            i = matching_brace(code, i)
-            continue
-        elif c == "{":
-            head = code[start:i]
-            if block_kind(head) == "namespace":
-                stack.append(re.findall(r"\w+", re.sub(r"\b(inline|namespace)\b", " ", head)))
-                start = i + 1
-            else:
-                record(head, i, True)
-                i = matching_brace(code, i)
-                if block_kind(head) != "function":  # a class, enum or initializer ends at its ';'
-                    i = code.find(";", i)
-                    i = n if i < 0 else i
-                start = i + 1
-                continue
-        i += 1
+    for event, head, at, heads in namespace_scope(code):
+        if event != "namespace":
+            stack = [re.findall(r"\w+", re.sub(r"\b(inline|namespace)\b", " ", h)) for h in heads]
+            record(head, at, event == "block", stack)
     return out
+
+
+def namespace_names(head: str):
+    """The names a namespace block's head opens, from the outermost in; an anonymous namespace ""
+    and an `extern "C"` block none."""
+    names = tuple(re.findall(r"\w+", re.sub(r'\b(inline|namespace|extern)\b|""', " ", head)))
+    return names or (("",) if re.search(r"\bnamespace\b", head) else ())
 
 
 def opened_namespaces(code: str):
     """Every namespace opened in stripped code, as (its full name, line): a tuple of its names from the
     outermost in, an anonymous namespace written "" (`extern "C"` blocks are transparent)."""
-    out, stack = [], []  # stack: the names of each open block, None for a block that is no namespace
-    i, n, start, paren = 0, len(code), 0, 0
-    while i < n:
-        c = code[i]
-        if c in "([":
-            paren += 1
-        elif c in ")]":
-            paren -= 1
-        elif c == ";" and paren == 0:
-            start = i + 1
-        elif c == "}":
-            if stack:
-                stack.pop()
-            start = i + 1
-        elif c == "{":
-            head = code[start:i]
-            if paren > 0 or block_kind(head) != "namespace":
-                i = matching_brace(code, i)
-                start = i
-                continue
-            names = tuple(re.findall(r"\w+", re.sub(r'\b(inline|namespace|extern)\b|""', " ", head)))
-            if re.search(r"\bnamespace\b", head):
-                full = tuple(x for names_ in stack for x in names_) + (names or ("",))
-                out.append((full, code.count("\n", 0, i) + 1))
-            stack.append(names or (("",) if re.search(r"\bnamespace\b", head) else ()))
-            start = i + 1
-        i += 1
-    return out
+    return [(tuple(x for h in heads for x in namespace_names(h)) + namespace_names(head), code.count("\n", 0, at) + 1)
+            for event, head, at, heads in namespace_scope(code)
+            if event == "namespace" and re.search(r"\bnamespace\b", head)]
 
 
 def private_namespace(full, public) -> bool:
@@ -378,7 +374,8 @@ def self_test() -> None:
     if names != want_names:
         sys.exit(f"check_architecture.py: the public count miscounts its fixture: {names}")
     public = {("relpos",), ("relpos", "io")}
-    bad = [(full, line) for full, line in opened_namespaces(strip_code(NAMESPACE_TEST)) if private_namespace(full, public)]
+    bad = [(full, line) for full, line in opened_namespaces(strip_code(NAMESPACE_TEST))
+           if private_namespace(full, public)]
     if bad != [(("relpos", "io", "detail"), 10), (("relpos", "forms"), 13), (("other",), 18)]:
         sys.exit(f"check_architecture.py: the namespace scan misreads its fixture: {bad}")
 
